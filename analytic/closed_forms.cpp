@@ -1,0 +1,177 @@
+#include "closed_forms.hpp"
+
+#include <cmath>
+
+#include "error.hpp"
+
+namespace vssw {
+namespace {
+
+double sq(double x) { return x * x; }
+
+// The bracket (2 + tan A2 / tan A1) that recurs in Eqs. (7), (11), (23), (24), (25).
+// Sines and cosines of A1 = alpha1 - |theta1|, A2 = alpha2 - k |theta1| (Eq. 11) or of any pair of angles.
+struct AnglePair {
+    double sA1, cA1, sA2, cA2;
+    AnglePair(double A1, double A2) : sA1(std::sin(A1)), cA1(std::cos(A1)), sA2(std::sin(A2)), cA2(std::cos(A2)) {}
+    AnglePair(double s1, double c1, double s2, double c2) : sA1(s1), cA1(c1), sA2(s2), cA2(c2) {}
+    // The bracket (2 + tan A2 / tan A1) that recurs in Eqs. (7), (11), (23), (24), (25).
+    double vertical_lever() const { return 2.0 + (sA2 / cA2) * (cA1 / sA1); }
+};
+
+// Eq. (11a) written once for any (A1, A2); at theta1 = 0 it is the inertia bracket of Eqs. (21b), (24), (25).
+double mass_coefficient(const VsswGeometry& w, const AnglePair& a) {
+    const double lever = a.vertical_lever();
+    const double ratio = sq(w.sin_a2 * a.cA1 / (w.sin_a1 * a.cA2));
+    return w.m1 + w.m2 * (sq(a.cA1) + sq(a.sA1) * sq(lever)) + (w.I1 + ratio * w.I2) / sq(w.R1);
+}
+
+double mass_coefficient(const VsswGeometry& w, double A1, double A2) { return mass_coefficient(w, AnglePair(A1, A2)); }
+
+}  // namespace
+
+std::optional<double> eq2_theta2_exact(const VsswGeometry& w, double theta1) {
+    const double arg = w.s * std::sin(w.alpha1 - std::abs(theta1));
+    if (std::abs(arg) > 1.0) return std::nullopt;
+    return std::copysign(1.0, theta1) * (std::asin(arg) - w.alpha2);
+}
+
+double eq3_theta2_linear(const VsswGeometry& w, double theta1) { return -w.k * theta1; }
+
+double eq4_velocity_ratio(const VsswGeometry& w, double theta1, double theta2) {
+    return std::sin(w.alpha2) * std::cos(w.alpha1 - theta1) / (std::sin(w.alpha1) * std::cos(w.alpha2 + theta2));
+}
+
+double eq6_potential(const VsswGeometry& w, double theta1, double theta2) {
+    return w.R1 * w.g *
+           ((w.m1 + 2.0 * w.m2) * std::cos(w.alpha1 - theta1) +
+            w.m2 * std::sin(w.alpha1) / std::sin(w.alpha2) * std::cos(w.alpha2 + theta2));
+}
+
+double eq7_kinetic(const VsswGeometry& w, double theta1, double theta2, double theta1_dot) {
+    return 0.5 * sq(w.R1) * mass_coefficient(w, w.alpha1 - theta1, w.alpha2 + theta2) * sq(theta1_dot);
+}
+
+double eq8_overburden_work(const VsswGeometry& w, double theta1, double theta2) {
+    return -w.N * w.R1 *
+           (2.0 * std::sin(w.alpha1 - theta1) +
+            std::tan(w.alpha2) * std::cos(w.alpha1) * (std::cos(theta2) + 2.0 * std::sin(theta2) / std::tan(w.alpha2)));
+}
+
+Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1) {
+    const double q = abs_theta1;
+    // sin and cos of k q serve both A2 = alpha2 - k q and C_N: two sincos calls per evaluation instead of three.
+    const double skq = std::sin(w.k * q), ckq = std::cos(w.k * q);
+    const AnglePair a(std::sin(w.alpha1 - q), std::cos(w.alpha1 - q), w.sin_a2 * ckq - w.cos_a2 * skq,
+                      w.cos_a2 * ckq + w.sin_a2 * skq);
+    const double tA2 = a.sA2 / a.cA2;
+    const double sec2A2 = 1.0 / sq(a.cA2);
+    const double lever = a.vertical_lever();
+    const double ratio_sin2 = sq(w.sin_a2 / w.sin_a1);
+    const double cosratio = w.cos_a1 / w.cos_a2;
+
+    Eq11Coefficients c{};
+    c.C_A = mass_coefficient(w, a);
+    c.C_S = a.cA1 * ratio_sin2 * sec2A2 * (a.sA1 - a.cA1 * w.k * tA2) * w.I2 / sq(w.R1) +
+            w.m2 * a.sA1 *
+                (a.cA1 * (1.0 - sq(lever)) + a.sA1 * lever * (-w.k * (a.cA1 / a.sA1) * sec2A2 + tA2 / sq(a.sA1)));
+    c.C_H = (w.m1 + 2.0 * w.m2) * a.cA1 - w.m2 * cosratio * a.cA2;
+    c.C_V = (w.m1 + 2.0 * w.m2) * a.sA1 + w.m2 * cosratio * a.sA2;
+    c.C_N = 2.0 * a.sA1 + w.tan_a2 * w.cos_a1 * (ckq - 2.0 * skq / w.tan_a2);
+    return c;
+}
+
+double eq12_threshold(const VsswGeometry& w, double a_v) {
+    const double g_eff = w.g + a_v;
+    return std::tan(w.alpha1) * (g_eff * (w.m1 + w.m2 * (2.0 + w.k)) + w.N * (2.0 + w.k)) / (w.m1 + w.m2);
+}
+
+double eq13_threshold_no_overburden(const VsswGeometry& w, double a_v) {
+    return 2.0 * (w.g + a_v) * std::tan(w.alpha1);
+}
+
+double eq14_threshold_over_g(double b, double h, double h1, double xi) {
+    return b * xi / (h - h1) + 2.0 * b * (1.0 + xi) / h1;
+}
+
+double eq15_optimal_hinge_ratio(double xi) { return 1.0 / (1.0 + std::sqrt(xi / (2.0 * (1.0 + xi)))); }
+
+double eq16_cracking_hinge_ratio(double xi, double t) {
+    return 1.0 + (xi + t - std::sqrt((2.0 + t + 2.0 * xi) * (t + xi))) / (2.0 + xi);
+}
+
+double eq17_parapet_threshold(const ParapetGeometry& p) { return p.b / p.h * p.g * (1.0 + p.xi); }
+
+double eq18_threshold_ratio(double xi) {
+    return 3.0 + 2.0 * std::sqrt(2.0 * xi / (1.0 + xi)) - 1.0 / (1.0 + xi);
+}
+
+double eq19_restitution(const VsswGeometry& w) {
+    const double a1 = w.alpha1, a2 = w.alpha2;
+    const double R1sq = sq(w.R1);
+    const double common = w.m1 * R1sq + w.I1 - w.I2 * w.k;
+    const double num = common - 2.0 * w.m1 * R1sq * sq(std::sin(a1)) +
+                       w.m2 * R1sq *
+                           (2.0 + std::sin(a1) * std::cos(a1) / std::tan(a2) - sq(std::sin(a1)) * (4.0 + w.k));
+    const double den = common + w.m2 * R1sq * (2.0 + std::sin(a1) * std::cos(a1) * (1.0 / std::tan(a2) + std::tan(a2)));
+    return num / den;
+}
+
+double eq21_A(const VsswGeometry& w) {
+    const double cr = std::cos(w.alpha1) / std::cos(w.alpha2);
+    return w.alpha1 * (w.m1 + w.m2 * (2.0 + cr * w.alpha2 / w.alpha1)) / (w.m1 + w.m2 * (2.0 + cr * w.k));
+}
+
+double eq21_P(const VsswGeometry& w) {
+    const double cr = std::cos(w.alpha1) / std::cos(w.alpha2);
+    return std::sqrt(w.g * (w.m1 + w.m2 * (2.0 + cr * w.k)) / (w.R1 * mass_coefficient(w, w.alpha1, w.alpha2)));
+}
+
+double eq22_period(const VsswGeometry& w, double theta10) {
+    const double A = eq21_A(w);
+    require(std::isfinite(theta10) && theta10 > 0.0 && theta10 < A, "initial rotation for Eq. (22)",
+            "in (0, A) rad", theta10);
+    return 4.0 / eq21_P(w) * std::acosh(1.0 / (1.0 - theta10 / A));
+}
+
+double eq23_restitution_from_amplitudes(const VsswGeometry& w, double peak_before, double peak_after) {
+    auto energy_ratio = [&](double peak) {
+        const double q = std::abs(peak);
+        const double A1 = w.alpha1 - q, A2 = w.alpha2 - w.k * q;
+        const double potential = (w.m1 + 2.0 * w.m2) * (std::cos(A1) - std::cos(w.alpha1)) +
+                                 w.m2 * std::sin(w.alpha1) / std::sin(w.alpha2) * (std::cos(A2) - std::cos(w.alpha2));
+        return potential / mass_coefficient(w, A1, A2);
+    };
+    return std::sqrt(energy_ratio(peak_after) / energy_ratio(peak_before));
+}
+
+double eq24_reference_velocity(const VsswGeometry& w) {
+    const double n = w.N / w.g;  // the printed 2N/W, with masses per unit depth (see header)
+    const double num = 2.0 * w.g *
+                       ((w.m1 + 2.0 * w.m2 + 2.0 * n) * (1.0 - std::cos(w.alpha1)) +
+                        (w.m2 + 2.0 * n) * std::sin(w.alpha1) / std::sin(w.alpha2) * (1.0 - std::cos(w.alpha2)));
+    return std::sqrt(num / (w.R1 * mass_coefficient(w, w.alpha1, w.alpha2)));
+}
+
+double eq25_dissipated_energy(const VsswGeometry& w, double sum_sq_velocity_before) {
+    const double e = eq19_restitution(w);
+    return 0.5 * sq(w.R1) * mass_coefficient(w, w.alpha1, w.alpha2) * (1.0 - e * e) * sum_sq_velocity_before;
+}
+
+std::optional<double> eq26_limit_rotation(const VsswGeometry& w) {
+    const double ratio = std::sin(w.alpha1) / std::sin(w.alpha2);
+    if (ratio >= 1.0) return std::nullopt;
+    return std::asin(ratio) + w.alpha1;
+}
+
+double housner_restitution(double alpha) { return 1.0 - 1.5 * sq(std::sin(alpha)); }
+
+double housner_p(double R, double g) { return std::sqrt(3.0 * g / (4.0 * R)); }
+
+double housner_period(double alpha, double R, double g, double theta0) {
+    require(std::isfinite(theta0) && theta0 > 0.0 && theta0 < alpha, "initial rotation for Housner's period",
+            "in (0, alpha) rad", theta0);
+    return 4.0 / housner_p(R, g) * std::acosh(1.0 / (1.0 - theta0 / alpha));
+}
+
+}  // namespace vssw

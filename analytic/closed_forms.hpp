@@ -1,0 +1,79 @@
+#pragma once
+// Closed forms of Sorrentino, Masiani & Griffith (2008), one function each, named by equation number, and Housner's
+// (1963) results for the parapet wall. theta1 >= 0 unless said otherwise: the mechanism is mirrored for theta1 < 0.
+//
+// Sign convention for vertical ground acceleration: this code takes a_v positive UPWARD (as records are), so the
+// paper's [g - y''(t)] (its y'' points down, Fig. 1c) is written g + a_v here.
+#include <optional>
+
+#include "wall.hpp"
+
+namespace vssw {
+
+// Eq. (2): exact rotation of the upper body theta2(theta1) imposed by the top roller; valid for |theta1| up to the
+// roller limit of Eq. (26) (std::nullopt past it, where the arcsine has no solution).
+std::optional<double> eq2_theta2_exact(const VsswGeometry& w, double theta1);
+// Eq. (3): the paper's linearisation theta2 = -(tan a2 / tan a1) theta1.
+double eq3_theta2_linear(const VsswGeometry& w, double theta1);
+// Eq. (4): theta2_dot / theta1_dot as a function of theta1 and theta2 (a magnitude; theta2 has the sign opposite to
+// theta1).
+double eq4_velocity_ratio(const VsswGeometry& w, double theta1, double theta2);
+
+// Eq. (6): potential energy of the bodies' weights for theta1 >= 0 at the given theta2 [J/m].
+double eq6_potential(const VsswGeometry& w, double theta1, double theta2);
+// Eq. (7): kinetic energy [J/m] at theta1 >= 0, theta2, theta1_dot.
+double eq7_kinetic(const VsswGeometry& w, double theta1, double theta2, double theta1_dot);
+// Eq. (8): virtual work of N per unit virtual rotation, delta Gamma_N / delta theta1 [N m/m], theta1 >= 0.
+double eq8_overburden_work(const VsswGeometry& w, double theta1, double theta2);
+
+// Eq. (11a-e): coefficients of the equation of motion (10) at |theta1|, with A1, A2 as printed (Eq. 3 inside).
+struct Eq11Coefficients {
+    double C_A, C_S, C_H, C_V, C_N;
+};
+Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1);
+
+// Eq. (12): threshold horizontal ground acceleration [m/s^2] under a vertical ground acceleration a_v (up positive).
+// Derived, as the paper says, from Eq. (10) at rest: N is a force and does not scale with a_v. As printed, N/g sits
+// inside the bracket multiplied by [g - y''], which contradicts Eq. (10) when both N and y'' are non-zero; the two
+// agree whenever a_v = 0 or N = 0.
+double eq12_threshold(const VsswGeometry& w, double a_v = 0.0);
+// Eq. (13): the same for homogeneous bodies without N: 2 (g + a_v) tan(alpha1) [m/s^2].
+double eq13_threshold_no_overburden(const VsswGeometry& w, double a_v = 0.0);
+// Eq. (14): |x''_t / g| from b, h, h1 and xi (a_v = 0): the static collapse load multiplier.
+double eq14_threshold_over_g(double b, double h, double h1, double xi);
+// Eq. (15): the hinge ratio h1/h that minimises Eq. (14).
+double eq15_optimal_hinge_ratio(double xi);
+// Eq. (16): the hinge ratio h1/h of first cracking, with t = f_mt / (W / 2b) the normalised mortar tensile strength.
+double eq16_cracking_hinge_ratio(double xi, double t);
+// Eq. (17): threshold of the parapet wall [m/s^2].
+double eq17_parapet_threshold(const ParapetGeometry& p);
+// Eq. (18): VSSW/PW threshold ratio with the hinge at Eq. (15).
+double eq18_threshold_ratio(double xi);
+// Eq. (19): coefficient of restitution of the VSSW (angular momentum about the new base pivot).
+double eq19_restitution(const VsswGeometry& w);
+// Eq. (21a-b): A [rad] and P [1/s] of the linearised free vibration, Eq. (20), N = 0.
+double eq21_A(const VsswGeometry& w);
+double eq21_P(const VsswGeometry& w);
+// Eq. (22): period of free vibration [s] of Eq. (20) released from rest at theta10 (0 < theta10 < A).
+double eq22_period(const VsswGeometry& w, double theta10);
+// Eq. (23): restitution from two successive peak amplitudes |theta1,max| before and after an impact, as printed
+// (with the square root that turns the energy ratio into a velocity ratio). It evaluates C_A at the peaks although
+// the velocities it compares are at theta1 = 0, so it is off by O(difference of the peaks): ~3e-4 for a slender
+// wall at theta0 = 0.8 alpha1. restitution_from_peaks() in model.hpp is the consistent estimate.
+double eq23_restitution_from_amplitudes(const VsswGeometry& w, double peak_before, double peak_after);
+// Eq. (24): reference angular velocity [rad/s]. The printed "2N/W" beside masses is read as 2N/g (masses per unit
+// depth); with N = 0 it equals sqrt(2 V_r / M(0)) exactly.
+double eq24_reference_velocity(const VsswGeometry& w);
+// Eq. (25): energy dissipated by impacts [J/m] given sum_i (theta1_dot_i^-)^2. The printed prefactor R1 is read as
+// R1^2 (the printed one is not an energy).
+double eq25_dissipated_energy(const VsswGeometry& w, double sum_sq_velocity_before);
+// Eq. (26): roller limit rotation; exists only when sin(alpha1) < sin(alpha2), i.e. h1 > h2.
+std::optional<double> eq26_limit_rotation(const VsswGeometry& w);
+
+// Housner (1963): e = 1 - 3/2 sin^2(alpha), p = sqrt(3 g / (4 R)) for a rectangular block.
+double housner_restitution(double alpha);
+double housner_p(double R, double g);
+// Housner's linearised quarter period, (1/p) arccosh(1 / (1 - theta0/alpha)), times 4.
+double housner_period(double alpha, double R, double g, double theta0);
+
+}  // namespace vssw

@@ -1,0 +1,500 @@
+#include "ground_motion.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <utility>
+
+#include "error.hpp"
+
+namespace vssw {
+namespace {
+
+constexpr double kPi = 3.141592653589793;
+// Standard gravity (CGPM 1901). Records "in units of g" were converted with this value by their agencies; the
+// wall's own gravity (VsswGeometry::g) is a separate model parameter and is deliberately not used here.
+constexpr double kStandardGravity = 9.80665;
+// Two sample times are "evenly spaced" when each lies within this fraction of dt of its grid point: far below any
+// real timing error, yet far above the rounding of times read from text (~1e-13 relative for 0.02 s over 30 s).
+// It guarantees that the O(1) index guess is off by at most one interval, which operator() corrects.
+constexpr double kUniformSpacingTolerance = 1e-9;
+// Points of the uniform scan used for the PGA of an analytic signal (its breakpoints are evaluated as well).
+constexpr int kPgaScanPoints = 20000;
+// Upper limit for reserving memory from a header's NPTS, so a corrupt header cannot trigger a huge allocation
+// before the values are counted.
+constexpr double kMaxReserve = 1e7;
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string trim(const std::string& s) {
+    const char* blanks = " \t\r\n";
+    const auto first = s.find_first_not_of(blanks);
+    if (first == std::string::npos) return {};
+    return s.substr(first, s.find_last_not_of(blanks) - first + 1);
+}
+
+// Splits on any of `separators`, dropping empty fields (so runs of blanks count as one separator).
+std::vector<std::string> split(const std::string& s, const char* separators) {
+    std::vector<std::string> out;
+    std::size_t pos = 0;
+    while (pos < s.size()) {
+        const auto start = s.find_first_not_of(separators, pos);
+        if (start == std::string::npos) break;
+        auto end = s.find_first_of(separators, start);
+        if (end == std::string::npos) end = s.size();
+        out.push_back(s.substr(start, end - start));
+        pos = end;
+    }
+    return out;
+}
+
+// The whole token must be a number: strtod alone would accept the "1.0" of "1.0abc". Fortran E format
+// (-0.731461E-02, -.7314610E-02) is ordinary strtod input. Range is checked by the caller (isfinite).
+bool parse_number(const std::string& token, double& out) {
+    if (token.empty()) return false;
+    const char* begin = token.c_str();
+    char* end = nullptr;
+    out = std::strtod(begin, &end);
+    return end != begin && end == begin + token.size();
+}
+
+// A file as lines (line i of the file is lines[i - 1]), with any '\r' of DOS line endings removed: PEER files are
+// often distributed with CRLF.
+std::vector<std::string> read_lines(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(fmt::format("ground-motion file '{}' is a directory", path));
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
+    std::vector<std::string> lines;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(std::move(line));
+    }
+    if (in.bad()) throw InputError(fmt::format("error while reading ground-motion file '{}'", path));
+    return lines;
+}
+
+std::string record_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+// Builds the record, prefixing any complaint from GroundMotion::sampled with the file name.
+GroundMotion sampled_from_file(std::vector<double> times, std::vector<double> values, const std::string& path) {
+    try {
+        return GroundMotion::sampled(std::move(times), std::move(values), record_name(path));
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: {}", path, e.what()));
+    }
+}
+
+// --- PEER AT2 -----------------------------------------------------------------------------------------------------
+
+// Units written on line 3, e.g. "ACCELERATION TIME HISTORY IN UNITS OF G" or "... IN CM/S/S". Returns false when no
+// (or more than one distinct) unit word is found.
+bool units_from_at2_line(const std::string& line, AccelUnits& units) {
+    bool found_g = false, found_cm = false, found_m = false;
+    for (std::string word : split(upper(line), " \t")) {
+        // Strip punctuation around the unit: "G.", "(CM/S/S)", "G,".
+        const auto first = word.find_first_not_of(".,;:()[]");
+        const auto last = word.find_last_not_of(".,;:()[]");
+        if (first == std::string::npos) continue;
+        word = word.substr(first, last - first + 1);
+        if (word == "G") found_g = true;
+        if (word == "GAL" || word == "GALS" || word == "CM/S/S" || word == "CM/S^2" || word == "CM/S2" ||
+            word == "CM/SEC/SEC" || word == "CM/SEC^2" || word == "CM/SEC2")
+            found_cm = true;
+        if (word == "M/S/S" || word == "M/S^2" || word == "M/S2" || word == "M/SEC/SEC" || word == "M/SEC^2")
+            found_m = true;
+    }
+    if (int(found_g) + int(found_cm) + int(found_m) != 1) return false;
+    units = found_g ? AccelUnits::g : found_cm ? AccelUnits::cm_per_s2 : AccelUnits::m_per_s2;
+    return true;
+}
+
+// Text of the value written after "LABEL=" (or "LABEL:") in an NGA-West2 header, or empty when the label is not
+// followed by '=' (older style, numbers first).
+std::string value_after_label(const std::string& upper_line, const std::string& label) {
+    const auto at = upper_line.find(label);
+    if (at == std::string::npos) return {};
+    auto pos = upper_line.find_first_not_of(" \t", at + label.size());
+    if (pos == std::string::npos || (upper_line[pos] != '=' && upper_line[pos] != ':')) return {};
+    pos = upper_line.find_first_not_of(" \t", pos + 1);
+    if (pos == std::string::npos) return {};
+    const auto end = upper_line.find_first_of(" \t,", pos);
+    std::string text = upper_line.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+    // "DT=.0100SEC" without a blank before the unit.
+    if (text.size() > 3 && text.compare(text.size() - 3, 3, "SEC") == 0) text.resize(text.size() - 3);
+    return text;
+}
+
+struct At2Counts {
+    double npts;
+    double dt;
+};
+
+// Line 4: "1991    0.0100    NPTS, DT" (older) or "NPTS=  1991, DT=   .0100 SEC" (NGA-West2), any case.
+At2Counts parse_at2_counts(const std::string& line, const std::string& path) {
+    const std::string u = upper(line);
+    const auto npts_at = u.find("NPTS");
+    if (npts_at == std::string::npos)
+        throw InputError(fmt::format("{}:4: header line 4 has no NPTS: '{}'", path, trim(line)));
+    const auto dt_at = u.find("DT");
+    if (dt_at == std::string::npos)
+        throw InputError(fmt::format("{}:4: header line 4 has no DT: '{}'", path, trim(line)));
+
+    std::string npts_text = value_after_label(u, "NPTS");
+    std::string dt_text = value_after_label(u, "DT");
+    if (npts_text.empty() || dt_text.empty()) {
+        // Older style: the two numbers come before the labels, in the order of the labels.
+        const auto leading = split(u.substr(0, std::min(npts_at, dt_at)), " \t,");
+        if (leading.size() != 2)
+            throw InputError(fmt::format("{}:4: expected NPTS and DT values in header line 4, got '{}'", path,
+                                         trim(line)));
+        if (npts_text.empty()) npts_text = npts_at < dt_at ? leading[0] : leading[1];
+        if (dt_text.empty()) dt_text = npts_at < dt_at ? leading[1] : leading[0];
+    }
+
+    At2Counts c{};
+    if (!parse_number(npts_text, c.npts))
+        throw InputError(fmt::format("{}:4: NPTS is not a number: '{}'", path, npts_text));
+    if (!parse_number(dt_text, c.dt))
+        throw InputError(fmt::format("{}:4: DT is not a number: '{}'", path, dt_text));
+    if (!(std::isfinite(c.npts) && c.npts > 0.0 && c.npts == std::floor(c.npts)))
+        throw InputError(fmt::format("{}:4: NPTS must be a positive whole number, got {}", path, npts_text));
+    if (c.npts < 2.0)
+        throw InputError(fmt::format("{}:4: NPTS must be at least 2 to define a record, got {}", path, npts_text));
+    if (!(std::isfinite(c.dt) && c.dt > 0.0))
+        throw InputError(fmt::format("{}:4: DT must be a positive finite number, got {}", path, dt_text));
+    return c;
+}
+
+GroundMotion parse_at2(const std::vector<std::string>& lines, const std::string& path,
+                       const AccelUnits* units_override) {
+    if (lines.empty()) throw InputError(fmt::format("{}: file is empty", path));
+    if (lines.size() < 4)
+        throw InputError(fmt::format("{}: truncated header: {} line(s), a PEER AT2 header has 4", path,
+                                     lines.size()));
+
+    // A velocity or displacement history (.VT2/.DT2) has the same layout: reading it as acceleration would be silent
+    // nonsense, so refuse it even when the units are overridden.
+    const std::string line3 = upper(lines[2]);
+    if (line3.find("VELOCITY") != std::string::npos || line3.find("DISPLACEMENT") != std::string::npos)
+        throw InputError(fmt::format("{}:3: not an acceleration history: '{}'", path, trim(lines[2])));
+
+    AccelUnits units = AccelUnits::g;
+    if (units_override != nullptr) {
+        units = *units_override;
+    } else if (!units_from_at2_line(lines[2], units)) {
+        throw InputError(fmt::format(
+            "{}:3: cannot read the acceleration units from line 3 '{}' (expected e.g. 'UNITS OF G', 'CM/S/S', "
+            "'GAL' or 'M/S/S'); give the units explicitly",
+            path, trim(lines[2])));
+    }
+    const double factor = to_m_per_s2(units);
+    const At2Counts counts = parse_at2_counts(lines[3], path);
+
+    std::vector<double> values;
+    values.reserve(static_cast<std::size_t>(std::min(counts.npts, kMaxReserve)));
+    for (std::size_t i = 4; i < lines.size(); ++i) {
+        const std::size_t line_no = i + 1;
+        for (const std::string& token : split(lines[i], " \t\r")) {
+            double v = 0.0;
+            if (!parse_number(token, v))
+                throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, token));
+            if (!std::isfinite(v) || !std::isfinite(v * factor))
+                throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, token));
+            values.push_back(v * factor);
+        }
+    }
+
+    const double count = static_cast<double>(values.size());
+    if (count != counts.npts)
+        throw InputError(fmt::format("{}: header line 4 says NPTS = {} but {} value(s) follow ({})", path,
+                                     counts.npts, values.size(),
+                                     count < counts.npts ? "file truncated?" : "too many values"));
+
+    // Times i * DT, not accumulated sums, so that sample i is exactly on the grid.
+    std::vector<double> times(values.size());
+    for (std::size_t i = 0; i < times.size(); ++i) times[i] = static_cast<double>(i) * counts.dt;
+    return sampled_from_file(std::move(times), std::move(values), path);
+}
+
+// --- two columns --------------------------------------------------------------------------------------------------
+
+GroundMotion parse_two_column(const std::vector<std::string>& lines, const std::string& path, AccelUnits units) {
+    if (lines.empty()) throw InputError(fmt::format("{}: file is empty", path));
+    const double factor = to_m_per_s2(units);
+    std::vector<double> times, values;
+    std::size_t previous_line = 0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::size_t line_no = i + 1;
+        const std::string data = lines[i].substr(0, lines[i].find('#'));  // '#' starts a comment
+        const auto fields = split(data, " \t\r,");
+        if (fields.empty()) continue;  // blank or comment-only line
+        if (fields.size() != 2)
+            throw InputError(fmt::format("{}:{}: expected 2 numbers (time, acceleration), got {} field(s): '{}'",
+                                         path, line_no, fields.size(), trim(data)));
+        double t = 0.0, a = 0.0;
+        for (int k = 0; k < 2; ++k) {
+            double& v = k == 0 ? t : a;
+            if (!parse_number(fields[k], v))
+                throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, fields[k]));
+            if (!std::isfinite(v) || (k == 1 && !std::isfinite(v * factor)))
+                throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, fields[k]));
+        }
+        if (times.empty() && t < 0.0)
+            throw InputError(fmt::format("{}:{}: the first time must be >= 0, got {}", path, line_no, fields[0]));
+        if (!times.empty() && !(t > times.back()))
+            throw InputError(fmt::format("{}:{}: time {} is not after the previous time {} (line {})", path,
+                                         line_no, fields[0], times.back(), previous_line));
+        times.push_back(t);
+        values.push_back(a * factor);
+        previous_line = line_no;
+    }
+    if (times.size() < 2)
+        throw InputError(
+            fmt::format("{}: {} data line(s), a record needs at least 2 samples", path, times.size()));
+    return sampled_from_file(std::move(times), std::move(values), path);
+}
+
+void require_amplitude(double amplitude) {
+    require(std::isfinite(amplitude), "ground-motion amplitude", "finite", amplitude);
+}
+
+void require_time(double value, const std::string& what) {
+    require(std::isfinite(value) && value > 0.0, what, "a positive finite time in s", value);
+}
+
+}  // namespace
+
+// --- units ----------------------------------------------------------------------------------------------------------
+
+AccelUnits parse_units(const std::string& text) {
+    const std::string t = lower(trim(text));
+    if (t == "g") return AccelUnits::g;
+    if (t == "m/s2" || t == "m/s^2") return AccelUnits::m_per_s2;
+    if (t == "cm/s2" || t == "cm/s^2" || t == "gal") return AccelUnits::cm_per_s2;
+    throw InputError(
+        fmt::format("acceleration units must be one of g, m/s2, m/s^2, cm/s2, cm/s^2, gal; got '{}'", text));
+}
+
+double to_m_per_s2(AccelUnits units) {
+    switch (units) {
+        case AccelUnits::g: return kStandardGravity;
+        case AccelUnits::m_per_s2: return 1.0;
+        case AccelUnits::cm_per_s2: return 0.01;
+    }
+    throw InputError(fmt::format("unknown acceleration units code {}", static_cast<int>(units)));
+}
+
+// --- GroundMotion ---------------------------------------------------------------------------------------------------
+
+GroundMotion GroundMotion::sampled(std::vector<double> times, std::vector<double> accel_m_s2, std::string name) {
+    if (times.size() != accel_m_s2.size())
+        throw InputError(fmt::format("record '{}': {} times but {} accelerations", name, times.size(),
+                                     accel_m_s2.size()));
+    if (times.size() < 2)
+        throw InputError(fmt::format("record '{}': {} sample(s), a record needs at least 2", name, times.size()));
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        if (!std::isfinite(times[i]))
+            throw InputError(fmt::format("record '{}': time of sample {} must be finite, got {}", name, i, times[i]));
+        if (!std::isfinite(accel_m_s2[i]))
+            throw InputError(
+                fmt::format("record '{}': acceleration of sample {} must be finite, got {}", name, i, accel_m_s2[i]));
+        if (i > 0 && !(times[i] > times[i - 1]))
+            throw InputError(fmt::format("record '{}': times must increase strictly, but sample {} is at {} after {}",
+                                         name, i, times[i], times[i - 1]));
+    }
+    if (times.front() < 0.0)
+        throw InputError(fmt::format("record '{}': times must start at 0 or later, got {}", name, times.front()));
+
+    GroundMotion m;
+    const std::size_t n = times.size();
+    const double t0 = times.front();
+    const double dt = (times.back() - t0) / static_cast<double>(n - 1);
+    bool uniform = dt > 0.0;
+    for (std::size_t i = 0; uniform && i < n; ++i)
+        uniform = std::abs(times[i] - (t0 + static_cast<double>(i) * dt)) <= kUniformSpacingTolerance * dt;
+    m.uniform_dt_ = uniform ? dt : 0.0;
+    m.duration_ = times.back();
+    m.breakpoints_ = times;
+    m.times_ = std::move(times);
+    m.values_ = std::move(accel_m_s2);
+    m.name_ = std::move(name);
+    return m;
+}
+
+GroundMotion GroundMotion::analytic(std::function<double(double)> a, double duration, std::vector<double> breakpoints,
+                                    std::string name) {
+    if (!a) throw InputError(fmt::format("analytic ground motion '{}' has no function", name));
+    require(std::isfinite(duration) && duration > 0.0, fmt::format("duration of ground motion '{}'", name),
+            "a positive finite time in s", duration);
+    for (double b : breakpoints)
+        require(std::isfinite(b) && b >= 0.0 && b <= duration, fmt::format("breakpoint of ground motion '{}'", name),
+                fmt::format("within [0, {}] s", duration), b);
+    breakpoints.push_back(0.0);
+    breakpoints.push_back(duration);
+    std::sort(breakpoints.begin(), breakpoints.end());
+    breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
+
+    GroundMotion m;
+    m.fn_ = std::move(a);
+    m.duration_ = duration;
+    m.breakpoints_ = std::move(breakpoints);
+    m.name_ = std::move(name);
+    return m;
+}
+
+GroundMotion GroundMotion::none() {
+    GroundMotion m;
+    m.is_zero_ = true;
+    m.name_ = "none";
+    return m;
+}
+
+// Hot path (every integrator stage): no allocation; sampled records branch on times_ instead of going through fn_.
+double GroundMotion::operator()(double t) const {
+    // One comparison pair covers t < 0, t > duration and NaN; a NaN time is returned as NaN, not masked as 0.
+    if (!(t >= 0.0 && t <= duration_)) return std::isnan(t) ? t : 0.0;
+    if (times_.empty()) return is_zero_ ? 0.0 : fn_(t);
+
+    const std::size_t n = times_.size();
+    if (t < times_[0]) return 0.0;  // a record that starts after t = 0
+    std::size_t i = 0;
+    if (uniform_dt_ > 0.0) {
+        // The guess is within one interval of the truth (kUniformSpacingTolerance); fix it against the stored times
+        // so that interpolation always uses the true bracketing samples.
+        i = std::min(static_cast<std::size_t>((t - times_[0]) / uniform_dt_), n - 2);
+        if (t < times_[i] && i > 0)
+            --i;
+        else if (t > times_[i + 1] && i + 2 < n)
+            ++i;
+    } else {
+        const auto it = std::upper_bound(times_.begin(), times_.end(), t);  // first sample after t
+        i = std::min(static_cast<std::size_t>(it - times_.begin()) - 1, n - 2);
+    }
+    const double w = (t - times_[i]) / (times_[i + 1] - times_[i]);
+    // (1 - w) a_i + w a_{i+1} returns the samples exactly at w = 0 and w = 1.
+    return (1.0 - w) * values_[i] + w * values_[i + 1];
+}
+
+double GroundMotion::pga() const {
+    if (is_zero_) return 0.0;
+    double peak = 0.0;
+    if (!times_.empty()) {
+        for (double v : values_) peak = std::max(peak, std::abs(v));
+        return peak;
+    }
+    for (int k = 0; k <= kPgaScanPoints; ++k)
+        peak = std::max(peak, std::abs(fn_(duration_ * static_cast<double>(k) / kPgaScanPoints)));
+    for (double b : breakpoints_) peak = std::max(peak, std::abs(fn_(b)));
+    return peak;
+}
+
+GroundMotion GroundMotion::scaled(double factor) const {
+    require(std::isfinite(factor), fmt::format("scale factor for ground motion '{}'", name_), "finite", factor);
+    GroundMotion m = *this;
+    m.name_ = fmt::format("{} x {}", name_, factor);
+    if (is_zero_) return m;
+    if (!times_.empty()) {
+        for (double& v : m.values_) {
+            v *= factor;
+            if (!std::isfinite(v))
+                throw InputError(fmt::format("scaling ground motion '{}' by {} overflows", name_, factor));
+        }
+        return m;
+    }
+    m.fn_ = [f = fn_, factor](double t) { return factor * f(t); };
+    return m;
+}
+
+GroundMotion GroundMotion::scaled_to_pga(double pga_m_s2) const {
+    require(std::isfinite(pga_m_s2) && pga_m_s2 > 0.0, fmt::format("target PGA for ground motion '{}'", name_),
+            "a positive finite acceleration in m/s^2", pga_m_s2);
+    const double current = pga();
+    require(current > 0.0, fmt::format("PGA of ground motion '{}' (to scale it to {} m/s^2)", name_, pga_m_s2),
+            "> 0", current);
+    return scaled(pga_m_s2 / current);
+}
+
+// --- records --------------------------------------------------------------------------------------------------------
+
+GroundMotion read_peer_at2(const std::string& path, const AccelUnits* units_override) {
+    return parse_at2(read_lines(path), path, units_override);
+}
+
+GroundMotion read_two_column(const std::string& path, AccelUnits units) {
+    return parse_two_column(read_lines(path), path, units);
+}
+
+GroundMotion read_record(const std::string& path, const AccelUnits* units) {
+    const std::vector<std::string> lines = read_lines(path);
+    if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos)
+        return parse_at2(lines, path, units);
+    return parse_two_column(lines, path, units != nullptr ? *units : AccelUnits::g);
+}
+
+// --- synthetic inputs -----------------------------------------------------------------------------------------------
+
+GroundMotion constant_motion(double amplitude, double duration) {
+    require_amplitude(amplitude);
+    require_time(duration, "constant motion duration");
+    return GroundMotion::analytic([amplitude](double) { return amplitude; }, duration, {},
+                                  fmt::format("constant {} m/s^2 for {} s", amplitude, duration));
+}
+
+GroundMotion sine_pulse(double amplitude, double period) {
+    require_amplitude(amplitude);
+    require_time(period, "sine pulse period T_p");
+    const double omega = 2.0 * kPi / period;
+    return GroundMotion::analytic([amplitude, omega](double t) { return amplitude * std::sin(omega * t); }, period,
+                                  {}, fmt::format("sine pulse a_p={} m/s^2 T_p={} s", amplitude, period));
+}
+
+GroundMotion cosine_pulse(double amplitude, double period) {
+    require_amplitude(amplitude);
+    require_time(period, "cosine pulse period T_p");
+    const double omega = 2.0 * kPi / period;
+    // Jumps from 0 to a_p at t = 0 and from a_p back to 0 after T_p: both are breakpoints (added by analytic()).
+    return GroundMotion::analytic([amplitude, omega](double t) { return amplitude * std::cos(omega * t); }, period,
+                                  {}, fmt::format("cosine pulse a_p={} m/s^2 T_p={} s", amplitude, period));
+}
+
+GroundMotion ricker_wavelet(double amplitude, double period) {
+    require_amplitude(amplitude);
+    require_time(period, "Ricker wavelet period T_p");
+    const double centre = 1.5 * period;
+    const double pf2 = kPi * kPi / (period * period);  // pi^2 f^2 with f = 1/T_p
+    // Smooth inside; its tiny values at 0 and 3 T_p (about -1e-8 a_p) make the ends kinks, which analytic() adds.
+    return GroundMotion::analytic(
+        [amplitude, centre, pf2](double t) {
+            const double x = pf2 * (t - centre) * (t - centre);
+            return amplitude * (1.0 - 2.0 * x) * std::exp(-x);
+        },
+        3.0 * period, {}, fmt::format("Ricker wavelet a_p={} m/s^2 T_p={} s", amplitude, period));
+}
+
+GroundMotion harmonic(double amplitude, double period, double duration) {
+    require_amplitude(amplitude);
+    require_time(period, "harmonic period T");
+    require_time(duration, "harmonic duration");
+    const double omega = 2.0 * kPi / period;
+    return GroundMotion::analytic([amplitude, omega](double t) { return amplitude * std::sin(omega * t); },
+                                  duration, {},
+                                  fmt::format("harmonic a_p={} m/s^2 T={} s for {} s", amplitude, period, duration));
+}
+
+}  // namespace vssw

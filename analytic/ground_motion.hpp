@@ -1,0 +1,80 @@
+#pragma once
+// Ground motions: recorded accelerograms and synthetic inputs, as one type the integrator can evaluate.
+//
+// A GroundMotion is an acceleration a(t) in m/s^2 (positive along +x, or upward for a vertical component), zero
+// before t = 0 and after duration(). Records are linear between samples; their sample times are breakpoints, where
+// a(t) has a kink, so the integrator steps onto them and keeps its order between them.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vssw {
+
+enum class AccelUnits { g, m_per_s2, cm_per_s2 };
+
+// Parses "g", "m/s2" (also "m/s^2"), "cm/s2" (also "cm/s^2", "gal"); throws InputError naming the text otherwise.
+AccelUnits parse_units(const std::string& text);
+// Factor that converts a value in `units` to m/s^2, with standard gravity g0 = 9.80665 for "g".
+double to_m_per_s2(AccelUnits units);
+
+class GroundMotion {
+public:
+    // A sampled record: strictly increasing times (from 0 or later), accelerations in m/s^2.
+    static GroundMotion sampled(std::vector<double> times, std::vector<double> accel_m_s2, std::string name);
+    // An analytic signal a(t) on [0, duration], zero outside, with the times where it is not smooth.
+    static GroundMotion analytic(std::function<double(double)> a, double duration, std::vector<double> breakpoints,
+                                 std::string name);
+    // No motion at all.
+    static GroundMotion none();
+
+    double operator()(double t) const;
+    double duration() const { return duration_; }
+    const std::vector<double>& breakpoints() const { return breakpoints_; }
+    const std::string& name() const { return name_; }
+    double pga() const;  // max |a| in m/s^2 (over the samples, or over a fine scan of an analytic signal)
+    bool is_zero() const { return is_zero_; }
+
+    GroundMotion scaled(double factor) const;           // a(t) * factor; factor must be finite
+    GroundMotion scaled_to_pga(double pga_m_s2) const;  // scaled so that pga() == target; target must be > 0
+
+    // Only for sampled records (empty otherwise).
+    const std::vector<double>& sample_times() const { return times_; }
+    const std::vector<double>& sample_values() const { return values_; }
+
+private:
+    std::function<double(double)> fn_;
+    std::vector<double> times_, values_;
+    std::vector<double> breakpoints_;
+    double duration_ = 0.0;
+    double uniform_dt_ = 0.0;  // > 0 when a record's samples are evenly spaced: O(1) lookup
+    bool is_zero_ = false;
+    std::string name_;
+};
+
+// Records -------------------------------------------------------------------------------------------------------
+// PEER AT2, both header styles: line 4 is either "1991    0.0100    NPTS, DT" (older) or
+// "NPTS=  1991, DT=   .0100 SEC" (NGA-West2). Units are read from line 3 ("... IN UNITS OF G"); `units_override`
+// replaces them. Throws InputError (naming the file and the line) on a missing file, an empty or truncated file, a
+// header without NPTS/DT, non-numeric text, or a sample count that differs from NPTS.
+GroundMotion read_peer_at2(const std::string& path, const AccelUnits* units_override = nullptr);
+// Two columns "time acceleration" separated by blanks, tabs or a comma; '#' starts a comment; blank lines skipped.
+// Times must be strictly increasing. Throws InputError like read_peer_at2.
+GroundMotion read_two_column(const std::string& path, AccelUnits units);
+// Chooses the reader by content: AT2 when line 4 holds NPTS, two-column otherwise. `units` applies to two-column
+// files (default g) and overrides an AT2 header when given.
+GroundMotion read_record(const std::string& path, const AccelUnits* units = nullptr);
+
+// Synthetic inputs ------------------------------------------------------------------------------------------------
+// All amplitudes in m/s^2, times in s; each validates its arguments (finite, periods and durations > 0).
+GroundMotion constant_motion(double amplitude, double duration);
+// One-sine pulse a_p sin(2 pi t / T_p) on [0, T_p]   (Zhang & Makris 2001, type A).
+GroundMotion sine_pulse(double amplitude, double period);
+// One-cosine pulse a_p cos(2 pi t / T_p) on [0, T_p] (type B); it jumps at t = 0 and T_p (breakpoints).
+GroundMotion cosine_pulse(double amplitude, double period);
+// Ricker wavelet a_p (1 - 2 pi^2 f^2 tau^2) exp(-pi^2 f^2 tau^2), tau = t - 1.5 T_p, f = 1/T_p, on [0, 3 T_p].
+GroundMotion ricker_wavelet(double amplitude, double period);
+// Harmonic a_p sin(2 pi t / T) on [0, duration].
+GroundMotion harmonic(double amplitude, double period, double duration);
+
+}  // namespace vssw

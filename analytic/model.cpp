@@ -1,0 +1,191 @@
+#include "model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "closed_forms.hpp"
+#include "error.hpp"
+
+namespace vssw {
+namespace {
+
+constexpr double kHalfPi = 1.5707963267948966;
+// The exact kinematics lock at Eq. (26) (theta2'/theta1' is infinite there), so overturning is declared this close
+// to it: a relative margin that keeps the inertia finite (M ~ 1/(theta_lim - q)) where the event is located.
+constexpr double kRollerLimitMargin = 1e-6;
+
+double sq(double x) { return x * x; }
+
+// Overturning angle of the VSSW: the roller is violated at Eq. (26) when h1 > h2; otherwise (Eq. 26 does not exist)
+// the lower body's pivot-side face reaches the ground at pi/2, which ends the two-block mechanism.
+double vssw_collapse_angle(const VsswGeometry& w) {
+    if (const auto lim = eq26_limit_rotation(w)) return std::min(*lim * (1.0 - kRollerLimitMargin), kHalfPi);
+    return kHalfPi;
+}
+
+class PaperVssw final : public RockingModel {
+public:
+    explicit PaperVssw(const VsswGeometry& w) : w_(w) {}
+    ModelTerms terms(double q) const override {
+        const Eq11Coefficients c = eq11_coefficients(w_, q);
+        const double R1 = w_.R1;
+        return {R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
+    }
+    double mass_moment_height(double q) const override {
+        return eq6_potential(w_, q, eq3_theta2_linear(w_, q)) / w_.g;
+    }
+    double load_height(double q) const override {
+        const double theta2 = eq3_theta2_linear(w_, q);
+        return 2.0 * w_.R1 * std::cos(w_.alpha1 - q) + 2.0 * w_.h2 * std::cos(theta2) - w_.b * std::sin(theta2);
+    }
+    double restitution() const override { return eq19_restitution(w_); }
+    double reference_angle() const override { return w_.alpha1; }
+    double collapse_angle() const override { return vssw_collapse_angle(w_); }
+    double gravity() const override { return w_.g; }
+    double overburden() const override { return w_.N; }
+    std::string name() const override { return "vssw/paper"; }
+
+private:
+    VsswGeometry w_;
+};
+
+// Exact kinematics: psi = alpha2 + theta2 from Eq. (2), sin(psi) = s sin(alpha1 - q). G1 = R1(-sin a, cos a) with
+// a = alpha1 - q (Eq. 1a); G2 = hinge + R2(sin psi, cos psi) (Eq. 1b); the top roller keeps x_G2 = x_hinge / 2.
+class ExactVssw final : public RockingModel {
+public:
+    explicit ExactVssw(const VsswGeometry& w) : w_(w), sa2_(std::sin(w.alpha2)), ca2_(std::cos(w.alpha2)) {}
+
+    struct Angles {
+        double sa, ca, spsi, cpsi, dpsi, ddpsi;
+    };
+    Angles angles(double q) const {
+        Angles g{};
+        g.sa = std::sin(w_.alpha1 - q);
+        g.ca = std::cos(w_.alpha1 - q);
+        g.spsi = w_.s * g.sa;
+        // Past Eq. (26) there is no configuration; the floor keeps a trial step finite so the step is rejected.
+        g.cpsi = std::sqrt(std::max(1.0 - sq(g.spsi), 1e-30));
+        const double inv_cpsi = 1.0 / g.cpsi;
+        g.dpsi = -w_.s * g.ca * inv_cpsi;
+        g.ddpsi = -w_.s * (g.sa * g.cpsi + g.ca * g.spsi * g.dpsi) * inv_cpsi * inv_cpsi;
+        return g;
+    }
+
+    ModelTerms terms(double q) const override {
+        const Angles g = angles(q);
+        const double R1 = w_.R1, R2 = w_.R2;
+        const double dx2 = R1 * g.ca, ddx2 = R1 * g.sa;
+        const double dy2 = 2.0 * R1 * g.sa - R2 * g.spsi * g.dpsi;
+        const double ddy2 = -2.0 * R1 * g.ca - R2 * (g.cpsi * sq(g.dpsi) + g.spsi * g.ddpsi);
+        const double s2 = g.spsi * ca2_ - g.cpsi * sa2_;  // sin(theta2), theta2 = psi - alpha2
+        const double c2 = g.cpsi * ca2_ + g.spsi * sa2_;  // cos(theta2)
+        ModelTerms t{};
+        t.M = w_.m1 * R1 * R1 + w_.I1 + w_.m2 * (sq(dx2) + sq(dy2)) + w_.I2 * sq(g.dpsi);
+        t.C = w_.m2 * (dx2 * ddx2 + dy2 * ddy2) + w_.I2 * g.dpsi * g.ddpsi;  // M'/2
+        t.X = (w_.m1 + w_.m2) * R1 * g.ca;
+        t.Y = w_.m1 * R1 * g.sa + w_.m2 * dy2;
+        t.L = 2.0 * R1 * g.sa - (2.0 * w_.h2 * s2 + w_.b * c2) * g.dpsi;
+        return t;
+    }
+    double mass_moment_height(double q) const override {
+        const Angles g = angles(q);
+        return w_.m1 * w_.R1 * g.ca + w_.m2 * (2.0 * w_.R1 * g.ca + w_.R2 * g.cpsi);
+    }
+    double load_height(double q) const override {
+        const Angles g = angles(q);
+        const double theta2 = std::atan2(g.spsi, g.cpsi) - w_.alpha2;
+        return 2.0 * w_.R1 * g.ca + 2.0 * w_.h2 * std::cos(theta2) - w_.b * std::sin(theta2);
+    }
+    double restitution() const override { return eq19_restitution(w_); }  // the impact happens at q = 0, where
+                                                                          // Eq. (2) and Eq. (3) have the same slope
+    double reference_angle() const override { return w_.alpha1; }
+    double collapse_angle() const override { return vssw_collapse_angle(w_); }
+    double gravity() const override { return w_.g; }
+    double overburden() const override { return w_.N; }
+    std::string name() const override { return "vssw/exact"; }
+
+private:
+    VsswGeometry w_;
+    double sa2_, ca2_;
+};
+
+// Housner's block rocking on a base corner; N at the centre of the top face, (-b, 2h) from the pivot at rest.
+class Parapet final : public RockingModel {
+public:
+    explicit Parapet(const ParapetGeometry& p) : p_(p) {}
+    ModelTerms terms(double q) const override {
+        const double a = p_.alpha - q;
+        return {p_.I_O, 0.0, p_.m * p_.R * std::cos(a), p_.m * p_.R * std::sin(a),
+                p_.b * std::cos(q) - 2.0 * p_.h * std::sin(q)};
+    }
+    double mass_moment_height(double q) const override { return p_.m * p_.R * std::cos(p_.alpha - q); }
+    double load_height(double q) const override { return 2.0 * p_.h * std::cos(q) + p_.b * std::sin(q); }
+    double restitution() const override { return housner_restitution(p_.alpha); }
+    double reference_angle() const override { return p_.alpha; }
+    // The block lies on its face at pi/2; passing alpha alone is not collapse under forcing (the paper, Sect. 2).
+    double collapse_angle() const override { return kHalfPi; }
+    double gravity() const override { return p_.g; }
+    double overburden() const override { return p_.N; }
+    std::string name() const override { return "parapet"; }
+
+private:
+    ParapetGeometry p_;
+};
+
+}  // namespace
+
+Kinematics parse_kinematics(const std::string& text) {
+    if (text == "paper") return Kinematics::paper;
+    if (text == "exact") return Kinematics::exact;
+    throw InputError("kinematics must be 'paper' or 'exact', got '" + text + "'");
+}
+
+const char* to_string(Kinematics k) { return k == Kinematics::paper ? "paper" : "exact"; }
+
+RockingRates rocking_rates(const ModelTerms& t, int side, double theta_dot, double a_h, double a_v, double g,
+                           double N) {
+    const double sign = side;
+    const double ground = -a_h * t.X - sign * a_v * t.Y;
+    const double rhs = ground - sign * (g * t.Y + N * t.L + t.C * theta_dot * theta_dot);
+    return {rhs / t.M, ground};
+}
+
+double RockingModel::acceleration(int side, double theta, double theta_dot, double a_h, double a_v) const {
+    return rocking_rates(terms(side * theta), side, theta_dot, a_h, a_v, gravity(), overburden()).acceleration;
+}
+
+double RockingModel::ground_force(int side, double theta, double a_h, double a_v) const {
+    return rocking_rates(terms(side * theta), side, 0.0, a_h, a_v, gravity(), overburden()).ground_force;
+}
+
+double RockingModel::weight_potential(double theta) const {
+    return gravity() * (mass_moment_height(std::abs(theta)) - mass_moment_height(0.0));
+}
+
+double RockingModel::overburden_work(double theta) const {
+    return -overburden() * (load_height(std::abs(theta)) - load_height(0.0));
+}
+
+double RockingModel::kinetic(double theta, double theta_dot) const {
+    return 0.5 * terms(std::abs(theta)).M * sq(theta_dot);
+}
+
+double RockingModel::reference_velocity() const { return std::sqrt(2.0 * reference_energy() / terms(0.0).M); }
+
+double RockingModel::rest_threshold(double a_v) const {
+    const ModelTerms t = terms(0.0);
+    return ((gravity() + a_v) * t.Y + overburden() * t.L) / t.X;
+}
+
+double restitution_from_peaks(const RockingModel& m, double peak_before, double peak_after) {
+    return std::sqrt(m.potential(peak_after) / m.potential(peak_before));
+}
+
+std::unique_ptr<RockingModel> make_vssw_model(const VsswGeometry& w, Kinematics kinematics) {
+    if (kinematics == Kinematics::paper) return std::make_unique<PaperVssw>(w);
+    return std::make_unique<ExactVssw>(w);
+}
+
+std::unique_ptr<RockingModel> make_parapet_model(const ParapetGeometry& p) { return std::make_unique<Parapet>(p); }
+
+}  // namespace vssw

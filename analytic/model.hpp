@@ -1,0 +1,78 @@
+#pragma once
+// One-degree-of-freedom rocking models in Lagrangian form. For q = |theta1| >= 0 a model gives the mass function
+// M(q), the Coriolis coefficient C(q) (= M'(q)/2 for a Lagrangian system), and the lever functions
+//   X(q) = sum_i m_i dx_Gi/dq,  Y(q) = sum_i m_i dy_Gi/dq,  L(q) = dy_N/dq,
+// so that for theta1 > 0 the equation of motion (10) reads
+//   M theta1'' + C theta1'^2 = -a_h X - (g + a_v) Y - N L,
+// and for theta1 < 0 the mirrored mechanism gives the same with the signs of C, Y and L flipped (Eq. 10's sgn).
+// a_h is the horizontal ground acceleration, a_v the vertical one (up positive).
+//
+// Three models: the paper's VSSW (Eq. 11 as printed, Eq. 3 inside), the exact VSSW (Eq. 2 in a Lagrangian), and the
+// parapet wall (Housner's block, with N at the top centre).
+#include <memory>
+#include <string>
+
+#include "wall.hpp"
+
+namespace vssw {
+
+enum class Kinematics { paper, exact };
+Kinematics parse_kinematics(const std::string& text);  // "paper" | "exact", InputError otherwise
+const char* to_string(Kinematics k);
+
+struct ModelTerms {
+    double M;  // generalised mass [kg m^2 / m]
+    double C;  // Coriolis coefficient
+    double X;  // horizontal lever sum m_i dx_i/dq [kg m / m]
+    double Y;  // vertical lever sum m_i dy_i/dq
+    double L;  // lever of the overburden dy_N/dq [m]
+};
+
+// theta1'' and the ground's generalised force from terms already evaluated at q = side * theta1 (the mirror rule).
+struct RockingRates {
+    double acceleration;  // theta1''
+    double ground_force;  // generalised force of the ground motion (its power is this times theta1')
+};
+RockingRates rocking_rates(const ModelTerms& t, int side, double theta_dot, double a_h, double a_v, double g,
+                           double N);
+
+class RockingModel {
+public:
+    virtual ~RockingModel() = default;
+    virtual ModelTerms terms(double q) const = 0;
+    // Sum m_i y_Gi(q) (the bodies' weight potential is g times it) and the height of N's point, both for q >= 0.
+    virtual double mass_moment_height(double q) const = 0;
+    virtual double load_height(double q) const = 0;
+    virtual double restitution() const = 0;     // impact map theta1'+ = e theta1'- (Eq. 19, or Housner's e)
+    virtual double reference_angle() const = 0; // alpha1 (VSSW) or alpha (PW): where rotations are normalised
+    virtual double collapse_angle() const = 0;  // |theta1| at which the wall counts as overturned (see README)
+    virtual double gravity() const = 0;
+    virtual double overburden() const = 0;      // N [N/m]
+    virtual std::string name() const = 0;
+
+    // theta1'' while the wall rocks on side `side` (+1: theta1 >= 0, -1: theta1 <= 0), from terms() with the mirror
+    // rule above. The side is explicit because at theta1 = 0 (lift-off) the sign of theta1 does not tell it.
+    double acceleration(int side, double theta, double theta_dot, double a_h, double a_v) const;
+    // Generalised force of the ground motion on theta1 (its power is this times theta1').
+    double ground_force(int side, double theta, double a_h, double a_v) const;
+    // Energies relative to rest [J/m]: the weights' potential, the work done by N, and their difference.
+    double weight_potential(double theta) const;
+    double overburden_work(double theta) const;
+    double potential(double theta) const { return weight_potential(theta) - overburden_work(theta); }
+    double kinetic(double theta, double theta_dot) const;
+    // V_r: potential energy at the reference angle (the paper's normalising energy, Sect. 7).
+    double reference_energy() const { return potential(reference_angle()); }
+    // Reference velocity: sqrt(2 V_r / M(0)); equals Eq. (24) for the VSSW with N = 0.
+    double reference_velocity() const;
+    // Smallest |a_h| that tips the wall off rest, from the equation of motion at q = 0.
+    double rest_threshold(double a_v) const;
+};
+
+// Restitution from the peaks either side of an impact, by energy conservation in flight with no ground motion:
+// 1/2 M(0) theta1'^2 = V(peak), so e = sqrt(V(after) / V(before)). The consistent form of Eq. (23), for any model.
+double restitution_from_peaks(const RockingModel& m, double peak_before, double peak_after);
+
+std::unique_ptr<RockingModel> make_vssw_model(const VsswGeometry& w, Kinematics kinematics);
+std::unique_ptr<RockingModel> make_parapet_model(const ParapetGeometry& p);
+
+}  // namespace vssw

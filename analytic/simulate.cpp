@@ -1,0 +1,430 @@
+#include "simulate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "error.hpp"
+
+namespace vssw {
+namespace {
+
+using State = Vec<3>;  // theta1, theta1', work done by the ground motion
+
+// Sub-intervals in which a step's continuous extension is searched for the first sign change of an event function
+// (the first step after an impact is capped to the predicted flight, so its first point is still in flight).
+constexpr int kScanPoints = 4;
+// Largest scan interval at rest for analytic ground motions (records are scanned sample by sample).
+constexpr double kRestScanStep = 1e-3;  // [s]
+constexpr int kMaxNewtonIterations = 8;
+constexpr int kMaxBisections = 400;  // bound on root-search iterations; reached only by a broken bracket
+constexpr long kMaxSteps = 50'000'000;  // a run needing more is reported as a failure, not left to spin
+
+enum class Event { none, impact, collapse };
+
+// Shrinks a bracket [lo, hi] of a sign change of f (f(lo) on one side, f(hi) on the other or zero) to width tol by
+// Illinois false position, bisecting whenever two steps have not halved it: superlinear on the smooth functions met
+// here, never slower than bisection. hi keeps the side of f(hi).
+template <class F>
+void shrink_bracket(F f, double& lo, double& hi, double tol) {
+    double flo = f(lo), fhi = f(hi);
+    int retained = 0;      // which end the last two steps kept: -1 lo, +1 hi (Illinois halves its value)
+    int slow_steps = 0;    // steps since the bracket last halved
+    double mark = hi - lo;
+    for (int i = 0; i < kMaxBisections && hi - lo > tol; ++i) {
+        double x = 0.5 * (lo + hi);
+        if (slow_steps < 2 && fhi != flo) {
+            const double secant = (lo * fhi - hi * flo) / (fhi - flo);
+            if (secant > lo && secant < hi) x = secant;
+        }
+        const double fx = f(x);
+        if (fx != 0.0 && (fx > 0.0) == (flo > 0.0)) {
+            lo = x;
+            flo = fx;
+            if (retained == 1) fhi *= 0.5;
+            retained = 1;
+        } else {
+            hi = x;
+            fhi = fx;
+            if (retained == -1) flo *= 0.5;
+            retained = -1;
+        }
+        if (hi - lo <= 0.5 * mark) {
+            mark = hi - lo;
+            slow_steps = 0;
+        } else {
+            ++slow_steps;
+        }
+        if (fx == 0.0) break;
+    }
+}
+
+class Simulator {
+public:
+    Simulator(const RockingModel& model, const GroundMotion& ah, const GroundMotion& av, const SimulationOptions& o)
+        : model_(model),
+          ah_(ah),
+          av_(av),
+          opt_(o),
+          rest_terms_(model.terms(0.0)),
+          e_(model.restitution()),
+          alpha_(model.reference_angle()),
+          collapse_(model.collapse_angle()),
+          v_ref_(model.reference_energy()),
+          motion_end_(std::max(ah.duration(), av.duration())),
+          integrator_(Rhs{this}, o.step, State{alpha_, model.reference_velocity(), v_ref_}) {}
+
+    SimulationResult run(InitialState init);
+
+private:
+    struct Rhs {
+        const Simulator* sim;
+        State operator()(double t, const State& y) const { return sim->derivative(t, y); }
+    };
+
+    State derivative(double t, const State& y) const {
+        const RockingRates r =
+            rocking_rates(model_.terms(side_ * y[0]), side_, y[1], ah_(t), av_(t), model_.gravity(), model_.overburden());
+        return {y[1], r.acceleration, r.ground_force * y[1]};
+    }
+
+    // Net tipping acceleration margin at rest on the side the ground pushes towards (> 0: the wall lifts off).
+    double tipping_margin(double t) const {
+        const double a_h = ah_(t), a_v = av_(t);
+        const ModelTerms& r = rest_terms_;
+        return std::abs(a_h) * r.X - ((model_.gravity() + a_v) * r.Y + model_.overburden() * r.L);
+    }
+
+    double next_breakpoint(double t) const {
+        double next = opt_.t_end;
+        for (const GroundMotion* m : {&ah_, &av_}) {
+            const auto& bp = m->breakpoints();
+            const auto it = std::upper_bound(bp.begin(), bp.end(), t + 1e-12 * std::max(1.0, std::abs(t)));
+            if (it != bp.end()) next = std::min(next, *it);
+        }
+        return next;
+    }
+
+    void emit(double t, const State& y) {
+        if (!opt_.keep_samples) return;
+        Sample s{};
+        s.t = t;
+        s.theta = y[0];
+        s.theta_dot = y[1];
+        s.kinetic = model_.kinetic(y[0], y[1]);
+        s.weight_potential = model_.weight_potential(y[0]);
+        s.work_overburden = model_.overburden_work(y[0]);
+        s.work_ground = y[2];
+        s.dissipated = dissipated_;
+        s.a_h = ah_(t);
+        out_.samples.push_back(s);
+    }
+
+    void check_balance(const State& y) {
+        const double kinetic = model_.kinetic(y[0], y[1]), potential = model_.weight_potential(y[0]);
+        const double work_n = model_.overburden_work(y[0]);
+        const double residual = kinetic + potential - work_n - y[2] + dissipated_ - initial_energy_;
+        energy_scale_ = std::max(energy_scale_, std::abs(kinetic) + std::abs(potential) + std::abs(work_n) +
+                                                    std::abs(y[2]) + dissipated_);
+        max_residual_ = std::max(max_residual_, std::abs(residual));
+        out_.energy_balance_error = max_residual_ / energy_scale_;
+    }
+
+    // Samples on the output grid in (t0, t1], from a function giving the state at any time in the interval.
+    template <class StateAt>
+    void emit_grid(double t0, double t1, StateAt state_at) {
+        if (!opt_.keep_samples || opt_.output_dt <= 0.0) return;
+        while (next_output_ <= t1 + 1e-12) {
+            if (next_output_ > t0 - 1e-12) emit(next_output_, state_at(next_output_));
+            ++output_index_;
+            next_output_ = static_cast<double>(output_index_) * opt_.output_dt;
+        }
+    }
+
+    bool rest_phase(double& t, State& y);
+    Event rocking_phase(double& t, State& y);
+    void polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const;
+    bool may_turn(const RkStep<3>& step) const;
+
+    const RockingModel& model_;
+    const GroundMotion& ah_;
+    const GroundMotion& av_;
+    SimulationOptions opt_;
+    ModelTerms rest_terms_;
+    double e_, alpha_, collapse_, v_ref_, motion_end_;
+    Dop853<3, Rhs> integrator_;
+
+    int side_ = 1;
+    double dissipated_ = 0.0;
+    double initial_energy_ = 0.0;
+    double energy_scale_ = 0.0;  // set to V_r on construction; grows with the energies met
+    double max_residual_ = 0.0;
+    double next_output_ = 0.0;
+    long output_index_ = 0;
+    double h_ = 1e-3;
+    SimulationResult out_;
+};
+
+// Waits at rest from t; returns true with t at the lift-off time and side_ set, or false when the run is over.
+bool Simulator::rest_phase(double& t, State& y) {
+    y[0] = 0.0;
+    y[1] = 0.0;
+    const double rest_start = t;
+    auto rest_state = [&](double) { return y; };
+    auto lift = [&](double when) {
+        emit_grid(rest_start, when, rest_state);
+        t = when;
+        side_ = ah_(when) > 0.0 ? -1 : 1;  // the wall's inertia pushes it against the ground acceleration
+        out_.lift_offs.push_back(when);
+        return true;
+    };
+    if (tipping_margin(t) > 0.0) return lift(t);
+    double scan = t;
+    while (scan < opt_.t_end) {
+        if (scan >= motion_end_) {  // no more ground motion: nothing can lift the wall again
+            const double end = opt_.stop_at_rest ? std::max(scan, rest_start) : opt_.t_end;
+            emit_grid(rest_start, end, rest_state);
+            t = end;
+            return false;
+        }
+        double next = std::min({next_breakpoint(scan), opt_.t_end, motion_end_});
+        if (ah_.sample_times().empty() || av_.sample_times().empty()) next = std::min(next, scan + kRestScanStep);
+        if (tipping_margin(next) > 0.0) {
+            // Narrow to the crossing, keeping the right end, where the margin is positive, so the flight starts.
+            double lo = scan, hi = next;
+            shrink_bracket([&](double x) { return tipping_margin(x); }, lo, hi, opt_.event_time_tol);
+            return lift(tipping_margin(hi) > 0.0 ? hi : next);
+        }
+        scan = next;
+    }
+    emit_grid(rest_start, opt_.t_end, rest_state);
+    t = opt_.t_end;
+    return false;
+}
+
+// Refines an event found on the continuous extension so that it lies on the integrator's own solution, not on its
+// interpolant: Newton on the real step size. Once the correction dh is below kTaylorSpan, the last step's end is
+// carried to the event by y + dh f(y), whose error (dh^2/2 |y''|, < 1e-16 here) is far below the integration error:
+// one step per event instead of two. Leaves the final state in `step`.
+void Simulator::polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const {
+    constexpr double kTaylorSpan = 1e-8;  // [s]
+    for (int i = 0; i < kMaxNewtonIterations; ++i) {
+        integrator_.step(t, y, dy, h, step);
+        const double g = ev == Event::impact ? side_ * step.y1[0] : collapse_ - side_ * step.y1[0];
+        const double slope = ev == Event::impact ? side_ * step.y1[1] : -side_ * step.y1[1];
+        if (slope == 0.0) return;
+        const double dh = -g / slope;
+        if (std::abs(dh) < kTaylorSpan && std::abs(dh) < 0.5 * h) {
+            const State& f = step.end_derivative();
+            for (std::size_t n = 0; n < 3; ++n) step.y1[n] += dh * f[n];
+            step.h = h + dh;
+            return;
+        }
+        h = std::clamp(h + dh, 0.5 * h, 2.0 * h);
+    }
+}
+
+// Could theta1' change sign inside the step? Checked on the cubic Hermite interpolant of theta1' built from its values
+// and slopes at the two ends (no extra evaluation), at the ends and three interior points.
+bool Simulator::may_turn(const RkStep<3>& step) const {
+    const double v0 = step.y0[1], v1 = step.y1[1];
+    const double a0 = step.k[0][1] * step.h, a1 = step.end_derivative()[1] * step.h;
+    double prev = v0;
+    for (double x : {0.25, 0.5, 0.75, 1.0}) {
+        const double x2 = x * x, x3 = x2 * x;
+        const double v = (2 * x3 - 3 * x2 + 1) * v0 + (x3 - 2 * x2 + x) * a0 + (-2 * x3 + 3 * x2) * v1 + (x3 - x2) * a1;
+        if (prev != 0.0 && (v == 0.0 || (v > 0.0) != (prev > 0.0))) return true;
+        prev = v;
+    }
+    return false;
+}
+
+Event Simulator::rocking_phase(double& t, State& y) {
+    State dy = integrator_.rhs(t, y);
+    RkStep<3> step, event_step;
+    bool starts_at_zero = y[0] == 0.0;
+    if (starts_at_zero && y[1] != 0.0) {
+        // Cap the first step to 1.5 times the flight 2|v|/|a| predicted with the restoring acceleration at rest: the
+        // real flight is longer (restoring moments fall as |theta1| grows), so the scan's first point (3/8 of the
+        // flight) is still in the air, while a short flight usually ends inside this one step. Within a step the
+        // side is fixed and the right-hand side smooth through theta1 = 0, so a step may overshoot the landing.
+        const double a = std::abs(dy[1]);
+        if (a > 0.0) h_ = std::min(h_, 3.0 * std::abs(y[1]) / a);
+    }
+    while (t < opt_.t_end) {
+        if (++out_.steps > kMaxSteps) throw std::runtime_error("integration exceeded the step limit");
+        const double stop = std::min(next_breakpoint(t), opt_.t_end);
+        double h = std::min(h_, stop - t);
+        const double err = integrator_.step(t, y, dy, h, step);
+        if (err > 1.0 && !integrator_.fixed_step()) {
+            ++out_.rejected_steps;
+            h_ = integrator_.next_step(h, err);
+            if (h_ <= opt_.step.min_step)
+                throw std::runtime_error("step size underflow at t = " + std::to_string(t));
+            continue;
+        }
+        const double h_next = integrator_.next_step(h, err);
+
+        // Events show at the step's end: the wall cannot cross theta1 = 0 and come back within one flight.
+        Event ev = Event::none;
+        if (side_ * step.y1[0] <= 0.0) ev = Event::impact;
+        else if (side_ * step.y1[0] >= collapse_) ev = Event::collapse;
+        const bool turns = may_turn(step);
+        const bool outputs = opt_.keep_samples && opt_.output_dt > 0.0 && next_output_ <= t + h + 1e-12;
+        if (ev != Event::none || turns || outputs) integrator_.make_dense(step);
+
+        double event_time = t + h;
+        if (ev != Event::none) {
+            // The first sub-interval of the continuous extension where the event function changes sign.
+            double lo = t, hi = t + h;
+            double prev = starts_at_zero ? 1.0 : (ev == Event::impact ? side_ * y[0] : collapse_ - side_ * y[0]);
+            for (int k = 1; k <= kScanPoints; ++k) {
+                const double tau = t + h * k / kScanPoints;
+                const double th = k == kScanPoints ? step.y1[0] : step.at(tau)[0];
+                const double g = ev == Event::impact ? side_ * th : collapse_ - side_ * th;
+                if (prev > 0.0 && g <= 0.0) {
+                    lo = tau - h / kScanPoints;
+                    hi = tau;
+                    break;
+                }
+                prev = g;
+            }
+            shrink_bracket([&](double tau) {
+                const double th = step.at(tau)[0];
+                return ev == Event::impact ? side_ * th : collapse_ - side_ * th;
+            }, lo, hi, opt_.event_time_tol);
+            event_time = hi;
+        }
+        if (turns) {
+            double tau_prev = t, v_prev = y[1];
+            for (int k = 1; k <= kScanPoints; ++k) {
+                const double tau = t + h * k / kScanPoints;
+                if (tau_prev >= event_time) break;  // after the event: not part of this flight
+                const double v = k == kScanPoints ? step.y1[1] : step.at(tau)[1];
+                if (v_prev != 0.0 && (v == 0.0 || (v > 0.0) != (v_prev > 0.0))) {
+                    double a = tau_prev, b = tau;
+                    shrink_bracket([&](double x) { return step.at(x)[1]; }, a, b, opt_.event_time_tol);
+                    if (b <= event_time) {
+                        const double th = step.at(b)[0];
+                        out_.peaks.push_back({b, th});
+                        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(th));
+                    }
+                }
+                tau_prev = tau;
+                v_prev = v;
+            }
+        }
+        if (outputs) emit_grid(t, event_time, [&](double tau) { return step.at(tau); });
+
+        const bool on_breakpoint = ev == Event::none && t + h == stop;
+        if (ev != Event::none) {
+            polish_event(ev, t, y, dy, event_time - t, event_step);
+            h = event_step.h;
+            y = event_step.y1;
+            dy = event_step.end_derivative();
+        } else {
+            y = step.y1;
+            dy = step.end_derivative();
+        }
+        t += h;
+        h_ = h_next;
+        starts_at_zero = false;
+        // A ground motion may jump at a breakpoint (a cosine pulse's end) and is left-continuous there: the next
+        // step's first stage must see the value after the jump.
+        if (on_breakpoint) dy = integrator_.rhs(std::nextafter(t, opt_.t_end + 1.0), y);
+        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(y[0]));
+        if (ev == Event::impact) y[0] = 0.0;
+        if (opt_.keep_samples || ev != Event::none) check_balance(y);  // events always; every step when sampling
+        if (opt_.output_dt <= 0.0) emit(t, y);
+        if (ev != Event::none) return ev;
+    }
+    return Event::none;
+}
+
+SimulationResult Simulator::run(InitialState init) {
+    require(std::isfinite(init.theta), "initial rotation", "finite", init.theta);
+    require(std::isfinite(init.theta_dot), "initial angular velocity", "finite", init.theta_dot);
+    require(std::abs(init.theta) < collapse_, "|initial rotation| (rad)",
+            "below the collapse angle " + std::to_string(collapse_) + " rad", init.theta);
+    require(std::isfinite(opt_.t_end) && opt_.t_end > 0.0, "end time", "a positive finite number", opt_.t_end);
+
+    double t = 0.0;
+    State y{init.theta, init.theta_dot, 0.0};
+    initial_energy_ = model_.kinetic(y[0], y[1]) + model_.weight_potential(y[0]) - model_.overburden_work(y[0]);
+    energy_scale_ = v_ref_;
+    out_.max_abs_theta = std::abs(y[0]);
+    emit_grid(-1.0, 0.0, [&](double) { return y; });
+    if (opt_.output_dt <= 0.0) emit(t, y);
+
+    bool rocking = y[0] != 0.0 || y[1] != 0.0;
+    if (rocking) {
+        side_ = y[0] != 0.0 ? (y[0] > 0.0 ? 1 : -1) : (y[1] > 0.0 ? 1 : -1);
+        if (y[1] == 0.0) out_.peaks.push_back({0.0, y[0]});
+    }
+    while (t < opt_.t_end) {
+        if (!rocking) {
+            if (!rest_phase(t, y)) {
+                out_.at_rest_at_end = true;
+                break;
+            }
+            rocking = true;
+            if (opt_.output_dt <= 0.0) emit(t, y);
+        }
+        const Event ev = rocking_phase(t, y);
+        if (ev == Event::collapse) {
+            out_.overturned = true;
+            out_.t_overturn = t;
+            break;
+        }
+        if (ev != Event::impact) break;  // end time reached
+
+        const double v_before = y[1];
+        const double m0 = rest_terms_.M;
+        if (e_ <= 0.0) {  // a stocky wall whose impact stops it dead (Eq. 19 can be <= 0)
+            out_.impacts.push_back({t, v_before, 0.0});
+            dissipated_ += 0.5 * m0 * v_before * v_before;
+            out_.rest_times.push_back(t);
+            rocking = false;
+            continue;
+        }
+        const double v_after = e_ * v_before;
+        out_.impacts.push_back({t, v_before, v_after});
+        dissipated_ += 0.5 * m0 * (v_before * v_before - v_after * v_after);
+        side_ = -side_;
+        y[1] = v_after;
+        // Would the next flight be negligible while the ground cannot tip the wall? Then sum the geometric tail
+        // of impacts (flight times 2|v| e^n / |a|) in closed form and come to rest.
+        const double a_out = side_ * model_.acceleration(side_, 0.0, v_after, ah_(t), av_(t));
+        if (a_out < 0.0 && v_after * v_after / (2.0 * -a_out) < opt_.rest_amplitude * alpha_) {
+            const double tail = 2.0 * std::abs(v_after) / (-a_out * (1.0 - e_));
+            dissipated_ += 0.5 * m0 * v_after * v_after;
+            t = std::min(t + tail, opt_.t_end);
+            y[1] = 0.0;
+            out_.rest_times.push_back(t);
+            check_balance(y);
+            if (opt_.output_dt <= 0.0) emit(t, y);
+            rocking = false;
+        }
+    }
+    check_balance(y);
+    out_.t_final = t;
+    return out_;
+}
+
+}  // namespace
+
+SimulationResult simulate(const RockingModel& model, const GroundMotion& horizontal, const GroundMotion& vertical,
+                          InitialState initial, const SimulationOptions& options) {
+    Simulator sim(model, horizontal, vertical, options);
+    return sim.run(initial);
+}
+
+SimulationResult free_vibration(const RockingModel& model, double theta0, SimulationOptions options) {
+    options.stop_at_rest = true;
+    if (options.t_end == SimulationOptions{}.t_end) options.t_end = 1e4;  // stops at rest long before
+    const GroundMotion none = GroundMotion::none();
+    return simulate(model, none, none, {theta0, 0.0}, options);
+}
+
+}  // namespace vssw

@@ -1,0 +1,78 @@
+#pragma once
+// Event-driven simulation of a rocking model (a hybrid system: smooth flight on one side, an impact map at
+// theta1 = 0, a rest state).
+//
+//  - At rest the wall stays put until the tipping moment of the ground acceleration beats the restoring one at
+//    theta1 = 0 (the equation of motion at rest; Eq. (12) for the VSSW). It lifts off towards -sgn(a_h).
+//  - Rocking on side s is integrated with Dormand-Prince 8(5,3), stepping onto the ground motion's breakpoints.
+//  - theta1 reaching 0 is an impact: located on the integrator's own step (secant on the step size), then
+//    theta1'+ = e theta1'-.
+//  - After an impact whose next flight would rise less than rest_amplitude * alpha while the ground cannot tip the
+//    wall, the remaining impacts (a geometric series) are summed in closed form: the wall stops at a finite time.
+//  - |theta1| reaching the model's collapse angle is overturning; the run ends there.
+// Energy bookkeeping: kinetic + weights' potential - work(N) - work(ground) + dissipated stays at its initial value;
+// its largest relative drift (over V_r) is reported.
+#include <optional>
+#include <vector>
+
+#include "dop853.hpp"
+#include "ground_motion.hpp"
+#include "model.hpp"
+
+namespace vssw {
+
+struct SimulationOptions {
+    double t_end = 60.0;        // [s]
+    StepControl step{};         // rtol 1e-10 by default
+    double output_dt = 0.0;     // > 0: samples every output_dt (dense output); 0: at every step and event
+    bool keep_samples = true;   // false: no trajectory, only events and summaries (fast path)
+    // Flight amplitude (in units of alpha) below which the remaining impacts are summed to rest in closed form; the
+    // closed form treats the restoring acceleration as constant, an error of the order of this amplitude.
+    double rest_amplitude = 1e-6;
+    bool stop_at_rest = true;   // end the run once at rest after the ground motion has ended
+    double event_time_tol = 1e-13;  // [s] root tolerance for impacts and overturning
+};
+
+struct InitialState {
+    double theta = 0.0;      // [rad]
+    double theta_dot = 0.0;  // [rad/s]
+};
+
+struct Sample {
+    double t, theta, theta_dot;
+    double kinetic, weight_potential, work_overburden, work_ground, dissipated;  // [J/m]
+    double a_h;  // horizontal ground acceleration [m/s^2]
+};
+
+struct Impact {
+    double t, theta_dot_before, theta_dot_after;
+};
+
+struct TurningPoint {
+    double t, theta;  // theta1' = 0 while rocking (the release is the first when starting from rest)
+};
+
+struct SimulationResult {
+    std::vector<Sample> samples;
+    std::vector<Impact> impacts;
+    std::vector<TurningPoint> peaks;
+    std::vector<double> lift_offs;   // times the wall left rest
+    std::vector<double> rest_times;  // times the wall came to rest (after a finite sequence of impacts)
+    bool overturned = false;
+    double t_overturn = 0.0;          // valid when overturned
+    double t_final = 0.0;             // where the run ended
+    bool at_rest_at_end = false;
+    double max_abs_theta = 0.0;
+    // Largest |balance residual| divided by the largest energy in play: V_r, or the largest sum of the magnitudes of
+    // the balance's terms (kinetic, potential, works, dissipated) met during the run, whichever is larger.
+    double energy_balance_error = 0.0;
+    long steps = 0, rejected_steps = 0;
+};
+
+SimulationResult simulate(const RockingModel& model, const GroundMotion& horizontal, const GroundMotion& vertical,
+                          InitialState initial, const SimulationOptions& options);
+
+// Free vibration from rest at theta0 (no ground motion), run until the wall stops or overturns.
+SimulationResult free_vibration(const RockingModel& model, double theta0, SimulationOptions options = {});
+
+}  // namespace vssw

@@ -1,0 +1,52 @@
+// Speed of the analytic core at relative tolerance 1e-10 (the budget on a 2-core machine: the Fig. 6 free
+// vibration to rest under 0.5 ms, the Rinaldi record under 2 ms). Run: build/bench/vssw_bench_analytic
+//   --benchmark_repetitions=10 --benchmark_report_aggregates_only=true   and quote the medians.
+#include <benchmark/benchmark.h>
+
+#include "analytic/simulate.hpp"
+
+namespace vssw {
+namespace {
+
+SimulationOptions fast_options() {
+    SimulationOptions o;
+    o.step.rtol = 1e-10;
+    o.keep_samples = false;  // events and summaries only: what a sweep or a threshold bisection needs
+    return o;
+}
+
+void run_free_vibration(benchmark::State& state, Kinematics k) {
+    const VsswGeometry w = make_vssw(4.0, 0.4, 0.7);  // Fig. 6: b = 0.2 m, h = 2 m, h1/h = 0.7, xi = 0
+    const auto m = make_vssw_model(w, k);
+    for (auto _ : state) {
+        const SimulationResult r = free_vibration(*m, 0.9 * w.alpha1, fast_options());
+        benchmark::DoNotOptimize(r.rest_times);
+    }
+}
+
+void run_rinaldi(benchmark::State& state, Kinematics k) {
+    const VsswGeometry w = make_vssw(3.05, 0.143, 0.6, 0.1);  // Table 1 specimen 17/18, Fig. 9's h1/h and xi
+    const auto m = make_vssw_model(w, k);
+    const GroundMotion record = read_record(std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2");
+    SimulationOptions o = fast_options();
+    o.t_end = record.duration();
+    for (auto _ : state) {
+        const SimulationResult r = simulate(*m, record, GroundMotion::none(), {}, o);
+        benchmark::DoNotOptimize(r.max_abs_theta);
+    }
+}
+
+void BM_Fig6FreeVibrationPaper(benchmark::State& s) { run_free_vibration(s, Kinematics::paper); }
+void BM_Fig6FreeVibrationExact(benchmark::State& s) { run_free_vibration(s, Kinematics::exact); }
+void BM_RinaldiPaper(benchmark::State& s) { run_rinaldi(s, Kinematics::paper); }
+void BM_RinaldiExact(benchmark::State& s) { run_rinaldi(s, Kinematics::exact); }
+
+BENCHMARK(BM_Fig6FreeVibrationPaper)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Fig6FreeVibrationExact)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RinaldiPaper)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RinaldiExact)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace vssw
+
+BENCHMARK_MAIN();

@@ -1,0 +1,275 @@
+// Event-driven simulation: balance laws (energy, angular momentum at impact), symmetry, the threshold found by
+// bisection on simulations, size invariance, the paper's Fig. 6 and Sect. 5 statements, rest and overturning.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/simulate.hpp"
+
+namespace vssw {
+namespace {
+
+// rtol 1e-10 per step accumulates over 1e3-1e4 steps; observed drifts are ~1e-9 to ~1e-8 of V_r: 10x headroom.
+constexpr double kEnergyBalance = 1e-7;
+constexpr double kRoundoff = 1e-12;        // exact arithmetic identities (the impact map)
+constexpr double kEventTimeMatch = 1e-9;   // two runs that must be mirror images: same steps up to round-off
+constexpr double kThresholdBisection = 1e-7;  // relative bracket width the bisection below stops at
+constexpr double kGravityInG = 9.81;
+
+const std::string kRinaldi = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
+
+VsswGeometry fig6_vssw() { return make_vssw(4.0, 0.4, 0.7); }
+ParapetGeometry fig6_parapet() { return make_parapet(4.0, 0.4); }
+
+TEST(Simulate, FreeVibrationConservesEnergyBetweenImpactsAndDissipatesAllOfItAtImpacts) {
+    const VsswGeometry w = make_vssw(4.0, 0.4, 0.65, 0.3);
+    const std::unique_ptr<RockingModel> models[] = {make_vssw_model(w, Kinematics::paper),
+                                                    make_vssw_model(w, Kinematics::exact),
+                                                    make_parapet_model(make_parapet(4.0, 0.4, 0.3))};
+    for (const auto& m : models) {
+        SCOPED_TRACE(m->name());
+        const double theta0 = 0.8 * m->reference_angle();
+        const SimulationResult r = free_vibration(*m, theta0);
+        EXPECT_LT(r.energy_balance_error, kEnergyBalance);
+        EXPECT_TRUE(r.at_rest_at_end);
+        ASSERT_FALSE(r.samples.empty());
+        // At rest, everything the wall had (its potential energy at release) has been dissipated.
+        EXPECT_NEAR(r.samples.back().dissipated, m->potential(theta0), kEnergyBalance * m->reference_energy());
+    }
+}
+
+TEST(Simulate, EveryImpactAppliesTheRestitutionCoefficient) {
+    const auto m = make_vssw_model(fig6_vssw(), Kinematics::exact);
+    const SimulationResult r = free_vibration(*m, 0.9 * fig6_vssw().alpha1);
+    ASSERT_GT(r.impacts.size(), 10u);
+    for (const Impact& i : r.impacts) EXPECT_NEAR(i.theta_dot_after / i.theta_dot_before, m->restitution(), kRoundoff);
+}
+
+TEST(Simulate, PeaksEitherSideOfAnImpactGiveTheRestitutionBack) {
+    // Between impacts energy is conserved, so the peaks either side of an impact give e back by energy.
+    constexpr double kPeakBased = 1e-7;  // peaks located on the dense output at rtol 1e-10
+    const VsswGeometry w = make_vssw(3.05, 0.143, 0.6, 0.1);
+    for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
+        const auto m = make_vssw_model(w, k);
+        const SimulationResult r = free_vibration(*m, 0.8 * w.alpha1);
+        for (std::size_t i = 0; i + 1 < 6; ++i)
+            EXPECT_NEAR(restitution_from_peaks(*m, r.peaks[i].theta, r.peaks[i + 1].theta), m->restitution(), kPeakBased);
+    }
+}
+
+TEST(Simulate, Eq23AsPrintedIsOffByTheChangeOfCAAcrossTheImpact) {
+    // Eq. (23) evaluates C_A at the peaks, not at rest where the velocities are compared: its error is of the order
+    // of the relative change of C_A between the two peaks, and vanishes as they approach each other.
+    const VsswGeometry w = make_vssw(3.05, 0.143, 0.6);
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    const SimulationResult r = free_vibration(*m, 0.8 * w.alpha1);
+    for (std::size_t i = 0; i + 1 < 6; ++i) {
+        const double ca_before = eq11_coefficients(w, std::abs(r.peaks[i].theta)).C_A;
+        const double ca_after = eq11_coefficients(w, std::abs(r.peaks[i + 1].theta)).C_A;
+        const double printed = eq23_restitution_from_amplitudes(w, r.peaks[i].theta, r.peaks[i + 1].theta);
+        EXPECT_NEAR(printed, eq19_restitution(w), std::abs(ca_before / ca_after - 1.0));
+    }
+}
+
+TEST(Simulate, Eq25CountsTheEnergyLostAtTheImpacts) {
+    const VsswGeometry w = fig6_vssw();
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    const SimulationResult r = free_vibration(*m, 0.5 * w.alpha1);
+    double sum_sq = 0.0;
+    for (const Impact& i : r.impacts) sum_sq += i.theta_dot_before * i.theta_dot_before;
+    // The simulation also dissipates the closed-form tail below rest_amplitude: its share is ~1e-6 of V_r.
+    const double tail_share = 1e-5 * m->reference_energy();
+    EXPECT_NEAR(eq25_dissipated_energy(w, sum_sq), r.samples.back().dissipated, tail_share);
+}
+
+TEST(Simulate, MirrorImageReleaseGivesMirrorImageMotion) {
+    for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
+        const auto m = make_vssw_model(make_vssw(4.0, 0.4, 0.6, 0.1), k);
+        const double theta0 = 0.6 * m->reference_angle();
+        const SimulationResult plus = free_vibration(*m, theta0), minus = free_vibration(*m, -theta0);
+        ASSERT_EQ(plus.impacts.size(), minus.impacts.size());
+        for (std::size_t i = 0; i < plus.impacts.size(); ++i) {
+            EXPECT_NEAR(plus.impacts[i].t, minus.impacts[i].t, kEventTimeMatch);
+            EXPECT_NEAR(plus.impacts[i].theta_dot_before, -minus.impacts[i].theta_dot_before, kEventTimeMatch);
+        }
+    }
+}
+
+TEST(Simulate, ReversedRecordGivesMirrorImageResponse) {
+    const auto m = make_vssw_model(make_vssw(3.05, 0.143, 0.6, 0.1), Kinematics::exact);
+    const GroundMotion record = read_record(kRinaldi).scaled(0.5);
+    SimulationOptions o;
+    o.t_end = 25.0;
+    const SimulationResult a = simulate(*m, record, GroundMotion::none(), {}, o);
+    const SimulationResult b = simulate(*m, record.scaled(-1.0), GroundMotion::none(), {}, o);
+    ASSERT_GT(a.impacts.size(), 0u);
+    ASSERT_EQ(a.samples.size(), b.samples.size());
+    for (std::size_t i = 0; i < a.samples.size(); ++i) EXPECT_NEAR(a.samples[i].theta, -b.samples[i].theta, 1e-12);
+    EXPECT_LT(a.energy_balance_error, kEnergyBalance);
+}
+
+// Does a constant horizontal ground acceleration (in g) move the wall off rest within half a second?
+bool lifts(const RockingModel& m, double a_g, const GroundMotion& vertical = GroundMotion::none()) {
+    SimulationOptions o;
+    o.t_end = 0.5;
+    o.keep_samples = false;
+    const SimulationResult r = simulate(m, constant_motion(a_g * kGravityInG, 1.0), vertical, {}, o);
+    return r.max_abs_theta > 0.0;
+}
+
+double threshold_by_bisection(const RockingModel& m, const GroundMotion& vertical = GroundMotion::none()) {
+    double lo = 0.0, hi = 2.0;  // in g; every wall here tips under 2 g
+    while (hi - lo > kThresholdBisection * hi) {
+        const double mid = 0.5 * (lo + hi);
+        (lifts(m, mid, vertical) ? hi : lo) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+TEST(Simulate, ThresholdFoundBySimulationIsEq12) {
+    for (double xi : {0.0, 0.1, 0.5}) {
+        const VsswGeometry w = make_vssw(4.88, 0.356, 0.64, xi, kDefaultDensity, kGravityInG);
+        const auto m = make_vssw_model(w, Kinematics::exact);
+        EXPECT_NEAR(threshold_by_bisection(*m), eq12_threshold(w) / kGravityInG,
+                    2.0 * kThresholdBisection * eq12_threshold(w) / kGravityInG);
+    }
+    const ParapetGeometry p = make_parapet(0.9, 0.11, 0.2, kDefaultDensity, kGravityInG);
+    EXPECT_NEAR(threshold_by_bisection(*make_parapet_model(p)), eq17_parapet_threshold(p) / kGravityInG,
+                2.0 * kThresholdBisection);
+}
+
+TEST(Simulate, UpwardGroundAccelerationRaisesTheThresholdAsEq12Says) {
+    const VsswGeometry w = make_vssw(4.0, 0.4, 0.6, 0.1, kDefaultDensity, kGravityInG);
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    const double a_v = 0.3 * kGravityInG;
+    EXPECT_NEAR(threshold_by_bisection(*m, constant_motion(a_v, 1.0)), eq12_threshold(w, a_v) / kGravityInG,
+                2.0 * kThresholdBisection);
+}
+
+TEST(Simulate, ThresholdDoesNotDependOnSize) {
+    const double reference = threshold_by_bisection(*make_vssw_model(make_vssw(4.0, 0.4, 0.7, 0.1), Kinematics::exact));
+    for (double scale : {0.3, 5.0}) {
+        const auto m = make_vssw_model(make_vssw(4.0 * scale, 0.4 * scale, 0.7, 0.1), Kinematics::exact);
+        EXPECT_NEAR(threshold_by_bisection(*m), reference, 2.0 * kThresholdBisection * reference);
+    }
+}
+
+TEST(Simulate, JustBelowTheThresholdNothingMovesAndJustAboveTheWallRocks) {
+    const VsswGeometry w = fig6_vssw();
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    const double threshold_g = eq12_threshold(w) / w.g;
+    EXPECT_FALSE(lifts(*m, threshold_g * (1.0 - 1e-6)));
+    EXPECT_TRUE(lifts(*m, threshold_g * (1.0 + 1e-6)));
+}
+
+TEST(Simulate, Fig6VsswStopsInLessThanAQuarterOfTheParapetsTime) {
+    const VsswGeometry w = fig6_vssw();
+    const ParapetGeometry p = fig6_parapet();
+    const SimulationResult vssw = free_vibration(*make_vssw_model(w, Kinematics::paper), 0.9 * w.alpha1);
+    const SimulationResult pw = free_vibration(*make_parapet_model(p), 0.9 * p.alpha);
+    ASSERT_FALSE(vssw.rest_times.empty());
+    ASSERT_FALSE(pw.rest_times.empty());
+    EXPECT_LT(vssw.rest_times.back(), 0.25 * pw.rest_times.back());
+}
+
+TEST(Simulate, ImpactsAccumulateAndTheWallStopsAtAFiniteTime) {
+    const auto m = make_vssw_model(fig6_vssw(), Kinematics::exact);
+    const SimulationResult r = free_vibration(*m, 0.3 * fig6_vssw().alpha1);
+    ASSERT_EQ(r.rest_times.size(), 1u);
+    ASSERT_FALSE(r.impacts.empty());
+    // Flight times shrink geometrically (by e per impact); the closed-form tail after the last one is short.
+    const std::size_t n = r.impacts.size();
+    const double last_gap = r.impacts[n - 1].t - r.impacts[n - 2].t;
+    EXPECT_LT(r.rest_times[0] - r.impacts[n - 1].t, last_gap / (1.0 - m->restitution()));
+    EXPECT_GT(r.rest_times[0], r.impacts[n - 1].t);
+    EXPECT_LT(n, 1000u);
+    for (std::size_t i = 2; i < n; ++i) EXPECT_LT(r.impacts[i].t - r.impacts[i - 1].t, r.impacts[i - 1].t - r.impacts[i - 2].t);
+}
+
+TEST(Simulate, PaperAndExactKinematicsGiveTheSameMotionAtMidHeightHinge) {
+    const VsswGeometry w = make_vssw(3.05, 0.194, 0.5, 0.1);
+    const SimulationResult p = free_vibration(*make_vssw_model(w, Kinematics::paper), 0.7 * w.alpha1);
+    const SimulationResult e = free_vibration(*make_vssw_model(w, Kinematics::exact), 0.7 * w.alpha1);
+    ASSERT_EQ(p.impacts.size(), e.impacts.size());
+    for (std::size_t i = 0; i < p.impacts.size(); ++i) EXPECT_NEAR(p.impacts[i].t, e.impacts[i].t, kEventTimeMatch);
+}
+
+TEST(Simulate, ReleasedPastTheUnstableEquilibriumTheWallFalls) {
+    const VsswGeometry w = fig6_vssw();
+    const ParapetGeometry p = fig6_parapet();
+    const std::unique_ptr<RockingModel> models[] = {make_vssw_model(w, Kinematics::paper),
+                                                    make_vssw_model(w, Kinematics::exact), make_parapet_model(p)};
+    for (const auto& m : models) {
+        SCOPED_TRACE(m->name());
+        const SimulationResult falls = free_vibration(*m, 1.02 * m->reference_angle());
+        EXPECT_TRUE(falls.overturned);
+        EXPECT_GT(falls.t_overturn, 0.0);
+        EXPECT_LT(falls.energy_balance_error, kEnergyBalance);
+        EXPECT_FALSE(free_vibration(*m, 0.98 * m->reference_angle()).overturned);
+    }
+}
+
+TEST(Simulate, ReleaseBeyondTheCollapseAngleIsBadInput) {
+    const auto m = make_vssw_model(fig6_vssw(), Kinematics::exact);
+    EXPECT_THROW(free_vibration(*m, 1.01 * m->collapse_angle()), InputError);
+    EXPECT_THROW(free_vibration(*m, std::nan("")), InputError);
+}
+
+TEST(Simulate, PulseAboveTheThresholdRocksTheWallWhichThenComesBackToRest) {
+    const VsswGeometry w = fig6_vssw();
+    const auto m = make_vssw_model(w, Kinematics::exact);
+    const GroundMotion pulse = sine_pulse(1.5 * eq12_threshold(w), 0.5);
+    SimulationOptions o;
+    o.t_end = 60.0;
+    const SimulationResult r = simulate(*m, pulse, GroundMotion::none(), {}, o);
+    EXPECT_EQ(r.lift_offs.size(), 1u);
+    EXPECT_GT(r.lift_offs[0], 0.0);
+    EXPECT_FALSE(r.overturned);
+    EXPECT_TRUE(r.at_rest_at_end);
+    EXPECT_LT(r.energy_balance_error, kEnergyBalance);
+}
+
+TEST(Simulate, StrongPulseOverturnsTheWall) {
+    const VsswGeometry w = fig6_vssw();
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    const SimulationResult r =
+        simulate(*m, sine_pulse(8.0 * eq12_threshold(w), 1.5), GroundMotion::none(), {}, SimulationOptions{});
+    EXPECT_TRUE(r.overturned);
+    EXPECT_NEAR(std::abs(r.samples.back().theta), m->collapse_angle(), 1e-9);
+}
+
+TEST(Simulate, EnergyBalanceClosesUnderTheRinaldiRecordWithOverburdenAndVerticalShaking) {
+    const GroundMotion record = read_record(kRinaldi);
+    const GroundMotion vertical = harmonic(0.2 * kGravityInG, 0.3, 15.0);
+    for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
+        const auto m = make_vssw_model(make_vssw(3.05, 0.143, 0.6, 0.1), k);
+        SimulationOptions o;
+        o.t_end = 25.0;
+        o.output_dt = 0.01;
+        const SimulationResult r = simulate(*m, record, vertical, {}, o);
+        EXPECT_GT(r.impacts.size(), 3u);
+        EXPECT_LT(r.energy_balance_error, kEnergyBalance);
+        // the output grid is honoured
+        ASSERT_GT(r.samples.size(), 100u);
+        EXPECT_NEAR(r.samples[100].t, 1.0, 1e-12);
+    }
+}
+
+TEST(Simulate, VsswDampsMoreThanTheParapetLikeSection5Says) {
+    // Sect. 5: equivalent viscous damping from the logarithmic decrement over four cycles (eight half-cycles)
+    // after release at theta0/alpha = 0.7, for Lam's parapet and Doherty's VSSW. See the README for the values.
+    auto zeta = [](const RockingModel& m) {
+        const SimulationResult r = free_vibration(m, 0.7 * m.reference_angle());
+        const double delta = std::log(std::abs(r.peaks.at(0).theta) / std::abs(r.peaks.at(8).theta)) / 4.0;
+        return delta / std::sqrt(4.0 * M_PI * M_PI + delta * delta);
+    };
+    const double pw = zeta(*make_parapet_model(make_parapet(0.9, 0.11)));
+    const double vssw = zeta(*make_vssw_model(make_vssw(1.5, 0.11, 0.5), Kinematics::paper));
+    EXPECT_GT(vssw, 1.5 * pw);
+}
+
+}  // namespace
+}  // namespace vssw
