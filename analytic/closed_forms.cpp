@@ -38,6 +38,32 @@ std::optional<double> eq2_theta2_exact(const VsswGeometry& w, double theta1) {
 
 double eq3_theta2_linear(const VsswGeometry& w, double theta1) { return -w.k * theta1; }
 
+double eq3_roller_drift(const VsswGeometry& w, double theta1) {
+    const double q = std::abs(theta1);
+    return -2.0 * w.R1 * std::sin(w.alpha1 - q) + 2.0 * w.R2 * std::sin(w.alpha2 - w.k * q);
+}
+
+std::optional<double> eq3_validity_limit(const VsswGeometry& w, double fraction) {
+    constexpr double kHalfPi = 1.5707963267948966;
+    const double limit = eq26_limit_rotation(w).value_or(kHalfPi);
+    auto exceeded = [&](double q) { return std::abs(eq3_roller_drift(w, q)) >= fraction * 2.0 * w.b; };
+    // The drift grows from zero (second order in theta1); scan for the first excess, then bisect.
+    constexpr int kScan = 2000;
+    double lo = 0.0;
+    for (int i = 1; i <= kScan; ++i) {
+        double hi = limit * i / kScan;
+        if (exceeded(hi)) {
+            for (int j = 0; j < 60; ++j) {
+                const double mid = 0.5 * (lo + hi);
+                (exceeded(mid) ? hi : lo) = mid;
+            }
+            return 0.5 * (lo + hi);
+        }
+        lo = hi;
+    }
+    return std::nullopt;
+}
+
 double eq4_velocity_ratio(const VsswGeometry& w, double theta1, double theta2) {
     return std::sin(w.alpha2) * std::cos(w.alpha1 - theta1) / (std::sin(w.alpha1) * std::cos(w.alpha2 + theta2));
 }

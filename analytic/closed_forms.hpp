@@ -15,6 +15,12 @@ namespace vssw {
 std::optional<double> eq2_theta2_exact(const VsswGeometry& w, double theta1);
 // Eq. (3): the paper's linearisation theta2 = -(tan a2 / tan a1) theta1.
 double eq3_theta2_linear(const VsswGeometry& w, double theta1);
+// Horizontal distance of the pivot-side top corner from the roller line when theta2 follows Eq. (3) [m]: zero for
+// Eq. (2) by construction, so it measures how far the paper's linearisation strays from the top restraint.
+double eq3_roller_drift(const VsswGeometry& w, double theta1);
+// Rotation |theta1| (rad) at which that drift first reaches `fraction` of the wall's thickness 2b, found by
+// bisection up to the collapse angle; std::nullopt if it never does before collapse.
+std::optional<double> eq3_validity_limit(const VsswGeometry& w, double fraction);
 // Eq. (4): theta2_dot / theta1_dot as a function of theta1 and theta2 (a magnitude; theta2 has the sign opposite to
 // theta1).
 double eq4_velocity_ratio(const VsswGeometry& w, double theta1, double theta2);

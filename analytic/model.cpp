@@ -23,9 +23,29 @@ double vssw_collapse_angle(const VsswGeometry& w) {
     return kHalfPi;
 }
 
-class PaperVssw final : public RockingModel {
+// What the two VSSW kinematics share: the wall, the impact law, the reference and collapse angles, and the height of
+// N's point (the centre of the top face) for a given lower-body angle and theta2.
+class VsswModel : public RockingModel {
 public:
-    explicit PaperVssw(const VsswGeometry& w) : w_(w) {}
+    explicit VsswModel(const VsswGeometry& w) : w_(w) {}
+    // The impact happens at q = 0, where Eq. (2) and Eq. (3) have the same slope: Eq. (19) serves both kinematics.
+    double restitution() const override { return eq19_restitution(w_); }
+    double reference_angle() const override { return w_.alpha1; }
+    double collapse_angle() const override { return vssw_collapse_angle(w_); }
+    double gravity() const override { return w_.g; }
+    double overburden() const override { return w_.N; }
+
+protected:
+    // Hinge height 2 R1 cos(a) plus the top centre's height above the hinge, (b, 2 h2) turned by theta2.
+    double top_centre_height(double cos_a, double sin_theta2, double cos_theta2) const {
+        return 2.0 * w_.R1 * cos_a + 2.0 * w_.h2 * cos_theta2 - w_.b * sin_theta2;
+    }
+    VsswGeometry w_;
+};
+
+class PaperVssw final : public VsswModel {
+public:
+    explicit PaperVssw(const VsswGeometry& w) : VsswModel(w) {}
     ModelTerms terms(double q) const override {
         const Eq11Coefficients c = eq11_coefficients(w_, q);
         const double R1 = w_.R1;
@@ -36,24 +56,16 @@ public:
     }
     double load_height(double q) const override {
         const double theta2 = eq3_theta2_linear(w_, q);
-        return 2.0 * w_.R1 * std::cos(w_.alpha1 - q) + 2.0 * w_.h2 * std::cos(theta2) - w_.b * std::sin(theta2);
+        return top_centre_height(std::cos(w_.alpha1 - q), std::sin(theta2), std::cos(theta2));
     }
-    double restitution() const override { return eq19_restitution(w_); }
-    double reference_angle() const override { return w_.alpha1; }
-    double collapse_angle() const override { return vssw_collapse_angle(w_); }
-    double gravity() const override { return w_.g; }
-    double overburden() const override { return w_.N; }
     std::string name() const override { return "vssw/paper"; }
-
-private:
-    VsswGeometry w_;
 };
 
 // Exact kinematics: psi = alpha2 + theta2 from Eq. (2), sin(psi) = s sin(alpha1 - q). G1 = R1(-sin a, cos a) with
 // a = alpha1 - q (Eq. 1a); G2 = hinge + R2(sin psi, cos psi) (Eq. 1b); the top roller keeps x_G2 = x_hinge / 2.
-class ExactVssw final : public RockingModel {
+class ExactVssw final : public VsswModel {
 public:
-    explicit ExactVssw(const VsswGeometry& w) : w_(w), sa2_(std::sin(w.alpha2)), ca2_(std::cos(w.alpha2)) {}
+    explicit ExactVssw(const VsswGeometry& w) : VsswModel(w) {}
 
     struct Angles {
         double sa, ca, spsi, cpsi, dpsi, ddpsi;
@@ -77,8 +89,8 @@ public:
         const double dx2 = R1 * g.ca, ddx2 = R1 * g.sa;
         const double dy2 = 2.0 * R1 * g.sa - R2 * g.spsi * g.dpsi;
         const double ddy2 = -2.0 * R1 * g.ca - R2 * (g.cpsi * sq(g.dpsi) + g.spsi * g.ddpsi);
-        const double s2 = g.spsi * ca2_ - g.cpsi * sa2_;  // sin(theta2), theta2 = psi - alpha2
-        const double c2 = g.cpsi * ca2_ + g.spsi * sa2_;  // cos(theta2)
+        const double s2 = g.spsi * w_.cos_a2 - g.cpsi * w_.sin_a2;  // sin(theta2), theta2 = psi - alpha2
+        const double c2 = g.cpsi * w_.cos_a2 + g.spsi * w_.sin_a2;  // cos(theta2)
         ModelTerms t{};
         t.M = w_.m1 * R1 * R1 + w_.I1 + w_.m2 * (sq(dx2) + sq(dy2)) + w_.I2 * sq(g.dpsi);
         t.C = w_.m2 * (dx2 * ddx2 + dy2 * ddy2) + w_.I2 * g.dpsi * g.ddpsi;  // M'/2
@@ -93,20 +105,9 @@ public:
     }
     double load_height(double q) const override {
         const Angles g = angles(q);
-        const double theta2 = std::atan2(g.spsi, g.cpsi) - w_.alpha2;
-        return 2.0 * w_.R1 * g.ca + 2.0 * w_.h2 * std::cos(theta2) - w_.b * std::sin(theta2);
+        return top_centre_height(g.ca, g.spsi * w_.cos_a2 - g.cpsi * w_.sin_a2, g.cpsi * w_.cos_a2 + g.spsi * w_.sin_a2);
     }
-    double restitution() const override { return eq19_restitution(w_); }  // the impact happens at q = 0, where
-                                                                          // Eq. (2) and Eq. (3) have the same slope
-    double reference_angle() const override { return w_.alpha1; }
-    double collapse_angle() const override { return vssw_collapse_angle(w_); }
-    double gravity() const override { return w_.g; }
-    double overburden() const override { return w_.N; }
     std::string name() const override { return "vssw/exact"; }
-
-private:
-    VsswGeometry w_;
-    double sa2_, ca2_;
 };
 
 // Housner's block rocking on a base corner; N at the centre of the top face, (-b, 2h) from the pivot at rest.

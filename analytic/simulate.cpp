@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "error.hpp"
 
 namespace vssw {
@@ -257,11 +259,13 @@ Event Simulator::rocking_phase(double& t, State& y) {
         const double stop = std::min(next_breakpoint(t), opt_.t_end);
         double h = std::min(h_, stop - t);
         const double err = integrator_.step(t, y, dy, h, step);
-        if (err > 1.0 && !integrator_.fixed_step()) {
+        if (!std::isfinite(step.y1[0]) || !std::isfinite(step.y1[1]))
+            throw std::runtime_error(fmt::format("the state became non-finite at t = {} s", t));
+        if (!(err <= 1.0) && !integrator_.fixed_step()) {  // a NaN error norm is a rejection too
             ++out_.rejected_steps;
             h_ = integrator_.next_step(h, err);
             if (h_ <= opt_.step.min_step)
-                throw std::runtime_error("step size underflow at t = " + std::to_string(t));
+                throw std::runtime_error(fmt::format("step size underflow at t = {} s", t));
             continue;
         }
         const double h_next = integrator_.next_step(h, err);
@@ -346,8 +350,13 @@ SimulationResult Simulator::run(InitialState init) {
     require(std::isfinite(init.theta), "initial rotation", "finite", init.theta);
     require(std::isfinite(init.theta_dot), "initial angular velocity", "finite", init.theta_dot);
     require(std::abs(init.theta) < collapse_, "|initial rotation| (rad)",
-            "below the collapse angle " + std::to_string(collapse_) + " rad", init.theta);
+            fmt::format("below the collapse angle {} rad", collapse_), init.theta);
     require(std::isfinite(opt_.t_end) && opt_.t_end > 0.0, "end time", "a positive finite number", opt_.t_end);
+    // Tighter than ~1e-15 the error estimate is round-off; looser than 1e-2 the events are not worth locating.
+    require(opt_.step.rtol >= 1e-15 && opt_.step.rtol <= 1e-2, "relative tolerance", "in [1e-15, 1e-2]",
+            opt_.step.rtol);
+    require(std::isfinite(opt_.output_dt) && opt_.output_dt >= 0.0, "output interval", "a finite number >= 0",
+            opt_.output_dt);
 
     double t = 0.0;
     State y{init.theta, init.theta_dot, 0.0};
@@ -399,8 +408,11 @@ SimulationResult Simulator::run(InitialState init) {
         if (a_out < 0.0 && v_after * v_after / (2.0 * -a_out) < opt_.rest_amplitude * alpha_) {
             const double tail = 2.0 * std::abs(v_after) / (-a_out * (1.0 - e_));
             dissipated_ += 0.5 * m0 * v_after * v_after;
-            t = std::min(t + tail, opt_.t_end);
             y[1] = 0.0;
+            // The output grid during the tail: the wall is within rest_amplitude of rest, shown at rest.
+            const double t_rest = std::min(t + tail, opt_.t_end);
+            emit_grid(t, t_rest, [&](double) { return y; });
+            t = t_rest;
             out_.rest_times.push_back(t);
             check_balance(y);
             if (opt_.output_dt <= 0.0) emit(t, y);
@@ -421,6 +433,7 @@ SimulationResult simulate(const RockingModel& model, const GroundMotion& horizon
 }
 
 SimulationResult free_vibration(const RockingModel& model, double theta0, SimulationOptions options) {
+    require(theta0 != 0.0, "initial rotation of a free vibration", "non-zero", theta0);
     options.stop_at_rest = true;
     if (options.t_end == SimulationOptions{}.t_end) options.t_end = 1e4;  // stops at rest long before
     const GroundMotion none = GroundMotion::none();

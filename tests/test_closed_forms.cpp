@@ -167,6 +167,23 @@ TEST(ClosedForms, Eq2AndEq3AgreeForSmallRotationsAndExactlyAtMidHeight) {
     for (double q : {0.01, 0.1, 0.3}) EXPECT_NEAR(*eq2_theta2_exact(mid, q), eq3_theta2_linear(mid, q), kRoundoff);
 }
 
+TEST(ClosedForms, Eq3StraysFromTheRollerAtSecondOrderExceptAtMidHeight) {
+    const VsswGeometry w = make_vssw(4.0, 0.4, 0.7);
+    // Second order: halving theta1 quarters the drift (to within the third-order term).
+    constexpr double kSecondOrderRatio = 4.0, kRatioSlack = 0.05;
+    EXPECT_NEAR(eq3_roller_drift(w, 2e-3) / eq3_roller_drift(w, 1e-3), kSecondOrderRatio, kRatioSlack);
+    const auto limit = eq3_validity_limit(w, 0.01);
+    ASSERT_TRUE(limit.has_value());
+    EXPECT_NEAR(std::abs(eq3_roller_drift(w, *limit)), 0.01 * 2.0 * w.b, kRoundoff);
+    // At mid-height Eq. (3) is exact: no drift, ever.
+    const VsswGeometry mid = make_vssw(4.0, 0.4, 0.5);
+    EXPECT_NEAR(eq3_roller_drift(mid, 0.3), 0.0, kRoundoff);
+    EXPECT_FALSE(eq3_validity_limit(mid, 0.01).has_value());
+    // A higher hinge strays sooner (Table 1's specimens 10 and 7 have the same height).
+    EXPECT_LT(*eq3_validity_limit(make_vssw(4.88, 0.194, 0.75), 0.01) / make_vssw(4.88, 0.194, 0.75).alpha1,
+              *eq3_validity_limit(make_vssw(4.88, 0.194, 0.6), 0.01) / make_vssw(4.88, 0.194, 0.6).alpha1);
+}
+
 TEST(ClosedForms, Eq22ShrinksWithAmplitudeOnlyThroughTheArccosh) {
     // T is size-independent in shape: T * P depends on theta10/A only (Eq. 22), and grows with amplitude.
     const VsswGeometry small = make_vssw(3.0, 0.2, 0.6), large = make_vssw(6.0, 0.4, 0.6);

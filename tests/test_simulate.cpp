@@ -258,6 +258,21 @@ TEST(Simulate, EnergyBalanceClosesUnderTheRinaldiRecordWithOverburdenAndVertical
     }
 }
 
+TEST(Simulate, OutputGridHasNoGapsAcrossRestAndTheSummedTailOfImpacts) {
+    const VsswGeometry w = fig6_vssw();
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    SimulationOptions o;
+    o.output_dt = 0.01;
+    o.t_end = 20.0;
+    o.stop_at_rest = false;
+    const SimulationResult r =
+        simulate(*m, read_record(kRinaldi).scaled_to_pga(0.3 * 9.80665), GroundMotion::none(), {}, o);
+    ASSERT_FALSE(r.rest_times.empty());  // it comes to rest at least once, through a summed tail
+    ASSERT_EQ(r.samples.size(), 2001u);
+    for (std::size_t i = 0; i < r.samples.size(); ++i)
+        EXPECT_NEAR(r.samples[i].t, 0.01 * static_cast<double>(i), 1e-9);
+}
+
 TEST(Simulate, VsswDampsMoreThanTheParapetLikeSection5Says) {
     // Sect. 5: equivalent viscous damping from the logarithmic decrement over four cycles (eight half-cycles)
     // after release at theta0/alpha = 0.7, for Lam's parapet and Doherty's VSSW. See the README for the values.

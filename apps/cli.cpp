@@ -1,0 +1,98 @@
+#include "apps/cli.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+#include "apps/commands.hpp"
+#include "apps/simulation_failure.hpp"
+
+namespace vssw::cli {
+namespace {
+
+// Error messages are one line, whatever the text that raised them holds.
+std::string one_line(std::string message) {
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    return message;
+}
+
+int fail(std::ostream& err, const char* kind, const std::string& message, int code) {
+    err << "vssw: " << kind << ": " << one_line(message) << '\n';
+    return code;
+}
+
+// The command the user named, if any (also after a parse error).
+const Command* chosen_command(const std::vector<Command>& commands) {
+    for (const Command& command : commands)
+        if (command.app->parsed()) return &command;
+    return nullptr;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string text;
+    for (const std::string& w : words) text += (text.empty() ? "" : " ") + w;
+    return text;
+}
+
+// CLI11 checks required options before unknown ones, so a misspelt "--heigth 4" would be reported as "--height is
+// required". Arguments nobody recognised are the likelier mistake: name them first.
+std::string parse_error_message(const CLI::ParseError& e, const CLI::App& app, const Command* command) {
+    if (command != nullptr && !command->app->remaining().empty())
+        return "unknown option or argument for '" + command->app->get_name() +
+               "': " + joined(command->app->remaining());
+    if (command == nullptr && !app.remaining().empty())
+        return "'" + joined(app.remaining()) + "' is not a command; the commands are wall, free, history, summary";
+    return e.what();
+}
+
+int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    CLI::App app{
+        "vssw: the rocking of a vertical spanning strip wall (VSSW) and of a parapet wall, after Sorrentino, "
+        "Masiani & Griffith (2008)",
+        "vssw"};
+    app.require_subcommand(0, 1);  // one command at a time; none prints this help
+    app.footer(
+        "Run 'vssw COMMAND --help' for a command's options, units and defaults. Exit codes: 0 success, 2 bad "
+        "input, 3 simulation failed.");
+    const std::vector<Command> commands = {add_wall_command(app), add_free_command(app), add_history_command(app),
+                                           add_summary_command(app)};
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
+        out << app.help();  // the chosen subcommand's help when one was named
+        return kExitOk;
+    } catch (const CLI::ParseError& e) {
+        const Command* command = chosen_command(commands);
+        const std::string help = command != nullptr ? "vssw " + command->app->get_name() + " --help" : "vssw --help";
+        return fail(err, "error", parse_error_message(e, app, command) + " (see '" + help + "')", kExitBadInput);
+    }
+    if (const Command* command = chosen_command(commands)) {
+        command->run(out);
+        return kExitOk;
+    }
+    out << app.help();
+    return fail(err, "error", "a command is required: wall, free, history or summary", kExitBadInput);
+}
+
+}  // namespace
+
+int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    try {
+        return run_unguarded(argc, argv, out, err);
+    } catch (const InputError& e) {
+        return fail(err, "error", e.what(), kExitBadInput);
+    } catch (const SimulationFailure& e) {
+        return fail(err, "simulation failed", e.what(), kExitSimulationFailed);
+    } catch (const std::exception& e) {
+        return fail(err, "error", e.what(), kExitBadInput);
+    } catch (...) {
+        return fail(err, "error", "unknown failure", kExitBadInput);
+    }
+}
+
+}  // namespace vssw::cli

@@ -1,0 +1,55 @@
+// `vssw free`: free vibration from rest at theta0 = r * alpha.
+#include <memory>
+#include <ostream>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "apps/commands.hpp"
+#include "apps/report_free.hpp"
+
+namespace vssw::cli {
+namespace {
+
+// Impact rows in the table; the JSON output always has all of them.
+constexpr std::size_t kImpactRowsShown = 20;
+
+}  // namespace
+
+Command add_free_command(CLI::App& root) {
+    struct Options {
+        WallOptions wall;
+        ModelOptions model;
+        FreeRequest request;
+        bool json = false;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* cmd = root.add_subcommand("free", "Free vibration released from rest, until the wall stops or overturns");
+    add_model_options(*cmd, o->model);
+    add_wall_options(*cmd, o->wall, true);
+    cmd->add_option("--theta0", o->request.theta0_over_alpha,
+                    "initial rotation as a fraction r of alpha (alpha1 for a VSSW, alpha for a parapet): finite, "
+                    "nonzero, r * alpha below the collapse angle (required)")
+        ->required();
+    cmd->add_option("--rtol", o->request.rtol,
+                    fmt::format("relative tolerance of the integrator (default {})", o->request.rtol));
+    cmd->add_flag("--json", o->json, "print JSON instead of tables");
+    cmd->footer(
+        "Times in s, angular velocities in rad/s, rotations as |theta|/alpha.\n"
+        "JSON keys: model, kinematics (null for a parapet), theta0 (r), alpha [rad],\n"
+        "impacts [{t, theta_dot_before, theta_dot_after}], peaks (|theta|/alpha at each turning point, the release\n"
+        "first), peak_times, stop_time (null if it overturned), falls, t_overturn (null unless it fell),\n"
+        "energy_balance_error (relative to the largest energy in play), impact_count, first_impact_time (a quarter period), end_time,\n"
+        "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.");
+    return {cmd, [o](std::ostream& out) {
+                const FreeRun run = run_free(o->wall, o->model, o->request);
+                if (o->json) {
+                    out << to_json(run).dump(2) << '\n';
+                    return;
+                }
+                print_free_summary(out, run, "Free vibration of the " + describe_wall(o->wall, run.kind));
+                print_free_impacts(out, run, kImpactRowsShown);
+            }};
+}
+
+}  // namespace vssw::cli

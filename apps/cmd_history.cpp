@@ -1,0 +1,66 @@
+// `vssw history`: the response of a wall, from rest, to a recorded or synthetic ground motion.
+#include <memory>
+#include <ostream>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+#include "apps/commands.hpp"
+#include "apps/report_history.hpp"
+
+namespace vssw::cli {
+
+Command add_history_command(CLI::App& root) {
+    struct Options {
+        WallOptions wall;
+        ModelOptions model;
+        GroundMotionOptions motion;
+        HistoryRequest request;
+        std::string csv;
+        bool json = false;
+    };
+    auto o = std::make_shared<Options>();
+    CLI::App* cmd = root.add_subcommand(
+        "history", "Response from rest to a ground motion (horizontal only): a record file or a synthetic pulse");
+    add_ground_motion_options(*cmd, o->motion);
+    add_model_options(*cmd, o->model);
+    add_wall_options(*cmd, o->wall, true);
+    cmd->add_option_function<double>(
+        "--output-dt", [o](const double& dt) { o->request.output_dt = dt; },
+        "spacing of the CSV samples [s] (default: the record's sample spacing; T_p/100 for a pulse)");
+    cmd->add_option_function<double>(
+        "--t-end", [o](const double& t) { o->request.t_end = t; },
+        fmt::format("end of the run [s] (default: the ground motion's duration + {} s; the run also ends once the "
+                    "wall is at rest after the shaking, or overturns)",
+                    kDefaultExtraTime));
+    cmd->add_option("--csv", o->csv,
+                    "write the trajectory to this file: t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, "
+                    "ED_over_Vr, ag_g");
+    cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    cmd->footer(
+        "Exactly one of --record and --pulse is required. Accelerations given in g use g0 = 9.80665 m/s^2.\n"
+        "JSON keys: record (path, null for a pulse), input, scale_factor, pga_g (after scaling), duration [s], model,\n"
+        "kinematics, alpha, max_theta_over_alpha, overturned, t_overturn (null if not), impacts, energy_balance_error\n"
+        "(relative to the largest energy in play), lift_offs, end_time, at_rest_at_end, t_end, output_dt,\n"
+        "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.\n"
+        "CSV: theta_dot_over_ref = theta_dot / reference velocity; E = kinetic + weights' potential - work of N,\n"
+        "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha); ag_g = a_h / g0.");
+    return {cmd, [o](std::ostream& out) {
+                o->request.keep_trajectory = !o->csv.empty();
+                HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
+                std::ofstream csv;
+                if (!o->csv.empty()) csv = open_output_file(o->csv);
+                simulate_history(run);
+                if (csv.is_open()) {
+                    write_history_csv(csv, run);
+                    if (!csv.flush()) throw InputError("error while writing the CSV file '" + o->csv + "'");
+                }
+                if (o->json)
+                    out << to_json(run).dump(2) << '\n';
+                else
+                    print_history_summary(out, run, "Time history of the " + describe_wall(o->wall, run.chosen.kind));
+            }};
+}
+
+}  // namespace vssw::cli

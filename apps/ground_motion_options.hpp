@@ -1,0 +1,38 @@
+#pragma once
+// The ground-motion options of `vssw history`: a record file or a synthetic pulse, optionally scaled.
+#include <optional>
+#include <string>
+
+#include "analytic/ground_motion.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace vssw::cli {
+
+struct GroundMotionOptions {
+    std::optional<std::string> record;   // file path (PEER AT2 or two columns)
+    std::optional<std::string> units;    // overrides the record's units
+    std::optional<double> scale;         // factor on the record
+    std::optional<double> pga_g;         // target PGA [g]
+    std::optional<std::string> pulse;    // sine | cosine | ricker | harmonic
+    std::optional<double> amplitude_g;   // pulse amplitude [g]
+    std::optional<double> pulse_period;  // [s]
+    std::optional<double> duration;      // [s], harmonic only
+};
+
+// --record, --units, --scale, --pga, --pulse, --amplitude, --pulse-period, --duration.
+void add_ground_motion_options(CLI::App& cmd, GroundMotionOptions& options);
+
+struct LoadedMotion {
+    GroundMotion motion;  // after scaling, in m/s^2
+    double scale_factor;  // what multiplied the input (1 when not scaled)
+    double sample_dt;     // the record's mean sample spacing, or T_p / 100 for a pulse [s]
+};
+
+// InputError unless exactly one of record/pulse is given, on a bad file, bad units, bad pulse parameters, or both
+// --scale and --pga.
+LoadedMotion load_ground_motion(const GroundMotionOptions& options);
+
+}  // namespace vssw::cli

@@ -1,0 +1,104 @@
+#include "apps/report_history.hpp"
+
+#include <cmath>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "apps/simulation_failure.hpp"
+#include "apps/table.hpp"
+
+namespace vssw::cli {
+
+HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, const GroundMotionOptions& motion,
+                           const HistoryRequest& request) {
+    ChosenModel chosen = choose_model(wall, model);
+    LoadedMotion input = load_ground_motion(motion);
+    SimulationOptions options;
+    options.output_dt = request.output_dt.value_or(input.sample_dt);
+    require(std::isfinite(options.output_dt) && options.output_dt > 0.0, "output interval (--output-dt) [s]",
+            "a positive finite number", options.output_dt);
+    options.t_end = request.t_end.value_or(input.motion.duration() + kDefaultExtraTime);
+    require(std::isfinite(options.t_end) && options.t_end > 0.0, "end time (--t-end) [s]", "a positive finite number",
+            options.t_end);
+    options.keep_samples = request.keep_trajectory;
+    options.stop_at_rest = true;
+    return {wall, motion.record, std::move(input), std::move(chosen), options, {}};
+}
+
+void simulate_history(HistoryRun& run) {
+    const GroundMotion none = GroundMotion::none();
+    run.result = run_simulation(
+        [&] { return simulate(*run.chosen.model, run.input.motion, none, InitialState{}, run.options); });
+}
+
+Json to_json(const HistoryRun& run) {
+    const SimulationResult& res = run.result;
+    Json j;
+    j["record"] = run.record ? Json(*run.record) : Json(nullptr);
+    j["input"] = run.input.motion.name();
+    j["scale_factor"] = run.input.scale_factor;
+    j["pga_g"] = run.input.motion.pga() / kStandardGravity;
+    j["duration"] = run.input.motion.duration();
+    j["model"] = to_string(run.chosen.kind);
+    j["kinematics"] = run.chosen.kinematics ? Json(to_string(*run.chosen.kinematics)) : Json(nullptr);
+    j["alpha"] = run.chosen.model->reference_angle();
+    j["max_theta_over_alpha"] = res.max_abs_theta / run.chosen.model->reference_angle();
+    j["overturned"] = res.overturned;
+    j["t_overturn"] = res.overturned ? Json(res.t_overturn) : Json(nullptr);
+    j["impacts"] = res.impacts.size();
+    j["energy_balance_error"] = res.energy_balance_error;
+    j["lift_offs"] = res.lift_offs.size();
+    j["end_time"] = res.t_final;
+    j["at_rest_at_end"] = res.at_rest_at_end;
+    j["t_end"] = run.options.t_end;
+    j["output_dt"] = run.options.output_dt;
+    j["wall"] = wall_inputs_json(run.wall, run.chosen.kind);
+    return j;
+}
+
+void print_history_summary(std::ostream& out, const HistoryRun& run, const std::string& title) {
+    const SimulationResult& res = run.result;
+    const char* alpha_name = reference_angle_name(run.chosen.kind);
+    Table table(title);
+    table.text("ground motion", run.record ? *run.record : run.input.motion.name())
+        .add("peak ground acceleration", num(run.input.motion.pga() / kStandardGravity), "g",
+             run.input.scale_factor == 1.0 ? "unscaled" : fmt::format("scaled by {}", num(run.input.scale_factor)))
+        .add("duration", num(run.input.motion.duration()), "s")
+        .text("model", run.chosen.kinematics ? fmt::format("{}, {} kinematics", to_string(run.chosen.kind),
+                                                           to_string(*run.chosen.kinematics))
+                                             : to_string(run.chosen.kind))
+        .add("lift-offs", std::to_string(res.lift_offs.size()))
+        .add("impacts", std::to_string(res.impacts.size()))
+        .add(fmt::format("max |theta|/{}", alpha_name), num(res.max_abs_theta / run.chosen.model->reference_angle()));
+    if (res.overturned)
+        table.add("overturns at", num(res.t_overturn), "s");
+    else
+        table.add("overturns", "no");
+    table.add("run ended at", num(res.t_final), "s", res.at_rest_at_end ? "at rest" : "")
+        .add("energy balance error", fmt::format("{:.2e}", res.energy_balance_error), "",
+             "largest residual / largest energy in play")
+        .print(out);
+}
+
+void write_history_csv(std::ostream& out, const HistoryRun& run) {
+    const RockingModel& model = *run.chosen.model;
+    const double alpha = model.reference_angle();
+    const double v_ref = model.reference_velocity();
+    const double e_ref = model.reference_energy();
+    out << "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g\n";
+    for (const Sample& s : run.result.samples) {
+        const double energy = s.kinetic + s.weight_potential - s.work_overburden;
+        out << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", s.t, s.theta / alpha,
+                           s.theta_dot / v_ref, energy / e_ref, s.dissipated / e_ref, s.a_h / kStandardGravity);
+    }
+}
+
+std::ofstream open_output_file(const std::string& path) {
+    std::ofstream file(path, std::ios::trunc);
+    if (!file) throw InputError("cannot write the output file '" + path + "'");
+    return file;
+}
+
+}  // namespace vssw::cli

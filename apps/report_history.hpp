@@ -1,0 +1,47 @@
+#pragma once
+// Response of a wall to a ground motion from rest: what `vssw history` prints, and the third part of
+// `vssw summary`.
+#include <fstream>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "analytic/simulate.hpp"
+#include "apps/ground_motion_options.hpp"
+#include "apps/json.hpp"
+#include "apps/wall_options.hpp"
+
+namespace vssw::cli {
+
+struct HistoryRequest {
+    std::optional<double> output_dt;  // trajectory sample spacing [s]; default: the motion's sample_dt
+    std::optional<double> t_end;      // [s]; default: the motion's duration + kDefaultExtraTime
+    bool keep_trajectory = false;     // samples are needed only for a CSV file
+};
+
+// How long a run continues after the ground motion ends by default: the wall may keep rocking after the shaking.
+constexpr double kDefaultExtraTime = 10.0;  // [s]
+
+struct HistoryRun {
+    WallOptions wall;
+    std::optional<std::string> record;  // path, when the input is a record
+    LoadedMotion input;
+    ChosenModel chosen;
+    SimulationOptions options;
+    SimulationResult result;  // empty until simulate_history()
+};
+
+// Builds the model and the ground motion and checks every option (InputError on a bad one), without simulating:
+// the caller can still refuse (e.g. an unwritable output file) before the run.
+HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, const GroundMotionOptions& motion,
+                           const HistoryRequest& request);
+// Fills run.result; SimulationFailure when the integrator gives up.
+void simulate_history(HistoryRun& run);
+Json to_json(const HistoryRun& run);
+void print_history_summary(std::ostream& out, const HistoryRun& run, const std::string& title);
+// Header line, then one row per sample: t, theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g.
+void write_history_csv(std::ostream& out, const HistoryRun& run);
+// Opens a file for writing, before a long run rather than after it; InputError if it cannot be created.
+std::ofstream open_output_file(const std::string& path);
+
+}  // namespace vssw::cli

@@ -1,0 +1,81 @@
+#include "apps/wall_options.hpp"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+
+namespace vssw::cli {
+
+WallOptions fig6_wall() {
+    WallOptions w;
+    w.height = 4.0;
+    w.thickness = 0.4;
+    w.hinge = 0.7;
+    return w;  // xi = 0, default density and g
+}
+
+WallKind parse_wall_kind(const std::string& text) {
+    if (text == "vssw") return WallKind::vssw;
+    if (text == "parapet") return WallKind::parapet;
+    throw InputError("model must be 'vssw' or 'parapet', got '" + text + "'");
+}
+
+const char* to_string(WallKind kind) { return kind == WallKind::vssw ? "vssw" : "parapet"; }
+
+const char* reference_angle_name(WallKind kind) { return kind == WallKind::vssw ? "alpha1" : "alpha"; }
+
+void add_wall_options(CLI::App& cmd, WallOptions& o, bool model_choice) {
+    cmd.add_option("--height", o.height, "full wall height 2h [m] (required)")->required();
+    cmd.add_option("--thickness", o.thickness, "full wall thickness 2b [m] (required)")->required();
+    cmd.add_option_function<double>(
+        "--hinge", [&o](const double& r) { o.hinge = r; },
+        model_choice ? "hinge height ratio h1/h in (0, 1) (required for --model vssw; accepted and ignored for "
+                       "--model parapet)"
+                     : "hinge height ratio h1/h in (0, 1) (required)");
+    cmd.add_option("--xi", o.xi, "overburden ratio N/W >= 0 (default 0)");
+    cmd.add_option("--density", o.density, fmt::format("masonry density [kg/m^3] (default {})", kDefaultDensity));
+    cmd.add_option("--g", o.g, fmt::format("gravity [m/s^2] (default {})", kDefaultGravity));
+}
+
+void add_model_options(CLI::App& cmd, ModelOptions& o) {
+    cmd.add_option("--model", o.model, "vssw (two blocks with a top roller) or parapet (one block) (default vssw)");
+    cmd.add_option("--kinematics", o.kinematics,
+                   "VSSW kinematics: paper (Eq. 3 inside Eq. 10-11, as printed) or exact (Eq. 2) (default paper; "
+                   "ignored for a parapet)");
+}
+
+VsswGeometry vssw_geometry(const WallOptions& o) {
+    if (!o.hinge) throw InputError("--hinge (the hinge height ratio h1/h) is required for a VSSW");
+    return make_vssw(o.height, o.thickness, *o.hinge, o.xi, o.density, o.g);
+}
+
+ParapetGeometry parapet_geometry(const WallOptions& o) {
+    return make_parapet(o.height, o.thickness, o.xi, o.density, o.g);
+}
+
+ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
+    const WallKind kind = parse_wall_kind(options.model);
+    const Kinematics kinematics = parse_kinematics(options.kinematics);  // checked even when a parapet ignores it
+    if (kind == WallKind::parapet) return {kind, std::nullopt, make_parapet_model(parapet_geometry(wall))};
+    return {kind, kinematics, make_vssw_model(vssw_geometry(wall), kinematics)};
+}
+
+Json wall_inputs_json(const WallOptions& o, WallKind kind) {
+    Json j;
+    j["height"] = o.height;
+    j["thickness"] = o.thickness;
+    j["hinge_ratio"] = kind == WallKind::vssw ? or_null(o.hinge) : Json(nullptr);
+    j["xi"] = o.xi;
+    j["density"] = o.density;
+    j["g"] = o.g;
+    return j;
+}
+
+std::string describe_wall(const WallOptions& o, WallKind kind) {
+    const std::string hinge = kind == WallKind::vssw && o.hinge ? fmt::format(", hinge h1/h {}", *o.hinge) : "";
+    return fmt::format("{}: height {} m, thickness {} m{}, xi {}, density {} kg/m^3, g {} m/s^2",
+                       kind == WallKind::vssw ? "VSSW" : "parapet", o.height, o.thickness, hinge, o.xi, o.density, o.g);
+}
+
+}  // namespace vssw::cli

@@ -1,0 +1,69 @@
+#pragma once
+// The options that describe a wall and its model, shared by the commands: one place that binds them to the command
+// line, documents their units and defaults, and turns them into the analytic library's geometry and models.
+// Values are not checked here: the library's constructors check them and name the bad value.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "analytic/model.hpp"
+#include "analytic/wall.hpp"
+#include "apps/json.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace vssw::cli {
+
+// Standard gravity: converts accelerations given "in g" (records, --pga, --amplitude) to m/s^2, as the record
+// readers do. The wall's own gravity (--g) is a separate input.
+constexpr double kStandardGravity = 9.80665;
+
+struct WallOptions {
+    double height = 0.0;          // full height 2h [m]
+    double thickness = 0.0;       // full thickness 2b [m]
+    std::optional<double> hinge;  // h1/h, required for a VSSW
+    double xi = 0.0;              // N/W
+    double density = kDefaultDensity;
+    double g = kDefaultGravity;
+};
+
+// The wall of Fig. 6 of the paper, the subject of `vssw summary`.
+WallOptions fig6_wall();
+
+enum class WallKind { vssw, parapet };
+WallKind parse_wall_kind(const std::string& text);  // "vssw" | "parapet", InputError otherwise
+const char* to_string(WallKind kind);
+// The angle rotations are measured in: "alpha1" (VSSW) or "alpha" (parapet).
+const char* reference_angle_name(WallKind kind);
+
+struct ModelOptions {
+    std::string model = "vssw";
+    std::string kinematics = "paper";
+};
+
+// --height, --thickness (required), --hinge, --xi, --density, --g. `model_choice` (the command also takes --model)
+// only changes the help of --hinge: whether a hinge is required is decided by vssw_geometry(), so that a parapet
+// can be given without one.
+void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
+// --model, --kinematics.
+void add_model_options(CLI::App& cmd, ModelOptions& options);
+
+VsswGeometry vssw_geometry(const WallOptions& options);  // InputError when --hinge is missing
+ParapetGeometry parapet_geometry(const WallOptions& options);
+
+// A model chosen on the command line, with what the reports say about it.
+struct ChosenModel {
+    WallKind kind;
+    std::optional<Kinematics> kinematics;  // none for a parapet (Housner's block has one exact kinematics)
+    std::unique_ptr<RockingModel> model;
+};
+ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options);
+
+// The wall as given, for the JSON outputs: height, thickness, hinge_ratio (null for a parapet), xi, density, g.
+Json wall_inputs_json(const WallOptions& options, WallKind kind);
+// One line naming the wall, e.g. "VSSW  height 4 m, thickness 0.4 m, hinge h1/h 0.7, xi 0, density 1800 kg/m^3".
+std::string describe_wall(const WallOptions& options, WallKind kind);
+
+}  // namespace vssw::cli

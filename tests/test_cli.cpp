@@ -1,0 +1,475 @@
+// The `vssw` command-line program, run in-process: the JSON contract of every command (keys and types), values
+// checked against closed forms the commands do not use for them, the CSV trajectory, help and exit codes, and one
+// test per kind of bad input (exit code 2, one line on stderr naming the bad value).
+#include "apps/cli.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/wall.hpp"
+
+namespace {
+
+using Json = nlohmann::json;
+
+// Rounding of a few double operations between the closed form and the value printed (JSON keeps 17 digits).
+constexpr double kRoundoff = 1e-12;
+// The CSV is written with 10 significant digits.
+constexpr double kCsvDigits = 1e-9;
+// Energy balance of the integrator at rtol 1e-10: observed up to ~1.5e-9 of V_r over a full free vibration (128
+// impacts) and ~2e-11 on the Rinaldi record; 1e-8 leaves room for integrator changes without hiding a real leak.
+constexpr double kEnergyBalanceBound = 1e-8;
+// The analytic pulses' PGA comes from a 20,000-point scan; a one-sine pulse's peak falls on a scan point.
+constexpr double kPulseScanTol = 1e-9;
+
+constexpr double kG0 = 9.80665;  // standard gravity: accelerations "in g" on the command line and in records
+const std::string kDataDir = VSSW_DATA_DIR;
+const std::string kRinaldi = kDataDir + "/NGA_no_1063_RRS228.AT2";
+constexpr double kRinaldiPga_g = 0.825195;  // the largest |value| in the file, in g
+constexpr double kRinaldiFirstValue_g = -0.731461e-02;
+constexpr double kRinaldiDt = 0.01;  // s
+
+// The wall of Fig. 6: full height 4 m, thickness 0.4 m, hinge 0.7 (b = 0.2, h1 = 1.4, h2 = 0.6).
+const std::vector<std::string> kFig6 = {"--height", "4", "--thickness", "0.4", "--hinge", "0.7"};
+
+struct CliResult {
+    int code;
+    std::string out, err;
+};
+
+CliResult run_cli(const std::vector<std::string>& args) {
+    std::vector<const char*> argv = {"vssw"};
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    std::ostringstream out, err;
+    const int code = vssw::cli::run(static_cast<int>(argv.size()), argv.data(), out, err);
+    return {code, out.str(), err.str()};
+}
+
+std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+// Runs a command that must succeed with --json and returns its parsed output.
+Json run_json(const std::vector<std::string>& args) {
+    const CliResult r = run_cli(args + std::vector<std::string>{"--json"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    return Json::parse(r.out);
+}
+
+int count_lines(const std::string& text) {
+    int n = 0;
+    for (char c : text) n += c == '\n';
+    return n;
+}
+
+std::string temp_path(const std::string& name) { return testing::TempDir() + "vssw_cli_" + name; }
+
+std::string write_temp(const std::string& name, const std::string& content) {
+    const std::string path = temp_path(name);
+    std::ofstream(path, std::ios::trunc) << content;
+    return path;
+}
+
+void expect_number(const Json& j, const char* key) {
+    ASSERT_TRUE(j.contains(key)) << key;
+    EXPECT_TRUE(j[key].is_number()) << key << " = " << j[key];
+    if (j[key].is_number()) {
+        EXPECT_TRUE(std::isfinite(j[key].get<double>())) << key;
+    }
+}
+
+void expect_number_or_null(const Json& j, const char* key) {
+    ASSERT_TRUE(j.contains(key)) << key;
+    EXPECT_TRUE(j[key].is_number() || j[key].is_null()) << key << " = " << j[key];
+}
+
+void expect_wall_contract(const Json& j) {
+    for (const char* key :
+         {"alpha1", "alpha2", "R1", "R2", "threshold_g", "restitution", "A", "P", "period_half_A", "hinge_ratio", "xi",
+          "collapse_angle", "reference_velocity", "threshold_ratio_vssw_over_parapet", "optimal_hinge_ratio"})
+        expect_number(j, key);
+    expect_number_or_null(j, "theta_lim");
+    ASSERT_TRUE(j.contains("parapet") && j["parapet"].is_object());
+    for (const char* key : {"alpha", "R", "threshold_g", "restitution", "p"}) expect_number(j["parapet"], key);
+}
+
+void expect_free_contract(const Json& j) {
+    for (const char* key : {"model", "kinematics", "theta0", "alpha", "impacts", "peaks", "peak_times", "stop_time",
+                            "falls", "t_overturn", "energy_balance_error", "impact_count"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_TRUE(j["model"].is_string());
+    EXPECT_TRUE(j["kinematics"].is_string() || j["kinematics"].is_null());
+    expect_number(j, "theta0");
+    expect_number(j, "alpha");
+    ASSERT_TRUE(j["impacts"].is_array());
+    for (const Json& impact : j["impacts"])
+        for (const char* key : {"t", "theta_dot_before", "theta_dot_after"}) expect_number(impact, key);
+    ASSERT_TRUE(j["peaks"].is_array());
+    ASSERT_TRUE(j["peak_times"].is_array());
+    EXPECT_EQ(j["peaks"].size(), j["peak_times"].size());
+    expect_number_or_null(j, "stop_time");
+    EXPECT_TRUE(j["falls"].is_boolean());
+    expect_number_or_null(j, "t_overturn");
+    expect_number(j, "energy_balance_error");
+    EXPECT_TRUE(j["impact_count"].is_number_integer());
+    EXPECT_EQ(j["impact_count"].get<std::size_t>(), j["impacts"].size());
+    EXPECT_TRUE(j.contains("wall") && j["wall"].is_object());
+}
+
+void expect_history_contract(const Json& j) {
+    for (const char* key : {"record", "pga_g", "duration", "max_theta_over_alpha", "overturned", "t_overturn",
+                            "impacts", "energy_balance_error", "lift_offs", "end_time"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_TRUE(j["record"].is_string() || j["record"].is_null());
+    for (const char* key : {"pga_g", "duration", "max_theta_over_alpha", "energy_balance_error", "end_time"})
+        expect_number(j, key);
+    EXPECT_TRUE(j["overturned"].is_boolean());
+    expect_number_or_null(j, "t_overturn");
+    EXPECT_EQ(j["t_overturn"].is_null(), !j["overturned"].get<bool>());
+    EXPECT_TRUE(j["impacts"].is_number_integer());
+    EXPECT_TRUE(j["lift_offs"].is_number_integer());
+    EXPECT_TRUE(j.contains("wall") && j["wall"].is_object());
+}
+
+// --- wall ------------------------------------------------------------------------------------------------------------
+
+TEST(CliWall, JsonHasTheContractKeys) { expect_wall_contract(run_json(std::vector<std::string>{"wall"} + kFig6)); }
+
+TEST(CliWall, ThresholdWithoutOverburdenIsEq13) {
+    // Eq. (13), 2 tan(alpha1) with tan(alpha1) = b/h1, is a different closed form from the Eq. (12) printed.
+    const Json j = run_json(std::vector<std::string>{"wall"} + kFig6);
+    const double b = 0.2, h1 = 0.7 * 2.0;
+    EXPECT_NEAR(j["threshold_g"].get<double>(), 2.0 * b / h1, kRoundoff);
+    EXPECT_NEAR(j["alpha1"].get<double>(), std::atan(b / h1), kRoundoff);
+    // Parapet: Eq. (17) with N = 0 is b/h; Housner's e from alpha = atan(b/h).
+    const double h = 2.0, alpha = std::atan(b / h);
+    EXPECT_NEAR(j["parapet"]["threshold_g"].get<double>(), b / h, kRoundoff);
+    EXPECT_NEAR(j["parapet"]["restitution"].get<double>(), 1.0 - 1.5 * std::sin(alpha) * std::sin(alpha), kRoundoff);
+    EXPECT_NEAR(j["threshold_ratio_vssw_over_parapet"].get<double>(), (2.0 * b / h1) / (b / h), kRoundoff);
+}
+
+TEST(CliWall, OverburdenAndDensityReachTheClosedForms) {
+    const std::vector<std::string> args = {"wall", "--height", "1.5",       "--thickness", "0.11", "--hinge", "0.6",
+                                           "--xi", "0.5",      "--density", "2000",        "--g",  "9.8"};
+    const Json j = run_json(args);
+    const vssw::VsswGeometry w = vssw::make_vssw(1.5, 0.11, 0.6, 0.5, 2000.0, 9.8);
+    EXPECT_NEAR(j["threshold_g"].get<double>(), vssw::eq12_threshold(w) / 9.8, kRoundoff);
+    EXPECT_NEAR(j["optimal_hinge_ratio"].get<double>(), vssw::eq15_optimal_hinge_ratio(0.5), kRoundoff);
+    EXPECT_EQ(j["xi"].get<double>(), 0.5);
+}
+
+TEST(CliWall, RollerLimitIsNullAtAndBelowMidHeight) {
+    for (const char* hinge : {"0.5", "0.46"}) {
+        const Json j = run_json({"wall", "--height", "4", "--thickness", "0.4", "--hinge", hinge});
+        EXPECT_TRUE(j["theta_lim"].is_null()) << hinge;
+        expect_wall_contract(j);
+    }
+    EXPECT_TRUE(run_json(std::vector<std::string>{"wall"} + kFig6)["theta_lim"].is_number());
+}
+
+TEST(CliWall, TableShowsQuantitiesWithUnits) {
+    const CliResult r = run_cli(std::vector<std::string>{"wall"} + kFig6);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_NE(r.out.find("threshold acceleration"), std::string::npos);
+    EXPECT_NE(r.out.find("0.285714  g"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("rad/s"), std::string::npos);
+}
+
+// --- free ------------------------------------------------------------------------------------------------------------
+
+TEST(CliFree, ImpactsFollowEq19AndPeaksDecrease) {
+    const Json j = run_json(std::vector<std::string>{"free", "--theta0", "0.5"} + kFig6);
+    expect_free_contract(j);
+    EXPECT_EQ(j["model"], "vssw");
+    EXPECT_EQ(j["kinematics"], "paper");
+    EXPECT_EQ(j["theta0"].get<double>(), 0.5);
+    EXPECT_FALSE(j["falls"].get<bool>());
+    EXPECT_TRUE(j["t_overturn"].is_null());
+    ASSERT_GT(j["impacts"].size(), 2u);
+
+    const double e = vssw::eq19_restitution(vssw::make_vssw(4.0, 0.4, 0.7));
+    double previous_t = 0.0;
+    for (const Json& impact : j["impacts"]) {
+        EXPECT_NEAR(impact["theta_dot_after"].get<double>() / impact["theta_dot_before"].get<double>(), e, kRoundoff);
+        EXPECT_GT(impact["t"].get<double>(), previous_t);
+        previous_t = impact["t"].get<double>();
+    }
+    const Json& peaks = j["peaks"];
+    EXPECT_NEAR(peaks[0].get<double>(), 0.5, kRoundoff);  // the release comes first
+    for (std::size_t i = 1; i < peaks.size(); ++i) EXPECT_LT(peaks[i].get<double>(), peaks[i - 1].get<double>());
+    EXPECT_GE(j["stop_time"].get<double>(), previous_t);
+    EXPECT_LT(j["energy_balance_error"].get<double>(), kEnergyBalanceBound);
+}
+
+TEST(CliFree, ParapetUsesHousnerRestitutionAndIgnoresTheHinge) {
+    // The hinge is accepted and ignored for a parapet, even a value a VSSW would refuse.
+    const Json j = run_json(
+        {"free", "--model", "parapet", "--height", "4", "--thickness", "0.4", "--hinge", "1.5", "--theta0", "0.5"});
+    expect_free_contract(j);
+    EXPECT_EQ(j["model"], "parapet");
+    EXPECT_TRUE(j["kinematics"].is_null());
+    const double alpha = std::atan(0.2 / 2.0);
+    EXPECT_NEAR(j["alpha"].get<double>(), alpha, kRoundoff);
+    ASSERT_FALSE(j["impacts"].empty());
+    const Json& first = j["impacts"][0];
+    EXPECT_NEAR(first["theta_dot_after"].get<double>() / first["theta_dot_before"].get<double>(),
+                1.0 - 1.5 * std::sin(alpha) * std::sin(alpha), kRoundoff);
+}
+
+TEST(CliFree, ParapetReleasedPastAlphaFalls) {
+    const Json j = run_json({"free", "--model", "parapet", "--height", "4", "--thickness", "0.4", "--theta0", "1.1"});
+    expect_free_contract(j);
+    EXPECT_TRUE(j["falls"].get<bool>());
+    EXPECT_TRUE(j["t_overturn"].is_number());
+    EXPECT_TRUE(j["stop_time"].is_null());
+}
+
+TEST(CliFree, Fig6VsswStopsWithinAQuarterOfTheParapetTime) {
+    // Fig. 6 of the paper: b = 0.2 m, h = 2 m, xi = 0, h1/h = 0.7, theta0/alpha = 0.9.
+    const Json vssw = run_json(std::vector<std::string>{"free", "--theta0", "0.9"} + kFig6);
+    const Json parapet =
+        run_json({"free", "--model", "parapet", "--height", "4", "--thickness", "0.4", "--theta0", "0.9"});
+    EXPECT_LT(vssw["stop_time"].get<double>(), 0.25 * parapet["stop_time"].get<double>());
+}
+
+TEST(CliFree, NegativeReleaseMirrorsThePositiveOne) {
+    const Json plus = run_json(std::vector<std::string>{"free", "--theta0", "0.5"} + kFig6);
+    const Json minus = run_json(std::vector<std::string>{"free", "--theta0", "-0.5"} + kFig6);
+    EXPECT_EQ(plus["impact_count"], minus["impact_count"]);
+    EXPECT_NEAR(minus["peaks"][0].get<double>(), 0.5, kRoundoff);  // peaks are |theta| / alpha
+    EXPECT_NEAR(minus["impacts"][0]["t"].get<double>(), plus["impacts"][0]["t"].get<double>(), kRoundoff);
+}
+
+TEST(CliFree, ExactKinematicsIsReported) {
+    const Json j = run_json(std::vector<std::string>{"free", "--theta0", "0.5", "--kinematics", "exact"} + kFig6);
+    EXPECT_EQ(j["kinematics"], "exact");
+}
+
+TEST(CliFree, ImpossibleToleranceIsBadInput) {
+    // No step can meet a relative tolerance of 1e-300: the library refuses it up front, naming the value.
+    const CliResult r = run_cli(std::vector<std::string>{"free", "--theta0", "0.5", "--rtol", "1e-300"} + kFig6);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("relative tolerance must be in [1e-15, 1e-2], got 1e-300"), std::string::npos) << r.err;
+}
+
+// --- history ---------------------------------------------------------------------------------------------------------
+
+TEST(CliHistory, RinaldiRecordGivesFiniteBalancedResults) {
+    const Json j = run_json(std::vector<std::string>{"history", "--record", kRinaldi} + kFig6);
+    expect_history_contract(j);
+    EXPECT_EQ(j["record"], kRinaldi);
+    EXPECT_NEAR(j["pga_g"].get<double>(), kRinaldiPga_g, kRoundoff);
+    EXPECT_NEAR(j["duration"].get<double>(), 1990 * kRinaldiDt, kRoundoff);
+    EXPECT_GE(j["lift_offs"].get<int>(), 1);  // 0.825 g is far above the 0.286 g threshold
+    EXPECT_LT(j["energy_balance_error"].get<double>(), kEnergyBalanceBound);
+}
+
+TEST(CliHistory, PgaScalesTheRecordToTheTarget) {
+    const Json j = run_json(std::vector<std::string>{"history", "--record", kRinaldi, "--pga", "0.3"} + kFig6);
+    EXPECT_NEAR(j["pga_g"].get<double>(), 0.3, kRoundoff);
+    EXPECT_NEAR(j["scale_factor"].get<double>(), 0.3 / kRinaldiPga_g, kRoundoff);
+    EXPECT_LT(j["energy_balance_error"].get<double>(), kEnergyBalanceBound);
+}
+
+TEST(CliHistory, ScaleMultipliesTheRecord) {
+    const Json j = run_json(std::vector<std::string>{"history", "--record", kRinaldi, "--scale", "0.25"} + kFig6);
+    EXPECT_NEAR(j["pga_g"].get<double>(), 0.25 * kRinaldiPga_g, kRoundoff);
+}
+
+TEST(CliHistory, CsvHasTheHeaderAndSixNumericColumns) {
+    const std::string csv = temp_path("rinaldi.csv");
+    const Json j =
+        run_json(std::vector<std::string>{"history", "--record", kRinaldi, "--pga", "0.3", "--csv", csv} + kFig6);
+    std::ifstream in(csv);
+    std::string line;
+    ASSERT_TRUE(std::getline(in, line));
+    EXPECT_EQ(line, "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g");
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line)) {
+        std::vector<double> row;
+        std::istringstream fields(line);
+        std::string field;
+        while (std::getline(fields, field, ',')) {
+            std::size_t used = 0;
+            row.push_back(std::stod(field, &used));
+            EXPECT_EQ(used, field.size()) << line;
+        }
+        ASSERT_EQ(row.size(), 6u) << line;
+        rows.push_back(row);
+    }
+    ASSERT_GT(rows.size(), 100u);
+    const double scale = j["scale_factor"].get<double>();
+    EXPECT_EQ(rows.front()[0], 0.0);
+    EXPECT_NEAR(rows.front()[5], kRinaldiFirstValue_g * scale, kCsvDigits);  // the record's first sample, in g
+    EXPECT_NEAR(rows.back()[0], j["end_time"].get<double>(), kCsvDigits * j["end_time"].get<double>());
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        // The default output spacing is the record's dt.
+        const double steps = (rows[i][0] - rows[i - 1][0]) / kRinaldiDt;
+        EXPECT_GE(steps, 1.0 - kCsvDigits * 1e3) << "row " << i;
+        EXPECT_NEAR(steps, std::round(steps), kCsvDigits * 1e3) << "row " << i;
+    }
+}
+
+TEST(CliHistory, SinePulseAmplitudeIsItsPga) {
+    const Json j = run_json(
+        std::vector<std::string>{"history", "--pulse", "sine", "--amplitude", "0.5", "--pulse-period", "0.5"} + kFig6);
+    expect_history_contract(j);
+    EXPECT_TRUE(j["record"].is_null());
+    EXPECT_NEAR(j["pga_g"].get<double>(), 0.5, kPulseScanTol);
+    EXPECT_NEAR(j["duration"].get<double>(), 0.5, kRoundoff);
+}
+
+TEST(CliHistory, HarmonicOnAParapet) {
+    const Json j = run_json({"history", "--model", "parapet", "--height", "4", "--thickness", "0.4", "--pulse",
+                             "harmonic", "--amplitude", "0.15", "--pulse-period", "1", "--duration", "3"});
+    expect_history_contract(j);
+    EXPECT_NEAR(j["duration"].get<double>(), 3.0, kRoundoff);
+    EXPECT_GE(j["lift_offs"].get<int>(), 1);  // 0.15 g exceeds the parapet's 0.1 g threshold
+}
+
+// --- summary, help, exit codes ---------------------------------------------------------------------------------------
+
+TEST(CliSummary, JsonHasTheThreeParts) {
+    const Json j = run_json({"summary"});
+    ASSERT_TRUE(j.contains("wall") && j.contains("free") && j.contains("history"));
+    expect_wall_contract(j["wall"]);
+    expect_free_contract(j["free"]);
+    expect_history_contract(j["history"]);
+    EXPECT_NEAR(j["wall"]["alpha1"].get<double>(), std::atan(0.2 / 1.4), kRoundoff);
+    EXPECT_EQ(j["free"]["theta0"].get<double>(), 0.5);
+    EXPECT_EQ(j["history"]["record"], kRinaldi);
+    EXPECT_NEAR(j["history"]["pga_g"].get<double>(), kRinaldiPga_g, kRoundoff);  // unscaled
+}
+
+TEST(CliSummary, TextHasTheThreeSections) {
+    const CliResult r = run_cli({"summary"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* text : {"threshold acceleration", "Free vibration", "first impact (quarter period)",
+                             "peak ground acceleration", "NGA_no_1063_RRS228.AT2"})
+        EXPECT_NE(r.out.find(text), std::string::npos) << text;
+}
+
+TEST(CliHelp, EveryCommandPrintsItsHelpAndExits0) {
+    for (const char* command : {"wall", "free", "history", "summary"}) {
+        const CliResult r = run_cli({command, "--help"});
+        EXPECT_EQ(r.code, 0) << command;
+        EXPECT_EQ(r.err, "") << command;
+        EXPECT_NE(r.out.find(std::string("vssw ") + command), std::string::npos) << r.out;
+    }
+    const CliResult wall = run_cli({"wall", "--help"});
+    for (const char* text : {"--height", "[m]", "(required)", "1800", "9.81"})
+        EXPECT_NE(wall.out.find(text), std::string::npos) << text;
+    EXPECT_NE(run_cli({"free", "--help"}).out.find("ignored for --model parapet"), std::string::npos);
+}
+
+TEST(CliHelp, NoCommandPrintsHelpAndExits2) {
+    const CliResult r = run_cli({});
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_NE(r.out.find("Usage"), std::string::npos);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+}
+
+// --- bad input: exit 2, one line "vssw: error: ..." that names the bad value -----------------------------------------
+
+struct BadInput {
+    const char* name;
+    std::vector<std::string> args;      // "{file}" is replaced by the path of a temp file holding `file`
+    std::vector<std::string> expected;  // each must appear in the message
+    std::optional<std::string> file;
+};
+
+std::ostream& operator<<(std::ostream& os, const BadInput& b) { return os << b.name; }
+
+class CliBadInput : public testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, ExitsWith2AndNamesTheValue) {
+    const BadInput& bad = GetParam();
+    std::vector<std::string> args = bad.args;
+    std::vector<std::string> expected = bad.expected;
+    if (bad.file) {
+        const std::string path = write_temp(std::string(bad.name) + ".AT2", *bad.file);
+        for (auto* list : {&args, &expected})
+            for (std::string& a : *list)
+                if (const auto at = a.find("{file}"); at != std::string::npos) a.replace(at, 6, path);
+    }
+    const CliResult r = run_cli(args);
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("vssw: error: ", 0), 0u) << r.err;
+    for (const std::string& text : expected) EXPECT_NE(r.err.find(text), std::string::npos) << r.err;
+}
+
+// Lines 1-3 of a PEER AT2 file; line 4 (NPTS, DT) and the values are the test's.
+const std::string kAt2Head =
+    "PEER NGA STRONG MOTION DATABASE RECORD\nTEST, 000\nACCELERATION TIME HISTORY IN UNITS OF G\n";
+
+// The history arguments with a record file and the Fig. 6 wall.
+std::vector<std::string> history_of(const std::string& record) {
+    return std::vector<std::string>{"history", "--record", record} + kFig6;
+}
+
+std::vector<std::string> with_fig6(std::vector<std::string> args) { return args + kFig6; }
+
+BadInput bad(const char* name, std::vector<std::string> args, std::vector<std::string> expected) {
+    return {name, std::move(args), std::move(expected), std::nullopt};
+}
+
+// `vssw history` on a record file holding `content`; "{file}" in `expected` stands for its path.
+BadInput bad_record(const char* name, std::string content, std::vector<std::string> expected) {
+    return {name, history_of("{file}"), std::move(expected), std::move(content)};
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    testing::Values(
+        bad("NegativeThickness", {"wall", "--height", "4", "--thickness", "-0.2", "--hinge", "0.7"},
+            {"thickness", "-0.2"}),
+        bad("ZeroHeight", {"wall", "--height", "0", "--thickness", "0.4", "--hinge", "0.7"}, {"height", "got 0"}),
+        bad("HingeAboveOne", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "1.2"}, {"hinge", "1.2"}),
+        bad("HingeZero", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0"}, {"hinge", "got 0"}),
+        bad("NegativeXi", with_fig6({"wall", "--xi", "-0.1"}), {"xi", "-0.1"}),
+        bad("NanHeight", {"wall", "--height", "nan", "--thickness", "0.4", "--hinge", "0.7"}, {"height", "nan"}),
+        bad("NonNumericHeight", {"wall", "--height", "abc", "--thickness", "0.4", "--hinge", "0.7"},
+            {"--height", "abc"}),
+        bad("Theta0BeyondCollapse", with_fig6({"free", "--theta0", "50"}), {"--theta0 50", "collapse"}),
+        bad("Theta0Zero", with_fig6({"free", "--theta0", "0"}), {"--theta0", "got 0"}),
+        bad("MissingHinge", {"free", "--height", "4", "--thickness", "0.4", "--theta0", "0.5"}, {"--hinge"}),
+        bad("MissingHeight", {"wall", "--thickness", "0.4", "--hinge", "0.7"}, {"--height"}),
+        bad("UnknownOption", with_fig6({"wall", "--heigth", "4"}), {"--heigth"}),
+        bad("UnknownCommand", {"walls"}, {"walls"}),
+        bad("UnknownModel", with_fig6({"free", "--theta0", "0.5", "--model", "tower"}), {"tower"}),
+        bad("MissingRecordFile", history_of("/nonexistent/record.AT2"), {"/nonexistent/record.AT2"}),
+        bad_record("RecordWithMoreValuesThanNpts", kAt2Head + "2    0.0100    NPTS, DT\n 0.1 0.2 0.3\n",
+                   {"{file}", "NPTS = 2"}),
+        bad_record("RecordWithText", kAt2Head + "3    0.0100    NPTS, DT\n 0.1 abc 0.3\n", {"{file}", "'abc'"}),
+        bad_record("EmptyRecord", "", {"{file}", "empty"}),
+        bad_record("RecordTruncatedInTheValues", kAt2Head + "1991    0.0100    NPTS, DT\n 0.1 0.2 0.3\n 0.4",
+                   {"{file}", "NPTS = 1991", "truncated"}),
+        // Cut before line 4, the file no longer looks like an AT2 file: the two-column reader names it and line 1.
+        bad_record("RecordTruncatedInTheHeader", kAt2Head, {"{file}:1"}),
+        bad("UnknownUnits", history_of(kRinaldi) + std::vector<std::string>{"--units", "furlong/s2"}, {"furlong/s2"}),
+        bad("ScaleWithPga", history_of(kRinaldi) + std::vector<std::string>{"--scale", "2", "--pga", "0.5"},
+            {"--scale 2", "--pga 0.5"}),
+        bad("RecordAndPulse",
+            history_of(kRinaldi) +
+                std::vector<std::string>{"--pulse", "sine", "--amplitude", "0.1", "--pulse-period", "1"},
+            {"--record", "--pulse"}),
+        bad("NoGroundMotion", with_fig6({"history"}), {"--record", "--pulse"}),
+        bad("UnknownPulse", with_fig6({"history", "--pulse", "square", "--amplitude", "0.1", "--pulse-period", "1"}),
+            {"square"})),
+    [](const testing::TestParamInfo<BadInput>& param_info) { return std::string(param_info.param.name); });
+
+}  // namespace
