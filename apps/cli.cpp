@@ -46,7 +46,7 @@ std::string parse_error_message(const CLI::ParseError& e, const CLI::App& app, c
         return "unknown option or argument for '" + command->app->get_name() +
                "': " + joined(command->app->remaining());
     if (command == nullptr && !app.remaining().empty())
-        return "'" + joined(app.remaining()) + "' is not a command; the commands are wall, free, history, summary";
+        return "'" + joined(app.remaining()) + "' is not a command; the commands are wall, free, history, summary, compare";
     return e.what();
 }
 
@@ -60,7 +60,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         "Run 'vssw COMMAND --help' for a command's options, units and defaults. Exit codes: 0 success, 2 bad "
         "input, 3 simulation failed.");
     const std::vector<Command> commands = {add_wall_command(app), add_free_command(app), add_history_command(app),
-                                           add_summary_command(app)};
+                                           add_summary_command(app), add_compare_command(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
@@ -76,7 +76,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         return kExitOk;
     }
     out << app.help();
-    return fail(err, "error", "a command is required: wall, free, history or summary", kExitBadInput);
+    return fail(err, "error", "a command is required: wall, free, history, summary or compare", kExitBadInput);
 }
 
 }  // namespace

@@ -19,5 +19,6 @@ Command add_wall_command(CLI::App& root);
 Command add_free_command(CLI::App& root);
 Command add_history_command(CLI::App& root);
 Command add_summary_command(CLI::App& root);
+Command add_compare_command(CLI::App& root);
 
 }  // namespace vssw::cli

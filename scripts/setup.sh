@@ -14,6 +14,7 @@ packages=(
   cmake g++ ninja-build pkg-config   # toolchain
   libfmt-dev nlohmann-json3-dev libcli11-dev   # formatting, JSON output, command line
   libgtest-dev libbenchmark-dev      # tests and benchmarks
+  libbullet-dev                      # the Bullet adapter (pkg-config bullet-float64)
 )
 
 missing=()

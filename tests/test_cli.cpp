@@ -473,3 +473,48 @@ INSTANTIATE_TEST_SUITE_P(
     [](const testing::TestParamInfo<BadInput>& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
+
+// --- compare -----------------------------------------------------------------------------------------------------
+
+namespace {
+
+const std::vector<std::string> kCompareFig6 = {"compare", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"};
+
+}  // namespace
+
+TEST(CliCompare, AnalyticAgainstItselfHasNoErrorAndKeepsTheContract) {
+    const Json j = run_json(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--dt", "1e-3"});
+    EXPECT_EQ(j["engine"], "analytic");
+    for (const char* metric : {"threshold", "period", "restitution", "restitution_amplitude"}) {
+        SCOPED_TRACE(metric);
+        ASSERT_TRUE(j.contains(metric));
+        EXPECT_EQ(j[metric]["rel_error"].get<double>(), 0.0);  // the same trajectory measured twice by one code
+        EXPECT_TRUE(j[metric]["within_target"].get<bool>());
+    }
+    EXPECT_DOUBLE_EQ(j["settings"]["dt"].get<double>(), 1e-3);
+    EXPECT_TRUE(j["wall_time_s"].is_number());
+    EXPECT_TRUE(j["closed_forms"]["threshold_g"].is_number());
+}
+
+TEST(CliCompare, UnknownEngineIsBadInputNamingIt) {
+    const CliResult r = run_cli(kCompareFig6 + std::vector<std::string>{"--engine", "havok"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("'havok'"), std::string::npos) << r.err;
+}
+
+TEST(CliCompare, MalformedEngineSettingIsBadInput) {
+    const CliResult r = run_cli(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--set", "rtol"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("NAME=VALUE"), std::string::npos) << r.err;
+    const CliResult unknown =
+        run_cli(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--set", "warp=9"});
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_NE(unknown.err.find("warp"), std::string::npos) << unknown.err;
+}
+
+TEST(CliCompare, NegativeStepIsBadInput) {
+    const CliResult r = run_cli(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--dt", "-1e-3"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("-0.001"), std::string::npos) << r.err;
+}

@@ -1,0 +1,158 @@
+// `vssw compare`: one engine against the analytic model (exact kinematics) on threshold, period and restitution,
+// every metric measured from both trajectories by the same code (compare/).
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+#include "apps/commands.hpp"
+#include "apps/simulation_failure.hpp"
+#include "apps/table.hpp"
+#include "apps/wall_options.hpp"
+#include "compare/experiments.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::cli {
+namespace {
+
+// The accuracy the harness asks of an engine (issue 3): relative error of threshold, period and restitution.
+constexpr double kThresholdTarget = 5e-3, kPeriodTarget = 5e-3, kRestitutionTarget = 2e-2;
+
+struct CompareOptions {
+    WallOptions wall;
+    ModelOptions model;
+    std::string engine;
+    double theta0 = 0.5;
+    std::optional<double> dt;
+    std::optional<int> iterations;
+    std::vector<std::string> knobs;  // NAME=VALUE
+    bool json = false;
+};
+
+multibody::EngineSettings settings_of(const multibody::Engine& engine, const CompareOptions& o) {
+    multibody::EngineSettings s = engine.default_settings();
+    if (o.dt) s.dt = *o.dt;
+    require(std::isfinite(s.dt) && s.dt > 0.0, "--dt (engine step, s)", "a positive finite number", s.dt);
+    if (o.iterations) {
+        require(*o.iterations > 0, "--iterations", "a positive whole number", *o.iterations);
+        s.iterations = *o.iterations;
+    }
+    for (const std::string& kv : o.knobs) {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError(fmt::format("--set takes NAME=VALUE, got '{}'", kv));
+        const std::string value = kv.substr(eq + 1);
+        char* end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        if (value.empty() || *end != '\0')
+            throw InputError(fmt::format("--set {}: '{}' is not a number", kv.substr(0, eq), value));
+        s.knobs[kv.substr(0, eq)] = v;
+    }
+    return s;
+}
+
+Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+Json metric_json(const compare::MetricComparison& m, double target) {
+    return {{"analytic", finite_or_null(m.analytic)},
+            {"engine", finite_or_null(m.engine)},
+            {"rel_error", finite_or_null(m.rel_error)},
+            {"target", target},
+            {"within_target", std::isfinite(m.rel_error) && std::abs(m.rel_error) <= target}};
+}
+
+std::string verdict(const compare::MetricComparison& m, double target) {
+    if (!std::isfinite(m.rel_error)) return "not measured";
+    return std::abs(m.rel_error) <= target ? "within target" : fmt::format("OUTSIDE {:.1f} %", 100.0 * target);
+}
+
+}  // namespace
+
+Command add_compare_command(CLI::App& root) {
+    auto o = std::make_shared<CompareOptions>();
+    CLI::App* cmd = root.add_subcommand(
+        "compare", "One engine against the analytic model (exact kinematics): threshold, period, restitution");
+    cmd->add_option("--engine", o->engine,
+                    fmt::format("backend to compare (available: {}) (required)",
+                                fmt::join(multibody::available_engines(), ", ")))
+        ->required();
+    add_model_options(*cmd, o->model);
+    add_wall_options(*cmd, o->wall, true);
+    cmd->add_option("--theta0", o->theta0,
+                    "release from rest at theta0 = r * alpha for the period and restitution (default 0.5)");
+    cmd->add_option("--dt", o->dt, "engine step [s] (default: the engine's own, see the README)");
+    cmd->add_option("--iterations", o->iterations, "solver iterations (default: the engine's own)");
+    cmd->add_option("--set", o->knobs, "engine setting NAME=VALUE (repeatable; each adapter lists its own)");
+    cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    cmd->footer(
+        "The threshold (in g) is the smallest constant ground acceleration that lifts the wall off rest, by bisection\n"
+        "to 1e-4; the period is 4x the time from release at theta0 to the first impact; the restitution is the ratio\n"
+        "of theta1' after and before the first impact. rel_error = engine / analytic - 1; targets 0.5 %, 0.5 %, 2 %.\n"
+        "JSON keys: engine, version, threshold, period, restitution, restitution_amplitude (each {analytic, engine,\n"
+        "rel_error, target, within_target}), closed_forms {threshold_g, restitution, period_linearised}, settings\n"
+        "{dt, iterations, knobs}, wall_time_s, wall {...}. Exit 3 when the engine fails (NaN, sliding, ...).");
+    return {cmd, [o](std::ostream& out) {
+                const WallKind kind = parse_wall_kind(o->model.model);
+                const multibody::WallScene scene = kind == WallKind::vssw
+                                                       ? multibody::WallScene::of(vssw_geometry(o->wall))
+                                                       : multibody::WallScene::of(parapet_geometry(o->wall));
+                const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(o->engine);
+                const multibody::EngineSettings settings = settings_of(*engine, *o);
+                require(std::isfinite(o->theta0) && o->theta0 > 0.0 && o->theta0 < 1.0, "--theta0", "in (0, 1)",
+                        o->theta0);
+                const auto start = std::chrono::steady_clock::now();
+                compare::EngineComparison c;
+                try {
+                    c = compare::compare_with_analytic(*engine, settings, scene, o->theta0);
+                } catch (const multibody::EngineFailure& e) {
+                    throw SimulationFailure(e.what());
+                }
+                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                if (o->json) {
+                    Json knobs = Json::object();
+                    for (const auto& [k, v] : settings.knobs) knobs[k] = v;
+                    const Json j = {
+                        {"engine", engine->name()},
+                        {"version", engine->version()},
+                        {"threshold", metric_json(c.threshold_g, kThresholdTarget)},
+                        {"period", metric_json(c.period, kPeriodTarget)},
+                        {"restitution", metric_json(c.restitution, kRestitutionTarget)},
+                        {"restitution_amplitude", metric_json(c.restitution_amplitude, kRestitutionTarget)},
+                        {"closed_forms",
+                         {{"threshold_g", finite_or_null(c.threshold_closed_form_g)},
+                          {"restitution", finite_or_null(c.restitution_closed_form)},
+                          {"period_linearised", finite_or_null(c.period_linearised)}}},
+                        {"theta0", o->theta0},
+                        {"settings", {{"dt", settings.dt}, {"iterations", settings.iterations}, {"knobs", knobs}}},
+                        {"wall_time_s", seconds},
+                        {"wall", wall_inputs_json(o->wall, kind)}};
+                    out << j.dump(2) << '\n';
+                    return;
+                }
+                Table t(fmt::format("{} against the analytic model (exact kinematics), {}", engine->version(),
+                                    describe_wall(o->wall, kind)));
+                t.text("settings", fmt::format("dt {} s, iterations {}, release at theta0 = {} alpha", settings.dt,
+                                               settings.iterations, o->theta0));
+                auto row = [&](const char* name, const compare::MetricComparison& m, const char* unit, double target) {
+                    t.add(name, fmt::format("{} / {}", num(m.analytic), num(m.engine)), unit,
+                          fmt::format("analytic / engine, rel. error {:+.2e}: {}", m.rel_error, verdict(m, target)));
+                };
+                row("threshold", c.threshold_g, "g", kThresholdTarget);
+                row("period", c.period, "s", kPeriodTarget);
+                row("restitution (first impact)", c.restitution, "", kRestitutionTarget);
+                row("restitution (from peaks)", c.restitution_amplitude, "", kRestitutionTarget);
+                t.add("closed forms", fmt::format("{} g, e = {}", num(c.threshold_closed_form_g),
+                                                  num(c.restitution_closed_form)),
+                      "", "Eq. (12)/(17) threshold, Eq. (19)/Housner restitution");
+                t.add("wall time", fmt::format("{:.1f}", seconds), "s");
+                t.print(out);
+            }};
+}
+
+}  // namespace vssw::cli

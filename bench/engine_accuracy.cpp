@@ -1,0 +1,77 @@
+// Accuracy of an engine against the analytic model (exact kinematics) on the walls issue 3 names, at three steps:
+// prints a Markdown table (relative errors of threshold, period and first-impact restitution) for the README.
+//   build/bench/vssw_engine_accuracy bullet [dt1 dt2 dt3]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "compare/experiments.hpp"
+#include "multibody/engine.hpp"
+
+using namespace vssw;
+
+namespace {
+
+struct NamedWall {
+    std::string name;
+    multibody::WallScene scene;
+};
+
+std::vector<NamedWall> walls() {
+    std::vector<NamedWall> w;
+    w.push_back({"Fig. 6 VSSW 4 x 0.4 m, h1/h 0.7", multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7))});
+    // Table 1 specimens 1, 7 and 15 (hinges at 0.69, 0.50, 0.60) at the three overburdens of the issue.
+    for (double xi : {0.0, 0.1, 0.5}) {
+        w.push_back({"T1 #1 4.88 x 0.356, h1/h 0.69, xi " + std::to_string(xi).substr(0, 3),
+                     multibody::WallScene::of(make_vssw(4.88, 0.356, 0.69, xi))});
+        w.push_back({"T1 #7 4.88 x 0.200, h1/h 0.50, xi " + std::to_string(xi).substr(0, 3),
+                     multibody::WallScene::of(make_vssw(4.88, 0.2, 0.5, xi))});
+        w.push_back({"T1 #15 3.05 x 0.194, h1/h 0.60, xi " + std::to_string(xi).substr(0, 3),
+                     multibody::WallScene::of(make_vssw(3.05, 0.194, 0.6, xi))});
+    }
+    w.push_back({"Fig. 6 PW 4 x 0.4 m (h/b 10)", multibody::WallScene::of(make_parapet(4.0, 0.4))});
+    w.push_back({"PW 0.9 x 0.11 m (Lam, h/b 8.2)", multibody::WallScene::of(make_parapet(0.9, 0.11))});
+    w.push_back({"PW 3 x 0.6 m (h/b 5)", multibody::WallScene::of(make_parapet(3.0, 0.6))});
+    w.push_back({"PW 4 x 0.2 m (h/b 20)", multibody::WallScene::of(make_parapet(4.0, 0.2))});
+    return w;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: vssw_engine_accuracy ENGINE [dt ...]\n");
+        return 2;
+    }
+    try {
+        const auto engine = multibody::make_engine(argv[1]);
+        std::vector<double> steps;
+        for (int i = 2; i < argc; ++i) steps.push_back(std::atof(argv[i]));
+        if (steps.empty()) steps = {1e-3, 2e-4, 5e-5};
+        std::printf("| wall | dt [s] | threshold | period (r = 0.5) | restitution | wall time [s] |\n");
+        std::printf("|---|---|---|---|---|---|\n");
+        for (const NamedWall& w : walls()) {
+            for (double dt : steps) {
+                multibody::EngineSettings s = engine->default_settings();
+                s.dt = dt;
+                try {
+                    const auto t0 = std::chrono::steady_clock::now();
+                    const compare::EngineComparison c = compare::compare_with_analytic(*engine, s, w.scene, 0.5);
+                    const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                    std::printf("| %s | %g | %+.2e | %+.2e | %+.2e | %.1f |\n", w.name.c_str(), dt, c.threshold_g.rel_error,
+                                c.period.rel_error, c.restitution.rel_error, sec);
+                } catch (const multibody::EngineFailure& e) {
+                    std::printf("| %s | %g | failed: %s | | | |\n", w.name.c_str(), dt, e.what());
+                }
+                std::fflush(stdout);
+            }
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "vssw_engine_accuracy: %s\n", e.what());
+        return 2;
+    }
+    return 0;
+}

@@ -1,0 +1,197 @@
+#include "compare/experiments.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/simulate.hpp"
+#include "multibody/analytic_engine.hpp"
+
+namespace vssw::compare {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Step of the one-sided finite difference for q^2 = d theta1''/d theta1 at theta1 = 0, in units of alpha: small
+// enough that the curvature of theta1''(theta1) does not matter (relative error ~1e-6), large enough that the
+// cancellation at the threshold does not (the terms are O(g), the difference O(1e-6 alpha q^2): ~1e-8 relative).
+constexpr double kGrowthStep = 1e-6;
+
+double output_interval(const EngineSettings& s) { return s.sample_dt > 0.0 ? s.sample_dt : s.dt; }
+
+// Before anything reads scene.alpha() or scene.gravity(), which assume one description is set.
+void require_scene(const WallScene& scene) {
+    if (scene.vssw.has_value() == scene.parapet.has_value())
+        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+}
+
+}  // namespace
+
+GroundMotion ramp_and_hold(double amplitude, double ramp_time, double hold_time) {
+    require(std::isfinite(amplitude), "trial ground acceleration", "finite", amplitude);
+    require(std::isfinite(ramp_time) && ramp_time > 0.0, "ramp time", "a positive finite time in s", ramp_time);
+    require(std::isfinite(hold_time) && hold_time >= 0.0, "hold time", "a finite time >= 0 s", hold_time);
+    return GroundMotion::analytic(
+        [amplitude, ramp_time](double t) {
+            if (t >= ramp_time) return amplitude;
+            const double x = t / ramp_time;
+            return amplitude * (x - std::sin(2.0 * kPi * x) / (2.0 * kPi));
+        },
+        ramp_time + hold_time, {ramp_time},
+        fmt::format("ramp to {} m/s^2 over {} s, held {} s", amplitude, ramp_time, hold_time));
+}
+
+double threshold_hold_time(const WallScene& scene, const ThresholdOptions& o) {
+    require(o.rel_tol > 0.0 && o.rel_tol < 0.1, "threshold relative tolerance", "in (0, 0.1)", o.rel_tol);
+    require(o.lift_angle > 0.0 && o.lift_angle < 1.0, "lift angle (units of alpha)", "in (0, 1)", o.lift_angle);
+    require(o.detectable_excess > 0.0 && o.detectable_excess <= 1.0, "detectable excess (fraction of rel_tol)",
+            "in (0, 1]", o.detectable_excess);
+    require(o.hold_margin >= 1.0 && std::isfinite(o.hold_margin), "hold margin", ">= 1", o.hold_margin);
+    if (o.hold_time > 0.0) return o.hold_time;
+
+    const auto model = multibody::analytic_model(scene, Kinematics::exact);
+    const double alpha = model->reference_angle();
+    const double a_c = model->rest_threshold(0.0);
+    const ModelTerms rest = model->terms(0.0);
+    const double k = a_c * rest.X / rest.M;  // theta1'' at rest per unit relative excess
+    // Side +1 tips under a_h < 0 (engine.hpp's sign convention).
+    const double step = kGrowthStep * alpha;
+    const double q2 = (model->acceleration(1, step, 0.0, -a_c, 0.0) - model->acceleration(1, 0.0, 0.0, -a_c, 0.0)) /
+                      step;
+    const double eps = o.detectable_excess * o.rel_tol;
+    const double target = o.lift_angle * alpha;
+    // Unstable rest (q^2 > 0, every rocking wall): cosh growth. Otherwise the constant push alone: eps k t^2 / 2.
+    const double t = q2 > 0.0 ? std::acosh(1.0 + target * q2 / (eps * k)) / std::sqrt(q2)
+                              : std::sqrt(2.0 * target / (eps * k));
+    return o.hold_margin * t;
+}
+
+ThresholdResult find_threshold(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                               const ThresholdOptions& o) {
+    require_scene(scene);
+    require(std::isfinite(o.ramp_time) && o.ramp_time > 0.0, "ramp time", "a positive finite time in s", o.ramp_time);
+    require(o.start_g > 0.0 && o.start_g < o.max_g && std::isfinite(o.max_g), "first threshold guess (g)",
+            "in (0, max_g)", o.start_g);
+    require(std::isfinite(o.sample_dt) && o.sample_dt >= 0.0, "trial sampling interval", ">= 0 s", o.sample_dt);
+    const double hold = threshold_hold_time(scene, o);
+    const double g = scene.gravity();
+    const double lift = o.lift_angle * scene.alpha();
+
+    EngineSettings trial_settings = settings;
+    trial_settings.sample_dt = std::max(settings.sample_dt, o.sample_dt);
+    ThresholdResult result{kNaN, 0.0, kNaN, 0, hold};
+    auto lifts = [&](double a_g) {
+        multibody::Excitation ex;
+        ex.horizontal = ramp_and_hold(a_g * g, o.ramp_time, hold);
+        ex.theta0 = 0.0;
+        ex.t_end = o.ramp_time + hold;
+        ex.stop_at_rest = false;
+        ex.stop_angle = lift;  // the trial's question is answered once the wall has lifted
+        ++result.trials;
+        return lifted(engine.simulate(scene, ex, trial_settings), lift);
+    };
+
+    // Bracket: double from the guess until the wall lifts; the last value that did not is the lower end.
+    double lo = 0.0, hi = o.start_g;
+    while (!lifts(hi)) {
+        lo = hi;
+        hi *= 2.0;
+        if (hi > o.max_g)
+            throw multibody::EngineFailure(fmt::format(
+                "{}: the wall did not lift under a constant ground acceleration of {} g", engine.name(), lo));
+    }
+    while (hi - lo > o.rel_tol * hi) {
+        const double mid = 0.5 * (lo + hi);
+        (lifts(mid) ? hi : lo) = mid;
+    }
+    result.lower_g = lo;
+    result.upper_g = hi;
+    result.value_g = 0.5 * (lo + hi);
+    return result;
+}
+
+double free_vibration_duration(const WallScene& scene, double theta0, int impacts) {
+    require(impacts >= 1, "impacts to show", ">= 1", impacts);
+    const auto model = multibody::analytic_model(scene, Kinematics::exact);
+    SimulationOptions opt;
+    opt.keep_samples = false;
+    const SimulationResult r = free_vibration(*model, theta0, opt);
+    const std::size_t n = static_cast<std::size_t>(impacts);
+    if (r.impacts.size() >= n) return 1.25 * r.impacts[n - 1].t;
+    return 1.25 * r.t_final;
+}
+
+FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                                       const FreeVibrationOptions& o) {
+    require_scene(scene);
+    require(std::isfinite(o.r) && o.r > 0.0, "release angle r (units of alpha)", "a positive finite number", o.r);
+    require(std::isfinite(o.t_end) && o.t_end >= 0.0, "free vibration end time", ">= 0 s (0: automatic)", o.t_end);
+    FreeVibrationResult out;
+    out.theta0 = o.r * scene.alpha();
+    multibody::Excitation ex;
+    ex.theta0 = out.theta0;
+    ex.t_end = o.t_end > 0.0 ? o.t_end : free_vibration_duration(scene, out.theta0, o.impacts);
+    ex.stop_at_rest = true;
+    out.trajectory = engine.simulate(scene, ex, settings);
+
+    out.impacts = impacts(out.trajectory, o.skip, o.noise_angle);
+    out.peaks = peaks(out.trajectory, o.noise_angle);
+    if (!out.impacts.empty()) {
+        out.quarter_period = out.impacts.front().t - out.trajectory.samples.front().t;
+        out.period = 4.0 * *out.quarter_period;
+        if (out.impacts.front().resolved) out.restitution = out.impacts.front().ratio;
+    }
+    out.half_cycles = half_cycles(out.impacts);
+    out.amplitude = amplitude_restitution(scene, out.impacts, out.peaks);
+    return out;
+}
+
+MetricComparison compare_metric(double analytic, double engine) { return {analytic, engine, engine / analytic - 1.0}; }
+
+EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                                       double r, const ComparisonOptions& options) {
+    require_scene(scene);
+    const multibody::AnalyticEngine analytic;
+    EngineSettings analytic_settings = analytic.default_settings();  // exact kinematics
+    analytic_settings.dt = output_interval(settings);
+
+    EngineComparison c{};
+    c.analytic_threshold = find_threshold(analytic, analytic_settings, scene, options.threshold);
+    c.engine_threshold = find_threshold(engine, settings, scene, options.threshold);
+    c.threshold_g = compare_metric(c.analytic_threshold.value_g, c.engine_threshold.value_g);
+
+    FreeVibrationOptions free = options.free;
+    free.r = r;
+    const double theta0 = r * scene.alpha();
+    if (free.t_end <= 0.0) free.t_end = free_vibration_duration(scene, theta0, free.impacts);
+    const FreeVibrationResult a = run_free_vibration(analytic, analytic_settings, scene, free);
+    const FreeVibrationResult e = run_free_vibration(engine, settings, scene, free);
+    c.period = compare_metric(a.period.value_or(kNaN), e.period.value_or(kNaN));
+    c.restitution = compare_metric(a.restitution.value_or(kNaN), e.restitution.value_or(kNaN));
+    auto first_amplitude = [](const FreeVibrationResult& f) {
+        return !f.amplitude.empty() && f.amplitude.front().impact == 0 ? f.amplitude.front().energy : kNaN;
+    };
+    c.restitution_amplitude = compare_metric(first_amplitude(a), first_amplitude(e));
+    c.analytic_impacts = static_cast<int>(a.impacts.size());
+    c.engine_impacts = static_cast<int>(e.impacts.size());
+
+    if (scene.vssw) {
+        const VsswGeometry& w = *scene.vssw;
+        c.threshold_closed_form_g = eq12_threshold(w) / w.g;
+        c.restitution_closed_form = eq19_restitution(w);
+        c.period_linearised = w.N == 0.0 && theta0 < eq21_A(w) ? eq22_period(w, theta0) : kNaN;
+    } else {
+        const ParapetGeometry& p = *scene.parapet;
+        c.threshold_closed_form_g = eq17_parapet_threshold(p) / p.g;
+        c.restitution_closed_form = housner_restitution(p.alpha);
+        c.period_linearised = p.N == 0.0 && theta0 < p.alpha ? housner_period(p.alpha, p.R, p.g, theta0) : kNaN;
+    }
+    return c;
+}
+
+}  // namespace vssw::compare

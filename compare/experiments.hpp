@@ -1,0 +1,129 @@
+#pragma once
+// Experiments run through any Engine (the analytic model included, as multibody::AnalyticEngine), measured with
+// compare/metrics.hpp only: the threshold acceleration by bisection on simulations, the free vibration from rest, and
+// the comparison of an engine with the analytic model on threshold, period and restitution (DESIGN.md, "Metrics").
+#include <optional>
+#include <vector>
+
+#include "compare/metrics.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::compare {
+
+using multibody::Engine;
+using multibody::EngineSettings;
+using multibody::WallScene;
+
+// Threshold ----------------------------------------------------------------------------------------------------
+//
+// Each trial ramps a horizontal ground acceleration smoothly from 0 to the trial value A (the ramp
+// s(x) = x - sin(2 pi x)/(2 pi), x = t/ramp_time, has zero first and second derivatives at both ends: no step that
+// would make a compliant engine bounce), then holds A for hold_time. The wall has lifted when |theta1| reaches
+// lift_angle * alpha (or it overturned).
+//
+// Why the hold is long enough: just above the threshold A_c, at A = A_c (1 + eps), the equation of motion linearised
+// at theta1 = 0 is theta1'' = eps k + q^2 theta1, with k = A_c X(0)/M(0) (the net tipping acceleration per unit
+// excess) and q^2 = d theta1''/d theta1 > 0 (the restoring moment falls as the wall tips). From rest,
+// theta1 = (eps k / q^2)(cosh(q t) - 1): the excess eps reaches the lift angle after
+//     t(eps) = acosh(1 + lift_angle alpha q^2 / (eps k)) / q,
+// which grows only like ln(1/eps). The hold is hold_margin * t(detectable_excess * rel_tol), k and q taken from the
+// analytic model of the scene (exact kinematics): any excess of at least a tenth of the tolerance lifts the wall
+// within the hold, so the bisection's answer is biased by at most that tenth on top of its bracket. The lift
+// criterion of 1e-2 alpha is far above an engine's elastic rotation on its contacts at rest (~1e-6 rad) and far
+// below any angle at which the linearisation fails. Measured on the analytic backend (rel_tol 1e-4): the hold is
+// 2.7 s for a 4 m x 0.4 m VSSW (h1/h = 0.7, xi = 0.1), 2.2 s for 3.05 m x 0.143 m (0.6, 0.1), 5.0 s for a 4 m x 0.4 m
+// parapet, 2.4 s for 0.9 m x 0.11 m; an excess of 1e-5 lifts each at 0.80 of it (the 1/1.25 margin: the estimate is
+// accurate), 1e-6 does not lift at all. A bisection takes 16-17 trials.
+struct ThresholdOptions {
+    double rel_tol = 1e-4;          // relative width of the final bracket
+    double ramp_time = 0.2;         // [s]
+    double lift_angle = 1e-2;       // lift criterion, in units of alpha
+    double detectable_excess = 0.1; // hold long enough to lift an excess of this fraction of rel_tol
+    double hold_margin = 1.25;      // on the linearised estimate (the ramp's end, the nonlinearity)
+    double hold_time = 0.0;         // [s] > 0 overrides the estimate above
+    double start_g = 0.05;          // first upper-bound guess, doubled until the wall lifts (no Eq. 12 used)
+    double max_g = 20.0;            // give up (EngineFailure) when the wall has not lifted under this
+    // Trajectory sampling of a trial [s]: only max |theta1| is needed, and past the threshold theta1 grows
+    // monotonically, so coarse samples suffice (settings.sample_dt is raised to this, never lowered).
+    double sample_dt = 1e-3;
+};
+
+struct ThresholdResult {
+    double value_g;           // mid-point of the final bracket, in units of the wall's g
+    double lower_g, upper_g;  // the final bracket: lower did not lift the wall, upper did
+    int trials;               // simulations run (doubling and bisection)
+    double hold_time;         // [s] hold used by each trial
+};
+
+// Ground motion of one trial: the smooth ramp to `amplitude` [m/s^2] over ramp_time, then held for hold_time.
+GroundMotion ramp_and_hold(double amplitude, double ramp_time, double hold_time);
+// The hold of the reasoning above, for a scene.
+double threshold_hold_time(const WallScene& scene, const ThresholdOptions& options = {});
+// Smallest constant horizontal ground acceleration that lifts the wall off rest, by bisection on trials. An
+// EngineFailure from a trial propagates.
+ThresholdResult find_threshold(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                               const ThresholdOptions& options = {});
+
+// Free vibration -----------------------------------------------------------------------------------------------
+
+struct FreeVibrationOptions {
+    double r = 0.5;          // release from rest at theta1,0 = r alpha
+    double t_end = 0.0;      // [s]; 0: long enough for `impacts` impacts of the analytic model (see duration below)
+    int impacts = 8;         // impacts the automatic t_end is meant to show (the run stops earlier at rest)
+    int skip = kDefaultImpactSkip;  // metrics.hpp
+    double noise_angle = 0.0;       // metrics.hpp
+};
+
+struct FreeVibrationResult {
+    double theta0;  // [rad]
+    multibody::Trajectory trajectory;
+    std::vector<ImpactMetric> impacts;
+    std::vector<Peak> peaks;
+    std::optional<double> quarter_period;  // release to first impact [s]
+    std::optional<double> period;          // 4 x quarter_period [s]
+    std::vector<double> half_cycles;       // between successive impacts [s]
+    std::optional<double> restitution;     // theta1_dot ratio of the first impact (when resolved)
+    std::vector<AmplitudeRestitution> amplitude;  // per impact with peaks either side (exact-kinematics model)
+};
+
+// Duration that shows `impacts` impacts of the analytic model (exact kinematics) released at theta0: 1.25 times
+// the time of that impact (a quarter of the last half-cycle and more, so the peak after it is in the run), or 1.25
+// times the time the wall comes to rest if it stops before.
+double free_vibration_duration(const WallScene& scene, double theta0, int impacts);
+FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                                       const FreeVibrationOptions& options = {});
+
+// Comparison with the analytic model ---------------------------------------------------------------------------
+
+struct MetricComparison {
+    double analytic, engine;
+    double rel_error;  // engine / analytic - 1 (NaN when either is missing)
+};
+MetricComparison compare_metric(double analytic, double engine);
+
+struct ComparisonOptions {
+    ThresholdOptions threshold;
+    FreeVibrationOptions free;  // its r is replaced by the r given to compare_with_analytic
+};
+
+struct EngineComparison {
+    MetricComparison threshold_g;      // find_threshold, in g
+    MetricComparison period;           // 4 x time to the first impact [s]
+    MetricComparison restitution;      // theta1_dot ratio of the first impact
+    MetricComparison restitution_amplitude;  // restitution_from_peaks around the first impact
+    // Closed forms beside the measured values: Eq. (12) / Eq. (17) [g]; Eq. (19) / Housner's e; the linearised
+    // period, Eq. (22) / Housner's (NaN where it does not apply: N > 0, or theta0 beyond its A).
+    double threshold_closed_form_g;
+    double restitution_closed_form;
+    double period_linearised;
+    ThresholdResult analytic_threshold, engine_threshold;
+    int analytic_impacts, engine_impacts;  // impacts in the free vibration runs
+};
+
+// The engine against AnalyticEngine (exact kinematics), both measured by the code above. The analytic side is
+// sampled at the engine's sampling (settings.sample_dt, else settings.dt) so that the metrics' sampling error is the
+// same on both sides, and both free vibrations run for the same time.
+EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                                       double r, const ComparisonOptions& options = {});
+
+}  // namespace vssw::compare

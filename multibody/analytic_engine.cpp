@@ -1,0 +1,114 @@
+#include "multibody/analytic_engine.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/simulate.hpp"
+
+namespace vssw::multibody {
+namespace {
+
+constexpr const char* kPaperKinematics = "paper_kinematics";
+constexpr const char* kRtol = "rtol";
+constexpr double kDefaultRtol = 1e-10;
+constexpr double kDefaultOutputDt = 1e-4;  // [s] the engines' default step (EngineSettings::dt)
+
+void require_one_description(const WallScene& scene) {
+    if (scene.vssw.has_value() == scene.parapet.has_value())
+        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+}
+
+struct Knobs {
+    Kinematics kinematics = Kinematics::exact;
+    double rtol = kDefaultRtol;
+};
+
+Knobs read_knobs(const EngineSettings& settings) {
+    Knobs k;
+    for (const auto& [name, value] : settings.knobs) {
+        if (name == kPaperKinematics) {
+            require(value == 0.0 || value == 1.0, "analytic knob paper_kinematics", "0 (exact) or 1 (paper)", value);
+            k.kinematics = value == 1.0 ? Kinematics::paper : Kinematics::exact;
+        } else if (name == kRtol) {
+            k.rtol = value;  // its range is checked by simulate()
+        } else {
+            throw InputError(fmt::format("unknown analytic knob '{}' (known: {}, {})", name, kPaperKinematics, kRtol));
+        }
+    }
+    return k;
+}
+
+// theta2 of the sample: Eq. (2) for the exact kinematics (NaN past Eq. 26, where no configuration exists; the run
+// ends just before it), Eq. (3) for the paper's, 0 for the single block.
+double upper_rotation(const WallScene& scene, Kinematics kinematics, double theta1) {
+    if (!scene.vssw) return 0.0;
+    if (kinematics == Kinematics::paper) return eq3_theta2_linear(*scene.vssw, theta1);
+    return eq2_theta2_exact(*scene.vssw, theta1).value_or(std::numeric_limits<double>::quiet_NaN());
+}
+
+}  // namespace
+
+std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics) {
+    require_one_description(scene);
+    if (scene.vssw) return make_vssw_model(*scene.vssw, kinematics);
+    return make_parapet_model(*scene.parapet);
+}
+
+EngineSettings AnalyticEngine::default_settings() const {
+    EngineSettings s;
+    s.dt = kDefaultOutputDt;
+    s.knobs = {{kPaperKinematics, 0.0}, {kRtol, kDefaultRtol}};
+    return s;
+}
+
+Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& excitation,
+                                    const EngineSettings& settings) const {
+    const Knobs knobs = read_knobs(settings);
+    const std::unique_ptr<RockingModel> model = analytic_model(scene, knobs.kinematics);
+    const double output_dt = settings.sample_dt > 0.0 ? settings.sample_dt : settings.dt;
+    require(std::isfinite(output_dt) && output_dt > 0.0, "analytic output interval (sample_dt, else dt)",
+            "a positive finite time in s", output_dt);
+
+    SimulationOptions options;
+    options.t_end = excitation.t_end;
+    options.stop_at_rest = excitation.stop_at_rest;
+    options.output_dt = output_dt;
+    options.step.rtol = knobs.rtol;
+
+    // The integrator's sign convention is engine.hpp's: a positive a_h tips the wall towards theta1 < 0.
+    SimulationResult r;
+    try {
+        r = vssw::simulate(*model, excitation.horizontal, GroundMotion::none(), {excitation.theta0, 0.0}, options);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::runtime_error& e) {
+        throw EngineFailure(fmt::format("analytic integration failed: {}", e.what()));
+    }
+
+    Trajectory out;
+    out.overturned = r.overturned;
+    out.at_rest_at_end = r.at_rest_at_end;
+    out.steps = r.steps;
+    out.samples.reserve(r.samples.size());
+    const double top_at_rest = model->load_height(0.0);
+    for (const Sample& s : r.samples) {
+        TrajectorySample t{};
+        t.t = s.t;
+        t.theta1 = s.theta;
+        t.theta1_dot = s.theta_dot;
+        t.theta2 = upper_rotation(scene, knobs.kinematics, s.theta);
+        t.top_dy = model->load_height(std::abs(s.theta)) - top_at_rest;
+        t.kinetic = s.kinetic;
+        t.potential = s.weight_potential - s.work_overburden;
+        t.contacts = 0;
+        out.samples.push_back(t);
+    }
+    return out;
+}
+
+}  // namespace vssw::multibody

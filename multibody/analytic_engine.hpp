@@ -1,0 +1,36 @@
+#pragma once
+// The analytic model (analytic/) behind the Engine interface, so that a comparison measures the analytic trajectory
+// and an engine's with the same metric code (compare/metrics.hpp) and the same sampling.
+//
+// Settings:
+//  - dt: the output interval of the trajectory [s] (the integrator's steps are its own, set by rtol); sample_dt, when
+//    > 0, takes precedence, as for an engine. Default 1e-4 s, the engines' default step, so that both sides of a
+//    comparison are sampled alike unless the caller says otherwise.
+//  - knobs: "paper_kinematics" (0: exact kinematics of Eq. 2, the default, as every comparison with an engine uses;
+//    1: the paper's Eq. 3), "rtol" (DOP853's relative tolerance, default 1e-10). Any other knob is an InputError:
+//    a misspelt knob must not be ignored silently.
+//  - iterations: unused.
+// The integrator's own failures (step size underflow, step limit, a non-finite state) are reported as EngineFailure;
+// bad input stays InputError.
+#include <memory>
+#include <string>
+
+#include "analytic/model.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::multibody {
+
+// The rocking model of a scene: make_vssw_model(*scene.vssw, k) or make_parapet_model(*scene.parapet) (the parapet
+// has one kinematics; k is ignored). Throws InputError unless exactly one description is set.
+std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics);
+
+class AnalyticEngine final : public Engine {
+public:
+    std::string name() const override { return "analytic"; }
+    std::string version() const override { return "vssw analytic (DOP853, rtol 1e-10)"; }
+    EngineSettings default_settings() const override;
+    Trajectory simulate(const WallScene& scene, const Excitation& excitation,
+                        const EngineSettings& settings) const override;
+};
+
+}  // namespace vssw::multibody

@@ -1,0 +1,91 @@
+#pragma once
+// One interface for every way of simulating a wall: the analytic model and each rigid-body engine. A backend gets the
+// wall as the analytic core describes it (nothing about a wall is typed twice), an excitation and its settings, and
+// returns a trajectory sampled in one format, which compare/ measures with one piece of code whatever produced it.
+//
+// Conventions shared by every backend (so trajectories are comparable sample by sample):
+//  - the wall lies in the x-y plane, y up, its centreline on x = 0 at rest, base on the ground at y = 0;
+//  - theta1 is the lower body's rotation, positive CLOCKWISE (the wall tipping towards +x about its corner (+b, 0)),
+//    which is the analytic model's sign: a positive ground acceleration a_h (along +x) tips it towards theta1 < 0;
+//  - theta2 is the upper body's rotation in the same sense (negative while theta1 > 0, Eq. 2);
+//  - top_dy is the vertical displacement of the centre of the top face from rest (the roller lets it rise).
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "analytic/ground_motion.hpp"
+#include "analytic/wall.hpp"
+
+namespace vssw::multibody {
+
+// The wall: exactly one of the two descriptions.
+struct WallScene {
+    std::optional<VsswGeometry> vssw;
+    std::optional<ParapetGeometry> parapet;
+    // Coulomb friction at the ground and at the hinge: high enough that nothing slides (sliding is reported).
+    double friction = 2.0;
+
+    static WallScene of(const VsswGeometry& w) { return {w, std::nullopt}; }
+    static WallScene of(const ParapetGeometry& p) { return {std::nullopt, p}; }
+    bool is_vssw() const { return vssw.has_value(); }
+    double alpha() const { return vssw ? vssw->alpha1 : parapet->alpha; }  // reference angle alpha1 or alpha
+    double gravity() const { return vssw ? vssw->g : parapet->g; }
+};
+
+// How the run starts and what shakes it.
+struct Excitation {
+    GroundMotion horizontal = GroundMotion::none();  // a_h(t), m/s^2, along +x
+    double theta0 = 0.0;      // release from rest at this rotation of the lower body [rad]
+    double t_end = 10.0;      // [s]
+    bool stop_at_rest = true;  // end the run once the wall is at rest after the ground motion (nothing left to see)
+    // > 0: end the run once |theta1| reaches this angle [rad] (a threshold trial needs to know no more than that).
+    double stop_angle = 0.0;
+};
+
+// Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (README).
+struct EngineSettings {
+    double dt = 1e-4;        // engine step [s]
+    int iterations = 0;      // solver iterations (0: the adapter's default)
+    std::map<std::string, double> knobs;  // engine-specific options by name (each adapter lists its own)
+    double sample_dt = 0.0;  // trajectory sampling [s]; 0: every step
+};
+
+struct TrajectorySample {
+    double t, theta1, theta1_dot, theta2, top_dy;
+    double kinetic, potential;  // [J] for the scene's depth (per unit depth for the analytic model)
+    int contacts;               // contact points in use (0 for the analytic model)
+};
+
+struct Trajectory {
+    std::vector<TrajectorySample> samples;
+    bool overturned = false;
+    bool at_rest_at_end = false;
+    long steps = 0;          // engine steps (or integrator steps) taken
+};
+
+// A run the engine could not finish honestly: NaN, blow-up, penetration past a bound, sliding. The message names the
+// reason and when; the program reports it, it never crashes.
+struct EngineFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+class Engine {
+public:
+    virtual ~Engine() = default;
+    virtual std::string name() const = 0;
+    virtual std::string version() const = 0;  // of the engine library, for reports
+    virtual EngineSettings default_settings() const = 0;
+    // Throws EngineFailure when the run fails; InputError on a bad scene or setting.
+    virtual Trajectory simulate(const WallScene& scene, const Excitation& excitation,
+                                const EngineSettings& settings) const = 0;
+};
+
+// Backends compiled into this build ("analytic" always; "bullet", ... when found at configure time).
+std::vector<std::string> available_engines();
+// Throws InputError naming the engine and the available ones.
+std::unique_ptr<Engine> make_engine(const std::string& name);
+
+}  // namespace vssw::multibody

@@ -1,0 +1,29 @@
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/analytic_engine.hpp"
+#include "multibody/engine.hpp"
+#ifdef VSSW_HAVE_BULLET
+#include "multibody/bullet/bullet_engine.hpp"
+#endif
+
+namespace vssw::multibody {
+
+std::vector<std::string> available_engines() {
+    std::vector<std::string> names = {"analytic"};
+#ifdef VSSW_HAVE_BULLET
+    names.push_back("bullet");
+#endif
+    return names;
+}
+
+std::unique_ptr<Engine> make_engine(const std::string& name) {
+    if (name == "analytic") return std::make_unique<AnalyticEngine>();
+#ifdef VSSW_HAVE_BULLET
+    if (name == "bullet") return make_bullet_engine();
+#endif
+    throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
+                                 fmt::join(available_engines(), ", ")));
+}
+
+}  // namespace vssw::multibody

@@ -1,0 +1,36 @@
+#pragma once
+// Placement of the blocks shared by every engine adapter, from the analytic description: where each block's centre
+// is and how it is turned for a lower-body rotation theta1 (the mechanism of Eq. 1-2, exact kinematics), and where the
+// points the adapters measure sit on each block. Engine-free: adapters turn these numbers into their own bodies.
+#include "multibody/engine.hpp"
+
+namespace vssw::multibody {
+
+struct BlockPose {
+    double x, y;   // centre [m]
+    double angle;  // rotation, clockwise positive (engine.hpp's sign) [rad]
+};
+
+struct WallPose {
+    BlockPose lower, upper;  // upper is unused for a parapet
+};
+
+// Half extents of the blocks: (b, h1) and (b, h2) for a VSSW, (b, h) for a parapet (lower only).
+struct BlockSizes {
+    double b, h_lower, h_upper;  // h_upper = 0 for a parapet
+    double m_lower, m_upper;     // masses per unit depth [kg/m]
+};
+BlockSizes block_sizes(const WallScene& scene);
+
+// The wall released at theta1 (either sign) from the mechanism's configuration: the lower block turned about the base
+// corner on the side it tips towards; the upper block on the hinge, theta2 from Eq. (2).
+WallPose pose_at(const WallScene& scene, double theta1);
+
+// Collapse angle of the scene (the analytic model's: Eq. 26 or pi/2 for a VSSW, pi/2 for a parapet).
+double collapse_angle(const WallScene& scene);
+
+// V_r and theta1'_r of the scene's analytic model (exact kinematics): the scales engines use for rest and failure checks.
+double reference_energy(const WallScene& scene);
+double reference_velocity(const WallScene& scene);
+
+}  // namespace vssw::multibody
