@@ -13,8 +13,11 @@
 //    leans outwards (it turns about that corner), so any guide surface covering the heights the corner rises through
 //    is penetrated by the face;
 //  - collision pairs that cannot touch are filtered out (ground-upper);
-//  - N: a force at the centre of the top face, only when xi > 0; ground motion: pseudo-forces -m a_h(t) at the centres
-//    of mass on fixed supports (the same as moving supports for rigid bodies; see the README).
+//  - N: a force at the centre of the top face, only when xi > 0;
+//  - ground motion: by default pseudo-forces -m a_h(t) at the centres of mass on fixed supports; with the setting
+//    moving_supports = 1 the ground (and the roller, anchored to it) moves instead, as a kinematic body following
+//    x_g(t), the ground acceleration integrated twice. For rigid bodies the two are the same motion relative to the
+//    ground; the cross-engine suite checks that they agree.
 #include "multibody/bullet/bullet_engine.hpp"
 
 #include <btBulletDynamicsCommon.h>
@@ -42,6 +45,7 @@ struct Knobs {
     double erp;               // error reduction of penetration (used only by split impulse's position pass)
     double slide_limit;       // reported as sliding past this horizontal drift of the pivot corner, in units of b
     double penetration_limit;  // reported as penetration past this depth below the ground, in units of b
+    bool moving_supports;      // move the ground instead of applying pseudo-forces
 };
 
 Knobs read_knobs(const EngineSettings& s) {
@@ -50,12 +54,14 @@ Knobs read_knobs(const EngineSettings& s) {
         return it == s.knobs.end() ? fallback : it->second;
     };
     for (const auto& [name, value] : s.knobs) {
-        static const char* const known[] = {"erp", "slide_limit", "penetration_limit"};
+        static const char* const known[] = {"erp", "slide_limit", "penetration_limit", "moving_supports"};
         bool ok = false;
         for (const char* k : known) ok = ok || name == k;
         if (!ok)
             throw InputError(
-                fmt::format("unknown Bullet setting '{}' (known: erp, slide_limit, penetration_limit)", name));
+                fmt::format("unknown Bullet setting '{}' (known: erp, slide_limit, penetration_limit, "
+                            "moving_supports)",
+                            name));
         require(std::isfinite(value), "Bullet setting " + name, "finite", value);
     }
     Knobs k{};
@@ -63,6 +69,9 @@ Knobs read_knobs(const EngineSettings& s) {
     k.erp = knob("erp", 0.2);
     k.slide_limit = knob("slide_limit", 5e-2);  // the wall "walks" ~1e-2 b over many small impacts (measured)
     k.penetration_limit = knob("penetration_limit", 5e-2);
+    const double moving = knob("moving_supports", 0.0);
+    require(moving == 0.0 || moving == 1.0, "Bullet setting moving_supports", "0 or 1", moving);
+    k.moving_supports = moving == 1.0;
     return k;
 }
 
@@ -79,6 +88,23 @@ double clockwise_angle(const btRigidBody& body) {
     const btMatrix3x3& r = body.getWorldTransform().getBasis();
     return -std::atan2(r[1][0], r[0][0]);
 }
+
+// Where a moving ground is: Bullet asks a kinematic body's motion state for its transform every step and derives
+// the body's velocity from the change, which the contacts and the roller then see.
+class GroundMotionState : public btMotionState {
+public:
+    explicit GroundMotionState(const btVector3& centre) : centre_(centre) {}
+    void set_displacement(double x) { x_ = x; }
+    void getWorldTransform(btTransform& t) const override {
+        t.setIdentity();
+        t.setOrigin(centre_ + btVector3(x_, 0, 0));
+    }
+    void setWorldTransform(const btTransform&) override {}
+
+private:
+    btVector3 centre_;
+    double x_ = 0.0;
+};
 
 class BulletWorld {
 public:
@@ -99,8 +125,17 @@ public:
         info.m_erp2 = knobs.erp;
 
         const double b = sizes_.b, h = sizes_.h_lower + sizes_.h_upper;
-        btRigidBody& ground = add_static(btVector3(4.0 * h + 10.0 * b, h, kDepth), btVector3(0, -h, 0), 1.0,
-                                         kGround, kLower);
+        // A moving ground travels with the record's displacement (metres, or tens of metres under a long constant
+        // acceleration): make it wide enough that the wall never reaches its edge.
+        const double half_width = knobs.moving_supports ? 1e4 : 4.0 * h + 10.0 * b;
+        btRigidBody& ground = add_static(btVector3(half_width, h, kDepth), btVector3(0, -h, 0), 1.0, kGround, kLower);
+        if (knobs.moving_supports) {
+            ground_motion_ = std::make_unique<GroundMotionState>(btVector3(0, -h, 0));
+            ground.setMotionState(ground_motion_.get());
+            ground.setCollisionFlags(ground.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+            ground.setActivationState(DISABLE_DEACTIVATION);
+        }
+        ground_ = &ground;
         lower_ = add_block(sizes_.b, sizes_.h_lower, sizes_.m_lower, scene.friction, kLower,
                            kGround | (scene.vssw ? kUpper : 0));
         if (scene.vssw) upper_ = add_block(sizes_.b, sizes_.h_upper, sizes_.m_upper, scene.friction, kUpper, kLower);
@@ -110,6 +145,11 @@ public:
     }
 
     btDiscreteDynamicsWorld& world() { return world_; }
+    // Moves the ground (moving supports only) to x for the coming step.
+    void move_ground(double x) {
+        if (ground_motion_) ground_motion_->set_displacement(x);
+    }
+    double ground_velocity() const { return ground_ ? ground_->getLinearVelocity().x() : 0.0; }
     btRigidBody& lower() { return *lower_; }
     btRigidBody* upper() { return upper_; }
     // Enables the guide whose corner is further out (the pivot's side while rocking: the other corner is inside its
@@ -119,8 +159,9 @@ public:
     void choose_roller() {
         if (rollers_.empty()) return;
         const btTransform& t = upper_->getWorldTransform();
-        const double right_out = (t * btVector3(sizes_.b, sizes_.h_upper, 0)).x() - sizes_.b;
-        const double left_out = -sizes_.b - (t * btVector3(-sizes_.b, sizes_.h_upper, 0)).x();
+        const double x0 = ground_->getWorldTransform().getOrigin().x();  // the guides' lines move with the ground
+        const double right_out = (t * btVector3(sizes_.b, sizes_.h_upper, 0)).x() - x0 - sizes_.b;
+        const double left_out = -sizes_.b - ((t * btVector3(-sizes_.b, sizes_.h_upper, 0)).x() - x0);
         rollers_[0]->setEnabled(left_out > right_out);
         rollers_[1]->setEnabled(left_out <= right_out);
     }
@@ -200,6 +241,8 @@ private:
     std::vector<std::unique_ptr<btBoxShape>> shapes_;
     std::vector<std::unique_ptr<btRigidBody>> bodies_;
     std::vector<std::unique_ptr<btGeneric6DofSpring2Constraint>> rollers_;
+    std::unique_ptr<GroundMotionState> ground_motion_;
+    btRigidBody* ground_ = nullptr;
     btRigidBody* lower_ = nullptr;
     btRigidBody* upper_ = nullptr;
 
@@ -258,8 +301,9 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         p.theta1_dot = -lower.getAngularVelocity().z();
         p.theta2 = upper ? clockwise_angle(*upper) : 0.0;
         p.top_dy = top_centre().y() - y_top0;
-        auto kinetic = [](const btRigidBody& body) {
-            const btVector3 v = body.getLinearVelocity(), wv = body.getAngularVelocity();
+        const double v_ground = w.ground_velocity();
+        auto kinetic = [&](const btRigidBody& body) {
+            const btVector3 v = body.getLinearVelocity() - btVector3(v_ground, 0, 0), wv = body.getAngularVelocity();
             const double m = 1.0 / body.getInvMass();
             const double I = 1.0 / body.getInvInertiaDiagLocal().z();
             return 0.5 * m * v.length2() + 0.5 * I * wv.z() * wv.z();
@@ -276,6 +320,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
 
     const double dt = settings.dt;
     const long n_steps = std::lround(ex.t_end / dt);
+    double x_g = 0.0, v_g = 0.0;  // the ground's displacement and velocity (moving supports)
     record(0.0);
     int quiet_steps = 0;
     // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking ended
@@ -285,7 +330,14 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         const double t0 = static_cast<double>(i - 1) * dt;
         // Pseudo-force of the ground motion at the step's midpoint (its impulse over the step to second order).
         const double a_h = ex.horizontal(t0 + 0.5 * dt);
-        if (a_h != 0.0) {
+        if (knobs.moving_supports) {
+            // The ground's displacement at the end of the step: velocity and position by the midpoint rule, the
+            // same impulse per step as the pseudo-forces get.
+            const double v_next = v_g + dt * a_h;
+            x_g += 0.5 * dt * (v_g + v_next);
+            v_g = v_next;
+            w.move_ground(x_g);
+        } else if (a_h != 0.0) {
             lower.applyCentralForce(btVector3(-s.m_lower * kDepth * a_h, 0, 0));
             if (upper) upper->applyCentralForce(btVector3(-s.m_upper * kDepth * a_h, 0, 0));
         }
@@ -306,7 +358,8 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         // corners from their places covers both cases.
         const btVector3 right = lower.getWorldTransform() * btVector3(s.b, -s.h_lower, 0);
         const btVector3 left = lower.getWorldTransform() * btVector3(-s.b, -s.h_lower, 0);
-        const double drift = std::abs(right.x() - s.b) < std::abs(left.x() + s.b) ? right.x() - s.b : left.x() + s.b;
+        const double rx = right.x() - x_g - s.b, lx = left.x() - x_g + s.b;  // relative to the (moving) ground
+        const double drift = std::abs(rx) < std::abs(lx) ? rx : lx;
         if (std::abs(drift) > knobs.slide_limit * s.b)
             throw EngineFailure(fmt::format("Bullet: the wall slid {:.3g} m at its base at t = {:.6g} s (friction {})",
                                             drift, t, scene.friction));
