@@ -28,10 +28,12 @@ constexpr double kRestitutionTarget = 2e-2;  // issue 3: restitution within 2 %
 
 // Differences measured and explained in the README ("Bullet"), keyed by engine and test.
 const std::map<std::string, std::string> kKnownDifferences = {
-    {"bullet/VsswMovingSupports",
-     "with the ground (and the roller anchored to it) moving as a kinematic body, the upper block creeps below the "
-     "threshold (theta2 ~ 2e-4 rad after 2 s at 0.6 of it) and the measured threshold halves; pseudo-forces on fixed "
-     "supports are Bullet's default for that reason (README)."},
+    {"bullet/VsswMovingSupportsPeak",
+     "with the ground and the roller anchored to it moving as a kinematic body, Bullet evaluates the roller's frame "
+     "at the end of the step and the blocks at its start: a lag of v dt that the constraint's error correction "
+     "pushes against, turning the upper block (theta2 ~ 2e-4 rad after 2 s at 0.6 of the threshold). Thresholds "
+     "agree; the peak of a small rocking response differs by 6 % (measured; README). Pseudo-forces on fixed supports "
+     "are Bullet's default for that reason."},
     {"bullet/VsswRestitution",
      "Bullet resolves the impact with every closing contact and the roller at once; Eq. (19) conserves angular "
      "momentum about the new pivot, which assumes no impulse at the roller. Measured on the Fig. 6 wall: 0.81 "
@@ -168,15 +170,23 @@ TEST_P(CrossEngine, SlidingIsReportedNotHidden) {
 
 // Shaking the supports or applying -m a_h(t) at fixed supports is the same motion relative to the ground for rigid
 // bodies: the threshold and the peak response to a pulse must agree between an engine's two ways of shaking.
-void expect_moving_supports_agree(const multibody::Engine& engine, const multibody::EngineSettings& fixed,
-                                  const WallScene& scene, double pulse_factor, double pulse_period) {
+multibody::EngineSettings with_moving_supports(multibody::EngineSettings s) {
+    s.knobs["moving_supports"] = 1.0;
+    return s;
+}
+
+void expect_thresholds_agree(const multibody::Engine& engine, const multibody::EngineSettings& fixed,
+                             const WallScene& scene) {
     constexpr double kThresholdAgreement = 2e-3;  // both bisected to 1e-4; the engine's own error is ~1e-3
-    constexpr double kPeakAgreement = 5e-2;       // measured 0.3 % on the parapet at 0.2 ms
-    multibody::EngineSettings moving = fixed;
-    moving.knobs["moving_supports"] = 1.0;
-    EXPECT_NEAR(compare::find_threshold(engine, moving, scene).value_g /
+    EXPECT_NEAR(compare::find_threshold(engine, with_moving_supports(fixed), scene).value_g /
                     compare::find_threshold(engine, fixed, scene).value_g,
                 1.0, kThresholdAgreement);
+}
+
+void expect_peaks_agree(const multibody::Engine& engine, const multibody::EngineSettings& fixed,
+                        const WallScene& scene, double pulse_factor, double pulse_period) {
+    constexpr double kPeakAgreement = 5e-2;  // measured 0.3 % on the parapet at 0.2 ms
+    const multibody::EngineSettings moving = with_moving_supports(fixed);
     const double threshold = scene.is_vssw() ? eq12_threshold(*scene.vssw) : eq17_parapet_threshold(*scene.parapet);
     multibody::Excitation ex;
     ex.horizontal = sine_pulse(pulse_factor * threshold, pulse_period);
@@ -189,14 +199,20 @@ void expect_moving_supports_agree(const multibody::Engine& engine, const multibo
 
 TEST_P(CrossEngine, ParapetMovingSupportsAgreeWithPseudoForces) {
     if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
-    expect_moving_supports_agree(*engine_, settings_, fig6_parapet(), 1.6, 0.5);
+    expect_thresholds_agree(*engine_, settings_, fig6_parapet());
+    expect_peaks_agree(*engine_, settings_, fig6_parapet(), 1.6, 0.5);
 }
 
-TEST_P(CrossEngine, VsswMovingSupportsAgreeWithPseudoForces) {
+TEST_P(CrossEngine, VsswMovingSupportsGiveTheSameThreshold) {
     if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
-    skip_if_known("VsswMovingSupports");
+    expect_thresholds_agree(*engine_, settings_, table1_specimen11(0.1));
+}
+
+TEST_P(CrossEngine, VsswMovingSupportsGiveTheSamePeakResponse) {
+    if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
+    skip_if_known("VsswMovingSupportsPeak");
     if (IsSkipped()) return;
-    expect_moving_supports_agree(*engine_, settings_, table1_specimen11(0.1), 1.25, 0.25);
+    expect_peaks_agree(*engine_, settings_, table1_specimen11(0.1), 1.25, 0.25);
 }
 
 std::string engine_name(const ::testing::TestParamInfo<std::string>& info) { return info.param; }

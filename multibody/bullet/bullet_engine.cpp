@@ -159,7 +159,11 @@ public:
     void choose_roller() {
         if (rollers_.empty()) return;
         const btTransform& t = upper_->getWorldTransform();
-        const double x0 = ground_->getWorldTransform().getOrigin().x();  // the guides' lines move with the ground
+        // The guides' lines move with the ground: compare the corners with where the ground is during the coming
+        // step (a moving ground travels v dt per step, far more than the corners' offsets at rest).
+        btTransform ground_now;
+        if (ground_motion_) ground_motion_->getWorldTransform(ground_now);
+        const double x0 = ground_motion_ ? ground_now.getOrigin().x() : 0.0;
         const double right_out = (t * btVector3(sizes_.b, sizes_.h_upper, 0)).x() - x0 - sizes_.b;
         const double left_out = -sizes_.b - ((t * btVector3(-sizes_.b, sizes_.h_upper, 0)).x() - x0);
         rollers_[0]->setEnabled(left_out > right_out);
