@@ -15,15 +15,15 @@ struct AnglePair {
     double sA1, cA1, sA2, cA2;
     AnglePair(double A1, double A2) : sA1(std::sin(A1)), cA1(std::cos(A1)), sA2(std::sin(A2)), cA2(std::cos(A2)) {}
     AnglePair(double s1, double c1, double s2, double c2) : sA1(s1), cA1(c1), sA2(s2), cA2(c2) {}
-    // The bracket (2 + tan A2 / tan A1) that recurs in Eqs. (7), (11), (23), (24), (25).
-    double vertical_lever() const { return 2.0 + (sA2 / cA2) * (cA1 / sA1); }
+    // sin A1 times the bracket (2 + tan A2 / tan A1) that recurs in Eqs. (7), (11), (23)-(25), written without the
+    // division by sin A1, which is 0 at theta1 = alpha1 (where the bracket alone is infinite).
+    double lever_times_sin() const { return 2.0 * sA1 + (sA2 / cA2) * cA1; }
 };
 
 // Eq. (11a) written once for any (A1, A2); at theta1 = 0 it is the inertia bracket of Eqs. (21b), (24), (25).
 double mass_coefficient(const VsswGeometry& w, const AnglePair& a) {
-    const double lever = a.vertical_lever();
     const double ratio = sq(w.sin_a2 * a.cA1 / (w.sin_a1 * a.cA2));
-    return w.m1 + w.m2 * (sq(a.cA1) + sq(a.sA1) * sq(lever)) + (w.I1 + ratio * w.I2) / sq(w.R1);
+    return w.m1 + w.m2 * (sq(a.cA1) + sq(a.lever_times_sin())) + (w.I1 + ratio * w.I2) / sq(w.R1);
 }
 
 double mass_coefficient(const VsswGeometry& w, double A1, double A2) { return mass_coefficient(w, AnglePair(A1, A2)); }
@@ -92,15 +92,16 @@ Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1) {
                       w.cos_a2 * ckq + w.sin_a2 * skq);
     const double tA2 = a.sA2 / a.cA2;
     const double sec2A2 = 1.0 / sq(a.cA2);
-    const double lever = a.vertical_lever();
+    const double L = a.lever_times_sin();
     const double ratio_sin2 = sq(w.sin_a2 / w.sin_a1);
     const double cosratio = w.cos_a1 / w.cos_a2;
 
     Eq11Coefficients c{};
     c.C_A = mass_coefficient(w, a);
+    // The m2 term of Eq. (11b), m2 sA1 {cA1 [1 - lever^2] + sA1 lever (-k cot A1 sec^2 A2 + csc^2 A1 tan A2)},
+    // rearranged with L = sA1 lever so that nothing divides by sA1: m2 [sA1 cA1 - L (2 cA1 - tA2 sA1) - k cA1 sec^2 A2 L].
     c.C_S = a.cA1 * ratio_sin2 * sec2A2 * (a.sA1 - a.cA1 * w.k * tA2) * w.I2 / sq(w.R1) +
-            w.m2 * a.sA1 *
-                (a.cA1 * (1.0 - sq(lever)) + a.sA1 * lever * (-w.k * (a.cA1 / a.sA1) * sec2A2 + tA2 / sq(a.sA1)));
+            w.m2 * (a.sA1 * a.cA1 - L * (2.0 * a.cA1 - tA2 * a.sA1) - w.k * a.cA1 * sec2A2 * L);
     c.C_H = (w.m1 + 2.0 * w.m2) * a.cA1 - w.m2 * cosratio * a.cA2;
     c.C_V = (w.m1 + 2.0 * w.m2) * a.sA1 + w.m2 * cosratio * a.sA2;
     c.C_N = 2.0 * a.sA1 + w.tan_a2 * w.cos_a1 * (ckq - 2.0 * skq / w.tan_a2);

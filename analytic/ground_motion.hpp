@@ -13,6 +13,9 @@ namespace vssw {
 
 enum class AccelUnits { g, m_per_s2, cm_per_s2 };
 
+// Standard gravity: what "in g" means for records, --pga and --amplitude. A wall's own g is a separate input.
+constexpr double kStandardGravity = 9.80665;  // [m/s^2]
+
 // Parses "g", "m/s2" (also "m/s^2"), "cm/s2" (also "cm/s^2", "gal"); throws InputError naming the text otherwise.
 AccelUnits parse_units(const std::string& text);
 // Factor that converts a value in `units` to m/s^2, with standard gravity g0 = 9.80665 for "g".

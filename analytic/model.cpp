@@ -105,7 +105,8 @@ public:
     }
     double load_height(double q) const override {
         const Angles g = angles(q);
-        return top_centre_height(g.ca, g.spsi * w_.cos_a2 - g.cpsi * w_.sin_a2, g.cpsi * w_.cos_a2 + g.spsi * w_.sin_a2);
+        const double s2 = g.spsi * w_.cos_a2 - g.cpsi * w_.sin_a2, c2 = g.cpsi * w_.cos_a2 + g.spsi * w_.sin_a2;
+        return top_centre_height(g.ca, s2, c2);
     }
     std::string name() const override { return "vssw/exact"; }
 };

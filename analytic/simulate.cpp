@@ -17,8 +17,13 @@ using State = Vec<3>;  // theta1, theta1', work done by the ground motion
 // Sub-intervals in which a step's continuous extension is searched for the first sign change of an event function
 // (the first step after an impact is capped to the predicted flight, so its first point is still in flight).
 constexpr int kScanPoints = 4;
-// Largest scan interval at rest for analytic ground motions (records are scanned sample by sample).
+// Largest scan interval at rest for analytic ground motions (records are scanned sample by sample): 1 ms, and at most
+// a thousandth of the signal's duration so that a short pulse's time above the threshold is not stepped over.
 constexpr double kRestScanStep = 1e-3;  // [s]
+constexpr double kRestScanFraction = 1e-3;
+// Runs longer than this, or with more output samples, are refused as bad input rather than left to run for hours.
+constexpr double kMaxEndTime = 1e7;      // [s]
+constexpr double kMaxOutputSamples = 1e8;
 constexpr int kMaxNewtonIterations = 8;
 constexpr int kMaxBisections = 400;  // bound on root-search iterations; reached only by a broken bracket
 constexpr long kMaxSteps = 50'000'000;  // a run needing more is reported as a failure, not left to spin
@@ -75,11 +80,19 @@ public:
           collapse_(model.collapse_angle()),
           v_ref_(model.reference_energy()),
           motion_end_(std::max(ah.duration(), av.duration())),
+          rest_scan_step_(std::min(scan_step(ah), scan_step(av))),
           integrator_(Rhs{this}, o.step, State{alpha_, model.reference_velocity(), v_ref_}) {}
 
     SimulationResult run(InitialState init);
 
 private:
+    // An analytic, non-zero signal can cross the threshold between its breakpoints: scan it finely. Records are
+    // linear between samples (their breakpoints), so the sample grid is scan enough.
+    static double scan_step(const GroundMotion& m) {
+        if (m.is_zero() || !m.sample_times().empty()) return INFINITY;
+        return std::min(kRestScanStep, kRestScanFraction * m.duration());
+    }
+
     struct Rhs {
         const Simulator* sim;
         State operator()(double t, const State& y) const { return sim->derivative(t, y); }
@@ -154,7 +167,7 @@ private:
     const GroundMotion& av_;
     SimulationOptions opt_;
     ModelTerms rest_terms_;
-    double e_, alpha_, collapse_, v_ref_, motion_end_;
+    double e_, alpha_, collapse_, v_ref_, motion_end_, rest_scan_step_;
     Dop853<3, Rhs> integrator_;
 
     int side_ = 1;
@@ -191,7 +204,7 @@ bool Simulator::rest_phase(double& t, State& y) {
             return false;
         }
         double next = std::min({next_breakpoint(scan), opt_.t_end, motion_end_});
-        if (ah_.sample_times().empty() || av_.sample_times().empty()) next = std::min(next, scan + kRestScanStep);
+        next = std::min(next, scan + rest_scan_step_);
         if (tipping_margin(next) > 0.0) {
             // Narrow to the crossing, keeping the right end, where the margin is positive, so the flight starts.
             double lo = scan, hi = next;
@@ -259,13 +272,13 @@ Event Simulator::rocking_phase(double& t, State& y) {
         const double stop = std::min(next_breakpoint(t), opt_.t_end);
         double h = std::min(h_, stop - t);
         const double err = integrator_.step(t, y, dy, h, step);
-        if (!std::isfinite(step.y1[0]) || !std::isfinite(step.y1[1]))
-            throw std::runtime_error(fmt::format("the state became non-finite at t = {} s", t));
-        if (!(err <= 1.0) && !integrator_.fixed_step()) {  // a NaN error norm is a rejection too
+        // A trial step that blew up (non-finite state or error) is rejected like any other, with a quarter step.
+        const bool finite = std::isfinite(step.y1[0]) && std::isfinite(step.y1[1]) && std::isfinite(err);
+        if (!finite || (err > 1.0 && !integrator_.fixed_step())) {
             ++out_.rejected_steps;
-            h_ = integrator_.next_step(h, err);
+            h_ = finite ? integrator_.next_step(h, err) : 0.25 * h;
             if (h_ <= opt_.step.min_step)
-                throw std::runtime_error(fmt::format("step size underflow at t = {} s", t));
+                throw std::runtime_error(fmt::format("step size underflow at t = {} s (state {}, {})", t, y[0], y[1]));
             continue;
         }
         const double h_next = integrator_.next_step(h, err);
@@ -283,6 +296,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
             // The first sub-interval of the continuous extension where the event function changes sign.
             double lo = t, hi = t + h;
             double prev = starts_at_zero ? 1.0 : (ev == Event::impact ? side_ * y[0] : collapse_ - side_ * y[0]);
+            int first_change = 0;
             for (int k = 1; k <= kScanPoints; ++k) {
                 const double tau = t + h * k / kScanPoints;
                 const double th = k == kScanPoints ? step.y1[0] : step.at(tau)[0];
@@ -290,9 +304,21 @@ Event Simulator::rocking_phase(double& t, State& y) {
                 if (prev > 0.0 && g <= 0.0) {
                     lo = tau - h / kScanPoints;
                     hi = tau;
+                    first_change = k;
                     break;
                 }
                 prev = g;
+            }
+            // A flight from theta1 = 0 that is over before the scan's first point leaves no point in the air to
+            // bracket from (the bracket would close onto the start): retry with a quarter step until one is seen.
+            if (starts_at_zero && first_change == 1) {
+                ++out_.rejected_steps;
+                h_ = 0.25 * h;
+                if (h_ <= opt_.step.min_step)
+                    throw std::runtime_error(fmt::format("a flight from rest at t = {} s is shorter than the "
+                                                         "smallest step",
+                                                         t));
+                continue;
             }
             shrink_bracket([&](double tau) {
                 const double th = step.at(tau)[0];
@@ -351,12 +377,7 @@ SimulationResult Simulator::run(InitialState init) {
     require(std::isfinite(init.theta_dot), "initial angular velocity", "finite", init.theta_dot);
     require(std::abs(init.theta) < collapse_, "|initial rotation| (rad)",
             fmt::format("below the collapse angle {} rad", collapse_), init.theta);
-    require(std::isfinite(opt_.t_end) && opt_.t_end > 0.0, "end time", "a positive finite number", opt_.t_end);
-    // Tighter than ~1e-15 the error estimate is round-off; looser than 1e-2 the events are not worth locating.
-    require(opt_.step.rtol >= 1e-15 && opt_.step.rtol <= 1e-2, "relative tolerance", "in [1e-15, 1e-2]",
-            opt_.step.rtol);
-    require(std::isfinite(opt_.output_dt) && opt_.output_dt >= 0.0, "output interval", "a finite number >= 0",
-            opt_.output_dt);
+    validate(opt_);
 
     double t = 0.0;
     State y{init.theta, init.theta_dot, 0.0};
@@ -426,6 +447,21 @@ SimulationResult Simulator::run(InitialState init) {
 
 }  // namespace
 
+void validate(const SimulationOptions& options) {
+    require(std::isfinite(options.t_end) && options.t_end > 0.0 && options.t_end <= kMaxEndTime, "end time (s)",
+            fmt::format("positive and at most {:g} s", kMaxEndTime), options.t_end);
+    // Tighter than ~1e-15 the error estimate is round-off; looser than 1e-2 the events are not worth locating.
+    require(options.step.rtol >= 1e-15 && options.step.rtol <= 1e-2, "relative tolerance", "in [1e-15, 1e-2]",
+            options.step.rtol);
+    require(std::isfinite(options.output_dt) && options.output_dt >= 0.0, "output interval", "a finite number >= 0",
+            options.output_dt);
+    const bool bounded_output =
+        options.output_dt == 0.0 || !options.keep_samples || options.t_end / options.output_dt <= kMaxOutputSamples;
+    require(bounded_output, "output interval (s)",
+            fmt::format("at least end time / {:g} = {:g} s", kMaxOutputSamples, options.t_end / kMaxOutputSamples),
+            options.output_dt);
+}
+
 SimulationResult simulate(const RockingModel& model, const GroundMotion& horizontal, const GroundMotion& vertical,
                           InitialState initial, const SimulationOptions& options) {
     Simulator sim(model, horizontal, vertical, options);
@@ -434,6 +470,13 @@ SimulationResult simulate(const RockingModel& model, const GroundMotion& horizon
 
 SimulationResult free_vibration(const RockingModel& model, double theta0, SimulationOptions options) {
     require(theta0 != 0.0, "initial rotation of a free vibration", "non-zero", theta0);
+    const int side = theta0 < 0.0 ? -1 : 1;
+    if (std::abs(theta0) < model.collapse_angle() &&
+        std::abs(model.acceleration(side, theta0, 0.0, 0.0, 0.0)) <=
+            1e-12 * std::abs(model.acceleration(side, 0.5 * theta0, 0.0, 0.0, 0.0)))
+        throw InputError(fmt::format("initial rotation {} rad is an equilibrium of the {} model: released there the "
+                                     "wall would neither rock nor fall",
+                                     theta0, model.name()));
     options.stop_at_rest = true;
     if (options.t_end == SimulationOptions{}.t_end) options.t_end = 1e4;  // stops at rest long before
     const GroundMotion none = GroundMotion::none();

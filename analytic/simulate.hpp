@@ -69,10 +69,16 @@ struct SimulationResult {
     long steps = 0, rejected_steps = 0;
 };
 
+// Throws InputError naming the first bad option (end time, tolerance, output interval); simulate() calls it first.
+void validate(const SimulationOptions& options);
+
 SimulationResult simulate(const RockingModel& model, const GroundMotion& horizontal, const GroundMotion& vertical,
                           InitialState initial, const SimulationOptions& options);
 
-// Free vibration from rest at theta0 (no ground motion), run until the wall stops or overturns.
+// Free vibration from rest at theta0 (no ground motion), run until the wall stops or overturns. An options.t_end left
+// at its default is raised to 1e4 s (the wall stops or falls long before); any other value is kept. A release at
+// an equilibrium (where theta1'' = 0, e.g. theta0 = alpha1 with exact kinematics and N = 0) is bad input: the wall
+// would neither rock nor fall.
 SimulationResult free_vibration(const RockingModel& model, double theta0, SimulationOptions options = {});
 
 }  // namespace vssw

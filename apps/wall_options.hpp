@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
 #include "analytic/wall.hpp"
 #include "apps/json.hpp"
@@ -16,9 +17,8 @@ class App;
 
 namespace vssw::cli {
 
-// Standard gravity: converts accelerations given "in g" (records, --pga, --amplitude) to m/s^2, as the record
-// readers do. The wall's own gravity (--g) is a separate input.
-constexpr double kStandardGravity = 9.80665;
+// Standard gravity (kStandardGravity, analytic/ground_motion.hpp) converts accelerations given in g; --g is the wall's.
+using vssw::kStandardGravity;
 
 struct WallOptions {
     double height = 0.0;          // full height 2h [m]

@@ -43,6 +43,27 @@ TEST(Model, PaperKinematicsDriftOffTheRollerAsRotationGrows) {
 
 class ExactLagrangian : public ::testing::TestWithParam<double> {};
 
+// Sum of m_i x_Gi from Eq. (1a-b) with theta2 given: the horizontal lever X(q) is its derivative.
+double horizontal_moment(const VsswGeometry& w, double q, double theta2) {
+    const double x1 = -w.R1 * std::sin(w.alpha1 - q);
+    const double x2 = -2.0 * w.R1 * std::sin(w.alpha1 - q) + w.R2 * std::sin(w.alpha2 + theta2);
+    return w.m1 * x1 + w.m2 * x2;
+}
+
+TEST_P(ExactLagrangian, HorizontalLeverIsTheDerivativeOfTheCentresOfMassPositions) {
+    // X enters only through the ground's force, whose work uses the same X, so the energy balance cannot check it.
+    const VsswGeometry w = make_vssw(4.0, 0.4, GetParam(), 0.2);
+    const auto exact = make_vssw_model(w, Kinematics::exact), paper = make_vssw_model(w, Kinematics::paper);
+    for (double q : {0.01, 0.05, 0.1, 0.2}) {
+        const double dx_exact =
+            central_difference([&](double x) { return horizontal_moment(w, x, *eq2_theta2_exact(w, x)); }, q);
+        const double dx_paper =
+            central_difference([&](double x) { return horizontal_moment(w, x, eq3_theta2_linear(w, x)); }, q);
+        EXPECT_NEAR(exact->terms(q).X, dx_exact, kFiniteDifferenceRel * exact->terms(q).M);
+        EXPECT_NEAR(paper->terms(q).X, dx_paper, kFiniteDifferenceRel * paper->terms(q).M);
+    }
+}
+
 TEST_P(ExactLagrangian, CoriolisAndLeversAreDerivativesOfMassPotentialAndLoadHeight) {
     const VsswGeometry w = make_vssw(4.0, 0.4, GetParam(), 0.2);
     const auto m = make_vssw_model(w, Kinematics::exact);

@@ -41,13 +41,6 @@ TEST(Simulate, FreeVibrationConservesEnergyBetweenImpactsAndDissipatesAllOfItAtI
     }
 }
 
-TEST(Simulate, EveryImpactAppliesTheRestitutionCoefficient) {
-    const auto m = make_vssw_model(fig6_vssw(), Kinematics::exact);
-    const SimulationResult r = free_vibration(*m, 0.9 * fig6_vssw().alpha1);
-    ASSERT_GT(r.impacts.size(), 10u);
-    for (const Impact& i : r.impacts) EXPECT_NEAR(i.theta_dot_after / i.theta_dot_before, m->restitution(), kRoundoff);
-}
-
 TEST(Simulate, PeaksEitherSideOfAnImpactGiveTheRestitutionBack) {
     // Between impacts energy is conserved, so the peaks either side of an impact give e back by energy.
     constexpr double kPeakBased = 1e-7;  // peaks located on the dense output at rtol 1e-10
@@ -100,12 +93,13 @@ TEST(Simulate, MirrorImageReleaseGivesMirrorImageMotion) {
 
 TEST(Simulate, ReversedRecordGivesMirrorImageResponse) {
     const auto m = make_vssw_model(make_vssw(3.05, 0.143, 0.6, 0.1), Kinematics::exact);
-    const GroundMotion record = read_record(kRinaldi).scaled(0.5);
+    const GroundMotion record = read_record(kRinaldi).scaled(0.25);  // rocks through the whole record, no fall
     SimulationOptions o;
     o.t_end = 25.0;
     const SimulationResult a = simulate(*m, record, GroundMotion::none(), {}, o);
     const SimulationResult b = simulate(*m, record.scaled(-1.0), GroundMotion::none(), {}, o);
     ASSERT_GT(a.impacts.size(), 0u);
+    ASSERT_FALSE(a.overturned);
     ASSERT_EQ(a.samples.size(), b.samples.size());
     for (std::size_t i = 0; i < a.samples.size(); ++i) EXPECT_NEAR(a.samples[i].theta, -b.samples[i].theta, 1e-12);
     EXPECT_LT(a.energy_balance_error, kEnergyBalance);
@@ -242,8 +236,8 @@ TEST(Simulate, StrongPulseOverturnsTheWall) {
 }
 
 TEST(Simulate, EnergyBalanceClosesUnderTheRinaldiRecordWithOverburdenAndVerticalShaking) {
-    const GroundMotion record = read_record(kRinaldi);
-    const GroundMotion vertical = harmonic(0.2 * kGravityInG, 0.3, 15.0);
+    const GroundMotion record = read_record(kRinaldi).scaled(0.25);  // rocks through the whole record, no fall
+    const GroundMotion vertical = harmonic(0.05 * kGravityInG, 0.3, 15.0);  // with the 0.25 record: ~100 impacts, no fall
     for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
         const auto m = make_vssw_model(make_vssw(3.05, 0.143, 0.6, 0.1), k);
         SimulationOptions o;
@@ -251,7 +245,17 @@ TEST(Simulate, EnergyBalanceClosesUnderTheRinaldiRecordWithOverburdenAndVertical
         o.output_dt = 0.01;
         const SimulationResult r = simulate(*m, record, vertical, {}, o);
         EXPECT_GT(r.impacts.size(), 3u);
+        ASSERT_FALSE(r.overturned);
         EXPECT_LT(r.energy_balance_error, kEnergyBalance);
+        // The same balance on the output grid, relative to V_r alone (the reported error divides by the largest
+        // energy in play, which under a record can be many V_r).
+        const Sample& s0 = r.samples.front();
+        const double e0 = s0.kinetic + s0.weight_potential - s0.work_overburden - s0.work_ground + s0.dissipated;
+        double worst = 0.0;
+        for (const Sample& s : r.samples)
+            worst = std::max(worst, std::abs(s.kinetic + s.weight_potential - s.work_overburden - s.work_ground +
+                                             s.dissipated - e0));
+        EXPECT_LT(worst / m->reference_energy(), kEnergyBalance);
         // the output grid is honoured
         ASSERT_GT(r.samples.size(), 100u);
         EXPECT_NEAR(r.samples[100].t, 1.0, 1e-12);
