@@ -6,6 +6,9 @@
 #ifdef VSSW_HAVE_BULLET
 #include "multibody/bullet/bullet_engine.hpp"
 #endif
+#ifdef VSSW_HAVE_ODE
+#include "multibody/ode/ode_engine.hpp"
+#endif
 
 namespace vssw::multibody {
 
@@ -14,6 +17,9 @@ std::vector<std::string> available_engines() {
 #ifdef VSSW_HAVE_BULLET
     names.push_back("bullet");
 #endif
+#ifdef VSSW_HAVE_ODE
+    names.push_back("ode");
+#endif
     return names;
 }
 
@@ -21,6 +27,9 @@ std::unique_ptr<Engine> make_engine(const std::string& name) {
     if (name == "analytic") return std::make_unique<AnalyticEngine>();
 #ifdef VSSW_HAVE_BULLET
     if (name == "bullet") return make_bullet_engine();
+#endif
+#ifdef VSSW_HAVE_ODE
+    if (name == "ode") return make_ode_engine();
 #endif
     throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
                                  fmt::join(available_engines(), ", ")));

@@ -15,6 +15,7 @@ packages=(
   libfmt-dev nlohmann-json3-dev libcli11-dev   # formatting, JSON output, command line
   libgtest-dev libbenchmark-dev      # tests and benchmarks
   libbullet-dev                      # the Bullet adapter (pkg-config bullet-float64)
+  libode-dev                         # the ODE adapter (pkg-config ode, double precision)
 )
 
 missing=()

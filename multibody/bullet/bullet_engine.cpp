@@ -30,6 +30,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "multibody/run_monitor.hpp"
 #include "multibody/scene_geometry.hpp"
 
 namespace vssw::multibody {
@@ -284,9 +285,6 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     const double g = scene.gravity();
     const double N = scene.vssw ? scene.vssw->N * kDepth : scene.parapet->N * kDepth;
     const double h_total = s.h_lower + s.h_upper;
-    const double collapse = collapse_angle(scene);
-    const double v_ref = reference_velocity(scene), alpha = scene.alpha();
-    const double motion_end = ex.horizontal.duration();
     btRigidBody& lower = w.lower();
     btRigidBody* upper = w.upper();
     btRigidBody& top_body = upper ? *upper : lower;
@@ -326,10 +324,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     const long n_steps = std::lround(ex.t_end / dt);
     double x_g = 0.0, v_g = 0.0;  // the ground's displacement and velocity (moving supports)
     record(0.0);
-    int quiet_steps = 0;
-    // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking ended
-    // (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped rocking).
-    const int quiet_needed = std::max(1, static_cast<int>(std::lround(0.1 / dt)));
+    RunMonitor monitor("Bullet", scene, ex, dt, knobs.slide_limit, knobs.penetration_limit);
     for (long i = 1; i <= n_steps; ++i) {
         const double t0 = static_cast<double>(i - 1) * dt;
         // Pseudo-force of the ground motion at the step's midpoint (its impulse over the step to second order).
@@ -353,42 +348,15 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         const double t = static_cast<double>(i) * dt;
         const double theta = clockwise_angle(lower);
         const double rate = -lower.getAngularVelocity().z();
-        if (!std::isfinite(theta) || !std::isfinite(rate))
-            throw EngineFailure(fmt::format("Bullet: the state became NaN at t = {:.6g} s", t));
-        // A rocking wall never turns a hundred times faster than the rate that carries it from rest to alpha.
-        if (std::abs(rate) > 100.0 * v_ref)
-            throw EngineFailure(fmt::format("Bullet: blow-up, theta1' = {:.3g} rad/s at t = {:.6g} s", rate, t));
-        // No sliding: while rocking the pivot corner stays put, at rest both do; the smaller drift of the two base
-        // corners from their places covers both cases.
         const btVector3 right = lower.getWorldTransform() * btVector3(s.b, -s.h_lower, 0);
         const btVector3 left = lower.getWorldTransform() * btVector3(-s.b, -s.h_lower, 0);
-        const double rx = right.x() - x_g - s.b, lx = left.x() - x_g + s.b;  // relative to the (moving) ground
-        const double drift = std::abs(rx) < std::abs(lx) ? rx : lx;
-        if (std::abs(drift) > knobs.slide_limit * s.b)
-            throw EngineFailure(fmt::format("Bullet: the wall slid {:.3g} m at its base at t = {:.6g} s (friction {})",
-                                            drift, t, scene.friction));
-        const double sink = -std::min(right.y(), left.y());
-        if (sink > knobs.penetration_limit * s.b)
-            throw EngineFailure(fmt::format("Bullet: the wall sank {:.3g} m into the ground at t = {:.6g} s", sink, t));
-        if (i % every == 0 || i == n_steps) record(t);
-        if (ex.stop_angle > 0.0 && std::abs(theta) >= ex.stop_angle) {
-            if (i % every != 0 && i != n_steps) record(t);
-            return out;
-        }
-        if (std::abs(theta) >= collapse) {
-            if (i % every != 0 && i != n_steps) record(t);
-            out.overturned = true;
-            return out;
-        }
-        if (ex.stop_at_rest && t > motion_end) {
-            const bool quiet = std::abs(theta) < 1e-3 * alpha && std::abs(rate) < 1e-3 * v_ref;
-            quiet_steps = quiet ? quiet_steps + 1 : 0;
-            if (quiet_steps >= quiet_needed) {
-                if (i % every != 0) record(t);
-                out.at_rest_at_end = true;
-                return out;
-            }
-        }
+        const auto verdict =  // corners relative to the (moving) ground
+            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()});
+        if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
+        if (verdict == RunMonitor::Verdict::go_on) continue;
+        out.overturned = verdict == RunMonitor::Verdict::overturned;
+        out.at_rest_at_end = verdict == RunMonitor::Verdict::at_rest;
+        return out;
     }
     return out;
 }

@@ -1,0 +1,56 @@
+#include "multibody/run_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "multibody/scene_geometry.hpp"
+
+namespace vssw::multibody {
+
+RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt,
+                       double slide_limit, double penetration_limit)
+    : engine_(std::move(engine)),
+      b_(block_sizes(scene).b),
+      friction_(scene.friction),
+      collapse_(collapse_angle(scene)),
+      v_ref_(reference_velocity(scene)),
+      alpha_(scene.alpha()),
+      motion_end_(ex.horizontal.duration()),
+      stop_angle_(ex.stop_angle),
+      stop_at_rest_(ex.stop_at_rest),
+      slide_limit_(slide_limit),
+      penetration_limit_(penetration_limit),
+      // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
+      // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
+      quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))) {}
+
+RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const BaseCorners& c) {
+    if (!std::isfinite(theta) || !std::isfinite(rate))
+        throw EngineFailure(fmt::format("{}: the state became NaN at t = {:.6g} s", engine_, t));
+    // A rocking wall never turns a hundred times faster than the rate that carries it from rest to alpha.
+    if (std::abs(rate) > 100.0 * v_ref_)
+        throw EngineFailure(fmt::format("{}: blow-up, theta1' = {:.3g} rad/s at t = {:.6g} s", engine_, rate, t));
+    // No sliding: while rocking the pivot corner stays put, at rest both do; the smaller drift of the two base
+    // corners from their places covers both cases.
+    const double drift = std::abs(c.right_dx) < std::abs(c.left_dx) ? c.right_dx : c.left_dx;
+    if (std::abs(drift) > slide_limit_ * b_)
+        throw EngineFailure(fmt::format("{}: the wall slid {:.3g} m at its base at t = {:.6g} s (friction {})",
+                                        engine_, drift, t, friction_));
+    const double sink = -std::min(c.right_y, c.left_y);
+    if (sink > penetration_limit_ * b_)
+        throw EngineFailure(
+            fmt::format("{}: the wall sank {:.3g} m into the ground at t = {:.6g} s", engine_, sink, t));
+    if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
+    if (std::abs(theta) >= collapse_) return Verdict::overturned;
+    if (stop_at_rest_ && t > motion_end_) {
+        const bool quiet = std::abs(theta) < 1e-3 * alpha_ && std::abs(rate) < 1e-3 * v_ref_;
+        quiet_steps_ = quiet ? quiet_steps_ + 1 : 0;
+        if (quiet_steps_ >= quiet_needed_) return Verdict::at_rest;
+    }
+    return Verdict::go_on;
+}
+
+}  // namespace vssw::multibody
