@@ -144,6 +144,11 @@ double eq19_restitution(const VsswGeometry& w) {
     return num / den;
 }
 
+double restitution_whole_mechanism(const VsswGeometry& w) {
+    const double m0 = sq(w.R1) * mass_coefficient(w, w.alpha1, w.alpha2);
+    return 1.0 - 2.0 * sq(w.b) * (w.m1 + w.m2 * sq(2.0 + w.k)) / m0;
+}
+
 double eq21_A(const VsswGeometry& w) {
     const double cr = std::cos(w.alpha1) / std::cos(w.alpha2);
     return w.alpha1 * (w.m1 + w.m2 * (2.0 + cr * w.alpha2 / w.alpha1)) / (w.m1 + w.m2 * (2.0 + cr * w.k));

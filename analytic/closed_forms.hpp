@@ -57,6 +57,13 @@ double eq17_parapet_threshold(const ParapetGeometry& p);
 double eq18_threshold_ratio(double xi);
 // Eq. (19): coefficient of restitution of the VSSW (angular momentum about the new base pivot).
 double eq19_restitution(const VsswGeometry& w);
+// Not in the paper: the fully plastic impact in which every constraint of the new mechanism acts at once (new base
+// pivot, closing hinge and the roller on the new side), as a rigid-body engine resolves it: the projection of the
+// pre-impact velocities onto the post-impact mechanism in the kinetic-energy metric,
+//   e = 1 - 2 b^2 [m1 + m2 (2 + k)^2] / M(0),  M(0) = R1^2 C_A(0).
+// Eq. (19) is the same impact with the roller's impulse left out; for a single block both are Housner's e.
+double restitution_whole_mechanism(const VsswGeometry& w);
+
 // Eq. (21a-b): A [rad] and P [1/s] of the linearised free vibration, Eq. (20), N = 0.
 double eq21_A(const VsswGeometry& w);
 double eq21_P(const VsswGeometry& w);

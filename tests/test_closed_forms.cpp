@@ -99,6 +99,36 @@ TEST(ClosedForms, Eq19EqualsAngularMomentumBalance) {
     }
 }
 
+// The plastic impact with every constraint of the new mechanism: project the pre-impact velocity field (Eq. 5 at
+// theta1 = 0, both bodies: vx, vy, omega) onto the mirrored post-impact field in the kinetic-energy metric.
+double whole_mechanism_by_projection(const VsswGeometry& w) {
+    const double k = w.k;  // |d theta2/d theta1| at rest (Eq. 4)
+    // Before: unit rate about the pivot (+b, 0) (centred coordinates, the wall tipping to +x); omega counter-clockwise.
+    const std::array<double, 6> before = {w.R1 * std::cos(w.alpha1), w.R1 * std::sin(w.alpha1), -1.0,
+                                          w.R1 * std::cos(w.alpha1),
+                                          w.R1 * (2.0 * std::sin(w.alpha1) + std::cos(w.alpha1) * std::tan(w.alpha2)), k};
+    // After: the mirror image (x -> -x, omega -> -omega) turning the other way, per unit theta1' of the same sign.
+    const std::array<double, 6> after = {before[0], -before[1], before[2], before[3], -before[4], before[5]};
+    const std::array<double, 6> mass = {w.m1, w.m1, w.I1, w.m2, w.m2, w.I2};
+    double cross = 0.0, norm = 0.0;
+    for (int i = 0; i < 6; ++i) {
+        cross += after[i] * mass[i] * before[i];
+        norm += after[i] * mass[i] * after[i];
+    }
+    return cross / norm;
+}
+
+TEST(ClosedForms, WholeMechanismImpactIsTheProjectionOntoTheNewMechanism) {
+    for (double r : {0.46, 0.5, 0.6, 0.7, 0.8}) {
+        for (double thickness : {0.143, 0.356}) {
+            const VsswGeometry w = make_vssw(3.05, thickness, r);
+            EXPECT_NEAR(restitution_whole_mechanism(w), whole_mechanism_by_projection(w), kRoundoff);
+            // The roller's impulse only takes energy away: the whole mechanism dissipates more than Eq. (19) says.
+            EXPECT_LT(restitution_whole_mechanism(w), eq19_restitution(w));
+        }
+    }
+}
+
 TEST(ClosedForms, VsswDissipatesMoreThanParapetOfSameSize) {
     // Fig. 5b: e(VSSW) < e(PW) for equal b and h.
     for (double r : {0.5, 0.6, 0.7}) {
