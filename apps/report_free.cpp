@@ -1,5 +1,7 @@
 #include "apps/report_free.hpp"
 
+#include "analytic/closed_forms.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <ostream>
@@ -27,6 +29,17 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     require(std::isfinite(r) && r != 0.0, "theta0/alpha (--theta0)", "a finite nonzero number", r);
     ChosenModel chosen = choose_model(wall, model);
     const double alpha = chosen.model->reference_angle();
+    // Eq. (3) strays from the roller as theta1 grows: say so when the release is already past where the top corner
+    // leaves the roller line by 1 % of the thickness (README, "Where each kinematics stops being valid").
+    std::vector<std::string> warnings;
+    if (chosen.kinematics == Kinematics::paper) {
+        const auto limit = eq3_validity_limit(vssw_geometry(wall), 0.01);
+        if (limit && std::abs(r * alpha) > *limit)
+            warnings.push_back(fmt::format(
+                "paper kinematics past their validity: Eq. (3) moves the top 1 % of the thickness off the roller "
+                "from theta1 = {:.3g} alpha1 on; use --kinematics exact",
+                *limit / alpha));
+    }
 
     SimulationOptions options;
     options.step.rtol = request.rtol;
@@ -49,9 +62,9 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     if (!result.overturned && result.rest_times.empty())
         throw SimulationFailure(
             fmt::format("free vibration from --theta0 {} neither came to rest nor overturned "
-                        "(the run ended at t = {} s after {} impacts)",
-                        r, result.t_final, result.impacts.size()));
-    return {wall, chosen.kind, chosen.kinematics, r, alpha, std::move(result)};
+                        "(the run ended at t = {} s after {} impacts){}",
+                        r, result.t_final, result.impacts.size(), warnings.empty() ? "" : "; " + warnings.front()));
+    return {wall, chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings)};
 }
 
 Json to_json(const FreeRun& run) {
@@ -70,6 +83,7 @@ Json to_json(const FreeRun& run) {
     j["kinematics"] = run.kinematics ? Json(to_string(*run.kinematics)) : Json(nullptr);
     j["theta0"] = run.theta0_over_alpha;
     j["alpha"] = run.alpha;
+    j["warnings"] = run.warnings;
     j["impacts"] = std::move(impacts);
     j["peaks"] = std::move(peaks);
     j["peak_times"] = std::move(peak_times);
@@ -94,7 +108,9 @@ void print_free_summary(std::ostream& out, const FreeRun& run, const std::string
                            : to_string(run.kind))
         .text("release from rest at", fmt::format("theta0 = {} {} = {} rad", num(run.theta0_over_alpha), alpha_name,
                                                   num(run.theta0_over_alpha * run.alpha)))
-        .add("impacts", std::to_string(res.impacts.size()))
+        .add("impacts", std::to_string(res.impacts.size()));
+    for (const std::string& w : run.warnings) table.text("warning", w);
+    table
         .add("first impact (quarter period)", num_or(run.first_impact(), "none"), run.first_impact() ? "s" : "")
         .add("comes to rest at", num_or(run.stop_time(), "never"), run.stop_time() ? "s" : "");
     if (res.overturned)

@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <iosfwd>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "analytic/simulate.hpp"
 #include "apps/json.hpp"
@@ -22,6 +24,7 @@ struct FreeRun {
     std::optional<Kinematics> kinematics;
     double theta0_over_alpha, alpha;
     SimulationResult result;  // events only (no trajectory samples)
+    std::vector<std::string> warnings;  // e.g. the paper's kinematics used past where Eq. (3) holds
 
     std::optional<double> stop_time() const;     // the last rest time; none if the wall overturned
     std::optional<double> first_impact() const;  // the time to the first impact: a quarter period
