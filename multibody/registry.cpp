@@ -9,6 +9,9 @@
 #ifdef VSSW_HAVE_ODE
 #include "multibody/ode/ode_engine.hpp"
 #endif
+#ifdef VSSW_HAVE_SIMBODY
+#include "multibody/simbody/simbody_engine.hpp"
+#endif
 
 namespace vssw::multibody {
 
@@ -20,6 +23,9 @@ std::vector<std::string> available_engines() {
 #ifdef VSSW_HAVE_ODE
     names.push_back("ode");
 #endif
+#ifdef VSSW_HAVE_SIMBODY
+    names.push_back("simbody");
+#endif
     return names;
 }
 
@@ -30,6 +36,9 @@ std::unique_ptr<Engine> make_engine(const std::string& name) {
 #endif
 #ifdef VSSW_HAVE_ODE
     if (name == "ode") return make_ode_engine();
+#endif
+#ifdef VSSW_HAVE_SIMBODY
+    if (name == "simbody") return make_simbody_engine();
 #endif
     throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
                                  fmt::join(available_engines(), ", ")));

@@ -16,6 +16,7 @@ packages=(
   libgtest-dev libbenchmark-dev      # tests and benchmarks
   libbullet-dev                      # the Bullet adapter (pkg-config bullet-float64)
   libode-dev                         # the ODE adapter (pkg-config ode, double precision)
+  libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
 )
 
 missing=()

@@ -28,6 +28,10 @@ constexpr double kRestitutionTarget = 2e-2;  // issue 3: restitution within 2 %
 
 // Differences measured and explained in the README ("Bullet"), keyed by engine and test.
 const std::map<std::string, std::string> kKnownDifferences = {
+    {"simbody/MovingSupports",
+     "Simbody's SemiExplicitEuler stepper ignores prescribed motion, so the adapter refuses moving supports; a ground "
+     "on a heavy Slider whose speed was reset each step was tried and failed (the parapet sank 0.01 m in a threshold "
+     "trial; the VSSW's pulse peak came out 0.41 of the pseudo-forces'). Pseudo-forces only."},
     {"bullet/Fig6WholeMechanism",
      "Bullet's first-impact ratio on the Fig. 6 wall is 0.806 at 0.2 ms (0.82 at 1 ms and 0.05 ms) against the whole "
      "mechanism's plastic impact 0.825 (-2.3 %): its sequential-impulse solve of the simultaneous landing, hinge and "
@@ -49,6 +53,16 @@ const std::map<std::string, std::string> kKnownDifferences = {
      "Eq. (19) assumes no impulse at the roller (0.9508). Measured: 0.8256 / 0.8250 / 0.8247 at 1 / 0.2 / 0.05 ms "
      "(-13.2 %), converged in the step and unchanged by erp, margin, surface layer and solver; within 0.3 % of the "
      "mechanism's plastic impact on Table 1 #1, #7, #15 at xi 0, 0.1, 0.5 (multibody/ode/ode_engine.cpp)."},
+    {"simbody/VsswRestitution",
+     "Simbody's SemiExplicitEulerTimeStepper resolves the impact with every proximal contact at once (new pivot, "
+     "closing hinge and roller), restitution 0: the plastic impact of the whole new mechanism (0.8252 on the Fig. 6 "
+     "wall), not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured on the Fig. 6 wall: 0.8259 at "
+     "0.2 ms (constraint_tol 1e-6), 0.8265 at 1 ms (constraint_tol 1e-4, the default), -13.1 % against Eq. (19), "
+     "+0.1 % against the whole-mechanism impact (multibody/simbody/simbody_engine.cpp)."},
+    {"simbody/VsswMovingSupportsPeak",
+     "moving_supports = 1 is rejected by the Simbody adapter (InputError): the SemiExplicitEuler stepper ignores "
+     "prescribed motion, and a heavy Slider ground with its speed reset each step gave a peak response 0.41 of the "
+     "pseudo-forces' on this wall at 1 ms (measured); pseudo-forces are the only ground motion offered."},
 };
 
 class CrossEngine : public ::testing::TestWithParam<std::string> {
@@ -231,12 +245,16 @@ void expect_peaks_agree(const multibody::Engine& engine, const multibody::Engine
 
 TEST_P(CrossEngine, ParapetMovingSupportsAgreeWithPseudoForces) {
     if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
+    skip_if_known("MovingSupports");
+    if (IsSkipped()) return;
     expect_thresholds_agree(*engine_, settings_, fig6_parapet());
     expect_peaks_agree(*engine_, settings_, fig6_parapet(), 1.6, 0.5);
 }
 
 TEST_P(CrossEngine, VsswMovingSupportsGiveTheSameThreshold) {
     if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
+    skip_if_known("MovingSupports");
+    if (IsSkipped()) return;
     expect_thresholds_agree(*engine_, settings_, table1_specimen11(0.1));
 }
 
