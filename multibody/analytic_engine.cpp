@@ -1,5 +1,7 @@
 #include "multibody/analytic_engine.hpp"
 
+#include "multibody/settings_reader.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -29,17 +31,10 @@ struct Knobs {
 };
 
 Knobs read_knobs(const EngineSettings& settings) {
+    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol});
     Knobs k;
-    for (const auto& [name, value] : settings.knobs) {
-        if (name == kPaperKinematics) {
-            require(value == 0.0 || value == 1.0, "analytic knob paper_kinematics", "0 (exact) or 1 (paper)", value);
-            k.kinematics = value == 1.0 ? Kinematics::paper : Kinematics::exact;
-        } else if (name == kRtol) {
-            k.rtol = value;  // its range is checked by simulate()
-        } else {
-            throw InputError(fmt::format("unknown analytic knob '{}' (known: {}, {})", name, kPaperKinematics, kRtol));
-        }
-    }
+    k.kinematics = r.flag(kPaperKinematics) ? Kinematics::paper : Kinematics::exact;
+    k.rtol = r.number(kRtol, kDefaultRtol);  // its range is checked by simulate()
     return k;
 }
 

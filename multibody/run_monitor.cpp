@@ -53,4 +53,11 @@ RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const
     return Verdict::go_on;
 }
 
+bool RunMonitor::ends_run(Verdict verdict, Trajectory& out) {
+    if (verdict == Verdict::go_on) return false;
+    out.overturned = verdict == Verdict::overturned;
+    out.at_rest_at_end = verdict == Verdict::at_rest;
+    return true;
+}
+
 }  // namespace vssw::multibody

@@ -24,6 +24,8 @@ public:
 
     // Throws EngineFailure on a failure; otherwise says whether the run goes on.
     Verdict check(double t, double theta1, double theta1_dot, const BaseCorners& corners);
+    // True when the verdict ends the run, having marked the trajectory overturned or at rest as it says.
+    static bool ends_run(Verdict verdict, Trajectory& out);
 
 private:
     std::string engine_;

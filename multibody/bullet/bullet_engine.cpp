@@ -31,6 +31,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/run_monitor.hpp"
+#include "multibody/settings_reader.hpp"
 #include "multibody/scene_geometry.hpp"
 
 namespace vssw::multibody {
@@ -50,29 +51,13 @@ struct Knobs {
 };
 
 Knobs read_knobs(const EngineSettings& s) {
-    auto knob = [&](const char* name, double fallback) {
-        const auto it = s.knobs.find(name);
-        return it == s.knobs.end() ? fallback : it->second;
-    };
-    for (const auto& [name, value] : s.knobs) {
-        static const char* const known[] = {"erp", "slide_limit", "penetration_limit", "moving_supports"};
-        bool ok = false;
-        for (const char* k : known) ok = ok || name == k;
-        if (!ok)
-            throw InputError(
-                fmt::format("unknown Bullet setting '{}' (known: erp, slide_limit, penetration_limit, "
-                            "moving_supports)",
-                            name));
-        require(std::isfinite(value), "Bullet setting " + name, "finite", value);
-    }
+    const SettingsReader r("Bullet", s, {"erp", "slide_limit", "penetration_limit", "moving_supports"});
     Knobs k{};
     k.iterations = s.iterations > 0 ? s.iterations : 20;
-    k.erp = knob("erp", 0.2);
-    k.slide_limit = knob("slide_limit", 5e-2);  // the wall "walks" ~1e-2 b over many small impacts (measured)
-    k.penetration_limit = knob("penetration_limit", 5e-2);
-    const double moving = knob("moving_supports", 0.0);
-    require(moving == 0.0 || moving == 1.0, "Bullet setting moving_supports", "0 or 1", moving);
-    k.moving_supports = moving == 1.0;
+    k.erp = r.non_negative("erp", 0.2);
+    k.slide_limit = r.positive("slide_limit", 5e-2);  // the wall "walks" ~1e-2 b over many small impacts (measured)
+    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    k.moving_supports = r.flag("moving_supports");
     return k;
 }
 
@@ -353,10 +338,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         const auto verdict =  // corners relative to the (moving) ground
             monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()});
         if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
-        if (verdict == RunMonitor::Verdict::go_on) continue;
-        out.overturned = verdict == RunMonitor::Verdict::overturned;
-        out.at_rest_at_end = verdict == RunMonitor::Verdict::at_rest;
-        return out;
+        if (RunMonitor::ends_run(verdict, out)) return out;
     }
     return out;
 }

@@ -42,6 +42,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/run_monitor.hpp"
+#include "multibody/settings_reader.hpp"
 #include "multibody/scene_geometry.hpp"
 
 namespace vssw::multibody {
@@ -129,48 +130,22 @@ struct Knobs {
 };
 
 Knobs read_knobs(const EngineSettings& s) {
-    static const char* const known[] = {"erp",       "cfm",       "surface_layer", "max_correcting_vel",
-                                        "margin",    "quickstep", "slide_limit",   "penetration_limit",
-                                        "moving_supports"};
-    for (const auto& [name, value] : s.knobs) {
-        bool ok = false;
-        for (const char* k : known) ok = ok || name == k;
-        if (!ok)
-            throw InputError(fmt::format("unknown ODE setting '{}' (known: erp, cfm, surface_layer, "
-                                         "max_correcting_vel, margin, quickstep, slide_limit, penetration_limit, "
-                                         "moving_supports)",
-                                         name));
-        require(!std::isnan(value), "ODE setting " + name, "a number", value);
-    }
-    auto knob = [&](const char* name, double fallback) {
-        const auto it = s.knobs.find(name);
-        return it == s.knobs.end() ? fallback : it->second;
-    };
+    const SettingsReader r("ODE", s,
+                           {"erp", "cfm", "surface_layer", "max_correcting_vel", "margin", "quickstep", "slide_limit",
+                            "penetration_limit", "moving_supports"});
     Knobs k{};
-    k.erp = knob("erp", 0.2);
+    k.erp = r.number("erp", 0.2);
     require(k.erp >= 0.0 && k.erp <= 1.0, "ODE setting erp", "in [0, 1]", k.erp);
-    k.cfm = knob("cfm", 1e-10);
-    require(std::isfinite(k.cfm) && k.cfm >= 0.0, "ODE setting cfm (m/(N s))", "finite and >= 0", k.cfm);
-    k.surface_layer = knob("surface_layer", 0.0);
-    require(std::isfinite(k.surface_layer) && k.surface_layer >= 0.0, "ODE setting surface_layer (m)",
-            "finite and >= 0", k.surface_layer);
-    k.max_correcting_vel = knob("max_correcting_vel", INFINITY);
+    k.cfm = r.non_negative("cfm", 1e-10);
+    k.surface_layer = r.non_negative("surface_layer", 0.0);
+    k.max_correcting_vel = r.number("max_correcting_vel", INFINITY);
     require(k.max_correcting_vel > 0.0, "ODE setting max_correcting_vel (m/s)", "> 0 (inf: no cap)",
             k.max_correcting_vel);
-    k.margin = knob("margin", 1e-3);
-    require(std::isfinite(k.margin) && k.margin >= 0.0, "ODE setting margin (m)", "finite and >= 0", k.margin);
-    const double quick = knob("quickstep", 0.0);
-    require(quick == 0.0 || quick == 1.0, "ODE setting quickstep", "0 or 1", quick);
-    k.quickstep_iterations = quick == 1.0 ? (s.iterations > 0 ? s.iterations : 20) : 0;
-    k.slide_limit = knob("slide_limit", 5e-2);
-    require(std::isfinite(k.slide_limit) && k.slide_limit > 0.0, "ODE setting slide_limit (units of b)",
-            "finite and > 0", k.slide_limit);
-    k.penetration_limit = knob("penetration_limit", 5e-2);
-    require(std::isfinite(k.penetration_limit) && k.penetration_limit > 0.0,
-            "ODE setting penetration_limit (units of b)", "finite and > 0", k.penetration_limit);
-    const double moving = knob("moving_supports", 0.0);
-    require(moving == 0.0 || moving == 1.0, "ODE setting moving_supports", "0 or 1", moving);
-    k.moving_supports = moving == 1.0;
+    k.margin = r.non_negative("margin", 1e-3);
+    k.quickstep_iterations = r.flag("quickstep") ? (s.iterations > 0 ? s.iterations : 20) : 0;
+    k.slide_limit = r.positive("slide_limit", 5e-2);
+    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    k.moving_supports = r.flag("moving_supports");
     return k;
 }
 
@@ -521,10 +496,7 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
         const auto verdict =  // corners relative to the (moving) ground
             monitor.check(t, theta, rate, {right.x - x_g - s.b, right.y, left.x - x_g + s.b, left.y});
         if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
-        if (verdict == RunMonitor::Verdict::go_on) continue;
-        out.overturned = verdict == RunMonitor::Verdict::overturned;
-        out.at_rest_at_end = verdict == RunMonitor::Verdict::at_rest;
-        return out;
+        if (RunMonitor::ends_run(verdict, out)) return out;
     }
     return out;
 }

@@ -45,6 +45,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/run_monitor.hpp"
+#include "multibody/settings_reader.hpp"
 #include "multibody/scene_geometry.hpp"
 
 namespace vssw::multibody {
@@ -74,44 +75,18 @@ struct Knobs {
 };
 
 Knobs read_knobs(const EngineSettings& s) {
-    static const char* const known[] = {"constraint_tol", "projection",        "restitution",    "solver",
-                                        "both_guides",    "slide_limit",       "penetration_limit",
-                                        "moving_supports"};
-    for (const auto& [name, value] : s.knobs) {
-        bool ok = false;
-        for (const char* k : known) ok = ok || name == k;
-        if (!ok)
-            throw InputError(fmt::format("unknown Simbody setting '{}' (known: constraint_tol, projection, "
-                                         "restitution, solver, both_guides, slide_limit, penetration_limit, "
-                                         "moving_supports)",
-                                         name));
-        require(!std::isnan(value), "Simbody setting " + name, "a number", value);
-    }
-    auto knob = [&](const char* name, double fallback) {
-        const auto it = s.knobs.find(name);
-        return it == s.knobs.end() ? fallback : it->second;
-    };
-    auto choice = [&](const char* name, double fallback, int count) {
-        const double v = knob(name, fallback);
-        require(v >= 0.0 && v < count && v == std::floor(v), std::string("Simbody setting ") + name,
-                fmt::format("an integer in [0, {}]", count - 1), v);
-        return static_cast<int>(v);
-    };
+    const SettingsReader r("Simbody", s,
+                           {"constraint_tol", "projection", "restitution", "solver", "both_guides", "slide_limit",
+                            "penetration_limit", "moving_supports"});
     Knobs k{};
-    k.constraint_tol = knob("constraint_tol", 1e-4);
-    require(std::isfinite(k.constraint_tol) && k.constraint_tol > 0.0, "Simbody setting constraint_tol",
-            "finite and > 0", k.constraint_tol);
-    k.projection = choice("projection", 1.0, 3);
-    k.restitution = choice("restitution", 2.0, 3);
-    k.solver = choice("solver", 0.0, 2);
-    k.both_guides = choice("both_guides", 0.0, 2) == 1;
-    k.slide_limit = knob("slide_limit", 5e-2);
-    require(std::isfinite(k.slide_limit) && k.slide_limit > 0.0, "Simbody setting slide_limit (units of b)",
-            "finite and > 0", k.slide_limit);
-    k.penetration_limit = knob("penetration_limit", 5e-2);
-    require(std::isfinite(k.penetration_limit) && k.penetration_limit > 0.0,
-            "Simbody setting penetration_limit (units of b)", "finite and > 0", k.penetration_limit);
-    if (choice("moving_supports", 0.0, 2) == 1)
+    k.constraint_tol = r.positive("constraint_tol", 1e-4);
+    k.projection = r.choice("projection", 1, 3);
+    k.restitution = r.choice("restitution", 2, 3);
+    k.solver = r.choice("solver", 0, 2);
+    k.both_guides = r.flag("both_guides");
+    k.slide_limit = r.positive("slide_limit", 5e-2);
+    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    if (r.flag("moving_supports"))
         throw InputError(
             "Simbody setting moving_supports = 1 is not supported: the SemiExplicitEuler stepper ignores prescribed "
             "motion, and a ground carried by a heavy Slider whose speed is reset each step was tried and failed "
@@ -407,10 +382,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
         const Vec2 right = world_point(lower, now, s.b, -s.h_lower), left = world_point(lower, now, -s.b, -s.h_lower);
         const auto verdict = monitor.check(t, theta, rate, {right.x - s.b, right.y, left.x + s.b, left.y});
         if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
-        if (verdict == RunMonitor::Verdict::go_on) continue;
-        out.overturned = verdict == RunMonitor::Verdict::overturned;
-        out.at_rest_at_end = verdict == RunMonitor::Verdict::at_rest;
-        return out;
+        if (RunMonitor::ends_run(verdict, out)) return out;
     }
     return out;
 }

@@ -1,0 +1,51 @@
+#include "multibody/settings_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+
+namespace vssw::multibody {
+
+SettingsReader::SettingsReader(std::string engine, const EngineSettings& settings, std::vector<std::string> known)
+    : engine_(std::move(engine)), settings_(settings) {
+    for (const auto& [name, value] : settings.knobs) {
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            throw InputError(
+                fmt::format("unknown {} setting '{}' (known: {})", engine_, name, fmt::join(known, ", ")));
+        require(!std::isnan(value), label(name), "a number", value);
+    }
+}
+
+double SettingsReader::value(const std::string& name, double fallback) const {
+    const auto it = settings_.knobs.find(name);
+    return it == settings_.knobs.end() ? fallback : it->second;
+}
+
+double SettingsReader::number(const std::string& name, double fallback) const { return value(name, fallback); }
+
+double SettingsReader::positive(const std::string& name, double fallback) const {
+    const double v = value(name, fallback);
+    require(std::isfinite(v) && v > 0.0, label(name), "finite and > 0", v);
+    return v;
+}
+
+double SettingsReader::non_negative(const std::string& name, double fallback) const {
+    const double v = value(name, fallback);
+    require(std::isfinite(v) && v >= 0.0, label(name), "finite and >= 0", v);
+    return v;
+}
+
+int SettingsReader::choice(const std::string& name, int fallback, int count) const {
+    const double v = value(name, fallback);
+    require(v >= 0.0 && v < count && v == std::floor(v), label(name), fmt::format("a whole number in [0, {}]", count - 1),
+            v);
+    return static_cast<int>(v);
+}
+
+bool SettingsReader::flag(const std::string& name) const { return choice(name, 0, 2) == 1; }
+
+}  // namespace vssw::multibody

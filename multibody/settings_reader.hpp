@@ -1,0 +1,31 @@
+#pragma once
+// An adapter's named settings (EngineSettings::knobs), read in one way for every backend: a name the adapter does
+// not know is bad input that lists the known ones; a value is the one given or the adapter's default; the common
+// kinds of value are checked with a message naming the setting and the value.
+#include <string>
+#include <vector>
+
+#include "multibody/engine.hpp"
+
+namespace vssw::multibody {
+
+class SettingsReader {
+public:
+    // Throws InputError on an unknown name or a NaN value.
+    SettingsReader(std::string engine, const EngineSettings& settings, std::vector<std::string> known);
+
+    double number(const std::string& name, double fallback) const;        // any value but NaN (inf allowed)
+    double positive(const std::string& name, double fallback) const;      // finite and > 0
+    double non_negative(const std::string& name, double fallback) const;  // finite and >= 0
+    int choice(const std::string& name, int fallback, int count) const;   // a whole number in [0, count)
+    bool flag(const std::string& name) const;                             // 0 (the default) or 1
+
+private:
+    double value(const std::string& name, double fallback) const;
+    std::string label(const std::string& name) const { return engine_ + " setting " + name; }
+
+    std::string engine_;
+    const EngineSettings& settings_;
+};
+
+}  // namespace vssw::multibody
