@@ -108,7 +108,6 @@ public:
         return std::clamp(h * factor, c_.min_step, c_.max_step);
     }
     bool fixed_step() const { return c_.min_step >= c_.max_step; }
-    const StepControl& control() const { return c_; }
     Vec<N> rhs(double t, const Vec<N>& y) const { return f_(t, y); }
 
 private:

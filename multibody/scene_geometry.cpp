@@ -47,7 +47,6 @@ WallPose pose_at(const WallScene& scene, double theta1) {
 }
 
 double collapse_angle(const WallScene& scene) { return model_of(scene)->collapse_angle(); }
-double reference_energy(const WallScene& scene) { return model_of(scene)->reference_energy(); }
 double reference_velocity(const WallScene& scene) { return model_of(scene)->reference_velocity(); }
 
 }  // namespace vssw::multibody

@@ -29,8 +29,7 @@ WallPose pose_at(const WallScene& scene, double theta1);
 // Collapse angle of the scene (the analytic model's: Eq. 26 or pi/2 for a VSSW, pi/2 for a parapet).
 double collapse_angle(const WallScene& scene);
 
-// V_r and theta1'_r of the scene's analytic model (exact kinematics): the scales engines use for rest and failure checks.
-double reference_energy(const WallScene& scene);
+// theta1'_r of the scene's analytic model (exact kinematics): the scale engines use for rest and failure checks.
 double reference_velocity(const WallScene& scene);
 
 }  // namespace vssw::multibody
