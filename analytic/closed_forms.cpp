@@ -133,10 +133,18 @@ double eq18_threshold_ratio(double xi) {
     return 3.0 + 2.0 * std::sqrt(2.0 * xi / (1.0 + xi)) - 1.0 / (1.0 + xi);
 }
 
+// VSSW_MUTANT_EQ19_SIGN is defined only for the test program vssw_mutant_eq19 (tests/CMakeLists.txt): a core with a
+// wrong sign in Eq. (19), which `vssw check --bounds bounds/ci.toml` must catch. Never defined in vssw itself.
+#ifdef VSSW_MUTANT_EQ19_SIGN
+constexpr double kEq19I2Sign = +1.0;
+#else
+constexpr double kEq19I2Sign = -1.0;  // Eq. (19): m1 R1^2 + I1 - I2 k
+#endif
+
 double eq19_restitution(const VsswGeometry& w) {
     const double a1 = w.alpha1, a2 = w.alpha2;
     const double R1sq = sq(w.R1);
-    const double common = w.m1 * R1sq + w.I1 - w.I2 * w.k;
+    const double common = w.m1 * R1sq + w.I1 + kEq19I2Sign * w.I2 * w.k;
     const double num = common - 2.0 * w.m1 * R1sq * sq(std::sin(a1)) +
                        w.m2 * R1sq *
                            (2.0 + std::sin(a1) * std::cos(a1) / std::tan(a2) - sq(std::sin(a1)) * (4.0 + w.k));

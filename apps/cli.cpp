@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic/error.hpp"
+#include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/simulation_failure.hpp"
 
@@ -33,20 +34,28 @@ const Command* chosen_command(const std::vector<Command>& commands) {
     return nullptr;
 }
 
-std::string joined(const std::vector<std::string>& words) {
+std::string joined(const std::vector<std::string>& words, const char* separator = " ") {
     std::string text;
-    for (const std::string& w : words) text += (text.empty() ? "" : " ") + w;
+    for (const std::string& w : words) text += (text.empty() ? "" : separator) + w;
     return text;
+}
+
+// "wall, free, ..." for messages, from the list of commands (nothing to update when one is added).
+std::string command_names(const std::vector<Command>& commands) {
+    std::vector<std::string> names;
+    for (const Command& command : commands) names.push_back(command.app->get_name());
+    return joined(names, ", ");
 }
 
 // CLI11 checks required options before unknown ones, so a misspelt "--heigth 4" would be reported as "--height is
 // required". Arguments nobody recognised are the likelier mistake: name them first.
-std::string parse_error_message(const CLI::ParseError& e, const CLI::App& app, const Command* command) {
+std::string parse_error_message(const CLI::ParseError& e, const CLI::App& app, const std::vector<Command>& commands,
+                                const Command* command) {
     if (command != nullptr && !command->app->remaining().empty())
         return "unknown option or argument for '" + command->app->get_name() +
                "': " + joined(command->app->remaining());
     if (command == nullptr && !app.remaining().empty())
-        return "'" + joined(app.remaining()) + "' is not a command; the commands are wall, free, history, summary, compare";
+        return "'" + joined(app.remaining()) + "' is not a command; the commands are " + command_names(commands);
     return e.what();
 }
 
@@ -57,10 +66,18 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         "vssw"};
     app.require_subcommand(0, 1);  // one command at a time; none prints this help
     app.footer(
-        "Run 'vssw COMMAND --help' for a command's options, units and defaults. Exit codes: 0 success, 2 bad "
-        "input, 3 simulation failed.");
-    const std::vector<Command> commands = {add_wall_command(app), add_free_command(app), add_history_command(app),
-                                           add_summary_command(app), add_compare_command(app)};
+        "Run 'vssw COMMAND --help' for a command's options, units and defaults. Exit codes: 0 success, 1 a bound "
+        "out (vssw check), 2 bad input, 3 simulation failed.");
+    // One line per command; `vssw --help` lists them in this order.
+    const std::vector<Command> commands = {
+        add_wall_command(app),
+        add_free_command(app),
+        add_history_command(app),
+        add_summary_command(app),
+        add_compare_command(app),
+        add_report_command(app),
+        add_check_command(app),
+    };
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
@@ -69,14 +86,15 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
     } catch (const CLI::ParseError& e) {
         const Command* command = chosen_command(commands);
         const std::string help = command != nullptr ? "vssw " + command->app->get_name() + " --help" : "vssw --help";
-        return fail(err, "error", parse_error_message(e, app, command) + " (see '" + help + "')", kExitBadInput);
+        return fail(err, "error", parse_error_message(e, app, commands, command) + " (see '" + help + "')", kExitBadInput);
     }
     if (const Command* command = chosen_command(commands)) {
-        command->run(out);
+        if (command->run_with_err) command->run_with_err(out, err);
+        else command->run(out);
         return kExitOk;
     }
     out << app.help();
-    return fail(err, "error", "a command is required: wall, free, history, summary or compare", kExitBadInput);
+    return fail(err, "error", "a command is required: " + command_names(commands), kExitBadInput);
 }
 
 }  // namespace
@@ -86,6 +104,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
         return run_unguarded(argc, argv, out, err);
     } catch (const InputError& e) {
         return fail(err, "error", e.what(), kExitBadInput);
+    } catch (const BoundsViolated& e) {
+        return fail(err, "check failed", e.what(), kExitOutOfBounds);
     } catch (const SimulationFailure& e) {
         return fail(err, "simulation failed", e.what(), kExitSimulationFailed);
     } catch (const std::exception& e) {

@@ -6,6 +6,7 @@ namespace vssw::cli {
 
 // Exit codes: what a script calling `vssw` can rely on.
 constexpr int kExitOk = 0;
+constexpr int kExitOutOfBounds = 1;       // vssw check: a metric is out of its bounds
 constexpr int kExitBadInput = 2;          // bad option or value, unreadable record, no command given
 constexpr int kExitSimulationFailed = 3;  // the integrator gave up (e.g. step size underflow)
 

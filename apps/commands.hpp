@@ -13,6 +13,8 @@ namespace vssw::cli {
 struct Command {
     CLI::App* app;                               // the subcommand, to tell which one was chosen
     std::function<void(std::ostream& out)> run;  // throws InputError or SimulationFailure on failure
+    // Instead of `run`, for a command that also writes progress or warnings on the error stream (cli.hpp's `err`).
+    std::function<void(std::ostream& out, std::ostream& err)> run_with_err = {};
 };
 
 Command add_wall_command(CLI::App& root);
@@ -20,5 +22,7 @@ Command add_free_command(CLI::App& root);
 Command add_history_command(CLI::App& root);
 Command add_summary_command(CLI::App& root);
 Command add_compare_command(CLI::App& root);
+Command add_report_command(CLI::App& root);
+Command add_check_command(CLI::App& root);
 
 }  // namespace vssw::cli

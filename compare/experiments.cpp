@@ -153,12 +153,29 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
 
 MetricComparison compare_metric(double analytic, double engine) { return {analytic, engine, engine / analytic - 1.0}; }
 
+EngineSettings analytic_reference_settings(const EngineSettings& settings) {
+    EngineSettings s = multibody::AnalyticEngine().default_settings();  // exact kinematics
+    s.dt = output_interval(settings);
+    return s;
+}
+
+FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const EngineSettings& settings,
+                                                     const WallScene& scene, const FreeVibrationOptions& options) {
+    require_scene(scene);
+    const multibody::AnalyticEngine analytic;
+    FreeVibrationOptions free = options;
+    require(std::isfinite(free.r) && free.r > 0.0, "release angle r (units of alpha)", "a positive finite number",
+            free.r);
+    if (free.t_end <= 0.0) free.t_end = free_vibration_duration(scene, free.r * scene.alpha(), free.impacts);
+    return {run_free_vibration(analytic, analytic_reference_settings(settings), scene, free),
+            run_free_vibration(engine, settings, scene, free)};
+}
+
 EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
                                        double r, const ComparisonOptions& options) {
     require_scene(scene);
     const multibody::AnalyticEngine analytic;
-    EngineSettings analytic_settings = analytic.default_settings();  // exact kinematics
-    analytic_settings.dt = output_interval(settings);
+    const EngineSettings analytic_settings = analytic_reference_settings(settings);
 
     EngineComparison c{};
     c.analytic_threshold = find_threshold(analytic, analytic_settings, scene, options.threshold);
@@ -168,9 +185,9 @@ EngineComparison compare_with_analytic(const Engine& engine, const EngineSetting
     FreeVibrationOptions free = options.free;
     free.r = r;
     const double theta0 = r * scene.alpha();
-    if (free.t_end <= 0.0) free.t_end = free_vibration_duration(scene, theta0, free.impacts);
-    const FreeVibrationResult a = run_free_vibration(analytic, analytic_settings, scene, free);
-    const FreeVibrationResult e = run_free_vibration(engine, settings, scene, free);
+    const FreeVibrationComparison runs = free_vibration_with_analytic(engine, settings, scene, free);
+    const FreeVibrationResult& a = runs.analytic;
+    const FreeVibrationResult& e = runs.engine;
     c.period = compare_metric(a.period.value_or(kNaN), e.period.value_or(kNaN));
     c.restitution = compare_metric(a.restitution.value_or(kNaN), e.restitution.value_or(kNaN));
     auto first_amplitude = [](const FreeVibrationResult& f) {

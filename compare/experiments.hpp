@@ -120,6 +120,19 @@ struct EngineComparison {
     int analytic_impacts, engine_impacts;  // impacts in the free vibration runs
 };
 
+// The analytic side of a comparison with an engine run at `settings`: AnalyticEngine's defaults (exact kinematics),
+// its output sampled at the engine's sampling (settings.sample_dt, else settings.dt), so that the metrics' sampling
+// error is the same on both sides.
+EngineSettings analytic_reference_settings(const EngineSettings& settings);
+
+// The free vibrations of a comparison: the analytic model (analytic_reference_settings) and the engine, released at
+// options.r alpha, both run for the same time (options.t_end, or free_vibration_duration when 0).
+struct FreeVibrationComparison {
+    FreeVibrationResult analytic, engine;
+};
+FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const EngineSettings& settings,
+                                                     const WallScene& scene, const FreeVibrationOptions& options);
+
 // The engine against AnalyticEngine (exact kinematics), both measured by the code above. The analytic side is
 // sampled at the engine's sampling (settings.sample_dt, else settings.dt) so that the metrics' sampling error is the
 // same on both sides, and both free vibrations run for the same time.

@@ -81,6 +81,10 @@ public:
     // Throws EngineFailure when the run fails; InputError on a bad scene or setting.
     virtual Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                                 const EngineSettings& settings) const = 0;
+    // Whether simulate() may run on several threads at once (each call with its own scene). false for a library
+    // with process-wide state that is not re-entrant (ODE): callers running cases in parallel (compare/suite.hpp)
+    // then run that engine's simulations one at a time, beside other engines' ones.
+    virtual bool runs_concurrently() const { return true; }
 };
 
 // Backends compiled into this build ("analytic" always; "bullet", ... when found at configure time).

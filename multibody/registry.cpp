@@ -25,6 +25,7 @@ std::vector<std::string> available_engines() {
 #endif
 #ifdef VSSW_HAVE_SIMBODY
     names.push_back("simbody");
+    names.push_back("simbody-rigid");
 #endif
     return names;
 }
@@ -39,6 +40,7 @@ std::unique_ptr<Engine> make_engine(const std::string& name) {
 #endif
 #ifdef VSSW_HAVE_SIMBODY
     if (name == "simbody") return make_simbody_engine();
+    if (name == "simbody-rigid") return make_simbody_rigid_engine();
 #endif
     throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
                                  fmt::join(available_engines(), ", ")));

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian machine (run as root):
-#   bash scripts/setup.sh run    install what is missing, build into build/, run the main job (vssw summary)
+#   bash scripts/setup.sh run    install what is missing, build into build/, run the main job (vssw summary, then
+#                                the validation report of the default suite into report/)
 #   bash scripts/setup.sh test   install what is missing, build into build/, run the whole test suite
 #   bash scripts/setup.sh build  install and build only
 # Only Debian packages; apt-get runs only when one of them is missing.
@@ -17,6 +18,8 @@ packages=(
   libbullet-dev                      # the Bullet adapter (pkg-config bullet-float64)
   libode-dev                         # the ODE adapter (pkg-config ode, double precision)
   libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
+  libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
+  gnuplot-nox                        # the plots of `vssw report` (SVG; without it the report is written unplotted)
 )
 
 missing=()
@@ -36,7 +39,12 @@ cmake -S "$here" -B "$here/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$here/build" -j "$jobs"
 
 case "$mode" in
-  run) "$here/build/vssw" summary ;;
+  run)
+    "$here/build/vssw" summary
+    echo
+    echo "setup: writing the validation report of the default suite (about 40 s on 2 cores) into $here/report" >&2
+    "$here/build/vssw" report --suite default --out "$here/report"
+    ;;
   test) ctest --test-dir "$here/build" --output-on-failure -j "$jobs" ;;
   build) ;;
 esac

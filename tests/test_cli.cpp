@@ -4,6 +4,8 @@
 #include "apps/cli.hpp"
 
 #include <gtest/gtest.h>
+
+#include "tests/cli_runner.hpp"
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -40,18 +42,8 @@ constexpr double kRinaldiDt = 0.01;  // s
 // The wall of Fig. 6: full height 4 m, thickness 0.4 m, hinge 0.7 (b = 0.2, h1 = 1.4, h2 = 0.6).
 const std::vector<std::string> kFig6 = {"--height", "4", "--thickness", "0.4", "--hinge", "0.7"};
 
-struct CliResult {
-    int code;
-    std::string out, err;
-};
-
-CliResult run_cli(const std::vector<std::string>& args) {
-    std::vector<const char*> argv = {"vssw"};
-    for (const std::string& a : args) argv.push_back(a.c_str());
-    std::ostringstream out, err;
-    const int code = vssw::cli::run(static_cast<int>(argv.size()), argv.data(), out, err);
-    return {code, out.str(), err.str()};
-}
+using vssw::testing::CliResult;
+using vssw::testing::run_cli;
 
 std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
     a.insert(a.end(), b.begin(), b.end());

@@ -411,6 +411,9 @@ public:
         return s;
     }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+    // ODE's library state is process-wide (ensure_ode(): the initialisation, the message handler and its count,
+    // per-thread collision data): one run at a time.
+    bool runs_concurrently() const override { return false; }
 };
 
 Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

@@ -1,4 +1,5 @@
-// Simbody adapter: the wall as rigid bodies with rigid unilateral contacts, stepped by Simbody's
+// Simbody adapter, rigid route (engine "simbody-rigid"; "simbody" is the compliant route, simbody_compliant.cpp, and
+// shares this file's engine class): the wall as rigid bodies with rigid unilateral contacts, stepped by Simbody's
 // SemiExplicitEulerTimeStepper (a velocity-level time stepper: impacts and contact forces as impulses from an
 // ImpulseSolver, PLUS by default).
 //
@@ -27,17 +28,15 @@
 //
 // Defaults, each measured (vssw compare, bench/engine_accuracy.cpp; numbers in the comments where they are set).
 #include "multibody/simbody/simbody_engine.hpp"
+#include "multibody/simbody/quiet_stdout.hpp"
+#include "multibody/simbody/simbody_compliant.hpp"
+#include "multibody/simbody/simbody_wall.hpp"
 
 #include <Simbody.h>
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <exception>
-#include <iostream>
 #include <memory>
 #include <string>
 
@@ -51,21 +50,42 @@
 namespace vssw::multibody {
 namespace {
 
-constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
+using namespace simbody_wall;  // kDepth, WallLoads, sample_of, ...
 
 // Settings (EngineSettings::knobs), each with its default and the measurement that chose it.
 struct Knobs {
-    // constraint_tol (default see read_knobs) [m, m/s]: the stepper's constraint tolerance. A contact whose gap is
-    // below it is "proximal" (given to the impulse solver for the step), and closing speeds below a tenth of it are
-    // not impacts.
+    // constraint_tol (default 1e-6) [m]: the stepper's constraint tolerance. A contact whose gap is below it is
+    // "proximal": given to the impulse solver for the step (an impact if it is closing). It must be well below the
+    // distance a closing corner travels in a step (~0.16 m/s x dt on the Fig. 6 wall), or the faster-closing hinge is
+    // caught a step before the new pivot and the landing is resolved as two impacts in sequence, which dissipates
+    // less. Measured first-impact ratio on the Fig. 6 VSSW (whole-mechanism plastic impact 0.8252):
+    //   tol 1e-4: 0.8265 / 0.8783 / 0.8804 at dt 1 / 0.5 / 0.2 ms (sequential from 0.5 ms down: not converged);
+    //   tol 1e-5: 0.8260 / 0.8281 / 0.8807 at 1 / 0.5 / 0.2 ms (sequential at 0.2 ms);
+    //   tol 1e-6: 0.8299 / 0.8265 / 0.8281 / 0.8259 / 0.8252 / 0.8253 at 2 / 1 / 0.5 / 0.2 / 0.1 / 0.05 ms;
+    //   tol 1e-7: 0.8264 / 0.8281 / 0.8264 / 0.8255 / 0.8250 at 1 / 0.5 / 0.2 / 0.1 / 0.05 ms (same as 1e-6).
+    // With 1e-6 at 2 / 1 / 0.5 / 0.2 ms, against the whole-mechanism impact: Table 1 #1 (xi 0.1) +0.8 / +0.4 / +0.2 /
+    // -0.03 %, #7 +2.4 / +2.4 / +0.09 / +0.05 %, #15 +0.5 % / failed (slid, then a corner sank 5 mm at 3.4 s) /
+    // +0.2 / +0.16 %: hence the default step of 0.5 ms. Run time is the same as with 1e-4.
+    // A look-ahead proximity (also proximal when gap + closing speed x dt <= tol, so that contacts closing at the
+    // same instant are caught in the same step) was tried and rejected: the stepper then holds a caught contact at
+    // its gap for the step and lets it go the next, and the ratio scattered (Fig. 6: 0.79 to 0.96 over the steps).
     double constraint_tol;
+    // transition_velocity (default 1e-3) [m/s]: the friction stick/slip transition speed. Simbody uses
+    // max(this, 2 x constraint_tol), so without it a small tolerance would also make the contacts slip at 2e-6 m/s:
+    // with 2e-4 the Fig. 6 VSSW released at 0.5 alpha1 slid 1 cm at its base by t = 1.83 s (dt 1 ms, tol 1e-6);
+    // with 5e-4, 1e-3 and 1e-2 it does not slide and the restitution and period are unchanged (0.8265, 1.67128 s).
+    double transition_velocity;
+    // capture_velocity (default 2e-4) [m/s]: closing speeds below it are not impacts (resolved as contact forces in
+    // the step); Simbody uses max(this, 2 x constraint_tol). 2e-4 is what the former default tolerance (1e-4) gave.
+    double capture_velocity;
     // projection (default 1): position correction after each step, 0 bilateral (every proximal contact pulled onto
     // its plane, a lifting corner too), 1 unilateral (penetrations only), 2 none.
     int projection;
     // restitution (default 2): the stepper's restitution model, 0 Poisson, 1 Newton, 2 none. Every contact has a
-    // coefficient of 0, so the three must agree (measured below).
+    // coefficient of 0, so the three agree: measured identical (0.8265 at 1 ms, 0.8259 at 0.2 ms on Fig. 6).
     int restitution;
-    // solver (default 0): the impulse solver, 0 PLUS, 1 PGS.
+    // solver (default 0): the impulse solver, 0 PLUS, 1 PGS. PGS: 0.8265 at 1 ms, 0.8264 at 0.2 ms (+0.15 % from the
+    // whole-mechanism impact, PLUS +0.08 %), with more contact events (29 against 27 in the same run).
     int solver;
     // both_guides (default 0): 1 offers both roller guides to the stepper every step.
     bool both_guides;
@@ -75,11 +95,13 @@ struct Knobs {
 };
 
 Knobs read_knobs(const EngineSettings& s) {
-    const SettingsReader r("Simbody", s,
-                           {"constraint_tol", "projection", "restitution", "solver", "both_guides", "slide_limit",
-                            "penetration_limit", "moving_supports"});
+    const SettingsReader r("Simbody (rigid)", s,
+                           {"constraint_tol", "transition_velocity", "capture_velocity", "projection", "restitution", "solver",
+                            "both_guides", "slide_limit", "penetration_limit", "moving_supports"});
     Knobs k{};
-    k.constraint_tol = r.positive("constraint_tol", 1e-4);
+    k.constraint_tol = r.positive("constraint_tol", 1e-6);
+    k.transition_velocity = r.positive("transition_velocity", 1e-3);
+    k.capture_velocity = r.positive("capture_velocity", 2e-4);
     k.projection = r.choice("projection", 1, 3);
     k.restitution = r.choice("restitution", 2, 3);
     k.solver = r.choice("solver", 0, 2);
@@ -102,41 +124,6 @@ struct StepInputs {
     bool left_guide = false;
 };
 
-// Pseudo-forces -m a_h at the centres of mass (fixed supports only) and N at the centre of the top face.
-class WallLoads : public SimTK::Force::Custom::Implementation {
-public:
-    WallLoads(const StepInputs& inputs, const SimTK::MobilizedBody& lower, const SimTK::MobilizedBody* upper,
-              const BlockSizes& sizes, double N, bool pseudo)
-        : inputs_(inputs), lower_(lower), has_upper_(upper != nullptr), sizes_(sizes), N_(N), pseudo_(pseudo) {
-        if (upper) upper_ = *upper;
-    }
-    void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
-                   SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
-        const double a = inputs_.a_h;
-        if (pseudo_ && a != 0.0) {
-            lower_.applyForceToBodyPoint(s, SimTK::Vec3(0), SimTK::Vec3(-sizes_.m_lower * kDepth * a, 0, 0),
-                                         body_forces);
-            if (has_upper_)
-                upper_.applyForceToBodyPoint(s, SimTK::Vec3(0), SimTK::Vec3(-sizes_.m_upper * kDepth * a, 0, 0),
-                                             body_forces);
-        }
-        if (N_ > 0.0) {
-            const SimTK::MobilizedBody& top = has_upper_ ? upper_ : lower_;
-            const double half = has_upper_ ? sizes_.h_upper : sizes_.h_lower;
-            top.applyForceToBodyPoint(s, SimTK::Vec3(0, half, 0), SimTK::Vec3(0, -N_, 0), body_forces);
-        }
-    }
-    SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0.0; }
-
-private:
-    const StepInputs& inputs_;
-    SimTK::MobilizedBody lower_, upper_;
-    bool has_upper_;
-    BlockSizes sizes_;
-    double N_;
-    bool pseudo_;
-};
-
 // A roller guide the loop can withhold from the stepper: proximal only while its gate is open.
 class GatedGuide : public SimTK::PointPlaneFrictionlessContact {
 public:
@@ -150,55 +137,6 @@ public:
 private:
     const bool& gate_;
 };
-
-// Debian's libsimbody 3.7 is built without NDEBUG, and SemiExplicitEulerTimeStepper then prints its working to
-// stdout (printf and std::cout, several lines with whole vectors every step): it would corrupt `vssw compare --json`
-// and cost most of the run time (measured: 178 s for `vssw compare` on the Fig. 6 VSSW with the text going to a
-// pipe). While a run steps, file descriptor 1 goes to /dev/null and std::cout is put in a failed state (so that its
-// formatting is skipped); both are restored, and what was buffered flushed, when the run ends, normally or not. This
-// touches process-wide state: simulate() must not run on two threads at once, nor beside a thread writing to stdout.
-class QuietStdout {
-public:
-    QuietStdout() {
-        std::cout.flush();
-        std::fflush(stdout);
-        saved_fd_ = ::dup(1);
-        const int null_fd = ::open("/dev/null", O_WRONLY);
-        if (saved_fd_ >= 0 && null_fd >= 0) ::dup2(null_fd, 1);
-        if (null_fd >= 0) ::close(null_fd);
-        saved_state_ = std::cout.rdstate();
-        std::cout.setstate(std::ios::badbit);
-    }
-    ~QuietStdout() {
-        std::fflush(stdout);  // Simbody's leftover text goes to /dev/null, not to the restored stdout
-        std::cout.clear(saved_state_);
-        if (saved_fd_ >= 0) {
-            ::dup2(saved_fd_, 1);
-            ::close(saved_fd_);
-        }
-    }
-    QuietStdout(const QuietStdout&) = delete;
-    QuietStdout& operator=(const QuietStdout&) = delete;
-
-private:
-    int saved_fd_ = -1;
-    std::ios::iostate saved_state_{};
-};
-
-// Clockwise angle of a body about z.
-double clockwise_angle(const SimTK::MobilizedBody& body, const SimTK::State& s) {
-    const SimTK::Rotation& r = body.getBodyRotation(s);
-    return -std::atan2(r[1][0], r[0][0]);
-}
-
-struct Vec2 {
-    double x, y;
-};
-
-Vec2 world_point(const SimTK::MobilizedBody& body, const SimTK::State& s, double lx, double ly) {
-    const SimTK::Vec3 p = body.findStationLocationInGround(s, SimTK::Vec3(lx, ly, 0));
-    return {p[0], p[1]};
-}
 
 class SimbodyScene {
 public:
@@ -226,8 +164,9 @@ public:
                                                           Vec3(-b, sizes_.h_upper, 0), inputs_.left_guide));
         }
         const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
-        SimTK::Force::Custom(forces_, new WallLoads(inputs_, lower_, has_upper_ ? &upper_ : nullptr, sizes_, N,
-                                                    true));
+        // The ground motion of the step (its midpoint value, set by the loop before each step).
+        SimTK::Force::Custom(forces_, new WallLoads([&in = inputs_](const State&) { return in.a_h; }, lower_,
+                                                    has_upper_ ? &upper_ : nullptr, sizes_, N));
 
         state_ = system_.realizeTopology();
         const WallPose pose = pose_at(scene, theta0);
@@ -268,30 +207,42 @@ private:
     SimTK::State state_;
 };
 
+// One class for both routes: `simbody` (compliant contact, simbody_compliant.cpp; the default, README "Simbody" for
+// why) and `simbody-rigid` (this file's rigid contact), each with its own defaults.
 class SimbodyEngine final : public Engine {
 public:
-    std::string name() const override { return "simbody"; }
+    explicit SimbodyEngine(bool compliant) : compliant_(compliant) {}
+    std::string name() const override { return compliant_ ? "simbody" : "simbody-rigid"; }
     std::string version() const override {
         int major = 0, minor = 0, build = 0;
         SimTK_version_simbody(&major, &minor, &build);
-        return fmt::format("Simbody {}.{}.{} (SemiExplicitEulerTimeStepper, rigid unilateral contact)", major, minor,
-                           build);
+        return fmt::format("Simbody {}.{}.{} ({})", major, minor, build,
+                           compliant_ ? "Hunt-Crossley compliant contact, CPodes"
+                                      : "SemiExplicitEulerTimeStepper, rigid unilateral contact");
     }
     EngineSettings default_settings() const override {
         EngineSettings s;
-        s.dt = 1e-3;
-        s.iterations = 0;  // PLUS has none to set
+        // Compliant: the reporting interval (the integrator picks its own steps; the period's sampling error is
+        // +0.006 % at 1 ms on Fig. 6). Rigid: the step; constraint_tol's comment: the restitution is converged from
+        // 0.5 ms down.
+        s.dt = compliant_ ? 1e-3 : 5e-4;
+        s.iterations = 0;  // neither route has iterations to set
         return s;
     }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+
+private:
+    bool compliant_;
 };
 
 Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
                                    const EngineSettings& settings) const {
-    require(std::isfinite(settings.dt) && settings.dt > 0.0, "Simbody time step dt (s)", "a positive finite number",
+    require(std::isfinite(settings.dt) && settings.dt > 0.0,
+            compliant_ ? "Simbody reporting interval dt (s)" : "Simbody time step dt (s)", "a positive finite number",
             settings.dt);
     if (scene.vssw.has_value() == scene.parapet.has_value())
         throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+    if (compliant_) return simulate_compliant(scene, ex, settings);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     SimbodyScene w(scene, ex.theta0);
@@ -302,14 +253,13 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     const bool vssw = w.has_upper();
     const SimTK::MobilizedBody& lower = w.lower();
     const SimTK::MobilizedBody& upper = w.upper();
-    const SimTK::MobilizedBody& top_body = vssw ? upper : lower;
-    const double top_half = vssw ? s.h_upper : s.h_lower;
-    const double y_top0 = 2.0 * h_total;
-    const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
+    const WallBodies bodies{lower, upper, vssw, s, g, N, s.h_lower, 2.0 * s.h_lower + s.h_upper, 2.0 * h_total};
 
     const QuietStdout quiet;
     SimTK::SemiExplicitEulerTimeStepper ts(w.system());
     ts.setConstraintTolerance(knobs.constraint_tol);
+    ts.setDefaultFrictionTransitionVelocity(knobs.transition_velocity);
+    ts.setDefaultImpactCaptureVelocity(knobs.capture_velocity);
     ts.setRestitutionModel(static_cast<SimTK::SemiExplicitEulerTimeStepper::RestitutionModel>(knobs.restitution));
     ts.setImpulseSolverType(static_cast<SimTK::SemiExplicitEulerTimeStepper::ImpulseSolverType>(knobs.solver));
     ts.setPositionProjectionMethod(
@@ -322,25 +272,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     auto record = [&](double t) {
         const SimTK::State& st = ts.getState();
         w.system().realize(st, SimTK::Stage::Velocity);
-        TrajectorySample p{};
-        p.t = t;
-        p.theta1 = clockwise_angle(lower, st);
-        p.theta1_dot = -lower.getBodyAngularVelocity(st)[2];
-        p.theta2 = vssw ? clockwise_angle(upper, st) : 0.0;
-        p.top_dy = world_point(top_body, st, 0.0, top_half).y - y_top0;
-        auto kinetic = [&](const SimTK::MobilizedBody& body, double mass, double half_h) {
-            const SimTK::Vec3 v = body.getBodyOriginVelocity(st);
-            const double wz = body.getBodyAngularVelocity(st)[2];
-            const double vx = v[0];
-            return 0.5 * mass * (vx * vx + v[1] * v[1]) + 0.5 * mass * (s.b * s.b + half_h * half_h) / 3.0 * wz * wz;
-        };
-        p.kinetic = (kinetic(lower, s.m_lower * kDepth, s.h_lower) +
-                     (vssw ? kinetic(upper, s.m_upper * kDepth, s.h_upper) : 0.0)) /
-                    kDepth;
-        p.potential = (s.m_lower * kDepth * g * (lower.getBodyOriginLocation(st)[1] - y_lower0) +
-                       (vssw ? s.m_upper * kDepth * g * (upper.getBodyOriginLocation(st)[1] - y_upper0) : 0.0) +
-                       N * p.top_dy) /
-                      kDepth;
+        TrajectorySample p = sample_of(bodies, st, t);
         int contacts = 0;
         for (SimTK::UnilateralContactIndex i(0); i < matter.getNumUnilateralContacts(); ++i)
             if (matter.getUnilateralContact(i).isEnabled(st)) ++contacts;
@@ -362,8 +294,9 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
         if (vssw) {
             // The roller guide whose corner is further out (both with both_guides).
             w.system().realize(st, SimTK::Stage::Position);
-            const Vec2 right = world_point(upper, st, s.b, s.h_upper), left = world_point(upper, st, -s.b, s.h_upper);
-            const bool use_left = -s.b - left.x > right.x - s.b;
+            const SimTK::Vec3 right = world_point(upper, st, s.b, s.h_upper);
+            const SimTK::Vec3 left = world_point(upper, st, -s.b, s.h_upper);
+            const bool use_left = -s.b - left[0] > right[0] - s.b;
             in.left_guide = knobs.both_guides || use_left;
             in.right_guide = knobs.both_guides || !use_left;
         }
@@ -379,8 +312,9 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
         w.system().realize(now, SimTK::Stage::Velocity);
         const double theta = clockwise_angle(lower, now);
         const double rate = -lower.getBodyAngularVelocity(now)[2];
-        const Vec2 right = world_point(lower, now, s.b, -s.h_lower), left = world_point(lower, now, -s.b, -s.h_lower);
-        const auto verdict = monitor.check(t, theta, rate, {right.x - s.b, right.y, left.x + s.b, left.y});
+        const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
+        const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
+        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1], left[0] + s.b, left[1]});
         if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }
@@ -389,6 +323,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
 
 }  // namespace
 
-std::unique_ptr<Engine> make_simbody_engine() { return std::make_unique<SimbodyEngine>(); }
+std::unique_ptr<Engine> make_simbody_engine() { return std::make_unique<SimbodyEngine>(true); }
+std::unique_ptr<Engine> make_simbody_rigid_engine() { return std::make_unique<SimbodyEngine>(false); }
 
 }  // namespace vssw::multibody

@@ -42,5 +42,17 @@ expect 0 0 history $wall --record "$data/NGA_no_1063_RRS228.AT2" --csv "$tmp/out
 [ "$(head -n 1 "$tmp/out.csv")" = "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g" ] ||
     fail "CSV header: $(head -n 1 "$tmp/out.csv")"
 
+# The report on one quick case (the analytic model only, no plots): files written, JSON valid; a file as --out is
+# bad input.
+expect 0 0 report --engines analytic --cases fig6-pw --no-plots --out "$tmp/report"
+for f in report.md report.html results.json metrics.csv failures.csv traces.csv; do
+    [ -s "$tmp/report/$f" ] || fail "vssw report: $f missing or empty"
+done
+if command -v python3 >/dev/null 2>&1; then
+    python3 -m json.tool "$tmp/report/results.json" >/dev/null || fail "vssw report: results.json is not JSON"
+fi
+grep -q "$tmp/report/report.html" "$tmp/out" || fail "vssw report does not print where the report is"
+expect 2 1 report --engines analytic --cases fig6-pw --out "$tmp/out.csv"
+
 [ "$failures" -eq 0 ] && echo "vssw smoke test: all checks passed"
 exit "$failures"

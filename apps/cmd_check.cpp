@@ -1,0 +1,151 @@
+// `vssw check --bounds FILE`: runs only the suite cases and engines a bounds file names, holds every measured value
+// against its bound, prints the verdicts, and exits 0 when all hold, 1 when any does not (BoundsViolated), 2 on a
+// missing or malformed file.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "apps/bounds_file.hpp"
+#include "apps/bounds_violated.hpp"
+#include "apps/commands.hpp"
+#include "apps/json.hpp"
+#include "compare/bounds.hpp"
+#include "compare/suite.hpp"
+
+#ifndef VSSW_DATA_DIR
+#define VSSW_DATA_DIR "data"
+#endif
+
+namespace vssw::cli {
+namespace {
+
+struct CheckOptions {
+    std::string bounds;
+    std::string data_dir = VSSW_DATA_DIR;
+    int threads = 0;
+    bool json = false;
+};
+
+std::string value_text(const compare::BoundVerdict& v) {
+    if (!std::isfinite(v.value)) return "-";
+    return v.engine == "analytic" ? fmt::format("{:.8g}", v.value) : fmt::format("{:+.3e}", v.value);
+}
+
+std::string bound_text(const compare::BoundVerdict& v) {
+    return v.engine == "analytic" ? fmt::format("[{:.8g}, {:.8g}]", v.lo, v.hi)
+                                  : fmt::format("[{:+.3e}, {:+.3e}]", v.lo, v.hi);
+}
+
+void print_table(std::ostream& out, const std::vector<compare::BoundVerdict>& verdicts) {
+    std::vector<std::vector<std::string>> rows = {{"engine", "case", "metric", "value", "allowed", "verdict"}};
+    for (const auto& v : verdicts)
+        rows.push_back({v.engine, v.case_id, v.metric, value_text(v), bound_text(v),
+                        v.held ? "ok" : (v.note.empty() ? "OUT" : "OUT (" + v.note + ")")});
+    std::vector<size_t> width(rows.front().size() - 1, 0);  // the verdict column is last and not padded
+    for (const auto& r : rows)
+        for (size_t c = 0; c < width.size(); ++c) width[c] = std::max(width[c], r[c].size());
+    for (const auto& r : rows) {
+        std::string line;
+        for (size_t c = 0; c < width.size(); ++c) line += fmt::format("{:<{}}  ", r[c], width[c]);
+        out << line << r.back() << '\n';
+    }
+}
+
+Json verdicts_json(const std::vector<compare::BoundVerdict>& verdicts, const compare::SuiteResults& results,
+                   const std::string& bounds_path) {
+    Json list = Json::array();
+    for (const auto& v : verdicts) {
+        Json j;
+        j["engine"] = v.engine;
+        j["case"] = v.case_id;
+        j["metric"] = v.metric;
+        j["kind"] = v.engine == "analytic" ? "drift" : "rel_error";
+        j["value"] = std::isfinite(v.value) ? Json(v.value) : Json(nullptr);
+        j["min"] = v.lo;
+        j["max"] = v.hi;
+        j["held"] = v.held;
+        j["note"] = v.note;
+        list.push_back(j);
+    }
+    Json doc;
+    doc["bounds"] = bounds_path;
+    doc["suite"] = results.suite;
+    doc["held"] = std::all_of(verdicts.begin(), verdicts.end(), [](const auto& v) { return v.held; });
+    doc["verdicts"] = list;
+    doc["wall_time_s"] = results.wall_time_s;
+    return doc;
+}
+
+// The cases named by engine bounds, each once.
+std::vector<std::string> engine_cases_needed(const compare::Bounds& bounds) {
+    compare::Bounds engines_only;
+    engines_only.engines = bounds.engines;
+    return compare::cases_needed(engines_only);
+}
+
+void run_check(const CheckOptions& o, std::ostream& out) {
+    const compare::Bounds bounds = read_bounds_file(o.bounds);
+    const compare::Suite all = compare::make_suite(bounds.suite, o.data_dir);
+    compare::RunOptions run;
+    run.threads = o.threads;
+    run.keep_traces = false;
+    // Two runs, so that an engine runs only the cases an engine bound names (the analytic model is cheap: it runs
+    // every case named anywhere). Every name is checked before anything runs.
+    const compare::Suite suite = compare::select_cases(all, compare::cases_needed(bounds));
+    const compare::Suite engine_suite = compare::select_cases(all, engine_cases_needed(bounds));
+    compare::SuiteResults results = compare::run_suite(suite, {}, run);
+    if (!engine_suite.cases.empty()) {
+        const compare::SuiteResults engine_results =
+            compare::run_suite(engine_suite, compare::engines_needed(bounds), run);
+        results.engines = engine_results.engines;
+        results.rows.insert(results.rows.end(), engine_results.rows.begin(), engine_results.rows.end());
+        results.failures.insert(results.failures.end(), engine_results.failures.begin(),
+                                engine_results.failures.end());
+        results.wall_time_s += engine_results.wall_time_s;
+    }
+    const std::vector<compare::BoundVerdict> verdicts = compare::evaluate(bounds, results);
+    const auto out_of_bounds = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.held; });
+    if (o.json) {
+        out << verdicts_json(verdicts, results, o.bounds).dump(2) << '\n';
+    } else {
+        out << fmt::format("vssw check: {} ({} cases, engines: analytic{}{}; {:.1f} s on {} threads)\n\n", o.bounds,
+                           suite.cases.size(), compare::engines_needed(bounds).empty() ? "" : ", ",
+                           fmt::join(compare::engines_needed(bounds), ", "), results.wall_time_s, results.threads);
+        print_table(out, verdicts);
+        out << fmt::format("\n{} of {} bounds hold\n", verdicts.size() - static_cast<size_t>(out_of_bounds),
+                           verdicts.size());
+    }
+    if (out_of_bounds > 0)
+        throw BoundsViolated(fmt::format("{} of {} bounds do not hold ({})", out_of_bounds, verdicts.size(), o.bounds));
+}
+
+}  // namespace
+
+Command add_check_command(CLI::App& root) {
+    auto o = std::make_shared<CheckOptions>();
+    CLI::App* cmd = root.add_subcommand(
+        "check", "Hold the suite's metrics against a bounds file: exit 0 when all hold, 1 when any does not");
+    cmd->add_option("--bounds", o->bounds, "bounds file, TOML (.toml) or JSON (.json); see bounds/default.toml")
+        ->required();
+    cmd->add_option("--data", o->data_dir, "directory of the ground-motion records (default: the shipped data/)");
+    cmd->add_option("--threads", o->threads, "threads (default 0: the available cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    cmd->footer(
+        "Runs only the cases and engines the file names (the analytic model always). An engine bound holds when the "
+        "engine's relative error against the analytic model (engine / analytic - 1) lies in [min, max]; an analytic "
+        "bound when the analytic model's own value lies within max_drift (relative) of the stored reference. A "
+        "metric that could not be measured (the engine failed, no impact) does not hold. Exit codes: 0 all hold, 1 "
+        "some do not, 2 bad input (a missing or malformed bounds file, an unknown case, engine or key).\n"
+        "JSON keys: bounds, suite, held, verdicts [{engine, case, metric, kind (drift or rel_error), value, min, max, "
+        "held, note}], wall_time_s.");
+    return {cmd, [o](std::ostream& out) { run_check(*o, out); }};
+}
+
+}  // namespace vssw::cli

@@ -1,0 +1,175 @@
+// `vssw report`: the validation suite (compare/suite.hpp) run for the analytic model and every engine, written as a
+// report (Markdown, HTML with inline plots), machine-readable results (JSON, CSV) and gnuplot plots in one folder.
+#include <unistd.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+#include "apps/commands.hpp"
+#include "apps/report_suite_write.hpp"
+#include "compare/suite.hpp"
+#include "multibody/engine.hpp"
+
+#ifndef VSSW_GIT_COMMIT
+#define VSSW_GIT_COMMIT ""
+#endif
+
+namespace vssw::cli {
+namespace {
+
+// The progress line is cut to fit an 80-column terminal.
+constexpr std::size_t kProgressWidth = 79;
+
+struct ReportCommandOptions {
+    std::string suite = "default";
+    std::vector<std::string> engines;
+    std::vector<std::string> cases;
+    int threads = 0;
+    bool no_plots = false;
+    std::string gnuplot = "gnuplot";
+    std::string data = VSSW_DATA_DIR;
+    std::string out;
+};
+
+// Every engine compiled in except the analytic model, which always runs as the reference, and Simbody's rigid route
+// (simbody-rigid), Simbody's second route: its threshold bisections take minutes (README, "Simbody"); name it in
+// --engines to include it.
+std::vector<std::string> default_engines() {
+    std::vector<std::string> engines;
+    for (const std::string& name : multibody::available_engines())
+        if (name != "analytic" && name != "simbody-rigid") engines.push_back(name);
+    return engines;
+}
+
+std::vector<std::string> checked_engines(const std::vector<std::string>& asked) {
+    if (asked.empty()) return default_engines();
+    const std::vector<std::string> available = multibody::available_engines();
+    std::vector<std::string> engines;
+    for (const std::string& name : asked) {
+        if (std::find(available.begin(), available.end(), name) == available.end())
+            throw InputError(fmt::format("--engines: no engine '{}' in this build (available: {})", name,
+                                         fmt::join(available, ", ")));
+        if (name != "analytic" && std::find(engines.begin(), engines.end(), name) == engines.end())
+            engines.push_back(name);
+    }
+    return engines;
+}
+
+// A progress line on a terminal, rewritten in place; nothing when err is not a terminal (a log, a test's stream).
+class Progress {
+public:
+    explicit Progress(std::ostream& err) : err_(err), on_(&err == &std::cerr && isatty(STDERR_FILENO) == 1) {}
+    bool on() const { return on_; }
+    void show(int done, int total, const std::string& what) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        std::string line = fmt::format("[{}/{}] {}", done, total, what);
+        if (line.size() > kProgressWidth) line.resize(kProgressWidth);
+        err_ << '\r' << line << std::string(shown_ > line.size() ? shown_ - line.size() : 0, ' ') << std::flush;
+        shown_ = line.size();
+    }
+    void clear() {
+        if (shown_ > 0) err_ << '\r' << std::string(shown_, ' ') << '\r' << std::flush;
+        shown_ = 0;
+    }
+
+private:
+    std::ostream& err_;
+    bool on_;
+    std::mutex mutex_;
+    std::size_t shown_ = 0;
+};
+
+}  // namespace
+
+Command add_report_command(CLI::App& root) {
+    auto o = std::make_shared<ReportCommandOptions>();
+    CLI::App* cmd = root.add_subcommand(
+        "report", "Run the validation suite for the analytic model and the engines; write a report into a folder");
+    cmd->add_option("--suite", o->suite, "default (about 40 s on 2 cores with Bullet, ODE and Simbody) or full (225 cases, longer)");
+    cmd->add_option("--engines", o->engines,
+                    fmt::format("engines to compare, comma-separated (default: {}; simbody-rigid on request)",
+                                fmt::join(default_engines(), ", ")))
+        ->delimiter(',');
+    cmd->add_option("--cases", o->cases, "only these case ids, comma-separated (e.g. fig6-vssw,fig6-vssw/r0.5)")
+        ->delimiter(',');
+    cmd->add_option("--threads", o->threads, "worker threads (default 0: the available cores)");
+    cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
+    cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
+    cmd->add_option("--data", o->data, "folder of the ground-motion records (default: the source tree's data/)");
+    cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
+    cmd->footer(
+        "Writes into --out: report.md and report.html (the same content; the HTML is self-contained, plots inline),\n"
+        "results.json, metrics.csv, failures.csv, traces.csv and plots/ (gnuplot .svg, with the .gp script and .dat\n"
+        "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; targets:\n"
+        "threshold 0.5 %, period 0.5 %, restitution 2 %.\n"
+        "results.json keys: vssw {commit, report_format}, date, suite {name, walls, records, cases [{id, kind, wall,\n"
+        "r, record, dt}]}, engines [{name, version, settings {dt, iterations, knobs}}], targets, rows [{case_id,\n"
+        "engine, metric, unit, reference, analytic, engine_value, rel_error, target, within_target}], failures\n"
+        "[{case_id, engine, message}], summary [{engine, line, within, with_target, not_measured, failures,\n"
+        "max_error}], findings, step_study [{engine, case_id, metric, dt, rel_error, order}], traces [{case_id,\n"
+        "engine, samples}], plots {made, note}, wall_time_s, threads; NaN is null.\n"
+        "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"
+        "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha.\n"
+        "An engine failing on a case is reported (exit 0). Exit 2 on bad input (unknown suite, engine or case, an\n"
+        "--out that is not a writable folder). Without gnuplot the report is written without plots (a warning).");
+    return {cmd, {}, [o](std::ostream& out, std::ostream& err) {
+                const std::vector<std::string> engines = checked_engines(o->engines);
+                require(o->threads >= 0, "--threads", "0 or more (0: the available cores)", o->threads);
+                const std::filesystem::path dir = o->out;
+                prepare_report_dir(dir);  // a bad --out fails before the suite runs
+                compare::Suite suite = compare::make_suite(o->suite, o->data);
+                if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
+
+                Progress progress(err);
+                compare::RunOptions run;
+                run.threads = o->threads;
+                if (progress.on())
+                    run.progress = [&progress](int done, int total, const std::string& what) {
+                        progress.show(done, total, what);
+                    };
+                compare::SuiteResults results;
+                try {
+                    results = compare::run_suite(suite, engines, run);
+                } catch (...) {
+                    progress.clear();
+                    throw;
+                }
+                progress.clear();
+                if (!o->cases.empty())
+                    results.suite = fmt::format("{} ({} selected case{})", o->suite, suite.cases.size(),
+                                                suite.cases.size() == 1 ? "" : "s");
+
+                ReportMeta meta;
+                meta.date = utc_now();
+                meta.commit = VSSW_GIT_COMMIT;
+                ReportOptions options;
+                options.plots = !o->no_plots;
+                options.plot.gnuplot = o->gnuplot;
+                const ReportFiles files = write_suite_report(dir, suite, results, meta, options);
+                for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
+
+                out << fmt::format("vssw report: suite {}, {} case{}, {} engine{} besides the analytic model, "
+                                   "{:.1f} s on {} thread{}\n",
+                                   results.suite, suite.cases.size(), suite.cases.size() == 1 ? "" : "s",
+                                   engines.size(), engines.size() == 1 ? "" : "s", results.wall_time_s,
+                                   results.threads, results.threads == 1 ? "" : "s");
+                out << "  report.md     " << files.markdown.string() << '\n'
+                    << "  report.html   " << files.html.string() << '\n'
+                    << "  results.json  " << files.json.string() << '\n';
+                for (const std::string& line : files.summary_lines) out << line << '\n';
+                if (!results.failures.empty())
+                    out << fmt::format("{} engine failure{}: see the report's Failures section\n",
+                                       results.failures.size(), results.failures.size() == 1 ? "" : "s");
+            }};
+}
+
+}  // namespace vssw::cli

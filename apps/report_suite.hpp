@@ -1,0 +1,113 @@
+#pragma once
+// What `vssw report` says about a validation suite's results (compare/suite.hpp), computed once and shared by every
+// writer (Markdown, HTML, JSON, CSV, plots) so that they cannot disagree: the targets, the per-engine summary, the
+// per-metric tables, the error-against-step study and the findings in plain words.
+//
+// Nothing here runs a simulation: the writers and these functions take a SuiteResults built by compare::run_suite or
+// by hand (the tests).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare/suite.hpp"
+
+namespace vssw::cli {
+
+// The accuracy the project asks of an engine (issue 3), relative error: threshold and period 0.5 %, restitution 2 %
+// (against the analytic model's impact map and against the whole-mechanism plastic impact alike).
+constexpr double kReportThresholdTarget = 5e-3;
+constexpr double kReportPeriodTarget = 5e-3;
+constexpr double kReportRestitutionTarget = 2e-2;
+
+// The target of a metric, none for those the project sets no target on (history metrics).
+std::optional<double> target_of(const std::string& metric);
+// A readable name ("threshold", "restitution (first impact)") and one sentence on how the metric is measured.
+std::string metric_title(const std::string& metric);
+std::string metric_description(const std::string& metric);
+
+// Everything a writer needs beside the numbers.
+struct ReportMeta {
+    std::string date;    // when the report was made, ISO 8601 UTC
+    std::string commit;  // vssw's git commit (at configure time), empty when unknown
+    bool plots_made = false;
+    std::string plots_note;  // why there are no plots (or which failed), empty when all were made
+};
+
+struct ReportInput {
+    const compare::Suite& suite;  // labels and kinds of the cases; may hold no cases (kinds then come from the ids)
+    const compare::SuiteResults& results;
+    ReportMeta meta;
+};
+
+// The kind of a case: from the suite when it lists the case, else from the shape of its id (compare/suite.hpp).
+compare::CaseKind case_kind(const ReportInput& in, const std::string& case_id);
+const char* kind_name(compare::CaseKind kind);
+// The engine step of a `step` case (from the suite, else from the "/dt<dt>" suffix of its id); NaN if none.
+double case_step(const ReportInput& in, const std::string& case_id);
+
+// "ODE", "Bullet", "Simbody" for the engine names (others as they are).
+std::string engine_display_name(const std::string& engine);
+
+// Percent text of a relative error for people: "+0.02 %", "-13.2 %", "3.1e-04 %", "n/a" when not finite.
+std::string percent(double rel_error);
+
+// One engine in one line: how many metrics with a target are within it (step-study cases left out: they vary the
+// step on purpose), the largest |error| per metric (signed), the failures.
+struct MetricExtreme {
+    std::string metric;
+    double rel_error = 0.0;  // the signed error of largest magnitude
+    std::string case_id;     // where
+    int rows = 0;            // measured rows of this metric
+    int outside = 0;         // of which outside the target (metrics without one: a nonzero error, e.g. overturned)
+};
+struct EngineSummary {
+    std::string engine, version;
+    int with_target = 0, within = 0, not_measured = 0, failures = 0;
+    std::vector<MetricExtreme> extremes;  // in report order (metric_order)
+    std::string line;                     // "ode: 31/33 metrics within target; max |error| ...; 0 failures"
+};
+// The engines other than "analytic", in the order of results.engines (then any only seen in rows or failures).
+std::vector<std::string> compared_engines(const compare::SuiteResults& results);
+std::vector<EngineSummary> summarize(const ReportInput& in);
+
+// A per-metric table over the non-step cases: the reference value and each engine's value and error.
+struct MetricCell {
+    bool present = false;
+    bool failed = false;  // the engine failed on this case
+    double value = 0.0, rel_error = 0.0;
+};
+struct MetricTableRow {
+    std::string case_id;
+    double reference = 0.0;
+    std::string reference_name;    // MetricRow::reference
+    std::vector<MetricCell> cells;  // one per engine of MetricTable::engines
+};
+struct MetricTable {
+    std::string metric, unit;
+    std::optional<double> target;
+    std::vector<std::string> engines;
+    std::vector<MetricTableRow> rows;
+};
+// The metrics in report order: threshold_g, period, restitution, restitution_whole_mechanism, then the others by name.
+std::vector<std::string> metric_order(const compare::SuiteResults& results);
+std::vector<MetricTable> metric_tables(const ReportInput& in);
+
+// The error-against-step study: per engine, per free-vibration case it belongs to ("<wall>/r<r>"), per metric, the
+// points (dt, rel_error) in increasing dt.
+struct StepSeries {
+    std::string engine, base_case, metric;
+    std::vector<double> dt, rel_error;
+    // Least-squares slope of log|error| against log dt over the points with a nonzero error; NaN with fewer than 3.
+    double order = 0.0;
+    double r_squared = 0.0;  // of that fit; NaN without a fit
+};
+std::vector<StepSeries> step_series(const ReportInput& in);
+
+// The findings in plain words, each one sentence or two built from the numbers (never a claim they do not show),
+// engine after engine; only those of one engine when it is named.
+std::vector<std::string> findings(const ReportInput& in, const std::string& only_engine = "");
+
+// Case ids as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'.
+std::string file_stem(const std::string& case_id);
+
+}  // namespace vssw::cli

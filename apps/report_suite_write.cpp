@@ -1,0 +1,85 @@
+#include "apps/report_suite_write.hpp"
+
+#include <ctime>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "apps/report_suite_data.hpp"
+#include "apps/report_suite_document.hpp"
+#include "apps/report_suite_html.hpp"
+#include "apps/report_suite_markdown.hpp"
+
+namespace vssw::cli {
+namespace fs = std::filesystem;
+namespace {
+
+void write_file(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+    std::ofstream f(path, std::ios::binary | std::ios::trunc);
+    if (!f) throw InputError(fmt::format("cannot write '{}'", path.string()));
+    write(f);
+    f.flush();
+    if (!f) throw InputError(fmt::format("writing '{}' failed", path.string()));
+}
+
+}  // namespace
+
+std::string utc_now() {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return text;
+}
+
+void prepare_report_dir(const fs::path& dir) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw InputError(fmt::format("--out: '{}' exists and is not a folder", dir.string()));
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(fmt::format("--out: cannot create '{}': {}", dir.string(), ec.message()));
+    const fs::path probe = dir / ".vssw-write-test";
+    {
+        std::ofstream f(probe);
+        if (!f) throw InputError(fmt::format("--out: cannot write in '{}'", dir.string()));
+    }
+    fs::remove(probe, ec);
+}
+
+ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite, const compare::SuiteResults& results,
+                               ReportMeta meta, const ReportOptions& options) {
+    prepare_report_dir(dir);
+    ReportFiles files;
+    files.dir = dir;
+    files.markdown = dir / "report.md";
+    files.html = dir / "report.html";
+    files.json = dir / "results.json";
+    const fs::path plots_dir = dir / "plots";
+
+    PlotResult plots;
+    if (options.plots) {
+        plots = write_plots(ReportInput{suite, results, meta}, plots_dir, options.plot);
+        files.plots_made = plots.all_made;
+        if (!plots.note.empty()) files.warnings.push_back("plots: " + plots.note);
+    }
+    meta.plots_made = options.plots && plots.all_made;
+    meta.plots_note = options.plots ? plots.note : "not made (--no-plots)";
+    const ReportInput in{suite, results, meta};
+
+    write_file(files.json, [&](std::ostream& out) { out << results_json(in).dump(2) << '\n'; });
+    write_file(dir / "metrics.csv", [&](std::ostream& out) { write_metrics_csv(out, results); });
+    write_file(dir / "failures.csv", [&](std::ostream& out) { write_failures_csv(out, results); });
+    write_file(dir / "traces.csv", [&](std::ostream& out) { write_traces_csv(out, results); });
+    const Document doc = build_document(in, plots, !options.plots);
+    write_file(files.markdown, [&](std::ostream& out) { write_markdown(out, doc); });
+    write_file(files.html, [&](std::ostream& out) { write_html(out, doc, plots_dir); });
+    for (const EngineSummary& s : summarize(in)) files.summary_lines.push_back(s.line);
+    return files;
+}
+
+}  // namespace vssw::cli

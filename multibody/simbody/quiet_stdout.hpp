@@ -1,0 +1,65 @@
+#pragma once
+// Silencing stdout while Simbody steps (both Simbody routes use it).
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <mutex>
+
+namespace vssw::multibody {
+
+// Debian's libsimbody 3.7 is built without NDEBUG, and SemiExplicitEulerTimeStepper then prints its working to
+// stdout (printf and std::cout, several lines with whole vectors every step): it would corrupt `vssw compare --json`
+// and cost most of the run time (measured: 178 s for `vssw compare` on the Fig. 6 VSSW with the text going to a
+// pipe). While a run steps, file descriptor 1 goes to /dev/null and std::cout is put in a failed state (so that its
+// formatting is skipped); both are restored, and what was buffered flushed, when the last run ends, normally or not.
+// This is process-wide state, so it is counted: runs on several threads at once (vssw report) share one silence,
+// begun by the first and ended by the last; nothing else may write to stdout meanwhile.
+class QuietStdout {
+public:
+    QuietStdout() {
+        const std::lock_guard<std::mutex> lock(mutex());
+        State& st = state();
+        if (st.users++ > 0) return;
+        std::cout.flush();
+        std::fflush(stdout);
+        st.saved_fd = ::dup(1);
+        const int null_fd = ::open("/dev/null", O_WRONLY);
+        if (st.saved_fd >= 0 && null_fd >= 0) ::dup2(null_fd, 1);
+        if (null_fd >= 0) ::close(null_fd);
+        st.saved_iostate = std::cout.rdstate();
+        std::cout.setstate(std::ios::badbit);
+    }
+    ~QuietStdout() {
+        const std::lock_guard<std::mutex> lock(mutex());
+        State& st = state();
+        if (--st.users > 0) return;
+        std::fflush(stdout);  // Simbody's leftover text goes to /dev/null, not to the restored stdout
+        std::cout.clear(st.saved_iostate);
+        if (st.saved_fd >= 0) {
+            ::dup2(st.saved_fd, 1);
+            ::close(st.saved_fd);
+            st.saved_fd = -1;
+        }
+    }
+    QuietStdout(const QuietStdout&) = delete;
+    QuietStdout& operator=(const QuietStdout&) = delete;
+
+private:
+    struct State {
+        int users = 0;
+        int saved_fd = -1;
+        std::ios::iostate saved_iostate{};
+    };
+    static State& state() {
+        static State s;
+        return s;
+    }
+    static std::mutex& mutex() {
+        static std::mutex m;
+        return m;
+    }
+};
+
+}  // namespace vssw::multibody

@@ -1,0 +1,297 @@
+// Simbody adapter, the default route (engine "simbody"; the rigid route is "simbody-rigid"): the wall as rigid bodies with compliant
+// (Hunt-Crossley) contact from CompliantContactSubsystem + ContactTrackerSubsystem, integrated by an error-controlled
+// integrator (CPodes, an implicit BDF method, by default; Runge-Kutta-Merson on request).
+//
+// Scene (the rigid route's, simbody_engine.cpp; depth 1 m, so masses and energies are per unit depth):
+//  - each block is a MobilizedBody::Planar on Ground (no out-of-plane motion by construction);
+//  - Simbody 3.7 has no brick-brick compliant pair, so the corners carry small spheres (radius `radius`) centred ON
+//    the corners, pressed against half-spaces: the lower block's two base spheres against the ground, the upper
+//    block's two bottom spheres against a half-space fixed to the lower block whose surface is its top face (the
+//    hinge), and the upper block's two top spheres against two frictionless vertical half-spaces fixed to Ground, one
+//    a wall-thickness from the other (the roller on both faces; VSSW only). A sphere centred on the corner keeps the
+//    corner's geometry: the contact point is straight below the corner, so the lever arms and the threshold are those
+//    of a sharp corner on a support lifted by r (relative error r/h: 5e-5 on the Fig. 6 wall at the defaults), and
+//    rolling shifts the corner by r*theta (the moment of inertia about the contact changes by about 2r/h). The wall
+//    therefore starts r (lower block) and 2r (upper block) above the analytic positions, and the guides stand at
+//    x = +-(b + r);
+//  - cliques keep the pairs that cannot touch apart (the rigid route's rule): the guides and the half-spaces among
+//    themselves, the guides from every sphere but the upper block's top ones;
+//  - both guides are always there: compliant contact has no redundant-loop trouble (the rigid adapters' single-guide
+//    rule was for their LCP solvers); at rest both top spheres merely touch their guides;
+//  - N at the centre of the top face (only when xi > 0) and the ground motion as pseudo-forces -m a_h(t) at the
+//    centres of mass, both from a Force::Custom evaluated at the integrator's own times (a record is followed between
+//    its samples by the error control, no midpoint rule needed). No moving supports (refused).
+//
+// Contact law (Simbody's HertzCircular generator, sphere on half-space): normal force f = fH (1 + 3/2 c xdot) with
+// fH = 4/3 E sqrt(r) x^3/2, x the penetration, c the Hunt-Crossley dissipation, clamped at 0 when pulling. The knob
+// `stiffness` is the effective modulus E of the pair (each material gets 2^1.5 E: Simbody combines equal materials as
+// E_eff = E_material / 2^1.5). Friction: Simbody's Stribeck curve, mu rising smoothly from 0 at no slip to mu_s at the
+// transition velocity vt: there is no true stiction, a loaded contact creeps at a fraction of vt (measured below).
+//
+// Time: settings.dt is the REPORTING interval (the integrator's steps are chosen by its error control); each report is
+// an integrator step end (no interpolation), the RunMonitor checks it, and the trajectory samples it.
+//
+// Defaults, each measured (vssw compare; numbers in the comments where they are set).
+#include "multibody/simbody/simbody_compliant.hpp"
+#include "multibody/simbody/quiet_stdout.hpp"
+#include "multibody/simbody/simbody_wall.hpp"
+
+#include <Simbody.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/run_monitor.hpp"
+#include "multibody/scene_geometry.hpp"
+#include "multibody/settings_reader.hpp"
+
+namespace vssw::multibody {
+namespace {
+
+using namespace simbody_wall;  // kDepth, WallLoads, sample_of, ...
+constexpr const char* kName = "Simbody (compliant)";
+constexpr int kStepsPerCall = 100000;   // integrator steps per stepTo call (see setInternalStepLimit below)
+constexpr int kMaxCallsPerReport = 20;  // stepTo calls per report interval before the run is declared stuck
+
+struct Knobs {
+    double stiffness;            // [Pa] effective Hertz modulus E of a sphere-on-half-space pair
+    double radius;               // [m] corner sphere radius
+    double dissipation;          // [s/m] Hunt-Crossley c
+    double transition_velocity;  // [m/s] Simbody's friction transition (creep) velocity vt
+    double accuracy;             // integrator accuracy (Simbody's relative/weighted error per step)
+    int integrator;              // 0 Runge-Kutta-Merson, 1 CPodes (BDF, for stiff contact)
+    double slide_limit;          // [b] failures past these (the other adapters')
+    double penetration_limit;    // [b]
+};
+
+Knobs read_knobs(const EngineSettings& s) {
+    const SettingsReader r(kName, s,
+                           {"stiffness", "radius", "dissipation", "transition_velocity", "accuracy",
+                            "integrator", "slide_limit", "penetration_limit", "moving_supports"});
+    Knobs k{};
+    const double compliant = r.number("compliant", 1.0);
+    require(compliant == 1.0, std::string(kName) + " setting compliant", "1", compliant);
+    // Defaults, measured with `vssw compare` and single free vibrations on the Fig. 6 walls (4 m x 0.4 m, h1/h 0.7):
+    // stiffness 1e15 Pa with radius 1e-4 m (E sqrt(r) = 1e13 N/m^1.5: a base corner sinks 1.6e-6 m under the whole
+    // Fig. 6 VSSW). The threshold error has a compliance part and a rolling part (the spheres roll by r theta):
+    // -0.17 % at (1e13 Pa, 1e-3 m), -0.068 % at (1e14, 1e-3), -0.051 % at (1e15, 1e-3), -0.12 % at (3.16e13, 1e-4)
+    // (same E sqrt(r) as the first), -0.64 % at (3.16e12, 1e-2), -0.0085 % at the defaults.
+    k.stiffness = r.positive("stiffness", 1e15);
+    k.radius = r.positive("radius", 1e-4);
+    // dissipation 1000 s/m: a corner striking at ~0.1 m/s has c v ~ 100, a plastic contact. Housner's e on the
+    // Fig. 6 parapet: -0.027 % (every impact alike) at 1000; +0.22 % at 100 (impacts differ by 0.2 %: a partly
+    // elastic contact); the VSSW's first impact 0.8287 at 1000, 0.8183 at 100, 0.7910 at 10 (whole-mechanism 0.8252).
+    k.dissipation = r.non_negative("dissipation", 1000.0);
+    // transition_velocity 1e-4 m/s: the base creeps 1.1e-5 m in a 3.6 s free vibration of the Fig. 6 VSSW (1.4e-5
+    // m for the parapet), 1.8e-4 m with dissipation 10; 1e-5 m/s changes no metric beyond the sampling's and costs
+    // 1.3x the steps.
+    k.transition_velocity = r.positive("transition_velocity", 1e-4);
+    // accuracy 1e-6: the flight agrees with the analytic model to 1e-6 rad at 1e-6 and 1e-8 alike; tighter settings
+    // resolve the ~1 ms the impact lasts differently, which only moves the samples that fall inside it.
+    k.accuracy = r.positive("accuracy", 1e-6);
+    // integrator 1 (CPodes, BDF): the contacts are stiff (friction slope mu N / vt); Runge-Kutta-Merson took 881k
+    // steps and 141 s for a 3.6 s free vibration of the Fig. 6 VSSW (E 1e13, r 1e-3), CPodes 13k steps and 0.9 s, with
+    // the same period and restitution to 2e-5.
+    k.integrator = r.choice("integrator", 1, 2);
+    k.slide_limit = r.positive("slide_limit", 5e-2);
+    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    require(k.accuracy < 1.0, std::string(kName) + " setting accuracy", "below 1", k.accuracy);
+    if (r.flag("moving_supports"))
+        throw InputError(fmt::format("{} setting moving_supports = 1 is not supported: the compliant route drives the "
+                                     "wall by pseudo-forces only (moving_supports = 0)",
+                                     kName));
+    return k;
+}
+
+class CompliantScene {
+public:
+    CompliantScene(const WallScene& scene, const Excitation& ex, const Knobs& k)
+        : matter_(system_), forces_(system_), tracker_(system_), contact_(system_, tracker_),
+          sizes_(block_sizes(scene)), r_(k.radius) {
+        using namespace SimTK;
+        const double b = sizes_.b, mu = scene.friction;
+        // Equal materials on both sides combine as E_material / 2^1.5 (Simbody's 2/3-power rule).
+        const double E = k.stiffness * std::pow(2.0, 1.5);
+        const ContactMaterial rough(E, k.dissipation, mu, mu, 0.0);
+        const ContactMaterial smooth(E, k.dissipation, 0.0, 0.0, 0.0);
+        contact_.setTransitionVelocity(k.transition_velocity);
+        SimTK::Force::UniformGravity(forces_, matter_, Vec3(0, -scene.gravity(), 0));
+
+        // Cliques: `guides` holds the guides and every sphere that must not meet them; `planes` the half-spaces.
+        const ContactCliqueId guides = ContactSurface::createNewContactClique();
+        const ContactCliqueId planes = ContactSurface::createNewContactClique();
+        // A half-space occupies x > 0 of its frame: turned by -90 deg about z it is y < 0 (the ground).
+        matter_.Ground().updBody().addContactSurface(
+            Transform(Rotation(-0.5 * Pi, ZAxis), Vec3(0)),
+            ContactSurface(ContactGeometry::HalfSpace(), rough).joinClique(planes));
+
+        const bool vssw = scene.vssw.has_value();
+        Body::Rigid lower_body = block_body(sizes_.h_lower, sizes_.m_lower);
+        for (double side : {1.0, -1.0})
+            lower_body.addContactSurface(Transform(Vec3(side * b, -sizes_.h_lower, 0)),
+                                         ContactSurface(ContactGeometry::Sphere(r_), rough).joinClique(guides));
+        if (vssw)  // the hinge: the lower block's top face, y < h1 in its frame
+            lower_body.addContactSurface(Transform(Rotation(-0.5 * Pi, ZAxis), Vec3(0, sizes_.h_lower, 0)),
+                                         ContactSurface(ContactGeometry::HalfSpace(), rough).joinClique(planes));
+        lower_ = MobilizedBody::Planar(matter_.Ground(), Transform(), lower_body, Transform());
+        if (vssw) {
+            Body::Rigid upper_body = block_body(sizes_.h_upper, sizes_.m_upper);
+            for (double side : {1.0, -1.0}) {
+                upper_body.addContactSurface(Transform(Vec3(side * b, -sizes_.h_upper, 0)),
+                                             ContactSurface(ContactGeometry::Sphere(r_), rough).joinClique(guides));
+                upper_body.addContactSurface(Transform(Vec3(side * b, sizes_.h_upper, 0)),
+                                             ContactSurface(ContactGeometry::Sphere(r_), smooth));
+            }
+            upper_ = MobilizedBody::Planar(matter_.Ground(), Transform(), upper_body, Transform());
+            has_upper_ = true;
+            // Roller guides: the half-space x > 0 moved to x > b + r, and turned by 180 deg about z to x < -(b + r).
+            matter_.Ground().updBody().addContactSurface(
+                Transform(Vec3(b + r_, 0, 0)),
+                ContactSurface(ContactGeometry::HalfSpace(), smooth).joinClique(guides).joinClique(planes));
+            matter_.Ground().updBody().addContactSurface(
+                Transform(Rotation(Pi, ZAxis), Vec3(-(b + r_), 0, 0)),
+                ContactSurface(ContactGeometry::HalfSpace(), smooth).joinClique(guides).joinClique(planes));
+        }
+        const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
+        // a_h at the integrator's own times: the error control follows a record between its samples.
+        SimTK::Force::Custom(forces_, new WallLoads([&a_h = ex.horizontal](const State& st) { return a_h(st.getTime()); },
+                                                    lower_, has_upper_ ? &upper_ : nullptr, sizes_, N));
+
+        state_ = system_.realizeTopology();
+        const WallPose pose = pose_at(scene, ex.theta0);
+        // The spheres are centred on the corners: the wall stands r (lower) and 2r (upper) higher than the analytic
+        // pose, touching without penetration (the hinge to r theta^2 / 2).
+        place(lower_, pose.lower, r_);
+        if (has_upper_) place(upper_, pose.upper, 2.0 * r_);
+        system_.realize(state_, Stage::Position);
+    }
+
+    const SimTK::MultibodySystem& system() const { return system_; }
+    const SimTK::State& initial_state() const { return state_; }
+    const SimTK::MobilizedBody& lower() const { return lower_; }
+    const SimTK::MobilizedBody& upper() const { return upper_; }
+    const SimTK::CompliantContactSubsystem& contact() const { return contact_; }
+    bool has_upper() const { return has_upper_; }
+
+private:
+    SimTK::Body::Rigid block_body(double half_h, double mass_per_depth) const {
+        using namespace SimTK;
+        // I_z = m (b^2 + h^2) / 3 = m R^2 / 3, as the analytic model's homogeneous blocks.
+        return Body::Rigid(
+            MassProperties(mass_per_depth * kDepth, Vec3(0), UnitInertia::brick(sizes_.b, half_h, 0.5 * kDepth)));
+    }
+
+    void place(SimTK::MobilizedBody& body, const BlockPose& p, double lift) {
+        body.setQToFitTransform(
+            state_, SimTK::Transform(SimTK::Rotation(-p.angle, SimTK::ZAxis), SimTK::Vec3(p.x, p.y + lift, 0)));
+    }
+
+    SimTK::MultibodySystem system_;
+    SimTK::SimbodyMatterSubsystem matter_;
+    SimTK::GeneralForceSubsystem forces_;
+    SimTK::ContactTrackerSubsystem tracker_;
+    SimTK::CompliantContactSubsystem contact_;
+    BlockSizes sizes_;
+    double r_;
+    SimTK::MobilizedBody lower_, upper_;
+    bool has_upper_ = false;
+    SimTK::State state_;
+};
+
+}  // namespace
+
+Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) {
+    require(std::isfinite(settings.dt) && settings.dt > 0.0, "Simbody (compliant) reporting interval dt (s)",
+            "a positive finite number", settings.dt);
+    if (scene.vssw.has_value() == scene.parapet.has_value())
+        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+    const Knobs knobs = read_knobs(settings);
+    const double dt = settings.dt;
+    const CompliantScene w(scene, ex, knobs);
+    const BlockSizes s = block_sizes(scene);
+    const double g = scene.gravity(), r = knobs.radius;
+    const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
+    const double h_total = s.h_lower + s.h_upper;
+    const bool vssw = w.has_upper();
+    const SimTK::MobilizedBody& lower = w.lower();
+    const SimTK::MobilizedBody& upper = w.upper();
+    // Rest positions: the analytic ones lifted by the spheres (r under the lower block, 2r under the upper one).
+    const WallBodies bodies{lower, upper, vssw, s, g, N, s.h_lower + r, 2.0 * s.h_lower + s.h_upper + 2.0 * r,
+                            2.0 * h_total + (vssw ? 2.0 : 1.0) * r};
+
+    const QuietStdout quiet;
+    std::unique_ptr<SimTK::Integrator> integ;
+    if (knobs.integrator == 1)
+        integ = std::make_unique<SimTK::CPodesIntegrator>(w.system());
+    else
+        integ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(w.system());
+    integ->setAccuracy(knobs.accuracy);
+    integ->setAllowInterpolation(false);  // every report is a step end: no interpolation error in the samples
+    integ->setFinalTime(ex.t_end);
+    // CPodes stops after 500 internal steps per stepTo by default and then prints "[CPODES ERROR] mxstep steps
+    // taken" on stderr: measured at the first impact of the Fig. 6 VSSW with accuracy 1e-8 or transition_velocity
+    // 1e-5 (1 ms reports). A larger limit keeps stderr clean; the loop below still guards against no progress.
+    integ->setInternalStepLimit(kStepsPerCall);
+    try {
+        integ->initialize(w.initial_state());
+    } catch (const std::exception& e) {
+        throw EngineFailure(fmt::format("{}: initialisation failed: {}", kName, e.what()));
+    }
+
+    Trajectory out;
+    const long every = settings.sample_dt > 0.0 ? std::max(1L, std::lround(settings.sample_dt / dt)) : 1L;
+    auto record = [&](double t) {
+        const SimTK::State& st = integ->getState();
+        w.system().realize(st, SimTK::Stage::Velocity);
+        TrajectorySample p = sample_of(bodies, st, t);
+        p.contacts = w.contact().getNumContactForces(st);
+        out.samples.push_back(p);
+    };
+
+    const long n_reports = std::lround(ex.t_end / dt);
+    record(0.0);
+    RunMonitor monitor(kName, scene, ex, dt, knobs.slide_limit, knobs.penetration_limit);
+    for (long i = 1; i <= n_reports; ++i) {
+        const double t = std::min(static_cast<double>(i) * dt, ex.t_end);
+        // stepTo returns early at the start of the run (StartOfContinuousInterval, nothing integrated) and when the
+        // internal step limit is reached: step again until the report time is reached (a sample labelled with a
+        // time the state has not reached moved the first impact of a tight-accuracy run by 0.4 ms).
+        for (int call = 0; integ->getTime() < t && !integ->isSimulationOver(); ++call) {
+            if (call == kMaxCallsPerReport)
+                throw EngineFailure(fmt::format("{}: the integrator is stuck at t = {:.9g} s ({} steps taken)",
+                                                kName, integ->getTime(), integ->getNumStepsTaken()));
+            try {
+                integ->stepTo(t);
+            } catch (const std::exception& e) {
+                throw EngineFailure(fmt::format("{}: {} at t = {:.6g} s", kName, e.what(), integ->getTime()));
+            }
+        }
+        if (integ->isSimulationOver() &&
+            integ->getTerminationReason() != SimTK::Integrator::ReachedFinalTime)
+            throw EngineFailure(
+                fmt::format("{}: the integrator stopped ({}) at t = {:.6g} s", kName,
+                            SimTK::Integrator::getTerminationReasonString(integ->getTerminationReason()).c_str(),
+                            integ->getTime()));
+        out.steps = integ->getNumStepsTaken();
+
+        const SimTK::State& now = integ->getState();
+        w.system().realize(now, SimTK::Stage::Velocity);
+        const double theta = clockwise_angle(lower, now);
+        const double rate = -lower.getBodyAngularVelocity(now)[2];
+        // Base corners = sphere centres; their heights above the ground less r (negative: penetration).
+        const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
+        const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
+        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1] - r, left[0] + s.b, left[1] - r});
+        if (i % every == 0 || i == n_reports || verdict != RunMonitor::Verdict::go_on) record(t);
+        if (RunMonitor::ends_run(verdict, out)) return out;
+    }
+    return out;
+}
+
+}  // namespace vssw::multibody

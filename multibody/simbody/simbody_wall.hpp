@@ -1,0 +1,102 @@
+#pragma once
+// What both Simbody routes (simbody_engine.cpp, simbody_compliant.cpp) share: the loads on the wall and the reading of
+// a state into a trajectory sample. Includes <Simbody.h>: only those two files may include it (engine headers stay
+// inside their adapter).
+#include <Simbody.h>
+
+#include <cmath>
+#include <functional>
+#include <utility>
+
+#include "multibody/engine.hpp"
+#include "multibody/scene_geometry.hpp"
+
+namespace vssw::multibody::simbody_wall {
+
+constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
+
+// Pseudo-forces -m a_h at the centres of mass (fixed supports) and N at the centre of the top face (only when N > 0).
+// The acceleration comes from the route: the rigid route's step midpoint value, the compliant route's a_h(t).
+class WallLoads : public SimTK::Force::Custom::Implementation {
+public:
+    WallLoads(std::function<double(const SimTK::State&)> a_h, const SimTK::MobilizedBody& lower,
+              const SimTK::MobilizedBody* upper, const BlockSizes& sizes, double N)
+        : a_h_(std::move(a_h)), lower_(lower), has_upper_(upper != nullptr), sizes_(sizes), N_(N) {
+        if (upper) upper_ = *upper;
+    }
+    void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                   SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+        const double a = a_h_(s);
+        if (a != 0.0) {
+            lower_.applyForceToBodyPoint(s, SimTK::Vec3(0), SimTK::Vec3(-sizes_.m_lower * kDepth * a, 0, 0),
+                                         body_forces);
+            if (has_upper_)
+                upper_.applyForceToBodyPoint(s, SimTK::Vec3(0), SimTK::Vec3(-sizes_.m_upper * kDepth * a, 0, 0),
+                                             body_forces);
+        }
+        if (N_ > 0.0) {
+            const SimTK::MobilizedBody& top = has_upper_ ? upper_ : lower_;
+            const double half = has_upper_ ? sizes_.h_upper : sizes_.h_lower;
+            top.applyForceToBodyPoint(s, SimTK::Vec3(0, half, 0), SimTK::Vec3(0, -N_, 0), body_forces);
+        }
+    }
+    SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0.0; }
+    bool dependsOnlyOnPositions() const override { return false; }
+
+private:
+    std::function<double(const SimTK::State&)> a_h_;
+    SimTK::MobilizedBody lower_, upper_;
+    bool has_upper_;
+    BlockSizes sizes_;
+    double N_;
+};
+
+// Clockwise angle of a body about z.
+inline double clockwise_angle(const SimTK::MobilizedBody& body, const SimTK::State& s) {
+    const SimTK::Rotation& r = body.getBodyRotation(s);
+    return -std::atan2(r[1][0], r[0][0]);
+}
+
+// A point of a body (body coordinates lx, ly) in the world.
+inline SimTK::Vec3 world_point(const SimTK::MobilizedBody& body, const SimTK::State& s, double lx, double ly) {
+    return body.findStationLocationInGround(s, SimTK::Vec3(lx, ly, 0));
+}
+
+// The wall as a sampler of states: its bodies and the heights of its centres and top at rest (from which the
+// potential energy and the top's rise are counted).
+struct WallBodies {
+    SimTK::MobilizedBody lower, upper;
+    bool vssw;
+    BlockSizes sizes;
+    double g, N;                         // N in newtons for the scene's depth
+    double y_lower0, y_upper0, y_top0;  // [m] at rest
+};
+
+// The sample of a state realized to Velocity (contacts left to the route, which counts them its own way).
+inline TrajectorySample sample_of(const WallBodies& w, const SimTK::State& st, double t) {
+    const BlockSizes& s = w.sizes;
+    const SimTK::MobilizedBody& top_body = w.vssw ? w.upper : w.lower;
+    const double top_half = w.vssw ? s.h_upper : s.h_lower;
+    TrajectorySample p{};
+    p.t = t;
+    p.theta1 = clockwise_angle(w.lower, st);
+    p.theta1_dot = -w.lower.getBodyAngularVelocity(st)[2];
+    p.theta2 = w.vssw ? clockwise_angle(w.upper, st) : 0.0;
+    p.top_dy = world_point(top_body, st, 0.0, top_half)[1] - w.y_top0;
+    // Homogeneous blocks: I = m (b^2 + h^2) / 3 about the centre.
+    auto kinetic = [&](const SimTK::MobilizedBody& body, double mass, double half_h) {
+        const SimTK::Vec3 v = body.getBodyOriginVelocity(st);
+        const double wz = body.getBodyAngularVelocity(st)[2];
+        return 0.5 * mass * (v[0] * v[0] + v[1] * v[1]) + 0.5 * mass * (s.b * s.b + half_h * half_h) / 3.0 * wz * wz;
+    };
+    p.kinetic = (kinetic(w.lower, s.m_lower * kDepth, s.h_lower) +
+                 (w.vssw ? kinetic(w.upper, s.m_upper * kDepth, s.h_upper) : 0.0)) /
+                kDepth;
+    p.potential = (s.m_lower * kDepth * w.g * (w.lower.getBodyOriginLocation(st)[1] - w.y_lower0) +
+                   (w.vssw ? s.m_upper * kDepth * w.g * (w.upper.getBodyOriginLocation(st)[1] - w.y_upper0) : 0.0) +
+                   w.N * p.top_dy) /
+                  kDepth;
+    return p;
+}
+
+}  // namespace vssw::multibody::simbody_wall

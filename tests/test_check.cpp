@@ -1,0 +1,226 @@
+// `vssw check`: the bounds file (TOML and JSON, one schema, every malformation a message naming it), bounds held
+// against results (inside, outside, not measured, engine failed), and the command end to end on the analytic model
+// (exit 0 when the stored values hold, 1 when one does not, 2 on a bad file).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/wall.hpp"
+#include "apps/bounds_file.hpp"
+#include "apps/cli.hpp"
+#include "compare/bounds.hpp"
+#include "tests/cli_runner.hpp"
+
+namespace {
+
+using vssw::InputError;
+using vssw::cli::parse_bounds;
+using vssw::compare::Bounds;
+using vssw::compare::BoundVerdict;
+using vssw::compare::SuiteResults;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const char* const kToml = R"(
+suite = "default"
+
+[[analytic]]
+case = "fig6-vssw"
+metric = "threshold_g"
+reference = 0.25
+max_drift = 1e-6
+
+[[engine]]
+engine = "ode"
+cases = ["fig6-vssw", "fig6-pw"]
+metric = "period"
+max_error = 0.005
+
+[[engine]]
+engine = "bullet"
+cases = ["fig6-vssw/r0.5"]
+metric = "restitution"
+error = [-0.16, -0.10]
+)";
+
+const char* const kJson = R"({
+  "suite": "default",
+  "analytic": [{"case": "fig6-vssw", "metric": "threshold_g", "reference": 0.25, "max_drift": 1e-6}],
+  "engine": [
+    {"engine": "ode", "cases": ["fig6-vssw", "fig6-pw"], "metric": "period", "max_error": 0.005},
+    {"engine": "bullet", "cases": ["fig6-vssw/r0.5"], "metric": "restitution", "error": [-0.16, -0.10]}
+  ]
+})";
+
+// The message of the InputError the text raises ("" if it parses).
+std::string error_of(const std::string& text, const std::string& format = "toml") {
+    try {
+        parse_bounds(text, format, "b." + format);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(BoundsFile, TomlAndJsonSayTheSame) {
+    for (const auto& [text, format] : {std::pair{kToml, "toml"}, std::pair{kJson, "json"}}) {
+        const Bounds b = parse_bounds(text, format, "b");
+        EXPECT_EQ(b.suite, "default");
+        ASSERT_EQ(b.analytic.size(), 1u);
+        EXPECT_EQ(b.analytic[0].case_id, "fig6-vssw");
+        EXPECT_EQ(b.analytic[0].reference, 0.25);
+        EXPECT_EQ(b.analytic[0].max_drift, 1e-6);
+        ASSERT_EQ(b.engines.size(), 2u);
+        EXPECT_EQ(b.engines[0].case_ids, (std::vector<std::string>{"fig6-vssw", "fig6-pw"}));
+        EXPECT_EQ(b.engines[0].min_error, -0.005);  // max_error x means [-x, x]
+        EXPECT_EQ(b.engines[0].max_error, 0.005);
+        EXPECT_EQ(b.engines[1].min_error, -0.16);
+        EXPECT_EQ(b.engines[1].max_error, -0.10);
+    }
+}
+
+TEST(BoundsFile, CasesAndEnginesNeededAreListedOnce) {
+    const Bounds b = parse_bounds(kToml, "toml", "b");
+    EXPECT_EQ(vssw::compare::cases_needed(b), (std::vector<std::string>{"fig6-vssw", "fig6-pw", "fig6-vssw/r0.5"}));
+    EXPECT_EQ(vssw::compare::engines_needed(b), (std::vector<std::string>{"ode", "bullet"}));
+}
+
+TEST(BoundsFile, EachMalformationIsNamed) {
+    EXPECT_NE(error_of("suite = \"default\"\n[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\n"
+                       "max_eror = 0.1\n")
+                  .find("unknown key 'max_eror'"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[analytic]]\ncase = \"a\"\nmetric = \"period\"\nmax_drift = 1e-6\n").find("'reference' is missing"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\nmax_error = -0.1\n")
+                  .find("'max_error' must be >= 0, got -0.1"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\nerror = [0.1, -0.1]\n")
+                  .find("min > max"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[analytic]]\ncase = \"a\"\nmetric = \"p\"\nreference = nan\nmax_drift = 1e-6\n")
+                  .find("'reference' must be a finite number"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = []\nmetric = \"period\"\nmax_error = 0.1\n")
+                  .find("non-empty list"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\n").find("exactly one of"),
+              std::string::npos);
+    EXPECT_NE(error_of("suite = \"default\"\n").find("no bounds"), std::string::npos);
+    EXPECT_NE(error_of("[[engine]\n").find("TOML syntax error at line 1"), std::string::npos);
+    EXPECT_NE(error_of("{\"engine\": [", "json").find("JSON syntax error"), std::string::npos);
+    EXPECT_NE(error_of("{\"bounds\": []}", "json").find("unknown key 'bounds'"), std::string::npos);
+}
+
+TEST(BoundsFile, AMissingFileOrAnUnknownFormatIsNamed) {
+    try {
+        vssw::cli::read_bounds_file("/nonexistent/bounds.toml");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/bounds.toml"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(vssw::cli::read_bounds_file("bounds.yaml"), InputError);
+}
+
+// Results as a run would leave them, built by hand so every branch of evaluate() is reached.
+SuiteResults hand_made_results() {
+    SuiteResults r;
+    r.suite = "default";
+    r.rows.push_back({"fig6-vssw", "analytic", "threshold_g", 0.25, 0.2500001, 0.0, "analytic model", "g"});
+    r.rows.push_back({"fig6-vssw", "ode", "period", 3.0, 3.003, 1e-3, "analytic model", "s"});
+    r.rows.push_back({"fig6-pw", "ode", "period", 3.0, 3.03, 1e-2, "analytic model", "s"});
+    r.rows.push_back({"fig6-vssw/r0.5", "bullet", "restitution", 0.95, kNaN, kNaN, "analytic model", ""});
+    r.failures.push_back({"fig6-vssw/r0.5", "bullet", "Bullet: the wall slid 0.01 m at t = 1 s"});
+    return r;
+}
+
+TEST(Bounds, AValueIsHeldAgainstItsIntervalAndAnythingUnmeasuredFails) {
+    const std::vector<BoundVerdict> v = vssw::compare::evaluate(parse_bounds(kToml, "toml", "b"), hand_made_results());
+    ASSERT_EQ(v.size(), 4u);
+    EXPECT_TRUE(v[0].held) << "analytic drift 4e-7 within 1e-6";
+    EXPECT_TRUE(v[1].held) << "ode period error 1e-3 within 5e-3";
+    EXPECT_FALSE(v[2].held) << "ode period error 1e-2 outside 5e-3";
+    EXPECT_TRUE(v[2].note.empty());
+    EXPECT_FALSE(v[3].held) << "a failed engine run holds no bound";
+    EXPECT_NE(v[3].note.find("slid 0.01 m"), std::string::npos) << v[3].note;
+}
+
+TEST(Bounds, AnAnalyticDriftPastTheStoredValueFails) {
+    SuiteResults r = hand_made_results();
+    r.rows[0].engine_value = 0.25 * (1.0 + 2e-6);  // twice the allowed drift
+    const std::vector<BoundVerdict> v = vssw::compare::evaluate(parse_bounds(kToml, "toml", "b"), r);
+    EXPECT_FALSE(v[0].held);
+}
+
+TEST(Bounds, AZeroReferenceBoundsTheValueItself) {
+    const Bounds b = parse_bounds("[[analytic]]\ncase = \"h\"\nmetric = \"overturned\"\nreference = 0\nmax_drift = 0.5\n",
+                                  "toml", "b");
+    SuiteResults r;
+    r.rows.push_back({"h", "analytic", "overturned", 0.0, 0.0, 0.0, "analytic model", ""});
+    EXPECT_TRUE(vssw::compare::evaluate(b, r)[0].held);
+    r.rows[0].engine_value = 1.0;  // it fell
+    EXPECT_FALSE(vssw::compare::evaluate(b, r)[0].held);
+}
+
+// The command end to end, on the analytic model only (fast): the Fig. 6 VSSW's threshold against Eq. (12)'s
+// closed form, which the bisection reaches to its 1e-4 bracket.
+using vssw::testing::CliResult;
+using vssw::testing::run_cli;
+
+CliResult run_check(const std::string& bounds_text, const std::string& extension = ".toml") {
+    const std::string path = ::testing::TempDir() + "vssw_check_bounds" + extension;
+    std::ofstream(path) << bounds_text;
+    const CliResult r = run_cli({"check", "--bounds", path});
+    std::remove(path.c_str());
+    return r;
+}
+
+std::string fig6_threshold_bound(double reference, double max_drift) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "[[analytic]]\ncase = \"fig6-vssw\"\nmetric = \"threshold_g\"\nreference = " << reference
+      << "\nmax_drift = " << max_drift << "\n";
+    return s.str();
+}
+
+// The bisection's bracket is 1e-4 of the threshold; its mid-point is within half of that of the true value.
+constexpr double kBisectionDrift = 1e-4;
+
+TEST(CheckCommand, HoldsWhenTheCoreMatchesItsReferenceAndFailsWithOneWhenItDoesNot) {
+    const double eq12 = vssw::eq12_threshold(vssw::make_vssw(4.0, 0.4, 0.7)) / 9.81;  // in g
+    const CliResult ok = run_check(fig6_threshold_bound(eq12, kBisectionDrift));
+    EXPECT_EQ(ok.code, 0) << ok.out << ok.err;
+    EXPECT_NE(ok.out.find("1 of 1 bounds hold"), std::string::npos) << ok.out;
+
+    const CliResult off = run_check(fig6_threshold_bound(eq12 * 1.01, kBisectionDrift));  // a stored value 1 % off
+    EXPECT_EQ(off.code, 1) << off.out << off.err;
+    EXPECT_NE(off.out.find("OUT"), std::string::npos) << off.out;
+    EXPECT_NE(off.err.find("1 of 1 bounds do not hold"), std::string::npos) << off.err;
+}
+
+TEST(CheckCommand, ABadFileExitsWithTwoAndNamesTheProblem) {
+    const CliResult missing = run_cli({"check", "--bounds", "/nonexistent/b.toml"});
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_NE(missing.err.find("/nonexistent/b.toml"), std::string::npos) << missing.err;
+
+    const CliResult unknown_case = run_check(
+        "[[engine]]\nengine = \"ode\"\ncases = [\"no-such-wall\"]\nmetric = \"period\"\nmax_error = 0.1\n");
+    EXPECT_EQ(unknown_case.code, 2);
+    EXPECT_NE(unknown_case.err.find("no-such-wall"), std::string::npos) << unknown_case.err;
+
+    const CliResult unknown_engine = run_check(
+        "[[engine]]\nengine = \"havok\"\ncases = [\"fig6-pw\"]\nmetric = \"period\"\nmax_error = 0.1\n");
+    EXPECT_EQ(unknown_engine.code, 2);
+    EXPECT_NE(unknown_engine.err.find("havok"), std::string::npos) << unknown_engine.err;
+}
+
+}  // namespace

@@ -1,0 +1,472 @@
+// `vssw report`'s writers on a hand-built SuiteResults (no simulation: fast), then the command end to end on two
+// cases of the default suite with ODE. What is checked: the Markdown's per-engine summary line and its rows with the
+// right relative error text, results.json round-tripping (NaN as null), one CSV line per row, HTML escaping and
+// inline SVG, a failure in every output, the report still written when gnuplot is missing, and bad --out.
+#include <gtest/gtest.h>
+
+#include "tests/cli_runner.hpp"
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analytic/error.hpp"
+#include "apps/cli.hpp"
+#include "apps/report_suite.hpp"
+#include "apps/report_suite_data.hpp"
+#include "apps/report_suite_document.hpp"
+#include "apps/report_suite_html.hpp"
+#include "apps/report_suite_markdown.hpp"
+#include "apps/report_suite_write.hpp"
+#include "multibody/engine.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using vssw::compare::CaseKind;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// results.json is written by nlohmann with the shortest round-tripping representation: values come back exactly;
+// this allows for nothing but the last bit.
+constexpr double kJsonRoundTrip = 1e-15;
+// CSV numbers are written with 17 significant digits: exact for doubles, up to the last bit.
+constexpr double kCsvRoundTrip = 1e-15;
+// A failure message with HTML and CSV special characters.
+const std::string kFailureMessage = "slid past 0.05 b at t = 1.2 s <x, \"y\"> & more";
+
+// A temporary folder, removed at the end of the test.
+struct TempDir {
+    fs::path path;
+    explicit TempDir(const std::string& name) {
+        std::string pattern = (fs::temp_directory_path() / ("vssw_report_" + name + "_XXXXXX")).string();
+        char* made = mkdtemp(pattern.data());
+        if (made == nullptr) throw std::runtime_error("mkdtemp failed");
+        path = made;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+std::string read(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+vssw::compare::MetricRow row(const std::string& case_id, const std::string& engine, const std::string& metric,
+                             double analytic, double value, const std::string& unit,
+                             const std::string& reference = "analytic model") {
+    const double rel = (std::isfinite(analytic) && std::isfinite(value)) ? value / analytic - 1.0 : kNaN;
+    return {case_id, engine, metric, analytic, value, rel, reference, unit};
+}
+
+// The suite: Fig. 6 VSSW threshold and free vibration, Fig. 6 PW threshold and a history, an ODE step study.
+vssw::compare::Suite hand_suite() {
+    vssw::compare::Suite s;
+    s.name = "default";
+    s.walls = {{"fig6-vssw", "Fig. 6 VSSW 4 x 0.4 m, h1/h 0.7", {}}, {"fig6-pw", "Fig. 6 PW 4 x 0.4 m", {}}};
+    s.records = {{"rinaldi-x0.17", "Northridge 1994, Rinaldi 228, x 0.17", "data/NGA_no_1063_RRS228.AT2", 0.17}};
+    s.cases = {{"fig6-vssw", CaseKind::threshold, "fig6-vssw", 0.0, "", {}, ""},
+               {"fig6-vssw/r0.5", CaseKind::free, "fig6-vssw", 0.5, "", {}, ""},
+               {"fig6-pw", CaseKind::threshold, "fig6-pw", 0.0, "", {}, ""},
+               {"fig6-pw/rinaldi-x0.17", CaseKind::history, "fig6-pw", 0.0, "rinaldi-x0.17", {}, ""}};
+    for (double dt : {1e-3, 5e-4, 2e-4}) {
+        std::ostringstream id;
+        id << "fig6-vssw/r0.5/dt" << dt << "/ode";
+        s.cases.push_back({id.str(), CaseKind::step, "fig6-vssw", 0.5, "", dt, "ode"});
+        s.step_study["ode"].push_back(dt);
+    }
+    return s;
+}
+
+vssw::compare::SuiteResults hand_results() {
+    vssw::compare::SuiteResults r;
+    r.suite = "default";
+    vssw::multibody::EngineSettings ode_settings;
+    ode_settings.dt = 2e-4;
+    ode_settings.knobs["erp"] = 0.2;
+    r.engines = {{"analytic", "vssw analytic (DOP853, rtol 1e-10)", {}},
+                 {"ode", "ODE 0.16.2 (double precision)", ode_settings},
+                 {"bullet", "Bullet 3.24 (double precision)", {}}};
+    r.rows = {
+        row("fig6-vssw", "analytic", "threshold_g", 0.286, 0.286, "g"),
+        row("fig6-vssw", "ode", "threshold_g", 0.286, 0.286, "g"),
+        row("fig6-vssw", "bullet", "threshold_g", 0.286, 0.2858, "g"),  // -0.07 %
+        row("fig6-vssw/r0.5", "ode", "period", 2.0, 1.9996, "s"),       // -0.02 %
+        row("fig6-vssw/r0.5", "bullet", "period", 2.0, 1.9994, "s"),
+        row("fig6-vssw/r0.5", "ode", "restitution", 0.95, 0.8246, ""),  // -13.2 %: outside 2 %
+        row("fig6-vssw/r0.5", "bullet", "restitution", 0.95, kNaN, ""),  // not measured
+        row("fig6-vssw/r0.5", "ode", "restitution_whole_mechanism", 0.8252, 0.8246, "",
+            "whole-mechanism plastic impact (roller acting)"),  // -0.07 %
+        row("fig6-pw", "ode", "threshold_g", 0.1, 0.1001, "g"),
+        row("fig6-pw/rinaldi-x0.17", "ode", "peak_rotation", 0.40, 0.42, "alpha"),  // +5 %, no target
+        {"fig6-pw/rinaldi-x0.17", "ode", "overturned", 0.0, 0.0, 0.0, "analytic model", ""},
+        row("fig6-vssw/r0.5/dt0.001/ode", "ode", "period", 2.0, 2.0 * (1 - 1.2e-3), "s"),  // first order in dt
+        row("fig6-vssw/r0.5/dt0.0005/ode", "ode", "period", 2.0, 2.0 * (1 - 6e-4), "s"),
+        row("fig6-vssw/r0.5/dt0.0002/ode", "ode", "period", 2.0, 2.0 * (1 - 2.4e-4), "s"),
+        row("fig6-vssw/r0.5/dt0.001/ode", "ode", "restitution", 0.95, 0.95 * (1 - 0.132), ""),  // no trend
+        row("fig6-vssw/r0.5/dt0.0005/ode", "ode", "restitution", 0.95, 0.95 * (1 - 0.133), ""),
+        row("fig6-vssw/r0.5/dt0.0002/ode", "ode", "restitution", 0.95, 0.95 * (1 - 0.132), ""),
+    };
+    r.failures = {{"fig6-pw", "bullet", kFailureMessage}};
+    vssw::compare::Trace a{"fig6-vssw/r0.5", "analytic", {}, {}}, o{"fig6-vssw/r0.5", "ode", {}, {}};
+    for (int i = 0; i <= 50; ++i) {
+        const double t = 0.01 * i;
+        a.t.push_back(t);
+        a.theta1_over_alpha.push_back(0.5 * std::cos(3.0 * t));
+        o.t.push_back(t);
+        o.theta1_over_alpha.push_back(0.5 * std::cos(3.001 * t));
+    }
+    r.traces = {a, o};
+    r.wall_time_s = 12.5;
+    r.threads = 2;
+    return r;
+}
+
+bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+
+struct Written {
+    TempDir dir;
+    vssw::cli::ReportFiles files;
+    std::string md, html;
+    Json json;
+};
+
+Written write_hand_report(const std::string& name, const vssw::cli::ReportOptions& options) {
+    Written w{TempDir(name), {}, {}, {}, {}};
+    const vssw::compare::Suite suite = hand_suite();
+    const vssw::compare::SuiteResults results = hand_results();
+    vssw::cli::ReportMeta meta;
+    meta.date = "2025-01-01T00:00:00Z";
+    meta.commit = "abc1234";
+    w.files = vssw::cli::write_suite_report(w.dir.path, suite, results, meta, options);
+    w.md = read(w.files.markdown);
+    w.html = read(w.files.html);
+    w.json = Json::parse(read(w.files.json));
+    return w;
+}
+
+vssw::cli::ReportOptions no_plots() {
+    vssw::cli::ReportOptions o;
+    o.plots = false;
+    return o;
+}
+
+// The Markdown table line of a case in the section that follows `heading`.
+std::string table_line(const std::string& md, const std::string& heading, const std::string& case_id) {
+    const auto start = md.find(heading);
+    if (start == std::string::npos) return "";
+    for (const std::string& line : lines_of(md.substr(start)))
+        if (line.rfind("| " + case_id + " |", 0) == 0) return line;
+    return "";
+}
+
+// --- the shared analysis ----------------------------------------------------------------------------------------
+
+TEST(ReportAnalysis, PercentTextAndFileStems) {
+    EXPECT_EQ(vssw::cli::percent(-0.132), "-13.2 %");
+    EXPECT_EQ(vssw::cli::percent(-6.993e-4), "-0.07 %");
+    EXPECT_EQ(vssw::cli::percent(0.0), "0 %");
+    EXPECT_EQ(vssw::cli::percent(2e-6), "+2.0e-04 %");
+    EXPECT_EQ(vssw::cli::percent(kNaN), "n/a");
+    EXPECT_EQ(vssw::cli::file_stem("fig6-vssw/r0.5/dt0.0005/ode"), "fig6-vssw_r0.5_dt0.0005_ode");
+}
+
+TEST(ReportAnalysis, CaseKindsAndStepsFromIdsWhenTheSuiteDoesNotList) {
+    const vssw::compare::Suite empty;
+    const vssw::compare::SuiteResults results;
+    const vssw::cli::ReportInput in{empty, results, {}};
+    EXPECT_EQ(vssw::cli::case_kind(in, "t1-07-xi0.1"), CaseKind::threshold);
+    EXPECT_EQ(vssw::cli::case_kind(in, "fig6-vssw/r0.5"), CaseKind::free);
+    EXPECT_EQ(vssw::cli::case_kind(in, "fig6-vssw/rinaldi-x0.45"), CaseKind::history);
+    EXPECT_EQ(vssw::cli::case_kind(in, "fig6-vssw/r0.5/dt0.0005/ode"), CaseKind::step);
+    EXPECT_DOUBLE_EQ(vssw::cli::case_step(in, "fig6-vssw/r0.5/dt0.0005/ode"), 5e-4);
+    EXPECT_DOUBLE_EQ(vssw::cli::case_step(in, "fig6-vssw/r0.5/dt0.001"), 1e-3);
+    EXPECT_TRUE(std::isnan(vssw::cli::case_step(in, "fig6-vssw/r0.5")));
+}
+
+TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
+    const vssw::compare::Suite suite = hand_suite();
+    const vssw::compare::SuiteResults results = hand_results();
+    const auto summaries = vssw::cli::summarize({suite, results, {}});
+    ASSERT_EQ(summaries.size(), 2u);  // ode, bullet: the analytic model is the reference
+    const vssw::cli::EngineSummary& ode = summaries[0];
+    EXPECT_EQ(ode.engine, "ode");
+    // threshold x2, period, restitution (outside), whole mechanism; the three step rows are not counted.
+    EXPECT_EQ(ode.with_target, 5);
+    EXPECT_EQ(ode.within, 4);
+    EXPECT_EQ(ode.line.rfind("ODE: 4/5 metrics within target; max |error| threshold +0.10 %, period -0.02 %, "
+                             "restitution -13.2 % (vs Eq. 19/Housner) / -0.07 % (vs whole mechanism), peak rotation "
+                             "+5.0 % (no target), overturning agrees on 1/1; 0 failures",
+                             0),
+              0u)
+        << ode.line;
+    const vssw::cli::EngineSummary& bullet = summaries[1];
+    EXPECT_EQ(bullet.not_measured, 1);
+    EXPECT_EQ(bullet.failures, 1);
+    EXPECT_TRUE(contains(bullet.line, "Bullet: 2/3 metrics within target (1 not measured)")) << bullet.line;
+    EXPECT_TRUE(contains(bullet.line, "; 1 failure")) << bullet.line;
+}
+
+TEST(ReportAnalysis, FindingsSayOnlyWhatTheNumbersShow) {
+    const vssw::compare::Suite suite = hand_suite();
+    const vssw::compare::SuiteResults results = hand_results();
+    const std::vector<std::string> found = vssw::cli::findings({suite, results, {}});
+    auto any = [&](const std::string& a, const std::string& b) {
+        for (const std::string& f : found)
+            if (contains(f, a) && contains(f, b)) return true;
+        return false;
+    };
+    // The restitution gap explained by the whole-mechanism impact, with the measured numbers.
+    EXPECT_TRUE(any("ODE's restitution is -13.2 % from the analytic model's impact (Eq. 19)",
+                    "within 0.073 % of the whole-mechanism plastic impact"));
+    // The step study: 1.2e-3, 6e-4, 2.4e-4 at 1, 0.5, 0.2 ms is first order.
+    EXPECT_TRUE(any("ODE's period error on fig6-vssw/r0.5", "roughly as dt^1.0 (1 ms: -0.12 %, 0.5 ms: -0.06 %"));
+    EXPECT_TRUE(any("ODE's restitution (vs Eq. 19/Housner) error on fig6-vssw/r0.5 hardly changes with the step",
+                    "it is not discretisation error"));
+    EXPECT_TRUE(any("ODE's restitution (first impact) is outside the 2 % target on 1 of 1 case", "-13.2 %"));
+    EXPECT_TRUE(any("Bullet failed on 1 of", kFailureMessage));
+    // Bullet's restitution was not measured: nothing is said about its impact law.
+    EXPECT_FALSE(any("Bullet's restitution is", "whole-mechanism"));
+}
+
+// --- the files ----------------------------------------------------------------------------------------------------
+
+TEST(ReportFiles, MarkdownHasSummaryLinesAndARowPerCaseWithItsError) {
+    const Written w = write_hand_report("md", no_plots());
+    EXPECT_TRUE(contains(w.md, "# vssw validation report: suite 'default'"));
+    EXPECT_TRUE(contains(w.md, "- ODE: 4/5 metrics within target;"));
+    EXPECT_TRUE(contains(w.md, "### ODE\n\n- ODE's threshold acceleration is within the 0.5 % target on all 2 cases"));
+    EXPECT_TRUE(contains(w.md, "- Bullet: 2/3 metrics within target (1 not measured)"));
+    EXPECT_TRUE(contains(w.md, "| ode | ODE 0.16.2 (double precision) | 0.0002 | default | erp=0.2 |"));
+    // Threshold: one row per case, reference, then value and error per engine (ODE, Bullet).
+    EXPECT_EQ(table_line(w.md, "### threshold acceleration", "fig6-vssw"),
+              "| fig6-vssw | 0.286 | 0.286 | 0 % | 0.2858 | -0.07 % |");
+    EXPECT_EQ(table_line(w.md, "### threshold acceleration", "fig6-pw"),
+              "| fig6-pw | 0.1 | 0.1001 | +0.10 % | **failed** | **failed** |");
+    // Outside the target: bold; not measured: n/a.
+    EXPECT_EQ(table_line(w.md, "### restitution (first impact)", "fig6-vssw/r0.5"),
+              "| fig6-vssw/r0.5 | 0.95 | 0.8246 | **-13.2 %** | n/a | **n/a** |");
+    EXPECT_EQ(table_line(w.md, "### overturning", "fig6-pw/rinaldi-x0.17"), "| fig6-pw/rinaldi-x0.17 | no | no | agrees | - | - |");
+    // Step study, failures (message in a table cell), no plots.
+    EXPECT_TRUE(contains(w.md, "| ODE | fig6-vssw/r0.5 | period | 0.2 ms: -0.02 %, 0.5 ms: -0.06 %, 1 ms: -0.12 % | 1.00 |"))
+        << w.md;
+    EXPECT_TRUE(contains(w.md, "| fig6-pw | bullet | **" + kFailureMessage + "** |"));
+    EXPECT_TRUE(contains(w.md, "Plots were not made (--no-plots)."));
+}
+
+TEST(ReportFiles, JsonRoundTripsWithNaNAsNull) {
+    const Written w = write_hand_report("json", no_plots());
+    const vssw::compare::SuiteResults results = hand_results();
+    const Json& j = w.json;
+    EXPECT_EQ(j["vssw"]["commit"], "abc1234");
+    EXPECT_EQ(j["date"], "2025-01-01T00:00:00Z");
+    EXPECT_EQ(j["suite"]["name"], "default");
+    EXPECT_EQ(j["suite"]["cases"].size(), hand_suite().cases.size());
+    EXPECT_EQ(j["suite"]["cases"][4]["kind"], "step");
+    EXPECT_DOUBLE_EQ(j["suite"]["cases"][4]["dt"].get<double>(), 1e-3);
+    ASSERT_EQ(j["engines"].size(), 3u);
+    EXPECT_EQ(j["engines"][1]["version"], "ODE 0.16.2 (double precision)");
+    EXPECT_DOUBLE_EQ(j["engines"][1]["settings"]["dt"].get<double>(), 2e-4);
+    EXPECT_DOUBLE_EQ(j["engines"][1]["settings"]["knobs"]["erp"].get<double>(), 0.2);
+    ASSERT_EQ(j["rows"].size(), results.rows.size());
+    for (std::size_t i = 0; i < results.rows.size(); ++i) {
+        const auto& r = results.rows[i];
+        const Json& x = j["rows"][i];
+        EXPECT_EQ(x["case_id"], r.case_id);
+        EXPECT_EQ(x["engine"], r.engine);
+        EXPECT_EQ(x["metric"], r.metric);
+        EXPECT_EQ(x["unit"], r.unit);
+        EXPECT_EQ(x["reference"], r.reference);
+        for (const auto& [key, value] : {std::pair<const char*, double>{"analytic", r.analytic},
+                                         {"engine_value", r.engine_value},
+                                         {"rel_error", r.rel_error}}) {
+            if (std::isnan(value)) {
+                EXPECT_TRUE(x[key].is_null()) << i << ' ' << key;
+            } else {
+                ASSERT_TRUE(x[key].is_number()) << i << ' ' << key;
+                EXPECT_NEAR(x[key].get<double>(), value, kJsonRoundTrip * std::abs(value)) << i << ' ' << key;
+            }
+        }
+    }
+    EXPECT_EQ(j["rows"][5]["within_target"], false);  // ODE's restitution, -13.2 %
+    EXPECT_EQ(j["rows"][3]["within_target"], true);   // ODE's period, -0.02 %
+    EXPECT_TRUE(j["rows"][9]["target"].is_null());    // peak rotation: no target
+    ASSERT_EQ(j["failures"].size(), 1u);
+    EXPECT_EQ(j["failures"][0]["message"], kFailureMessage);
+    EXPECT_EQ(j["summary"][0]["within"], 4);
+    EXPECT_EQ(j["traces"][1]["samples"], 51);
+    ASSERT_EQ(j["step_study"].size(), 2u);  // ODE's period and restitution, in that order
+    EXPECT_NEAR(j["step_study"][0]["order"].get<double>(), 1.0, 1e-9);  // errors exactly proportional to dt
+    EXPECT_EQ(j["plots"]["made"], false);
+    EXPECT_EQ(j["threads"], 2);
+}
+
+TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
+    const Written w = write_hand_report("csv", no_plots());
+    const vssw::compare::SuiteResults results = hand_results();
+    const auto metrics = lines_of(read(w.dir.path / "metrics.csv"));
+    ASSERT_EQ(metrics.size(), results.rows.size() + 1);
+    EXPECT_EQ(metrics[0], "case_id,engine,metric,unit,reference,analytic,engine_value,rel_error");
+    EXPECT_EQ(metrics[3].rfind("fig6-vssw,bullet,threshold_g,g,analytic model,0.28599999999999998,", 0), 0u)
+        << metrics[3];
+    // Read back the relative error of that row.
+    const double rel = std::stod(metrics[3].substr(metrics[3].rfind(',') + 1));
+    EXPECT_NEAR(rel, results.rows[2].rel_error, kCsvRoundTrip);
+    EXPECT_EQ(metrics[7], "fig6-vssw/r0.5,bullet,restitution,,analytic model,0.94999999999999996,,")
+        << "NaN is an empty field";
+
+    const auto failures = lines_of(read(w.dir.path / "failures.csv"));
+    ASSERT_EQ(failures.size(), 2u);
+    EXPECT_EQ(failures[0], "case_id,engine,message");
+    EXPECT_EQ(failures[1], "fig6-pw,bullet,\"slid past 0.05 b at t = 1.2 s <x, \"\"y\"\"> & more\"");
+
+    const auto traces = lines_of(read(w.dir.path / "traces.csv"));
+    EXPECT_EQ(traces.size(), 2u * 51u + 1u);
+    EXPECT_EQ(traces[0], "case_id,engine,t,theta1_over_alpha");
+    EXPECT_EQ(traces[1], "fig6-vssw/r0.5,analytic,0,0.5");
+}
+
+TEST(ReportFiles, HtmlEscapesTextAndShowsTheFailure) {
+    const Written w = write_hand_report("html", no_plots());
+    EXPECT_EQ(w.html.rfind("<!DOCTYPE html>", 0), 0u);
+    EXPECT_TRUE(contains(w.html, "</html>"));
+    EXPECT_TRUE(contains(w.html, "slid past 0.05 b at t = 1.2 s &lt;x, &quot;y&quot;&gt; &amp; more"));
+    EXPECT_FALSE(contains(w.html, "<x,"));
+    EXPECT_TRUE(contains(w.html, "<td class=\"flag\">-13.2 %</td>"));
+    EXPECT_TRUE(contains(w.html, "<li>ODE: 4/5 metrics within target;"));
+    EXPECT_FALSE(contains(w.html, "<svg")) << "no plots asked";
+    EXPECT_EQ(vssw::cli::html_escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+}
+
+TEST(ReportFiles, PlotsAreDrawnAndInlinedAsSvg) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const Written w = write_hand_report("plots", vssw::cli::ReportOptions{});
+    EXPECT_TRUE(w.files.plots_made);
+    EXPECT_TRUE(w.files.warnings.empty()) << w.files.warnings.front();
+    const fs::path plots = w.dir.path / "plots";
+    for (const char* name : {"trace_fig6-vssw_r0.5", "error_threshold_g", "error_restitution", "step_period"}) {
+        EXPECT_TRUE(fs::exists(plots / (std::string(name) + ".svg"))) << name;
+        EXPECT_TRUE(fs::exists(plots / (std::string(name) + ".gp"))) << name;
+        EXPECT_TRUE(fs::exists(plots / (std::string(name) + ".dat"))) << name;
+        EXPECT_TRUE(contains(w.md, std::string("](plots/") + name + ".svg)")) << name;
+    }
+    EXPECT_TRUE(contains(w.html, "<svg"));
+    EXPECT_FALSE(contains(w.html, "<?xml")) << "the SVG's prolog is not inlined";
+    EXPECT_EQ(w.json["plots"]["made"], true);
+    EXPECT_TRUE(contains(w.html, "slid past 0.05 b at t = 1.2 s &lt;x,"));
+}
+
+TEST(ReportFiles, WithoutGnuplotTheReportIsStillWritten) {
+    vssw::cli::ReportOptions options;
+    options.plot.gnuplot = "/nonexistent/vssw-test/gnuplot";
+    const Written w = write_hand_report("nognuplot", options);
+    EXPECT_FALSE(w.files.plots_made);
+    ASSERT_EQ(w.files.warnings.size(), 1u);
+    EXPECT_TRUE(contains(w.files.warnings[0], "could not be run")) << w.files.warnings[0];
+    EXPECT_TRUE(contains(w.md, "Plots: gnuplot ('/nonexistent/vssw-test/gnuplot') could not be run"));
+    EXPECT_TRUE(contains(w.md, "- ODE: 4/5 metrics within target;"));
+    EXPECT_FALSE(contains(w.html, "<svg"));
+    EXPECT_EQ(w.json["plots"]["made"], false);
+    // The scripts and data are there to draw them later; no SVG, no stray log.
+    EXPECT_TRUE(fs::exists(w.dir.path / "plots" / "error_threshold_g.gp"));
+    EXPECT_FALSE(fs::exists(w.dir.path / "plots" / "error_threshold_g.svg"));
+    EXPECT_FALSE(fs::exists(w.dir.path / "plots" / "error_threshold_g.log"));
+}
+
+TEST(ReportFiles, AFileInPlaceOfTheFolderIsBadInput) {
+    TempDir tmp("notdir");
+    const fs::path file = tmp.path / "file";
+    std::ofstream(file) << "x";
+    EXPECT_THROW(vssw::cli::prepare_report_dir(file), vssw::InputError);
+    EXPECT_NO_THROW(vssw::cli::prepare_report_dir(tmp.path / "new" / "deeper"));
+    EXPECT_TRUE(fs::is_directory(tmp.path / "new" / "deeper"));
+}
+
+// --- the command --------------------------------------------------------------------------------------------------
+
+using vssw::testing::CliResult;
+using vssw::testing::run_cli;
+
+int count_lines(const std::string& text) { return static_cast<int>(lines_of(text).size()); }
+
+TEST(ReportCommand, BadOutEngineOrCaseIsBadInputNamingIt) {
+    TempDir tmp("cmd_bad");
+    const fs::path file = tmp.path / "file";
+    std::ofstream(file) << "x";
+    CliResult r = run_cli({"report", "--out", file.string(), "--engines", "analytic"});
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_TRUE(contains(r.err, file.string())) << r.err;
+
+    r = run_cli({"report", "--out", (tmp.path / "o").string(), "--engines", "nosuchengine"});
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_TRUE(contains(r.err, "nosuchengine")) << r.err;
+
+    r = run_cli({"report", "--out", (tmp.path / "o").string(), "--engines", "analytic", "--cases", "fig6-nosuch"});
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_TRUE(contains(r.err, "fig6-nosuch")) << r.err;
+
+    r = run_cli({"report", "--out", (tmp.path / "o").string(), "--suite", "huge"});
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_TRUE(contains(r.err, "huge")) << r.err;
+
+    r = run_cli({"report", "--help"});
+    EXPECT_EQ(r.code, 0);
+    EXPECT_TRUE(contains(r.out, "results.json keys"));
+}
+
+TEST(ReportCommand, OdeOnTwoParapetCasesEndToEnd) {
+    const auto engines = vssw::multibody::available_engines();
+    if (std::find(engines.begin(), engines.end(), "ode") == engines.end()) GTEST_SKIP() << "ODE not in this build";
+    TempDir tmp("e2e");
+    const fs::path out = tmp.path / "report";
+    const CliResult r = run_cli({"report", "--engines", "ode", "--cases", "fig6-pw,fig6-pw/r0.5", "--threads", "2",
+                                 "--out", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "") << "no progress line when err is not a terminal, no warning";
+    for (const char* f : {"report.md", "report.html", "results.json", "metrics.csv", "failures.csv", "traces.csv"})
+        EXPECT_TRUE(fs::exists(out / f)) << f;
+    EXPECT_TRUE(contains(r.out, (out / "report.md").string()));
+    EXPECT_TRUE(contains(r.out, "ODE: ")) << r.out;
+
+    const Json j = Json::parse(read(out / "results.json"));
+    auto has_row = [&](const std::string& case_id, const std::string& engine, const std::string& metric) {
+        for (const Json& x : j["rows"])
+            if (x["case_id"] == case_id && x["engine"] == engine && x["metric"] == metric) return true;
+        return false;
+    };
+    for (const char* engine : {"analytic", "ode"}) {
+        EXPECT_TRUE(has_row("fig6-pw", engine, "threshold_g")) << engine;
+        EXPECT_TRUE(has_row("fig6-pw/r0.5", engine, "period")) << engine;
+        EXPECT_TRUE(has_row("fig6-pw/r0.5", engine, "restitution")) << engine;
+    }
+    EXPECT_EQ(j["engines"][0]["name"], "analytic");
+    EXPECT_EQ(j["engines"][1]["name"], "ode");
+    EXPECT_TRUE(j["failures"].empty()) << j["failures"];
+    if (gnuplot_available()) {
+        EXPECT_TRUE(fs::exists(out / "plots" / "trace_fig6-pw_r0.5.svg"));
+        EXPECT_TRUE(contains(read(out / "report.html"), "<svg"));
+    }
+}
+
+}  // namespace

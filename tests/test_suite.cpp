@@ -1,0 +1,457 @@
+// The validation suite's runner (compare/suite.hpp): what the shipped suites hold, case selection, and run_suite's
+// behaviour (analytic reference rows, determinism across threads, failures kept per case, engines that must not run
+// concurrently). Physics is checked where the suite states it: thresholds against Eq. (12) / Eq. (17), restitution
+// against Eq. (19) and the whole mechanism's plastic impact, records scaled to rock the analytic wall without
+// overturning it. Fast: the analytic engine (and fakes built on it), plus two cheap engine cases when compiled in.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "compare/suite.hpp"
+#include "multibody/analytic_engine.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::compare {
+namespace {
+
+using multibody::AnalyticEngine;
+using multibody::EngineFailure;
+using multibody::EngineSettings;
+using multibody::Excitation;
+using multibody::Trajectory;
+using multibody::WallScene;
+
+// find_threshold's bracket is 1e-4 wide relative (ThresholdOptions::rel_tol); its mid-point is within half of that
+// of the threshold, plus the bias of an undetected excess of at most 1e-5: 1e-4 covers both.
+constexpr double kBisectionTol = 1e-4;
+// The first-impact ratio read from samples 0.1 ms apart (the analytic engine's default output): the crossing is
+// misplaced by up to 0.05 dt and the velocities extrapolated over 3 dt (metrics.hpp); measured scatter on the Fig. 6
+// walls is 2e-5 around Eq. (19) and Housner's e. 2e-4 is ten times that.
+constexpr double kImpactSamplingTol = 2e-4;
+// A record "rocks the wall clearly": its peak is at least this fraction of alpha (the smallest of the four, the
+// Fig. 6 VSSW under Rinaldi x 0.45, is 0.27).
+constexpr double kClearRocking = 0.1;
+// ...and stays below alpha, the rest position's static instability (a PW falls past it; the VSSW's unstable
+// equilibrium is at 0.98 alpha1, its collapse angle Eq. 26 at 4.3 alpha1): the largest of the four is 0.47.
+constexpr double kBelowInstability = 1.0;
+// Issue 3's targets, as the cross-engine suite (tests/test_engines.cpp) asserts them: period within 0.5 %,
+// restitution within 2 %.
+constexpr double kPeriodTarget = 5e-3;
+constexpr double kRestitutionTarget = 2e-2;
+// A trace holds at most this many points (suite.cpp decimates to 2000 for the plots).
+constexpr std::size_t kMaxTracePoints = 2000;
+
+Suite default_suite() { return make_suite("default", VSSW_DATA_DIR); }
+
+bool has_engine(const std::string& name) {
+    const auto names = multibody::available_engines();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+const MetricRow* find_row(const SuiteResults& r, const std::string& case_id, const std::string& engine,
+                          const std::string& metric) {
+    for (const MetricRow& row : r.rows)
+        if (row.case_id == case_id && row.engine == engine && row.metric == metric) return &row;
+    return nullptr;
+}
+
+bool same_number(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
+
+// The analytic model under another name: its rows must equal the reference's exactly (same runs, same sampling).
+// `fail_parapet`: an EngineFailure on every parapet scene. `exclusive`: runs_concurrently() false, and it counts
+// how many of its simulate() calls overlap.
+class FakeEngine final : public multibody::Engine {
+public:
+    FakeEngine(std::string name, bool fail_parapet, bool exclusive)
+        : name_(std::move(name)), fail_parapet_(fail_parapet), exclusive_(exclusive) {}
+    std::string name() const override { return name_; }
+    std::string version() const override { return "fake 1.0"; }
+    EngineSettings default_settings() const override { return analytic_.default_settings(); }
+    bool runs_concurrently() const override { return !exclusive_; }
+    Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& s) const override {
+        const int now = ++running_;
+        int seen = max_running_.load();
+        while (now > seen && !max_running_.compare_exchange_weak(seen, now)) {
+        }
+        struct Leave {
+            std::atomic<int>& n;
+            ~Leave() { --n; }
+        } leave{running_};
+        if (fail_parapet_ && scene.parapet) throw EngineFailure(name_ + ": no parapets here");
+        if (exclusive_) std::this_thread::sleep_for(std::chrono::milliseconds(2));  // widen any overlap
+        return analytic_.simulate(scene, ex, s);
+    }
+    int max_running() const { return max_running_.load(); }
+
+private:
+    std::string name_;
+    bool fail_parapet_, exclusive_;
+    AnalyticEngine analytic_;
+    mutable std::atomic<int> running_{0}, max_running_{0};
+};
+
+// An engine whose runs are bad input: InputError must leave run_suite, not become a CaseFailure.
+class BadInputEngine final : public multibody::Engine {
+public:
+    std::string name() const override { return "bad-input"; }
+    std::string version() const override { return "0"; }
+    EngineSettings default_settings() const override { return {}; }
+    Trajectory simulate(const WallScene&, const Excitation&, const EngineSettings&) const override {
+        throw InputError("bad-input: a setting is wrong");
+    }
+};
+
+// The suites ----------------------------------------------------------------------------------------------------
+
+TEST(Suite, DefaultCasesAreUniqueAndEveryWallAndRecordExists) {
+    const Suite s = default_suite();
+    EXPECT_EQ(s.name, "default");
+    std::set<std::string> ids, walls;
+    for (const SuiteWall& w : s.walls) EXPECT_TRUE(walls.insert(w.id).second) << "duplicate wall " << w.id;
+    for (const SuiteCase& c : s.cases) {
+        EXPECT_TRUE(ids.insert(c.id).second) << "duplicate case " << c.id;
+        EXPECT_NO_THROW((void)s.wall(c.wall_id)) << c.id;
+        EXPECT_EQ(c.id.rfind(c.wall_id, 0), 0u) << c.id << " does not start with its wall";
+        if (c.kind == CaseKind::history) {
+            ASSERT_NO_THROW((void)s.record(c.record_id)) << c.id;
+            EXPECT_TRUE(std::filesystem::exists(s.record(c.record_id).path)) << s.record(c.record_id).path;
+        }
+        if (c.kind == CaseKind::step) {
+            ASSERT_TRUE(c.dt.has_value()) << c.id;
+            EXPECT_FALSE(c.engine.empty()) << c.id;
+            const std::string suffix = "/" + c.engine;
+            EXPECT_TRUE(c.id.size() > suffix.size() && c.id.compare(c.id.size() - suffix.size(), suffix.size(), suffix) == 0)
+                << c.id;
+            const auto& dts = s.step_study.at(c.engine);
+            EXPECT_NE(std::find(dts.begin(), dts.end(), *c.dt), dts.end()) << c.id;
+        } else {
+            EXPECT_TRUE(c.engine.empty()) << c.id;
+        }
+    }
+    // The issue's walls: Fig. 6 VSSW and PW, Table 1 #1, #7, #15 at xi 0, 0.1, 0.5; one threshold case each.
+    EXPECT_EQ(s.walls.size(), 11u);
+    for (const char* id : {"fig6-vssw", "fig6-pw", "t1-01-xi0", "t1-07-xi0.1", "t1-15-xi0.5"})
+        EXPECT_TRUE(walls.count(id)) << id;
+    EXPECT_TRUE(s.wall("fig6-pw").scene.parapet.has_value());
+    EXPECT_NEAR(s.wall("t1-07-xi0.1").scene.vssw->xi, 0.1, 1e-15);
+    EXPECT_NEAR(s.wall("t1-07-xi0.1").scene.vssw->hinge_ratio(), 0.5, 1e-12);
+    for (const SuiteWall& w : s.walls) EXPECT_TRUE(ids.count(w.id)) << "no threshold case for " << w.id;
+    for (const char* id : {"fig6-vssw/r0.2", "fig6-pw/r0.8", "t1-15-xi0.5/r0.5", "fig6-vssw/r0.5/dt0.0005/ode"})
+        EXPECT_TRUE(ids.count(id)) << id;
+    // Every engine's step study has four steps, each a case on the Fig. 6 VSSW.
+    for (const auto& [engine, dts] : s.step_study) EXPECT_EQ(dts.size(), 4u) << engine;
+    EXPECT_EQ(to_string(CaseKind::threshold), std::string("threshold"));
+    EXPECT_EQ(to_string(CaseKind::step), std::string("step"));
+}
+
+TEST(Suite, FullHoldsEveryTable1SpecimenWithDataAtEveryRelease) {
+    const Suite s = make_suite("full", VSSW_DATA_DIR);
+    std::set<std::string> ids;
+    for (const SuiteCase& c : s.cases) EXPECT_TRUE(ids.insert(c.id).second) << "duplicate case " << c.id;
+    EXPECT_EQ(s.walls.size(), 2u + 16u * 3u);  // 18 specimens less the two discarded (4, 12), three xi each
+    EXPECT_THROW((void)s.wall("t1-04-xi0"), InputError);
+    EXPECT_THROW((void)s.wall("t1-12-xi0"), InputError);
+    for (const char* id : {"t1-09-xi0.5/r0.2", "t1-18-xi0.1/r0.8", "fig6-pw/r0.5/dt0.0005/ode"})
+        EXPECT_TRUE(ids.count(id)) << id;
+}
+
+TEST(Suite, UnknownNameIsAnInputErrorNamingTheValidOnes) {
+    try {
+        (void)make_suite("quick", VSSW_DATA_DIR);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("quick"), std::string::npos) << m;
+        EXPECT_NE(m.find("default"), std::string::npos) << m;
+        EXPECT_NE(m.find("full"), std::string::npos) << m;
+    }
+}
+
+TEST(Suite, SelectKeepsOnlyTheNamedCasesAndWhatTheyNeed) {
+    const Suite s = select_cases(default_suite(), {"fig6-pw/rinaldi-x0.17", "t1-07-xi0", "fig6-vssw/r0.5/dt0.001/ode"});
+    EXPECT_EQ(s.name, "selection");
+    ASSERT_EQ(s.cases.size(), 3u);
+    std::set<std::string> walls;
+    for (const SuiteWall& w : s.walls) walls.insert(w.id);
+    EXPECT_EQ(walls, (std::set<std::string>{"fig6-pw", "t1-07-xi0", "fig6-vssw"}));
+    ASSERT_EQ(s.records.size(), 1u);
+    EXPECT_EQ(s.records.front().id, "rinaldi-x0.17");
+    ASSERT_EQ(s.step_study.size(), 1u);
+    EXPECT_EQ(s.step_study.at("ode"), std::vector<double>{1e-3});
+
+    try {
+        (void)select_cases(default_suite(), {"t1-07-xi0", "fig6-vssw/r0.3"});
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("fig6-vssw/r0.3"), std::string::npos) << e.what();
+    }
+}
+
+// Running ----------------------------------------------------------------------------------------------------------
+
+TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
+    const Suite suite = default_suite();
+    const Suite s = select_cases(suite, {"fig6-vssw", "fig6-pw", "t1-07-xi0.5", "fig6-vssw/r0.5", "fig6-pw/r0.5"});
+    RunOptions o;
+    o.threads = 2;
+    const SuiteResults r = run_suite(s, {"analytic"}, o);
+    EXPECT_TRUE(r.failures.empty());
+    ASSERT_EQ(r.engines.size(), 1u);
+    EXPECT_EQ(r.engines.front().name, "analytic");
+    EXPECT_FALSE(r.engines.front().version.empty());
+    for (const MetricRow& row : r.rows) {
+        EXPECT_EQ(row.engine, "analytic");
+        EXPECT_EQ(row.analytic, row.engine_value) << row.case_id << " " << row.metric;
+        EXPECT_EQ(row.rel_error, 0.0) << row.case_id << " " << row.metric;
+    }
+    for (const char* wall : {"fig6-vssw", "t1-07-xi0.5"}) {
+        const VsswGeometry& w = *suite.wall(wall).scene.vssw;
+        const MetricRow* t = find_row(r, wall, "analytic", "threshold_g");
+        ASSERT_NE(t, nullptr) << wall;
+        EXPECT_EQ(t->unit, "g");
+        EXPECT_NEAR(t->analytic / (eq12_threshold(w) / w.g), 1.0, kBisectionTol) << wall;
+    }
+    const ParapetGeometry& pw = *suite.wall("fig6-pw").scene.parapet;
+    ASSERT_NE(find_row(r, "fig6-pw", "analytic", "threshold_g"), nullptr);
+    EXPECT_NEAR(find_row(r, "fig6-pw", "analytic", "threshold_g")->analytic / (eq17_parapet_threshold(pw) / pw.g), 1.0,
+                kBisectionTol);
+
+    const VsswGeometry& fig6 = *suite.wall("fig6-vssw").scene.vssw;
+    const MetricRow* e = find_row(r, "fig6-vssw/r0.5", "analytic", "restitution");
+    ASSERT_NE(e, nullptr);
+    EXPECT_NEAR(e->analytic / eq19_restitution(fig6), 1.0, kImpactSamplingTol);
+    const MetricRow* whole = find_row(r, "fig6-vssw/r0.5", "analytic", "restitution_whole_mechanism");
+    ASSERT_NE(whole, nullptr);
+    EXPECT_EQ(whole->analytic, restitution_whole_mechanism(fig6));
+    EXPECT_NE(whole->reference.find("whole-mechanism"), std::string::npos);
+    EXPECT_NEAR(find_row(r, "fig6-pw/r0.5", "analytic", "restitution")->analytic / housner_restitution(pw.alpha), 1.0,
+                kImpactSamplingTol);
+    EXPECT_EQ(find_row(r, "fig6-pw/r0.5", "analytic", "restitution_whole_mechanism"), nullptr);  // VSSW only
+    EXPECT_GT(find_row(r, "fig6-pw/r0.5", "analytic", "period")->analytic, 0.0);
+
+    // Free cases keep one decimated analytic trace each, starting at the release (theta1 = 0.5 alpha).
+    ASSERT_EQ(r.traces.size(), 2u);
+    for (const Trace& t : r.traces) {
+        EXPECT_EQ(t.engine, "analytic");
+        ASSERT_FALSE(t.t.empty());
+        EXPECT_LE(t.t.size(), kMaxTracePoints);
+        EXPECT_EQ(t.t.size(), t.theta1_over_alpha.size());
+        EXPECT_NEAR(t.theta1_over_alpha.front(), 0.5, 1e-12);
+    }
+}
+
+TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
+    const Suite suite = default_suite();
+    std::vector<std::string> ids;
+    for (const SuiteCase& c : suite.cases)
+        if (c.kind == CaseKind::history) ids.push_back(c.id);
+    ASSERT_EQ(ids.size(), 4u);  // Rinaldi and El Centro on the Fig. 6 VSSW and PW
+    const SuiteResults r = run_suite(select_cases(suite, ids), {"analytic"});
+    EXPECT_TRUE(r.failures.empty());
+    for (const std::string& id : ids) {
+        const MetricRow* peak = find_row(r, id, "analytic", "peak_rotation");
+        const MetricRow* rms = find_row(r, id, "analytic", "rms_difference");
+        const MetricRow* over = find_row(r, id, "analytic", "overturned");
+        const MetricRow* when = find_row(r, id, "analytic", "peak_time");
+        ASSERT_TRUE(peak && rms && over && when) << id;
+        EXPECT_EQ(peak->unit, "alpha");
+        EXPECT_GT(peak->analytic, kClearRocking) << id;
+        EXPECT_LT(peak->analytic, kBelowInstability) << id;
+        EXPECT_EQ(over->analytic, 0.0) << id;
+        EXPECT_EQ(rms->engine_value, 0.0) << id;
+        EXPECT_EQ(rms->rel_error, 0.0) << id;
+        EXPECT_EQ(rms->analytic, peak->analytic) << id;
+        EXPECT_GT(when->analytic, 0.0) << id;
+        // One analytic trace per history case, whose largest |value| is the peak (the decimation may miss the
+        // sample of the peak itself, never exceed it).
+        const auto t = std::find_if(r.traces.begin(), r.traces.end(), [&](const Trace& x) { return x.case_id == id; });
+        ASSERT_NE(t, r.traces.end()) << id;
+        EXPECT_LE(t->t.size(), kMaxTracePoints);
+        double largest = 0.0;
+        for (double v : t->theta1_over_alpha) largest = std::max(largest, std::abs(v));
+        EXPECT_LE(largest, peak->analytic) << id;
+        EXPECT_GT(largest, 0.5 * peak->analytic) << id;
+    }
+}
+
+// A selection of every kind the analytic engine runs, run for the analytic model and two fakes on it.
+Suite small_selection() {
+    return select_cases(default_suite(),
+                        {"fig6-vssw", "fig6-pw", "fig6-vssw/r0.2", "fig6-pw/r0.5", "fig6-pw/rinaldi-x0.17"});
+}
+
+TEST(RunSuite, OneAndTwoThreadsGiveIdenticalResults) {
+    const Suite s = small_selection();
+    const FakeEngine fake("fake", /*fail_parapet=*/true, /*exclusive=*/false);
+    const FakeEngine other("other", false, false);
+    RunOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const SuiteResults a = run_suite_with_engines(s, {&fake, &other}, one);
+    const SuiteResults b = run_suite_with_engines(s, {&fake, &other}, two);
+    EXPECT_EQ(a.threads, 1);
+    EXPECT_EQ(b.threads, 2);
+    ASSERT_EQ(a.rows.size(), b.rows.size());
+    for (std::size_t i = 0; i < a.rows.size(); ++i) {
+        const MetricRow &x = a.rows[i], &y = b.rows[i];
+        EXPECT_EQ(x.case_id, y.case_id);
+        EXPECT_EQ(x.engine, y.engine);
+        EXPECT_EQ(x.metric, y.metric);
+        EXPECT_TRUE(same_number(x.analytic, y.analytic)) << x.case_id << " " << x.metric;
+        EXPECT_TRUE(same_number(x.engine_value, y.engine_value)) << x.case_id << " " << x.metric;
+        EXPECT_TRUE(same_number(x.rel_error, y.rel_error)) << x.case_id << " " << x.metric;
+    }
+    ASSERT_EQ(a.failures.size(), b.failures.size());
+    for (std::size_t i = 0; i < a.failures.size(); ++i) {
+        EXPECT_EQ(a.failures[i].case_id, b.failures[i].case_id);
+        EXPECT_EQ(a.failures[i].engine, b.failures[i].engine);
+    }
+    ASSERT_EQ(a.traces.size(), b.traces.size());
+    for (std::size_t i = 0; i < a.traces.size(); ++i) {
+        EXPECT_EQ(a.traces[i].case_id, b.traces[i].case_id);
+        EXPECT_EQ(a.traces[i].engine, b.traces[i].engine);
+        EXPECT_EQ(a.traces[i].theta1_over_alpha, b.traces[i].theta1_over_alpha);
+    }
+    // Rows in case order, then engine order (analytic, fake, other).
+    auto case_index = [&](const std::string& id) {
+        return std::find_if(s.cases.begin(), s.cases.end(), [&](const SuiteCase& c) { return c.id == id; }) -
+               s.cases.begin();
+    };
+    const std::vector<std::string> order = {"analytic", "fake", "other"};
+    auto engine_index = [&](const std::string& e) { return std::find(order.begin(), order.end(), e) - order.begin(); };
+    for (std::size_t i = 1; i < b.rows.size(); ++i) {
+        const auto p = std::make_pair(case_index(b.rows[i - 1].case_id), engine_index(b.rows[i - 1].engine));
+        const auto q = std::make_pair(case_index(b.rows[i].case_id), engine_index(b.rows[i].engine));
+        EXPECT_LE(p, q) << b.rows[i].case_id << " " << b.rows[i].engine;
+    }
+}
+
+TEST(RunSuite, AFailingEngineBecomesCaseFailuresAndTheOtherRowsStay) {
+    const Suite s = small_selection();
+    const FakeEngine fake("fake", /*fail_parapet=*/true, /*exclusive=*/false);
+    RunOptions o;
+    o.threads = 2;
+    const SuiteResults r = run_suite_with_engines(s, {&fake}, o);
+    // Every parapet case fails for the fake, with its message, and only those.
+    std::set<std::string> failed;
+    for (const CaseFailure& f : r.failures) {
+        EXPECT_EQ(f.engine, "fake");
+        EXPECT_NE(f.message.find("no parapets here"), std::string::npos) << f.message;
+        failed.insert(f.case_id);
+    }
+    EXPECT_EQ(failed, (std::set<std::string>{"fig6-pw", "fig6-pw/r0.5", "fig6-pw/rinaldi-x0.17"}));
+    for (const std::string& id : failed)
+        for (const MetricRow& row : r.rows)
+            if (row.case_id == id) {
+                EXPECT_EQ(row.engine, "analytic") << id;
+            }
+    // The reference rows of the failed cases are still there.
+    EXPECT_NE(find_row(r, "fig6-pw", "analytic", "threshold_g"), nullptr);
+    EXPECT_NE(find_row(r, "fig6-pw/r0.5", "analytic", "period"), nullptr);
+    EXPECT_NE(find_row(r, "fig6-pw/rinaldi-x0.17", "analytic", "peak_rotation"), nullptr);
+    // The fake is the analytic model at the same sampling: its VSSW rows equal the reference exactly.
+    const MetricRow* t = find_row(r, "fig6-vssw", "fake", "threshold_g");
+    ASSERT_NE(t, nullptr);
+    EXPECT_EQ(t->rel_error, 0.0);
+    for (const char* metric : {"period", "restitution"}) {
+        const MetricRow* row = find_row(r, "fig6-vssw/r0.2", "fake", metric);
+        ASSERT_NE(row, nullptr) << metric;
+        EXPECT_EQ(row->rel_error, 0.0) << metric;
+    }
+    // Against the whole mechanism's impact the fake (Eq. 19's impact law) is far off: Eq. 19 vs 0.825.
+    const MetricRow* whole = find_row(r, "fig6-vssw/r0.2", "fake", "restitution_whole_mechanism");
+    ASSERT_NE(whole, nullptr);
+    EXPECT_GT(whole->rel_error, 0.1);
+}
+
+TEST(RunSuite, AnEngineThatMustNotRunConcurrentlyRunsOneTaskAtATime) {
+    const Suite s = select_cases(default_suite(), {"fig6-vssw", "fig6-pw", "t1-01-xi0", "t1-07-xi0", "fig6-vssw/r0.5",
+                                                   "fig6-pw/r0.5", "t1-15-xi0/r0.5", "t1-15-xi0.5/r0.5"});
+    const FakeEngine exclusive("exclusive", false, /*exclusive=*/true);
+    const FakeEngine free_runner("free-runner", false, false);
+    RunOptions o;
+    o.threads = 2;
+    int calls = 0, last = 0, total = 0;
+    bool in_order = true;
+    o.progress = [&](int done, int n, const std::string& what) {
+        ++calls;
+        in_order = in_order && done == last + 1 && !what.empty();
+        last = done;
+        total = n;
+    };
+    const SuiteResults r = run_suite_with_engines(s, {&exclusive, &free_runner}, o);
+    EXPECT_TRUE(r.failures.empty());
+    EXPECT_EQ(exclusive.max_running(), 1);
+    // Progress: once per (case, engine) task, counted in order from the serialised callback.
+    EXPECT_EQ(total, static_cast<int>(s.cases.size() * 3));
+    EXPECT_EQ(calls, total);
+    EXPECT_TRUE(in_order);
+}
+
+TEST(RunSuite, BadInputPropagatesAndUnknownEnginesAreNamed) {
+    const Suite s = small_selection();
+    const BadInputEngine bad;
+    RunOptions o;
+    o.threads = 2;
+    EXPECT_THROW((void)run_suite_with_engines(s, {&bad}, o), InputError);
+    try {
+        (void)run_suite(s, {"analytic", "havok"});
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("havok"), std::string::npos) << m;
+        EXPECT_NE(m.find("analytic"), std::string::npos) << m;  // the available ones are listed
+    }
+    o.threads = -1;
+    EXPECT_THROW((void)run_suite(s, {"analytic"}, o), InputError);
+}
+
+// Two cheap real-engine cases: a Bullet free vibration of the Fig. 6 PW and an ODE step case (which must run for
+// ODE only).
+TEST(RunSuite, EngineRowsOnCheapCases) {
+    if (!has_engine("bullet") || !has_engine("ode")) GTEST_SKIP() << "Bullet or ODE not compiled in";
+    const Suite s = select_cases(default_suite(), {"fig6-pw/r0.5", "fig6-vssw/r0.5/dt0.001/ode"});
+    RunOptions o;
+    o.threads = 2;
+    const SuiteResults r = run_suite(s, {"bullet", "ode"}, o);
+    ASSERT_TRUE(r.failures.empty()) << r.failures.front().message;
+    ASSERT_EQ(r.engines.size(), 3u);
+    EXPECT_EQ(r.engines[0].name, "analytic");
+    EXPECT_EQ(r.engines[1].name, "bullet");
+    EXPECT_EQ(r.engines[2].name, "ode");
+    EXPECT_EQ(r.engines[1].settings.dt, multibody::make_engine("bullet")->default_settings().dt);
+
+    // The parapet: period and Housner's restitution within the targets (README: -0.015 % and -0.25 % measured).
+    const MetricRow* period = find_row(r, "fig6-pw/r0.5", "bullet", "period");
+    const MetricRow* e = find_row(r, "fig6-pw/r0.5", "bullet", "restitution");
+    ASSERT_TRUE(period && e);
+    EXPECT_LT(std::abs(period->rel_error), kPeriodTarget);
+    EXPECT_LT(std::abs(e->rel_error), kRestitutionTarget);
+    const auto traces = std::count_if(r.traces.begin(), r.traces.end(),
+                                      [](const Trace& t) { return t.case_id == "fig6-pw/r0.5"; });
+    EXPECT_EQ(traces, 3);  // analytic, bullet, ode
+
+    // The step case: ODE's rows only (no analytic, no Bullet), at its step; its impact is the whole mechanism's.
+    for (const MetricRow& row : r.rows)
+        if (row.case_id == "fig6-vssw/r0.5/dt0.001/ode") {
+            EXPECT_EQ(row.engine, "ode");
+        }
+    const MetricRow* whole = find_row(r, "fig6-vssw/r0.5/dt0.001/ode", "ode", "restitution_whole_mechanism");
+    const MetricRow* step_period = find_row(r, "fig6-vssw/r0.5/dt0.001/ode", "ode", "period");
+    ASSERT_TRUE(whole && step_period);
+    EXPECT_LT(std::abs(whole->rel_error), kRestitutionTarget);
+    EXPECT_LT(std::abs(step_period->rel_error), kPeriodTarget);
+}
+
+}  // namespace
+}  // namespace vssw::compare
