@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "closed_forms.hpp"
 #include "error.hpp"
@@ -189,5 +194,33 @@ std::unique_ptr<RockingModel> make_vssw_model(const VsswGeometry& w, Kinematics 
 }
 
 std::unique_ptr<RockingModel> make_parapet_model(const ParapetGeometry& p) { return std::make_unique<Parapet>(p); }
+
+namespace {
+
+// Every term of the wrapped model, the impact ratio replaced.
+class WithRestitution final : public RockingModel {
+public:
+    WithRestitution(std::unique_ptr<RockingModel> model, double e) : model_(std::move(model)), e_(e) {}
+    ModelTerms terms(double q) const override { return model_->terms(q); }
+    double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
+    double load_height(double q) const override { return model_->load_height(q); }
+    double restitution() const override { return e_; }
+    double reference_angle() const override { return model_->reference_angle(); }
+    double collapse_angle() const override { return model_->collapse_angle(); }
+    double gravity() const override { return model_->gravity(); }
+    double overburden() const override { return model_->overburden(); }
+    std::string name() const override { return model_->name() + fmt::format(", impact ratio {:.6g}", e_); }
+
+private:
+    std::unique_ptr<RockingModel> model_;
+    double e_;
+};
+
+}  // namespace
+
+std::unique_ptr<RockingModel> with_restitution(std::unique_ptr<RockingModel> model, double e) {
+    require(std::isfinite(e) && e >= 0.0 && e <= 1.0, "impact ratio (restitution)", "a number in [0, 1]", e);
+    return std::make_unique<WithRestitution>(std::move(model), e);
+}
 
 }  // namespace vssw

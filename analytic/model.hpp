@@ -74,5 +74,8 @@ double restitution_from_peaks(const RockingModel& m, double peak_before, double 
 
 std::unique_ptr<RockingModel> make_vssw_model(const VsswGeometry& w, Kinematics kinematics);
 std::unique_ptr<RockingModel> make_parapet_model(const ParapetGeometry& p);
+// The same model with another impact ratio e in [0, 1] (InputError otherwise): the assumption-sensitivity study of
+// the impact law, e.g. the whole mechanism's plastic impact (restitution_whole_mechanism) in place of Eq. (19).
+std::unique_ptr<RockingModel> with_restitution(std::unique_ptr<RockingModel> model, double e);
 
 }  // namespace vssw

@@ -33,11 +33,26 @@ json toml_to_json(const std::string& text, const std::string& name) {
 }
 
 json parse_json(const std::string& text, const std::string& name) {
+    // A key given twice in one object would silently take the last value (TOML refuses it): refuse it too.
+    std::vector<std::set<std::string>> keys;  // per open object
+    std::string duplicate;
+    const json::parser_callback_t no_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+        if (event == json::parse_event_t::object_start) keys.emplace_back();
+        if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+        if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
+            duplicate = parsed.get<std::string>();
+        return true;
+    };
+    json doc;
     try {
-        return json::parse(text);
+        doc = json::parse(text, no_duplicates);
     } catch (const json::parse_error& e) {
         throw InputError(fmt::format("bounds file {}: JSON syntax error: {}", name, e.what()));
+    } catch (const json::exception& e) {  // e.g. a number too large for a double
+        throw InputError(fmt::format("bounds file {}: JSON error: {}", name, e.what()));
     }
+    if (!duplicate.empty()) throw InputError(fmt::format("bounds file {}: key '{}' given twice in one table", name, duplicate));
+    return doc;
 }
 
 class EntryReader {
@@ -133,6 +148,10 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
         const EntryReader r(entry, fmt::format("bounds file {}: engine bound #{}", name, ++i),
                             {"engine", "cases", "metric", "max_error", "error"});
         compare::EngineBound b{r.text("engine"), r.texts("cases"), r.text("metric"), 0.0, 0.0};
+        if (b.engine == "analytic")
+            throw InputError(r.where() + ": engine 'analytic' is the reference; bound its drift in [[analytic]]");
+        const std::set<std::string> distinct(b.case_ids.begin(), b.case_ids.end());
+        if (distinct.size() != b.case_ids.size()) throw InputError(r.where() + ": 'cases' names a case twice");
         if (r.has("max_error") == r.has("error"))
             throw InputError(r.where() + ": give exactly one of 'max_error' (|rel_error| <= x) and 'error' ([min, max])");
         if (r.has("max_error")) {

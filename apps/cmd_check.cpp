@@ -12,12 +12,14 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/error.hpp"
 #include "apps/bounds_file.hpp"
 #include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/json.hpp"
 #include "compare/bounds.hpp"
 #include "compare/suite.hpp"
+#include "multibody/engine.hpp"
 
 #ifndef VSSW_DATA_DIR
 #define VSSW_DATA_DIR "data"
@@ -59,7 +61,7 @@ void print_table(std::ostream& out, const std::vector<compare::BoundVerdict>& ve
 }
 
 Json verdicts_json(const std::vector<compare::BoundVerdict>& verdicts, const compare::SuiteResults& results,
-                   const std::string& bounds_path) {
+                   const std::string& bounds_path, const std::string& suite_name) {
     Json list = Json::array();
     for (const auto& v : verdicts) {
         Json j;
@@ -76,7 +78,7 @@ Json verdicts_json(const std::vector<compare::BoundVerdict>& verdicts, const com
     }
     Json doc;
     doc["bounds"] = bounds_path;
-    doc["suite"] = results.suite;
+    doc["suite"] = suite_name;
     doc["held"] = std::all_of(verdicts.begin(), verdicts.end(), [](const auto& v) { return v.held; });
     doc["verdicts"] = list;
     doc["wall_time_s"] = results.wall_time_s;
@@ -90,6 +92,30 @@ std::vector<std::string> engine_cases_needed(const compare::Bounds& bounds) {
     return compare::cases_needed(engines_only);
 }
 
+// A bound on a metric its case does not measure is a mistake in the file (exit 2), not a bound out (exit 1).
+void require_measurable(const compare::Bounds& bounds, const compare::Suite& suite, const std::string& path) {
+    auto check = [&](const std::string& case_id, const std::string& metric, const std::string& engine) {
+        for (const compare::SuiteCase& c : suite.cases) {
+            if (c.id != case_id) continue;
+            const auto metrics = compare::metrics_of(c.kind, suite.wall(c.wall_id).scene.is_vssw());
+            if (std::find(metrics.begin(), metrics.end(), metric) == metrics.end())
+                throw InputError(fmt::format("bounds file {}: case '{}' ({}) has no metric '{}' (it has: {})", path, case_id,
+                                             compare::to_string(c.kind), metric, fmt::join(metrics, ", ")));
+            if (!c.engine.empty() && engine != c.engine)
+                throw InputError(fmt::format("bounds file {}: case '{}' runs for {} only, not for {}", path, case_id, c.engine,
+                                             engine));
+        }
+    };
+    const std::vector<std::string> available = multibody::available_engines();
+    for (const compare::EngineBound& b : bounds.engines)
+        if (std::find(available.begin(), available.end(), b.engine) == available.end())
+            throw InputError(fmt::format("bounds file {}: engine '{}' is not in this build (available: {})", path, b.engine,
+                                         fmt::join(available, ", ")));
+    for (const compare::AnalyticBound& b : bounds.analytic) check(b.case_id, b.metric, "analytic");
+    for (const compare::EngineBound& b : bounds.engines)
+        for (const std::string& id : b.case_ids) check(id, b.metric, b.engine);
+}
+
 void run_check(const CheckOptions& o, std::ostream& out) {
     const compare::Bounds bounds = read_bounds_file(o.bounds);
     const compare::Suite all = compare::make_suite(bounds.suite, o.data_dir);
@@ -98,8 +124,14 @@ void run_check(const CheckOptions& o, std::ostream& out) {
     run.keep_traces = false;
     // Two runs, so that an engine runs only the cases an engine bound names (the analytic model is cheap: it runs
     // every case named anywhere). Every name is checked before anything runs.
-    const compare::Suite suite = compare::select_cases(all, compare::cases_needed(bounds));
-    const compare::Suite engine_suite = compare::select_cases(all, engine_cases_needed(bounds));
+    compare::Suite suite, engine_suite;
+    try {
+        suite = compare::select_cases(all, compare::cases_needed(bounds));
+        engine_suite = compare::select_cases(all, engine_cases_needed(bounds));
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("bounds file {}: {}", o.bounds, e.what()));
+    }
+    require_measurable(bounds, suite, o.bounds);
     compare::SuiteResults results = compare::run_suite(suite, {}, run);
     if (!engine_suite.cases.empty()) {
         const compare::SuiteResults engine_results =
@@ -113,7 +145,7 @@ void run_check(const CheckOptions& o, std::ostream& out) {
     const std::vector<compare::BoundVerdict> verdicts = compare::evaluate(bounds, results);
     const auto out_of_bounds = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.held; });
     if (o.json) {
-        out << verdicts_json(verdicts, results, o.bounds).dump(2) << '\n';
+        out << verdicts_json(verdicts, results, o.bounds, bounds.suite).dump(2) << '\n';
     } else {
         out << fmt::format("vssw check: {} ({} cases, engines: analytic{}{}; {:.1f} s on {} threads)\n\n", o.bounds,
                            suite.cases.size(), compare::engines_needed(bounds).empty() ? "" : ", ",

@@ -124,10 +124,10 @@ Command add_report_command(CLI::App& root) {
     return {cmd, {}, [o](std::ostream& out, std::ostream& err) {
                 const std::vector<std::string> engines = checked_engines(o->engines);
                 require(o->threads >= 0, "--threads", "0 or more (0: the available cores)", o->threads);
-                const std::filesystem::path dir = o->out;
-                prepare_report_dir(dir);  // a bad --out fails before the suite runs
                 compare::Suite suite = compare::make_suite(o->suite, o->data);
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
+                const std::filesystem::path dir = o->out;
+                prepare_report_dir(dir);  // after every other check (no folder left behind), before the suite runs
 
                 Progress progress(err);
                 compare::RunOptions run;
@@ -144,9 +144,6 @@ Command add_report_command(CLI::App& root) {
                     throw;
                 }
                 progress.clear();
-                if (!o->cases.empty())
-                    results.suite = fmt::format("{} ({} selected case{})", o->suite, suite.cases.size(),
-                                                suite.cases.size() == 1 ? "" : "s");
 
                 ReportMeta meta;
                 meta.date = utc_now();

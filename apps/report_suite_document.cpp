@@ -143,6 +143,10 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
         std::string text = description;
         if (!references.empty())
             text += fmt::format("{}Reference: {}.", text.empty() ? "" : " ", fmt::join(references, "; "));
+        if (mt.metric == "period" || mt.metric == "restitution")
+            text += " Each engine's error is against the analytic model sampled at that engine's own sampling "
+                    "interval, so that both sides carry the same sampling error; the reference column shows the "
+                    "analytic model at its own (0.1 ms), which can differ from those in the last digits.";
         if (mt.target) text += " Errors in bold are outside the target.";
         if (!text.empty()) b.push_back(paragraph(text));
         std::vector<std::string> header = {"case", "reference"};

@@ -38,6 +38,8 @@ enum class CaseKind {
     step,       // free vibration at a given engine step dt (error against step size): period, restitution
 };
 const char* to_string(CaseKind kind);
+// The metrics run_suite measures for a case of this kind (restitution_whole_mechanism only on a VSSW).
+std::vector<std::string> metrics_of(CaseKind kind, bool vssw);
 
 struct SuiteRecord {
     std::string id;        // "rinaldi-x0.25"
@@ -57,7 +59,7 @@ struct SuiteCase {
 };
 
 struct Suite {
-    std::string name;  // "default", "full", or "selection"
+    std::string name;  // "default" or "full" (also for a selection of its cases)
     std::vector<SuiteWall> walls;
     std::vector<SuiteRecord> records;
     std::vector<SuiteCase> cases;

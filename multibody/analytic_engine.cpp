@@ -17,6 +17,7 @@ namespace {
 
 constexpr const char* kPaperKinematics = "paper_kinematics";
 constexpr const char* kRtol = "rtol";
+constexpr const char* kRestitution = "restitution";  // > 0: this impact ratio instead of Eq. (19) / Housner's
 constexpr double kDefaultRtol = 1e-10;
 constexpr double kDefaultOutputDt = 1e-4;  // [s] the engines' default step (EngineSettings::dt)
 
@@ -28,13 +29,15 @@ void require_one_description(const WallScene& scene) {
 struct Knobs {
     Kinematics kinematics = Kinematics::exact;
     double rtol = kDefaultRtol;
+    double restitution = 0.0;  // 0: the model's own
 };
 
 Knobs read_knobs(const EngineSettings& settings) {
-    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol});
+    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol, kRestitution});
     Knobs k;
     k.kinematics = r.flag(kPaperKinematics) ? Kinematics::paper : Kinematics::exact;
     k.rtol = r.number(kRtol, kDefaultRtol);  // its range is checked by simulate()
+    k.restitution = r.non_negative(kRestitution, 0.0);  // its range is checked by with_restitution()
     return k;
 }
 
@@ -64,7 +67,8 @@ EngineSettings AnalyticEngine::default_settings() const {
 Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& excitation,
                                     const EngineSettings& settings) const {
     const Knobs knobs = read_knobs(settings);
-    const std::unique_ptr<RockingModel> model = analytic_model(scene, knobs.kinematics);
+    std::unique_ptr<RockingModel> model = analytic_model(scene, knobs.kinematics);
+    if (knobs.restitution > 0.0) model = with_restitution(std::move(model), knobs.restitution);
     const double output_dt = settings.sample_dt > 0.0 ? settings.sample_dt : settings.dt;
     require(std::isfinite(output_dt) && output_dt > 0.0, "analytic output interval (sample_dt, else dt)",
             "a positive finite time in s", output_dt);

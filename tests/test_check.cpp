@@ -119,6 +119,18 @@ TEST(BoundsFile, EachMalformationIsNamed) {
     EXPECT_NE(error_of("[[engine]\n").find("TOML syntax error at line 1"), std::string::npos);
     EXPECT_NE(error_of("{\"engine\": [", "json").find("JSON syntax error"), std::string::npos);
     EXPECT_NE(error_of("{\"bounds\": []}", "json").find("unknown key 'bounds'"), std::string::npos);
+    // A key given twice would silently loosen the bound in JSON (TOML refuses it itself).
+    EXPECT_NE(error_of("{\"analytic\": [{\"case\": \"a\", \"metric\": \"period\", \"reference\": 1, "
+                       "\"max_drift\": 1e-6, \"max_drift\": 5}]}",
+                       "json")
+                  .find("key 'max_drift' given twice"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[engine]]\nengine = \"analytic\"\ncases = [\"a\"]\nmetric = \"period\"\nmax_error = 0.1\n")
+                  .find("the reference"),
+              std::string::npos);
+    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\", \"a\"]\nmetric = \"period\"\nmax_error = 0.1\n")
+                  .find("names a case twice"),
+              std::string::npos);
 }
 
 TEST(BoundsFile, AMissingFileOrAnUnknownFormatIsNamed) {
@@ -217,8 +229,13 @@ TEST(CheckCommand, ABadFileExitsWithTwoAndNamesTheProblem) {
     EXPECT_EQ(unknown_case.code, 2);
     EXPECT_NE(unknown_case.err.find("no-such-wall"), std::string::npos) << unknown_case.err;
 
+    const CliResult wrong_metric = run_check(
+        "[[analytic]]\ncase = \"fig6-pw/r0.5\"\nmetric = \"perod\"\nreference = 1\nmax_drift = 0.1\n");
+    EXPECT_EQ(wrong_metric.code, 2) << "a metric the case does not measure is a mistake, not a bound out";
+    EXPECT_NE(wrong_metric.err.find("no metric 'perod'"), std::string::npos) << wrong_metric.err;
+
     const CliResult unknown_engine = run_check(
-        "[[engine]]\nengine = \"havok\"\ncases = [\"fig6-pw\"]\nmetric = \"period\"\nmax_error = 0.1\n");
+        "[[engine]]\nengine = \"havok\"\ncases = [\"fig6-pw/r0.5\"]\nmetric = \"period\"\nmax_error = 0.1\n");
     EXPECT_EQ(unknown_engine.code, 2);
     EXPECT_NE(unknown_engine.err.find("havok"), std::string::npos) << unknown_engine.err;
 }

@@ -7,6 +7,8 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/model.hpp"
+#include "analytic/error.hpp"
+#include "analytic/simulate.hpp"
 
 namespace vssw {
 namespace {
@@ -179,6 +181,40 @@ TEST(Model, CollapseAngleIsEq26OrTheLowerBodyLyingFlat) {
     EXPECT_LT(m->collapse_angle(), *eq26_limit_rotation(high));
     EXPECT_DOUBLE_EQ(make_vssw_model(make_vssw(4.0, 0.4, 0.46), Kinematics::paper)->collapse_angle(), kHalfPi);
     EXPECT_DOUBLE_EQ(make_parapet_model(make_parapet(4.0, 0.4))->collapse_angle(), kHalfPi);
+}
+
+}  // namespace
+}  // namespace vssw
+
+namespace vssw {
+namespace {
+
+// Round-off of one multiplication in the impact map theta1'+ = e theta1'-.
+constexpr double kImpactMapRoundoff = 1e-12;
+
+TEST(Model, WithRestitutionChangesOnlyTheImpactRatio) {
+    const VsswGeometry w = make_vssw(4.0, 0.4, 0.7);
+    const double e = restitution_whole_mechanism(w);
+    const SimulationResult own = free_vibration(*make_vssw_model(w, Kinematics::exact), 0.5 * w.alpha1);
+    const SimulationResult other =
+        free_vibration(*with_restitution(make_vssw_model(w, Kinematics::exact), e), 0.5 * w.alpha1);
+    // The flight before the first impact is the same motion (same terms), the impact applies the ratio given.
+    ASSERT_FALSE(own.impacts.empty());
+    ASSERT_FALSE(other.impacts.empty());
+    EXPECT_EQ(other.impacts[0].t, own.impacts[0].t);
+    EXPECT_EQ(other.impacts[0].theta_dot_before, own.impacts[0].theta_dot_before);
+    EXPECT_NEAR(other.impacts[0].theta_dot_after / other.impacts[0].theta_dot_before, e, kImpactMapRoundoff);
+    EXPECT_NEAR(own.impacts[0].theta_dot_after / own.impacts[0].theta_dot_before, eq19_restitution(w),
+                kImpactMapRoundoff);
+    // A lower ratio dissipates more: the wall stops sooner.
+    EXPECT_LT(other.impacts.size(), own.impacts.size());
+}
+
+TEST(Model, WithRestitutionRefusesARatioOutsideZeroToOne) {
+    const VsswGeometry w = make_vssw(4.0, 0.4, 0.7);
+    EXPECT_THROW(with_restitution(make_vssw_model(w, Kinematics::exact), 1.5), InputError);
+    EXPECT_THROW(with_restitution(make_vssw_model(w, Kinematics::exact), -0.1), InputError);
+    EXPECT_THROW(with_restitution(make_vssw_model(w, Kinematics::exact), std::nan("")), InputError);
 }
 
 }  // namespace

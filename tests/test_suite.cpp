@@ -179,7 +179,7 @@ TEST(Suite, UnknownNameIsAnInputErrorNamingTheValidOnes) {
 
 TEST(Suite, SelectKeepsOnlyTheNamedCasesAndWhatTheyNeed) {
     const Suite s = select_cases(default_suite(), {"fig6-pw/rinaldi-x0.17", "t1-07-xi0", "fig6-vssw/r0.5/dt0.001/ode"});
-    EXPECT_EQ(s.name, "selection");
+    EXPECT_EQ(s.name, "default");  // a selection names the suite its case ids come from
     ASSERT_EQ(s.cases.size(), 3u);
     std::set<std::string> walls;
     for (const SuiteWall& w : s.walls) walls.insert(w.id);
