@@ -19,9 +19,7 @@
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
 
-#ifndef VSSW_GIT_COMMIT
-#define VSSW_GIT_COMMIT ""
-#endif
+#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (apps/CMakeLists.txt)
 
 namespace vssw::cli {
 namespace {
