@@ -92,7 +92,7 @@ Command add_report_command(CLI::App& root) {
     auto o = std::make_shared<ReportCommandOptions>();
     CLI::App* cmd = root.add_subcommand(
         "report", "Run the validation suite for the analytic model and the engines; write a report into a folder");
-    cmd->add_option("--suite", o->suite, "default (about 40 s on 2 cores with Bullet, ODE and Simbody) or full (225 cases, longer)");
+    cmd->add_option("--suite", o->suite, "default (about 40 s on 2 cores with Bullet, ODE and Simbody) or full (233 cases, about 4 min)");
     cmd->add_option("--engines", o->engines,
                     fmt::format("engines to compare, comma-separated (default: {}; simbody-rigid on request)",
                                 fmt::join(default_engines(), ", ")))
