@@ -9,7 +9,6 @@ namespace {
 
 double sq(double x) { return x * x; }
 
-// The bracket (2 + tan A2 / tan A1) that recurs in Eqs. (7), (11), (23), (24), (25).
 // Sines and cosines of A1 = alpha1 - |theta1|, A2 = alpha2 - k |theta1| (Eq. 11) or of any pair of angles.
 struct AnglePair {
     double sA1, cA1, sA2, cA2;

@@ -19,7 +19,7 @@ double eq3_theta2_linear(const VsswGeometry& w, double theta1);
 // Eq. (2) by construction, so it measures how far the paper's linearisation strays from the top restraint.
 double eq3_roller_drift(const VsswGeometry& w, double theta1);
 // Rotation |theta1| (rad) at which that drift first reaches `fraction` of the wall's thickness 2b, found by
-// bisection up to the collapse angle; std::nullopt if it never does before collapse.
+// a scan and bisection up to Eq. (26)'s limit rotation (pi/2 when it has none); std::nullopt if it never does.
 std::optional<double> eq3_validity_limit(const VsswGeometry& w, double fraction);
 // Eq. (4): theta2_dot / theta1_dot as a function of theta1 and theta2 (a magnitude; theta2 has the sign opposite to
 // theta1).

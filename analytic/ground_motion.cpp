@@ -16,8 +16,6 @@ namespace vssw {
 namespace {
 
 constexpr double kPi = 3.141592653589793;
-// Standard gravity (CGPM 1901). Records "in units of g" were converted with this value by their agencies; the
-// wall's own gravity (VsswGeometry::g) is a separate model parameter and is deliberately not used here.
 // Two sample times are "evenly spaced" when each lies within this fraction of dt of its grid point: far below any
 // real timing error, yet far above the rounding of times read from text (~1e-13 relative for 0.02 s over 30 s).
 // It guarantees that the O(1) index guess is off by at most one interval, which operator() corrects.

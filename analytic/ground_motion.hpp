@@ -13,7 +13,8 @@ namespace vssw {
 
 enum class AccelUnits { g, m_per_s2, cm_per_s2 };
 
-// Standard gravity: what "in g" means for records, --pga and --amplitude. A wall's own g is a separate input.
+// Standard gravity (CGPM 1901): what "in g" means for records (their agencies converted with it), --pga and
+// --amplitude. A wall's own g (VsswGeometry::g) is a separate model parameter, deliberately not used here.
 constexpr double kStandardGravity = 9.80665;  // [m/s^2]
 
 // Parses "g", "m/s2" (also "m/s^2"), "cm/s2" (also "cm/s^2", "gal"); throws InputError naming the text otherwise.

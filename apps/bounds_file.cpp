@@ -150,8 +150,10 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
         compare::EngineBound b{r.text("engine"), r.texts("cases"), r.text("metric"), 0.0, 0.0};
         if (b.engine == "analytic")
             throw InputError(r.where() + ": engine 'analytic' is the reference; bound its drift in [[analytic]]");
-        const std::set<std::string> distinct(b.case_ids.begin(), b.case_ids.end());
-        if (distinct.size() != b.case_ids.size()) throw InputError(r.where() + ": 'cases' names a case twice");
+        std::set<std::string> seen;
+        for (const std::string& id : b.case_ids)
+            if (!seen.insert(id).second)
+                throw InputError(fmt::format("{}: 'cases' names a case twice: '{}'", r.where(), id));
         if (r.has("max_error") == r.has("error"))
             throw InputError(r.where() + ": give exactly one of 'max_error' (|rel_error| <= x) and 'error' ([min, max])");
         if (r.has("max_error")) {

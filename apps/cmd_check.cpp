@@ -21,10 +21,6 @@
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
 
-#ifndef VSSW_DATA_DIR
-#define VSSW_DATA_DIR "data"
-#endif
-
 namespace vssw::cli {
 namespace {
 
@@ -69,7 +65,7 @@ Json verdicts_json(const std::vector<compare::BoundVerdict>& verdicts, const com
         j["case"] = v.case_id;
         j["metric"] = v.metric;
         j["kind"] = v.engine == "analytic" ? "drift" : "rel_error";
-        j["value"] = std::isfinite(v.value) ? Json(v.value) : Json(nullptr);
+        j["value"] = finite_or_null(v.value);
         j["min"] = v.lo;
         j["max"] = v.hi;
         j["held"] = v.held;
@@ -122,25 +118,33 @@ void run_check(const CheckOptions& o, std::ostream& out) {
     compare::RunOptions run;
     run.threads = o.threads;
     run.keep_traces = false;
-    // Two runs, so that an engine runs only the cases an engine bound names (the analytic model is cheap: it runs
-    // every case named anywhere). Every name is checked before anything runs.
-    compare::Suite suite, engine_suite;
+    // Two runs, so that an engine runs only the cases an engine bound names: the analytic model alone on the other
+    // cases, and the engines (with the analytic model, run_suite's reference) on those. Every name is checked
+    // before anything runs.
+    const std::vector<std::string> engine_ids = engine_cases_needed(bounds);
+    std::vector<std::string> analytic_ids;
+    for (const std::string& id : compare::cases_needed(bounds))
+        if (std::find(engine_ids.begin(), engine_ids.end(), id) == engine_ids.end()) analytic_ids.push_back(id);
+    const std::vector<std::string> engines = compare::engines_needed(bounds);
+    compare::Suite suite, analytic_suite, engine_suite;
     try {
         suite = compare::select_cases(all, compare::cases_needed(bounds));
-        engine_suite = compare::select_cases(all, engine_cases_needed(bounds));
+        analytic_suite = compare::select_cases(all, analytic_ids);
+        engine_suite = compare::select_cases(all, engine_ids);
     } catch (const InputError& e) {
         throw InputError(fmt::format("bounds file {}: {}", o.bounds, e.what()));
     }
     require_measurable(bounds, suite, o.bounds);
-    compare::SuiteResults results = compare::run_suite(suite, {}, run);
-    if (!engine_suite.cases.empty()) {
-        const compare::SuiteResults engine_results =
-            compare::run_suite(engine_suite, compare::engines_needed(bounds), run);
-        results.engines = engine_results.engines;
-        results.rows.insert(results.rows.end(), engine_results.rows.begin(), engine_results.rows.end());
-        results.failures.insert(results.failures.end(), engine_results.failures.begin(),
-                                engine_results.failures.end());
-        results.wall_time_s += engine_results.wall_time_s;
+    compare::SuiteResults results;
+    for (const auto& [part, part_engines] : {std::pair{&analytic_suite, std::vector<std::string>{}},
+                                             std::pair{&engine_suite, engines}}) {
+        if (part->cases.empty()) continue;
+        const compare::SuiteResults r = compare::run_suite(*part, part_engines, run);
+        if (results.engines.size() < r.engines.size()) results.engines = r.engines;
+        results.rows.insert(results.rows.end(), r.rows.begin(), r.rows.end());
+        results.failures.insert(results.failures.end(), r.failures.begin(), r.failures.end());
+        results.wall_time_s += r.wall_time_s;
+        results.threads = r.threads;
     }
     const std::vector<compare::BoundVerdict> verdicts = compare::evaluate(bounds, results);
     const auto out_of_bounds = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.held; });
@@ -148,8 +152,8 @@ void run_check(const CheckOptions& o, std::ostream& out) {
         out << verdicts_json(verdicts, results, o.bounds, bounds.suite).dump(2) << '\n';
     } else {
         out << fmt::format("vssw check: {} ({} cases, engines: analytic{}{}; {:.1f} s on {} threads)\n\n", o.bounds,
-                           suite.cases.size(), compare::engines_needed(bounds).empty() ? "" : ", ",
-                           fmt::join(compare::engines_needed(bounds), ", "), results.wall_time_s, results.threads);
+                           suite.cases.size(), engines.empty() ? "" : ", ", fmt::join(engines, ", "),
+                           results.wall_time_s, results.threads);
         print_table(out, verdicts);
         out << fmt::format("\n{} of {} bounds hold\n", verdicts.size() - static_cast<size_t>(out_of_bounds),
                            verdicts.size());

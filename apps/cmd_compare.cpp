@@ -17,13 +17,15 @@
 #include "apps/table.hpp"
 #include "apps/wall_options.hpp"
 #include "compare/experiments.hpp"
+#include "compare/targets.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::cli {
 namespace {
 
-// The accuracy the harness asks of an engine (issue 3): relative error of threshold, period and restitution.
-constexpr double kThresholdTarget = 5e-3, kPeriodTarget = 5e-3, kRestitutionTarget = 2e-2;
+using compare::kPeriodTarget;  // compare/targets.hpp
+using compare::kRestitutionTarget;
+using compare::kThresholdTarget;
 
 struct CompareOptions {
     WallOptions wall;
@@ -57,8 +59,6 @@ multibody::EngineSettings settings_of(const multibody::Engine& engine, const Com
     }
     return s;
 }
-
-Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 Json metric_json(const compare::MetricComparison& m, double target) {
     return {{"analytic", finite_or_null(m.analytic)},
@@ -97,8 +97,8 @@ Command add_compare_command(CLI::App& root) {
         "of theta1' after and before the first impact. rel_error = engine / analytic - 1; targets 0.5 %, 0.5 %, 2 %.\n"
         "JSON keys: engine, version, threshold, period, restitution, restitution_amplitude (each {analytic, engine,\n"
         "rel_error, target, within_target}), closed_forms {threshold_g, restitution, restitution_whole_mechanism,\n"
-        "period_linearised}, settings\n"
-        "{dt, iterations, knobs}, wall_time_s, wall {...}. Exit 3 when the engine fails (NaN, sliding, ...).");
+        "period_linearised}, theta0, settings {dt, iterations, knobs}, wall_time_s, wall {...}.\n"
+        "Exit 3 when the engine fails (NaN, sliding, ...).");
     return {cmd, [o](std::ostream& out) {
                 const WallKind kind = parse_wall_kind(o->model.model);
                 const multibody::WallScene scene = kind == WallKind::vssw

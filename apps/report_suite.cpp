@@ -65,7 +65,7 @@ std::string all_of(std::size_t n, const std::string& noun) {
 
 std::string step_ms(double dt) { return fmt::format("{:g} ms", dt * 1e3); }
 
-// The free-vibration case a step case belongs to: its id without the "/dt<dt>" suffix.
+// The free-vibration case a step case belongs to: its id without the "/dt<dt>/<engine>" end.
 std::string step_base(const std::string& id) {
     const auto pos = id.rfind("/dt");
     return pos == std::string::npos ? id : id.substr(0, pos);
@@ -142,7 +142,7 @@ const char* kind_name(compare::CaseKind kind) {
 compare::CaseKind case_kind(const ReportInput& in, const std::string& case_id) {
     for (const compare::SuiteCase& c : in.suite.cases)
         if (c.id == case_id) return c.kind;
-    // From the id's shape: "<wall>", "<wall>/r<r>", "<wall>/<record>", "<wall>/r<r>/dt<dt>".
+    // From the id's shape: "<wall>", "<wall>/r<r>", "<wall>/<record>", "<wall>/r<r>/dt<dt>/<engine>".
     const auto slash = case_id.find('/');
     if (slash == std::string::npos) return compare::CaseKind::threshold;
     if (case_id.find("/dt", slash) != std::string::npos) return compare::CaseKind::step;
@@ -210,8 +210,6 @@ std::vector<EngineSummary> summarize(const ReportInput& in) {
     for (const std::string& engine : compared_engines(res)) {
         EngineSummary s;
         s.engine = engine;
-        for (const compare::EngineRunInfo& e : res.engines)
-            if (e.name == engine) s.version = e.version;
         for (const compare::CaseFailure& f : res.failures) s.failures += f.engine == engine ? 1 : 0;
         for (const std::string& metric : metric_order(res)) {
             MetricExtreme x{metric, 0.0, "", 0, 0};

@@ -1,6 +1,6 @@
 #pragma once
-// What `vssw report` says about a validation suite's results (compare/suite.hpp), computed once and shared by every
-// writer (Markdown, HTML, JSON, CSV, plots) so that they cannot disagree: the targets, the per-engine summary, the
+// What `vssw report` says about a validation suite's results (compare/suite.hpp), computed by one set of functions
+// that every writer (Markdown, HTML, JSON, CSV, plots) calls, so that they cannot disagree: the targets, the per-engine summary, the
 // per-metric tables, the error-against-step study and the findings in plain words.
 //
 // Nothing here runs a simulation: the writers and these functions take a SuiteResults built by compare::run_suite or
@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "compare/suite.hpp"
+#include "compare/targets.hpp"
 
 namespace vssw::cli {
 
-// The accuracy the project asks of an engine (issue 3), relative error: threshold and period 0.5 %, restitution 2 %
-// (against the analytic model's impact map and against the whole-mechanism plastic impact alike).
-constexpr double kReportThresholdTarget = 5e-3;
-constexpr double kReportPeriodTarget = 5e-3;
-constexpr double kReportRestitutionTarget = 2e-2;
+// The accuracy the project asks of an engine (compare/targets.hpp).
+constexpr double kReportThresholdTarget = compare::kThresholdTarget;
+constexpr double kReportPeriodTarget = compare::kPeriodTarget;
+constexpr double kReportRestitutionTarget = compare::kRestitutionTarget;
 // A peak rotation under a record this far below the analytic model's (relative) is "much less" in the findings: the
 // PW's peaks, whose impact the engines reproduce, scatter by about 25 % (rocking under a record is that sensitive).
 constexpr double kReportMuchLowerPeak = 0.5;
@@ -45,7 +45,7 @@ struct ReportInput {
 // The kind of a case: from the suite when it lists the case, else from the shape of its id (compare/suite.hpp).
 compare::CaseKind case_kind(const ReportInput& in, const std::string& case_id);
 const char* kind_name(compare::CaseKind kind);
-// The engine step of a `step` case (from the suite, else from the "/dt<dt>" suffix of its id); NaN if none.
+// The engine step of a `step` case (from the suite, else from the "/dt<dt>/<engine>" end of its id); NaN if none.
 double case_step(const ReportInput& in, const std::string& case_id);
 
 // "ODE", "Bullet", "Simbody" for the engine names (others as they are).
@@ -64,7 +64,7 @@ struct MetricExtreme {
     int outside = 0;         // of which outside the target (metrics without one: a nonzero error, e.g. overturned)
 };
 struct EngineSummary {
-    std::string engine, version;
+    std::string engine;
     int with_target = 0, within = 0, not_measured = 0, failures = 0;
     std::vector<MetricExtreme> extremes;  // in report order (metric_order)
     std::string line;                     // "ode: 31/33 metrics within target; max |error| ...; 0 failures"

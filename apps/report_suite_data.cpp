@@ -8,12 +8,10 @@
 namespace vssw::cli {
 namespace {
 
-Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
-
 Json settings_json(const multibody::EngineSettings& s) {
     Json knobs = Json::object();
-    for (const auto& [k, v] : s.knobs) knobs[k] = number_or_null(v);
-    return {{"dt", number_or_null(s.dt)}, {"iterations", s.iterations}, {"knobs", knobs}};
+    for (const auto& [k, v] : s.knobs) knobs[k] = finite_or_null(v);
+    return {{"dt", finite_or_null(s.dt)}, {"iterations", s.iterations}, {"knobs", knobs}};
 }
 
 Json suite_json(const ReportInput& in) {
@@ -33,7 +31,7 @@ Json suite_json(const ReportInput& in) {
         Json j = {{"id", c.id}, {"kind", kind_name(c.kind)}, {"wall", c.wall_id}};
         if (c.kind == compare::CaseKind::free || c.kind == compare::CaseKind::step) j["r"] = c.r;
         if (c.kind == compare::CaseKind::history) j["record"] = c.record_id;
-        j["dt"] = c.dt ? number_or_null(*c.dt) : Json(nullptr);
+        j["dt"] = c.dt ? finite_or_null(*c.dt) : Json(nullptr);
         cases.push_back(j);
     }
     return {{"name", in.results.suite.empty() ? suite.name : in.results.suite},
@@ -74,9 +72,9 @@ Json results_json(const ReportInput& in) {
                         {"metric", r.metric},
                         {"unit", r.unit},
                         {"reference", r.reference},
-                        {"analytic", number_or_null(r.analytic)},
-                        {"engine_value", number_or_null(r.engine_value)},
-                        {"rel_error", number_or_null(r.rel_error)},
+                        {"analytic", finite_or_null(r.analytic)},
+                        {"engine_value", finite_or_null(r.engine_value)},
+                        {"rel_error", finite_or_null(r.rel_error)},
                         {"target", target ? Json(*target) : Json(nullptr)},
                         {"within_target", target ? Json(std::isfinite(r.rel_error) && std::abs(r.rel_error) <= *target)
                                                  : Json(nullptr)}});
@@ -90,7 +88,7 @@ Json results_json(const ReportInput& in) {
     for (const EngineSummary& s : summarize(in)) {
         Json max_error = Json::object();
         for (const MetricExtreme& x : s.extremes)
-            max_error[x.metric] = {{"rel_error", number_or_null(x.rel_error)}, {"case_id", x.case_id}};
+            max_error[x.metric] = {{"rel_error", finite_or_null(x.rel_error)}, {"case_id", x.case_id}};
         summary.push_back({{"engine", s.engine},
                            {"line", s.line},
                            {"within", s.within},
@@ -103,14 +101,14 @@ Json results_json(const ReportInput& in) {
     Json steps = Json::array();
     for (const StepSeries& s : step_series(in)) {
         Json dt = Json::array(), err = Json::array();
-        for (double v : s.dt) dt.push_back(number_or_null(v));
-        for (double v : s.rel_error) err.push_back(number_or_null(v));
+        for (double v : s.dt) dt.push_back(finite_or_null(v));
+        for (double v : s.rel_error) err.push_back(finite_or_null(v));
         steps.push_back({{"engine", s.engine},
                          {"case_id", s.base_case},
                          {"metric", s.metric},
                          {"dt", dt},
                          {"rel_error", err},
-                         {"order", number_or_null(s.order)}});
+                         {"order", finite_or_null(s.order)}});
     }
 
     Json traces = Json::array();
@@ -130,7 +128,7 @@ Json results_json(const ReportInput& in) {
             {"step_study", steps},
             {"traces", traces},
             {"plots", {{"made", in.meta.plots_made}, {"note", in.meta.plots_note}}},
-            {"wall_time_s", number_or_null(res.wall_time_s)},
+            {"wall_time_s", finite_or_null(res.wall_time_s)},
             {"threads", res.threads}};
 }
 

@@ -51,7 +51,15 @@ int main(int argc, char** argv) {
     try {
         const auto engine = multibody::make_engine(argv[1]);
         std::vector<double> steps;
-        for (int i = 2; i < argc; ++i) steps.push_back(std::atof(argv[i]));
+        for (int i = 2; i < argc; ++i) {
+            char* end = nullptr;
+            const double dt = std::strtod(argv[i], &end);
+            if (end == argv[i] || *end != '\0' || !(dt > 0.0)) {
+                std::fprintf(stderr, "vssw_engine_accuracy: step '%s' is not a positive number (seconds)\n", argv[i]);
+                return 2;
+            }
+            steps.push_back(dt);
+        }
         if (steps.empty()) steps = {1e-3, 2e-4, 5e-5};
         std::printf("| wall | dt [s] | threshold | period (r = 0.5) | restitution | restitution vs whole mechanism | "
                     "wall time [s] |\n");

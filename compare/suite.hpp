@@ -34,7 +34,7 @@ struct SuiteWall {
 enum class CaseKind {
     threshold,  // find_threshold: metric threshold_g
     free,       // run_free_vibration released at r alpha: period, restitution, restitution_whole_mechanism (VSSW)
-    history,    // a ground-motion record from rest: peak_rotation (max |theta1| / alpha), overturned, rms_difference
+    history,    // a ground-motion record from rest: the history metrics below (metrics_of lists them)
     step,       // free vibration at a given engine step dt (error against step size): period, restitution
 };
 const char* to_string(CaseKind kind);
@@ -91,7 +91,9 @@ Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids)
 //   history         peak_rotation [alpha]: max |theta1| / alpha; peak_time [s]: when it is reached;
 //                   overturned [0/1]: rel_error = engine - analytic (0 when they agree, +-1 when not);
 //                   rms_difference [alpha]: analytic = the analytic peak_rotation, engine = RMS over the analytic
-//                   run of (theta1_engine - theta1_analytic) / alpha, rel_error = that RMS / the analytic peak
+//                   run of (theta1_engine - theta1_analytic) / alpha, rel_error = that RMS / the analytic peak;
+//                   peak_rotation_whole_mechanism [alpha] (VSSW): the engine's peak against the analytic model run
+//                   with restitution_whole_mechanism() in place of Eq. (19)
 // A metric a run does not show (no impact, an unresolved impact) is NaN, never a missing row.
 struct MetricRow {
     std::string case_id;

@@ -21,11 +21,6 @@ constexpr const char* kRestitution = "restitution";  // > 0: this impact ratio i
 constexpr double kDefaultRtol = 1e-10;
 constexpr double kDefaultOutputDt = 1e-4;  // [s] the engines' default step (EngineSettings::dt)
 
-void require_one_description(const WallScene& scene) {
-    if (scene.vssw.has_value() == scene.parapet.has_value())
-        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
-}
-
 struct Knobs {
     Kinematics kinematics = Kinematics::exact;
     double rtol = kDefaultRtol;
@@ -50,12 +45,6 @@ double upper_rotation(const WallScene& scene, Kinematics kinematics, double thet
 }
 
 }  // namespace
-
-std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics) {
-    require_one_description(scene);
-    if (scene.vssw) return make_vssw_model(*scene.vssw, kinematics);
-    return make_parapet_model(*scene.parapet);
-}
 
 EngineSettings AnalyticEngine::default_settings() const {
     EngineSettings s;

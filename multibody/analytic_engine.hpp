@@ -7,7 +7,8 @@
 //    > 0, takes precedence, as for an engine. Default 1e-4 s, the engines' default step, so that both sides of a
 //    comparison are sampled alike unless the caller says otherwise.
 //  - knobs: "paper_kinematics" (0: exact kinematics of Eq. 2, the default, as every comparison with an engine uses;
-//    1: the paper's Eq. 3), "rtol" (DOP853's relative tolerance, default 1e-10). Any other knob is an InputError:
+//    1: the paper's Eq. 3), "rtol" (DOP853's relative tolerance, default 1e-10), "restitution" (> 0: this impact
+//    ratio instead of Eq. (19) / Housner's, with_restitution in analytic/model.hpp). Any other knob is an InputError:
 //    a misspelt knob must not be ignored silently.
 //  - iterations: unused.
 // The integrator's own failures (step size underflow, step limit, a non-finite state) are reported as EngineFailure;
@@ -17,17 +18,14 @@
 
 #include "analytic/model.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/scene_geometry.hpp"  // analytic_model
 
 namespace vssw::multibody {
-
-// The rocking model of a scene: make_vssw_model(*scene.vssw, k) or make_parapet_model(*scene.parapet) (the parapet
-// has one kinematics; k is ignored). Throws InputError unless exactly one description is set.
-std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics);
 
 class AnalyticEngine final : public Engine {
 public:
     std::string name() const override { return "analytic"; }
-    std::string version() const override { return "vssw analytic (DOP853, rtol 1e-10)"; }
+    std::string version() const override { return "vssw analytic (DOP853, event-driven)"; }
     EngineSettings default_settings() const override;
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                         const EngineSettings& settings) const override;

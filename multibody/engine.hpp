@@ -33,6 +33,7 @@ struct WallScene {
     bool is_vssw() const { return vssw.has_value(); }
     double alpha() const { return vssw ? vssw->alpha1 : parapet->alpha; }  // reference angle alpha1 or alpha
     double gravity() const { return vssw ? vssw->g : parapet->g; }
+    double overburden() const { return vssw ? vssw->N : parapet->N; }  // N [N/m]
 };
 
 // How the run starts and what shakes it.

@@ -10,8 +10,17 @@
 
 namespace vssw::multibody {
 
+FailureLimits FailureLimits::read(const SettingsReader& r) {
+    const FailureLimits defaults;
+    return {r.positive("slide_limit", defaults.slide), r.positive("penetration_limit", defaults.penetration)};
+}
+
+long sample_every(const EngineSettings& settings, double dt) {
+    return settings.sample_dt > 0.0 ? std::max(1L, std::lround(settings.sample_dt / dt)) : 1L;
+}
+
 RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt,
-                       double slide_limit, double penetration_limit)
+                       FailureLimits limits)
     : engine_(std::move(engine)),
       b_(block_sizes(scene).b),
       friction_(scene.friction),
@@ -21,8 +30,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       motion_end_(ex.horizontal.duration()),
       stop_angle_(ex.stop_angle),
       stop_at_rest_(ex.stop_at_rest),
-      slide_limit_(slide_limit),
-      penetration_limit_(penetration_limit),
+      limits_(limits),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
       quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))) {}
@@ -36,11 +44,11 @@ RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const
     // No sliding: while rocking the pivot corner stays put, at rest both do; the smaller drift of the two base
     // corners from their places covers both cases.
     const double drift = std::abs(c.right_dx) < std::abs(c.left_dx) ? c.right_dx : c.left_dx;
-    if (std::abs(drift) > slide_limit_ * b_)
+    if (std::abs(drift) > limits_.slide * b_)
         throw EngineFailure(fmt::format("{}: the wall slid {:.3g} m at its base at t = {:.6g} s (friction {})",
                                         engine_, drift, t, friction_));
     const double sink = -std::min(c.right_y, c.left_y);
-    if (sink > penetration_limit_ * b_)
+    if (sink > limits_.penetration * b_)
         throw EngineFailure(
             fmt::format("{}: the wall sank {:.3g} m into the ground at t = {:.6g} s", engine_, sink, t));
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;

@@ -5,8 +5,22 @@
 #include <string>
 
 #include "multibody/engine.hpp"
+#include "multibody/settings_reader.hpp"
 
 namespace vssw::multibody {
+
+// When a run counts as failed, in units of b (the engine settings slide_limit and penetration_limit, every adapter's):
+// sliding past `slide` of the pivot corner (measured: the wall "walks" ~1e-2 b over many small impacts in Bullet) or
+// sinking past `penetration` below the ground.
+struct FailureLimits {
+    double slide = 5e-2;
+    double penetration = 5e-2;
+    // The two settings, read by an adapter whose known names include "slide_limit" and "penetration_limit".
+    static FailureLimits read(const SettingsReader& r);
+};
+
+// Record every this many steps for settings.sample_dt (every step when it is 0).
+long sample_every(const EngineSettings& settings, double dt);
 
 // The lower block's base corners after a step, relative to the ground (which may move): horizontal offsets from
 // their places at rest (+b and -b) and heights above the ground's top.
@@ -18,20 +32,22 @@ class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
 
-    // slide_limit and penetration_limit in units of b.
-    RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, double slide_limit,
-               double penetration_limit);
+    RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, FailureLimits limits);
 
     // Throws EngineFailure on a failure; otherwise says whether the run goes on.
     Verdict check(double t, double theta1, double theta1_dot, const BaseCorners& corners);
     // True when the verdict ends the run, having marked the trajectory overturned or at rest as it says.
     static bool ends_run(Verdict verdict, Trajectory& out);
+    // Whether step i of n is recorded: every `every` steps, the last, and the one that ends the run.
+    static bool records(long i, long n, long every, Verdict verdict) {
+        return i % every == 0 || i == n || verdict != Verdict::go_on;
+    }
 
 private:
     std::string engine_;
     double b_, friction_, collapse_, v_ref_, alpha_, motion_end_, stop_angle_;
     bool stop_at_rest_;
-    double slide_limit_, penetration_limit_;
+    FailureLimits limits_;
     int quiet_steps_ = 0, quiet_needed_;
 };
 

@@ -3,14 +3,11 @@
 #include <cmath>
 
 #include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
 #include "analytic/model.hpp"
 
 namespace vssw::multibody {
 namespace {
-
-std::unique_ptr<RockingModel> model_of(const WallScene& scene) {
-    return scene.vssw ? make_vssw_model(*scene.vssw, Kinematics::exact) : make_parapet_model(*scene.parapet);
-}
 
 // Clockwise rotation by `angle` of the vector (x, y).
 void turn(double angle, double x, double y, double& out_x, double& out_y) {
@@ -20,7 +17,24 @@ void turn(double angle, double x, double y, double& out_x, double& out_y) {
 
 }  // namespace
 
+void require_one_description(const WallScene& scene) {
+    if (scene.vssw.has_value() == scene.parapet.has_value())
+        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+}
+
+std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics) {
+    require_one_description(scene);
+    if (scene.vssw) return make_vssw_model(*scene.vssw, kinematics);
+    return make_parapet_model(*scene.parapet);
+}
+
+bool left_guide_binds(double right_corner_x, double left_corner_x, double ground_x, double b) {
+    const double right_out = right_corner_x - ground_x - b, left_out = -b - (left_corner_x - ground_x);
+    return left_out > right_out;
+}
+
 BlockSizes block_sizes(const WallScene& scene) {
+    require_one_description(scene);
     if (scene.vssw) return {scene.vssw->b, scene.vssw->h1, scene.vssw->h2, scene.vssw->m1, scene.vssw->m2};
     return {scene.parapet->b, scene.parapet->h, 0.0, scene.parapet->m, 0.0};
 }
@@ -46,7 +60,7 @@ WallPose pose_at(const WallScene& scene, double theta1) {
     return p;
 }
 
-double collapse_angle(const WallScene& scene) { return model_of(scene)->collapse_angle(); }
-double reference_velocity(const WallScene& scene) { return model_of(scene)->reference_velocity(); }
+double collapse_angle(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->collapse_angle(); }
+double reference_velocity(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->reference_velocity(); }
 
 }  // namespace vssw::multibody

@@ -2,9 +2,19 @@
 // Placement of the blocks shared by every engine adapter, from the analytic description: where each block's centre
 // is and how it is turned for a lower-body rotation theta1 (the mechanism of Eq. 1-2, exact kinematics), and where the
 // points the adapters measure sit on each block. Engine-free: adapters turn these numbers into their own bodies.
+#include <memory>
+
+#include "analytic/model.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::multibody {
+
+// Throws InputError unless exactly one description (VSSW or parapet) is set: every backend's first check.
+void require_one_description(const WallScene& scene);
+
+// The rocking model of a scene: make_vssw_model(*scene.vssw, k) or make_parapet_model(*scene.parapet) (the parapet
+// has one kinematics; k is ignored). Throws InputError unless exactly one description is set.
+std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics);
 
 struct BlockPose {
     double x, y;   // centre [m]
@@ -15,7 +25,8 @@ struct WallPose {
     BlockPose lower, upper;  // upper is unused for a parapet
 };
 
-// Half extents of the blocks: (b, h1) and (b, h2) for a VSSW, (b, h) for a parapet (lower only).
+// Half extents of the blocks: (b, h1) and (b, h2) for a VSSW, (b, h) for a parapet (lower only). Checks the scene
+// (require_one_description).
 struct BlockSizes {
     double b, h_lower, h_upper;  // h_upper = 0 for a parapet
     double m_lower, m_upper;     // masses per unit depth [kg/m]
@@ -31,5 +42,9 @@ double collapse_angle(const WallScene& scene);
 
 // theta1'_r of the scene's analytic model (exact kinematics): the scale engines use for rest and failure checks.
 double reference_velocity(const WallScene& scene);
+
+// The roller rule of every adapter: of the upper block's two top corners (world x of each), the guide to give the
+// engine is the one whose corner is further out past its line (x = ground_x -/+ b). True: the left guide.
+bool left_guide_binds(double right_corner_x, double left_corner_x, double ground_x, double b);
 
 }  // namespace vssw::multibody

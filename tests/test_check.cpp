@@ -94,43 +94,36 @@ TEST(BoundsFile, CasesAndEnginesNeededAreListedOnce) {
     EXPECT_EQ(vssw::compare::engines_needed(b), (std::vector<std::string>{"ode", "bullet"}));
 }
 
+// The start of an ODE engine bound on case "a", for the entries below that differ only in their last keys.
+const std::string kOdeBound = "[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\n";
+
+// The text is refused with a message holding `fragment` (the message is printed when it does not).
+void expect_refused(const std::string& text, const std::string& fragment, const std::string& format = "toml") {
+    const std::string message = error_of(text, format);
+    EXPECT_NE(message.find(fragment), std::string::npos) << "message: '" << message << "'";
+}
+
 TEST(BoundsFile, EachMalformationIsNamed) {
-    EXPECT_NE(error_of("suite = \"default\"\n[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\n"
-                       "max_eror = 0.1\n")
-                  .find("unknown key 'max_eror'"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[analytic]]\ncase = \"a\"\nmetric = \"period\"\nmax_drift = 1e-6\n").find("'reference' is missing"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\nmax_error = -0.1\n")
-                  .find("'max_error' must be >= 0, got -0.1"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\nerror = [0.1, -0.1]\n")
-                  .find("min > max"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[analytic]]\ncase = \"a\"\nmetric = \"p\"\nreference = nan\nmax_drift = 1e-6\n")
-                  .find("'reference' must be a finite number"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = []\nmetric = \"period\"\nmax_error = 0.1\n")
-                  .find("non-empty list"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\"]\nmetric = \"period\"\n").find("exactly one of"),
-              std::string::npos);
-    EXPECT_NE(error_of("suite = \"default\"\n").find("no bounds"), std::string::npos);
-    EXPECT_NE(error_of("[[engine]\n").find("TOML syntax error at line 1"), std::string::npos);
-    EXPECT_NE(error_of("{\"engine\": [", "json").find("JSON syntax error"), std::string::npos);
-    EXPECT_NE(error_of("{\"bounds\": []}", "json").find("unknown key 'bounds'"), std::string::npos);
+    expect_refused("suite = \"default\"\n" + kOdeBound + "max_eror = 0.1\n", "unknown key 'max_eror'");
+    expect_refused("[[analytic]]\ncase = \"a\"\nmetric = \"period\"\nmax_drift = 1e-6\n", "'reference' is missing");
+    expect_refused(kOdeBound + "max_error = -0.1\n", "'max_error' must be >= 0, got -0.1");
+    expect_refused(kOdeBound + "error = [0.1, -0.1]\n", "min > max");
+    expect_refused("[[analytic]]\ncase = \"a\"\nmetric = \"p\"\nreference = nan\nmax_drift = 1e-6\n",
+                   "'reference' must be a finite number");
+    expect_refused("[[engine]]\nengine = \"ode\"\ncases = []\nmetric = \"period\"\nmax_error = 0.1\n", "non-empty list");
+    expect_refused(kOdeBound, "exactly one of");
+    expect_refused("suite = \"default\"\n", "no bounds");
+    expect_refused("[[engine]\n", "TOML syntax error at line 1");
+    expect_refused("{\"engine\": [", "JSON syntax error", "json");
+    expect_refused("{\"bounds\": []}", "unknown key 'bounds'", "json");
     // A key given twice would silently loosen the bound in JSON (TOML refuses it itself).
-    EXPECT_NE(error_of("{\"analytic\": [{\"case\": \"a\", \"metric\": \"period\", \"reference\": 1, "
-                       "\"max_drift\": 1e-6, \"max_drift\": 5}]}",
-                       "json")
-                  .find("key 'max_drift' given twice"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[engine]]\nengine = \"analytic\"\ncases = [\"a\"]\nmetric = \"period\"\nmax_error = 0.1\n")
-                  .find("the reference"),
-              std::string::npos);
-    EXPECT_NE(error_of("[[engine]]\nengine = \"ode\"\ncases = [\"a\", \"a\"]\nmetric = \"period\"\nmax_error = 0.1\n")
-                  .find("names a case twice"),
-              std::string::npos);
+    expect_refused("{\"analytic\": [{\"case\": \"a\", \"metric\": \"period\", \"reference\": 1, "
+                   "\"max_drift\": 1e-6, \"max_drift\": 5}]}",
+                   "key 'max_drift' given twice", "json");
+    expect_refused("[[engine]]\nengine = \"analytic\"\ncases = [\"a\"]\nmetric = \"period\"\nmax_error = 0.1\n",
+                   "the reference");
+    expect_refused("[[engine]]\nengine = \"ode\"\ncases = [\"a\", \"a\"]\nmetric = \"period\"\nmax_error = 0.1\n",
+                   "names a case twice");
 }
 
 TEST(BoundsFile, AMissingFileOrAnUnknownFormatIsNamed) {

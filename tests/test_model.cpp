@@ -183,14 +183,6 @@ TEST(Model, CollapseAngleIsEq26OrTheLowerBodyLyingFlat) {
     EXPECT_DOUBLE_EQ(make_parapet_model(make_parapet(4.0, 0.4))->collapse_angle(), kHalfPi);
 }
 
-}  // namespace
-}  // namespace vssw
-
-namespace vssw {
-namespace {
-
-// Round-off of one multiplication in the impact map theta1'+ = e theta1'-.
-constexpr double kImpactMapRoundoff = 1e-12;
 
 TEST(Model, WithRestitutionChangesOnlyTheImpactRatio) {
     const VsswGeometry w = make_vssw(4.0, 0.4, 0.7);
@@ -203,9 +195,9 @@ TEST(Model, WithRestitutionChangesOnlyTheImpactRatio) {
     ASSERT_FALSE(other.impacts.empty());
     EXPECT_EQ(other.impacts[0].t, own.impacts[0].t);
     EXPECT_EQ(other.impacts[0].theta_dot_before, own.impacts[0].theta_dot_before);
-    EXPECT_NEAR(other.impacts[0].theta_dot_after / other.impacts[0].theta_dot_before, e, kImpactMapRoundoff);
+    EXPECT_NEAR(other.impacts[0].theta_dot_after / other.impacts[0].theta_dot_before, e, kRoundoff);
     EXPECT_NEAR(own.impacts[0].theta_dot_after / own.impacts[0].theta_dot_before, eq19_restitution(w),
-                kImpactMapRoundoff);
+                kRoundoff);
     // A lower ratio dissipates more: the wall stops sooner.
     EXPECT_LT(other.impacts.size(), own.impacts.size());
 }

@@ -45,8 +45,7 @@ enum Group : int { kGround = 1, kLower = 2, kUpper = 4 };
 struct Knobs {
     int iterations;           // sequential-impulse iterations per step
     double erp;               // error reduction of penetration (used only by split impulse's position pass)
-    double slide_limit;       // reported as sliding past this horizontal drift of the pivot corner, in units of b
-    double penetration_limit;  // reported as penetration past this depth below the ground, in units of b
+    FailureLimits limits;      // run_monitor.hpp
     bool moving_supports;      // move the ground instead of applying pseudo-forces
 };
 
@@ -55,8 +54,7 @@ Knobs read_knobs(const EngineSettings& s) {
     Knobs k{};
     k.iterations = s.iterations > 0 ? s.iterations : 20;
     k.erp = r.non_negative("erp", 0.2);
-    k.slide_limit = r.positive("slide_limit", 5e-2);  // the wall "walks" ~1e-2 b over many small impacts (measured)
-    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    k.limits = FailureLimits::read(r);
     k.moving_supports = r.flag("moving_supports");
     return k;
 }
@@ -150,10 +148,10 @@ public:
         btTransform ground_now;
         if (ground_motion_) ground_motion_->getWorldTransform(ground_now);
         const double x0 = ground_motion_ ? ground_now.getOrigin().x() : 0.0;
-        const double right_out = (t * btVector3(sizes_.b, sizes_.h_upper, 0)).x() - x0 - sizes_.b;
-        const double left_out = -sizes_.b - ((t * btVector3(-sizes_.b, sizes_.h_upper, 0)).x() - x0);
-        rollers_[0]->setEnabled(left_out > right_out);
-        rollers_[1]->setEnabled(left_out <= right_out);
+        const bool left = left_guide_binds((t * btVector3(sizes_.b, sizes_.h_upper, 0)).x(),
+                                           (t * btVector3(-sizes_.b, sizes_.h_upper, 0)).x(), x0, sizes_.b);
+        rollers_[0]->setEnabled(left);
+        rollers_[1]->setEnabled(!left);
     }
 
     int contact_points() {
@@ -268,7 +266,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     BulletWorld w(scene, knobs, ex.theta0);
     const BlockSizes s = block_sizes(scene);
     const double g = scene.gravity();
-    const double N = scene.vssw ? scene.vssw->N * kDepth : scene.parapet->N * kDepth;
+    const double N = scene.overburden() * kDepth;
     const double h_total = s.h_lower + s.h_upper;
     btRigidBody& lower = w.lower();
     btRigidBody* upper = w.upper();
@@ -280,7 +278,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
 
     Trajectory out;
-    const long every = settings.sample_dt > 0.0 ? std::max(1L, std::lround(settings.sample_dt / settings.dt)) : 1L;
+    const long every = sample_every(settings, settings.dt);
     auto record = [&](double t) {
         TrajectorySample p{};
         p.t = t;
@@ -309,7 +307,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     const long n_steps = std::lround(ex.t_end / dt);
     double x_g = 0.0, v_g = 0.0;  // the ground's displacement and velocity (moving supports)
     record(0.0);
-    RunMonitor monitor("Bullet", scene, ex, dt, knobs.slide_limit, knobs.penetration_limit);
+    RunMonitor monitor("Bullet", scene, ex, dt, knobs.limits);
     for (long i = 1; i <= n_steps; ++i) {
         const double t0 = static_cast<double>(i - 1) * dt;
         // Pseudo-force of the ground motion at the step's midpoint (its impulse over the step to second order).
@@ -337,7 +335,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         const btVector3 left = lower.getWorldTransform() * btVector3(-s.b, -s.h_lower, 0);
         const auto verdict =  // corners relative to the (moving) ground
             monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()});
-        if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
+        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }
     return out;

@@ -117,10 +117,7 @@ struct Knobs {
     // speed, but SOR stops short under a heavy load: T1 #1 at xi 0.5, threshold -1.7e-4 (20 iterations) and
     // -3.9e-4 (5) where the direct solver gives the analytic bracket exactly.
     int quickstep_iterations;
-    // slide_limit (default 0.05, in units of b) and penetration_limit (default 0.05 b): reported as failures past
-    // these (the same bounds as the Bullet adapter's).
-    double slide_limit;
-    double penetration_limit;
+    FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
     // moving_supports (default 0): 1 moves the ground (and the roller's anchor) as a kinematic body instead of
     // applying pseudo-forces. The ground's velocity for step k is V_k = V_{k-1} + h a_h(t_{k-1/2}), the impulse the
     // pseudo-forces give, and ODE moves the kinematic body with the velocity the contacts see in the same step: the
@@ -143,8 +140,7 @@ Knobs read_knobs(const EngineSettings& s) {
             k.max_correcting_vel);
     k.margin = r.non_negative("margin", 1e-3);
     k.quickstep_iterations = r.flag("quickstep") ? (s.iterations > 0 ? s.iterations : 20) : 0;
-    k.slide_limit = r.positive("slide_limit", 5e-2);
-    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    k.limits = FailureLimits::read(r);
     k.moving_supports = r.flag("moving_supports");
     return k;
 }
@@ -340,8 +336,8 @@ private:
     void add_roller() {
         const double b = sizes_.b, x0 = ground_x();
         const Vec2 right = world_point(upper_, b, sizes_.h_upper), left = world_point(upper_, -b, sizes_.h_upper);
-        const double right_out = right.x - x0 - b, left_out = -b - (left.x - x0);
-        const bool use_left = left_out > right_out;
+        const double right_out = right.x - x0 - b, left_out = -b - (left.x - x0);  // also the guides' gaps
+        const bool use_left = left_out > right_out;  // left_guide_binds (scene_geometry.hpp), with the gaps kept
         const Vec2 corner = use_left ? left : right;
         dContact c{};
         c.geom.pos[0] = corner.x;
@@ -419,14 +415,13 @@ public:
 Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "ODE time step dt (s)", "a positive finite number",
             settings.dt);
-    if (scene.vssw.has_value() == scene.parapet.has_value())
-        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+    require_one_description(scene);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     OdeScene w(scene, knobs, ex.theta0, dt);
     const BlockSizes s = block_sizes(scene);
     const double g = scene.gravity();
-    const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
+    const double N = scene.overburden() * kDepth;
     const double h_total = s.h_lower + s.h_upper;
     dBodyID lower = w.lower();
     dBodyID upper = w.upper();
@@ -437,7 +432,7 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
     const int messages_before = g_ode_messages;
 
     Trajectory out;
-    const long every = settings.sample_dt > 0.0 ? std::max(1L, std::lround(settings.sample_dt / dt)) : 1L;
+    const long every = sample_every(settings, dt);
     auto record = [&](double t) {
         TrajectorySample p{};
         p.t = t;
@@ -467,7 +462,7 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
     const long n_steps = std::lround(ex.t_end / dt);
     double v_g = 0.0;  // the ground's velocity (moving supports)
     record(0.0);
-    RunMonitor monitor("ODE", scene, ex, dt, knobs.slide_limit, knobs.penetration_limit);
+    RunMonitor monitor("ODE", scene, ex, dt, knobs.limits);
     for (long i = 1; i <= n_steps; ++i) {
         const double t0 = static_cast<double>(i - 1) * dt;
         // The ground motion at the step's midpoint: its impulse over the step to second order.
@@ -498,7 +493,7 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
         const Vec2 right = world_point(lower, s.b, -s.h_lower), left = world_point(lower, -s.b, -s.h_lower);
         const auto verdict =  // corners relative to the (moving) ground
             monitor.check(t, theta, rate, {right.x - x_g - s.b, right.y, left.x - x_g + s.b, left.y});
-        if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
+        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }
     return out;

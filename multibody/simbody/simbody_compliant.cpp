@@ -66,8 +66,7 @@ struct Knobs {
     double transition_velocity;  // [m/s] Simbody's friction transition (creep) velocity vt
     double accuracy;             // integrator accuracy (Simbody's relative/weighted error per step)
     int integrator;              // 0 Runge-Kutta-Merson, 1 CPodes (BDF, for stiff contact)
-    double slide_limit;          // [b] failures past these (the other adapters')
-    double penetration_limit;    // [b]
+    FailureLimits limits;        // slide_limit, penetration_limit (run_monitor.hpp)
 };
 
 Knobs read_knobs(const EngineSettings& s) {
@@ -75,8 +74,6 @@ Knobs read_knobs(const EngineSettings& s) {
                            {"stiffness", "radius", "dissipation", "transition_velocity", "accuracy",
                             "integrator", "slide_limit", "penetration_limit", "moving_supports"});
     Knobs k{};
-    const double compliant = r.number("compliant", 1.0);
-    require(compliant == 1.0, std::string(kName) + " setting compliant", "1", compliant);
     // Defaults, measured with `vssw compare` and single free vibrations on the Fig. 6 walls (4 m x 0.4 m, h1/h 0.7):
     // stiffness 1e15 Pa with radius 1e-4 m (E sqrt(r) = 1e13 N/m^1.5: a base corner sinks 1.6e-6 m under the whole
     // Fig. 6 VSSW). The threshold error has a compliance part and a rolling part (the spheres roll by r theta):
@@ -99,8 +96,7 @@ Knobs read_knobs(const EngineSettings& s) {
     // steps and 141 s for a 3.6 s free vibration of the Fig. 6 VSSW (E 1e13, r 1e-3), CPodes 13k steps and 0.9 s, with
     // the same period and restitution to 2e-5.
     k.integrator = r.choice("integrator", 1, 2);
-    k.slide_limit = r.positive("slide_limit", 5e-2);
-    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    k.limits = FailureLimits::read(r);
     require(k.accuracy < 1.0, std::string(kName) + " setting accuracy", "below 1", k.accuracy);
     if (r.flag("moving_supports"))
         throw InputError(fmt::format("{} setting moving_supports = 1 is not supported: the compliant route drives the "
@@ -158,7 +154,7 @@ public:
                 Transform(Rotation(Pi, ZAxis), Vec3(-(b + r_), 0, 0)),
                 ContactSurface(ContactGeometry::HalfSpace(), smooth).joinClique(guides).joinClique(planes));
         }
-        const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
+        const double N = scene.overburden() * kDepth;
         // a_h at the integrator's own times: the error control follows a record between its samples.
         SimTK::Force::Custom(forces_, new WallLoads([&a_h = ex.horizontal](const State& st) { return a_h(st.getTime()); },
                                                     lower_, has_upper_ ? &upper_ : nullptr, sizes_, N));
@@ -207,16 +203,13 @@ private:
 }  // namespace
 
 Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) {
-    require(std::isfinite(settings.dt) && settings.dt > 0.0, "Simbody (compliant) reporting interval dt (s)",
-            "a positive finite number", settings.dt);
-    if (scene.vssw.has_value() == scene.parapet.has_value())
-        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+    // SimbodyEngine::simulate, the only caller, has checked dt and the scene.
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     const CompliantScene w(scene, ex, knobs);
     const BlockSizes s = block_sizes(scene);
     const double g = scene.gravity(), r = knobs.radius;
-    const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
+    const double N = scene.overburden() * kDepth;
     const double h_total = s.h_lower + s.h_upper;
     const bool vssw = w.has_upper();
     const SimTK::MobilizedBody& lower = w.lower();
@@ -245,7 +238,7 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
     }
 
     Trajectory out;
-    const long every = settings.sample_dt > 0.0 ? std::max(1L, std::lround(settings.sample_dt / dt)) : 1L;
+    const long every = sample_every(settings, dt);
     auto record = [&](double t) {
         const SimTK::State& st = integ->getState();
         w.system().realize(st, SimTK::Stage::Velocity);
@@ -256,7 +249,7 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
 
     const long n_reports = std::lround(ex.t_end / dt);
     record(0.0);
-    RunMonitor monitor(kName, scene, ex, dt, knobs.slide_limit, knobs.penetration_limit);
+    RunMonitor monitor(kName, scene, ex, dt, knobs.limits);
     for (long i = 1; i <= n_reports; ++i) {
         const double t = std::min(static_cast<double>(i) * dt, ex.t_end);
         // stepTo returns early at the start of the run (StartOfContinuousInterval, nothing integrated) and when the
@@ -288,7 +281,7 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
         const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
         const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
         const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1] - r, left[0] + s.b, left[1] - r});
-        if (i % every == 0 || i == n_reports || verdict != RunMonitor::Verdict::go_on) record(t);
+        if (RunMonitor::records(i, n_reports, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }
     return out;

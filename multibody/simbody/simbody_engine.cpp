@@ -89,9 +89,7 @@ struct Knobs {
     int solver;
     // both_guides (default 0): 1 offers both roller guides to the stepper every step.
     bool both_guides;
-    // slide_limit and penetration_limit (default 0.05, in units of b): failures past these (the other adapters').
-    double slide_limit;
-    double penetration_limit;
+    FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
 };
 
 Knobs read_knobs(const EngineSettings& s) {
@@ -106,8 +104,7 @@ Knobs read_knobs(const EngineSettings& s) {
     k.restitution = r.choice("restitution", 2, 3);
     k.solver = r.choice("solver", 0, 2);
     k.both_guides = r.flag("both_guides");
-    k.slide_limit = r.positive("slide_limit", 5e-2);
-    k.penetration_limit = r.positive("penetration_limit", 5e-2);
+    k.limits = FailureLimits::read(r);
     if (r.flag("moving_supports"))
         throw InputError(
             "Simbody setting moving_supports = 1 is not supported: the SemiExplicitEuler stepper ignores prescribed "
@@ -163,7 +160,7 @@ public:
             matter_.adoptUnilateralContact(new GatedGuide(base_, UnitVec3(1, 0, 0), -b, upper_,
                                                           Vec3(-b, sizes_.h_upper, 0), inputs_.left_guide));
         }
-        const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
+        const double N = scene.overburden() * kDepth;
         // The ground motion of the step (its midpoint value, set by the loop before each step).
         SimTK::Force::Custom(forces_, new WallLoads([&in = inputs_](const State&) { return in.a_h; }, lower_,
                                                     has_upper_ ? &upper_ : nullptr, sizes_, N));
@@ -240,15 +237,14 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     require(std::isfinite(settings.dt) && settings.dt > 0.0,
             compliant_ ? "Simbody reporting interval dt (s)" : "Simbody time step dt (s)", "a positive finite number",
             settings.dt);
-    if (scene.vssw.has_value() == scene.parapet.has_value())
-        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
+    require_one_description(scene);
     if (compliant_) return simulate_compliant(scene, ex, settings);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     SimbodyScene w(scene, ex.theta0);
     const BlockSizes s = block_sizes(scene);
     const double g = scene.gravity();
-    const double N = (scene.vssw ? scene.vssw->N : scene.parapet->N) * kDepth;
+    const double N = scene.overburden() * kDepth;
     const double h_total = s.h_lower + s.h_upper;
     const bool vssw = w.has_upper();
     const SimTK::MobilizedBody& lower = w.lower();
@@ -267,7 +263,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     ts.initialize(w.initial_state());
 
     Trajectory out;
-    const long every = settings.sample_dt > 0.0 ? std::max(1L, std::lround(settings.sample_dt / dt)) : 1L;
+    const long every = sample_every(settings, dt);
     const SimTK::SimbodyMatterSubsystem& matter = w.matter();
     auto record = [&](double t) {
         const SimTK::State& st = ts.getState();
@@ -282,7 +278,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
 
     const long n_steps = std::lround(ex.t_end / dt);
     record(0.0);
-    RunMonitor monitor("Simbody", scene, ex, dt, knobs.slide_limit, knobs.penetration_limit);
+    RunMonitor monitor("Simbody", scene, ex, dt, knobs.limits);
     StepInputs& in = w.inputs();
     for (long i = 1; i <= n_steps; ++i) {
         const double t0 = static_cast<double>(i - 1) * dt;
@@ -296,7 +292,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
             w.system().realize(st, SimTK::Stage::Position);
             const SimTK::Vec3 right = world_point(upper, st, s.b, s.h_upper);
             const SimTK::Vec3 left = world_point(upper, st, -s.b, s.h_upper);
-            const bool use_left = -s.b - left[0] > right[0] - s.b;
+            const bool use_left = left_guide_binds(right[0], left[0], 0.0, s.b);
             in.left_guide = knobs.both_guides || use_left;
             in.right_guide = knobs.both_guides || !use_left;
         }
@@ -315,7 +311,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
         const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
         const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
         const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1], left[0] + s.b, left[1]});
-        if (i % every == 0 || i == n_steps || verdict != RunMonitor::Verdict::go_on) record(t);
+        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }
     return out;
