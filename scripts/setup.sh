@@ -19,6 +19,7 @@ packages=(
   libode-dev                         # the ODE adapter (pkg-config ode, double precision)
   libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
+  libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
   gnuplot-nox                        # the plots of `vssw report` (SVG; without it the report is written unplotted)
 )
 
