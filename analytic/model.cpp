@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -36,9 +38,10 @@ public:
     // The impact happens at q = 0, where Eq. (2) and Eq. (3) have the same slope: Eq. (19) serves both kinematics.
     double restitution() const override { return eq19_restitution(w_); }
     double reference_angle() const override { return w_.alpha1; }
-    double collapse_angle() const override { return vssw_collapse_angle(w_); }
+    double collapse_angle() const override { return vssw_collapse_angle(w_); }  // the exact kinematics'
     double gravity() const override { return w_.g; }
     double overburden() const override { return w_.N; }
+    const VsswGeometry* vssw_geometry() const override { return &w_; }
 
 protected:
     // Hinge height 2 R1 cos(a) plus the top centre's height above the hinge, (b, 2 h2) turned by theta2.
@@ -48,9 +51,19 @@ protected:
     VsswGeometry w_;
 };
 
+// The paper's kinematics lock where Eq. (3) has turned the upper body by alpha2 + pi/2 (A2 = alpha2 - k q = -pi/2):
+// cos A2 = 0 there and the mass function of Eq. (11a) is infinite (sec^2 A2), so a wall driven towards it creeps
+// ever slower and never arrives. With the hinge high (k = h1/h2 large) this comes before Eq. (26); the run counts it as
+// overturning once |cos A2| falls below kPaperLockCos, where M(q) is already 1e6 times its value at rest: a wall
+// that far out has left the paper's mechanism for good (README, "Where each kinematics stops being valid").
+constexpr double kPaperLockCos = 1e-3;
+
+double paper_lock_angle(const VsswGeometry& w) { return (w.alpha2 + kHalfPi - std::asin(kPaperLockCos)) / w.k; }
+
 class PaperVssw final : public VsswModel {
 public:
     explicit PaperVssw(const VsswGeometry& w) : VsswModel(w) {}
+    double collapse_angle() const override { return std::min(vssw_collapse_angle(w_), paper_lock_angle(w_)); }
     ModelTerms terms(double q) const override {
         const Eq11Coefficients c = eq11_coefficients(w_, q);
         const double R1 = w_.R1;
@@ -64,6 +77,7 @@ public:
         return top_centre_height(std::cos(w_.alpha1 - q), std::sin(theta2), std::cos(theta2));
     }
     std::string name() const override { return "vssw/paper"; }
+    UpperRotation upper_rotation(double q) const override { return {-w_.k * q, -w_.k, 0.0}; }  // Eq. (3)
 };
 
 // Exact kinematics: psi = alpha2 + theta2 from Eq. (2), sin(psi) = s sin(alpha1 - q). G1 = R1(-sin a, cos a) with
@@ -114,6 +128,10 @@ public:
         return top_centre_height(g.ca, s2, c2);
     }
     std::string name() const override { return "vssw/exact"; }
+    UpperRotation upper_rotation(double q) const override {  // Eq. (2): theta2 = psi - alpha2
+        const Angles g = angles(q);
+        return {std::atan2(g.spsi, g.cpsi) - w_.alpha2, g.dpsi, g.ddpsi};
+    }
 };
 
 // Housner's block rocking on a base corner; N at the centre of the top face, (-b, 2h) from the pivot at rest.
@@ -209,6 +227,8 @@ public:
     double collapse_angle() const override { return model_->collapse_angle(); }
     double gravity() const override { return model_->gravity(); }
     double overburden() const override { return model_->overburden(); }
+    const VsswGeometry* vssw_geometry() const override { return model_->vssw_geometry(); }
+    UpperRotation upper_rotation(double q) const override { return model_->upper_rotation(q); }
     std::string name() const override { return model_->name() + fmt::format(", impact ratio {:.6g}", e_); }
 
 private:
@@ -221,6 +241,44 @@ private:
 std::unique_ptr<RockingModel> with_restitution(std::unique_ptr<RockingModel> model, double e) {
     require(std::isfinite(e) && e >= 0.0 && e <= 1.0, "impact ratio (restitution)", "a number in [0, 1]", e);
     return std::make_unique<WithRestitution>(std::move(model), e);
+}
+
+ImpactLaw parse_impact_law(const std::string& text) {
+    if (text == "eq19") return {};
+    if (text == "whole-mechanism") return {ImpactLaw::Kind::whole_mechanism, 0.0};
+    std::size_t used = 0;
+    double e = std::numeric_limits<double>::quiet_NaN();
+    try {
+        e = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(e) || e < 0.0 || e > 1.0)
+        throw InputError("impact law must be 'eq19', 'whole-mechanism' or a restitution in [0, 1], got '" + text +
+                         "'");
+    return {ImpactLaw::Kind::ratio, e};
+}
+
+std::string to_string(const ImpactLaw& law) {
+    switch (law.kind) {
+        case ImpactLaw::Kind::eq19: return "eq19";
+        case ImpactLaw::Kind::whole_mechanism: return "whole-mechanism";
+        case ImpactLaw::Kind::ratio: break;
+    }
+    return fmt::format("{:.6g}", law.ratio);
+}
+
+std::unique_ptr<RockingModel> with_impact_law(std::unique_ptr<RockingModel> model, const ImpactLaw& law,
+                                              const VsswGeometry* vssw) {
+    switch (law.kind) {
+        case ImpactLaw::Kind::eq19: return model;
+        case ImpactLaw::Kind::whole_mechanism:
+            // A single block has one mechanism: its plastic impact is Housner's, the model's own.
+            if (!vssw) return model;
+            return with_restitution(std::move(model), restitution_whole_mechanism(*vssw));
+        case ImpactLaw::Kind::ratio: break;
+    }
+    return with_restitution(std::move(model), law.ratio);
 }
 
 }  // namespace vssw

@@ -50,6 +50,16 @@ public:
     virtual double overburden() const = 0;      // N [N/m]
     virtual std::string name() const = 0;
 
+    // The two-block wall behind a VSSW model (nullptr for a parapet), and the upper body's rotation along the
+    // model's mechanism at q = |theta1| >= 0 on side +1: theta2(q) and its first two derivatives over q (Eq. 2 for
+    // the exact kinematics, Eq. 3 for the paper's). With them a one-DOF run is embedded in the two blocks, where
+    // Newton-Euler gives the supports' forces (analytic/two_block.hpp).
+    struct UpperRotation {
+        double theta2 = 0.0, d1 = 0.0, d2 = 0.0;
+    };
+    virtual const VsswGeometry* vssw_geometry() const { return nullptr; }
+    virtual UpperRotation upper_rotation(double /*q*/) const { return {}; }
+
     // theta1'' while the wall rocks on side `side` (+1: theta1 >= 0, -1: theta1 <= 0), from terms() with the mirror
     // rule above. The side is explicit because at theta1 = 0 (lift-off) the sign of theta1 does not tell it.
     double acceleration(int side, double theta, double theta_dot, double a_h, double a_v) const;
@@ -77,5 +87,19 @@ std::unique_ptr<RockingModel> make_parapet_model(const ParapetGeometry& p);
 // The same model with another impact ratio e in [0, 1] (InputError otherwise): the assumption-sensitivity study of
 // the impact law, e.g. the whole mechanism's plastic impact (restitution_whole_mechanism) in place of Eq. (19).
 std::unique_ptr<RockingModel> with_restitution(std::unique_ptr<RockingModel> model, double e);
+
+// The impact law as a named assumption: the paper's Eq. (19) (Housner's e for a parapet), the whole mechanism's
+// plastic impact (restitution_whole_mechanism, the engines' landing; Housner's e again for a single block), or a given
+// ratio e in [0, 1].
+struct ImpactLaw {
+    enum class Kind { eq19, whole_mechanism, ratio } kind = Kind::eq19;
+    double ratio = 0.0;  // used when kind == ratio
+};
+// "eq19" | "whole-mechanism" | a number in [0, 1]; InputError otherwise, naming the text.
+ImpactLaw parse_impact_law(const std::string& text);
+std::string to_string(const ImpactLaw& law);
+// The model with that impact law (the model itself for eq19). `vssw` is the wall when the model is a VSSW's.
+std::unique_ptr<RockingModel> with_impact_law(std::unique_ptr<RockingModel> model, const ImpactLaw& law,
+                                              const VsswGeometry* vssw);
 
 }  // namespace vssw

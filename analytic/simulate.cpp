@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "error.hpp"
+#include "support_monitor.hpp"
 
 namespace vssw {
 namespace {
@@ -84,7 +85,8 @@ public:
           v_ref_(model.reference_energy()),
           motion_end_(std::max(ah.duration(), av.duration())),
           rest_scan_step_(std::min(scan_step(ah), scan_step(av))),
-          integrator_(Rhs{this}, o.step, State{alpha_, model.reference_velocity(), v_ref_}) {}
+          integrator_(Rhs{this}, o.step, State{alpha_, model.reference_velocity(), v_ref_}),
+          supports_(model) {}
 
     SimulationResult run(InitialState init);
 
@@ -139,7 +141,8 @@ private:
         out_.samples.push_back(s);
     }
 
-    void check_balance(const State& y) {
+    // Energy balance at time t; throws EnergyBalanceFailure as soon as the error passes the ceiling.
+    void check_balance(double t, const State& y) {
         const double kinetic = model_.kinetic(y[0], y[1]), potential = model_.weight_potential(y[0]);
         const double work_n = model_.overburden_work(y[0]);
         const double residual = kinetic + potential - work_n - y[2] + dissipated_ - initial_energy_;
@@ -147,6 +150,11 @@ private:
                                                     std::abs(y[2]) + dissipated_);
         max_residual_ = std::max(max_residual_, std::abs(residual));
         out_.energy_balance_error = max_residual_ / energy_scale_;
+        if (!(out_.energy_balance_error <= opt_.energy_ceiling))  // NaN fails too
+            throw EnergyBalanceFailure(fmt::format(
+                "the energy balance error reached {:.3g} of the largest energy in play at t = {:.6g} s (|theta1| = "
+                "{:.6g} rad), above the ceiling {:.3g}: the run is not a result (a tighter --rtol may help)",
+                out_.energy_balance_error, t, std::abs(y[0]), opt_.energy_ceiling));
     }
 
     // Samples on the output grid in (t0, t1], from a function giving the state at any time in the interval.
@@ -160,6 +168,18 @@ private:
         }
     }
 
+    // Records the supports' forces at (t, y) on the current side (a VSSW only).
+    void record_supports(double t, const State& y, double theta_ddot) {
+        if (!supports_.active()) return;
+        last_roller_ = supports_.record(t, side_, y[0], y[1], theta_ddot, ah_(t), av_(t), out_.supports);
+    }
+    // The roller's reaction at time tau inside an accepted step (its continuous extension built).
+    double roller_at(const RkStep<3>& step, double tau) const {
+        const State s = step.at(tau);
+        const double a_h = ah_(tau), a_v = av_(tau);
+        const double acc = rocking_rates(model_.terms(side_ * s[0]), side_, s[1], a_h, a_v, g_, N_).acceleration;
+        return supports_.reactions(side_, s[0], s[1], acc, a_h, a_v).roller;
+    }
     bool rest_phase(double& t, State& y);
     Event rocking_phase(double& t, State& y);
     void polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const;
@@ -172,6 +192,8 @@ private:
     ModelTerms rest_terms_;
     double e_, g_, N_, alpha_, collapse_, v_ref_, motion_end_, rest_scan_step_;  // the model's constants, read once
     Dop853<3, Rhs> integrator_;
+    SupportMonitor supports_;
+    double last_roller_ = 0.0;  // the roller's reaction at the last recorded state
 
     int side_ = 1;
     double dissipated_ = 0.0;
@@ -270,6 +292,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
         const double a = std::abs(dy[1]);
         if (a > 0.0) h_ = std::min(h_, 3.0 * std::abs(y[1]) / a);
     }
+    record_supports(t, y, dy[1]);
     while (t < opt_.t_end) {
         if (++out_.steps > kMaxSteps) throw std::runtime_error("integration exceeded the step limit");
         const double stop = std::min(next_breakpoint(t), opt_.t_end);
@@ -339,9 +362,10 @@ Event Simulator::rocking_phase(double& t, State& y) {
                     double a = tau_prev, b = tau;
                     shrink_bracket([&](double x) { return step.at(x)[1]; }, a, b, opt_.event_time_tol);
                     if (b <= event_time) {
-                        const double th = step.at(b)[0];
-                        out_.peaks.push_back({b, th});
-                        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(th));
+                        const State at_peak = step.at(b);
+                        out_.peaks.push_back({b, at_peak[0]});
+                        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(at_peak[0]));
+                        check_balance(b, at_peak);  // turning points are watched too: a run may have no event
                     }
                 }
                 tau_prev = tau;
@@ -360,15 +384,25 @@ Event Simulator::rocking_phase(double& t, State& y) {
             y = step.y1;
             dy = step.end_derivative();
         }
+        const double roller_before = last_roller_;
+        const bool first_tension = !out_.supports.roller_tension_at;
         t += h;
         h_ = h_next;
         starts_at_zero = false;
+        record_supports(t, y, dy[1]);
+        if (supports_.active() && first_tension && roller_before >= 0.0 && last_roller_ < 0.0) {
+            // The roller turned tensile inside the step: place the moment on the continuous extension.
+            if (!step.dense_ready) integrator_.make_dense(step);
+            double lo = step.t0, hi = std::min(t, step.t0 + step.h);
+            shrink_bracket([&](double tau) { return roller_at(step, tau); }, lo, hi, opt_.event_time_tol);
+            out_.supports.roller_tension_at = hi;
+        }
         // A ground motion may jump at a breakpoint (a cosine pulse's end) and is left-continuous there: the next
         // step's first stage must see the value after the jump.
         if (on_breakpoint) dy = integrator_.rhs(std::nextafter(t, opt_.t_end + 1.0), y);
         out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(y[0]));
         if (ev == Event::impact) y[0] = 0.0;
-        if (opt_.keep_samples || ev != Event::none) check_balance(y);  // events always; every step when sampling
+        if (opt_.keep_samples || ev != Event::none) check_balance(t, y);  // events always; every step when sampling
         if (opt_.output_dt <= 0.0) emit(t, y);
         if (ev != Event::none) return ev;
     }
@@ -438,17 +472,25 @@ SimulationResult Simulator::run(InitialState init) {
             emit_grid(t, t_rest, [&](double) { return y; });
             t = t_rest;
             out_.rest_times.push_back(t);
-            check_balance(y);
+            check_balance(t, y);
             if (opt_.output_dt <= 0.0) emit(t, y);
             rocking = false;
         }
     }
-    check_balance(y);
+    check_balance(t, y);
     out_.t_final = t;
     return out_;
 }
 
 }  // namespace
+
+Roller parse_roller(const std::string& text) {
+    if (text == "bilateral") return Roller::bilateral;
+    if (text == "unilateral") return Roller::unilateral;
+    throw InputError("roller must be 'bilateral' or 'unilateral', got '" + text + "'");
+}
+
+const char* to_string(Roller roller) { return roller == Roller::bilateral ? "bilateral" : "unilateral"; }
 
 void validate(const SimulationOptions& options) {
     require(std::isfinite(options.t_end) && options.t_end > 0.0 && options.t_end <= kMaxEndTime, "end time (s)",
@@ -456,6 +498,8 @@ void validate(const SimulationOptions& options) {
     // Tighter than ~1e-15 the error estimate is round-off; looser than 1e-2 the events are not worth locating.
     require(options.step.rtol >= 1e-15 && options.step.rtol <= 1e-2, "relative tolerance", "in [1e-15, 1e-2]",
             options.step.rtol);
+    require(options.energy_ceiling > 0.0 && options.energy_ceiling < 1.0, "energy balance ceiling", "in (0, 1)",
+            options.energy_ceiling);
     require(std::isfinite(options.output_dt) && options.output_dt >= 0.0, "output interval", "a finite number >= 0",
             options.output_dt);
     const bool bounded_output =

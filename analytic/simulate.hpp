@@ -12,7 +12,10 @@
 //  - |theta1| reaching the model's collapse angle is overturning; the run ends there.
 // Energy bookkeeping: kinetic + weights' potential - work(N) - work(ground) + dissipated stays at its initial value;
 // its largest relative drift (over V_r) is reported.
+#include <limits>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "dop853.hpp"
@@ -20,6 +23,13 @@
 #include "model.hpp"
 
 namespace vssw {
+
+// The VSSW's top roller: bilateral holds the top corner on its line whatever force that takes (the paper's
+// assumption); unilateral can only push, so where the bilateral reaction would turn tensile the top leaves the line and
+// the wall moves with two degrees of freedom until the corner lands back on it (README, "The roller").
+enum class Roller { bilateral, unilateral };
+Roller parse_roller(const std::string& text);  // "bilateral" | "unilateral", InputError otherwise
+const char* to_string(Roller roller);
 
 struct SimulationOptions {
     double t_end = 60.0;        // [s]
@@ -31,6 +41,11 @@ struct SimulationOptions {
     double rest_amplitude = 1e-6;
     bool stop_at_rest = true;   // end the run once at rest after the ground motion has ended
     double event_time_tol = 1e-13;  // [s] root tolerance for impacts and overturning
+    // A run whose energy balance error (below) exceeds this is not a result: simulate() throws EnergyBalanceFailure
+    // naming the time and the error. 1e-6 of the largest energy in play is 100 to 10,000 times what the integrator
+    // leaves at its default tolerance (1e-10 to 1e-8), so only a broken run or a very loose --rtol meets it.
+    double energy_ceiling = 1e-6;
+    Roller roller = Roller::bilateral;  // a parapet has none: ignored
 };
 
 struct InitialState {
@@ -52,6 +67,22 @@ struct TurningPoint {
     double t, theta;  // theta1' = 0 while rocking (the release is the first when starting from rest)
 };
 
+// What the supports had to do along a VSSW run, from Newton-Euler on each block along the motion
+// (analytic/two_block.hpp): the roller's reaction (N per metre of wall, positive when it pushes), the friction
+// coefficient the base and the hinge need not to slide (largest |T|/N), and whether a contact would have to pull.
+// Empty (computed == false) for a parapet.
+struct SupportDemand {
+    bool computed = false;
+    double min_roller_reaction = std::numeric_limits<double>::infinity();  // [N/m] over the one-DOF phases
+    double t_min_roller_reaction = 0.0;
+    std::optional<double> roller_tension_at;  // first time the bilateral roller would have to pull
+    double base_friction = 0.0, hinge_friction = 0.0;  // largest |T|/N while the contact pushes
+    std::optional<double> base_pulls_at, hinge_pulls_at;  // first time the contact would have to pull
+    // Unilateral roller: how often the top left the roller, and for how long in all.
+    int roller_departures = 0;
+    double time_off_roller = 0.0;  // [s]
+};
+
 struct SimulationResult {
     std::vector<Sample> samples;
     std::vector<Impact> impacts;
@@ -67,6 +98,12 @@ struct SimulationResult {
     // the balance's terms (kinetic, potential, works, dissipated) met during the run, whichever is larger.
     double energy_balance_error = 0.0;
     long steps = 0, rejected_steps = 0;
+    SupportDemand supports;
+};
+
+// The energy balance failed its ceiling: the trajectory cannot be trusted (a std::runtime_error, like every failed run).
+struct EnergyBalanceFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 // Throws InputError naming the first bad option (end time, tolerance, output interval); simulate() calls it first.

@@ -74,8 +74,13 @@ private:
     double A_, P2_;
 };
 
+// These tests measure the time of the first impact at tolerances as loose as 1e-6, where the energy balance of the
+// whole run (to rest) drifts by a few 1e-6: above the default ceiling, which is not what is tested here.
+constexpr double kLooseEnergyCeiling = 1e-3;
+
 double first_impact_time(const RockingModel& m, double theta0, StepControl control, double event_tol = 1e-13) {
     SimulationOptions o;
+    o.energy_ceiling = kLooseEnergyCeiling;
     o.step = control;
     o.event_time_tol = event_tol;
     o.keep_samples = false;
