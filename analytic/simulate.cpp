@@ -484,14 +484,6 @@ SimulationResult Simulator::run(InitialState init) {
 
 }  // namespace
 
-Roller parse_roller(const std::string& text) {
-    if (text == "bilateral") return Roller::bilateral;
-    if (text == "unilateral") return Roller::unilateral;
-    throw InputError("roller must be 'bilateral' or 'unilateral', got '" + text + "'");
-}
-
-const char* to_string(Roller roller) { return roller == Roller::bilateral ? "bilateral" : "unilateral"; }
-
 void validate(const SimulationOptions& options) {
     require(std::isfinite(options.t_end) && options.t_end > 0.0 && options.t_end <= kMaxEndTime, "end time (s)",
             fmt::format("positive and at most {:g} s", kMaxEndTime), options.t_end);

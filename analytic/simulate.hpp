@@ -24,13 +24,6 @@
 
 namespace vssw {
 
-// The VSSW's top roller: bilateral holds the top corner on its line whatever force that takes (the paper's
-// assumption); unilateral can only push, so where the bilateral reaction would turn tensile the top leaves the line and
-// the wall moves with two degrees of freedom until the corner lands back on it (README, "The roller").
-enum class Roller { bilateral, unilateral };
-Roller parse_roller(const std::string& text);  // "bilateral" | "unilateral", InputError otherwise
-const char* to_string(Roller roller);
-
 struct SimulationOptions {
     double t_end = 60.0;        // [s]
     StepControl step{};         // rtol 1e-10 by default
@@ -45,7 +38,6 @@ struct SimulationOptions {
     // naming the time and the error. 1e-6 of the largest energy in play is 100 to 10,000 times what the integrator
     // leaves at its default tolerance (1e-10 to 1e-8), so only a broken run or a very loose --rtol meets it.
     double energy_ceiling = 1e-6;
-    Roller roller = Roller::bilateral;  // a parapet has none: ignored
 };
 
 struct InitialState {
@@ -78,9 +70,6 @@ struct SupportDemand {
     std::optional<double> roller_tension_at;  // first time the bilateral roller would have to pull
     double base_friction = 0.0, hinge_friction = 0.0;  // largest |T|/N while the contact pushes
     std::optional<double> base_pulls_at, hinge_pulls_at;  // first time the contact would have to pull
-    // Unilateral roller: how often the top left the roller, and for how long in all.
-    int roller_departures = 0;
-    double time_off_roller = 0.0;  // [s]
 };
 
 struct SimulationResult {

@@ -26,6 +26,7 @@ Command add_free_command(CLI::App& root) {
     auto o = std::make_shared<Options>();
     CLI::App* cmd = root.add_subcommand("free", "Free vibration released from rest, until the wall stops or overturns");
     add_model_options(*cmd, o->model);
+    add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
     cmd->add_option("--theta0", o->request.theta0_over_alpha,
                     "initial rotation as a fraction r of alpha (alpha1 for a VSSW, alpha for a parapet): finite, "
@@ -39,6 +40,10 @@ Command add_free_command(CLI::App& root) {
         "JSON keys: model, kinematics (null for a parapet), theta0 (r), alpha [rad],\n"
         "impacts [{t, theta_dot_before, theta_dot_after}], peaks (|theta|/alpha at each turning point, the release\n"
         "first), peak_times, stop_time (null if it overturned), falls, t_overturn (null unless it fell),\n"
+        "impact {law, restitution}, warnings (the model's assumptions failing along the run),\n"
+        "roller {model, min_reaction [N/m, > 0 pushing], t_min_reaction, tension_at (null if it never pulls)},\n"
+        "friction_needed {base, hinge} (largest |T|/N), contacts_pull {base_at, hinge_at} (null: never; all null\n"
+        "for a parapet),\n"
         "energy_balance_error (relative to the largest energy in play), impact_count, first_impact_time (a quarter period), end_time,\n"
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.");
     return {cmd, [o](std::ostream& out) {

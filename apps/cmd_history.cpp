@@ -25,6 +25,7 @@ Command add_history_command(CLI::App& root) {
         "history", "Response from rest to a ground motion (horizontal only): a record file or a synthetic pulse");
     add_ground_motion_options(*cmd, o->motion);
     add_model_options(*cmd, o->model);
+    add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
     cmd->add_option_function<double>(
         "--output-dt", [o](const double& dt) { o->request.output_dt = dt; },
@@ -41,8 +42,10 @@ Command add_history_command(CLI::App& root) {
     cmd->footer(
         "Exactly one of --record and --pulse is required. Accelerations given in g use g0 = 9.80665 m/s^2.\n"
         "JSON keys: record (path, null for a pulse), input, scale_factor, pga_g (after scaling), duration [s], model,\n"
-        "kinematics, alpha, max_theta_over_alpha, overturned, t_overturn (null if not), impacts, energy_balance_error\n"
+        "kinematics, alpha, max_theta_over_alpha, peak_is_collapse (true: the max is the collapse angle), overturned, t_overturn (null if not), impacts, energy_balance_error\n"
         "(relative to the largest energy in play), lift_offs, end_time, at_rest_at_end, t_end, output_dt,\n"
+        "impact {law, restitution}, warnings, roller {model, min_reaction, t_min_reaction, tension_at},\n"
+        "friction_needed {base, hinge}, contacts_pull {base_at, hinge_at} (as `vssw free --help` says),\n"
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.\n"
         "CSV: theta_dot_over_ref = theta_dot / reference velocity; E = kinetic + weights' potential - work of N,\n"
         "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha); ag_g = a_h / g0.");

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "apps/model_validity.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/table.hpp"
 
@@ -29,17 +30,6 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     require(std::isfinite(r) && r != 0.0, "theta0/alpha (--theta0)", "a finite nonzero number", r);
     ChosenModel chosen = choose_model(wall, model);
     const double alpha = chosen.model->reference_angle();
-    // Eq. (3) strays from the roller as theta1 grows: say so when the release is already past where the top corner
-    // leaves the roller line by 1 % of the thickness (README, "Where each kinematics stops being valid").
-    std::vector<std::string> warnings;
-    if (chosen.kinematics == Kinematics::paper) {
-        const auto limit = eq3_validity_limit(vssw_geometry(wall), 0.01);
-        if (limit && std::abs(r * alpha) > *limit)
-            warnings.push_back(fmt::format(
-                "paper kinematics past their validity: Eq. (3) moves the top 1 % of the thickness off the roller "
-                "from theta1 = {:.3g} alpha1 on; use --kinematics exact",
-                *limit / alpha));
-    }
 
     SimulationOptions options;
     options.step.rtol = request.rtol;
@@ -59,12 +49,16 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     });
     // free_vibration() runs until the wall stops or overturns (its end time is far beyond either); a run that did
     // neither has failed, whatever the integrator says.
+    std::vector<std::string> warnings = validity_warnings(wall, chosen, result);
     if (!result.overturned && result.rest_times.empty())
         throw SimulationFailure(
             fmt::format("free vibration from --theta0 {} neither came to rest nor overturned "
                         "(the run ended at t = {} s after {} impacts){}",
                         r, result.t_final, result.impacts.size(), warnings.empty() ? "" : "; " + warnings.front()));
-    return {wall, chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings)};
+    const ImpactLaw impact = chosen.impact;
+    const double restitution = chosen.model->restitution();
+    return {wall, chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings), impact,
+            restitution};
 }
 
 Json to_json(const FreeRun& run) {
@@ -83,6 +77,7 @@ Json to_json(const FreeRun& run) {
     j["kinematics"] = run.kinematics ? Json(to_string(*run.kinematics)) : Json(nullptr);
     j["theta0"] = run.theta0_over_alpha;
     j["alpha"] = run.alpha;
+    j["impact"] = {{"law", to_string(run.impact)}, {"restitution", run.restitution}};
     j["warnings"] = run.warnings;
     j["impacts"] = std::move(impacts);
     j["peaks"] = std::move(peaks);
@@ -94,6 +89,7 @@ Json to_json(const FreeRun& run) {
     j["impact_count"] = res.impacts.size();
     j["first_impact_time"] = or_null(run.first_impact());
     j["end_time"] = res.t_final;
+    add_support_json(j, res);
     j["wall"] = wall_inputs_json(run.wall, run.kind);
     return j;
 }
@@ -108,6 +104,7 @@ void print_free_summary(std::ostream& out, const FreeRun& run, const std::string
                            : to_string(run.kind))
         .text("release from rest at", fmt::format("theta0 = {} {} = {} rad", num(run.theta0_over_alpha), alpha_name,
                                                   num(run.theta0_over_alpha * run.alpha)))
+        .text("impact law", fmt::format("{} (restitution {})", to_string(run.impact), num(run.restitution)))
         .add("impacts", std::to_string(res.impacts.size()));
     for (const std::string& w : run.warnings) table.text("warning", w);
     table
@@ -119,6 +116,7 @@ void print_free_summary(std::ostream& out, const FreeRun& run, const std::string
         table.add("overturns", "no");
     table.add("energy balance error", fmt::format("{:.2e}", res.energy_balance_error), "",
               "largest residual / largest energy in play");
+    add_support_rows(table, res);
     table.print(out);
 }
 

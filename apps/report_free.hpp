@@ -24,7 +24,9 @@ struct FreeRun {
     std::optional<Kinematics> kinematics;
     double theta0_over_alpha, alpha;
     SimulationResult result;  // events only (no trajectory samples)
-    std::vector<std::string> warnings;  // e.g. the paper's kinematics used past where Eq. (3) holds
+    std::vector<std::string> warnings;  // the model's assumptions failing along the run (apps/model_validity.hpp)
+    ImpactLaw impact;
+    double restitution = 0.0;           // the impact ratio that law gives
 
     std::optional<double> stop_time() const;     // the last rest time; none if the wall overturned
     std::optional<double> first_impact() const;  // the time to the first impact: a quarter period

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "apps/model_validity.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/table.hpp"
 
@@ -24,13 +25,14 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
             options.t_end);
     options.keep_samples = request.keep_trajectory;
     options.stop_at_rest = true;
-    return {wall, motion.record, std::move(input), std::move(chosen), options, {}};
+    return {wall, motion.record, std::move(input), std::move(chosen), options, {}, {}};
 }
 
 void simulate_history(HistoryRun& run) {
     const GroundMotion none = GroundMotion::none();
     run.result = run_simulation(
         [&] { return simulate(*run.chosen.model, run.input.motion, none, InitialState{}, run.options); });
+    run.warnings = validity_warnings(run.wall, run.chosen, run.result);
 }
 
 Json to_json(const HistoryRun& run) {
@@ -45,6 +47,8 @@ Json to_json(const HistoryRun& run) {
     j["kinematics"] = run.chosen.kinematics ? Json(to_string(*run.chosen.kinematics)) : Json(nullptr);
     j["alpha"] = run.chosen.model->reference_angle();
     j["max_theta_over_alpha"] = res.max_abs_theta / run.chosen.model->reference_angle();
+    // An overturned run's largest rotation is the collapse angle it reached, not a rocking peak.
+    j["peak_is_collapse"] = res.overturned;
     j["overturned"] = res.overturned;
     j["t_overturn"] = res.overturned ? Json(res.t_overturn) : Json(nullptr);
     j["impacts"] = res.impacts.size();
@@ -54,6 +58,9 @@ Json to_json(const HistoryRun& run) {
     j["at_rest_at_end"] = res.at_rest_at_end;
     j["t_end"] = run.options.t_end;
     j["output_dt"] = run.options.output_dt;
+    j["impact"] = impact_json(run.chosen);
+    j["warnings"] = run.warnings;
+    add_support_json(j, res);
     j["wall"] = wall_inputs_json(run.wall, run.chosen.kind);
     return j;
 }
@@ -69,17 +76,22 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
         .text("model", run.chosen.kinematics ? fmt::format("{}, {} kinematics", to_string(run.chosen.kind),
                                                            to_string(*run.chosen.kinematics))
                                              : to_string(run.chosen.kind))
+        .text("impact law",
+              fmt::format("{} (restitution {})", to_string(run.chosen.impact), num(run.chosen.model->restitution())))
         .add("lift-offs", std::to_string(res.lift_offs.size()))
         .add("impacts", std::to_string(res.impacts.size()))
-        .add(fmt::format("max |theta|/{}", alpha_name), num(res.max_abs_theta / run.chosen.model->reference_angle()));
+        .add(fmt::format("max |theta|/{}", alpha_name), num(res.max_abs_theta / run.chosen.model->reference_angle()),
+             "", res.overturned ? "the collapse angle: overturned, not a rocking peak" : "");
+    for (const std::string& w : run.warnings) table.text("warning", w);
     if (res.overturned)
         table.add("overturns at", num(res.t_overturn), "s");
     else
         table.add("overturns", "no");
     table.add("run ended at", num(res.t_final), "s", res.at_rest_at_end ? "at rest" : "")
         .add("energy balance error", fmt::format("{:.2e}", res.energy_balance_error), "",
-             "largest residual / largest energy in play")
-        .print(out);
+             "largest residual / largest energy in play");
+    add_support_rows(table, res);
+    table.print(out);
 }
 
 void write_history_csv(std::ostream& out, const HistoryRun& run) {

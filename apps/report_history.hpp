@@ -5,6 +5,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "analytic/simulate.hpp"
 #include "apps/ground_motion_options.hpp"
@@ -29,6 +30,7 @@ struct HistoryRun {
     ChosenModel chosen;
     SimulationOptions options;
     SimulationResult result;  // empty until simulate_history()
+    std::vector<std::string> warnings;  // the model's assumptions failing along the run (apps/model_validity.hpp)
 };
 
 // Builds the model and the ground motion and checks every option (InputError on a bad one), without simulating:

@@ -17,22 +17,32 @@ namespace {
 
 constexpr const char* kPaperKinematics = "paper_kinematics";
 constexpr const char* kRtol = "rtol";
-constexpr const char* kRestitution = "restitution";  // > 0: this impact ratio instead of Eq. (19) / Housner's
+constexpr const char* kRestitution = "restitution";  // when given: this impact ratio in [0, 1] instead of Eq. (19)
+constexpr const char* kWholeMechanism = "whole_mechanism_impact";  // 1: the whole mechanism's plastic impact
 constexpr double kDefaultRtol = 1e-10;
 constexpr double kDefaultOutputDt = 1e-4;  // [s] the engines' default step (EngineSettings::dt)
 
 struct Knobs {
     Kinematics kinematics = Kinematics::exact;
     double rtol = kDefaultRtol;
-    double restitution = 0.0;  // 0: the model's own
+    ImpactLaw impact;  // Eq. (19) / Housner's unless a setting says otherwise
 };
 
 Knobs read_knobs(const EngineSettings& settings) {
-    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol, kRestitution});
+    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol, kRestitution, kWholeMechanism});
     Knobs k;
     k.kinematics = r.flag(kPaperKinematics) ? Kinematics::paper : Kinematics::exact;
     k.rtol = r.number(kRtol, kDefaultRtol);  // its range is checked by simulate()
-    k.restitution = r.non_negative(kRestitution, 0.0);  // its range is checked by with_restitution()
+    const bool ratio_given = settings.knobs.count(kRestitution) > 0;  // given means used: 0 is a plastic impact
+    if (ratio_given && r.flag(kWholeMechanism))
+        throw InputError("analytic settings restitution and whole_mechanism_impact are two impact laws: give one");
+    if (ratio_given) {
+        const double e = r.non_negative(kRestitution, 0.0);
+        require(e <= 1.0, "analytic setting restitution", "a number in [0, 1]", e);
+        k.impact = {ImpactLaw::Kind::ratio, e};
+    } else if (r.flag(kWholeMechanism)) {
+        k.impact = {ImpactLaw::Kind::whole_mechanism, 0.0};
+    }
     return k;
 }
 
@@ -56,8 +66,8 @@ EngineSettings AnalyticEngine::default_settings() const {
 Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& excitation,
                                     const EngineSettings& settings) const {
     const Knobs knobs = read_knobs(settings);
-    std::unique_ptr<RockingModel> model = analytic_model(scene, knobs.kinematics);
-    if (knobs.restitution > 0.0) model = with_restitution(std::move(model), knobs.restitution);
+    std::unique_ptr<RockingModel> model =
+        with_impact_law(analytic_model(scene, knobs.kinematics), knobs.impact, scene.vssw ? &*scene.vssw : nullptr);
     const double output_dt = settings.sample_dt > 0.0 ? settings.sample_dt : settings.dt;
     require(std::isfinite(output_dt) && output_dt > 0.0, "analytic output interval (sample_dt, else dt)",
             "a positive finite time in s", output_dt);
