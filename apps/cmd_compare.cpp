@@ -13,6 +13,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_values.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/table.hpp"
 #include "apps/wall_options.hpp"
@@ -33,7 +34,7 @@ struct CompareOptions {
     std::string engine;
     double theta0 = 0.5;
     std::optional<double> dt;
-    std::optional<int> iterations;
+    std::optional<std::string> iterations;  // as typed, checked by parse_bounded_int
     std::vector<std::string> knobs;  // NAME=VALUE
     bool json = false;
 };
@@ -43,8 +44,7 @@ multibody::EngineSettings settings_of(const multibody::Engine& engine, const Com
     if (o.dt) s.dt = *o.dt;
     require(std::isfinite(s.dt) && s.dt > 0.0, "--dt (engine step, s)", "a positive finite number", s.dt);
     if (o.iterations) {
-        require(*o.iterations > 0, "--iterations", "a positive whole number", *o.iterations);
-        s.iterations = *o.iterations;
+        s.iterations = parse_bounded_int("--iterations", *o.iterations, 1, kMaxIterations);
     }
     for (const std::string& kv : o.knobs) {
         const auto eq = kv.find('=');
@@ -53,8 +53,8 @@ multibody::EngineSettings settings_of(const multibody::Engine& engine, const Com
         const std::string value = kv.substr(eq + 1);
         char* end = nullptr;
         const double v = std::strtod(value.c_str(), &end);
-        if (value.empty() || *end != '\0')
-            throw InputError(fmt::format("--set {}: '{}' is not a number", kv.substr(0, eq), value));
+        if (value.empty() || *end != '\0' || !std::isfinite(v))
+            throw InputError(fmt::format("--set {}: '{}' is not a finite number", kv.substr(0, eq), value));
         s.knobs[kv.substr(0, eq)] = v;
     }
     return s;
@@ -88,7 +88,8 @@ Command add_compare_command(CLI::App& root) {
     cmd->add_option("--theta0", o->theta0,
                     "release from rest at theta0 = r * alpha for the period and restitution (default 0.5)");
     cmd->add_option("--dt", o->dt, "engine step [s] (default: the engine's own, see the README)");
-    cmd->add_option("--iterations", o->iterations, "solver iterations (default: the engine's own)");
+    cmd->add_option("--iterations", o->iterations,
+                    fmt::format("solver iterations, 1 to {} (default: the engine's own)", kMaxIterations));
     cmd->add_option("--set", o->knobs, "engine setting NAME=VALUE (repeatable; each adapter lists its own)");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     cmd->footer(
