@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -70,15 +71,36 @@ bool parse_number(const std::string& token, double& out) {
 
 // A file as lines (line i of the file is lines[i - 1]), with any '\r' of DOS line endings removed: PEER files are
 // often distributed with CRLF.
-std::vector<std::string> read_lines(const std::string& path) {
+// Refuses, without opening it, what is not a regular file of at most kMaxRecordBytes (ground_motion.hpp).
+void require_record_file(const std::string& path) {
+    namespace fs = std::filesystem;
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(fmt::format("ground-motion file '{}' is a directory", path));
+    const fs::file_status status = fs::status(path, ec);  // follows a symbolic link to what it names
+    if (!fs::exists(status)) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
+    if (fs::is_directory(status)) throw InputError(fmt::format("ground-motion file '{}' is a directory", path));
+    if (!fs::is_regular_file(status))
+        throw InputError(fmt::format("ground-motion file '{}' is not a regular file (a device, FIFO or socket)", path));
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) throw InputError(fmt::format("cannot open ground-motion file '{}': {}", path, ec.message()));
+    if (size > static_cast<std::uintmax_t>(kMaxRecordBytes))
+        throw InputError(fmt::format("ground-motion file '{}' has {} bytes, more than the {} allowed (real records "
+                                     "are a few MB)",
+                                     path, size, kMaxRecordBytes));
+}
+
+std::vector<std::string> read_lines(const std::string& path) {
+    require_record_file(path);
     std::ifstream in(path);
     if (!in) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
     std::vector<std::string> lines;
     std::string line;
+    long long bytes = 0;  // the size is checked above; this bounds a file that grows while it is read
     while (std::getline(in, line)) {
+        bytes += static_cast<long long>(line.size()) + 1;
+        if (bytes > kMaxRecordBytes)
+            throw InputError(fmt::format("ground-motion file '{}' has more than the {} bytes allowed (real records "
+                                         "are a few MB)",
+                                         path, kMaxRecordBytes));
         if (!line.empty() && line.back() == '\r') line.pop_back();
         lines.push_back(std::move(line));
     }

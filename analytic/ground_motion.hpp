@@ -57,6 +57,11 @@ private:
 };
 
 // Records -------------------------------------------------------------------------------------------------------
+// Every reader refuses, before opening it, a path that is not a regular file (a device such as /dev/zero, a FIFO or
+// socket, which would be read without end or block forever) and a file larger than kMaxRecordBytes. The bound: the
+// largest real accelerograms are a few MB (a PEER AT2 file of 60,000 samples is ~0.6 MB; 10 minutes at 200 Hz in two
+// columns is ~3 MB); 64 MiB is ten times more than any, and small enough to hold in memory at once.
+constexpr long long kMaxRecordBytes = 64LL * 1024 * 1024;
 // PEER AT2, both header styles: line 4 is either "1991    0.0100    NPTS, DT" (older) or
 // "NPTS=  1991, DT=   .0100 SEC" (NGA-West2). Units are read from line 3 ("... IN UNITS OF G"); `units_override`
 // replaces them. Throws InputError (naming the file and the line) on a missing file, an empty or truncated file, a

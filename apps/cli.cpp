@@ -11,6 +11,7 @@
 #include "analytic/error.hpp"
 #include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_values.hpp"
 #include "apps/simulation_failure.hpp"
 
 namespace vssw::cli {
@@ -89,6 +90,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         return fail(err, "error", parse_error_message(e, app, commands, command) + " (see '" + help + "')", kExitBadInput);
     }
     if (const Command* command = chosen_command(commands)) {
+        require_finite_numbers(*command->app);  // also an option the command ignores: NaN is never a valid input
         if (command->run_with_err) command->run_with_err(out, err);
         else command->run(out);
         return kExitOk;

@@ -16,6 +16,7 @@
 #include "apps/bounds_file.hpp"
 #include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_values.hpp"
 #include "apps/json.hpp"
 #include "compare/bounds.hpp"
 #include "compare/suite.hpp"
@@ -27,6 +28,7 @@ namespace {
 struct CheckOptions {
     std::string bounds;
     std::string data_dir = VSSW_DATA_DIR;
+    std::string threads_text = "0";  // --threads as typed, checked by parse_bounded_int
     int threads = 0;
     bool json = false;
 };
@@ -171,7 +173,8 @@ Command add_check_command(CLI::App& root) {
     cmd->add_option("--bounds", o->bounds, "bounds file, TOML (.toml) or JSON (.json); see bounds/default.toml")
         ->required();
     cmd->add_option("--data", o->data_dir, "directory of the ground-motion records (default: the shipped data/)");
-    cmd->add_option("--threads", o->threads, "threads (default 0: the available cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--threads", o->threads_text,
+                    fmt::format("threads, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     cmd->footer(
         "Runs only the cases and engines the file names (the analytic model always). An engine bound holds when the "
@@ -181,7 +184,10 @@ Command add_check_command(CLI::App& root) {
         "some do not, 2 bad input (a missing or malformed bounds file, an unknown case, engine or key).\n"
         "JSON keys: bounds, suite, held, verdicts [{engine, case, metric, kind (drift or rel_error), value, min, max, "
         "held, note}], wall_time_s.");
-    return {cmd, [o](std::ostream& out) { run_check(*o, out); }};
+    return {cmd, [o](std::ostream& out) {
+                o->threads = parse_bounded_int("--threads", o->threads_text, 0, kMaxThreads, " (0: the available cores)");
+                run_check(*o, out);
+            }};
 }
 
 }  // namespace vssw::cli

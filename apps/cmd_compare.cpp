@@ -13,6 +13,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_values.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/table.hpp"
 #include "apps/wall_options.hpp"
@@ -27,13 +28,19 @@ using compare::kPeriodTarget;  // compare/targets.hpp
 using compare::kRestitutionTarget;
 using compare::kThresholdTarget;
 
+// Smallest release, in units of alpha, that compare measures: the threshold's lift criterion (ThresholdOptions::
+// lift_angle). Below it an engine's elastic rotation on its contacts (~1e-6 rad) and its step are no longer small
+// against the motion (at 1e-4 alpha the Fig. 6 wall's whole period is 18 ms), and at 1e-6 alpha the analytic model
+// comes to rest without an impact to measure.
+constexpr double kMinRelease = 0.01;
+
 struct CompareOptions {
     WallOptions wall;
     ModelOptions model;
     std::string engine;
     double theta0 = 0.5;
     std::optional<double> dt;
-    std::optional<int> iterations;
+    std::optional<std::string> iterations;  // as typed, checked by parse_bounded_int
     std::vector<std::string> knobs;  // NAME=VALUE
     bool json = false;
 };
@@ -43,8 +50,7 @@ multibody::EngineSettings settings_of(const multibody::Engine& engine, const Com
     if (o.dt) s.dt = *o.dt;
     require(std::isfinite(s.dt) && s.dt > 0.0, "--dt (engine step, s)", "a positive finite number", s.dt);
     if (o.iterations) {
-        require(*o.iterations > 0, "--iterations", "a positive whole number", *o.iterations);
-        s.iterations = *o.iterations;
+        s.iterations = parse_bounded_int("--iterations", *o.iterations, 1, kMaxIterations);
     }
     for (const std::string& kv : o.knobs) {
         const auto eq = kv.find('=');
@@ -53,8 +59,8 @@ multibody::EngineSettings settings_of(const multibody::Engine& engine, const Com
         const std::string value = kv.substr(eq + 1);
         char* end = nullptr;
         const double v = std::strtod(value.c_str(), &end);
-        if (value.empty() || *end != '\0')
-            throw InputError(fmt::format("--set {}: '{}' is not a number", kv.substr(0, eq), value));
+        if (value.empty() || *end != '\0' || !std::isfinite(v))
+            throw InputError(fmt::format("--set {}: '{}' is not a finite number", kv.substr(0, eq), value));
         s.knobs[kv.substr(0, eq)] = v;
     }
     return s;
@@ -73,6 +79,14 @@ std::string verdict(const compare::MetricComparison& m, double target) {
     return std::abs(m.rel_error) <= target ? "within target" : fmt::format("OUTSIDE {:.1f} %", 100.0 * target);
 }
 
+// A comparison with a metric that could not be measured (on either side) is not a result: the output above shows
+// what was measured and why the rest was not, and the exit code is 3, as for an engine that fails outright.
+void throw_if_incomplete(const compare::EngineComparison& c) {
+    if (c.failures.empty()) return;
+    throw SimulationFailure(fmt::format("{} metric{} not measured: {}", c.failures.size(),
+                                        c.failures.size() == 1 ? "" : "s", fmt::join(c.failures, "; ")));
+}
+
 }  // namespace
 
 Command add_compare_command(CLI::App& root) {
@@ -86,9 +100,12 @@ Command add_compare_command(CLI::App& root) {
     add_model_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
     cmd->add_option("--theta0", o->theta0,
-                    "release from rest at theta0 = r * alpha for the period and restitution (default 0.5)");
+                    fmt::format("release from rest at theta0 = r * alpha for the period and restitution, r from {:g} to below 1 "
+                                "(default 0.5)",
+                                kMinRelease));
     cmd->add_option("--dt", o->dt, "engine step [s] (default: the engine's own, see the README)");
-    cmd->add_option("--iterations", o->iterations, "solver iterations (default: the engine's own)");
+    cmd->add_option("--iterations", o->iterations,
+                    fmt::format("solver iterations, 1 to {} (default: the engine's own)", kMaxIterations));
     cmd->add_option("--set", o->knobs, "engine setting NAME=VALUE (repeatable; each adapter lists its own)");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     cmd->footer(
@@ -97,8 +114,9 @@ Command add_compare_command(CLI::App& root) {
         "of theta1' after and before the first impact. rel_error = engine / analytic - 1; targets 0.5 %, 0.5 %, 2 %.\n"
         "JSON keys: engine, version, threshold, period, restitution, restitution_amplitude (each {analytic, engine,\n"
         "rel_error, target, within_target}), closed_forms {threshold_g, restitution, restitution_whole_mechanism,\n"
-        "period_linearised}, theta0, settings {dt, iterations, knobs}, wall_time_s, wall {...}.\n"
-        "Exit 3 when the engine fails (NaN, sliding, ...).");
+        "period_linearised}, theta0, settings {dt, iterations, knobs}, wall_time_s, failures, wall {...}.\n"
+        "failures: why a metric is null (e.g. an engine's first-impact ratio outside (0, 1]).\n"
+        "Exit 3 when the engine fails (NaN, sliding, ...) or a metric could not be measured (the output is printed).");
     return {cmd, [o](std::ostream& out) {
                 const WallKind kind = parse_wall_kind(o->model.model);
                 const multibody::WallScene scene = kind == WallKind::vssw
@@ -106,8 +124,8 @@ Command add_compare_command(CLI::App& root) {
                                                        : multibody::WallScene::of(parapet_geometry(o->wall));
                 const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(o->engine);
                 const multibody::EngineSettings settings = settings_of(*engine, *o);
-                require(std::isfinite(o->theta0) && o->theta0 > 0.0 && o->theta0 < 1.0, "--theta0", "in (0, 1)",
-                        o->theta0);
+                require(std::isfinite(o->theta0) && o->theta0 >= kMinRelease && o->theta0 < 1.0, "--theta0",
+                        fmt::format("from {:g} to below 1 (a fraction of alpha)", kMinRelease), o->theta0);
                 const auto start = std::chrono::steady_clock::now();
                 compare::EngineComparison c;
                 try {
@@ -137,8 +155,10 @@ Command add_compare_command(CLI::App& root) {
                         {"theta0", o->theta0},
                         {"settings", {{"dt", settings.dt}, {"iterations", settings.iterations}, {"knobs", knobs}}},
                         {"wall_time_s", seconds},
+                        {"failures", c.failures},
                         {"wall", wall_inputs_json(o->wall, kind)}};
                     out << j.dump(2) << '\n';
+                    throw_if_incomplete(c);
                     return;
                 }
                 Table t(fmt::format("{} against the analytic model (exact kinematics), {}", engine->version(),
@@ -160,7 +180,9 @@ Command add_compare_command(CLI::App& root) {
                       fmt::format("plastic impact with the roller acting (README); engine / this - 1 = {:+.2e}",
                                   c.restitution.engine / whole - 1.0));
                 t.add("wall time", fmt::format("{:.1f}", seconds), "s");
+                for (const std::string& f : c.failures) t.text("not measured", f);
                 t.print(out);
+                throw_if_incomplete(c);
             }};
 }
 

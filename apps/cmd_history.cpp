@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic/error.hpp"
+#include "apps/atomic_file.hpp"
 #include "apps/commands.hpp"
 #include "apps/report_history.hpp"
 
@@ -52,12 +53,14 @@ Command add_history_command(CLI::App& root) {
     return {cmd, [o](std::ostream& out) {
                 o->request.keep_trajectory = !o->csv.empty();
                 HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
-                std::ofstream csv;
-                if (!o->csv.empty()) csv = open_output_file(o->csv);
+                // Into a temporary file, renamed onto --csv only after a successful run: a failure leaves an
+                // existing file as it was. Created before the run, so that an unwritable path fails at once.
+                std::unique_ptr<AtomicFile> csv;
+                if (!o->csv.empty()) csv = std::make_unique<AtomicFile>(o->csv);
                 simulate_history(run);
-                if (csv.is_open()) {
-                    write_history_csv(csv, run);
-                    if (!csv.flush()) throw InputError("error while writing the CSV file '" + o->csv + "'");
+                if (csv) {
+                    write_history_csv(csv->stream(), run);
+                    csv->commit();
                 }
                 if (o->json)
                     out << to_json(run).dump(2) << '\n';

@@ -8,13 +8,17 @@
 #include <mutex>
 #include <ostream>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include "analytic/error.hpp"
+#include "analytic/ground_motion.hpp"
 #include "apps/commands.hpp"
+#include "apps/option_values.hpp"
 #include "apps/report_suite_write.hpp"
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
@@ -31,6 +35,7 @@ struct ReportCommandOptions {
     std::string suite = "default";
     std::vector<std::string> engines;
     std::vector<std::string> cases;
+    std::string threads_text = "0";  // --threads as typed, checked by parse_bounded_int
     int threads = 0;
     bool no_plots = false;
     std::string gnuplot = "gnuplot";
@@ -86,6 +91,44 @@ private:
     std::size_t shown_ = 0;
 };
 
+// --data must be an existing folder: a mistyped path is refused before anything is created.
+void require_data_folder(const std::string& data) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(data, ec))
+        throw InputError(fmt::format("--data: '{}' is not an existing folder (it should hold the ground-motion "
+                                     "records)",
+                                     data));
+}
+
+// Every record the selected cases need is read once here, before the output folder is made, so that a missing or
+// malformed record is refused (exit 2) without leaving a folder behind. run_suite reads them again: records are a
+// few MB at most, read in milliseconds.
+void require_records_readable(const compare::Suite& suite) {
+    for (const compare::SuiteRecord& r : suite.records) (void)read_record(r.path);
+}
+
+// The --out folder, removed again when the run fails before the report is written, if this run created it and it is
+// still empty (std::filesystem::remove does not remove a folder with anything in it: nothing of the user's is lost).
+class FolderGuard {
+public:
+    explicit FolderGuard(std::filesystem::path dir) : dir_(std::move(dir)) {
+        std::error_code ec;
+        created_ = !std::filesystem::exists(dir_, ec);
+    }
+    ~FolderGuard() {
+        if (!created_ || kept_) return;
+        std::error_code ec;
+        std::filesystem::remove(dir_, ec);
+    }
+    FolderGuard(const FolderGuard&) = delete;
+    FolderGuard& operator=(const FolderGuard&) = delete;
+    void keep() { kept_ = true; }
+
+private:
+    std::filesystem::path dir_;
+    bool created_ = false, kept_ = false;
+};
+
 }  // namespace
 
 Command add_report_command(CLI::App& root) {
@@ -99,7 +142,8 @@ Command add_report_command(CLI::App& root) {
         ->delimiter(',');
     cmd->add_option("--cases", o->cases, "only these case ids, comma-separated (e.g. fig6-vssw,fig6-vssw/r0.5)")
         ->delimiter(',');
-    cmd->add_option("--threads", o->threads, "worker threads (default 0: the available cores)");
+    cmd->add_option("--threads", o->threads_text,
+                    fmt::format("worker threads, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_option("--data", o->data, "folder of the ground-motion records (default: the source tree's data/)");
@@ -121,11 +165,15 @@ Command add_report_command(CLI::App& root) {
         "--out that is not a writable folder). Without gnuplot the report is written without plots (a warning).");
     return {cmd, {}, [o](std::ostream& out, std::ostream& err) {
                 const std::vector<std::string> engines = checked_engines(o->engines);
-                require(o->threads >= 0, "--threads", "0 or more (0: the available cores)", o->threads);
+                o->threads = parse_bounded_int("--threads", o->threads_text, 0, kMaxThreads, " (0: the available cores)");
+                require_data_folder(o->data);
                 compare::Suite suite = compare::make_suite(o->suite, o->data);
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
+                require_records_readable(suite);
                 const std::filesystem::path dir = o->out;
-                prepare_report_dir(dir);  // after every other check (no folder left behind), before the suite runs
+                // After every other check, before the suite runs; removed again if the run fails (FolderGuard).
+                FolderGuard folder(dir);
+                prepare_report_dir(dir);
 
                 Progress progress(err);
                 compare::RunOptions run;
@@ -150,6 +198,7 @@ Command add_report_command(CLI::App& root) {
                 options.plots = !o->no_plots;
                 options.plot.gnuplot = o->gnuplot;
                 const ReportFiles files = write_suite_report(dir, suite, results, meta, options);
+                folder.keep();
                 for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
 
                 out << fmt::format("vssw report: suite {}, {} case{}, {} engine{} besides the analytic model, "

@@ -107,10 +107,4 @@ void write_history_csv(std::ostream& out, const HistoryRun& run) {
     }
 }
 
-std::ofstream open_output_file(const std::string& path) {
-    std::ofstream file(path, std::ios::trunc);
-    if (!file) throw InputError("cannot write the output file '" + path + "'");
-    return file;
-}
-
 }  // namespace vssw::cli

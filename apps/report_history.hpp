@@ -1,7 +1,6 @@
 #pragma once
 // Response of a wall to a ground motion from rest: what `vssw history` prints, and the third part of
 // `vssw summary`.
-#include <fstream>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -43,7 +42,5 @@ Json to_json(const HistoryRun& run);
 void print_history_summary(std::ostream& out, const HistoryRun& run, const std::string& title);
 // Header line, then one row per sample: t, theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g.
 void write_history_csv(std::ostream& out, const HistoryRun& run);
-// Opens a file for writing, before a long run rather than after it; InputError if it cannot be created.
-std::ofstream open_output_file(const std::string& path);
 
 }  // namespace vssw::cli

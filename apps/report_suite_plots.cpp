@@ -13,6 +13,9 @@
 
 #include <fmt/format.h>
 
+#include "analytic/error.hpp"
+#include "apps/atomic_file.hpp"
+
 namespace vssw::cli {
 namespace fs = std::filesystem;
 namespace {
@@ -203,10 +206,16 @@ std::vector<Script> step_scripts(const ReportInput& in) {
     return scripts;
 }
 
+// Through a temporary file renamed on success (atomic_file.hpp); false when it cannot be written.
 bool write_text(const fs::path& path, const std::string& text) {
-    std::ofstream f(path, std::ios::binary);
-    f << text;
-    return static_cast<bool>(f);
+    try {
+        AtomicFile f(path);
+        f.stream() << text;
+        f.commit();
+        return true;
+    } catch (const InputError&) {
+        return false;
+    }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "apps/atomic_file.hpp"
 #include "apps/report_suite_data.hpp"
 #include "apps/report_suite_document.hpp"
 #include "apps/report_suite_html.hpp"
@@ -18,12 +19,11 @@ namespace vssw::cli {
 namespace fs = std::filesystem;
 namespace {
 
+// Through a temporary file renamed on success (atomic_file.hpp): a failure leaves the previous file as it was.
 void write_file(const fs::path& path, const std::function<void(std::ostream&)>& write) {
-    std::ofstream f(path, std::ios::binary | std::ios::trunc);
-    if (!f) throw InputError(fmt::format("cannot write '{}'", path.string()));
-    write(f);
-    f.flush();
-    if (!f) throw InputError(fmt::format("writing '{}' failed", path.string()));
+    AtomicFile f(path);
+    write(f.stream());
+    f.commit();
 }
 
 }  // namespace

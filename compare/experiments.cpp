@@ -22,8 +22,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // cancellation at the threshold does not (the terms are O(g), the difference O(1e-6 alpha q^2): ~1e-8 relative).
 constexpr double kGrowthStep = 1e-6;
 
-double output_interval(const EngineSettings& s) { return s.sample_dt > 0.0 ? s.sample_dt : s.dt; }
-
 // Before anything reads scene.alpha() or scene.gravity(), which assume one description is set.
 void require_scene(const WallScene& scene) {
     if (scene.vssw.has_value() == scene.parapet.has_value())
@@ -75,12 +73,16 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
                                const ThresholdOptions& o) {
     require_scene(scene);
     require(std::isfinite(o.ramp_time) && o.ramp_time > 0.0, "ramp time", "a positive finite time in s", o.ramp_time);
-    require(o.start_g > 0.0 && o.start_g < o.max_g && std::isfinite(o.max_g), "first threshold guess (g)",
-            "in (0, max_g)", o.start_g);
+    require(std::isfinite(o.start_g) && o.start_g > 0.0, "first threshold guess (g)", "a positive finite number",
+            o.start_g);
+    require(std::isfinite(o.max_over_estimate) && o.max_over_estimate >= 2.0,
+            "threshold search cap (multiple of the analytic threshold)", ">= 2", o.max_over_estimate);
     require(std::isfinite(o.sample_dt) && o.sample_dt >= 0.0, "trial sampling interval", ">= 0 s", o.sample_dt);
     const double hold = threshold_hold_time(scene, o);
     const double g = scene.gravity();
     const double lift = o.lift_angle * scene.alpha();
+    const double estimate_g = multibody::analytic_model(scene, Kinematics::exact)->rest_threshold(0.0) / g;
+    const double cap_g = o.max_over_estimate * estimate_g;
 
     EngineSettings trial_settings = settings;
     trial_settings.sample_dt = std::max(settings.sample_dt, o.sample_dt);
@@ -101,9 +103,11 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
     while (!lifts(hi)) {
         lo = hi;
         hi *= 2.0;
-        if (hi > o.max_g)
-            throw multibody::EngineFailure(fmt::format(
-                "{}: the wall did not lift under a constant ground acceleration of {} g", engine.name(), lo));
+        if (hi > cap_g)
+            throw multibody::EngineFailure(
+                fmt::format("{}: the wall did not lift under a constant ground acceleration of {} g ({:.3g} times the "
+                            "analytic model's threshold, {:.4g} g)",
+                            engine.name(), lo, lo / estimate_g, estimate_g));
     }
     while (hi - lo > o.rel_tol * hi) {
         const double mid = 0.5 * (lo + hi);
@@ -144,7 +148,14 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
     if (!out.impacts.empty()) {
         out.quarter_period = out.impacts.front().t - out.trajectory.samples.front().t;
         out.period = 4.0 * *out.quarter_period;
-        if (out.impacts.front().resolved) out.restitution = out.impacts.front().ratio;
+        const ImpactMetric& first = out.impacts.front();
+        if (first.resolved && first.ratio > 0.0 && first.ratio <= 1.0) out.restitution = first.ratio;
+        else if (first.resolved)
+            out.restitution_note = fmt::format(
+                "{}: first impact at t = {:.4g} s gives a theta1_dot ratio of {:.4g}, outside (0, 1]: the wall {} "
+                "(not a restitution of the rocking model)",
+                engine.name(), first.t, first.ratio,
+                first.ratio <= 0.0 ? "did not rock onto its other corner" : "gained energy at the impact");
     }
     out.half_cycles = half_cycles(out.impacts);
     out.amplitude = amplitude_restitution(scene, out.impacts, out.peaks);
@@ -153,10 +164,8 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
 
 MetricComparison compare_metric(double analytic, double engine) { return {analytic, engine, engine / analytic - 1.0}; }
 
-EngineSettings analytic_reference_settings(const EngineSettings& settings) {
-    EngineSettings s = multibody::AnalyticEngine().default_settings();  // exact kinematics
-    s.dt = output_interval(settings);
-    return s;
+EngineSettings analytic_reference_settings(const EngineSettings& /*settings*/) {
+    return multibody::AnalyticEngine().default_settings();  // exact kinematics, output every 1e-4 s
 }
 
 FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const EngineSettings& settings,
@@ -170,6 +179,18 @@ FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const
     return {run_free_vibration(analytic, analytic_reference_settings(settings), scene, free),
             run_free_vibration(engine, settings, scene, free)};
 }
+
+namespace {
+
+// The amplitude restitution of the first impact, NaN when there is none or it lies outside (0, 1] (see
+// FreeVibrationResult::restitution: not a restitution of the rocking model).
+double first_amplitude(const FreeVibrationResult& f) {
+    if (f.amplitude.empty() || f.amplitude.front().impact != 0) return kNaN;
+    const double e = f.amplitude.front().energy;
+    return e > 0.0 && e <= 1.0 ? e : kNaN;
+}
+
+}  // namespace
 
 EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
                                        double r, const ComparisonOptions& options) {
@@ -190,10 +211,20 @@ EngineComparison compare_with_analytic(const Engine& engine, const EngineSetting
     const FreeVibrationResult& e = runs.engine;
     c.period = compare_metric(a.period.value_or(kNaN), e.period.value_or(kNaN));
     c.restitution = compare_metric(a.restitution.value_or(kNaN), e.restitution.value_or(kNaN));
-    auto first_amplitude = [](const FreeVibrationResult& f) {
-        return !f.amplitude.empty() && f.amplitude.front().impact == 0 ? f.amplitude.front().energy : kNaN;
-    };
     c.restitution_amplitude = compare_metric(first_amplitude(a), first_amplitude(e));
+    for (const auto* side : {&a, &e}) {
+        const std::string who = side == &a ? "analytic model" : engine.name();
+        if (!side->period)
+            c.failures.push_back(fmt::format("period: the {} reached no impact in the free vibration from {} alpha",
+                                             who, r));
+        if (!side->restitution_note.empty()) c.failures.push_back("restitution: " + side->restitution_note);
+        else if (side->period && !side->restitution)
+            c.failures.push_back(fmt::format("restitution: the {}'s first impact is not resolved", who));
+        const double amplitude = first_amplitude(*side);
+        if (side->period && !std::isfinite(amplitude))
+            c.failures.push_back(fmt::format("restitution from peaks: the {} has no peak either side of its first "
+                                             "impact, or a ratio outside (0, 1]", who));
+    }
     c.analytic_impacts = static_cast<int>(a.impacts.size());
     c.engine_impacts = static_cast<int>(e.impacts.size());
 

@@ -273,6 +273,9 @@ void free_task(const TaskContext& x, TaskOutput& out) {
     if (x.c.dt) settings.dt = *x.c.dt;
     const FreeVibrationComparison runs = free_vibration_with_analytic(x.engine, settings, x.wall.scene, options);
     free_rows(x, runs.analytic, runs.engine, out);
+    // A first-impact ratio outside (0, 1] is a failure of the engine's run, not a restitution: the row is NaN and
+    // the report lists why.
+    if (!runs.engine.restitution_note.empty()) out.failure = runs.engine.restitution_note;
     if (x.keep_traces && x.c.kind == CaseKind::free)
         out.traces.push_back(make_trace(x.c.id, x.engine.name(), runs.engine.trajectory, alpha, kFreeTraceSeconds));
 }

@@ -4,7 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <initializer_list>
@@ -204,6 +209,21 @@ TEST(GroundMotion, MissingFileIsInputError) {
     expect_input_error([&] { read_two_column(path, AccelUnits::g); }, {path, "cannot open"});
     expect_input_error([&] { read_record(path); }, {path, "cannot open"});
     expect_input_error([&] { read_record(testing::TempDir()); }, {"directory"});
+}
+
+// What is not a regular file is refused before it is opened: /dev/zero used to be read until memory ran out, a FIFO
+// blocked forever. A file past kMaxRecordBytes is refused by its size (a sparse file: nothing is written).
+TEST(GroundMotion, DevicesFifosAndHugeFilesAreRefusedUnread) {
+    expect_input_error([] { read_record("/dev/zero"); }, {"/dev/zero", "not a regular file"});
+    const std::string fifo = testing::TempDir() + "vssw_gm_fifo";
+    std::remove(fifo.c_str());
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    expect_input_error([&] { read_record(fifo); }, {fifo, "not a regular file"});  // returns: nothing opened it
+    std::remove(fifo.c_str());
+    const std::string huge = temp_file("huge.txt", "");
+    std::filesystem::resize_file(huge, static_cast<std::uintmax_t>(kMaxRecordBytes) + 1);
+    expect_input_error([&] { read_record(huge); }, {huge, "67108865 bytes", "67108864"});
+    std::remove(huge.c_str());
 }
 
 TEST(GroundMotion, EmptyFileIsInputError) {

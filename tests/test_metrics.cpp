@@ -337,9 +337,56 @@ TEST(Experiments, ThresholdReportsAnEngineThatFailsOrNeverLifts) {
     EXPECT_THROW(find_threshold(failing, {}, scene), multibody::EngineFailure);
     EXPECT_EQ(failing.runs, 1);  // the first failure ends the search
     EXPECT_THROW(find_threshold(stuck, {}, scene), multibody::EngineFailure);
-    EXPECT_EQ(stuck.runs, 9);  // 0.05, 0.1, ..., 12.8 g: the next doubling passes max_g = 20 g
+    // 0.05, 0.1, 0.2, ... g while at most 4 times the analytic threshold (ThresholdOptions::max_over_estimate).
+    const VsswGeometry w = test_vssw();
+    const double cap_g = ThresholdOptions{}.max_over_estimate * eq12_threshold(w) / w.g;
+    int doublings = 0;
+    for (double a = ThresholdOptions{}.start_g; a <= cap_g; a *= 2.0) ++doublings;
+    EXPECT_EQ(stuck.runs, doublings);
     EXPECT_THROW(find_threshold(stuck, {}, WallScene{}), InputError);
     EXPECT_THROW(run_free_vibration(stuck, {}, WallScene{}), InputError);
+}
+
+// An engine whose first impact gains energy (or reverses the motion) gives no restitution but a note saying why, and
+// a comparison with it lists the failure (vssw compare exits 3): Simbody once returned -0.26 with exit 0.
+class EnergyGainingEngine final : public multibody::Engine {
+public:
+    std::string name() const override { return "gainer"; }
+    std::string version() const override { return "stub"; }
+    EngineSettings default_settings() const override {
+        EngineSettings s;
+        s.dt = kDt;
+        return s;
+    }
+    Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings&) const override {
+        // theta1 falls linearly from theta0 at kSpeed, crosses 0 at t_c and leaves at twice the speed: ratio 2.
+        const double t_c = ex.theta0 / kSpeed;
+        Trajectory out;
+        for (double t = 0.0; t <= 2.0 * t_c; t += kDt) {
+            const bool after = t > t_c;
+            const double theta = after ? -2.0 * kSpeed * (t - t_c) : ex.theta0 - kSpeed * t;
+            if (theta < -0.9 * scene.alpha()) break;
+            out.samples.push_back({t, theta, after ? -2.0 * kSpeed : -kSpeed, 0, 0, 0, 0, 1});
+        }
+        return out;
+    }
+
+private:
+    static constexpr double kDt = 1e-3;    // [s]
+    static constexpr double kSpeed = 0.1;  // [rad/s]
+};
+
+TEST(Experiments, AnImpactRatioOutsideZeroToOneIsAFailureNotARestitution) {
+    const WallScene scene = WallScene::of(test_vssw());
+    const EnergyGainingEngine engine;
+    FreeVibrationOptions o;
+    o.t_end = 10.0;
+    const FreeVibrationResult r = run_free_vibration(engine, engine.default_settings(), scene, o);
+    ASSERT_FALSE(r.impacts.empty());
+    EXPECT_FALSE(r.restitution.has_value());
+    EXPECT_NE(r.restitution_note.find("outside (0, 1]"), std::string::npos) << r.restitution_note;
+    EXPECT_NE(r.restitution_note.find("gained energy"), std::string::npos) << r.restitution_note;
+    EXPECT_NE(r.restitution_note.find("gainer"), std::string::npos) << r.restitution_note;
 }
 
 // Bound on the error of the first impact's velocity ratio from sampling every dt (metrics.hpp): the crossing time is

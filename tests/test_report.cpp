@@ -469,4 +469,31 @@ TEST(ReportCommand, OdeOnTwoParapetCasesEndToEnd) {
     }
 }
 
+// --data used to be accepted when missing, and --out was prepared before the records were read: a bad record left an
+// empty folder behind. Both are refused now before anything is created.
+TEST(ReportCommand, MissingDataFolderOrUnreadableRecordCreatesNothing) {
+    const TempDir work("refused_data");
+    const fs::path out = work.path / "report";
+    const std::vector<std::string> base = {"report", "--engines", "ode", "--cases", "fig6-pw/rinaldi-x0.17", "--out",
+                                           out.string()};
+    auto with_data = [&](const fs::path& data) {
+        std::vector<std::string> args = base;
+        args.push_back("--data");
+        args.push_back(data.string());
+        return vssw::testing::run_cli(args);
+    };
+    const vssw::testing::CliResult missing = with_data(work.path / "no_such_data");
+    EXPECT_EQ(missing.code, vssw::cli::kExitBadInput) << missing.err;
+    EXPECT_NE(missing.err.find("no_such_data"), std::string::npos) << missing.err;
+    EXPECT_FALSE(fs::exists(out));
+
+    const fs::path data = work.path / "data";
+    fs::create_directories(data);
+    std::ofstream(data / "NGA_no_1063_RRS228.AT2") << "not a record\n";
+    const vssw::testing::CliResult bad_record = with_data(data);
+    EXPECT_EQ(bad_record.code, vssw::cli::kExitBadInput) << bad_record.err;
+    EXPECT_NE(bad_record.err.find("NGA_no_1063_RRS228.AT2"), std::string::npos) << bad_record.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
