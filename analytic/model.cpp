@@ -195,7 +195,11 @@ double RockingModel::kinetic(double theta, double theta_dot) const {
     return 0.5 * terms(std::abs(theta)).M * sq(theta_dot);
 }
 
-double RockingModel::reference_velocity() const { return std::sqrt(2.0 * reference_energy() / terms(0.0).M); }
+// |V_r| keeps it real where V_r < 0 (a heavy overburden puts alpha1 past the unstable equilibrium; found by the
+// property sweep, tests/test_properties.cpp).
+double RockingModel::reference_velocity() const {
+    return std::sqrt(2.0 * std::abs(reference_energy()) / terms(0.0).M);
+}
 
 double RockingModel::rest_threshold(double a_v) const {
     const ModelTerms t = terms(0.0);

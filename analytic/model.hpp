@@ -72,7 +72,7 @@ public:
     double kinetic(double theta, double theta_dot) const;
     // V_r: potential energy at the reference angle (the paper's normalising energy, Sect. 7).
     double reference_energy() const { return potential(reference_angle()); }
-    // Reference velocity: sqrt(2 V_r / M(0)); equals Eq. (24) for the VSSW with N = 0.
+    // Reference velocity: sqrt(2 |V_r| / M(0)); equals Eq. (24) for the VSSW with N = 0.
     double reference_velocity() const;
     // Smallest |a_h| that tips the wall off rest, from the equation of motion at q = 0.
     double rest_threshold(double a_v) const;

@@ -82,7 +82,8 @@ public:
           N_(model.overburden()),
           alpha_(model.reference_angle()),
           collapse_(model.collapse_angle()),
-          v_ref_(model.reference_energy()),
+          // |V_r|: V_r is negative for a wall whose overburden puts alpha1 past its unstable equilibrium.
+          v_ref_(std::abs(model.reference_energy())),
           motion_end_(std::max(ah.duration(), av.duration())),
           rest_scan_step_(std::min(scan_step(ah), scan_step(av))),
           integrator_(Rhs{this}, o.step, State{alpha_, model.reference_velocity(), v_ref_}),
@@ -219,7 +220,13 @@ bool Simulator::rest_phase(double& t, State& y) {
         out_.lift_offs.push_back(when);
         return true;
     };
-    if (tipping_margin(t) > 0.0) return lift(t);
+    // The ground motion is left-continuous at its breakpoints: where it drops at a breakpoint (a cosine pulse's end),
+    // a margin positive at that instant alone tips nothing. The wall lifts only where the margin is positive just
+    // after the instant too.
+    auto tips_from = [&](double when) {
+        return tipping_margin(when) > 0.0 && tipping_margin(std::nextafter(when, opt_.t_end + 1.0)) > 0.0;
+    };
+    if (tips_from(t)) return lift(t);
     double scan = t;
     while (scan < opt_.t_end) {
         if (scan >= motion_end_) {  // no more ground motion: nothing can lift the wall again
@@ -234,7 +241,8 @@ bool Simulator::rest_phase(double& t, State& y) {
             // Narrow to the crossing, keeping the right end, where the margin is positive, so the flight starts.
             double lo = scan, hi = next;
             shrink_bracket([&](double x) { return tipping_margin(x); }, lo, hi, opt_.event_time_tol);
-            return lift(tipping_margin(hi) > 0.0 ? hi : next);
+            const double when = tipping_margin(hi) > 0.0 ? hi : next;
+            if (tips_from(when)) return lift(when);
         }
         scan = next;
     }
@@ -365,7 +373,6 @@ Event Simulator::rocking_phase(double& t, State& y) {
                         const State at_peak = step.at(b);
                         out_.peaks.push_back({b, at_peak[0]});
                         out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(at_peak[0]));
-                        check_balance(b, at_peak);  // turning points are watched too: a run may have no event
                     }
                 }
                 tau_prev = tau;
