@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <utility>
 
 #include "error.hpp"
@@ -68,20 +69,25 @@ bool parse_number(const std::string& token, double& out) {
     return end != begin && end == begin + token.size();
 }
 
-// A file as lines (line i of the file is lines[i - 1]), with any '\r' of DOS line endings removed: PEER files are
+// A stream as lines (line i of the file is lines[i - 1]), with any '\r' of DOS line endings removed: PEER files are
 // often distributed with CRLF.
-std::vector<std::string> read_lines(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(fmt::format("ground-motion file '{}' is a directory", path));
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
+std::vector<std::string> lines_of(std::istream& in) {
     std::vector<std::string> lines;
     std::string line;
     while (std::getline(in, line)) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         lines.push_back(std::move(line));
     }
+    return lines;
+}
+
+std::vector<std::string> read_lines(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(fmt::format("ground-motion file '{}' is a directory", path));
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
+    std::vector<std::string> lines = lines_of(in);
     if (in.bad()) throw InputError(fmt::format("error while reading ground-motion file '{}'", path));
     return lines;
 }
@@ -267,6 +273,13 @@ GroundMotion parse_two_column(const std::vector<std::string>& lines, const std::
     return sampled_from_file(std::move(times), std::move(values), path);
 }
 
+// read_record's choice of reader, on lines from a file or from text.
+GroundMotion parse_lines(const std::vector<std::string>& lines, const std::string& path, const AccelUnits* units) {
+    if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos)
+        return parse_at2(lines, path, units);
+    return parse_two_column(lines, path, units != nullptr ? *units : AccelUnits::g);
+}
+
 void require_amplitude(double amplitude) {
     require(std::isfinite(amplitude), "ground-motion amplitude", "finite", amplitude);
 }
@@ -438,10 +451,12 @@ GroundMotion read_two_column(const std::string& path, AccelUnits units) {
 }
 
 GroundMotion read_record(const std::string& path, const AccelUnits* units) {
-    const std::vector<std::string> lines = read_lines(path);
-    if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos)
-        return parse_at2(lines, path, units);
-    return parse_two_column(lines, path, units != nullptr ? *units : AccelUnits::g);
+    return parse_lines(read_lines(path), path, units);
+}
+
+GroundMotion parse_record(const std::string& text, const std::string& name, const AccelUnits* units) {
+    std::istringstream in(text);
+    return parse_lines(lines_of(in), name, units);
 }
 
 // --- synthetic inputs -----------------------------------------------------------------------------------------------

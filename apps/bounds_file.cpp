@@ -32,11 +32,22 @@ json toml_to_json(const std::string& text, const std::string& name) {
     return json::parse(text_json.str());
 }
 
+// Deepest nesting of arrays and objects a JSON bounds file may have: the schema needs 4 (top table, list of bounds,
+// bound, list of cases); 256 is toml++'s own limit for TOML (TOML_MAX_NESTED_VALUES), so both formats refuse the
+// same. Without a limit, a value nested some 10^5 deep (found by the fuzz harness tests/fuzz/fuzz_bounds_file.cpp)
+// overflowed the stack in nlohmann's recursive dump() when the error message quoted it.
+constexpr int kMaxJsonNesting = 256;
+
 json parse_json(const std::string& text, const std::string& name) {
     // A key given twice in one object would silently take the last value (TOML refuses it): refuse it too.
     std::vector<std::set<std::string>> keys;  // per open object
     std::string duplicate;
+    int depth = 0;
+    bool too_deep = false;
     const json::parser_callback_t no_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+        if (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start)
+            too_deep |= ++depth > kMaxJsonNesting;
+        if (event == json::parse_event_t::object_end || event == json::parse_event_t::array_end) --depth;
         if (event == json::parse_event_t::object_start) keys.emplace_back();
         if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
         if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
@@ -51,6 +62,9 @@ json parse_json(const std::string& text, const std::string& name) {
     } catch (const json::exception& e) {  // e.g. a number too large for a double
         throw InputError(fmt::format("bounds file {}: JSON error: {}", name, e.what()));
     }
+    if (too_deep)
+        throw InputError(fmt::format("bounds file {}: arrays and objects nested deeper than {} levels", name,
+                                     kMaxJsonNesting));
     if (!duplicate.empty()) throw InputError(fmt::format("bounds file {}: key '{}' given twice in one table", name, duplicate));
     return doc;
 }

@@ -126,6 +126,17 @@ TEST(BoundsFile, EachMalformationIsNamed) {
                    "names a case twice");
 }
 
+// Found by the fuzz harness (tests/fuzz/fuzz_bounds_file.cpp): a JSON value nested a million deep crashed the
+// reader (stack overflow in nlohmann's recursive dump() quoting it in the message). Now refused like TOML's nesting
+// beyond toml++'s limit, before anything quotes it.
+TEST(BoundsFile, DeepNestingIsRefusedNotACrash) {
+    constexpr std::size_t kDepth = 1000000;  // some 2 MB: deep enough to overflow an 8 MB stack when recursed
+    const std::string deep = std::string(kDepth, '[') + std::string(kDepth, ']');
+    expect_refused("{\"suite\": " + deep + "}", "nested deeper than 256 levels", "json");
+    expect_refused("{\"analytic\": [{\"case\": " + deep + "}]}", "nested deeper than 256 levels", "json");
+    expect_refused("suite = " + deep + "\n", "TOML syntax error", "toml");
+}
+
 TEST(BoundsFile, AMissingFileOrAnUnknownFormatIsNamed) {
     try {
         vssw::cli::read_bounds_file("/nonexistent/bounds.toml");
