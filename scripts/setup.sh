@@ -54,8 +54,15 @@ sanitizer_build_and_test() {
   # little cost. halt_on_error (UBSan): with -fno-sanitize-recover already fatal; print_stacktrace gives the stack.
   ASAN_OPTIONS="strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1" \
   UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-    ctest --test-dir "$here/build-asan" --output-on-failure -j "$jobs"
+    ctest --test-dir "$here/build-asan" --output-on-failure -j "$jobs" -E "$asan_excluded"
 }
+# Left out of the sanitizer run (they run in the normal build): the two threshold bisections of Simbody's rigid
+# contact (ThresholdMatchesTheAnalyticModel, OverburdenRaisesTheThresholdAsEq12Says). They are dozens of whole
+# simulations inside the uninstrumented Simbody library, whose many small allocations go through ASan's allocator:
+# 86 s and 187 s under ASan (32 s and 65 s without), three quarters of the sanitizer run's test time, for adapter
+# code that the other simbody_rigid tests (period, restitutions, moving supports) run under ASan as well. CTest's
+# names of these tests end in '  # GetParam() = ...', hence the ( |$).
+asan_excluded='^Engines/CrossEngine\.(ThresholdMatchesTheAnalyticModel|OverburdenRaisesTheThresholdAsEq12Says)/simbody_rigid( |$)'
 
 if [ "$mode" = asan ]; then
   sanitizer_build_and_test
