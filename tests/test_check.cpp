@@ -137,6 +137,18 @@ TEST(BoundsFile, DeepNestingIsRefusedNotACrash) {
     expect_refused("suite = " + deep + "\n", "TOML syntax error", "toml");
 }
 
+// Found by the fuzz harness under UBSan: toml++ 3.3 reaches TOML_UNREACHABLE (undefined behaviour) on U+0237
+// ("\xC8\xB7" in UTF-8) at the start of a line. TOML bounds files are now refused unless ASCII, naming the line.
+TEST(BoundsFile, NonAsciiTomlIsRefusedBeforeTomlppSeesIt) {
+    expect_refused("\xC8\xB7\n", "line 1: a non-ASCII character (byte 0xC8)");
+    expect_refused("suite = \"default\"  # theta \xCE\xB8\n", "line 1: a non-ASCII character (byte 0xCE)");
+    // JSON goes through nlohmann::json, which reads UTF-8 correctly: a non-ASCII case id is kept.
+    const Bounds b = parse_bounds("{\"analytic\": [{\"case\": \"\xCE\xB8\", \"metric\": \"period\", "
+                                  "\"reference\": 1, \"max_drift\": 0}]}",
+                                  "json", "b.json");
+    EXPECT_EQ(b.analytic.at(0).case_id, "\xCE\xB8");
+}
+
 TEST(BoundsFile, AMissingFileOrAnUnknownFormatIsNamed) {
     try {
         vssw::cli::read_bounds_file("/nonexistent/bounds.toml");

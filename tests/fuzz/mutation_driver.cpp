@@ -36,9 +36,9 @@ namespace {
 using Input = std::string;
 using Rng = std::mt19937_64;
 
-// Mutants are capped at this size unless -max_len says otherwise: the largest seed (the bounds file of the default suite) is ~17 kB and the AT2
-// record ~30 kB; doubling such a file already covers "too many values", and the cap keeps chained insertions and
-// splices from growing an input (and the time per run) without bound.
+// Mutants are capped at this size unless -max_len says otherwise: the largest seed (the bounds file of the default
+// suite) is ~17 kB and the AT2 record ~30 kB; doubling such a file already covers "too many values", and the cap
+// keeps chained insertions and splices from growing an input (and the time per run) without bound.
 constexpr std::size_t kMaxInputBytes = 128 * 1024;
 // Mutations stacked on one input: several at once reach combinations (a bad NPTS and a missing line) that single
 // mutations of a valid file cannot; more than a handful mostly produce a first-line syntax error.
@@ -65,7 +65,9 @@ bool number_char(char c) {
     return (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E';
 }
 
-std::size_t pick(Rng& rng, std::size_t n) { return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); }
+std::size_t pick(Rng& rng, std::size_t n) {
+    return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);
+}
 
 // Replaces one number-like token (a run of digits, signs, dots and exponents that holds a digit) by an extreme one.
 void replace_number(Input& s, Rng& rng) {
@@ -161,7 +163,8 @@ Options parse_options(int argc, char** argv) {
         else if (flag(arg, "max_len", v)) o.max_len = std::stoull(v);
         else if (flag(arg, "timeout", v)) o.slow_input_seconds = std::stod(v);
         else if (flag(arg, "artifact_prefix", v)) o.artifact_prefix = v;
-        else if (!arg.empty() && arg[0] == '-') std::fprintf(stderr, "mutation_driver: ignoring libFuzzer flag %s\n", arg.c_str());
+        else if (!arg.empty() && arg[0] == '-')
+            std::fprintf(stderr, "mutation_driver: ignoring libFuzzer flag %s\n", arg.c_str());
         else o.paths.push_back(arg);
     }
     return o;
@@ -201,11 +204,14 @@ int main(int argc, char** argv) {
         return 2;
     }
     namespace fs = std::filesystem;
-    const bool replay_only = std::none_of(o.paths.begin(), o.paths.end(), [](const std::string& p) { return fs::is_directory(p); });
+    const bool replay_only =
+        std::none_of(o.paths.begin(), o.paths.end(), [](const std::string& p) { return fs::is_directory(p); });
     const std::string current = o.artifact_prefix + "current-input";
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+    const auto seconds_since = [](Clock::time_point t) {
+        return std::chrono::duration<double>(Clock::now() - t).count();
+    };
 
     Rng rng(o.seed);
     Input input;
