@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <utility>
 
 #include "error.hpp"
@@ -69,8 +70,6 @@ bool parse_number(const std::string& token, double& out) {
     return end != begin && end == begin + token.size();
 }
 
-// A file as lines (line i of the file is lines[i - 1]), with any '\r' of DOS line endings removed: PEER files are
-// often distributed with CRLF.
 // Refuses, without opening it, what is not a regular file of at most kMaxRecordBytes (ground_motion.hpp).
 void require_record_file(const std::string& path) {
     namespace fs = std::filesystem;
@@ -88,22 +87,29 @@ void require_record_file(const std::string& path) {
                                      path, size, kMaxRecordBytes));
 }
 
-std::vector<std::string> read_lines(const std::string& path) {
-    require_record_file(path);
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
+// A stream as lines (line i of the file is lines[i - 1]), with any '\r' of DOS line endings removed: PEER files are
+// often distributed with CRLF. Its size is bounded too (a file that grows while it is read; a text given whole).
+std::vector<std::string> lines_of(std::istream& in, const std::string& name) {
     std::vector<std::string> lines;
     std::string line;
-    long long bytes = 0;  // the size is checked above; this bounds a file that grows while it is read
+    long long bytes = 0;
     while (std::getline(in, line)) {
         bytes += static_cast<long long>(line.size()) + 1;
         if (bytes > kMaxRecordBytes)
             throw InputError(fmt::format("ground-motion file '{}' has more than the {} bytes allowed (real records "
                                          "are a few MB)",
-                                         path, kMaxRecordBytes));
+                                         name, kMaxRecordBytes));
         if (!line.empty() && line.back() == '\r') line.pop_back();
         lines.push_back(std::move(line));
     }
+    return lines;
+}
+
+std::vector<std::string> read_lines(const std::string& path) {
+    require_record_file(path);
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
+    std::vector<std::string> lines = lines_of(in, path);
     if (in.bad()) throw InputError(fmt::format("error while reading ground-motion file '{}'", path));
     return lines;
 }
@@ -289,6 +295,13 @@ GroundMotion parse_two_column(const std::vector<std::string>& lines, const std::
     return sampled_from_file(std::move(times), std::move(values), path);
 }
 
+// read_record's choice of reader, on lines from a file or from text.
+GroundMotion parse_lines(const std::vector<std::string>& lines, const std::string& path, const AccelUnits* units) {
+    if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos)
+        return parse_at2(lines, path, units);
+    return parse_two_column(lines, path, units != nullptr ? *units : AccelUnits::g);
+}
+
 void require_amplitude(double amplitude) {
     require(std::isfinite(amplitude), "ground-motion amplitude", "finite", amplitude);
 }
@@ -460,10 +473,12 @@ GroundMotion read_two_column(const std::string& path, AccelUnits units) {
 }
 
 GroundMotion read_record(const std::string& path, const AccelUnits* units) {
-    const std::vector<std::string> lines = read_lines(path);
-    if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos)
-        return parse_at2(lines, path, units);
-    return parse_two_column(lines, path, units != nullptr ? *units : AccelUnits::g);
+    return parse_lines(read_lines(path), path, units);
+}
+
+GroundMotion parse_record(const std::string& text, const std::string& name, const AccelUnits* units) {
+    std::istringstream in(text);
+    return parse_lines(lines_of(in, name), name, units);
 }
 
 // --- synthetic inputs -----------------------------------------------------------------------------------------------

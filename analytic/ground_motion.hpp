@@ -73,6 +73,9 @@ GroundMotion read_two_column(const std::string& path, AccelUnits units);
 // Chooses the reader by content: AT2 when line 4 holds NPTS, two-column otherwise. `units` applies to two-column
 // files (default g) and overrides an AT2 header when given.
 GroundMotion read_record(const std::string& path, const AccelUnits* units = nullptr);
+// read_record on text already in memory (the fuzz harness, tests/fuzz/); `name` stands for the path in messages and
+// names the record.
+GroundMotion parse_record(const std::string& text, const std::string& name, const AccelUnits* units = nullptr);
 
 // Synthetic inputs ------------------------------------------------------------------------------------------------
 // All amplitudes in m/s^2, times in s; each validates its arguments (finite, periods and durations > 0).

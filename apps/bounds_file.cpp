@@ -1,5 +1,6 @@
 #include "apps/bounds_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,19 @@ using nlohmann::json;
 
 // TOML is read into the JSON value it stands for, so that one validation serves both formats.
 json toml_to_json(const std::string& text, const std::string& name) {
+    // A TOML bounds file must be ASCII. toml++ 3.3 (Debian) has undefined behaviour on some non-ASCII characters
+    // where whitespace may stand (its generated Unicode whitespace test reaches TOML_UNREACHABLE for e.g. U+0237 at
+    // the start of a line; found by tests/fuzz/fuzz_bounds_file.cpp under UBSan). Telling those places from strings
+    // and comments would mean lexing TOML ourselves; everything the schema holds (keys, case ids, metrics, numbers)
+    // is ASCII, so only non-ASCII comments are lost.
+    const auto non_ascii =
+        std::find_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0x80) != 0; });
+    if (non_ascii != text.end()) {
+        const auto line = 1 + std::count(text.begin(), non_ascii, '\n');
+        throw InputError(fmt::format("bounds file {}: line {}: a non-ASCII character (byte 0x{:02X}); TOML "
+                                     "bounds files must be ASCII",
+                                     name, line, static_cast<unsigned char>(*non_ascii)));
+    }
     toml::table table;
     try {
         table = toml::parse(text, name);
@@ -32,11 +46,22 @@ json toml_to_json(const std::string& text, const std::string& name) {
     return json::parse(text_json.str());
 }
 
+// Deepest nesting of arrays and objects a JSON bounds file may have: the schema needs 4 (top table, list of bounds,
+// bound, list of cases); 256 is toml++'s own limit for TOML (TOML_MAX_NESTED_VALUES), so both formats refuse the
+// same. Without a limit, a value nested some 10^5 deep (found by the fuzz harness tests/fuzz/fuzz_bounds_file.cpp)
+// overflowed the stack in nlohmann's recursive dump() when the error message quoted it.
+constexpr int kMaxJsonNesting = 256;
+
 json parse_json(const std::string& text, const std::string& name) {
     // A key given twice in one object would silently take the last value (TOML refuses it): refuse it too.
     std::vector<std::set<std::string>> keys;  // per open object
     std::string duplicate;
+    int depth = 0;
+    bool too_deep = false;
     const json::parser_callback_t no_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+        if (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start)
+            too_deep |= ++depth > kMaxJsonNesting;
+        if (event == json::parse_event_t::object_end || event == json::parse_event_t::array_end) --depth;
         if (event == json::parse_event_t::object_start) keys.emplace_back();
         if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
         if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
@@ -51,6 +76,9 @@ json parse_json(const std::string& text, const std::string& name) {
     } catch (const json::exception& e) {  // e.g. a number too large for a double
         throw InputError(fmt::format("bounds file {}: JSON error: {}", name, e.what()));
     }
+    if (too_deep)
+        throw InputError(fmt::format("bounds file {}: arrays and objects nested deeper than {} levels", name,
+                                     kMaxJsonNesting));
     if (!duplicate.empty()) throw InputError(fmt::format("bounds file {}: key '{}' given twice in one table", name, duplicate));
     return doc;
 }

@@ -126,6 +126,29 @@ TEST(BoundsFile, EachMalformationIsNamed) {
                    "names a case twice");
 }
 
+// Found by the fuzz harness (tests/fuzz/fuzz_bounds_file.cpp): a JSON value nested a million deep crashed the
+// reader (stack overflow in nlohmann's recursive dump() quoting it in the message). Now refused like TOML's nesting
+// beyond toml++'s limit, before anything quotes it.
+TEST(BoundsFile, DeepNestingIsRefusedNotACrash) {
+    constexpr std::size_t kDepth = 1000000;  // some 2 MB: deep enough to overflow an 8 MB stack when recursed
+    const std::string deep = std::string(kDepth, '[') + std::string(kDepth, ']');
+    expect_refused("{\"suite\": " + deep + "}", "nested deeper than 256 levels", "json");
+    expect_refused("{\"analytic\": [{\"case\": " + deep + "}]}", "nested deeper than 256 levels", "json");
+    expect_refused("suite = " + deep + "\n", "TOML syntax error", "toml");
+}
+
+// Found by the fuzz harness under UBSan: toml++ 3.3 reaches TOML_UNREACHABLE (undefined behaviour) on U+0237
+// ("\xC8\xB7" in UTF-8) at the start of a line. TOML bounds files are now refused unless ASCII, naming the line.
+TEST(BoundsFile, NonAsciiTomlIsRefusedBeforeTomlppSeesIt) {
+    expect_refused("\xC8\xB7\n", "line 1: a non-ASCII character (byte 0xC8)");
+    expect_refused("suite = \"default\"  # theta \xCE\xB8\n", "line 1: a non-ASCII character (byte 0xCE)");
+    // JSON goes through nlohmann::json, which reads UTF-8 correctly: a non-ASCII case id is kept.
+    const Bounds b = parse_bounds("{\"analytic\": [{\"case\": \"\xCE\xB8\", \"metric\": \"period\", "
+                                  "\"reference\": 1, \"max_drift\": 0}]}",
+                                  "json", "b.json");
+    EXPECT_EQ(b.analytic.at(0).case_id, "\xCE\xB8");
+}
+
 TEST(BoundsFile, AMissingFileOrAnUnknownFormatIsNamed) {
     try {
         vssw::cli::read_bounds_file("/nonexistent/bounds.toml");

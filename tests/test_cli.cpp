@@ -33,7 +33,6 @@ constexpr double kEnergyBalanceBound = 1e-8;
 // The analytic pulses' PGA comes from a 20,000-point scan; a one-sine pulse's peak falls on a scan point.
 constexpr double kPulseScanTol = 1e-9;
 
-constexpr double kG0 = 9.80665;  // standard gravity: accelerations "in g" on the command line and in records
 const std::string kDataDir = VSSW_DATA_DIR;
 const std::string kRinaldi = kDataDir + "/NGA_no_1063_RRS228.AT2";
 constexpr double kRinaldiPga_g = 0.825195;  // the largest |value| in the file, in g

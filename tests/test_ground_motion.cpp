@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <initializer_list>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -120,6 +121,22 @@ TEST(GroundMotion, ReadRecordChoosesReaderByContent) {
     EXPECT_NEAR(read_record(kDataDir + "/elcentro_chopra.txt", &cm).sample_values()[1], 0.0063 * 0.01, kRoundoff);
     EXPECT_NEAR(read_record(kDataDir + "/NGA_no_1063_RRS228.AT2", &cm).sample_values()[0], -0.731461E-02 * 0.01,
                 kRoundoff);
+}
+
+// parse_record is read_record on text (the fuzz harness's entry, tests/fuzz/): same samples, the name in messages.
+TEST(GroundMotion, ParseRecordReadsTextAsReadRecordReadsFiles) {
+    for (const std::string file : {"NGA_no_1063_RRS228.AT2", "elcentro_chopra.txt"}) {
+        std::ifstream in(kDataDir + "/" + file, std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const GroundMotion from_text = parse_record(text, file);
+        const GroundMotion from_file = read_record(kDataDir + "/" + file);
+        EXPECT_EQ(from_text.sample_times(), from_file.sample_times()) << file;
+        EXPECT_EQ(from_text.sample_values(), from_file.sample_values()) << file;
+        EXPECT_EQ(from_text.name(), file);
+    }
+    expect_input_error([] { parse_record("", "empty-text"); }, {"empty-text", "empty"});
+    expect_input_error([] { parse_record(at2_text(kUnitsG, kOlderLine4, "0.1 0.2\n"), "short.at2"); },
+                       {"short.at2", "NPTS = 6"});
 }
 
 // --- PEER AT2 headers ---------------------------------------------------------------------------------------------

@@ -14,7 +14,6 @@ namespace {
 
 // rtol 1e-10 per step accumulates over 1e3-1e4 steps; observed drifts are ~1e-9 to ~1e-8 of V_r: 10x headroom.
 constexpr double kEnergyBalance = 1e-7;
-constexpr double kRoundoff = 1e-12;        // exact arithmetic identities (the impact map)
 constexpr double kEventTimeMatch = 1e-9;   // two runs that must be mirror images: same steps up to round-off
 constexpr double kThresholdBisection = 1e-7;  // relative bracket width the bisection below stops at
 constexpr double kGravityInG = 9.81;
