@@ -116,6 +116,8 @@ Command add_compare_command(CLI::App& root) {
         "rel_error, target, within_target}), closed_forms {threshold_g, restitution, restitution_whole_mechanism,\n"
         "period_linearised}, theta0, settings {dt, iterations, knobs}, wall_time_s, failures, wall {...}.\n"
         "failures: why a metric is null (e.g. an engine's first-impact ratio outside (0, 1]).\n"
+        "analytic_warnings: the analytic model's own assumptions failing along its free vibration (e.g. a roller\n"
+        "that would have to pull): its values are the model's, but the model may not hold there.\n"
         "Exit 3 when the engine fails (NaN, sliding, ...) or a metric could not be measured (the output is printed).");
     return {cmd, [o](std::ostream& out) {
                 const WallKind kind = parse_wall_kind(o->model.model);
@@ -156,6 +158,7 @@ Command add_compare_command(CLI::App& root) {
                         {"settings", {{"dt", settings.dt}, {"iterations", settings.iterations}, {"knobs", knobs}}},
                         {"wall_time_s", seconds},
                         {"failures", c.failures},
+                        {"analytic_warnings", c.analytic_warnings},
                         {"wall", wall_inputs_json(o->wall, kind)}};
                     out << j.dump(2) << '\n';
                     throw_if_incomplete(c);
@@ -181,6 +184,7 @@ Command add_compare_command(CLI::App& root) {
                                   c.restitution.engine / whole - 1.0));
                 t.add("wall time", fmt::format("{:.1f}", seconds), "s");
                 for (const std::string& f : c.failures) t.text("not measured", f);
+                for (const std::string& w : c.analytic_warnings) t.text("analytic model warns", w);
                 t.print(out);
                 throw_if_incomplete(c);
             }};

@@ -7,20 +7,15 @@
 #include <vector>
 
 #include "analytic/simulate.hpp"
+#include "analytic/validity.hpp"
 #include "apps/json.hpp"
 #include "apps/table.hpp"
 #include "apps/wall_options.hpp"
 
 namespace vssw::cli {
 
-// A friction coefficient needed above this is flagged: 0.6 is a common design value for masonry bed joints (0.6-0.8
-// are usual; dry or wet joints can be lower), so a run that needs more may slide where the model only rocks.
-constexpr double kMasonryFriction = 0.6;
-// The paper's kinematics are flagged once Eq. (3) moves the top this fraction of the thickness off the roller.
-constexpr double kEq3DriftFraction = 0.01;
-
-std::vector<std::string> validity_warnings(const WallOptions& wall, const ChosenModel& chosen,
-                                           const SimulationResult& result);
+// analytic/validity.hpp's warnings for the model chosen on the command line.
+std::vector<std::string> validity_warnings(const ChosenModel& chosen, const SimulationResult& result);
 // {law, restitution}: the impact law and the ratio it gives.
 Json impact_json(const ChosenModel& chosen);
 // roller {model, min_reaction, t_min_reaction, tension_at}, friction_needed {base, hinge}, contacts_pull

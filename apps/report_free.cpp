@@ -49,7 +49,7 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     });
     // free_vibration() runs until the wall stops or overturns (its end time is far beyond either); a run that did
     // neither has failed, whatever the integrator says.
-    std::vector<std::string> warnings = validity_warnings(wall, chosen, result);
+    std::vector<std::string> warnings = validity_warnings(chosen, result);
     if (!result.overturned && result.rest_times.empty())
         throw SimulationFailure(
             fmt::format("free vibration from --theta0 {} neither came to rest nor overturned "

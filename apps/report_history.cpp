@@ -32,7 +32,7 @@ void simulate_history(HistoryRun& run) {
     const GroundMotion none = GroundMotion::none();
     run.result = run_simulation(
         [&] { return simulate(*run.chosen.model, run.input.motion, none, InitialState{}, run.options); });
-    run.warnings = validity_warnings(run.wall, run.chosen, run.result);
+    run.warnings = validity_warnings(run.chosen, run.result);
 }
 
 Json to_json(const HistoryRun& run) {

@@ -84,6 +84,10 @@ Json results_json(const ReportInput& in) {
     for (const compare::CaseFailure& f : res.failures)
         failures.push_back({{"case_id", f.case_id}, {"engine", f.engine}, {"message", f.message}});
 
+    Json model_warnings = Json::array();
+    for (const compare::ModelWarning& w : res.model_warnings)
+        model_warnings.push_back({{"case_id", w.case_id}, {"message", w.message}});
+
     Json summary = Json::array();
     for (const EngineSummary& s : summarize(in)) {
         Json max_error = Json::object();
@@ -123,6 +127,7 @@ Json results_json(const ReportInput& in) {
             {"targets", targets},
             {"rows", rows},
             {"failures", failures},
+            {"model_warnings", model_warnings},
             {"summary", summary},
             {"findings", findings(in)},
             {"step_study", steps},

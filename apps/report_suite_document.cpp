@@ -130,6 +130,19 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
         b.push_back(paragraph("A failed case has no metrics for that engine; the rest of the report is unaffected."));
     }
 
+    b.push_back(heading(2, "Where the analytic model warns"));
+    if (res.model_warnings.empty()) {
+        b.push_back(paragraph("Nowhere: along every analytic run the roller pushed, no contact pulled, the friction "
+                              "needed stayed within that of masonry joints, and Eq. (3) was not used past its "
+                              "validity."));
+    } else {
+        DocBlock t = table({"case", "warning"}, 2);
+        for (const compare::ModelWarning& w : res.model_warnings) t.rows.push_back({{w.case_id}, {w.message, true}});
+        b.push_back(t);
+        b.push_back(paragraph("The analytic values of these cases are the model's own, but one of its assumptions "
+                              "fails along the run: an engine that differs there may be right."));
+    }
+
     b.push_back(heading(2, "Metrics"));
     for (const MetricTable& mt : metric_tables(in)) {
         b.push_back(heading(3, fmt::format("{}{}{}", metric_title(mt.metric),

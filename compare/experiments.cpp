@@ -225,6 +225,7 @@ EngineComparison compare_with_analytic(const Engine& engine, const EngineSetting
             c.failures.push_back(fmt::format("restitution from peaks: the {} has no peak either side of its first "
                                              "impact, or a ratio outside (0, 1]", who));
     }
+    c.analytic_warnings = a.trajectory.warnings;
     c.analytic_impacts = static_cast<int>(a.impacts.size());
     c.engine_impacts = static_cast<int>(e.impacts.size());
 

@@ -130,6 +130,9 @@ struct EngineComparison {
     // Why a metric above is NaN on either side, one line each (empty when all were measured): a comparison with any
     // is not a complete result (vssw compare exits 3).
     std::vector<std::string> failures;
+    // The analytic model's own assumptions failing along its free vibration (analytic/validity.hpp): its numbers
+    // above are the model's, but the model may not hold there (e.g. a roller that would have to pull).
+    std::vector<std::string> analytic_warnings;
 };
 
 // The analytic side of a comparison with an engine run at `settings`: AnalyticEngine's defaults (exact kinematics,

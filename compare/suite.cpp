@@ -156,6 +156,7 @@ struct TaskOutput {
     std::vector<MetricRow> rows;
     std::vector<Trace> traces;
     std::optional<std::string> failure;
+    std::vector<std::string> model_warnings;  // the reference task's analytic run only (no repeats per engine)
 };
 
 MetricRow make_row(const std::string& case_id, const std::string& engine, const char* metric, double analytic,
@@ -265,6 +266,7 @@ void free_task(const TaskContext& x, TaskOutput& out) {
         const AnalyticEngine analytic;
         const FreeVibrationResult a = run_free_vibration(analytic, analytic.default_settings(), x.wall.scene, options);
         free_rows(x, a, a, out);
+        out.model_warnings = a.trajectory.warnings;
         if (x.keep_traces && x.c.kind == CaseKind::free)
             out.traces.push_back(make_trace(x.c.id, x.engine.name(), a.trajectory, alpha, kFreeTraceSeconds));
         return;
@@ -322,6 +324,7 @@ void history_task(const TaskContext& x, TaskOutput& out) {
     if (x.reference) {
         const multibody::Trajectory a = analytic.simulate(x.wall.scene, ex, analytic.default_settings());
         history_rows(x, a, a, out);
+        out.model_warnings = a.warnings;
         whole_mechanism_peak_row(x, ex, analytic.default_settings(), a, out);
         if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, alpha, all));
         return;
@@ -645,6 +648,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
         TaskOutput& o = outputs[ti];
         const std::string& case_id = suite.cases[tasks[ti].case_index].id;
         if (o.failure) results.failures.push_back({case_id, engines[tasks[ti].engine_index]->name(), *o.failure});
+        for (std::string& w : o.model_warnings) results.model_warnings.push_back({case_id, std::move(w)});
         for (MetricRow& r : o.rows) results.rows.push_back(std::move(r));
         for (Trace& t : o.traces) results.traces.push_back(std::move(t));
     }

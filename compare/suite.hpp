@@ -114,6 +114,13 @@ struct CaseFailure {
     std::string message;
 };
 
+// The analytic model's own assumptions failing along a case's run (analytic/validity.hpp): its values stand, but
+// the model may not hold there.
+struct ModelWarning {
+    std::string case_id;
+    std::string message;
+};
+
 // A time history for the overlay plots: theta1 / alpha against t, decimated for plotting.
 struct Trace {
     std::string case_id;
@@ -131,6 +138,7 @@ struct SuiteResults {
     std::vector<EngineRunInfo> engines;  // in the order asked, "analytic" first
     std::vector<MetricRow> rows;
     std::vector<CaseFailure> failures;
+    std::vector<ModelWarning> model_warnings;  // from the analytic model's own runs (free vibrations, histories)
     std::vector<Trace> traces;
     double wall_time_s = 0.0;
     int threads = 1;

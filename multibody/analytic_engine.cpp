@@ -11,6 +11,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
+#include "analytic/validity.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -91,6 +92,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     Trajectory out;
     out.overturned = r.overturned;
     out.at_rest_at_end = r.at_rest_at_end;
+    out.warnings = validity_warnings(*model, scene.vssw ? std::optional(knobs.kinematics) : std::nullopt, r);
     out.steps = r.steps;
     out.samples.reserve(r.samples.size());
     const double top_at_rest = model->load_height(0.0);

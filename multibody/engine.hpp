@@ -65,6 +65,9 @@ struct Trajectory {
     bool overturned = false;
     bool at_rest_at_end = false;
     long steps = 0;          // engine steps (or integrator steps) taken
+    // The backend's own assumptions failing along the run, in words (the analytic model's validity warnings:
+    // analytic/validity.hpp); empty for the engines, whose physics is their own.
+    std::vector<std::string> warnings;
 };
 
 // A run the engine could not finish honestly: NaN, blow-up, penetration past a bound, sliding. The message names the

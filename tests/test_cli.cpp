@@ -657,3 +657,73 @@ TEST(CliHardening, CompareWithAnUnmeasuredMetricExitsThreeWithTheReason) {
     EXPECT_TRUE(j["period"]["analytic"].is_null());
     EXPECT_FALSE(j["failures"].empty());
 }
+
+// The analytic model's own assumptions, as a user meets them (issue: no silent wrong answers).
+namespace {
+
+// Table 1 #7 at xi 0.5: released from 0.8 alpha1 its exact kinematics need the roller to pull (README).
+const std::vector<std::string> kT1n7Heavy = {"--height", "4.88", "--thickness", "0.2", "--hinge", "0.5", "--xi",
+                                             "0.5"};
+
+}  // namespace
+
+TEST(CliAssumptions, FreeReportsTheRollerAndFrictionAndWarnsWhereTheRollerPulls) {
+    const Json pushes = run_json(std::vector<std::string>{"free", "--theta0", "0.5", "--kinematics", "exact"} + kFig6);
+    ASSERT_TRUE(pushes["roller"].is_object());
+    EXPECT_GT(pushes["roller"]["min_reaction"].get<double>(), 0.0);
+    EXPECT_TRUE(pushes["roller"]["tension_at"].is_null());
+    EXPECT_GT(pushes["friction_needed"]["base"].get<double>(), 0.0);
+    EXPECT_TRUE(pushes["contacts_pull"]["base_at"].is_null());
+    EXPECT_TRUE(pushes["warnings"].empty());
+    EXPECT_EQ(pushes["impact"]["law"], "eq19");
+
+    const Json pulls =
+        run_json(std::vector<std::string>{"free", "--theta0", "0.8", "--kinematics", "exact"} + kT1n7Heavy);
+    EXPECT_LT(pulls["roller"]["min_reaction"].get<double>(), 0.0);
+    EXPECT_EQ(pulls["roller"]["tension_at"].get<double>(), 0.0);
+    ASSERT_EQ(pulls["warnings"].size(), 1u);
+    EXPECT_NE(pulls["warnings"][0].get<std::string>().find("roller would have to pull"), std::string::npos);
+
+    // A parapet has no roller: null, not zero.
+    const Json parapet = run_json({"free", "--model", "parapet", "--height", "4", "--thickness", "0.4", "--theta0",
+                                   "0.5"});
+    EXPECT_TRUE(parapet["roller"].is_null());
+}
+
+TEST(CliAssumptions, ImpactLawIsAChoiceOnFreeAndHistory) {
+    const Json whole = run_json(std::vector<std::string>{"free", "--theta0", "0.5", "--impact", "whole-mechanism"} +
+                                kFig6);
+    const double e = vssw::restitution_whole_mechanism(vssw::make_vssw(4.0, 0.4, 0.7));
+    EXPECT_EQ(whole["impact"]["restitution"].get<double>(), e);
+    const Json& first = whole["impacts"][0];
+    EXPECT_NEAR(first["theta_dot_after"].get<double>() / first["theta_dot_before"].get<double>(), e, kRoundoff);
+    const Json h = run_json(std::vector<std::string>{"history", "--pulse", "sine", "--amplitude", "0.5",
+                                                     "--pulse-period", "0.5", "--impact", "0.5"} +
+                            kFig6);
+    EXPECT_EQ(h["impact"]["restitution"].get<double>(), 0.5);
+    const CliResult bad = run_cli(std::vector<std::string>{"free", "--theta0", "0.5", "--impact", "1.5"} + kFig6);
+    EXPECT_EQ(bad.code, vssw::cli::kExitBadInput);
+    EXPECT_NE(bad.err.find("1.5"), std::string::npos);
+}
+
+// The issue's first case: h1/h 0.95 under Rinaldi x 0.25 with the paper's kinematics said "overturns no" with an
+// energy error of 0.997. It overturns (the paper's kinematics lock), says so, and warns that Eq. (3) was used past
+// its validity; its largest rotation is the collapse angle, reported as such.
+TEST(CliAssumptions, HistoryOfAHighHingeOverturnsAndWarns) {
+    const Json j = run_json({"history", "--record", kRinaldi, "--scale", "0.25", "--height", "3", "--thickness",
+                             "0.143", "--hinge", "0.95"});
+    EXPECT_TRUE(j["overturned"].get<bool>());
+    EXPECT_TRUE(j["peak_is_collapse"].get<bool>());
+    EXPECT_LT(j["energy_balance_error"].get<double>(), kEnergyBalanceBound);
+    bool eq3 = false;
+    for (const Json& w : j["warnings"]) eq3 = eq3 || w.get<std::string>().find("Eq. (3)") != std::string::npos;
+    EXPECT_TRUE(eq3) << j["warnings"].dump();
+}
+
+TEST(CliAssumptions, CompareCarriesTheAnalyticModelsWarnings) {
+    const Json j = run_json(std::vector<std::string>{"compare", "--engine", "analytic", "--theta0", "0.8"} +
+                            kT1n7Heavy);
+    ASSERT_TRUE(j["analytic_warnings"].is_array());
+    ASSERT_FALSE(j["analytic_warnings"].empty());
+    EXPECT_NE(j["analytic_warnings"][0].get<std::string>().find("roller"), std::string::npos);
+}

@@ -463,6 +463,10 @@ TEST(ReportCommand, OdeOnTwoParapetCasesEndToEnd) {
     EXPECT_EQ(j["engines"][0]["name"], "analytic");
     EXPECT_EQ(j["engines"][1]["name"], "ode");
     EXPECT_TRUE(j["failures"].empty()) << j["failures"];
+    // The Fig. 6 parapet has no roller and rocks without sliding: the analytic model warns nowhere.
+    ASSERT_TRUE(j["model_warnings"].is_array());
+    EXPECT_TRUE(j["model_warnings"].empty()) << j["model_warnings"];
+    EXPECT_TRUE(contains(read(out / "report.md"), "Where the analytic model warns"));
     if (gnuplot_available()) {
         EXPECT_TRUE(fs::exists(out / "plots" / "trace_fig6-pw_r0.5.svg"));
         EXPECT_TRUE(contains(read(out / "report.html"), "<svg"));

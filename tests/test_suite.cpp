@@ -455,3 +455,19 @@ TEST(RunSuite, EngineRowsOnCheapCases) {
 
 }  // namespace
 }  // namespace vssw::compare
+
+namespace vssw::compare {
+namespace {
+
+// The analytic model's warnings reach the suite's results once per case (from its own run, not once per engine):
+// from 0.8 alpha1 at xi 0.5 the roller must pull (Table 1 #7); from 0.5 alpha1 it pushes throughout.
+TEST(RunSuite, TheAnalyticModelsWarningsAreCarriedOncePerCase) {
+    const Suite full = make_suite("full", VSSW_DATA_DIR);
+    const SuiteResults r = run_suite(select_cases(full, {"t1-07-xi0.5/r0.8", "t1-07-xi0.5/r0.5"}), {"analytic"});
+    ASSERT_EQ(r.model_warnings.size(), 1u);
+    EXPECT_EQ(r.model_warnings[0].case_id, "t1-07-xi0.5/r0.8");
+    EXPECT_NE(r.model_warnings[0].message.find("roller would have to pull"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vssw::compare
