@@ -69,7 +69,9 @@ void print_wall(std::ostream& out, const WallFigures& f) {
         .add("roller limit theta1,lim", num_or(f.theta_lim, "none"), f.theta_lim ? "rad" : "",
              f.theta_lim ? "Eq. (26)" : "Eq. (26) needs the hinge above mid-height")
         .add("collapse angle (paper model)", num(f.collapse_angle), "rad",
-             f.theta_lim ? "just below Eq. (26)" : "pi/2: the lower body lies on its face")
+             f.collapse_angle < (1.0 - 1e-5) * f.theta_lim.value_or(1.5707963267948966)
+                 ? "where Eq. (3) locks (cos A2 = 0), before Eq. (26)"  // margin: kRollerLimitMargin is 1e-6
+                 : (f.theta_lim ? "just below Eq. (26)" : "pi/2: the lower body lies on its face"))
         .add("reference velocity", num(f.reference_velocity), "rad/s", "Eq. (24)")
         .add("optimal hinge ratio h1/h", num(f.optimal_hinge_ratio), "", "Eq. (15) at this xi")
         .add("threshold VSSW / parapet", num(f.threshold_ratio_vssw_over_parapet), "", "Eq. (12) / Eq. (17)")
