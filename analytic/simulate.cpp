@@ -171,7 +171,7 @@ private:
 
     // Records the supports' forces at (t, y) on the current side (a VSSW only).
     void record_supports(double t, const State& y, double theta_ddot) {
-        if (!supports_.active()) return;
+        if (!supports_.active() || !opt_.monitor_supports) return;
         last_roller_ = supports_.record(t, side_, y[0], y[1], theta_ddot, ah_(t), av_(t), out_.supports);
     }
     // The roller's reaction at time tau inside an accepted step (its continuous extension built).
@@ -397,7 +397,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
         h_ = h_next;
         starts_at_zero = false;
         record_supports(t, y, dy[1]);
-        if (supports_.active() && first_tension && roller_before >= 0.0 && last_roller_ < 0.0) {
+        if (supports_.active() && opt_.monitor_supports && first_tension && roller_before >= 0.0 && last_roller_ < 0.0) {
             // The roller turned tensile inside the step: place the moment on the continuous extension.
             if (!step.dense_ready) integrator_.make_dense(step);
             double lo = step.t0, hi = std::min(t, step.t0 + step.h);

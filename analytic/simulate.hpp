@@ -38,6 +38,9 @@ struct SimulationOptions {
     // naming the time and the error. 1e-6 of the largest energy in play is 100 to 10,000 times what the integrator
     // leaves at its default tolerance (1e-10 to 1e-8), so only a broken run or a very loose --rtol meets it.
     double energy_ceiling = 1e-6;
+    // Compute the supports' forces along a VSSW run (SupportDemand below): what tells whether the roller would have
+    // to pull or a contact slide. Off only where the motion alone is wanted and its cost matters.
+    bool monitor_supports = true;
 };
 
 struct InitialState {

@@ -11,11 +11,15 @@
 namespace vssw {
 namespace {
 
+// A turn by t, its cosine and sine computed once: the reactions evaluate a dozen points at the same two angles at
+// every step of a run, and the sines and cosines were most of their cost.
+struct Turn {
+    double c, s;
+    explicit Turn(double t) : c(std::cos(t)), s(std::sin(t)) {}
+};
 // Rot(t) turns a rest offset clockwise by t (the sense of positive theta1 and theta2).
-Vec2 rot(double t, const Vec2& r) {
-    const double c = std::cos(t), s = std::sin(t);
-    return {r.x() * c + r.y() * s, -r.x() * s + r.y() * c};
-}
+Vec2 rot(const Turn& t, const Vec2& r) { return {r.x() * t.c + r.y() * t.s, -r.x() * t.s + r.y() * t.c}; }
+Vec2 rot(double t, const Vec2& r) { return rot(Turn(t), r); }
 // d/dt Rot(t) r = Rot(t) perp(r): the derivative of a clockwise rotation.
 Vec2 perp(const Vec2& r) { return {r.y(), -r.x()}; }
 
@@ -215,13 +219,25 @@ TwoBlockReactions TwoBlockWall::reactions(const Vec2& q, const Vec2& qdot, const
     require_finite(qddot, "theta1''", "theta2''");
     require_finite(a_h, "a_h");
     require_finite(a_v, "a_v");
-    auto acceleration = [&](WallPoint p) { return Vec2(jacobian(p, q) * qddot + point_bias(p, q, qdot)); };
+    require_finite(q, "theta1", "theta2");
+    require_finite(qdot, "theta1'", "theta2'");
+    const Turn t1(q(0)), t2(q(1));
+    auto position_of = [&](WallPoint p) {
+        const Offsets o = offsets(p);
+        return Vec2(rot(t1, o.lower) + rot(t2, o.upper));
+    };
+    // p'' = J q'' + dJ/dt q' with J's columns Rot perp(offset) and the centripetal -t'^2 Rot(offset) (see jacobian()).
+    auto acceleration = [&](WallPoint p) {
+        const Offsets o = offsets(p);
+        return Vec2(qddot(0) * rot(t1, perp(o.lower)) + qddot(1) * rot(t2, perp(o.upper)) -
+                    sq(qdot(0)) * rot(t1, o.lower) - sq(qdot(1)) * rot(t2, o.upper));
+    };
     const double g_eff = w_.g + a_v;
     const Vec2 F1(-w_.m1 * a_h, -w_.m1 * g_eff), F2(-w_.m2 * a_h, -w_.m2 * g_eff), FN(0.0, -w_.N);
-    const Vec2 G1 = position(WallPoint::lower_centroid, q), G2 = position(WallPoint::upper_centroid, q);
+    const Vec2 G1 = position_of(WallPoint::lower_centroid), G2 = position_of(WallPoint::upper_centroid);
     const GuideLine l = guide_line(guide);
-    const Vec2 H = position(WallPoint::hinge, q), C = position(l.corner, q);
-    const Vec2 T = position(WallPoint::top_centre, q);
+    const Vec2 H = position_of(WallPoint::hinge), C = position_of(l.corner);
+    const Vec2 T = position_of(WallPoint::top_centre);
     const Vec2 push = l.normal;  // the guide's direction on its corner
 
     // Upper block, unknowns (H_x, H_y, lambda): m2 a_G2 = H + lambda push + F2 + FN; I2 theta2'' = moments about G2.
@@ -244,8 +260,8 @@ TwoBlockReactions TwoBlockWall::reactions(const Vec2& q, const Vec2& qdot, const
 
     r.base_normal = r.base.y();
     r.base_tangential = r.base.x();
-    r.hinge_normal = r.hinge.dot(rot(q(0), Vec2(0.0, 1.0)));
-    r.hinge_tangential = r.hinge.dot(rot(q(0), Vec2(1.0, 0.0)));
+    r.hinge_normal = r.hinge.dot(rot(t1, Vec2(0.0, 1.0)));
+    r.hinge_tangential = r.hinge.dot(rot(t1, Vec2(1.0, 0.0)));
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
     r.base_friction = r.base_normal > 0.0 ? std::abs(r.base_tangential) / r.base_normal : kInfinity;
     r.hinge_friction = r.hinge_normal > 0.0 ? std::abs(r.hinge_tangential) / r.hinge_normal : kInfinity;

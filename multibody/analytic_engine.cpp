@@ -78,6 +78,8 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     options.stop_at_rest = excitation.stop_at_rest;
     options.output_dt = output_dt;
     options.step.rtol = knobs.rtol;
+    // A threshold trial (a stop angle) needs only whether the wall lifted: the supports' forces are not computed.
+    options.monitor_supports = !(excitation.stop_angle > 0.0);
 
     // The integrator's sign convention is engine.hpp's: a positive a_h tips the wall towards theta1 < 0.
     SimulationResult r;
