@@ -78,6 +78,7 @@ public:
     }
     std::string name() const override { return "vssw/paper"; }
     UpperRotation upper_rotation(double q) const override { return {-w_.k * q, -w_.k, 0.0}; }  // Eq. (3)
+    std::optional<Kinematics> kinematics() const override { return Kinematics::paper; }
 };
 
 // Exact kinematics: psi = alpha2 + theta2 from Eq. (2), sin(psi) = s sin(alpha1 - q). G1 = R1(-sin a, cos a) with
@@ -128,6 +129,7 @@ public:
         return top_centre_height(g.ca, s2, c2);
     }
     std::string name() const override { return "vssw/exact"; }
+    std::optional<Kinematics> kinematics() const override { return Kinematics::exact; }
     UpperRotation upper_rotation(double q) const override {  // Eq. (2): theta2 = psi - alpha2
         const Angles g = angles(q);
         return {std::atan2(g.spsi, g.cpsi) - w_.alpha2, g.dpsi, g.ddpsi};
@@ -233,6 +235,7 @@ public:
     double overburden() const override { return model_->overburden(); }
     const VsswGeometry* vssw_geometry() const override { return model_->vssw_geometry(); }
     UpperRotation upper_rotation(double q) const override { return model_->upper_rotation(q); }
+    std::optional<Kinematics> kinematics() const override { return model_->kinematics(); }
     std::string name() const override { return model_->name() + fmt::format(", impact ratio {:.6g}", e_); }
 
 private:

@@ -10,6 +10,7 @@
 // Three models: the paper's VSSW (Eq. 11 as printed, Eq. 3 inside), the exact VSSW (Eq. 2 in a Lagrangian), and the
 // parapet wall (Housner's block, with N at the top centre).
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "wall.hpp"
@@ -58,6 +59,7 @@ public:
         double theta2 = 0.0, d1 = 0.0, d2 = 0.0;
     };
     virtual const VsswGeometry* vssw_geometry() const { return nullptr; }
+    virtual std::optional<Kinematics> kinematics() const { return std::nullopt; }  // none for a parapet
     virtual UpperRotation upper_rotation(double /*q*/) const { return {}; }
 
     // theta1'' while the wall rocks on side `side` (+1: theta1 >= 0, -1: theta1 <= 0), from terms() with the mirror

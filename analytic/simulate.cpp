@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "bracket.hpp"
 #include "error.hpp"
+#include "off_roller.hpp"
 #include "support_monitor.hpp"
 
 namespace vssw {
@@ -27,47 +31,9 @@ constexpr double kRestScanFraction = 1e-3;
 constexpr double kMaxEndTime = 1e7;      // [s]
 constexpr double kMaxOutputSamples = 1e8;
 constexpr int kMaxNewtonIterations = 8;
-constexpr int kMaxBisections = 400;  // bound on root-search iterations; reached only by a broken bracket
 constexpr long kMaxSteps = 50'000'000;  // a run needing more is reported as a failure, not left to spin
 
 enum class Event { none, impact, collapse };
-
-// Shrinks a bracket [lo, hi] of a sign change of f (f(lo) on one side, f(hi) on the other or zero) to width tol by
-// Illinois false position, bisecting whenever two steps have not halved it: superlinear on the smooth functions met
-// here, never slower than bisection. hi keeps the side of f(hi).
-template <class F>
-void shrink_bracket(F f, double& lo, double& hi, double tol) {
-    double flo = f(lo), fhi = f(hi);
-    int retained = 0;      // which end the last two steps kept: -1 lo, +1 hi (Illinois halves its value)
-    int slow_steps = 0;    // steps since the bracket last halved
-    double mark = hi - lo;
-    for (int i = 0; i < kMaxBisections && hi - lo > tol; ++i) {
-        double x = 0.5 * (lo + hi);
-        if (slow_steps < 2 && fhi != flo) {
-            const double secant = (lo * fhi - hi * flo) / (fhi - flo);
-            if (secant > lo && secant < hi) x = secant;
-        }
-        const double fx = f(x);
-        if (fx != 0.0 && (fx > 0.0) == (flo > 0.0)) {
-            lo = x;
-            flo = fx;
-            if (retained == 1) fhi *= 0.5;
-            retained = 1;
-        } else {
-            hi = x;
-            fhi = fx;
-            if (retained == -1) flo *= 0.5;
-            retained = -1;
-        }
-        if (hi - lo <= 0.5 * mark) {
-            mark = hi - lo;
-            slow_steps = 0;
-        } else {
-            ++slow_steps;
-        }
-        if (fx == 0.0) break;
-    }
-}
 
 class Simulator {
 public:
@@ -171,7 +137,7 @@ private:
 
     // Records the supports' forces at (t, y) on the current side (a VSSW only).
     void record_supports(double t, const State& y, double theta_ddot) {
-        if (!supports_.active() || !opt_.monitor_supports) return;
+        if (!supports_.active() || !(opt_.monitor_supports || opt_.roller == Roller::unilateral)) return;
         last_roller_ = supports_.record(t, side_, y[0], y[1], theta_ddot, ah_(t), av_(t), out_.supports);
     }
     // The roller's reaction at time tau inside an accepted step (its continuous extension built).
@@ -181,6 +147,10 @@ private:
         const double acc = rocking_rates(model_.terms(side_ * s[0]), side_, s[1], a_h, a_v, g_, N_).acceleration;
         return supports_.reactions(side_, s[0], s[1], acc, a_h, a_v).roller;
     }
+    bool unilateral() const { return opt_.roller == Roller::unilateral && supports_.active(); }
+    // The top leaves the roller at (t, y): flies off it (off_roller.hpp) until it lands back (nothing returned: the
+    // one-DOF motion goes on from the updated t, y), or a base impact, overturning or the end ends the flight.
+    std::optional<Event> leave_roller(double& t, State& y);
     bool rest_phase(double& t, State& y);
     Event rocking_phase(double& t, State& y);
     void polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const;
@@ -206,6 +176,56 @@ private:
     double h_ = 1e-3;
     SimulationResult out_;
 };
+
+std::optional<Event> Simulator::leave_roller(double& t, State& y) {
+    const TwoBlockWall& blocks = supports_.wall(side_);
+    OffRollerSetup setup;
+    setup.horizontal = &ah_;
+    setup.vertical = &av_;
+    setup.step = opt_.step;
+    setup.t_end = opt_.t_end;
+    setup.collapse_angle = collapse_;
+    setup.event_time_tol = opt_.event_time_tol;
+    setup.next_breakpoint = [this](double x) { return next_breakpoint(x); };
+    if (opt_.keep_samples && opt_.output_dt > 0.0)
+        setup.emit = [&](double t0, double t1, const std::function<Vec<5>(double)>& at) {
+            while (next_output_ <= t1 + 1e-12) {
+                if (next_output_ > t0 - 1e-12) {
+                    const Vec<5> z = at(next_output_);
+                    const Vec2 q(z[0], z[1]), qd(z[2], z[3]);
+                    Sample smp{};
+                    smp.t = next_output_;
+                    smp.theta = z[0];
+                    smp.theta_dot = z[2];
+                    smp.kinetic = blocks.kinetic(q, qd);
+                    smp.weight_potential = blocks.weight_potential(q);
+                    smp.work_overburden = blocks.overburden_work(q);
+                    smp.work_ground = z[4];
+                    smp.dissipated = dissipated_;
+                    smp.a_h = ah_(next_output_);
+                    out_.samples.push_back(smp);
+                }
+                ++output_index_;
+                next_output_ = static_cast<double>(output_index_) * opt_.output_dt;
+            }
+        };
+    const OffRollerEnd e =
+        fly_off_roller(*model_.vssw_geometry(), {t, y[0], y[1], y[2], side_}, setup, out_.steps);
+    ++out_.supports.roller_departures;
+    out_.supports.time_off_roller += e.t - t;
+    dissipated_ += e.dissipated;
+    for (const TurningPoint& p : e.peaks) out_.peaks.push_back(p);
+    out_.max_abs_theta = std::max(out_.max_abs_theta, e.max_abs_theta);
+    t = e.t;
+    y = {e.theta1, e.theta1_dot, e.work_ground};
+    switch (e.how) {
+        case OffRollerEnd::How::on_roller: check_balance(t, y); return std::nullopt;
+        case OffRollerEnd::How::base_impact: return Event::impact;
+        case OffRollerEnd::How::collapse: return Event::collapse;
+        case OffRollerEnd::How::end_time: break;
+    }
+    return Event::none;
+}
 
 // Waits at rest from t; returns true with t at the lift-off time and side_ set, or false when the run is over.
 bool Simulator::rest_phase(double& t, State& y) {
@@ -302,6 +322,15 @@ Event Simulator::rocking_phase(double& t, State& y) {
     }
     record_supports(t, y, dy[1]);
     while (t < opt_.t_end) {
+        if (unilateral() && last_roller_ < 0.0) {  // the roller cannot pull: the top leaves it
+            if (const std::optional<Event> ended = leave_roller(t, y)) return *ended;
+            dy = integrator_.rhs(t, y);
+            h_ = std::min(h_, 1e-4);
+            starts_at_zero = false;
+            record_supports(t, y, dy[1]);
+            if (last_roller_ < 0.0) last_roller_ = 0.0;  // landed where it must leave again: it flies on next step
+            continue;
+        }
         if (++out_.steps > kMaxSteps) throw std::runtime_error("integration exceeded the step limit");
         const double stop = std::min(next_breakpoint(t), opt_.t_end);
         double h = std::min(h_, stop - t);
@@ -397,12 +426,17 @@ Event Simulator::rocking_phase(double& t, State& y) {
         h_ = h_next;
         starts_at_zero = false;
         record_supports(t, y, dy[1]);
-        if (supports_.active() && opt_.monitor_supports && first_tension && roller_before >= 0.0 && last_roller_ < 0.0) {
+        if (supports_.active() && (opt_.monitor_supports || unilateral()) && roller_before >= 0.0 && last_roller_ < 0.0 &&
+            (first_tension || (unilateral() && ev == Event::none))) {
             // The roller turned tensile inside the step: place the moment on the continuous extension.
             if (!step.dense_ready) integrator_.make_dense(step);
             double lo = step.t0, hi = std::min(t, step.t0 + step.h);
             shrink_bracket([&](double tau) { return roller_at(step, tau); }, lo, hi, opt_.event_time_tol);
-            out_.supports.roller_tension_at = hi;
+            if (first_tension) out_.supports.roller_tension_at = hi;
+            if (unilateral() && ev == Event::none) {  // the top leaves the roller there, not at the step's end
+                t = hi;
+                y = step.at(hi);
+            }
         }
         // A ground motion may jump at a breakpoint (a cosine pulse's end) and is left-continuous there: the next
         // step's first stage must see the value after the jump.
@@ -417,6 +451,9 @@ Event Simulator::rocking_phase(double& t, State& y) {
 }
 
 SimulationResult Simulator::run(InitialState init) {
+    if (opt_.roller == Roller::unilateral && model_.vssw_geometry() && model_.kinematics() != Kinematics::exact)
+        throw InputError("a unilateral roller needs the exact kinematics: the paper's Eq. (3) does not keep the top "
+                         "corner on the roller's line, so the top can neither leave the roller nor land back on it");
     require(std::isfinite(init.theta), "initial rotation", "finite", init.theta);
     require(std::isfinite(init.theta_dot), "initial angular velocity", "finite", init.theta_dot);
     require(std::abs(init.theta) < collapse_, "|initial rotation| (rad)",
@@ -490,6 +527,14 @@ SimulationResult Simulator::run(InitialState init) {
 }
 
 }  // namespace
+
+Roller parse_roller(const std::string& text) {
+    if (text == "bilateral") return Roller::bilateral;
+    if (text == "unilateral") return Roller::unilateral;
+    throw InputError("roller must be 'bilateral' or 'unilateral', got '" + text + "'");
+}
+
+const char* to_string(Roller roller) { return roller == Roller::bilateral ? "bilateral" : "unilateral"; }
 
 void validate(const SimulationOptions& options) {
     require(std::isfinite(options.t_end) && options.t_end > 0.0 && options.t_end <= kMaxEndTime, "end time (s)",

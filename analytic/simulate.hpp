@@ -24,6 +24,13 @@
 
 namespace vssw {
 
+// The VSSW's top roller: bilateral holds the top corner on its line whatever force that takes (the paper's
+// assumption); unilateral can only push, so where the bilateral reaction would turn tensile the top leaves the line
+// (analytic/off_roller.hpp). Unilateral needs the exact kinematics (Eq. 3 does not keep the corner on the line).
+enum class Roller { bilateral, unilateral };
+Roller parse_roller(const std::string& text);  // "bilateral" | "unilateral", InputError otherwise
+const char* to_string(Roller roller);
+
 struct SimulationOptions {
     double t_end = 60.0;        // [s]
     StepControl step{};         // rtol 1e-10 by default
@@ -41,6 +48,7 @@ struct SimulationOptions {
     // Compute the supports' forces along a VSSW run (SupportDemand below): what tells whether the roller would have
     // to pull or a contact slide. Off only where the motion alone is wanted and its cost matters.
     bool monitor_supports = true;
+    Roller roller = Roller::bilateral;  // a parapet has none: ignored
 };
 
 struct InitialState {
@@ -73,6 +81,9 @@ struct SupportDemand {
     std::optional<double> roller_tension_at;  // first time the bilateral roller would have to pull
     double base_friction = 0.0, hinge_friction = 0.0;  // largest |T|/N while the contact pushes
     std::optional<double> base_pulls_at, hinge_pulls_at;  // first time the contact would have to pull
+    // A unilateral roller: how often the top left it, and for how long in all [s].
+    int roller_departures = 0;
+    double time_off_roller = 0.0;
 };
 
 struct SimulationResult {

@@ -24,7 +24,7 @@ std::vector<std::string> validity_warnings(const RockingModel& model, std::optio
     }
     const SupportDemand& d = result.supports;
     if (!d.computed) return out;
-    if (d.roller_tension_at)
+    if (d.roller_tension_at && d.roller_departures == 0)  // a unilateral roller let the top go: modelled, no warning
         out.push_back(fmt::format(
             "the roller would have to pull (from t = {:.6g} s; least reaction {:.4g} N/m at t = {:.6g} s): the "
             "paper's bilateral roller is an assumption that fails here, and a roller that can only push (as the "

@@ -16,7 +16,7 @@ Json impact_json(const ChosenModel& chosen) {
     return {{"law", to_string(chosen.impact)}, {"restitution", chosen.model->restitution()}};
 }
 
-void add_support_json(Json& j, const SimulationResult& result) {
+void add_support_json(Json& j, const SimulationResult& result, Roller roller) {
     const SupportDemand& d = result.supports;
     if (!d.computed) {
         j["roller"] = nullptr;
@@ -24,10 +24,12 @@ void add_support_json(Json& j, const SimulationResult& result) {
         j["contacts_pull"] = nullptr;
         return;
     }
-    j["roller"] = {{"model", "bilateral"},
+    j["roller"] = {{"model", to_string(roller)},
                    {"min_reaction", finite_or_null(d.min_roller_reaction)},
                    {"t_min_reaction", d.t_min_roller_reaction},
-                   {"tension_at", or_null(d.roller_tension_at)}};
+                   {"tension_at", or_null(d.roller_tension_at)},
+                   {"departures", d.roller_departures},
+                   {"time_off", d.time_off_roller}};
     j["friction_needed"] = {{"base", finite_or_null(d.base_friction)}, {"hinge", finite_or_null(d.hinge_friction)}};
     j["contacts_pull"] = {{"base_at", or_null(d.base_pulls_at)}, {"hinge_at", or_null(d.hinge_pulls_at)}};
 }
@@ -37,6 +39,8 @@ void add_support_rows(Table& table, const SimulationResult& result) {
     if (!d.computed) return;
     table.add("least roller reaction", num(d.min_roller_reaction), "N/m",
               d.roller_tension_at ? fmt::format("pulls from t = {} s", num(*d.roller_tension_at)) : "pushes throughout")
+        .add("top off the roller", fmt::format("{} time{}", d.roller_departures, d.roller_departures == 1 ? "" : "s"),
+             "", d.roller_departures > 0 ? fmt::format("{} s in all (unilateral roller)", num(d.time_off_roller)) : "")
         .add("friction needed, base / hinge", fmt::format("{} / {}", num(d.base_friction), num(d.hinge_friction)), "",
              "largest |T|/N");
 }

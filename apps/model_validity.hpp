@@ -20,7 +20,7 @@ std::vector<std::string> validity_warnings(const ChosenModel& chosen, const Simu
 Json impact_json(const ChosenModel& chosen);
 // roller {model, min_reaction, t_min_reaction, tension_at}, friction_needed {base, hinge}, contacts_pull
 // {base_at, hinge_at}; nulls for a parapet (no roller, not computed).
-void add_support_json(Json& j, const SimulationResult& result);
+void add_support_json(Json& j, const SimulationResult& result, Roller roller);
 // The same as table rows (nothing for a parapet).
 void add_support_rows(Table& table, const SimulationResult& result);
 

@@ -34,6 +34,7 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     SimulationOptions options;
     options.step.rtol = request.rtol;
     options.keep_samples = false;  // the report needs events only
+    options.roller = chosen.roller;
     try {
         validate(options);
     } catch (const InputError& e) {
@@ -58,7 +59,7 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     const ImpactLaw impact = chosen.impact;
     const double restitution = chosen.model->restitution();
     return {wall, chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings), impact,
-            restitution};
+            restitution, chosen.roller};
 }
 
 Json to_json(const FreeRun& run) {
@@ -89,7 +90,7 @@ Json to_json(const FreeRun& run) {
     j["impact_count"] = res.impacts.size();
     j["first_impact_time"] = or_null(run.first_impact());
     j["end_time"] = res.t_final;
-    add_support_json(j, res);
+    add_support_json(j, res, run.roller);
     j["wall"] = wall_inputs_json(run.wall, run.kind);
     return j;
 }

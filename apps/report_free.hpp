@@ -27,6 +27,7 @@ struct FreeRun {
     std::vector<std::string> warnings;  // the model's assumptions failing along the run (apps/model_validity.hpp)
     ImpactLaw impact;
     double restitution = 0.0;           // the impact ratio that law gives
+    Roller roller = Roller::bilateral;
 
     std::optional<double> stop_time() const;     // the last rest time; none if the wall overturned
     std::optional<double> first_impact() const;  // the time to the first impact: a quarter period

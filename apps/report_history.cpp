@@ -25,6 +25,7 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
             options.t_end);
     options.keep_samples = request.keep_trajectory;
     options.stop_at_rest = true;
+    options.roller = chosen.roller;
     return {wall, motion.record, std::move(input), std::move(chosen), options, {}, {}};
 }
 
@@ -60,7 +61,7 @@ Json to_json(const HistoryRun& run) {
     j["output_dt"] = run.options.output_dt;
     j["impact"] = impact_json(run.chosen);
     j["warnings"] = run.warnings;
-    add_support_json(j, res);
+    add_support_json(j, res, run.chosen.roller);
     j["wall"] = wall_inputs_json(run.wall, run.chosen.kind);
     return j;
 }

@@ -50,6 +50,11 @@ void add_assumption_options(CLI::App& cmd, ModelOptions& o) {
                    "impact law: eq19 (the paper's Eq. 19; Housner's e for a parapet), whole-mechanism (the plastic "
                    "impact with every constraint of the new mechanism acting, the roller's too: what the engines do), "
                    "or a restitution e in [0, 1] (default eq19)");
+    cmd.add_option("--roller", o.roller,
+                   "VSSW top roller: bilateral (holds the top corner on its line, pulling if it must: the paper's "
+                   "assumption) or unilateral (can only push: where it would pull the top leaves it and the wall moves "
+                   "with two degrees of freedom, against the other face's guide or free, until it lands back; needs "
+                   "--kinematics exact) (default bilateral; ignored for a parapet)");
 }
 
 VsswGeometry vssw_geometry(const WallOptions& o) {
@@ -65,11 +70,15 @@ ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
     const WallKind kind = parse_wall_kind(options.model);
     const Kinematics kinematics = parse_kinematics(options.kinematics);  // checked even when a parapet ignores it
     const ImpactLaw impact = parse_impact_law(options.impact);
+    const Roller roller = parse_roller(options.roller);
     if (kind == WallKind::parapet)
         return {kind, std::nullopt, with_impact_law(make_parapet_model(parapet_geometry(wall)), impact, nullptr),
-                impact};
+                impact, Roller::bilateral};
     const VsswGeometry w = vssw_geometry(wall);
-    return {kind, kinematics, with_impact_law(make_vssw_model(w, kinematics), impact, &w), impact};
+    if (roller == Roller::unilateral && kinematics != Kinematics::exact)
+        throw InputError("--roller unilateral needs --kinematics exact: the paper's Eq. (3) does not keep the top "
+                         "corner on the roller's line, so the top can neither leave the roller nor land back on it");
+    return {kind, kinematics, with_impact_law(make_vssw_model(w, kinematics), impact, &w), impact, roller};
 }
 
 Json wall_inputs_json(const WallOptions& o, WallKind kind) {

@@ -8,6 +8,7 @@
 
 #include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
+#include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
 #include "apps/json.hpp"
 
@@ -42,6 +43,7 @@ struct ModelOptions {
     std::string model = "vssw";
     std::string kinematics = "paper";
     std::string impact = "eq19";        // the impact law (analytic/model.hpp ImpactLaw)
+    std::string roller = "bilateral";   // bilateral (the paper's) | unilateral (can only push)
 };
 
 // --height, --thickness (required), --hinge, --xi, --density, --g. `model_choice` (the command also takes --model)
@@ -50,7 +52,7 @@ struct ModelOptions {
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
 // --model, --kinematics.
 void add_model_options(CLI::App& cmd, ModelOptions& options);
-// --impact: the analytic model's impact law, an assumption that `free` and `history` let a user change.
+// --impact, --roller: the analytic model's assumptions that `free` and `history` let a user change.
 void add_assumption_options(CLI::App& cmd, ModelOptions& options);
 
 VsswGeometry vssw_geometry(const WallOptions& options);  // InputError when --hinge is missing
@@ -62,6 +64,7 @@ struct ChosenModel {
     std::optional<Kinematics> kinematics;  // none for a parapet (Housner's block has one exact kinematics)
     std::unique_ptr<RockingModel> model;   // with the chosen impact law
     ImpactLaw impact;
+    Roller roller = Roller::bilateral;     // always bilateral for a parapet (it has no roller)
 };
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options);
 

@@ -197,5 +197,39 @@ TEST(LiftOff, CosinePulseAtTheThresholdRuns) {
     }
 }
 
+// A roller that can only push. Where the bilateral one pushes throughout (Fig. 6 from 0.5 alpha1) nothing changes;
+// where it would pull (Table 1 #2 and #14 at xi 0.5 from 0.8 alpha1) the top leaves it, leans on the other face's
+// guide, and the first impact comes later; the energy balance holds through the two-DOF flight and its landings.
+TEST(UnilateralRoller, LeavesOnlyWhereTheRollerWouldPull) {
+    auto run = [](const VsswGeometry& w, double r, Roller roller) {
+        SimulationOptions o;
+        o.keep_samples = false;
+        o.roller = roller;
+        return free_vibration(*make_vssw_model(w, Kinematics::exact), r * w.alpha1, o);
+    };
+    const VsswGeometry fig6 = make_vssw(4.0, 0.4, 0.7);
+    const SimulationResult b = run(fig6, 0.5, Roller::bilateral), u = run(fig6, 0.5, Roller::unilateral);
+    EXPECT_EQ(u.supports.roller_departures, 0);
+    ASSERT_EQ(u.impacts.size(), b.impacts.size());
+    EXPECT_EQ(u.impacts.front().t, b.impacts.front().t);
+
+    for (const VsswGeometry& w : {make_vssw(4.88, 0.356, 0.64, 0.5), make_vssw(3.05, 0.194, 0.63, 0.5)}) {
+        const SimulationResult bi = run(w, 0.8, Roller::bilateral), uni = run(w, 0.8, Roller::unilateral);
+        ASSERT_TRUE(bi.supports.roller_tension_at.has_value());
+        EXPECT_GE(uni.supports.roller_departures, 1);
+        EXPECT_GT(uni.supports.time_off_roller, 0.0);
+        EXPECT_LT(uni.energy_balance_error, kEnergyBalance);
+        ASSERT_FALSE(uni.impacts.empty());
+        EXPECT_GT(uni.impacts.front().t, bi.impacts.front().t);  // leaning back on the far guide delays the impact
+        EXPECT_TRUE(uni.at_rest_at_end);
+    }
+    // The paper's kinematics cannot leave the roller: refused.
+    SimulationOptions o;
+    o.roller = Roller::unilateral;
+    const auto paper = make_vssw_model(fig6, Kinematics::paper);
+    EXPECT_THROW(free_vibration(*paper, 0.5 * fig6.alpha1, o), InputError);
+    EXPECT_THROW(parse_roller("sticky"), InputError);
+}
+
 }  // namespace
 }  // namespace vssw

@@ -727,3 +727,19 @@ TEST(CliAssumptions, CompareCarriesTheAnalyticModelsWarnings) {
     ASSERT_FALSE(j["analytic_warnings"].empty());
     EXPECT_NE(j["analytic_warnings"][0].get<std::string>().find("roller"), std::string::npos);
 }
+
+TEST(CliAssumptions, UnilateralRollerIsAChoiceOfTheExactKinematics) {
+    const std::vector<std::string> t1n2 = {"--height", "4.88", "--thickness", "0.356", "--hinge", "0.64", "--xi",
+                                           "0.5", "--theta0", "0.8", "--kinematics", "exact"};
+    const Json bi = run_json(std::vector<std::string>{"free"} + t1n2);
+    const Json uni = run_json(std::vector<std::string>{"free", "--roller", "unilateral"} + t1n2);
+    EXPECT_EQ(uni["roller"]["model"], "unilateral");
+    EXPECT_GE(uni["roller"]["departures"].get<int>(), 1);
+    EXPECT_EQ(bi["roller"]["departures"].get<int>(), 0);
+    EXPECT_GT(uni["first_impact_time"].get<double>(), bi["first_impact_time"].get<double>());
+    EXPECT_TRUE(uni["warnings"].empty()) << uni["warnings"];  // the top leaving is modelled, not a failed assumption
+    const CliResult paper = run_cli(std::vector<std::string>{"free", "--roller", "unilateral", "--theta0", "0.5"} +
+                                    kFig6);
+    EXPECT_EQ(paper.code, vssw::cli::kExitBadInput);
+    EXPECT_NE(paper.err.find("--kinematics exact"), std::string::npos);
+}
