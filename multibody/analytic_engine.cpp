@@ -20,6 +20,7 @@ constexpr const char* kPaperKinematics = "paper_kinematics";
 constexpr const char* kRtol = "rtol";
 constexpr const char* kRestitution = "restitution";  // when given: this impact ratio in [0, 1] instead of Eq. (19)
 constexpr const char* kWholeMechanism = "whole_mechanism_impact";  // 1: the whole mechanism's plastic impact
+constexpr const char* kUnilateralRoller = "unilateral_roller";  // 1: a roller that can only push (exact kinematics)
 constexpr double kDefaultRtol = 1e-10;
 constexpr double kDefaultOutputDt = 1e-4;  // [s] the engines' default step (EngineSettings::dt)
 
@@ -27,10 +28,12 @@ struct Knobs {
     Kinematics kinematics = Kinematics::exact;
     double rtol = kDefaultRtol;
     ImpactLaw impact;  // Eq. (19) / Housner's unless a setting says otherwise
+    Roller roller = Roller::bilateral;
 };
 
 Knobs read_knobs(const EngineSettings& settings) {
-    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol, kRestitution, kWholeMechanism});
+    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol, kRestitution, kWholeMechanism,
+                                                     kUnilateralRoller});
     Knobs k;
     k.kinematics = r.flag(kPaperKinematics) ? Kinematics::paper : Kinematics::exact;
     k.rtol = r.number(kRtol, kDefaultRtol);  // its range is checked by simulate()
@@ -44,6 +47,7 @@ Knobs read_knobs(const EngineSettings& settings) {
     } else if (r.flag(kWholeMechanism)) {
         k.impact = {ImpactLaw::Kind::whole_mechanism, 0.0};
     }
+    if (r.flag(kUnilateralRoller)) k.roller = Roller::unilateral;  // the simulator refuses it with paper kinematics
     return k;
 }
 
@@ -78,6 +82,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     options.stop_at_rest = excitation.stop_at_rest;
     options.output_dt = output_dt;
     options.step.rtol = knobs.rtol;
+    options.roller = knobs.roller;
     // A threshold trial (a stop angle) needs only whether the wall lifted: the supports' forces are not computed.
     options.monitor_supports = !(excitation.stop_angle > 0.0);
 

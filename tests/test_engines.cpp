@@ -285,3 +285,45 @@ INSTANTIATE_TEST_SUITE_P(Engines, CrossEngine, ::testing::ValuesIn(multibody::av
 
 }  // namespace
 }  // namespace vssw
+
+namespace vssw {
+namespace {
+
+// The README's finding: at xi 0.5 released from 0.8 alpha1 the engines' periods differ from the analytic model's by
+// up to 17 %, because the paper's roller pulls there and theirs cannot. The analytic model with a roller that can
+// only push (setting unilateral_roller) must account for that difference on Table 1 #14 (bilateral: 8 % off): each
+// engine's remaining difference at most a tenth of it. Measured: ODE +0.002 %, Simbody -0.06 %, Bullet +0.59 % (this
+// release is 3.8-10 times as sensitive to everything as others: README). Simbody's rigid route is left out for time.
+constexpr double kUnexplainedFraction = 0.1;
+
+TEST(UnilateralRoller, ExplainsTheEnginesPeriodsWhereThePapersRollerPulls) {
+    using multibody::EngineSettings;
+    using multibody::WallScene;
+    const WallScene scene = WallScene::of(make_vssw(3.05, 0.194, 0.63, 0.5));
+    compare::FreeVibrationOptions options;
+    options.r = 0.8;
+    options.impacts = 1;
+    const multibody::AnalyticEngine analytic;
+    EngineSettings unilateral = analytic.default_settings();
+    unilateral.knobs["unilateral_roller"] = 1.0;
+    const auto reference = compare::run_free_vibration(analytic, unilateral, scene, options);
+    const auto paper_roller = compare::run_free_vibration(analytic, analytic.default_settings(), scene, options);
+    ASSERT_TRUE(reference.period && paper_roller.period);
+    int engines = 0;
+    for (const std::string& name : multibody::available_engines()) {
+        if (name == "analytic" || name == "simbody-rigid") continue;
+        SCOPED_TRACE(name);
+        const auto engine = multibody::make_engine(name);
+        const auto r = compare::run_free_vibration(*engine, engine->default_settings(), scene, options);
+        ASSERT_TRUE(r.period);
+        const double against_bilateral = *r.period / *paper_roller.period - 1.0;
+        const double against_unilateral = *r.period / *reference.period - 1.0;
+        EXPECT_GT(std::abs(against_bilateral), 2.0 * compare::kPeriodTarget);  // the difference to explain is there
+        EXPECT_LT(std::abs(against_unilateral), kUnexplainedFraction * std::abs(against_bilateral));
+        ++engines;
+    }
+    if (engines == 0) GTEST_SKIP() << "no rigid-body engine compiled in";
+}
+
+}  // namespace
+}  // namespace vssw
