@@ -152,6 +152,7 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
             y = step.at(first_time);
         }
         out.max_abs_theta = std::max(out.max_abs_theta, std::abs(y[0]));
+        if (s_.check_energy) s_.check_energy(t, y, out.dissipated);
         switch (first) {
             case Event::none: break;
             case Event::collapse: return finish(OffRollerEnd::How::collapse);

@@ -46,6 +46,8 @@ struct OffRollerSetup {
     // Called for each accepted interval (t0, t1] with the state at any time in it, so the caller can fill its output
     // grid; may be empty.
     std::function<void(double, double, const std::function<Vec<5>(double)>&)> emit;
+    // The energy balance at (t, state) with the flight's landings' dissipation so far; throws past its ceiling.
+    std::function<void(double, const Vec<5>&, double)> check_energy;
 };
 
 // Throws std::runtime_error (a failed run) where the flight leaves the model (see above).

@@ -110,18 +110,25 @@ private:
 
     // Energy balance at time t; throws EnergyBalanceFailure as soon as the error passes the ceiling.
     void check_balance(double t, const State& y) {
-        const double kinetic = model_.kinetic(y[0], y[1]), potential = model_.weight_potential(y[0]);
-        const double work_n = model_.overburden_work(y[0]);
-        const double residual = kinetic + potential - work_n - y[2] + dissipated_ - initial_energy_;
+        if (off_mechanism_) return;  // the run ended off the roller: the flight checked its own (two-DOF) balance
+        check_energies(t, std::abs(y[0]), model_.kinetic(y[0], y[1]), model_.weight_potential(y[0]),
+                       model_.overburden_work(y[0]), y[2], 0.0);
+    }
+    // The balance from its terms [J/m]; `extra_dissipated`: dissipated beyond dissipated_ (a flight's landings so
+    // far). Throws EnergyBalanceFailure as soon as the error passes the ceiling.
+    void check_energies(double t, double abs_theta, double kinetic, double potential, double work_n,
+                        double work_ground, double extra_dissipated) {
+        const double dissipated = dissipated_ + extra_dissipated;
+        const double residual = kinetic + potential - work_n - work_ground + dissipated - initial_energy_;
         energy_scale_ = std::max(energy_scale_, std::abs(kinetic) + std::abs(potential) + std::abs(work_n) +
-                                                    std::abs(y[2]) + dissipated_);
+                                                    std::abs(work_ground) + dissipated);
         max_residual_ = std::max(max_residual_, std::abs(residual));
         out_.energy_balance_error = max_residual_ / energy_scale_;
         if (!(out_.energy_balance_error <= opt_.energy_ceiling))  // NaN fails too
             throw EnergyBalanceFailure(fmt::format(
                 "the energy balance error reached {:.3g} of the largest energy in play at t = {:.6g} s (|theta1| = "
                 "{:.6g} rad), above the ceiling {:.3g}: the run is not a result (a tighter --rtol may help)",
-                out_.energy_balance_error, t, std::abs(y[0]), opt_.energy_ceiling));
+                out_.energy_balance_error, t, abs_theta, opt_.energy_ceiling));
     }
 
     // Samples on the output grid in (t0, t1], from a function giving the state at any time in the interval.
@@ -165,6 +172,7 @@ private:
     Dop853<3, Rhs> integrator_;
     SupportMonitor supports_;
     double last_roller_ = 0.0;  // the roller's reaction at the last recorded state
+    bool off_mechanism_ = false;  // the run ended with the top off the roller (its state is not the one-DOF model's)
 
     int side_ = 1;
     double dissipated_ = 0.0;
@@ -209,6 +217,11 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
                 next_output_ = static_cast<double>(output_index_) * opt_.output_dt;
             }
         };
+    setup.check_energy = [&](double at, const Vec<5>& z, double flight_dissipated) {
+        const Vec2 q(z[0], z[1]), qd(z[2], z[3]);
+        check_energies(at, std::abs(z[0]), blocks.kinetic(q, qd), blocks.weight_potential(q),
+                       blocks.overburden_work(q), z[4], flight_dissipated);
+    };
     const OffRollerEnd e =
         fly_off_roller(*model_.vssw_geometry(), {t, y[0], y[1], y[2], side_}, setup, out_.steps);
     ++out_.supports.roller_departures;
@@ -220,9 +233,9 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
     y = {e.theta1, e.theta1_dot, e.work_ground};
     switch (e.how) {
         case OffRollerEnd::How::on_roller: check_balance(t, y); return std::nullopt;
-        case OffRollerEnd::How::base_impact: return Event::impact;
-        case OffRollerEnd::How::collapse: return Event::collapse;
-        case OffRollerEnd::How::end_time: break;
+        case OffRollerEnd::How::base_impact: return Event::impact;  // on the far guide at theta1 = 0: one-DOF again
+        case OffRollerEnd::How::collapse: off_mechanism_ = true; return Event::collapse;
+        case OffRollerEnd::How::end_time: off_mechanism_ = true; break;
     }
     return Event::none;
 }
