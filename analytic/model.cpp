@@ -275,14 +275,14 @@ std::string to_string(const ImpactLaw& law) {
     return fmt::format("{:.6g}", law.ratio);
 }
 
-std::unique_ptr<RockingModel> with_impact_law(std::unique_ptr<RockingModel> model, const ImpactLaw& law,
-                                              const VsswGeometry* vssw) {
+std::unique_ptr<RockingModel> with_impact_law(std::unique_ptr<RockingModel> model, const ImpactLaw& law) {
     switch (law.kind) {
         case ImpactLaw::Kind::eq19: return model;
         case ImpactLaw::Kind::whole_mechanism:
             // A single block has one mechanism: its plastic impact is Housner's, the model's own.
-            if (!vssw) return model;
-            return with_restitution(std::move(model), restitution_whole_mechanism(*vssw));
+            if (const VsswGeometry* w = model->vssw_geometry())
+                return with_restitution(std::move(model), restitution_whole_mechanism(*w));
+            return model;
         case ImpactLaw::Kind::ratio: break;
     }
     return with_restitution(std::move(model), law.ratio);

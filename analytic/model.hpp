@@ -100,8 +100,7 @@ struct ImpactLaw {
 // "eq19" | "whole-mechanism" | a number in [0, 1]; InputError otherwise, naming the text.
 ImpactLaw parse_impact_law(const std::string& text);
 std::string to_string(const ImpactLaw& law);
-// The model with that impact law (the model itself for eq19). `vssw` is the wall when the model is a VSSW's.
-std::unique_ptr<RockingModel> with_impact_law(std::unique_ptr<RockingModel> model, const ImpactLaw& law,
-                                              const VsswGeometry* vssw);
+// The model with that impact law (the model itself for eq19).
+std::unique_ptr<RockingModel> with_impact_law(std::unique_ptr<RockingModel> model, const ImpactLaw& law);
 
 }  // namespace vssw

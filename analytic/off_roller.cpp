@@ -1,6 +1,7 @@
 #include "off_roller.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -16,7 +17,8 @@ using State = Vec<5>;  // theta1, theta2, theta1', theta2', work of the ground
 enum class Mode { free, far_guide };
 enum class Event { none, roller_landing, far_landing, far_release, base_impact, collapse };
 
-constexpr long kMaxSteps = 50'000'000;  // as the one-DOF phases: a run needing more is a failure
+// The first step of a flight: the motion has just changed mechanism; the controller takes over from there.
+constexpr double kFirstFlightStep = 1e-4;  // [s]
 
 Vec2 q_of(const State& y) { return {y[0], y[1]}; }
 Vec2 qdot_of(const State& y) { return {y[2], y[3]}; }
@@ -86,7 +88,7 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
     State y{q0(0), q0(1), start.theta1_dot, tangent(1) * start.theta1_dot, start.work_ground};
     out.max_abs_theta = std::abs(y[0]);
     State dy = integrator_.rhs(t, y);
-    double h_try = 1e-4;  // [s] the first step; the controller takes over from there
+    double h_try = kFirstFlightStep;
     RkStep<5> step;
     auto finish = [&](OffRollerEnd::How how) {
         out.how = how;
@@ -97,7 +99,8 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
         return out;
     };
     while (t < s_.t_end) {
-        if (++steps > kMaxSteps) throw std::runtime_error("integration exceeded the step limit (top off the roller)");
+        if (++steps > kMaxIntegrationSteps)
+            throw std::runtime_error("integration exceeded the step limit (top off the roller)");
         const double stop = std::min(s_.next_breakpoint(t), s_.t_end);
         const double h = std::min(h_try, stop - t);
         const double err = integrator_.step(t, y, dy, h, step);
@@ -111,17 +114,15 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
         }
         h_try = integrator_.next_step(h, err);
         // The events this step crosses, each placed on the continuous extension; the earliest wins.
-        std::vector<Event> candidates = {Event::base_impact, Event::collapse};
-        if (mode_ == Mode::free) {
-            candidates.push_back(Event::roller_landing);
-            candidates.push_back(Event::far_landing);
-        } else {
-            candidates.push_back(Event::far_release);
-        }
+        // Free flight can land on either guide; on the far guide it can only be released from it.
+        const std::array<Event, 4> candidates =
+            mode_ == Mode::free
+                ? std::array<Event, 4>{Event::base_impact, Event::collapse, Event::roller_landing, Event::far_landing}
+                : std::array<Event, 4>{Event::base_impact, Event::collapse, Event::far_release, Event::none};
         Event first = Event::none;
         double first_time = t + h;
         for (Event ev : candidates) {
-            if (event_value(ev, t + h, step.y1) > 0.0) continue;
+            if (ev == Event::none || event_value(ev, t + h, step.y1) > 0.0) continue;
             if (event_value(ev, t, y) <= 0.0) continue;  // already there at the start: not crossed in this step
             integrator_.make_dense(step);
             double lo = t, hi = t + h;
@@ -184,7 +185,7 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
             case Event::far_release: mode_ = Mode::free; break;
         }
         dy = integrator_.rhs(std::nextafter(t, s_.t_end + 1.0), y);
-        if (first != Event::none) h_try = std::min(h_try, 1e-4);
+        if (first != Event::none) h_try = std::min(h_try, kFirstFlightStep);
     }
     return finish(OffRollerEnd::How::end_time);
 }

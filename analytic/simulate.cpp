@@ -31,7 +31,8 @@ constexpr double kRestScanFraction = 1e-3;
 constexpr double kMaxEndTime = 1e7;      // [s]
 constexpr double kMaxOutputSamples = 1e8;
 constexpr int kMaxNewtonIterations = 8;
-constexpr long kMaxSteps = 50'000'000;  // a run needing more is reported as a failure, not left to spin
+// After the top lands back on the roller the step restarts small: the motion has just changed mechanism.
+constexpr double kFirstStepAfterLanding = 1e-4;  // [s]
 
 enum class Event { none, impact, collapse };
 
@@ -95,17 +96,8 @@ private:
 
     void emit(double t, const State& y) {
         if (!opt_.keep_samples) return;
-        Sample s{};
-        s.t = t;
-        s.theta = y[0];
-        s.theta_dot = y[1];
-        s.kinetic = model_.kinetic(y[0], y[1]);
-        s.weight_potential = model_.weight_potential(y[0]);
-        s.work_overburden = model_.overburden_work(y[0]);
-        s.work_ground = y[2];
-        s.dissipated = dissipated_;
-        s.a_h = ah_(t);
-        out_.samples.push_back(s);
+        out_.samples.push_back({t, y[0], y[1], model_.kinetic(y[0], y[1]), model_.weight_potential(y[0]),
+                                model_.overburden_work(y[0]), y[2], dissipated_, ah_(t)});
     }
 
     // Energy balance at time t; throws EnergyBalanceFailure as soon as the error passes the ceiling.
@@ -134,9 +126,14 @@ private:
     // Samples on the output grid in (t0, t1], from a function giving the state at any time in the interval.
     template <class StateAt>
     void emit_grid(double t0, double t1, StateAt state_at) {
+        for_output_times(t0, t1, [&](double t) { emit(t, state_at(t)); });
+    }
+    // Calls f at each time of the output grid in (t0, t1] (nothing when no trajectory is kept).
+    template <class F>
+    void for_output_times(double t0, double t1, F f) {
         if (!opt_.keep_samples || opt_.output_dt <= 0.0) return;
         while (next_output_ <= t1 + 1e-12) {
-            if (next_output_ > t0 - 1e-12) emit(next_output_, state_at(next_output_));
+            if (next_output_ > t0 - 1e-12) f(next_output_);
             ++output_index_;
             next_output_ = static_cast<double>(output_index_) * opt_.output_dt;
         }
@@ -144,7 +141,7 @@ private:
 
     // Records the supports' forces at (t, y) on the current side (a VSSW only).
     void record_supports(double t, const State& y, double theta_ddot) {
-        if (!supports_.active() || !(opt_.monitor_supports || opt_.roller == Roller::unilateral)) return;
+        if (!monitoring()) return;
         last_roller_ = supports_.record(t, side_, y[0], y[1], theta_ddot, ah_(t), av_(t), out_.supports);
     }
     // The roller's reaction at time tau inside an accepted step (its continuous extension built).
@@ -155,6 +152,8 @@ private:
         return supports_.reactions(side_, s[0], s[1], acc, a_h, a_v).roller;
     }
     bool unilateral() const { return opt_.roller == Roller::unilateral && supports_.active(); }
+    // The supports are followed when asked for, and always under a unilateral roller (its departures need them).
+    bool monitoring() const { return supports_.active() && (opt_.monitor_supports || unilateral()); }
     // The top leaves the roller at (t, y): flies off it (off_roller.hpp) until it lands back (nothing returned: the
     // one-DOF motion goes on from the updated t, y), or a base impact, overturning or the end ends the flight.
     std::optional<Event> leave_roller(double& t, State& y);
@@ -195,28 +194,16 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
     setup.collapse_angle = collapse_;
     setup.event_time_tol = opt_.event_time_tol;
     setup.next_breakpoint = [this](double x) { return next_breakpoint(x); };
+    // Samples of the flight carry its own (two-DOF) energies; none asked for, the flight builds no dense output.
     if (opt_.keep_samples && opt_.output_dt > 0.0)
         setup.emit = [&](double t0, double t1, const std::function<Vec<5>(double)>& at) {
-            while (next_output_ <= t1 + 1e-12) {
-                if (next_output_ > t0 - 1e-12) {
-                    const Vec<5> z = at(next_output_);
-                    const Vec2 q(z[0], z[1]), qd(z[2], z[3]);
-                    Sample smp{};
-                    smp.t = next_output_;
-                    smp.theta = z[0];
-                    smp.theta_dot = z[2];
-                    smp.kinetic = blocks.kinetic(q, qd);
-                    smp.weight_potential = blocks.weight_potential(q);
-                    smp.work_overburden = blocks.overburden_work(q);
-                    smp.work_ground = z[4];
-                    smp.dissipated = dissipated_;
-                    smp.a_h = ah_(next_output_);
-                    out_.samples.push_back(smp);
-                }
-                ++output_index_;
-                next_output_ = static_cast<double>(output_index_) * opt_.output_dt;
-            }
-        };
+        for_output_times(t0, t1, [&](double tau) {
+            const Vec<5> z = at(tau);
+            const Vec2 q(z[0], z[1]), qd(z[2], z[3]);
+            out_.samples.push_back({tau, z[0], z[2], blocks.kinetic(q, qd), blocks.weight_potential(q),
+                                    blocks.overburden_work(q), z[4], dissipated_, ah_(tau)});
+        });
+    };
     setup.check_energy = [&](double at, const Vec<5>& z, double flight_dissipated) {
         const Vec2 q(z[0], z[1]), qd(z[2], z[3]);
         check_energies(at, std::abs(z[0]), blocks.kinetic(q, qd), blocks.weight_potential(q),
@@ -338,13 +325,15 @@ Event Simulator::rocking_phase(double& t, State& y) {
         if (unilateral() && last_roller_ < 0.0) {  // the roller cannot pull: the top leaves it
             if (const std::optional<Event> ended = leave_roller(t, y)) return *ended;
             dy = integrator_.rhs(t, y);
-            h_ = std::min(h_, 1e-4);
+            h_ = std::min(h_, kFirstStepAfterLanding);
             starts_at_zero = false;
             record_supports(t, y, dy[1]);
-            if (last_roller_ < 0.0) last_roller_ = 0.0;  // landed where it must leave again: it flies on next step
+            // Landed where the roller must pull at once: rather than leave again with no time between, the next
+            // one-DOF step is taken and the top leaves at its end (one step on a pulling roller).
+            if (last_roller_ < 0.0) last_roller_ = 0.0;
             continue;
         }
-        if (++out_.steps > kMaxSteps) throw std::runtime_error("integration exceeded the step limit");
+        if (++out_.steps > kMaxIntegrationSteps) throw std::runtime_error("integration exceeded the step limit");
         const double stop = std::min(next_breakpoint(t), opt_.t_end);
         double h = std::min(h_, stop - t);
         const double err = integrator_.step(t, y, dy, h, step);
@@ -412,9 +401,9 @@ Event Simulator::rocking_phase(double& t, State& y) {
                     double a = tau_prev, b = tau;
                     shrink_bracket([&](double x) { return step.at(x)[1]; }, a, b, opt_.event_time_tol);
                     if (b <= event_time) {
-                        const State at_peak = step.at(b);
-                        out_.peaks.push_back({b, at_peak[0]});
-                        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(at_peak[0]));
+                        const double th = step.at(b)[0];
+                        out_.peaks.push_back({b, th});
+                        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(th));
                     }
                 }
                 tau_prev = tau;
@@ -439,7 +428,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
         h_ = h_next;
         starts_at_zero = false;
         record_supports(t, y, dy[1]);
-        if (supports_.active() && (opt_.monitor_supports || unilateral()) && roller_before >= 0.0 && last_roller_ < 0.0 &&
+        if (monitoring() && roller_before >= 0.0 && last_roller_ < 0.0 &&
             (first_tension || (unilateral() && ev == Event::none))) {
             // The roller turned tensile inside the step: place the moment on the continuous extension.
             if (!step.dense_ready) integrator_.make_dense(step);

@@ -104,6 +104,9 @@ struct SimulationResult {
     SupportDemand supports;
 };
 
+// A run needing more integration steps than this is reported as a failure, not left to spin (every phase counts).
+constexpr long kMaxIntegrationSteps = 50'000'000;
+
 // The energy balance failed its ceiling: the trajectory cannot be trusted (a std::runtime_error, like every failed run).
 struct EnergyBalanceFailure : std::runtime_error {
     using std::runtime_error::runtime_error;

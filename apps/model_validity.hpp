@@ -18,8 +18,8 @@ namespace vssw::cli {
 std::vector<std::string> validity_warnings(const ChosenModel& chosen, const SimulationResult& result);
 // {law, restitution}: the impact law and the ratio it gives.
 Json impact_json(const ChosenModel& chosen);
-// roller {model, min_reaction, t_min_reaction, tension_at}, friction_needed {base, hinge}, contacts_pull
-// {base_at, hinge_at}; nulls for a parapet (no roller, not computed).
+// roller {model, min_reaction, t_min_reaction, tension_at, departures, time_off}, friction_needed {base, hinge},
+// contacts_pull {base_at, hinge_at}; nulls for a parapet (no roller, not computed).
 void add_support_json(Json& j, const SimulationResult& result, Roller roller);
 // The same as table rows (nothing for a parapet).
 void add_support_rows(Table& table, const SimulationResult& result);

@@ -127,7 +127,8 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
         DocBlock t = table({"case", "engine", "message"}, 3);
         for (const compare::CaseFailure& f : res.failures) t.rows.push_back({{f.case_id}, {f.engine}, {f.message, true}});
         b.push_back(t);
-        b.push_back(paragraph("A failed case has no metrics for that engine; the rest of the report is unaffected."));
+        b.push_back(paragraph("A failed case has no value for that engine where it failed (a failed run: none at all; "
+                              "an impact ratio outside (0, 1]: no restitution); the rest of the report is unaffected."));
     }
 
     b.push_back(heading(2, "Where the analytic model warns"));

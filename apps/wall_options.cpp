@@ -72,13 +72,13 @@ ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
     const ImpactLaw impact = parse_impact_law(options.impact);
     const Roller roller = parse_roller(options.roller);
     if (kind == WallKind::parapet)
-        return {kind, std::nullopt, with_impact_law(make_parapet_model(parapet_geometry(wall)), impact, nullptr),
+        return {kind, std::nullopt, with_impact_law(make_parapet_model(parapet_geometry(wall)), impact),
                 impact, Roller::bilateral};
     const VsswGeometry w = vssw_geometry(wall);
     if (roller == Roller::unilateral && kinematics != Kinematics::exact)
         throw InputError("--roller unilateral needs --kinematics exact: the paper's Eq. (3) does not keep the top "
                          "corner on the roller's line, so the top can neither leave the roller nor land back on it");
-    return {kind, kinematics, with_impact_law(make_vssw_model(w, kinematics), impact, &w), impact, roller};
+    return {kind, kinematics, with_impact_law(make_vssw_model(w, kinematics), impact), impact, roller};
 }
 
 Json wall_inputs_json(const WallOptions& o, WallKind kind) {

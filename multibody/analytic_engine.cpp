@@ -72,7 +72,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
                                     const EngineSettings& settings) const {
     const Knobs knobs = read_knobs(settings);
     std::unique_ptr<RockingModel> model =
-        with_impact_law(analytic_model(scene, knobs.kinematics), knobs.impact, scene.vssw ? &*scene.vssw : nullptr);
+        with_impact_law(analytic_model(scene, knobs.kinematics), knobs.impact);
     const double output_dt = settings.sample_dt > 0.0 ? settings.sample_dt : settings.dt;
     require(std::isfinite(output_dt) && output_dt > 0.0, "analytic output interval (sample_dt, else dt)",
             "a positive finite time in s", output_dt);

@@ -161,15 +161,15 @@ TEST(ImpactLaw, ParsedAndApplied) {
     for (const char* bad : {"", "1.2", "-0.1", "nan", "0.5x", "eq 19"}) EXPECT_THROW(parse_impact_law(bad), InputError);
     const VsswGeometry w = make_vssw(4.0, 0.4, 0.7);
     auto paper = [&] { return make_vssw_model(w, Kinematics::paper); };
-    EXPECT_EQ(with_impact_law(paper(), parse_impact_law("eq19"), &w)->restitution(), eq19_restitution(w));
-    EXPECT_EQ(with_impact_law(paper(), parse_impact_law("whole-mechanism"), &w)->restitution(),
+    EXPECT_EQ(with_impact_law(paper(), parse_impact_law("eq19"))->restitution(), eq19_restitution(w));
+    EXPECT_EQ(with_impact_law(paper(), parse_impact_law("whole-mechanism"))->restitution(),
               restitution_whole_mechanism(w));
     // A single block has one mechanism: its plastic impact is Housner's whichever law is named.
     const ParapetGeometry p = make_parapet(4.0, 0.4);
-    EXPECT_EQ(with_impact_law(make_parapet_model(p), parse_impact_law("whole-mechanism"), nullptr)->restitution(),
+    EXPECT_EQ(with_impact_law(make_parapet_model(p), parse_impact_law("whole-mechanism"))->restitution(),
               housner_restitution(p.alpha));
     // e = 0: the first impact stops the wall dead.
-    const auto plastic = with_impact_law(paper(), parse_impact_law("0"), &w);
+    const auto plastic = with_impact_law(paper(), parse_impact_law("0"));
     const SimulationResult r = free_vibration(*plastic, 0.5 * w.alpha1);
     ASSERT_EQ(r.impacts.size(), 1u);
     EXPECT_EQ(r.impacts[0].theta_dot_after, 0.0);
