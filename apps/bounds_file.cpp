@@ -9,79 +9,16 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 #include "analytic/error.hpp"
+#include "study/config_file.hpp"
 
 namespace vssw::cli {
 namespace {
 
 using nlohmann::json;
 
-// TOML is read into the JSON value it stands for, so that one validation serves both formats.
-json toml_to_json(const std::string& text, const std::string& name) {
-    // A TOML bounds file must be ASCII. toml++ 3.3 (Debian) has undefined behaviour on some non-ASCII characters
-    // where whitespace may stand (its generated Unicode whitespace test reaches TOML_UNREACHABLE for e.g. U+0237 at
-    // the start of a line; found by tests/fuzz/fuzz_bounds_file.cpp under UBSan). Telling those places from strings
-    // and comments would mean lexing TOML ourselves; everything the schema holds (keys, case ids, metrics, numbers)
-    // is ASCII, so only non-ASCII comments are lost.
-    const auto non_ascii =
-        std::find_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0x80) != 0; });
-    if (non_ascii != text.end()) {
-        const auto line = 1 + std::count(text.begin(), non_ascii, '\n');
-        throw InputError(fmt::format("bounds file {}: line {}: a non-ASCII character (byte 0x{:02X}); TOML "
-                                     "bounds files must be ASCII",
-                                     name, line, static_cast<unsigned char>(*non_ascii)));
-    }
-    toml::table table;
-    try {
-        table = toml::parse(text, name);
-    } catch (const toml::parse_error& e) {
-        const auto& where = e.source().begin;
-        throw InputError(fmt::format("bounds file {}: TOML syntax error at line {}, column {}: {}", name, where.line,
-                                     where.column, e.description()));
-    }
-    std::ostringstream text_json;
-    text_json << toml::json_formatter{table};
-    return json::parse(text_json.str());
-}
-
-// Deepest nesting of arrays and objects a JSON bounds file may have: the schema needs 4 (top table, list of bounds,
-// bound, list of cases); 256 is toml++'s own limit for TOML (TOML_MAX_NESTED_VALUES), so both formats refuse the
-// same. Without a limit, a value nested some 10^5 deep (found by the fuzz harness tests/fuzz/fuzz_bounds_file.cpp)
-// overflowed the stack in nlohmann's recursive dump() when the error message quoted it.
-constexpr int kMaxJsonNesting = 256;
-
-json parse_json(const std::string& text, const std::string& name) {
-    // A key given twice in one object would silently take the last value (TOML refuses it): refuse it too.
-    std::vector<std::set<std::string>> keys;  // per open object
-    std::string duplicate;
-    int depth = 0;
-    bool too_deep = false;
-    const json::parser_callback_t no_duplicates = [&](int, json::parse_event_t event, json& parsed) {
-        if (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start)
-            too_deep |= ++depth > kMaxJsonNesting;
-        if (event == json::parse_event_t::object_end || event == json::parse_event_t::array_end) --depth;
-        if (event == json::parse_event_t::object_start) keys.emplace_back();
-        if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
-        if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
-            duplicate = parsed.get<std::string>();
-        return true;
-    };
-    json doc;
-    try {
-        doc = json::parse(text, no_duplicates);
-    } catch (const json::parse_error& e) {
-        throw InputError(fmt::format("bounds file {}: JSON syntax error: {}", name, e.what()));
-    } catch (const json::exception& e) {  // e.g. a number too large for a double
-        throw InputError(fmt::format("bounds file {}: JSON error: {}", name, e.what()));
-    }
-    if (too_deep)
-        throw InputError(fmt::format("bounds file {}: arrays and objects nested deeper than {} levels", name,
-                                     kMaxJsonNesting));
-    if (!duplicate.empty()) throw InputError(fmt::format("bounds file {}: key '{}' given twice in one table", name, duplicate));
-    return doc;
-}
+constexpr const char* kWhat = "bounds file";  // in messages: "bounds file <path>: ..."
 
 class EntryReader {
 public:
@@ -197,33 +134,14 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
     return bounds;
 }
 
-std::string extension_format(const std::string& path) {
-    const auto ends_with = [&](const std::string& suffix) {
-        return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
-    };
-    if (ends_with(".toml")) return "toml";
-    if (ends_with(".json")) return "json";
-    throw InputError(fmt::format("bounds file {}: the name must end in .toml or .json (the format)", path));
-}
-
 }  // namespace
 
 compare::Bounds parse_bounds(const std::string& text, const std::string& format, const std::string& name) {
-    if (format == "toml") return to_bounds(toml_to_json(text, name), name);
-    if (format == "json") return to_bounds(parse_json(text, name), name);
-    throw InputError(fmt::format("bounds format '{}': toml or json", format));
+    return to_bounds(study::parse_config(text, format, name, kWhat), name);
 }
 
 compare::Bounds read_bounds_file(const std::string& path) {
-    const std::string format = extension_format(path);
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(fmt::format("bounds file {}: no such file (or not a regular file)", path));
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("bounds file {}: cannot be read (missing or not readable)", path));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_bounds(text.str(), format, path);
+    return to_bounds(study::read_config_file(path, kWhat), path);
 }
 
 }  // namespace vssw::cli

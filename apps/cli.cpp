@@ -12,6 +12,7 @@
 #include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
+#include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
 
 namespace vssw::cli {
@@ -78,6 +79,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         add_compare_command(app),
         add_report_command(app),
         add_check_command(app),
+        add_study_command(app),
     };
     try {
         app.parse(argc, argv);
@@ -104,6 +106,8 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
 int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
     try {
         return run_unguarded(argc, argv, out, err);
+    } catch (const QuietExit& e) {
+        return e.code;
     } catch (const InputError& e) {
         return fail(err, "error", e.what(), kExitBadInput);
     } catch (const BoundsViolated& e) {

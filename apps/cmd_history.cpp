@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic/error.hpp"
-#include "apps/atomic_file.hpp"
+#include "study/atomic_file.hpp"
 #include "apps/commands.hpp"
 #include "apps/report_history.hpp"
 
@@ -56,8 +56,8 @@ Command add_history_command(CLI::App& root) {
                 HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
                 // Into a temporary file, renamed onto --csv only after a successful run: a failure leaves an
                 // existing file as it was. Created before the run, so that an unwritable path fails at once.
-                std::unique_ptr<AtomicFile> csv;
-                if (!o->csv.empty()) csv = std::make_unique<AtomicFile>(o->csv);
+                std::unique_ptr<study::AtomicFile> csv;
+                if (!o->csv.empty()) csv = std::make_unique<study::AtomicFile>(o->csv);
                 simulate_history(run);
                 if (csv) {
                     write_history_csv(csv->stream(), run);

@@ -24,5 +24,6 @@ Command add_summary_command(CLI::App& root);
 Command add_compare_command(CLI::App& root);
 Command add_report_command(CLI::App& root);
 Command add_check_command(CLI::App& root);
+Command add_study_command(CLI::App& root);
 
 }  // namespace vssw::cli

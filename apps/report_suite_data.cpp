@@ -42,18 +42,6 @@ Json suite_json(const ReportInput& in) {
 
 }  // namespace
 
-std::string csv_field(const std::string& text) {
-    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) {
-        if (c == '"') quoted += '"';
-        quoted += c;
-    }
-    return quoted + '"';
-}
-
-std::string csv_number(double value) { return std::isfinite(value) ? fmt::format("{:.17g}", value) : ""; }
-
 Json results_json(const ReportInput& in) {
     const compare::SuiteResults& res = in.results;
     Json engines = Json::array();

@@ -18,6 +18,7 @@
 
 #include "apps/json.hpp"
 #include "apps/report_suite.hpp"
+#include "study/csv.hpp"
 
 namespace vssw::cli {
 
@@ -29,9 +30,7 @@ void write_metrics_csv(std::ostream& out, const compare::SuiteResults& results);
 void write_failures_csv(std::ostream& out, const compare::SuiteResults& results);
 void write_traces_csv(std::ostream& out, const compare::SuiteResults& results);
 
-// A CSV field: quoted (with doubled quotes) when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& text);
-// A number with full precision; empty for NaN or infinity.
-std::string csv_number(double value);
+using study::csv_field;  // study/csv.hpp
+using study::csv_number;
 
 }  // namespace vssw::cli

@@ -14,7 +14,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "apps/atomic_file.hpp"
+#include "study/atomic_file.hpp"
 
 namespace vssw::cli {
 namespace fs = std::filesystem;
@@ -209,7 +209,7 @@ std::vector<Script> step_scripts(const ReportInput& in) {
 // Through a temporary file renamed on success (atomic_file.hpp); false when it cannot be written.
 bool write_text(const fs::path& path, const std::string& text) {
     try {
-        AtomicFile f(path);
+        study::AtomicFile f(path);
         f.stream() << text;
         f.commit();
         return true;

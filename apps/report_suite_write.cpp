@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "apps/atomic_file.hpp"
+#include "study/atomic_file.hpp"
 #include "apps/report_suite_data.hpp"
 #include "apps/report_suite_document.hpp"
 #include "apps/report_suite_html.hpp"
@@ -21,7 +21,7 @@ namespace {
 
 // Through a temporary file renamed on success (atomic_file.hpp): a failure leaves the previous file as it was.
 void write_file(const fs::path& path, const std::function<void(std::ostream&)>& write) {
-    AtomicFile f(path);
+    study::AtomicFile f(path);
     write(f.stream());
     f.commit();
 }

@@ -3,14 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstddef>
-#include <exception>
 #include <limits>
 #include <memory>
 #include <mutex>
 #include <set>
-#include <thread>
 #include <utility>
 
 #include <fmt/format.h>
@@ -19,6 +16,7 @@
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
 #include "compare/experiments.hpp"
+#include "compare/task_pool.hpp"
 #include "multibody/analytic_engine.hpp"
 
 namespace vssw::compare {
@@ -106,17 +104,6 @@ const std::map<std::string, std::vector<double>>& step_studies() {
 // Traces: at most this many points per trace (plots), a free vibration's first seconds only.
 constexpr std::size_t kMaxTracePoints = 2000;
 constexpr double kFreeTraceSeconds = 10.0;
-
-// Ordering of the work queue: estimated cost of an engine per simulated second at its default step [s/s]
-// (README, "Speed": Fig. 6 VSSW medians); only the order of the tasks depends on it.
-double cost_per_simulated_second(const std::string& engine) {
-    if (engine == "analytic") return 3e-4;
-    if (engine == "bullet") return 22e-3;
-    if (engine == "ode") return 12e-3;
-    if (engine == "simbody") return 30e-3;         // compliant, CPodes (measured: 4-15 x faster than the rigid)
-    if (engine == "simbody-rigid") return 230e-3;  // 116 ms at 1 ms, run at 0.5 ms
-    return 30e-3;
-}
 
 std::string fmt_number(double x) { return fmt::format("{}", x); }
 
@@ -546,103 +533,33 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     }
     std::vector<TaskOutput> outputs(tasks.size());
 
-    // The queue: longest first. An engine that does not run concurrently has at most one task running at a time; a
-    // free worker takes the longest task it may run, and waits only when every remaining task is such an engine's.
-    std::vector<std::size_t> pending(tasks.size());
-    for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = i;
-    std::stable_sort(pending.begin(), pending.end(),
-                     [&](std::size_t a, std::size_t b) { return tasks[a].cost > tasks[b].cost; });
-    std::vector<char> exclusive(engines.size()), busy(engines.size(), 0);
-    for (std::size_t ei = 0; ei < engines.size(); ++ei) exclusive[ei] = engines[ei]->runs_concurrently() ? 0 : 1;
+    std::vector<PoolTask> pool_tasks;
+    for (const Task& t : tasks) pool_tasks.push_back({t.cost, t.engine_index});
+    std::vector<bool> exclusive;
+    for (const multibody::Engine* e : engines) exclusive.push_back(!e->runs_concurrently());
 
-    std::mutex queue_mutex, progress_mutex;
-    std::condition_variable queue_changed;
-    bool stop = false;
-    std::exception_ptr error;
+    std::mutex progress_mutex;
     int done = 0;
     const int total = static_cast<int>(tasks.size());
-
-    auto fail = [&](std::exception_ptr e) {
-        const std::lock_guard<std::mutex> lock(queue_mutex);
-        if (!error) error = e;
-        stop = true;
-        pending.clear();
-    };
-    auto worker = [&]() {
-        for (;;) {
-            std::size_t ti = 0;
-            {
-                std::unique_lock<std::mutex> lock(queue_mutex);
-                for (;;) {
-                    if (stop || pending.empty()) return;
-                    const auto it = std::find_if(pending.begin(), pending.end(), [&](std::size_t t) {
-                        const std::size_t ei = tasks[t].engine_index;
-                        return !(exclusive[ei] && busy[ei]);
-                    });
-                    if (it != pending.end()) {
-                        ti = *it;
-                        pending.erase(it);
-                        busy[tasks[ti].engine_index] = 1;
-                        break;
-                    }
-                    queue_changed.wait(lock);
-                }
-            }
-            const Task& task = tasks[ti];
-            const SuiteCase& c = suite.cases[task.case_index];
-            const multibody::Engine& engine = *engines[task.engine_index];
-            bool ok = true;
-            try {
-                const TaskContext x{c, *case_walls[task.case_index], engine, task.engine_index == 0,
-                                    c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr,
-                                    options.keep_traces};
-                run_task(x, outputs[ti]);
-            } catch (const EngineFailure& e) {
-                outputs[ti] = TaskOutput{};
-                outputs[ti].failure = e.what();
-            } catch (...) {
-                ok = false;
-                fail(std::current_exception());
-            }
-            {
-                const std::lock_guard<std::mutex> lock(queue_mutex);
-                busy[task.engine_index] = 0;
-            }
-            queue_changed.notify_all();
-            if (!ok) return;
-            if (options.progress) {
-                try {
-                    const std::lock_guard<std::mutex> lock(progress_mutex);
-                    ++done;
-                    options.progress(done, total,
-                                     fmt::format("{} {}{}", c.id, engine.name(), outputs[ti].failure ? " (failed)" : ""));
-                } catch (...) {
-                    fail(std::current_exception());
-                    queue_changed.notify_all();
-                    return;
-                }
-            }
-        }
-    };
-
-    unsigned int want = options.threads > 0 ? static_cast<unsigned int>(options.threads)
-                                            : std::max(1u, std::thread::hardware_concurrency());
-    want = std::max(1u, std::min(want, static_cast<unsigned int>(std::max<std::size_t>(1, tasks.size()))));
-    results.threads = static_cast<int>(want);
-    if (want == 1) {
-        worker();
-    } else {
-        std::vector<std::thread> pool;
-        pool.reserve(want);
+    results.threads = run_pool(pool_tasks, exclusive, options.threads, [&](std::size_t ti) {
+        const Task& task = tasks[ti];
+        const SuiteCase& c = suite.cases[task.case_index];
+        const multibody::Engine& engine = *engines[task.engine_index];
         try {
-            for (unsigned int i = 0; i < want; ++i) pool.emplace_back(worker);
-        } catch (...) {
-            fail(std::current_exception());
-            queue_changed.notify_all();
+            const TaskContext x{c, *case_walls[task.case_index], engine, task.engine_index == 0,
+                                c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr, options.keep_traces};
+            run_task(x, outputs[ti]);
+        } catch (const EngineFailure& e) {
+            outputs[ti] = TaskOutput{};
+            outputs[ti].failure = e.what();
         }
-        for (std::thread& t : pool) t.join();
-    }
-    if (error) std::rethrow_exception(error);
+        if (options.progress) {
+            const std::lock_guard<std::mutex> lock(progress_mutex);
+            ++done;
+            options.progress(done, total,
+                             fmt::format("{} {}{}", c.id, engine.name(), outputs[ti].failure ? " (failed)" : ""));
+        }
+    });
 
     for (std::size_t ti = 0; ti < tasks.size(); ++ti) {
         TaskOutput& o = outputs[ti];

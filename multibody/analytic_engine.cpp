@@ -68,6 +68,8 @@ EngineSettings AnalyticEngine::default_settings() const {
     return s;
 }
 
+void AnalyticEngine::check_settings(const EngineSettings& settings) const { (void)read_knobs(settings); }
+
 Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& excitation,
                                     const EngineSettings& settings) const {
     const Knobs knobs = read_knobs(settings);
@@ -101,6 +103,18 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     out.at_rest_at_end = r.at_rest_at_end;
     out.warnings = validity_warnings(*model, scene.vssw ? std::optional(knobs.kinematics) : std::nullopt, r);
     out.steps = r.steps;
+    LocatedEvents located;
+    for (const TurningPoint& p : r.peaks)
+        if (std::abs(p.theta) > located.max_abs_theta1) located = {std::abs(p.theta), p.t, {}, 0.0, false, {}};
+    if (r.overturned) {
+        located.max_abs_theta1 = model->collapse_angle();
+        located.t_max_abs_theta1 = r.t_overturn;
+        located.t_overturn = r.t_overturn;
+    }
+    located.energy_balance_error = r.energy_balance_error;
+    located.supports_computed = r.supports.computed;
+    located.roller_tension_at = r.supports.roller_tension_at;
+    out.located = located;
     out.samples.reserve(r.samples.size());
     const double top_at_rest = model->load_height(0.0);
     for (const Sample& s : r.samples) {

@@ -29,6 +29,7 @@ public:
     EngineSettings default_settings() const override;
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                         const EngineSettings& settings) const override;
+    void check_settings(const EngineSettings& settings) const override;
 };
 
 }  // namespace vssw::multibody

@@ -60,6 +60,18 @@ struct TrajectorySample {
     int contacts;               // contact points in use (0 for the analytic model)
 };
 
+// What a backend that locates its events by root finding knows beyond its samples: the analytic model's turning
+// points and overturning, its energy balance and the supports' demand. Unset for the engines, whose metrics come from
+// their samples alone; a study reads these when present, so that the analytic trajectory can be sampled coarsely.
+struct LocatedEvents {
+    double max_abs_theta1 = 0.0;    // largest |theta1| [rad]: a located turning point, or the collapse angle reached
+    double t_max_abs_theta1 = 0.0;  // when [s]
+    std::optional<double> t_overturn;  // [s] when the collapse angle was reached
+    double energy_balance_error = 0.0;  // the run's, relative to the largest energy in play (analytic/simulate.hpp)
+    bool supports_computed = false;     // the supports' demand was computed (a VSSW)
+    std::optional<double> roller_tension_at;  // first time the bilateral roller would have to pull [s]
+};
+
 struct Trajectory {
     std::vector<TrajectorySample> samples;
     bool overturned = false;
@@ -68,6 +80,7 @@ struct Trajectory {
     // The backend's own assumptions failing along the run, in words (the analytic model's validity warnings:
     // analytic/validity.hpp); empty for the engines, whose physics is their own.
     std::vector<std::string> warnings;
+    std::optional<LocatedEvents> located;  // the analytic model only
 };
 
 // A run the engine could not finish honestly: NaN, blow-up, penetration past a bound, sliding. The message names the
@@ -85,6 +98,9 @@ public:
     // Throws EngineFailure when the run fails; InputError on a bad scene or setting.
     virtual Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                                 const EngineSettings& settings) const = 0;
+    // Throws InputError on a knob this backend does not know or a knob value it refuses, as simulate() would: lets a
+    // caller refuse a whole study before anything runs. The step and iterations are the caller's to check.
+    virtual void check_settings(const EngineSettings& settings) const = 0;
     // Whether simulate() may run on several threads at once (each call with its own scene). false for a library
     // with process-wide state that is not re-entrant (ODE): callers running cases in parallel (compare/suite.hpp)
     // then run that engine's simulations one at a time, beside other engines' ones.

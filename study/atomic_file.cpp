@@ -1,4 +1,4 @@
-#include "apps/atomic_file.hpp"
+#include "study/atomic_file.hpp"
 
 #include <unistd.h>
 
@@ -10,7 +10,7 @@
 
 #include "analytic/error.hpp"
 
-namespace vssw::cli {
+namespace vssw::study {
 namespace fs = std::filesystem;
 namespace {
 
@@ -49,4 +49,4 @@ void AtomicFile::commit() {
     committed_ = true;
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::study

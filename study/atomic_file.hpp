@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-namespace vssw::cli {
+namespace vssw::study {
 
 class AtomicFile {
 public:
@@ -28,4 +28,4 @@ private:
     bool committed_ = false;
 };
 
-}  // namespace vssw::cli
+}  // namespace vssw::study

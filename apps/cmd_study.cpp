@@ -1,0 +1,294 @@
+// `vssw study FILE --out DIR`: a grid of walls x assumptions x excitations x engines (study/spec.hpp), run on every
+// core, in shards or across MPI processes, written as tidy results, plots and a summary in plain words.
+// `vssw study merge DIR1 DIR2 ... --out DIR` joins shards.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "apps/json.hpp"
+#include "apps/option_values.hpp"
+#include "apps/quiet_exit.hpp"
+#include "apps/simulation_failure.hpp"
+#include "study/grid.hpp"
+#include "study/merge.hpp"
+#include "study/metric_catalog.hpp"
+#include "study/mpi.hpp"
+#include "study/outputs.hpp"
+#include "study/runner.hpp"
+#include "study/spec.hpp"
+
+#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (apps/CMakeLists.txt)
+
+namespace vssw::cli {
+namespace {
+
+// A study of more tasks (cases x runs) than this needs --force: a list typed with one zero too many would otherwise
+// start days of work. 10,000 analytic tasks take about a minute on 2 cores; 10,000 engine tasks, hours.
+constexpr long kMaxTasksWithoutForce = 10000;
+// The progress line is cut to fit an 80-column terminal.
+constexpr std::size_t kProgressWidth = 79;
+
+struct StudyOptions {
+    std::string file;
+    std::string out;
+    std::string threads_text = "0";
+    std::string shard_text = "1/1";
+    bool resume = false, force = false, json = false, no_plots = false, strict = false;
+    std::string gnuplot = "gnuplot";
+    std::vector<std::string> merge_dirs;
+};
+
+study::Shard parse_shard(const std::string& text) {
+    const auto slash = text.find('/');
+    const auto whole = [&](const std::string& part) {
+        char* end = nullptr;
+        const long v = std::strtol(part.c_str(), &end, 10);
+        return !part.empty() && *end == '\0' ? v : -1;
+    };
+    const long k = slash == std::string::npos ? -1 : whole(text.substr(0, slash));
+    const long n = slash == std::string::npos ? -1 : whole(text.substr(slash + 1));
+    if (k < 1 || n < 1 || k > n || n > 100000)
+        throw InputError(fmt::format("--shard must be K/N with 1 <= K <= N <= 100000 (shard K of N), got '{}'", text));
+    return {static_cast<int>(k), static_cast<int>(n)};
+}
+
+long task_count(const study::Grid& grid, const study::Shard& shard) {
+    long n = 0;
+    for (const int id : grid.shard_case_ids(shard.k, shard.n)) {
+        const study::CaseSpec c = grid.make_case(id);
+        for (const study::RunSpec& r : grid.runs()) n += grid.run_applies(r, c) ? 1 : 0;
+    }
+    return n;
+}
+
+// A progress line on a terminal, rewritten in place at most every tenth of a second; nothing otherwise.
+class Progress {
+public:
+    explicit Progress(std::ostream& err) : err_(err), on_(&err == &std::cerr && isatty(STDERR_FILENO) == 1) {}
+    bool on() const { return on_; }
+    void show(long done, long total, const std::string& what) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        const auto now = std::chrono::steady_clock::now();
+        if (done < total && now - last_ < std::chrono::milliseconds(100)) return;
+        last_ = now;
+        std::string line = fmt::format("[{}/{}] {}", done, total, what);
+        if (line.size() > kProgressWidth) line.resize(kProgressWidth);
+        err_ << '\r' << line << std::string(shown_ > line.size() ? shown_ - line.size() : 0, ' ') << std::flush;
+        shown_ = line.size();
+    }
+    void clear() {
+        if (shown_ > 0) err_ << '\r' << std::string(shown_, ' ') << '\r' << std::flush;
+        shown_ = 0;
+    }
+
+private:
+    std::ostream& err_;
+    bool on_;
+    std::mutex mutex_;
+    std::size_t shown_ = 0;
+    std::chrono::steady_clock::time_point last_{};
+};
+
+void print_outputs(std::ostream& out, const std::string& dir, const study::OutputFiles& files) {
+    out << "  " << dir << "/results.csv\n";
+    for (const auto& f : files.written) out << "  " << f.string() << '\n';
+}
+
+void run_merge(const StudyOptions& o, std::ostream& out, std::ostream& err) {
+    std::vector<std::filesystem::path> dirs(o.merge_dirs.begin(), o.merge_dirs.end());
+    const study::MergeResult merged = study::merge_studies(dirs, o.out);
+    study::OutputOptions options;
+    options.plots = !o.no_plots;
+    options.gnuplot = o.gnuplot;
+    const study::OutputFiles files = study::write_study_outputs(o.out, options);
+    for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
+    if (o.json) {
+        Json files_json = Json::array();
+        for (const auto& f : files.written) files_json.push_back(f.string());
+        out << Json{{"out", o.out}, {"shards", merged.shards}, {"rows", merged.rows},
+                    {"failed_rows", merged.failed_rows}, {"files", files_json}}
+                   .dump(2)
+            << '\n';
+        return;
+    }
+    out << fmt::format("vssw study merge: {} shards, {} rows ({} failed) into {}\n", merged.shards, merged.rows,
+                       merged.failed_rows, o.out);
+    print_outputs(out, o.out, files);
+}
+
+void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& err) {
+    // Under mpirun every process reads the file and builds the grid; they agree that all could before any runs.
+    std::optional<study::MpiSession> mpi;
+    if (study::launched_by_mpirun()) {
+        if (!study::mpi_built())
+            throw InputError("started by mpirun, but this vssw was built without MPI (install libopenmpi-dev and "
+                             "build again): each process would run the whole study");
+        mpi.emplace();
+    }
+    const bool leader = !mpi || mpi->rank() == 0;
+
+    std::optional<study::Grid> grid;
+    study::StudyRunOptions run;
+    std::string refusal;
+    try {
+        if (o.file.empty()) throw InputError("a study file is required (vssw study FILE --out DIR)");
+        if (o.out.empty()) throw InputError("--out DIR is required");
+        run.threads = parse_bounded_int("--threads", o.threads_text, 0, kMaxThreads, " (0: the available cores)");
+        run.shard = parse_shard(o.shard_text);
+        run.resume = o.resume;
+        run.commit = VSSW_GIT_COMMIT;
+        grid.emplace(study::read_study_file(o.file));
+        const long tasks = task_count(*grid, run.shard);
+        if (tasks == 0) throw InputError(fmt::format("study file {}: the grid has no case to run", o.file));
+        if (tasks > kMaxTasksWithoutForce && !o.force)
+            throw InputError(fmt::format("study file {}: {} tasks (cases x runs{}), more than {}: add --force to run "
+                                         "them all",
+                                         o.file, tasks, run.shard.n > 1 ? " in this shard" : "",
+                                         kMaxTasksWithoutForce));
+        if (leader) study::prepare_study_dir(*grid, o.out, run);
+    } catch (const InputError& e) {
+        refusal = e.what();
+    }
+    if (mpi && !mpi->all_ok(refusal.empty())) {
+        if (!refusal.empty() && leader) throw InputError(refusal);
+        if (!refusal.empty()) {
+            err << fmt::format("vssw: error on MPI process {}: {}\n", mpi->rank(), refusal);
+            throw QuietExit(kExitBadInput);
+        }
+        if (leader) throw InputError("another MPI process refused the study (its message is above)");
+        throw QuietExit(kExitBadInput);
+    }
+    if (!refusal.empty()) throw InputError(refusal);
+    for (const std::string& s : grid->skipped_runs())
+        if (leader) err << "vssw: note: " << s << '\n';
+
+    Progress progress(err);
+    if (leader && progress.on())
+        run.progress = [&progress](long done, long total, const std::string& what) { progress.show(done, total, what); };
+    run.mpi = mpi ? &*mpi : nullptr;
+    study::StudyRunResult result;
+    try {
+        result = study::run_study(*grid, o.out, run);
+    } catch (...) {
+        progress.clear();
+        throw;
+    }
+    progress.clear();
+    if (!leader) return;
+
+    study::OutputOptions options;
+    options.plots = !o.no_plots;
+    options.gnuplot = o.gnuplot;
+    const study::OutputFiles files = study::write_study_outputs(o.out, options);
+    for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
+
+    const study::StudySpec& spec = grid->spec();
+    const std::size_t cases = grid->shard_case_ids(run.shard.k, run.shard.n).size();
+    if (o.json) {
+        Json files_json = Json::array();
+        files_json.push_back(o.out + "/results.csv");
+        for (const auto& f : files.written) files_json.push_back(f.string());
+        out << Json{{"study", spec.name},
+                    {"file", o.file},
+                    {"out", o.out},
+                    {"identity", grid->identity()},
+                    {"shard", {{"k", run.shard.k}, {"n", run.shard.n}}},
+                    {"cases", cases},
+                    {"runs", grid->runs().size()},
+                    {"tasks_run", result.meta.tasks_run},
+                    {"tasks_resumed", result.meta.tasks_resumed},
+                    {"rows", result.rows},
+                    {"failed_rows", result.failed_rows},
+                    {"wall_time_s", result.meta.wall_time_s},
+                    {"threads", result.meta.threads},
+                    {"processes", result.meta.processes},
+                    {"files", files_json}}
+                   .dump(2)
+            << '\n';
+    } else {
+        out << fmt::format("vssw study {}: {} case{} x {} run{}{}, {} task{} run{} in {:.1f} s ({} thread{}{})\n",
+                           spec.name, cases, cases == 1 ? "" : "s", grid->runs().size(),
+                           grid->runs().size() == 1 ? "" : "s",
+                           run.shard.n > 1 ? fmt::format(" (shard {}/{})", run.shard.k, run.shard.n) : "",
+                           result.meta.tasks_run, result.meta.tasks_run == 1 ? "" : "s",
+                           result.meta.tasks_resumed > 0 ? fmt::format(" ({} resumed)", result.meta.tasks_resumed) : "",
+                           result.meta.wall_time_s, result.meta.threads, result.meta.threads == 1 ? "" : "s",
+                           result.meta.processes > 1 ? fmt::format(" x {} processes", result.meta.processes) : "");
+        out << fmt::format("  {} rows, {} failed (status column)\n", result.rows, result.failed_rows);
+        print_outputs(out, o.out, files);
+    }
+    if (o.strict && result.failed_rows > 0)
+        throw SimulationFailure(fmt::format("--strict: {} row{} failed (see the status column of {}/results.csv)",
+                                            result.failed_rows, result.failed_rows == 1 ? "" : "s", o.out));
+}
+
+std::string metrics_help() {
+    std::string text;
+    for (const study::MetricInfo& m : study::metric_catalog())
+        text += fmt::format("  {:<28} {}{}\n", m.name, m.analytic_only ? "(analytic) " : "", m.description);
+    return text;
+}
+
+}  // namespace
+
+Command add_study_command(CLI::App& root) {
+    auto o = std::make_shared<StudyOptions>();
+    CLI::App* cmd = root.add_subcommand(
+        "study", "Run a study file: walls x assumptions x excitations x engines, on every core, in shards or with MPI");
+    cmd->add_option("FILE", o->file, "the study file (.toml or .json; see the README, \"Studies\")");
+    cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)");
+    cmd->add_option("--threads", o->threads_text,
+                    fmt::format("worker threads, 0 to {} (default 0: the available cores; one per process under "
+                                "mpirun)",
+                                kMaxThreads));
+    cmd->add_option("--shard", o->shard_text,
+                    "run only shard K of N (every N-th case from the K-th): K/N, default 1/1; join the shards' folders "
+                    "with 'vssw study merge'");
+    cmd->add_flag("--resume", o->resume, "finish an interrupted study in --out (its finished tasks are not run again)");
+    cmd->add_flag("--force", o->force,
+                  fmt::format("run a study of more than {} tasks (cases x runs)", kMaxTasksWithoutForce));
+    cmd->add_flag("--strict", o->strict, "exit 3 when any row failed (for CI)");
+    cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
+    cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
+    cmd->add_flag("--json", o->json, "print a JSON summary instead of a table");
+    cmd->footer(
+        "Writes into --out: results.csv (case_id, engine, the parameters as columns named as in the file, metric,\n"
+        "value, unit, status 'ok' or 'failed: reason', warnings), results.json (the same rows, the study as read, the\n"
+        "commit, the engines' versions, the wall time), manifest.json, plots/ and study.md / study.html.\n"
+        "Case ids are positions in the grid: rows and their order do not depend on threads, shards or processes.\n"
+        "A failing run is a row with its reason and the study goes on (exit 0; --strict: exit 3). Exit 2 on bad\n"
+        "input, before anything runs: an unknown key, a wrong type, an empty list, a record that does not read, an\n"
+        "engine not built, a metric the excitation cannot measure, too many tasks without --force.\n"
+        "Under 'mpirun -n P' the processes share the tasks (one at a time each) and rank 0 writes one result.\n"
+        "Metrics:\n" +
+        metrics_help());
+
+    CLI::App* merge = cmd->add_subcommand("merge", "Join the folders of a study's shards into one study folder");
+    merge->add_option("DIRS", o->merge_dirs, "the shards' folders (every shard 1..N of one study)")->required();
+    merge->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
+    merge->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
+    merge->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
+    merge->add_flag("--json", o->json, "print a JSON summary instead of a table");
+    merge->footer("Writes the same files as one run of the whole study: the same rows in the same order.");
+
+    return {cmd, {}, [o, merge](std::ostream& out, std::ostream& err) {
+                if (merge->parsed()) run_merge(*o, out, err);
+                else run_study_command(*o, out, err);
+            }};
+}
+
+}  // namespace vssw::cli

@@ -1,0 +1,368 @@
+#include "study/grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/wall.hpp"
+#include "multibody/engine.hpp"
+#include "multibody/scene_geometry.hpp"
+
+namespace vssw::study {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kWhat = "study file";
+
+// Columns of results.csv between `engine` and `metric`: always these (the issue's names, so that scripts can rely on
+// them), then alpha and R (every wall's, for rocking curves), then the keys the file uses beyond them, then settings.
+const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness", "hinge",  "xi",    "density",
+                                               "g",     "kinematics", "impact",   "roller", "kind",  "theta0",
+                                               "file",  "scale",     "pga",       "shape",  "amplitude",
+                                               "pulse_period", "alpha", "R"};
+const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "units", "duration",
+                                                "tolerance", "max_pga"};
+
+std::string number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : std::string(); }
+
+double as_number(const Level& l) { return std::get<double>(l); }
+const std::string& as_word(const Level& l) { return std::get<std::string>(l); }
+
+// The levels of one case: digit i of `position` in the mixed radix of the axes' sizes, the last axis fastest.
+std::vector<std::size_t> digits(std::size_t position, const std::vector<const Axis*>& axes) {
+    std::vector<std::size_t> d(axes.size());
+    for (std::size_t i = axes.size(); i-- > 0;) {
+        d[i] = position % axes[i]->levels.size();
+        position /= axes[i]->levels.size();
+    }
+    return d;
+}
+
+std::string fnv1a(const std::string& text) {
+    std::uint64_t h = 14695981039346656037ull;
+    for (const char c : text) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 1099511628211ull;
+    }
+    return fmt::format("{:016x}", h);
+}
+
+// The product of the axes' levels, each combination once (the last axis fastest).
+std::vector<std::vector<Level>> combinations(const std::vector<Axis>& axes) {
+    std::vector<std::vector<Level>> out = {{}};
+    for (const Axis& a : axes) {
+        std::vector<std::vector<Level>> next;
+        for (const auto& prefix : out)
+            for (const Level& l : a.levels) {
+                next.push_back(prefix);
+                next.back().push_back(l);
+            }
+        out = std::move(next);
+    }
+    return out;
+}
+
+std::string settings_text(const std::vector<Axis>& axes, const std::vector<Level>& levels) {
+    std::string text;
+    for (std::size_t i = 0; i < axes.size(); ++i)
+        text += fmt::format("{}{}={}", text.empty() ? "" : " ", axes[i].key, to_text(levels[i]));
+    return text;
+}
+
+}  // namespace
+
+Grid::Grid(const StudySpec& spec) : spec_(spec) {
+    identity_ = fnv1a(spec.as_read.dump());
+
+    // Records: read once, up front, so that a missing or malformed file is refused before anything runs.
+    if (const Axis* files = spec_.excitation_axis("file")) {
+        std::optional<AccelUnits> units;
+        if (const Axis* u = spec_.excitation_axis("units")) {
+            if (u->varied())
+                throw InputError(fmt::format("{} {}: excitation.units: one unit for the study's records", kWhat,
+                                             spec_.path));
+            units = parse_units(as_word(u->levels.front()));
+        }
+        for (const Level& f : files->levels) {
+            const std::filesystem::path given = as_word(f);
+            const std::filesystem::path path = given.is_absolute() ? given : std::filesystem::path(spec_.base_dir) / given;
+            try {
+                records_.emplace(as_word(f), read_record(path.string(), units ? &*units : nullptr));
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("{} {}: excitation.file: {}", kWhat, spec_.path, e.what()));
+            }
+        }
+    }
+
+    // Runs: the analytic model under each combination of assumptions and settings, each engine under each of its
+    // settings' combinations.
+    for (const EngineSpec& e : spec_.engines) {
+        const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(e.name);
+        const std::vector<std::vector<Level>> assumption_sets =
+            e.name == "analytic" ? combinations(spec_.assumptions) : std::vector<std::vector<Level>>{{}};
+        for (const std::vector<Level>& settings : combinations(e.settings))
+            for (const std::vector<Level>& assumptions : assumption_sets) {
+                RunSpec run;
+                run.engine = e.name;
+                run.assumptions = assumptions;
+                run.settings = engine->default_settings();
+                run.settings_text = settings_text(e.settings, settings);
+                for (std::size_t i = 0; i < e.settings.size(); ++i) {
+                    const std::string& key = e.settings[i].key;
+                    const double v = as_number(settings[i]);
+                    if (key == "dt") run.settings.dt = v;
+                    else if (key == "iterations") run.settings.iterations = static_cast<int>(v);
+                    else run.settings.knobs[key] = v;
+                }
+                if (e.name == "analytic") {
+                    run.kinematics = parse_kinematics(as_word(assumptions[0]));
+                    run.impact = std::holds_alternative<double>(assumptions[1])
+                                     ? ImpactLaw{ImpactLaw::Kind::ratio, as_number(assumptions[1])}
+                                     : parse_impact_law(as_word(assumptions[1]));
+                    run.roller = parse_roller(as_word(assumptions[2]));
+                    if (run.roller == Roller::unilateral && run.kinematics == Kinematics::paper) {
+                        skipped_runs_.push_back(
+                            "the paper's kinematics with the unilateral roller: not a model (Eq. 3 does not keep the "
+                            "top corner on the roller's line, so it can neither leave the roller nor land back on it); "
+                            "not run");
+                        continue;
+                    }
+                    if (run.kinematics == Kinematics::paper) run.settings.knobs["paper_kinematics"] = 1.0;
+                    if (run.impact.kind == ImpactLaw::Kind::whole_mechanism)
+                        run.settings.knobs["whole_mechanism_impact"] = 1.0;
+                    if (run.impact.kind == ImpactLaw::Kind::ratio) run.settings.knobs["restitution"] = run.impact.ratio;
+                    if (run.roller == Roller::unilateral) run.settings.knobs["unilateral_roller"] = 1.0;
+                }
+                try {
+                    engine->check_settings(run.settings);
+                } catch (const InputError& err) {
+                    throw InputError(fmt::format("{} {}: settings of {}{}: {}", kWhat, spec_.path, e.name,
+                                                 run.settings_text.empty() ? "" : " (" + run.settings_text + ")",
+                                                 err.what()));
+                }
+                runs_.push_back(std::move(run));
+            }
+    }
+    std::sort(skipped_runs_.begin(), skipped_runs_.end());
+    skipped_runs_.erase(std::unique(skipped_runs_.begin(), skipped_runs_.end()), skipped_runs_.end());
+    if (runs_.empty())
+        throw InputError(fmt::format("{} {}: no run left: {}", kWhat, spec_.path, fmt::join(skipped_runs_, "; ")));
+
+    // Cases: every combination, each built (a wall out of range is refused here, naming the case), the repeats of a
+    // parapet's hinge left out.
+    product_size_ = 1;
+    for (const Axis& a : spec_.wall) product_size_ *= a.levels.size();
+    for (const Axis& a : spec_.excitation) product_size_ *= a.levels.size();
+    const Axis* hinge = spec_.wall_axis("hinge");
+    std::size_t hinge_axis = 0;
+    for (std::size_t i = 0; i < spec_.wall.size(); ++i)
+        if (&spec_.wall[i] == hinge) hinge_axis = i;
+    std::vector<const Axis*> axes;
+    for (const Axis& a : spec_.wall) axes.push_back(&a);
+    for (const Axis& a : spec_.excitation) axes.push_back(&a);
+    for (std::size_t p = 0; p < product_size_; ++p) {
+        const CaseSpec c = make_case(static_cast<int>(p + 1));
+        if (c.model == "parapet" && hinge && digits(p, axes)[hinge_axis] != 0) continue;
+        case_ids_.push_back(c.id);
+    }
+
+    columns_ = kBaseColumns;
+    for (const std::string& k : kExtraColumns)
+        if (spec_.wall_axis(k) || spec_.excitation_axis(k)) columns_.push_back(k);
+    columns_.push_back("settings");
+}
+
+CaseSpec Grid::make_case(int id) const {
+    std::vector<const Axis*> axes;
+    for (const Axis& a : spec_.wall) axes.push_back(&a);
+    for (const Axis& a : spec_.excitation) axes.push_back(&a);
+    if (id < 1 || static_cast<std::size_t>(id) > product_size_)
+        throw InputError(fmt::format("study {}: no case {} (1 to {})", spec_.name, id, product_size_));
+    const std::vector<std::size_t> d = digits(static_cast<std::size_t>(id - 1), axes);
+
+    CaseSpec c;
+    c.id = id;
+    std::map<std::string, Level> level;
+    std::string described;
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+        c.levels.push_back(axes[i]->levels[d[i]]);
+        level[axes[i]->key] = c.levels.back();
+        described += fmt::format("{}{} {}", described.empty() ? "" : ", ", axes[i]->key, to_text(c.levels.back()));
+    }
+    std::size_t wall_index = 0;
+    for (std::size_t i = 0; i < spec_.wall.size(); ++i) wall_index = wall_index * spec_.wall[i].levels.size() + d[i];
+    c.wall_index = wall_index;
+    const auto num = [&](const char* k, double fallback) {
+        const auto it = level.find(k);
+        return it == level.end() ? fallback : as_number(it->second);
+    };
+    const auto has = [&](const char* k) { return level.count(k) > 0; };
+
+    c.model = has("model") ? as_word(level["model"]) : "vssw";
+    c.xi = num("xi", 0.0);
+    c.density = num("density", kDefaultDensity);
+    c.g = num("g", kDefaultGravity);
+    try {
+        double height = 0.0, thickness = 0.0;
+        std::optional<double> hinge;
+        if (has("hinge")) {
+            const Level& h = level["hinge"];
+            hinge = std::holds_alternative<double>(h) ? as_number(h) : eq15_optimal_hinge_ratio(c.xi);
+        }
+        if (has("height")) {
+            height = num("height", 0.0);
+            thickness = num("thickness", 0.0);
+        } else if (has("alpha")) {
+            // The whole wall's slenderness and half-diagonal: b = R sin(alpha), h = R cos(alpha).
+            height = 2.0 * num("R", 0.0) * std::cos(num("alpha", 0.0));
+            thickness = 2.0 * num("R", 0.0) * std::sin(num("alpha", 0.0));
+        }
+        if (c.model == "parapet") {
+            c.scene = multibody::WallScene::of(make_parapet(height, thickness, c.xi, c.density, c.g));
+        } else if (has("alpha1")) {
+            c.scene = multibody::WallScene::of(
+                make_vssw_from_angles(num("alpha1", 0.0), num("alpha2", 0.0), num("R1", 0.0), c.xi, c.density, c.g));
+        } else {
+            if (!hinge) throw InputError("a VSSW needs a hinge ratio");
+            c.scene = multibody::WallScene::of(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g));
+        }
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{} {}: case {} ({}): {}", kWhat, spec_.path, id, described, e.what()));
+    }
+    if (c.scene.vssw) {
+        const VsswGeometry& w = *c.scene.vssw;
+        c.height = 2.0 * w.h();
+        c.thickness = 2.0 * w.b;
+        c.hinge = w.hinge_ratio();
+        c.alpha = std::atan(w.b / w.h());
+        c.R = std::hypot(w.b, w.h());
+    } else {
+        const ParapetGeometry& p = *c.scene.parapet;
+        c.height = 2.0 * p.h;
+        c.thickness = 2.0 * p.b;
+        c.hinge = kNaN;
+        c.alpha = p.alpha;
+        c.R = p.R;
+    }
+
+    c.theta0 = num("theta0", 0.0);
+    if (c.theta0 > 0.0) {
+        const double collapse = multibody::collapse_angle(c.scene);
+        if (!(c.theta0 * c.scene.alpha() < collapse))
+            throw InputError(fmt::format("{} {}: case {} ({}): theta0 {} alpha is at or beyond the wall's collapse "
+                                         "angle ({:.4g} alpha)",
+                                         kWhat, spec_.path, id, described, c.theta0, collapse / c.scene.alpha()));
+    }
+    if (has("file")) {
+        c.file = as_word(level["file"]);
+        const GroundMotion& r = record(c.file);
+        if (has("pga")) c.scale = num("pga", 0.0) * kStandardGravity / r.pga();
+        else c.scale = num("scale", 1.0);
+        c.pga_g = c.scale * r.pga() / kStandardGravity;
+    }
+    if (has("shape")) c.shape = as_word(level["shape"]);
+    c.amplitude_g = num("amplitude", 0.0);
+    c.pulse_period = num("pulse_period", 0.0);
+    c.duration = num("duration", 0.0);
+    c.tolerance = num("tolerance", 0.0);
+    c.max_pga_g = num("max_pga", 0.0);
+    return c;
+}
+
+bool Grid::run_applies(const RunSpec& run, const CaseSpec& c) const {
+    if (run.engine != "analytic" || c.model != "parapet") return true;
+    // A parapet has neither a roller nor two kinematics: the first levels stand for all.
+    return run.assumptions[0] == spec_.assumptions[0].levels.front() &&
+           run.assumptions[2] == spec_.assumptions[2].levels.front();
+}
+
+const GroundMotion& Grid::record(const std::string& file) const {
+    const auto it = records_.find(file);
+    if (it == records_.end()) throw InputError(fmt::format("study {}: no record '{}'", spec_.name, file));
+    return it->second;
+}
+
+std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& run) const {
+    const bool vssw = c.model == "vssw";
+    const bool analytic = run.engine == "analytic";
+    const ExcitationKind kind = spec_.kind;
+    const bool record_kind = kind == ExcitationKind::record;
+    const bool pulse = kind == ExcitationKind::pulse;
+    std::vector<std::string> v;
+    v.reserve(columns_.size());
+    for (const std::string& col : columns_) {
+        if (col == "model") v.push_back(c.model);
+        else if (col == "height") v.push_back(number(c.height));
+        else if (col == "thickness") v.push_back(number(c.thickness));
+        else if (col == "hinge") v.push_back(vssw ? number(c.hinge) : "");
+        else if (col == "xi") v.push_back(number(c.xi));
+        else if (col == "density") v.push_back(number(c.density));
+        else if (col == "g") v.push_back(number(c.g));
+        else if (col == "kinematics") v.push_back(analytic && vssw ? to_text(run.assumptions[0]) : "");
+        else if (col == "impact") v.push_back(analytic ? to_text(run.assumptions[1]) : "");
+        else if (col == "roller") v.push_back(analytic && vssw ? to_text(run.assumptions[2]) : "");
+        else if (col == "kind") v.push_back(to_string(kind));
+        else if (col == "theta0") v.push_back(c.theta0 > 0.0 ? number(c.theta0) : "");
+        else if (col == "file") v.push_back(c.file);
+        else if (col == "scale") v.push_back(record_kind ? number(c.scale) : "");
+        else if (col == "pga") v.push_back(record_kind ? number(c.pga_g) : "");
+        else if (col == "shape") v.push_back(c.shape);
+        else if (col == "amplitude") v.push_back(pulse ? number(c.amplitude_g) : "");
+        else if (col == "pulse_period") v.push_back(pulse ? number(c.pulse_period) : "");
+        else if (col == "alpha") v.push_back(number(c.alpha));
+        else if (col == "R") v.push_back(number(c.R));
+        else if (col == "alpha1") v.push_back(vssw ? number(c.scene.vssw->alpha1) : "");
+        else if (col == "alpha2") v.push_back(vssw ? number(c.scene.vssw->alpha2) : "");
+        else if (col == "R1") v.push_back(vssw ? number(c.scene.vssw->R1) : "");
+        else if (col == "settings") v.push_back(run.settings_text);
+        else {
+            // specimen, units, duration, tolerance, max_pga: as the file gives them.
+            std::string text;
+            const std::vector<const Axis*> axes = [&] {
+                std::vector<const Axis*> a;
+                for (const Axis& x : spec_.wall) a.push_back(&x);
+                for (const Axis& x : spec_.excitation) a.push_back(&x);
+                return a;
+            }();
+            for (std::size_t i = 0; i < axes.size(); ++i)
+                if (axes[i]->key == col) text = to_text(c.levels[i]);
+            v.push_back(text);
+        }
+    }
+    return v;
+}
+
+std::vector<std::string> Grid::varied_parameters() const {
+    std::vector<std::string> out;
+    const auto varied = [&](const std::string& col) {
+        for (const Axis& a : spec_.wall)
+            if (a.key == col && a.varied()) return true;
+        for (const Axis& a : spec_.excitation)
+            if (a.key == col && a.varied()) return true;
+        for (const Axis& a : spec_.assumptions)
+            if (a.key == col && a.varied()) return true;
+        return false;
+    };
+    for (const std::string& col : columns_)
+        if (varied(col)) out.push_back(col);
+    // alpha and R given as alpha/R vary under their own names; specimen under its.
+    return out;
+}
+
+std::vector<int> Grid::shard_case_ids(int k, int n) const {
+    require(n >= 1, "shard count", ">= 1", n);
+    require(k >= 1 && k <= n, "shard", "from 1 to the shard count", k);
+    std::vector<int> out;
+    for (std::size_t i = static_cast<std::size_t>(k - 1); i < case_ids_.size(); i += static_cast<std::size_t>(n))
+        out.push_back(case_ids_[i]);
+    return out;
+}
+
+}  // namespace vssw::study

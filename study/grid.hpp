@@ -1,0 +1,105 @@
+#pragma once
+// A study's grid: its cases and its runs.
+//
+// A case is one wall under one excitation: a combination of the levels of the [wall] and [excitation] keys (the
+// Cartesian product, the last key varying fastest in kWallKeys then kExcitationKeys order). Its id is its 1-based
+// position in that product, so ids and order depend on the file alone, never on threads, shards or processes. A case
+// that would repeat another is left out and its id unused: a parapet has no hinge, so only the first hinge level
+// gives parapet cases.
+//
+// A run is what is done to every case: the analytic model under one combination of the assumptions (and of its
+// settings), or one engine under one combination of its settings. Engines ignore the assumptions (their physics is
+// their own), so each engine runs once per case, its assumption columns empty. The paper's kinematics with the
+// unilateral roller is not a model (the roller needs Eq. 2) and is not run (Grid::skipped_runs says so); on a parapet
+// only the first kinematics and roller levels run (it has neither).
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analytic/ground_motion.hpp"
+#include "analytic/model.hpp"
+#include "analytic/simulate.hpp"
+#include "multibody/engine.hpp"
+#include "study/spec.hpp"
+
+namespace vssw::study {
+
+struct RunSpec {
+    std::string engine;
+    std::vector<Level> assumptions;  // the analytic model's, one per StudySpec::assumptions; empty for an engine
+    multibody::EngineSettings settings;  // the engine's defaults with the file's settings (and assumptions) applied
+    std::string settings_text;           // the file's settings of this run, "dt=0.0002 iterations=10"; "" if none
+    // For the analytic model: the assumptions as the model takes them.
+    Kinematics kinematics = Kinematics::paper;
+    ImpactLaw impact;
+    Roller roller = Roller::bilateral;
+};
+
+struct CaseSpec {
+    int id = 0;                     // 1-based position in the product
+    std::vector<Level> levels;      // one per wall axis, then one per excitation axis (StudySpec order)
+    multibody::WallScene scene;
+    std::string model;              // "vssw" or "parapet"
+    double height = 0.0, thickness = 0.0, hinge = 0.0;  // full dimensions [m], h1/h (NaN for a parapet)
+    double xi = 0.0, density = 0.0, g = 0.0;
+    double alpha = 0.0, R = 0.0;    // the whole wall's slenderness atan(b/h) and half-diagonal (Fig. 10's alpha, R)
+    double theta0 = 0.0;            // release, a fraction of alpha (free, closed-form; 0 when not given)
+    std::string file;               // record or scale-to-collapse: the record as the file names it
+    double scale = 1.0;             // record: the factor applied to it
+    double pga_g = 0.0;             // record: its peak ground acceleration after scaling [g]
+    std::string shape;              // pulse
+    double amplitude_g = 0.0, pulse_period = 0.0, duration = 0.0;  // pulse [g], [s], harmonic [s]
+    double tolerance = 0.0, max_pga_g = 0.0;  // scale-to-collapse; max_pga_g 0: the default (measure.hpp)
+    // The wall's position among the wall axes alone (cases that differ only in their excitation share it): the key
+    // of the thresholds a process computes once per wall and run.
+    std::size_t wall_index = 0;
+};
+
+// A results.csv column of the case and run parameters, named as in the study file.
+struct Column {
+    std::string name;
+};
+
+class Grid {
+public:
+    // Builds every case's wall and every run's settings, checking them (InputError naming the file, the case's
+    // levels and the bad value), and reads every record once (a missing or malformed one: InputError).
+    explicit Grid(const StudySpec& spec);
+
+    const StudySpec& spec() const { return spec_; }
+    std::size_t product_size() const { return product_size_; }
+    const std::vector<int>& case_ids() const { return case_ids_; }  // the cases that run, in order
+    CaseSpec make_case(int id) const;
+    const std::vector<RunSpec>& runs() const { return runs_; }
+    bool run_applies(const RunSpec& run, const CaseSpec& c) const;
+    const std::vector<std::string>& skipped_runs() const { return skipped_runs_; }  // why, one line each
+    // The record named in the file (read once, unscaled, in m/s^2).
+    const GroundMotion& record(const std::string& file) const;
+
+    // The parameter columns (between `engine` and `metric` in results.csv) and their values for a case and a run.
+    const std::vector<std::string>& columns() const { return columns_; }
+    std::vector<std::string> column_values(const CaseSpec& c, const RunSpec& run) const;
+    // The parameters that vary: the varied axes of the wall, the excitation and the assumptions, in column order.
+    std::vector<std::string> varied_parameters() const;
+
+    // A hash of the study as read (FNV-1a 64 of its canonical JSON): results, journals and shards name the study by
+    // it, so that a resume or a merge cannot mix two studies.
+    const std::string& identity() const { return identity_; }
+
+    // Deterministic 1/n of the cases for shard k (1-based): every n-th case from the k-th.
+    std::vector<int> shard_case_ids(int k, int n) const;
+
+private:
+    StudySpec spec_;
+    std::size_t product_size_ = 0;
+    std::vector<int> case_ids_;
+    std::vector<RunSpec> runs_;
+    std::vector<std::string> skipped_runs_;
+    std::map<std::string, GroundMotion> records_;
+    std::vector<std::string> columns_;
+    std::string identity_;
+};
+
+}  // namespace vssw::study

@@ -1,0 +1,117 @@
+#include "study/journal.hpp"
+
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "study/csv.hpp"
+
+namespace vssw::study {
+namespace {
+
+constexpr const char* kMagic = "#vssw-study-journal";
+constexpr const char* kDone = "#done";
+
+std::string header(const std::string& identity, Shard shard) {
+    return fmt::format("{},{},{}/{}", kMagic, identity, shard.k, shard.n);
+}
+
+long parse_long(const std::string& text, const std::filesystem::path& path) {
+    char* end = nullptr;
+    const long v = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0') throw InputError(fmt::format("journal {}: '{}' is not a whole number", path.string(), text));
+    return v;
+}
+
+// Reads the journal's whole tasks (their rows in file order) and the byte offset just past the last whole task.
+std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const std::string* identity,
+                                        const Shard* shard, std::set<TaskKey>* done, std::streamoff* end_of_whole) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(fmt::format("journal {}: cannot be read", path.string()));
+    std::string first;
+    std::getline(in, first);
+    if (first.rfind(kMagic, 0) != 0) throw InputError(fmt::format("{} is not a vssw study journal", path.string()));
+    if (identity && shard && first != header(*identity, *shard))
+        throw InputError(fmt::format("journal {} belongs to another study or shard ({}; this is {})", path.string(),
+                                     first, header(*identity, *shard)));
+    std::vector<ResultRow> rows, pending;
+    std::streamoff whole = in.tellg();
+    std::vector<std::string> f;
+    for (;;) {
+        std::string line;
+        if (!std::getline(in, line)) break;
+        if (in.eof()) break;  // a last line without its newline was being written: not whole
+        std::istringstream record(line);
+        read_csv_record(record, f);
+        if (!f.empty() && f[0] == kDone) {
+            if (f.size() != 3) throw InputError(fmt::format("journal {}: a malformed closing line '{}'", path.string(), line));
+            const TaskKey key{static_cast<int>(parse_long(f[1], path)), static_cast<std::size_t>(parse_long(f[2], path))};
+            for (ResultRow& r : pending)
+                if (r.case_id != key.first || r.run != key.second)
+                    throw InputError(fmt::format("journal {}: rows of another task before '{}'", path.string(), line));
+            rows.insert(rows.end(), std::make_move_iterator(pending.begin()), std::make_move_iterator(pending.end()));
+            pending.clear();
+            if (done) done->insert(key);
+            whole = in.tellg();
+            continue;
+        }
+        if (f.size() != 6) throw InputError(fmt::format("journal {}: a malformed row '{}'", path.string(), line));
+        ResultRow r;
+        r.case_id = static_cast<int>(parse_long(f[0], path));
+        r.run = static_cast<std::size_t>(parse_long(f[1], path));
+        r.metric = static_cast<std::size_t>(parse_long(f[2], path));
+        r.value = f[3].empty() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(f[3].c_str(), nullptr);
+        r.status = f[4];
+        r.warnings = f[5];
+        pending.push_back(std::move(r));
+    }
+    if (end_of_whole) *end_of_whole = whole;
+    return rows;
+}
+
+}  // namespace
+
+std::string journal_text(int case_id, std::size_t run, const std::vector<Measurement>& rows) {
+    std::string text;
+    for (const Measurement& m : rows)
+        text += fmt::format("{},{},{},{},{},{}\n", case_id, run, m.metric, csv_number(m.value), csv_field(m.status),
+                            csv_field(m.warnings));
+    text += fmt::format("{},{},{}\n", kDone, case_id, run);
+    return text;
+}
+
+Journal::Journal(std::filesystem::path path, const std::string& identity, Shard shard) : path_(std::move(path)) {
+    out_.open(path_, std::ios::binary | std::ios::trunc);
+    if (!out_) throw InputError(fmt::format("cannot write the study journal '{}'", path_.string()));
+    out_ << header(identity, shard) << '\n' << std::flush;
+}
+
+Journal::Journal(std::filesystem::path path, const std::string& identity, Shard shard, std::set<TaskKey>& done)
+    : path_(std::move(path)) {
+    std::streamoff whole = 0;
+    (void)read_whole_tasks(path_, &identity, &shard, &done, &whole);
+    std::error_code ec;
+    std::filesystem::resize_file(path_, static_cast<std::uintmax_t>(whole), ec);  // drop a half-written task
+    if (ec) throw InputError(fmt::format("cannot continue the study journal '{}': {}", path_.string(), ec.message()));
+    out_.open(path_, std::ios::binary | std::ios::app);
+    if (!out_) throw InputError(fmt::format("cannot write the study journal '{}'", path_.string()));
+}
+
+void Journal::append(int case_id, std::size_t run, const std::vector<Measurement>& rows) {
+    append_text(journal_text(case_id, run, rows));
+}
+
+void Journal::append_text(const std::string& text) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    out_ << text << std::flush;
+    if (!out_) throw InputError(fmt::format("error while writing the study journal '{}'", path_.string()));
+}
+
+std::vector<ResultRow> read_journal(const std::filesystem::path& path) {
+    return read_whole_tasks(path, nullptr, nullptr, nullptr, nullptr);
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,403 @@
+#include "study/measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/ground_motion.hpp"
+#include "compare/experiments.hpp"
+#include "compare/task_pool.hpp"
+#include "multibody/scene_geometry.hpp"
+#include "study/metric_catalog.hpp"
+
+namespace vssw::study {
+namespace {
+
+using multibody::EngineFailure;
+using multibody::Trajectory;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kOk = "ok";
+
+// The analytic model's trajectory in a pulse or record run is read only for what its located events do not give: a
+// sample every 10 ms costs little and keeps the run's energy check at every step.
+constexpr double kAnalyticResponseSampleDt = 1e-2;  // [s]
+
+// scale-to-collapse: the scale rises from the one at which the record's PGA equals the wall's rest threshold (below
+// it the wall does not even lift) by this factor per step, as incremental dynamic analysis steps up its intensity;
+// the first overturning scale is then bisected against the last standing one. 10 % steps keep a narrow window of
+// overturning (the response is not monotonic in the scale) from being stepped over at ~30 runs up to 20 x the
+// threshold; a window narrower than a step can still be missed, which the README says.
+constexpr double kCollapseStep = 0.10;
+constexpr double kDefaultCollapseTolerance = 1e-3;  // relative width of the final bracket on the scale
+// Default ceiling of the search: a PGA of this many times the wall's rest threshold (Eq. 12 / 17). Real walls that
+// stand up to it do not fall to that record at any credible intensity; the study file's max_pga raises it.
+constexpr double kDefaultMaxPgaOverThreshold = 20.0;
+
+std::string one_line(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    std::replace(text.begin(), text.end(), '\r', ' ');
+    return text;
+}
+std::string failed(const std::string& reason) { return "failed: " + one_line(reason); }
+
+// The impact ratio of an analytic run's law on this wall (Fig. 8 follows the run's impact assumption).
+double law_restitution(const RunSpec& run, const multibody::WallScene& scene) {
+    switch (run.impact.kind) {
+        case ImpactLaw::Kind::ratio: return run.impact.ratio;
+        case ImpactLaw::Kind::whole_mechanism:
+            return scene.vssw ? restitution_whole_mechanism(*scene.vssw) : housner_restitution(scene.parapet->alpha);
+        case ImpactLaw::Kind::eq19: break;
+    }
+    return scene.vssw ? eq19_restitution(*scene.vssw) : housner_restitution(scene.parapet->alpha);
+}
+
+// The parapet of the same height, thickness, xi, density and g as the case's VSSW (the paper's comparisons).
+ParapetGeometry same_size_parapet(const VsswGeometry& w) {
+    return make_parapet(2.0 * w.h(), 2.0 * w.b, w.xi, w.density, w.g);
+}
+
+// A closed form's value, or a reason it has none here.
+struct ClosedForm {
+    double value = kNaN;
+    std::string why_not;
+};
+
+ClosedForm closed_form(const std::string& metric, const CaseSpec& c, const RunSpec& run) {
+    const multibody::WallScene& s = c.scene;
+    const VsswGeometry* w = s.vssw ? &*s.vssw : nullptr;
+    const ParapetGeometry* p = s.parapet ? &*s.parapet : nullptr;
+    const auto vssw_only = [&]() -> std::optional<ClosedForm> {
+        if (w) return std::nullopt;
+        return ClosedForm{kNaN, "a VSSW's comparison with the parapet of its size (this case is a parapet)"};
+    };
+    const auto needs_theta0 = [&]() -> std::optional<ClosedForm> {
+        if (c.theta0 > 0.0) return std::nullopt;
+        return ClosedForm{kNaN, "needs theta0 in [excitation]"};
+    };
+    const auto needs_no_overburden = [&]() -> std::optional<ClosedForm> {
+        if (c.xi == 0.0) return std::nullopt;
+        return ClosedForm{kNaN, fmt::format("Eq. (20)-(22) are for N = 0 (xi {} here)", c.xi)};
+    };
+    if (metric == "threshold_closed_form_g") return {w ? eq12_threshold(*w) / w->g : eq17_parapet_threshold(*p) / p->g, ""};
+    if (metric == "restitution_closed_form") return {w ? eq19_restitution(*w) : housner_restitution(p->alpha), ""};
+    if (metric == "restitution_whole_mechanism")
+        return {w ? restitution_whole_mechanism(*w) : housner_restitution(p->alpha), ""};
+    if (metric == "threshold_ratio_to_parapet") {
+        if (auto no = vssw_only()) return *no;
+        return {eq12_threshold(*w) / eq17_parapet_threshold(same_size_parapet(*w)), ""};
+    }
+    if (metric == "restitution_ratio_to_parapet") {
+        if (auto no = vssw_only()) return *no;
+        return {eq19_restitution(*w) / housner_restitution(same_size_parapet(*w).alpha), ""};
+    }
+    if (auto no = needs_theta0()) return *no;
+    if (auto no = needs_no_overburden()) return *no;
+    // Amplitude-dependent forms, at theta0 as a fraction of A (VSSW, Eq. 21a) or alpha (parapet).
+    const double A = w ? eq21_A(*w) : p->alpha;
+    if (metric == "period_linearised") {
+        if (w) {
+            const double theta = c.theta0 * w->alpha1;
+            if (!(theta < A)) return {kNaN, fmt::format("theta0 {} alpha1 is beyond Eq. (21a)'s A", c.theta0)};
+            return {eq22_period(*w, theta), ""};
+        }
+        return {housner_period(p->alpha, p->R, p->g, c.theta0 * p->alpha), ""};
+    }
+    if (metric == "period_ratio_to_parapet") {
+        if (auto no = vssw_only()) return *no;
+        const ParapetGeometry pw = same_size_parapet(*w);
+        return {eq22_period(*w, c.theta0 * A) / housner_period(pw.alpha, pw.R, pw.g, c.theta0 * pw.alpha), ""};
+    }
+    if (metric == "peak_ratio_half_cycle") {
+        // Eq. (20) conserves (1/2) theta1'^2 + P^2 (A theta1 - theta1^2 / 2) in flight; the impact multiplies the
+        // velocity by e. With u = theta_peak / A: u_next (2 - u_next) = e^2 u (2 - u), so
+        // u_next = 1 - sqrt(1 - e^2 u (2 - u)), and the ratio of the peaks is u_next / u.
+        const double u = c.theta0 * (w ? w->alpha1 : p->alpha) / A;
+        if (!(u < 1.0)) return {kNaN, fmt::format("theta0 {} alpha is beyond Eq. (21a)'s A", c.theta0)};
+        const double e = law_restitution(run, s);
+        return {(1.0 - std::sqrt(1.0 - e * e * u * (2.0 - u))) / u, ""};
+    }
+    throw InputError(fmt::format("'{}' is not a closed form", metric));
+}
+
+// What one run from rest (or from theta0) shows: the response metrics.
+struct Response {
+    double peak = kNaN, peak_time = kNaN;  // [rad], [s]
+    bool overturned = false;
+    std::optional<double> t_overturn;
+    std::optional<double> energy_error;
+    bool supports_computed = false;
+    std::optional<double> tension_at;
+};
+
+Response response_of(const Trajectory& t, const multibody::WallScene& scene) {
+    Response r;
+    r.overturned = t.overturned;
+    if (t.located) {
+        r.peak = t.located->max_abs_theta1;
+        r.peak_time = t.located->t_max_abs_theta1;
+        r.t_overturn = t.located->t_overturn;
+        r.energy_error = t.located->energy_balance_error;
+        r.supports_computed = t.located->supports_computed;
+        r.tension_at = t.located->roller_tension_at;
+        return r;
+    }
+    r.peak = 0.0;
+    r.peak_time = t.samples.empty() ? kNaN : t.samples.front().t;
+    for (const multibody::TrajectorySample& s : t.samples)
+        if (std::abs(s.theta1) > r.peak) {
+            r.peak = std::abs(s.theta1);
+            r.peak_time = s.t;
+        }
+    if (t.overturned && !t.samples.empty()) {
+        // An engine stops its run at the collapse angle: its last sample is the overturning.
+        r.peak = multibody::collapse_angle(scene);
+        r.peak_time = t.samples.back().t;
+        r.t_overturn = t.samples.back().t;
+    }
+    return r;
+}
+
+GroundMotion case_motion(const Grid& grid, const CaseSpec& c, double scale) {
+    switch (grid.spec().kind) {
+        case ExcitationKind::pulse: {
+            const double a = c.amplitude_g * kStandardGravity;
+            if (c.shape == "sine") return sine_pulse(a, c.pulse_period);
+            if (c.shape == "cosine") return cosine_pulse(a, c.pulse_period);
+            if (c.shape == "ricker") return ricker_wavelet(a, c.pulse_period);
+            return harmonic(a, c.pulse_period, c.duration);
+        }
+        case ExcitationKind::record:
+        case ExcitationKind::scale_to_collapse: return grid.record(c.file).scaled(scale);
+        default: return GroundMotion::none();
+    }
+}
+
+Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, const CaseSpec& c,
+                         const GroundMotion& motion) {
+    multibody::Excitation ex;
+    ex.horizontal = motion;
+    ex.theta0 = 0.0;
+    ex.t_end = motion.duration() + kResponseTail;
+    ex.stop_at_rest = true;
+    multibody::EngineSettings settings = run.settings;
+    if (run.engine == "analytic") settings.sample_dt = kAnalyticResponseSampleDt;
+    return engine.simulate(c.scene, ex, settings);
+}
+
+// The smallest scale of the record that overturns the wall: stepped up from lift-off, then bisected.
+struct Collapse {
+    double scale = kNaN;
+    std::string why_not;
+};
+Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine) {
+    const GroundMotion& record = grid.record(c.file);
+    const double pga = record.pga();  // [m/s^2] at scale 1
+    const double threshold = multibody::analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0);
+    const double max_pga = c.max_pga_g > 0.0 ? c.max_pga_g * kStandardGravity : kDefaultMaxPgaOverThreshold * threshold;
+    const double tolerance = c.tolerance > 0.0 ? c.tolerance : kDefaultCollapseTolerance;
+    const auto overturns = [&](double scale) {
+        return run_from_rest(engine, run, c, case_motion(grid, c, scale)).overturned;
+    };
+    double lo = threshold / pga, hi = kNaN;
+    if (overturns(lo)) return {kNaN, "overturns at the scale where the record's PGA equals the rest threshold"};
+    for (double s = lo * (1.0 + kCollapseStep);; s *= 1.0 + kCollapseStep) {
+        if (s * pga > max_pga)
+            return {kNaN, fmt::format("does not overturn up to a PGA of {:.4g} g (max_pga)", max_pga / kStandardGravity)};
+        if (overturns(s)) {
+            hi = s;
+            break;
+        }
+        lo = s;
+    }
+    while (hi - lo > tolerance * hi) {
+        const double mid = 0.5 * (lo + hi);
+        (overturns(mid) ? hi : lo) = mid;
+    }
+    return {hi, ""};
+}
+
+}  // namespace
+
+ThresholdOutcome ThresholdCache::get(std::size_t wall, std::size_t run, const std::function<ThresholdOutcome()>& compute) {
+    std::promise<ThresholdOutcome> promise;
+    std::shared_future<ThresholdOutcome> future;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        const auto it = outcomes_.find({wall, run});
+        if (it != outcomes_.end()) {
+            future = it->second;
+        } else {
+            outcomes_.emplace(std::make_pair(wall, run), promise.get_future().share());
+            future = {};
+        }
+    }
+    if (future.valid()) return future.get();
+    try {
+        const ThresholdOutcome out = compute();
+        promise.set_value(out);
+        return out;
+    } catch (...) {
+        promise.set_exception(std::current_exception());
+        throw;
+    }
+}
+
+std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_t run_index,
+                                 const multibody::Engine& engine, ThresholdCache& thresholds) {
+    const StudySpec& spec = grid.spec();
+    const RunSpec& run = grid.runs().at(run_index);
+    const bool analytic = run.engine == "analytic";
+    const double alpha = c.scene.alpha();
+    std::vector<Measurement> out;
+    const auto add = [&](std::size_t m, double value, std::string status) {
+        out.push_back({m, value, std::move(status), {}});
+    };
+
+    // Each source runs at most once, on the first metric that needs it.
+    std::optional<compare::FreeVibrationResult> free;
+    std::string free_failure;
+    std::optional<Response> response;
+    std::optional<std::vector<std::string>> response_warnings;
+    std::string response_failure;
+    std::optional<Collapse> collapse;
+
+    const auto guarded = [](auto&& body, std::string& failure) {
+        try {
+            body();
+        } catch (const EngineFailure& e) {
+            failure = e.what();
+        } catch (const InputError& e) {  // a case the run cannot hold (e.g. beyond the paper kinematics' lock)
+            failure = e.what();
+        }
+    };
+
+    for (std::size_t m = 0; m < spec.metrics.size(); ++m) {
+        const std::string& metric = spec.metrics[m];
+        const MetricInfo& info = metric_info(metric);
+        if (info.analytic_only && !analytic) continue;
+        switch (info.source) {
+            case MetricSource::closed_form: {
+                const ClosedForm f = closed_form(metric, c, run);
+                add(m, f.value, f.why_not.empty() ? kOk : failed(f.why_not));
+                break;
+            }
+            case MetricSource::threshold: {
+                const ThresholdOutcome t = thresholds.get(c.wall_index, run_index, [&] {
+                    ThresholdOutcome o;
+                    guarded([&] { o.value_g = compare::find_threshold(engine, run.settings, c.scene).value_g; },
+                            o.failure);
+                    return o;
+                });
+                add(m, t.failure.empty() ? t.value_g : kNaN, t.failure.empty() ? kOk : failed(t.failure));
+                break;
+            }
+            case MetricSource::free: {
+                if (!free && free_failure.empty())
+                    guarded(
+                        [&] {
+                            compare::FreeVibrationOptions o;
+                            o.r = c.theta0;
+                            free = compare::run_free_vibration(engine, run.settings, c.scene, o);
+                        },
+                        free_failure);
+                if (!free) {
+                    add(m, kNaN, failed(free_failure));
+                } else if (metric == "period") {
+                    if (free->period) add(m, *free->period, kOk);
+                    else add(m, kNaN, failed(free->trajectory.overturned ? "no impact: the wall overturned"
+                                                                         : "no impact within the run"));
+                } else {  // restitution
+                    if (free->restitution) add(m, *free->restitution, kOk);
+                    else if (!free->restitution_note.empty()) add(m, kNaN, failed(free->restitution_note));
+                    else add(m, kNaN, failed(free->period ? "the first impact is not resolved by the samples"
+                                                          : "no impact within the run"));
+                }
+                break;
+            }
+            case MetricSource::response: {
+                if (!response && response_failure.empty())
+                    guarded(
+                        [&] {
+                            if (spec.kind == ExcitationKind::free) {
+                                if (!free && free_failure.empty()) {
+                                    compare::FreeVibrationOptions o;
+                                    o.r = c.theta0;
+                                    free = compare::run_free_vibration(engine, run.settings, c.scene, o);
+                                }
+                                if (!free) throw EngineFailure(free_failure);
+                                response = response_of(free->trajectory, c.scene);
+                            } else {
+                                const Trajectory t = run_from_rest(engine, run, c, case_motion(grid, c, c.scale));
+                                response = response_of(t, c.scene);
+                                response_warnings = t.warnings;
+                            }
+                        },
+                        response_failure);
+                if (!response) {
+                    add(m, kNaN, failed(response_failure));
+                    break;
+                }
+                const Response& r = *response;
+                if (metric == "peak_rotation") add(m, r.peak / alpha, kOk);
+                else if (metric == "peak_time") add(m, r.peak_time, kOk);
+                else if (metric == "overturned") add(m, r.overturned ? 1.0 : 0.0, kOk);
+                else if (metric == "t_overturn") add(m, r.t_overturn.value_or(kNaN), kOk);
+                else if (metric == "energy_balance_error") add(m, r.energy_error.value_or(kNaN), kOk);
+                else if (metric == "roller_tension_time") add(m, r.tension_at.value_or(kNaN), kOk);
+                break;
+            }
+            case MetricSource::collapse: {
+                std::string failure;
+                if (!collapse) {
+                    guarded([&] { collapse = collapse_scale(grid, c, run, engine); }, failure);
+                    if (!collapse) collapse = Collapse{kNaN, failure};
+                }
+                const double scale = collapse->scale;
+                const double value =
+                    metric == "collapse_scale" ? scale : scale * grid.record(c.file).pga() / kStandardGravity;
+                add(m, value, collapse->why_not.empty() ? kOk : failed(collapse->why_not));
+                break;
+            }
+        }
+    }
+    // The analytic model's warnings from the run the rows come from (a threshold's trials have none to report).
+    std::vector<std::string> warnings;
+    if (free) warnings = free->trajectory.warnings;
+    if (response_warnings) warnings = *response_warnings;
+    std::string joined;
+    for (const std::string& w : warnings) joined += (joined.empty() ? "" : "; ") + one_line(w);
+    for (Measurement& m : out) m.warnings = joined;
+    return out;
+}
+
+double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
+    // Simulated seconds, roughly: a threshold search is ~17 trials of a few seconds; a free vibration a few seconds;
+    // a pulse or a record its duration and the tail; a collapse search ~35 such runs.
+    const StudySpec& spec = grid.spec();
+    double seconds = 0.0;
+    for (const std::string& metric : spec.metrics) {
+        switch (metric_info(metric).source) {
+            case MetricSource::closed_form: break;
+            case MetricSource::threshold: seconds += 17.0 * 2.5; break;
+            case MetricSource::free: seconds += 5.0; break;
+            case MetricSource::response:
+                seconds += spec.kind == ExcitationKind::free ? 5.0
+                           : spec.kind == ExcitationKind::pulse ? 3.0 * c.pulse_period + c.duration + kResponseTail
+                                                                : grid.record(c.file).duration() + kResponseTail;
+                break;
+            case MetricSource::collapse: seconds += 35.0 * (grid.record(c.file).duration() + kResponseTail); break;
+        }
+    }
+    double cost = seconds * compare::cost_per_simulated_second(run.engine);
+    if (run.engine != "analytic" && run.settings.dt > 0.0)
+        cost *= multibody::make_engine(run.engine)->default_settings().dt / run.settings.dt;
+    return cost;
+}
+
+}  // namespace vssw::study

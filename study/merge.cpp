@@ -1,0 +1,157 @@
+#include "study/merge.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "study/atomic_file.hpp"
+#include "study/csv.hpp"
+#include "study/outputs.hpp"
+#include "study/runner.hpp"
+
+namespace vssw::study {
+namespace fs = std::filesystem;
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// One shard's results.csv, read a case's block at a time.
+struct ShardReader {
+    fs::path path;
+    std::ifstream in;
+    std::vector<std::string> header, next;  // `next`: the first row not yet taken (empty at the end)
+    long case_id = -1;
+
+    explicit ShardReader(const fs::path& p) : path(p), in(p, std::ios::binary) {
+        if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+        if (!read_csv_record(in, header) || header.empty() || header.front() != "case_id")
+            throw InputError(fmt::format("'{}' is not a study's results.csv", path.string()));
+        advance();
+    }
+    void advance() {
+        next.clear();
+        case_id = -1;
+        if (!read_csv_record(in, next)) return;
+        if (next.size() != header.size())
+            throw InputError(fmt::format("'{}': a row with {} fields, the header has {}", path.string(), next.size(),
+                                         header.size()));
+        char* end = nullptr;
+        case_id = std::strtol(next[0].c_str(), &end, 10);
+        if (next[0].empty() || *end != '\0')
+            throw InputError(fmt::format("'{}': case_id '{}' is not a number", path.string(), next[0]));
+    }
+};
+
+}  // namespace
+
+MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out) {
+    if (dirs.empty()) throw InputError("study merge: name the shards' folders");
+    std::vector<Json> manifests;
+    std::set<int> ks;
+    for (const fs::path& d : dirs) {
+        std::error_code ec;
+        if (fs::exists(d / kJournalFile, ec))
+            throw InputError(fmt::format("study merge: '{}' holds an unfinished shard ({}): finish it with --resume",
+                                         d.string(), kJournalFile));
+        manifests.push_back(read_manifest(d));
+        const Json& m = manifests.back();
+        const Json& first = manifests.front();
+        if (m.at("study").at("identity") != first.at("study").at("identity"))
+            throw InputError(fmt::format("study merge: '{}' holds another study ({}) than '{}' ({})", d.string(),
+                                         m["study"]["name"].get<std::string>(), dirs.front().string(),
+                                         first["study"]["name"].get<std::string>()));
+        if (m.at("shard").at("n") != first.at("shard").at("n"))
+            throw InputError(fmt::format("study merge: '{}' is shard {}/{}, '{}' of a split into {}", d.string(),
+                                         m["shard"]["k"].get<int>(), m["shard"]["n"].get<int>(),
+                                         dirs.front().string(), first["shard"]["n"].get<int>()));
+        if (!ks.insert(m["shard"]["k"].get<int>()).second)
+            throw InputError(fmt::format("study merge: shard {} is given twice ('{}')", m["shard"]["k"].get<int>(),
+                                         d.string()));
+    }
+    const int n = manifests.front()["shard"]["n"].get<int>();
+    std::vector<int> missing;
+    for (int k = 1; k <= n; ++k)
+        if (!ks.count(k)) missing.push_back(k);
+    if (!missing.empty())
+        throw InputError(fmt::format("study merge: shard{} {} of {} missing", missing.size() == 1 ? "" : "s",
+                                     fmt::join(missing, ", "), n));
+
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", out.string(), ec.message()));
+
+    // results.csv: the shards' case blocks in case order (each shard's file is in case order already).
+    std::vector<std::unique_ptr<ShardReader>> readers;
+    for (const fs::path& d : dirs) {
+        readers.push_back(std::make_unique<ShardReader>(d / kResultsCsv));
+        if (readers.back()->header != readers.front()->header)
+            throw InputError(fmt::format("study merge: '{}' has other columns than '{}'", readers.back()->path.string(),
+                                         readers.front()->path.string()));
+    }
+    MergeResult result;
+    result.shards = n;
+    const std::size_t status = static_cast<std::size_t>(
+        std::find(readers.front()->header.begin(), readers.front()->header.end(), "status") -
+        readers.front()->header.begin());
+    {
+        AtomicFile csv(out / kResultsCsv);
+        const std::vector<std::string>& header = readers.front()->header;
+        for (std::size_t i = 0; i < header.size(); ++i) csv.stream() << (i ? "," : "") << csv_field(header[i]);
+        csv.stream() << '\n';
+        for (;;) {
+            ShardReader* pick = nullptr;
+            for (const auto& r : readers)
+                if (r->case_id >= 0 && (!pick || r->case_id < pick->case_id)) pick = r.get();
+            if (!pick) break;
+            const long id = pick->case_id;
+            for (const auto& r : readers)
+                if (r.get() != pick && r->case_id == id)
+                    throw InputError(fmt::format("study merge: case {} is in two shards", id));
+            while (pick->case_id == id) {
+                for (std::size_t i = 0; i < pick->next.size(); ++i)
+                    csv.stream() << (i ? "," : "") << csv_field(pick->next[i]);
+                csv.stream() << '\n';
+                ++result.rows;
+                if (status < pick->next.size() && pick->next[status] != "ok") ++result.failed_rows;
+                pick->advance();
+            }
+        }
+        csv.commit();
+    }
+
+    // The manifest of the whole study: the shards' run times side by side, the longest as the study's (shards run in
+    // parallel), the tasks summed.
+    Json merged = manifests.front();
+    merged["shard"] = {{"k", 1}, {"n", 1}};
+    Json shards = Json::array();
+    double longest = 0.0;
+    long run = 0, resumed = 0, cases = 0;
+    for (const Json& m : manifests) {
+        cases += m["cases"]["run"].get<long>();
+        shards.push_back({{"k", m["shard"]["k"]}, {"wall_time_s", m["wall_time_s"]}, {"threads", m["threads"]},
+                          {"processes", m["processes"]}, {"date", m["date"]}});
+        longest = std::max(longest, m["wall_time_s"].get<double>());
+        run += m["tasks"]["run"].get<long>();
+        resumed += m["tasks"]["resumed"].get<long>();
+    }
+    std::sort(shards.begin(), shards.end(), [](const Json& a, const Json& b) { return a["k"] < b["k"]; });
+    merged["merged_from"] = shards;
+    merged["tasks"] = {{"run", run}, {"resumed", resumed}};
+    merged["cases"]["run"] = cases;
+    merged["wall_time_s"] = longest;
+    {
+        AtomicFile manifest(out / kManifestFile);
+        manifest.stream() << merged.dump(2) << '\n';
+        manifest.commit();
+    }
+    return result;
+}
+
+}  // namespace vssw::study

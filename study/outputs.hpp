@@ -1,0 +1,31 @@
+#pragma once
+// What a study folder holds besides results.csv and manifest.json, written from those two alone (so that one run, a
+// resumed run and a merge of shards are written by the same code):
+//   results.json           the manifest's keys and every row (results_files.hpp)
+//   plots/                 gnuplot SVGs with their .gp scripts and .dat data (study/plots.hpp)
+//   study.md, study.html   the study in plain words, the largest sensitivities first, the plots inline
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace vssw::study {
+
+struct OutputOptions {
+    bool plots = true;                // false: --no-plots
+    std::string gnuplot = "gnuplot";  // the program (looked up in PATH unless it holds a '/')
+};
+
+struct OutputFiles {
+    std::vector<std::filesystem::path> written;
+    std::vector<std::string> warnings;  // for stderr, one line each (e.g. gnuplot missing)
+};
+
+// DIR/manifest.json as JSON (InputError naming it when it is missing or malformed).
+nlohmann::ordered_json read_manifest(const std::filesystem::path& dir);
+
+// InputError naming the file when DIR's results cannot be read or a file cannot be written.
+OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options);
+
+}  // namespace vssw::study

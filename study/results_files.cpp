@@ -1,0 +1,165 @@
+#include "study/results_files.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <ostream>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "study/csv.hpp"
+#include "study/metric_catalog.hpp"
+
+namespace vssw::study {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Columns whose values are numbers in results.json (the rest are words; empty is null in both).
+const std::set<std::string> kNumericColumns = {
+    "case_id", "height", "thickness", "hinge",  "xi",     "density",  "g",        "theta0",   "scale",
+    "pga",     "amplitude", "pulse_period", "alpha", "R", "alpha1", "alpha2", "R1", "specimen", "duration",
+    "tolerance", "max_pga", "value"};
+
+}  // namespace
+
+std::vector<std::string> results_header(const Grid& grid) {
+    std::vector<std::string> h = {"case_id", "engine"};
+    h.insert(h.end(), grid.columns().begin(), grid.columns().end());
+    for (const char* c : {"metric", "value", "unit", "status", "warnings"}) h.push_back(c);
+    return h;
+}
+
+void write_results_csv(std::ostream& out, const Grid& grid, const std::vector<ResultRow>& rows) {
+    const std::vector<std::string> header = results_header(grid);
+    for (std::size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i];
+    out << '\n';
+    const StudySpec& spec = grid.spec();
+    int cached_id = 0;
+    CaseSpec c;
+    for (const ResultRow& r : rows) {
+        if (r.case_id != cached_id) {
+            c = grid.make_case(r.case_id);
+            cached_id = r.case_id;
+        }
+        const RunSpec& run = grid.runs().at(r.run);
+        const std::string& metric = spec.metrics.at(r.metric);
+        out << r.case_id << ',' << csv_field(run.engine);
+        for (const std::string& v : grid.column_values(c, run)) out << ',' << csv_field(v);
+        // Shortest exact form: a value reads back to the same double, and a tidy file stays short.
+        const std::string value = std::isfinite(r.value) ? fmt::format("{}", r.value) : "";
+        out << ',' << metric << ',' << value << ',' << csv_field(metric_info(metric).unit) << ','
+            << csv_field(r.status) << ',' << csv_field(r.warnings) << '\n';
+    }
+}
+
+Json manifest_json(const Grid& grid, const StudyMeta& meta) {
+    const StudySpec& spec = grid.spec();
+    Json engines = Json::array();
+    for (const EngineVersion& e : meta.engines) engines.push_back({{"name", e.name}, {"version", e.version}});
+    Json runs = Json::array();
+    for (const RunSpec& r : grid.runs()) {
+        Json j = {{"engine", r.engine}, {"settings", r.settings_text}};
+        if (r.engine == "analytic")
+            for (std::size_t i = 0; i < spec.assumptions.size(); ++i)
+                j[spec.assumptions[i].key] = to_text(r.assumptions[i]);
+        runs.push_back(j);
+    }
+    Json metrics = Json::array();
+    for (const std::string& m : spec.metrics) {
+        const MetricInfo& info = metric_info(m);
+        metrics.push_back({{"name", m}, {"unit", info.unit}, {"description", info.description}});
+    }
+    Json j;
+    j["vssw"] = {{"commit", meta.commit}, {"study_format", kStudyFormat}};
+    j["study"] = {{"name", spec.name},
+                  {"description", spec.description},
+                  {"file", spec.path},
+                  {"base_dir", spec.base_dir},
+                  {"identity", grid.identity()},
+                  {"kind", to_string(spec.kind)},
+                  {"as_read", spec.as_read}};
+    j["shard"] = {{"k", meta.shard.k}, {"n", meta.shard.n}};
+    j["date"] = meta.date;
+    j["engines"] = engines;
+    j["columns"] = results_header(grid);
+    j["varied"] = grid.varied_parameters();
+    j["metrics"] = metrics;
+    j["cases"] = {{"in_grid", grid.product_size()}, {"run", grid.case_ids().size()}};
+    j["runs"] = runs;
+    j["skipped_runs"] = grid.skipped_runs();
+    j["tasks"] = {{"run", meta.tasks_run}, {"resumed", meta.tasks_resumed}};
+    j["wall_time_s"] = meta.wall_time_s;
+    j["threads"] = meta.threads;
+    j["processes"] = meta.processes;
+    return j;
+}
+
+std::size_t ResultsTable::column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw InputError(fmt::format("results.csv has no column '{}'", name));
+    return static_cast<std::size_t>(it - header.begin());
+}
+
+bool ResultsTable::has(const std::string& name) const {
+    return std::find(header.begin(), header.end(), name) != header.end();
+}
+
+ResultsTable read_results_csv(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+    ResultsTable t;
+    try {
+        if (!read_csv_record(in, t.header) || t.header.empty() || t.header.front() != "case_id")
+            throw InputError("no header line starting with case_id");
+        std::vector<std::string> fields;
+        while (read_csv_record(in, fields)) {
+            if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
+            if (fields.size() != t.header.size())
+                throw InputError(fmt::format("row {} has {} fields, the header {}", t.rows.size() + 2, fields.size(),
+                                             t.header.size()));
+            t.rows.push_back(fields);
+        }
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+    }
+    return t;
+}
+
+void write_results_json(std::ostream& out, const Json& manifest, const std::filesystem::path& csv) {
+    // Streamed: the manifest's keys, then "rows" one object at a time, so that a large study needs no large JSON
+    // value in memory.
+    std::string head = manifest.dump(2);
+    head.pop_back();  // the closing brace
+    while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
+    out << head << ",\n  \"rows\": [";
+    std::ifstream in(csv, std::ios::binary);
+    if (!in) throw InputError(fmt::format("cannot read '{}'", csv.string()));
+    std::vector<std::string> header, fields;
+    read_csv_record(in, header);
+    bool first = true;
+    while (read_csv_record(in, fields)) {
+        if (fields.size() != header.size()) continue;
+        Json row;
+        for (std::size_t i = 0; i < header.size(); ++i) {
+            const std::string& v = fields[i];
+            if (v.empty()) row[header[i]] = nullptr;
+            else if (header[i] == "case_id" || header[i] == "specimen") row[header[i]] = std::strtol(v.c_str(), nullptr, 10);
+            else if (kNumericColumns.count(header[i])) row[header[i]] = std::strtod(v.c_str(), nullptr);
+            else row[header[i]] = v;
+        }
+        out << (first ? "\n    " : ",\n    ") << row.dump();
+        first = false;
+    }
+    out << (first ? "]\n}\n" : "\n  ]\n}\n");
+}
+
+StudySpec spec_of_manifest(const Json& manifest) {
+    const Json& s = manifest.at("study");
+    return study_from_json(nlohmann::json::parse(s.at("as_read").dump()), s.at("file").get<std::string>(),
+                           s.at("base_dir").get<std::string>());
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,65 @@
+#pragma once
+// The machine-readable files of a study, in its output folder:
+//   results.csv    tidy, one row per case x run x metric:
+//                  case_id, engine, <the parameter columns of Grid::columns()>, metric, value, unit, status,
+//                  warnings (the analytic model's own assumptions failing along the run, "; "-joined)
+//                  in case, run, metric order (the file's, never the threads'); value empty when there is none;
+//                  status "ok" or "failed: <reason>"
+//   manifest.json  the study as read, its identity, the shard, the engines' versions, the commit, the wall time:
+//                  what `vssw study merge` and `--resume` check, and what results.json starts with
+//   results.json   the manifest's keys and the rows of results.csv as objects (numbers as numbers, empty as null)
+// Each is written to a temporary file and renamed into place (study/atomic_file.hpp).
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "study/grid.hpp"
+#include "study/journal.hpp"
+
+namespace vssw::study {
+
+// Bumped when a key or a column changes meaning (never for an added one).
+constexpr int kStudyFormat = 1;
+
+struct EngineVersion {
+    std::string name, version;
+};
+
+struct StudyMeta {
+    std::string commit;  // vssw's git commit, "" when unknown
+    std::string date;    // ISO 8601 UTC, when the study ended
+    Shard shard;
+    std::vector<EngineVersion> engines;
+    double wall_time_s = 0.0;
+    int threads = 1;    // worker threads per process
+    int processes = 1;  // MPI processes (1 without MPI)
+    long tasks_run = 0, tasks_resumed = 0;  // this run's tasks, and those a --resume found done
+};
+
+// The header line's fields: case_id, engine, the grid's columns, metric, value, unit, status.
+std::vector<std::string> results_header(const Grid& grid);
+// rows sorted by (case_id, run, metric).
+void write_results_csv(std::ostream& out, const Grid& grid, const std::vector<ResultRow>& rows);
+nlohmann::ordered_json manifest_json(const Grid& grid, const StudyMeta& meta);
+
+// A results.csv read back (by the merge and by the writers of plots and prose, so that a merged study and a single
+// run are written by the same code). InputError naming the file on a malformed one.
+struct ResultsTable {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+    // Index of a column; InputError naming it when absent.
+    std::size_t column(const std::string& name) const;
+    bool has(const std::string& name) const;
+};
+ResultsTable read_results_csv(const std::filesystem::path& path);
+
+// results.json from the manifest and results.csv (streamed row by row).
+void write_results_json(std::ostream& out, const nlohmann::ordered_json& manifest, const std::filesystem::path& csv);
+
+// The study as a manifest names it, without its records (for writers that need only its keys).
+StudySpec spec_of_manifest(const nlohmann::ordered_json& manifest);
+
+}  // namespace vssw::study

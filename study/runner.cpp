@@ -1,0 +1,191 @@
+#include "study/runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "compare/task_pool.hpp"
+#include "multibody/engine.hpp"
+#include "study/atomic_file.hpp"
+#include "study/measure.hpp"
+#include "study/mpi.hpp"
+
+namespace vssw::study {
+namespace fs = std::filesystem;
+namespace {
+
+std::string utc_now() {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return text;
+}
+
+// The identity and shard an existing manifest records ("" when there is none or it does not read).
+std::string recorded_study(const fs::path& manifest) {
+    std::ifstream in(manifest);
+    if (!in) return "";
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        return fmt::format("{} {}/{}", j.at("study").at("identity").get<std::string>(), j.at("shard").at("k").get<int>(),
+                           j.at("shard").at("n").get<int>());
+    } catch (const std::exception&) {
+        return "";
+    }
+}
+
+struct Task {
+    int case_id;
+    std::size_t run;
+    double cost;
+    std::size_t engine;  // index into the study's engine objects (the pool's group)
+};
+
+}  // namespace
+
+void prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw InputError(fmt::format("--out '{}' is not a folder", dir.string()));
+    const bool journal = fs::exists(dir / kJournalFile, ec);
+    const std::string this_study =
+        fmt::format("{} {}/{}", grid.identity(), options.shard.k, options.shard.n);
+    if (options.resume) {
+        if (!journal && recorded_study(dir / kManifestFile) != this_study)
+            throw InputError(fmt::format("--resume: '{}' holds no journal of this study to resume (and no finished "
+                                         "results of it)",
+                                         dir.string()));
+    } else if (journal) {
+        throw InputError(fmt::format("'{}' holds an unfinished study ({}): add --resume to finish it, or give another "
+                                     "--out",
+                                     dir.string(), kJournalFile));
+    }
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", dir.string(), ec.message()));
+    AtomicFile probe(dir / ".vssw-write-test");  // InputError naming the folder when nothing can be written there
+}
+
+StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    require(options.shard.n >= 1 && options.shard.k >= 1 && options.shard.k <= options.shard.n, "shard",
+            "k/n with 1 <= k <= n", options.shard.k);
+    const bool writer = options.mpi == nullptr || options.mpi->rank() == 0;
+
+    // Engines: one object each, shared by every task (simulate() is const; ODE's runs are serialised by the pool).
+    std::vector<std::unique_ptr<multibody::Engine>> engines;
+    std::vector<bool> exclusive;
+    StudyRunResult result;
+    result.writer = writer;
+    for (const EngineSpec& e : grid.spec().engines) {
+        engines.push_back(multibody::make_engine(e.name));
+        exclusive.push_back(!engines.back()->runs_concurrently());
+        result.meta.engines.push_back({e.name, engines.back()->version()});
+    }
+    const auto engine_index = [&](const std::string& name) {
+        for (std::size_t i = 0; i < engines.size(); ++i)
+            if (engines[i]->name() == name) return i;
+        throw InputError(fmt::format("study: no engine '{}'", name));
+    };
+
+    // The journal: a new one, or the one to resume (its finished tasks are skipped).
+    std::set<TaskKey> done;
+    std::unique_ptr<Journal> journal;
+    const fs::path journal_path = dir / kJournalFile;
+    if (writer) {
+        std::error_code ec;
+        if (options.resume && fs::exists(journal_path, ec))
+            journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard, done);
+        else if (!options.resume || !fs::exists(dir / kResultsCsv, ec))
+            journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard);
+    }
+
+    std::vector<Task> tasks;
+    for (const int id : grid.shard_case_ids(options.shard.k, options.shard.n)) {
+        const CaseSpec c = grid.make_case(id);
+        for (std::size_t r = 0; r < grid.runs().size(); ++r) {
+            const RunSpec& run = grid.runs()[r];
+            if (!grid.run_applies(run, c)) continue;
+            if (done.count({id, r})) {
+                ++result.meta.tasks_resumed;
+                continue;
+            }
+            tasks.push_back({id, r, estimated_cost(grid, c, run), engine_index(run.engine)});
+        }
+    }
+    // --resume of a study whose results are complete: nothing to run, its files stand.
+    if (writer && !journal) {
+        result.meta.tasks_resumed = static_cast<long>(tasks.size());
+        tasks.clear();
+    }
+
+    ThresholdCache thresholds;
+    std::mutex progress_mutex;
+    long finished = 0;
+    const long total = static_cast<long>(tasks.size());
+    const auto run_task = [&](std::size_t i) {
+        const Task& t = tasks[i];
+        const CaseSpec c = grid.make_case(t.case_id);
+        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *engines[t.engine], thresholds));
+    };
+    const auto note_progress = [&](const std::string& what) {
+        if (!options.progress) return;
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        options.progress(++finished, total, what);
+    };
+
+    std::vector<compare::PoolTask> pool;
+    for (const Task& t : tasks) pool.push_back({t.cost, t.engine});
+    if (options.mpi) {
+        run_tasks_mpi(*options.mpi, pool, run_task, [&](const std::string& text) {
+            journal->append_text(text);
+            note_progress("task");
+        });
+        result.meta.threads = 1;
+        result.meta.processes = options.mpi->size();
+    } else {
+        result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
+            journal->append_text(run_task(i));
+            note_progress(fmt::format("case {} {}", tasks[i].case_id, grid.runs()[tasks[i].run].engine));
+        });
+    }
+    result.meta.tasks_run = total;
+    if (!writer) return result;
+
+    // Sorted into results.csv; the journal goes once the results are in place.
+    if (journal) {
+        journal->close();
+        std::vector<ResultRow> rows = read_journal(journal_path);
+        std::stable_sort(rows.begin(), rows.end(), [](const ResultRow& a, const ResultRow& b) {
+            return std::tie(a.case_id, a.run, a.metric) < std::tie(b.case_id, b.run, b.metric);
+        });
+        for (const ResultRow& r : rows) result.failed_rows += r.status == "ok" ? 0 : 1;
+        result.rows = static_cast<long>(rows.size());
+        AtomicFile csv(dir / kResultsCsv);
+        write_results_csv(csv.stream(), grid, rows);
+        csv.commit();
+    }
+    result.meta.commit = options.commit;
+    result.meta.date = utc_now();
+    result.meta.shard = options.shard;
+    result.meta.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (journal) {
+        AtomicFile manifest(dir / kManifestFile);
+        manifest.stream() << manifest_json(grid, result.meta).dump(2) << '\n';
+        manifest.commit();
+        std::error_code ec;
+        fs::remove(journal_path, ec);
+    }
+    return result;
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,48 @@
+#pragma once
+// Running a study: the shard's tasks (case x run) that are not done yet, longest first, on threads in this process
+// (compare/task_pool.hpp) or handed out to MPI processes (study/mpi.hpp); every finished task's rows go to the journal
+// at once (study/journal.hpp). At the end the rows are sorted into results.csv and the manifest is written; the
+// journal is removed. Rows and their order depend on the study file and the shard only.
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "study/grid.hpp"
+#include "study/journal.hpp"
+#include "study/results_files.hpp"
+
+namespace vssw::study {
+
+struct StudyRunOptions {
+    int threads = 0;     // 0: the available cores (one per process under MPI)
+    Shard shard;
+    bool resume = false;  // continue DIR/journal.csv: its finished tasks are not run again
+    std::string commit;
+    // Under mpirun: the session whose processes share the tasks (nullptr: this process alone, on `threads` threads).
+    const class MpiSession* mpi = nullptr;
+    // Called after each task (serialised): tasks done (this run), tasks to do (this run), what.
+    std::function<void(long done, long total, const std::string& what)> progress;
+};
+
+struct StudyRunResult {
+    StudyMeta meta;
+    long rows = 0, failed_rows = 0;
+    bool writer = true;  // this process wrote the outputs (false on MPI ranks other than 0)
+};
+
+// Checks DIR before anything runs (InputError): it must be a folder this process can write (it is created if
+// missing); without --resume it must hold no journal of an unfinished study (resume it or choose another folder);
+// with --resume it must hold this study's journal, or results of this study already complete.
+void prepare_study_dir(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
+
+// Runs the study into DIR (results.csv, manifest.json). InputError on bad input (nothing runs); a failing task is rows
+// with their reasons.
+StudyRunResult run_study(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
+
+// The file names in DIR.
+constexpr const char* kJournalFile = "journal.csv";
+constexpr const char* kResultsCsv = "results.csv";
+constexpr const char* kResultsJson = "results.json";
+constexpr const char* kManifestFile = "manifest.json";
+
+}  // namespace vssw::study

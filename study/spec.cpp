@@ -1,0 +1,443 @@
+#include "study/spec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "analytic/ground_motion.hpp"
+#include "study/config_file.hpp"
+#include "study/metric_catalog.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::study {
+
+const std::vector<std::string> kWallKeys = {"model", "height", "thickness", "hinge", "xi",     "density", "g",
+                                            "alpha", "R",      "alpha1",    "alpha2", "R1"};
+const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
+const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
+                                                  "pga",          "shape",    "amplitude", "pulse_period",
+                                                  "duration",     "tolerance", "max_pga"};
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kWhat = "study file";
+const std::vector<std::string> kTopKeys = {"name", "description", "metrics", "engines",
+                                           "wall", "assumptions", "excitation", "settings"};
+// The analytic backend's knobs that stand for assumptions: the file gives them in [assumptions], where they vary
+// and have columns of their own.
+const std::vector<std::string> kAssumptionKnobs = {"paper_kinematics", "restitution", "whole_mechanism_impact",
+                                                   "unilateral_roller"};
+// compare's smallest release (apps/cmd_compare.cpp): below it an engine's elastic rotation and step are no longer
+// small against the motion, and the analytic wall comes to rest without an impact to measure.
+constexpr double kMinTheta0 = 0.01;
+// Engines' solver iterations, as `vssw compare --iterations` (apps/option_values.hpp kMaxIterations).
+constexpr int kMaxIterations = 1000;
+
+bool contains(const std::vector<std::string>& list, const std::string& x) {
+    return std::find(list.begin(), list.end(), x) != list.end();
+}
+
+// Messages name the file and the key: "study file s.toml: wall.thickness: ...".
+class Reader {
+public:
+    explicit Reader(std::string name) : name_(std::move(name)) {}
+
+    [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+        throw InputError(fmt::format("{} {}: {}{}", kWhat, name_, key.empty() ? "" : key + ": ", message));
+    }
+
+    const json& table(const json& doc, const std::string& key, const std::vector<std::string>& known) const {
+        const json& t = doc.at(key);
+        if (!t.is_object()) fail(key, fmt::format("must be a table of keys, got {}", t.dump()));
+        unknown_keys(t, key, known);
+        return t;
+    }
+
+    void unknown_keys(const json& t, const std::string& where, const std::vector<std::string>& known) const {
+        for (const auto& item : t.items())
+            if (!contains(known, item.key()))
+                fail(where, fmt::format("unknown key '{}' (known: {})", item.key(), fmt::join(known, ", ")));
+    }
+
+    // A scalar or a non-empty list of scalars, each checked by `check` (which returns the level or calls fail).
+    template <class Check>
+    Axis axis(const json& value, const std::string& key, Check check) const {
+        Axis a{key.substr(key.rfind('.') + 1), {}};
+        if (value.is_array()) {
+            if (value.empty()) fail(key, "an empty list: give at least one value");
+            for (const json& v : value) a.levels.push_back(check(v));
+        } else {
+            a.levels.push_back(check(value));
+        }
+        for (std::size_t i = 0; i < a.levels.size(); ++i)
+            for (std::size_t j = 0; j < i; ++j)
+                if (a.levels[i] == a.levels[j])
+                    fail(key, fmt::format("lists {} twice (each value once: the grid would repeat cases)",
+                                          to_text(a.levels[i])));
+        return a;
+    }
+
+    double number(const json& v, const std::string& key, const std::string& rule) const {
+        // JSON has no NaN; TOML's nan and inf come through the JSON formatter as text or non-numbers.
+        if (!v.is_number() || !std::isfinite(v.get<double>()))
+            fail(key, fmt::format("must be a finite number ({}), got {}", rule, v.dump()));
+        return v.get<double>();
+    }
+    double positive(const json& v, const std::string& key, const std::string& rule) const {
+        const double x = number(v, key, rule);
+        if (!(x > 0.0)) fail(key, fmt::format("must be {}, got {}", rule, v.dump()));
+        return x;
+    }
+    std::string word(const json& v, const std::string& key, const std::vector<std::string>& allowed) const {
+        if (!v.is_string() || (!allowed.empty() && !contains(allowed, v.get<std::string>())))
+            fail(key, fmt::format("must be one of {}, got {}", fmt::join(allowed, ", "), v.dump()));
+        return v.get<std::string>();
+    }
+
+    const std::string& name() const { return name_; }
+
+private:
+    std::string name_;
+};
+
+Level wall_level(const Reader& r, const std::string& key, const json& v) {
+    const std::string k = key.substr(key.rfind('.') + 1);
+    if (k == "model") return r.word(v, key, {"vssw", "parapet"});
+    if (k == "hinge") {
+        if (v.is_string()) return r.word(v, key, {"eq15"});
+        return r.number(v, key, "h1/h in (0, 1), or \"eq15\" for Eq. (15)'s hinge");
+    }
+    if (k == "specimen") {
+        const double x = r.number(v, key, "a Table 1 specimen number");
+        if (x != std::floor(x) || x < 1.0) r.fail(key, fmt::format("must be a Table 1 specimen number, got {}", v.dump()));
+        return x;
+    }
+    if (k == "xi") {
+        const double x = r.number(v, key, "N/W >= 0");
+        if (x < 0.0) r.fail(key, fmt::format("must be N/W >= 0, got {}", v.dump()));
+        return x;
+    }
+    // Lengths, angles, density, g: positive; their ranges are the wall constructors' (analytic/wall.hpp), checked
+    // when the grid's walls are built, naming the value.
+    return r.positive(v, key, "a positive number");
+}
+
+Level assumption_level(const Reader& r, const std::string& key, const json& v) {
+    const std::string k = key.substr(key.rfind('.') + 1);
+    if (k == "kinematics") return r.word(v, key, {"paper", "exact"});
+    if (k == "roller") return r.word(v, key, {"bilateral", "unilateral"});
+    // impact: a law by name or an impact ratio.
+    if (v.is_string()) return r.word(v, key, {"eq19", "whole-mechanism"});
+    const double e = r.number(v, key, "eq19, whole-mechanism or a ratio in [0, 1]");
+    if (e < 0.0 || e > 1.0) r.fail(key, fmt::format("an impact ratio must be in [0, 1], got {}", v.dump()));
+    return e;
+}
+
+Level excitation_level(const Reader& r, const std::string& key, const json& v) {
+    const std::string k = key.substr(key.rfind('.') + 1);
+    if (k == "file") {
+        if (!v.is_string() || v.get<std::string>().empty())
+            r.fail(key, fmt::format("must be the path of a record file, got {}", v.dump()));
+        return v.get<std::string>();
+    }
+    if (k == "units") {
+        const std::string u = r.word(v, key, {});
+        try {
+            (void)parse_units(u);
+        } catch (const InputError& e) {
+            r.fail(key, e.what());
+        }
+        return u;
+    }
+    if (k == "shape") return r.word(v, key, {"sine", "cosine", "ricker", "harmonic"});
+    if (k == "theta0") {
+        const double x = r.number(v, key, "a fraction of alpha");
+        if (x < kMinTheta0) r.fail(key, fmt::format("must be at least {} (a fraction of alpha), got {}", kMinTheta0, v.dump()));
+        return x;
+    }
+    if (k == "tolerance") {
+        const double x = r.number(v, key, "a relative width in (0, 0.1]");
+        if (!(x > 0.0 && x <= 0.1)) r.fail(key, fmt::format("must be a relative width in (0, 0.1], got {}", v.dump()));
+        return x;
+    }
+    return r.positive(v, key, "a positive number");
+}
+
+// The keys each kind reads besides `kind`, and those it needs.
+struct KindKeys {
+    std::vector<std::string> allowed, required;
+};
+KindKeys kind_keys(ExcitationKind kind) {
+    switch (kind) {
+        case ExcitationKind::closed_form: return {{"theta0"}, {}};
+        case ExcitationKind::threshold: return {{}, {}};
+        case ExcitationKind::free: return {{"theta0"}, {"theta0"}};
+        case ExcitationKind::pulse:
+            return {{"shape", "amplitude", "pulse_period", "duration"}, {"shape", "amplitude", "pulse_period"}};
+        case ExcitationKind::record: return {{"file", "units", "scale", "pga"}, {"file"}};
+        case ExcitationKind::scale_to_collapse: return {{"file", "units", "tolerance", "max_pga"}, {"file"}};
+    }
+    return {};
+}
+
+ExcitationKind parse_kind(const Reader& r, const json& v) {
+    const std::string k = r.word(v, "excitation.kind",
+                                 {"closed-form", "threshold", "free", "pulse", "record", "scale-to-collapse"});
+    if (k == "closed-form") return ExcitationKind::closed_form;
+    if (k == "threshold") return ExcitationKind::threshold;
+    if (k == "free") return ExcitationKind::free;
+    if (k == "pulse") return ExcitationKind::pulse;
+    if (k == "record") return ExcitationKind::record;
+    return ExcitationKind::scale_to_collapse;
+}
+
+// The wall's geometry must come one way: height and thickness, alpha and R, alpha1-alpha2-R1, or a specimen.
+void check_wall_routes(const Reader& r, const json& wall) {
+    const auto has = [&](const char* k) { return wall.contains(k); };
+    const int routes = (has("height") || has("thickness") ? 1 : 0) + (has("alpha") || has("R") ? 1 : 0) +
+                       (has("alpha1") || has("alpha2") || has("R1") ? 1 : 0) + (has("specimen") ? 1 : 0);
+    if (routes != 1)
+        r.fail("wall", "give the geometry one way: height and thickness; alpha and R (the whole wall's slenderness "
+                       "and half-diagonal); alpha1, alpha2 and R1 (the paper's parameters); or specimen (Table 1)");
+    const auto pair = [&](const char* a, const char* b) {
+        if (has(a) != has(b)) r.fail("wall", fmt::format("'{}' needs '{}' too", has(a) ? a : b, has(a) ? b : a));
+    };
+    pair("height", "thickness");
+    pair("alpha", "R");
+    if ((has("alpha1") || has("alpha2") || has("R1")) && !(has("alpha1") && has("alpha2") && has("R1")))
+        r.fail("wall", "alpha1, alpha2 and R1 go together (the paper's parameters of a VSSW)");
+}
+
+std::vector<Axis> read_axes(const Reader& r, const json& t, const std::string& table,
+                            const std::vector<std::string>& order, Level (*level)(const Reader&, const std::string&,
+                                                                                  const json&)) {
+    std::vector<Axis> axes;
+    for (const std::string& k : order) {
+        if (!t.contains(k)) continue;
+        const std::string key = table + "." + k;
+        axes.push_back(r.axis(t.at(k), key, [&](const json& v) { return level(r, key, v); }));
+    }
+    return axes;
+}
+
+// [settings.NAME] or [engines.NAME]: dt, iterations, knobs; each a number or a list of numbers.
+std::vector<Axis> read_settings(const Reader& r, const json& t, const std::string& where, const std::string& engine) {
+    if (!t.is_object()) r.fail(where, fmt::format("must be a table of settings, got {}", t.dump()));
+    std::vector<Axis> axes;
+    // dt, iterations, then the knobs by name (a JSON object's keys come sorted).
+    std::vector<std::string> keys;
+    for (const char* first : {"dt", "iterations"})
+        if (t.contains(first)) keys.push_back(first);
+    for (const auto& item : t.items())
+        if (item.key() != "dt" && item.key() != "iterations") keys.push_back(item.key());
+    for (const std::string& k : keys) {
+        const std::string key = where + "." + k;
+        if (engine == "analytic" && contains(kAssumptionKnobs, k))
+            r.fail(key, "the analytic model's assumptions go in [assumptions] (kinematics, impact, roller), where they "
+                        "can vary and have columns of their own");
+        axes.push_back(r.axis(t.at(k), key, [&](const json& v) -> Level {
+            if (k == "dt") return r.positive(v, key, "the engine step in s, > 0");
+            const double x = r.number(v, key, "a number");
+            if (k == "iterations" && (x != std::floor(x) || x < 1.0 || x > kMaxIterations))
+                r.fail(key, fmt::format("must be an integer from 1 to {}, got {}", kMaxIterations, v.dump()));
+            return x;
+        }));
+    }
+    return axes;
+}
+
+std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
+    std::vector<EngineSpec> engines;
+    const std::vector<std::string> available = multibody::available_engines();
+    auto add = [&](const std::string& name, const std::string& key) {
+        if (!contains(available, name))
+            r.fail(key, fmt::format("no engine '{}' in this build (available: {})", name, fmt::join(available, ", ")));
+        if (std::any_of(engines.begin(), engines.end(), [&](const EngineSpec& e) { return e.name == name; }))
+            r.fail(key, fmt::format("names engine '{}' twice", name));
+        engines.push_back({name, {}});
+    };
+    if (!doc.contains("engines")) {
+        engines.push_back({"analytic", {}});
+    } else if (doc["engines"].is_array()) {
+        if (doc["engines"].empty()) r.fail("engines", "an empty list: name at least one engine");
+        for (const json& v : doc["engines"]) {
+            if (!v.is_string()) r.fail("engines", fmt::format("must list engine names, got {}", v.dump()));
+            add(v.get<std::string>(), "engines");
+        }
+    } else if (doc["engines"].is_object()) {
+        if (doc["engines"].empty()) r.fail("engines", "an empty table: name at least one engine");
+        // A table's keys have no order in TOML: the build's order of engines.
+        for (const std::string& name : available)
+            if (doc["engines"].contains(name)) {
+                add(name, "engines");
+                engines.back().settings = read_settings(r, doc["engines"][name], "engines." + name, name);
+            }
+        for (const auto& item : doc["engines"].items()) add(item.key(), "engines");  // unknown names fail here
+    } else {
+        r.fail("engines", fmt::format("must be a list of engine names or a table of engines, got {}",
+                                      doc["engines"].dump()));
+    }
+    if (doc.contains("settings")) {
+        const json& s = doc["settings"];
+        if (!s.is_object()) r.fail("settings", fmt::format("must be a table of engines, got {}", s.dump()));
+        for (const auto& item : s.items()) {
+            const auto it = std::find_if(engines.begin(), engines.end(),
+                                         [&](const EngineSpec& e) { return e.name == item.key(); });
+            if (it == engines.end())
+                r.fail("settings." + item.key(), "settings for an engine the study does not run (add it to engines)");
+            if (!it->settings.empty())
+                r.fail("settings." + item.key(), "settings given twice (in [engines." + item.key() + "] too)");
+            it->settings = read_settings(r, item.value(), "settings." + item.key(), item.key());
+        }
+    }
+    return engines;
+}
+
+}  // namespace
+
+std::string to_text(const Level& level) {
+    if (const auto* x = std::get_if<double>(&level)) return fmt::format("{}", *x);
+    return std::get<std::string>(level);
+}
+
+const char* to_string(ExcitationKind kind) {
+    switch (kind) {
+        case ExcitationKind::closed_form: return "closed-form";
+        case ExcitationKind::threshold: return "threshold";
+        case ExcitationKind::free: return "free";
+        case ExcitationKind::pulse: return "pulse";
+        case ExcitationKind::record: return "record";
+        case ExcitationKind::scale_to_collapse: return "scale-to-collapse";
+    }
+    return "unknown";
+}
+
+const Axis* StudySpec::wall_axis(const std::string& key) const {
+    for (const Axis& a : wall)
+        if (a.key == key) return &a;
+    return nullptr;
+}
+
+const Axis* StudySpec::excitation_axis(const std::string& key) const {
+    for (const Axis& a : excitation)
+        if (a.key == key) return &a;
+    return nullptr;
+}
+
+StudySpec study_from_json(const json& doc, const std::string& name, const std::string& base_dir) {
+    const Reader r(name);
+    if (!doc.is_object()) r.fail("", "the top level must be a table of keys");
+    r.unknown_keys(doc, "", kTopKeys);
+
+    StudySpec s;
+    s.path = name;
+    s.base_dir = base_dir;
+    s.as_read = doc;
+    if (doc.contains("name")) {
+        if (!doc["name"].is_string() || doc["name"].get<std::string>().empty())
+            r.fail("name", fmt::format("must be a non-empty string, got {}", doc["name"].dump()));
+        s.name = doc["name"].get<std::string>();
+    } else {
+        s.name = std::filesystem::path(name).stem().string();
+    }
+    if (doc.contains("description")) {
+        if (!doc["description"].is_string())
+            r.fail("description", fmt::format("must be a string, got {}", doc["description"].dump()));
+        s.description = doc["description"].get<std::string>();
+    }
+
+    if (!doc.contains("excitation")) r.fail("", "no [excitation] table (kind = closed-form, threshold, free, ...)");
+    const json& ex = doc["excitation"];
+    if (!ex.is_object()) r.fail("excitation", fmt::format("must be a table of keys, got {}", ex.dump()));
+    if (!ex.contains("kind")) r.fail("excitation", "'kind' is missing");
+    s.kind = parse_kind(r, ex["kind"]);
+    const KindKeys keys = kind_keys(s.kind);
+    std::vector<std::string> known = {"kind"};
+    known.insert(known.end(), keys.allowed.begin(), keys.allowed.end());
+    r.unknown_keys(ex, fmt::format("excitation (kind {})", to_string(s.kind)), known);
+    for (const std::string& k : keys.required)
+        if (!ex.contains(k)) r.fail("excitation", fmt::format("kind {} needs '{}'", to_string(s.kind), k));
+    if (ex.contains("scale") && ex.contains("pga")) r.fail("excitation", "give 'scale' or 'pga', not both");
+    s.excitation = read_axes(r, ex, "excitation", kExcitationKeys, excitation_level);
+    if (const Axis* shape = s.excitation_axis("shape")) {
+        const bool harmonic = std::find(shape->levels.begin(), shape->levels.end(), Level{"harmonic"}) !=
+                              shape->levels.end();
+        if (harmonic != ex.contains("duration"))
+            r.fail("excitation", harmonic ? "shape harmonic needs 'duration' (s)"
+                                          : "'duration' is for shape harmonic only (the pulses last one period, the "
+                                            "Ricker wavelet three)");
+    }
+
+    if (!doc.contains("wall")) r.fail("", "no [wall] table");
+    const json& wall = r.table(doc, "wall", kWallKeys);
+    check_wall_routes(r, wall);
+    s.wall = read_axes(r, wall, "wall", kWallKeys, wall_level);
+    const Axis* model = s.wall_axis("model");
+    const bool parapet_only = model && model->levels.size() == 1 && model->levels[0] == Level{"parapet"};
+    const bool angles = wall.contains("alpha1") || wall.contains("specimen");
+    if (!parapet_only && !angles && !wall.contains("hinge"))
+        r.fail("wall", "a VSSW needs 'hinge' (h1/h, or \"eq15\")");
+    if (model && angles &&
+        std::find(model->levels.begin(), model->levels.end(), Level{"parapet"}) != model->levels.end())
+        r.fail("wall", "alpha1-alpha2-R1 and specimen describe a VSSW: model must be vssw");
+
+    s.assumptions = {{"kinematics", {std::string("paper")}},
+                     {"impact", {std::string("eq19")}},
+                     {"roller", {std::string("bilateral")}}};
+    if (doc.contains("assumptions")) {
+        const json& a = r.table(doc, "assumptions", kAssumptionKeys);
+        for (Axis& axis : s.assumptions)
+            if (a.contains(axis.key)) {
+                const std::string key = "assumptions." + axis.key;
+                axis = r.axis(a[axis.key], key, [&](const json& v) { return assumption_level(r, key, v); });
+            }
+    }
+
+    s.engines = read_engines(r, doc);
+
+    if (doc.contains("metrics")) {
+        const json& m = doc["metrics"];
+        if (!m.is_array() || m.empty()) r.fail("metrics", fmt::format("must be a non-empty list of metric names, got {}", m.dump()));
+        for (const json& v : m) {
+            if (!v.is_string()) r.fail("metrics", fmt::format("must list metric names, got {}", v.dump()));
+            const std::string metric = v.get<std::string>();
+            try {
+                (void)metric_info(metric);
+            } catch (const InputError& e) {
+                r.fail("metrics", e.what());
+            }
+            if (contains(s.metrics, metric)) r.fail("metrics", fmt::format("names '{}' twice", metric));
+            s.metrics.push_back(metric);
+        }
+    } else {
+        s.metrics = default_metrics(s.kind);
+        if (s.metrics.empty()) r.fail("", "a closed-form study must name its metrics");
+    }
+    const bool analytic = std::any_of(s.engines.begin(), s.engines.end(),
+                                      [](const EngineSpec& e) { return e.name == "analytic"; });
+    for (const std::string& metric : s.metrics) {
+        const MetricInfo& info = metric_info(metric);
+        if (!kind_measures(s.kind, info))
+            r.fail("metrics", fmt::format("'{}' is not measured by an excitation of kind {}", metric, to_string(s.kind)));
+        if (info.analytic_only && !analytic)
+            r.fail("metrics", fmt::format("'{}' is the analytic model's: add \"analytic\" to engines", metric));
+    }
+    if (s.kind == ExcitationKind::closed_form &&
+        std::any_of(s.engines.begin(), s.engines.end(), [](const EngineSpec& e) { return e.name != "analytic"; }))
+        r.fail("engines", "a closed-form study runs no simulation: its engine is \"analytic\" only");
+    return s;
+}
+
+StudySpec read_study_file(const std::string& path) {
+    const json doc = read_config_file(path, kWhat);
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    return study_from_json(doc, path, dir.empty() ? std::string(".") : dir.string());
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,75 @@
+#pragma once
+// A study file as the program holds it: what varies (walls, the analytic model's assumptions, the excitation, the
+// engines' settings), what is run (engines) and what is measured (metrics). Read from TOML or JSON (the same keys);
+// every key given as a list varies, a scalar is fixed, and the grid is their Cartesian product (study/grid.hpp).
+//
+//   name = "hinge-and-overburden"
+//   metrics = ["threshold_g", "period", "restitution"]
+//   engines = ["analytic", "ode"]            # or [engines.ode] dt = 2e-4 (a table of engines with their settings)
+//   [wall]          model, height, thickness, hinge, xi, density, g   (or alpha and R; alpha1, alpha2 and R1;
+//                   specimen: a Table 1 number, data/table1.csv)
+//   [assumptions]   kinematics (paper | exact), impact (eq19 | whole-mechanism | a number in [0, 1]),
+//                   roller (bilateral | unilateral): the analytic model's; engines ignore them
+//   [excitation]    kind = closed-form | threshold | free | pulse | record | scale-to-collapse, and its keys
+//   [settings.ode]  dt = 2e-4, iterations, knobs by name (a list varies them)
+//
+// Everything is checked here or when the grid is built, before any case runs: an unknown key, a value of the wrong
+// type, an empty list, an engine not built, a metric the excitation cannot measure, a record that does not read:
+// InputError naming the file, the key and the value.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace vssw::study {
+
+// One level of a parameter: a number, or a word (a model, a kinematics, an impact law, a file, "eq15").
+using Level = std::variant<double, std::string>;
+// As written in results: a number in its shortest exact form ("0.356", "2e-04" becomes "0.0002"), a word as it is.
+std::string to_text(const Level& level);
+
+// A parameter and its levels, in the file's order (one level when the file gives a scalar).
+struct Axis {
+    std::string key;
+    std::vector<Level> levels;
+    bool varied() const { return levels.size() > 1; }
+};
+
+enum class ExcitationKind { closed_form, threshold, free, pulse, record, scale_to_collapse };
+const char* to_string(ExcitationKind kind);  // as in the file: "closed-form", "scale-to-collapse", ...
+
+// An engine of the study and the settings the file gives it (dt, iterations, knobs by name), each an axis.
+struct EngineSpec {
+    std::string name;
+    std::vector<Axis> settings;  // dt first, then iterations, then knobs by name
+};
+
+// The keys each table may hold, in the order their columns appear in results.csv.
+extern const std::vector<std::string> kWallKeys;        // model, height, thickness, hinge, xi, density, g, alpha, R, ...
+extern const std::vector<std::string> kAssumptionKeys;  // kinematics, impact, roller
+extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, scale, pga, shape, amplitude, ...
+
+struct StudySpec {
+    std::string name;
+    std::string description;
+    std::string path;      // the file as named ("" for a study built in memory)
+    std::string base_dir;  // where relative record paths start: the study file's folder
+    nlohmann::json as_read;  // the file's content as read (TOML as the JSON it stands for): results.json keeps it
+    std::vector<std::string> metrics;
+    std::vector<EngineSpec> engines;  // in the file's order
+    std::vector<Axis> wall;           // in kWallKeys order, only the keys given (defaults are the grid's)
+    std::vector<Axis> assumptions;    // every key of kAssumptionKeys, defaulted (paper, eq19, bilateral)
+    ExcitationKind kind = ExcitationKind::free;
+    std::vector<Axis> excitation;     // in kExcitationKeys order, only the keys given
+
+    const Axis* wall_axis(const std::string& key) const;        // nullptr when not given
+    const Axis* excitation_axis(const std::string& key) const;  // nullptr when not given
+};
+
+// Reads and checks a study file (.toml or .json).
+StudySpec read_study_file(const std::string& path);
+// The same from a document already parsed; `name` stands for the file in messages, `base_dir` for its folder.
+StudySpec study_from_json(const nlohmann::json& doc, const std::string& name, const std::string& base_dir);
+
+}  // namespace vssw::study
