@@ -68,7 +68,11 @@ EngineSettings AnalyticEngine::default_settings() const {
     return s;
 }
 
-void AnalyticEngine::check_settings(const EngineSettings& settings) const { (void)read_knobs(settings); }
+void AnalyticEngine::check_settings(const EngineSettings& settings) const {
+    SimulationOptions options;
+    options.step.rtol = read_knobs(settings).rtol;
+    validate(options);  // the tolerance's range is the integrator's
+}
 
 Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& excitation,
                                     const EngineSettings& settings) const {

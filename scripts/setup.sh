@@ -23,7 +23,9 @@ packages=(
   libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
   libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
-  gnuplot-nox                        # the plots of `vssw report` (SVG; without it the report is written unplotted)
+  gnuplot-nox                        # the plots of `vssw report` and `vssw study` (SVG; without it: no plots)
+  libopenmpi-dev openmpi-bin         # `mpirun -n P vssw study` (optional at build time; the MPI test needs it)
+  parallel                           # GNU parallel: scripts/study_parallel.sh runs a study's shards (and its test)
 )
 # The sanitizer build (test and asan only, so `run` installs none of it): clang, its sanitizer and libFuzzer runtimes
 # (libclang-rt-dev), and llvm for llvm-symbolizer, without which ASan and UBSan print stacks as bare addresses.

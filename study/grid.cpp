@@ -297,7 +297,20 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
     const bool pulse = kind == ExcitationKind::pulse;
     std::vector<std::string> v;
     v.reserve(columns_.size());
+    // A number the file gives is written as the file gives it (a derived one may differ in its last digit).
+    std::vector<const Axis*> axes;
+    for (const Axis& x : spec_.wall) axes.push_back(&x);
+    for (const Axis& x : spec_.excitation) axes.push_back(&x);
+    const auto given = [&](const std::string& col) -> const Level* {
+        for (std::size_t i = 0; i < axes.size(); ++i)
+            if (axes[i]->key == col) return &c.levels[i];
+        return nullptr;
+    };
     for (const std::string& col : columns_) {
+        if (const Level* l = given(col); l && std::holds_alternative<double>(*l) && col != "pga" && col != "scale") {
+            v.push_back(col == "hinge" && !vssw ? "" : to_text(*l));
+            continue;
+        }
         if (col == "model") v.push_back(c.model);
         else if (col == "height") v.push_back(number(c.height));
         else if (col == "thickness") v.push_back(number(c.thickness));
@@ -322,19 +335,7 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
         else if (col == "alpha2") v.push_back(vssw ? number(c.scene.vssw->alpha2) : "");
         else if (col == "R1") v.push_back(vssw ? number(c.scene.vssw->R1) : "");
         else if (col == "settings") v.push_back(run.settings_text);
-        else {
-            // specimen, units, duration, tolerance, max_pga: as the file gives them.
-            std::string text;
-            const std::vector<const Axis*> axes = [&] {
-                std::vector<const Axis*> a;
-                for (const Axis& x : spec_.wall) a.push_back(&x);
-                for (const Axis& x : spec_.excitation) a.push_back(&x);
-                return a;
-            }();
-            for (std::size_t i = 0; i < axes.size(); ++i)
-                if (axes[i]->key == col) text = to_text(c.levels[i]);
-            v.push_back(text);
-        }
+        else v.push_back(given(col) ? to_text(*given(col)) : "");  // units, duration, tolerance, max_pga
     }
     return v;
 }

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# `mpirun -n 2 vssw study` writes the rows of a single-process run (the processes share the tasks; rank 0 writes).
+# As root (CI) OpenMPI needs --allow-run-as-root; --oversubscribe lets 2 processes start on a 1-core machine.
+# usage: study_mpi.sh VSSW SOURCE_DIR WORK_DIR
+set -euo pipefail
+vssw="$1" src="$2" work="$3"
+study="$src/tests/cli/study_small.toml"
+rm -rf "$work" && mkdir -p "$work"
+"$vssw" study "$study" --out "$work/single" --no-plots >/dev/null
+mpirun --allow-run-as-root --oversubscribe -n 2 "$vssw" study "$study" --out "$work/mpi" --no-plots --json > "$work/mpi.json"
+grep -q '"processes": 2' "$work/mpi.json"
+cmp "$work/single/results.csv" "$work/mpi/results.csv"
+echo "mpirun -n 2: the same rows as one process"

@@ -1,0 +1,86 @@
+#pragma once
+// Helpers shared by the study tests: a fresh temporary folder per test, a study file written from text, a study run
+// into a folder, its results.csv read back.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "study/grid.hpp"
+#include "study/results_files.hpp"
+#include "study/runner.hpp"
+#include "study/spec.hpp"
+
+namespace vssw::testing {
+
+// A folder of its own under the system's temporary folder, removed when the test ends.
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = std::filesystem::temp_directory_path() /
+                (std::string("vssw-study-") + info->test_suite_name() + "-" + info->name() + "-" +
+                 std::to_string(::getpid()));
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+    std::filesystem::path path_;
+};
+
+inline std::filesystem::path write_file(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+    return path;
+}
+
+inline std::string read_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The study in `toml`, parsed as the file `dir/name` would be (records relative to `dir`).
+inline study::StudySpec study_of(const TempDir& dir, const std::string& toml, const std::string& name = "s.toml") {
+    return study::read_study_file(write_file(dir / name, toml).string());
+}
+
+// Runs the study into dir/out (threads, shard) and returns results.csv read back.
+inline study::ResultsTable run_into(const study::Grid& grid, const std::filesystem::path& out, int threads = 1,
+                                    study::Shard shard = {}) {
+    study::StudyRunOptions o;
+    o.threads = threads;
+    o.shard = shard;
+    study::prepare_study_dir(grid, out, o);
+    study::run_study(grid, out, o);
+    return study::read_results_csv(out / study::kResultsCsv);
+}
+
+// The value of `metric` in the row of `table` whose columns match every (column, value) given.
+inline double value_of(const study::ResultsTable& t, const std::string& metric,
+                       const std::vector<std::pair<std::string, std::string>>& where) {
+    const std::size_t m = t.column("metric"), v = t.column("value");
+    for (const auto& row : t.rows) {
+        if (row[m] != metric) continue;
+        bool match = true;
+        for (const auto& [col, want] : where) match = match && row[t.column(col)] == want;
+        if (match) return row[v].empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(row[v]);
+    }
+    ADD_FAILURE() << "no row for " << metric;
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace vssw::testing

@@ -1,0 +1,457 @@
+// Studies (study/): the study file read as written (and every malformation named), the grid's cases and runs, the
+// physics of what a run measures (closed forms against the paper's equations and the simulated model, the threshold
+// against Eq. 12 and its size invariance, free vibrations and records against the model run directly), and the
+// machinery: threads, shards and merge give the same rows; an interrupted study resumes; a failing run is a row.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/ground_motion.hpp"
+#include "analytic/model.hpp"
+#include "analytic/simulate.hpp"
+#include "analytic/wall.hpp"
+#include "multibody/engine.hpp"
+#include "study/merge.hpp"
+#include "study/outputs.hpp"
+#include "tests/study_fixtures.hpp"
+
+namespace {
+
+using namespace vssw;
+using study::Grid;
+using study::ResultsTable;
+using vssw::testing::TempDir;
+using vssw::testing::run_into;
+using vssw::testing::study_of;
+using vssw::testing::value_of;
+
+// The bisection's relative bracket (compare::ThresholdOptions::rel_tol): two thresholds found by bisection agree to it.
+constexpr double kThresholdBracket = 1e-4;
+// Floating-point agreement of one formula evaluated two ways (ratios of closed forms).
+constexpr double kRoundoff = 1e-12;
+// Restitution and period read from samples every 1e-4 s against the model's events. The sampled crossing is misplaced
+// by up to dt (1 - sqrt e)/(1 + sqrt e) (compare/metrics.hpp), so the error grows as e falls: measured on Fig. 6,
+// 5.4e-6 at Eq. (19)'s 0.951, 2.2e-5 at 0.8, 6.5e-5 at 0.5; this covers e down to 0.5.
+constexpr double kSampledRatio = 1e-4;
+// Eq. (20) linearises the restoring moment: the peak ratio it gives is within 2.4e-4 of the simulated paper model
+// on Fig. 6 up to theta0 = 0.3 alpha1 (measured, vssw free --json peaks); ten times that.
+constexpr double kLinearisedPeakRatio = 2.5e-3;
+
+bool built(const std::string& engine) {
+    const auto e = multibody::available_engines();
+    return std::find(e.begin(), e.end(), engine) != e.end();
+}
+
+std::string refusal(const TempDir& dir, const std::string& toml) {
+    try {
+        const Grid grid(study_of(dir, toml));
+        return "";
+    } catch (const InputError& e) {
+        return e.what();
+    }
+}
+
+// The study file -------------------------------------------------------------------------------------------------
+
+// The issue's example, as validation scripts write it.
+const char* const kIssueExample = R"(
+name = "hinge-and-overburden"
+metrics = ["threshold_g", "period", "restitution"]
+engines = ["analytic", "ode"]          # each engine runs every case
+
+[wall]
+model = "vssw"
+height = 4.88
+thickness = [0.356, 0.2]
+hinge = [0.5, 0.6, 0.7]
+xi = [0.0, 0.1]
+
+[assumptions]                          # the analytic model's; engines ignore them (their physics is their own)
+kinematics = ["paper", "exact"]
+impact = "eq19"                        # eq19 | whole-mechanism | a number
+roller = "bilateral"                   # bilateral | unilateral
+
+[excitation]
+kind = "free"                          # threshold | free | pulse | record | scale-to-collapse
+theta0 = [0.2, 0.5]                    # record: file = "...", scale = [...] or pga = [...]; pulse: shape, amplitude, pulse_period
+
+[settings.ode]
+dt = 2e-4
+)";
+
+TEST(StudyFile, TheIssuesExampleReadsAsWritten) {
+    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    const TempDir dir;
+    const Grid grid(study_of(dir, kIssueExample));
+    EXPECT_EQ(grid.spec().name, "hinge-and-overburden");
+    EXPECT_EQ(grid.product_size(), 2u * 3u * 2u * 2u);  // thickness x hinge x xi x theta0
+    EXPECT_EQ(grid.case_ids().size(), 24u);
+    ASSERT_EQ(grid.runs().size(), 3u);  // analytic paper, analytic exact, ode
+    EXPECT_EQ(grid.runs()[0].kinematics, Kinematics::paper);
+    EXPECT_EQ(grid.runs()[1].kinematics, Kinematics::exact);
+    EXPECT_EQ(grid.runs()[2].engine, "ode");
+    EXPECT_EQ(grid.runs()[2].settings.dt, 2e-4);
+    EXPECT_EQ(grid.runs()[2].settings_text, "dt=0.0002");
+    // The columns the issue names, in its order, between engine and metric.
+    const std::vector<std::string> named = {"model", "height", "thickness", "hinge", "xi", "density", "g",
+                                            "kinematics", "impact", "roller", "kind", "theta0", "file", "scale",
+                                            "pga", "shape", "amplitude", "pulse_period"};
+    const auto header = study::results_header(grid);
+    ASSERT_GE(header.size(), named.size() + 2);
+    EXPECT_EQ(header[0], "case_id");
+    EXPECT_EQ(header[1], "engine");
+    EXPECT_TRUE(std::equal(named.begin(), named.end(), header.begin() + 2));
+    const std::vector<std::string> tail = {"metric", "value", "unit", "status"};
+    EXPECT_TRUE(std::search(header.begin(), header.end(), tail.begin(), tail.end()) != header.end());
+}
+
+TEST(StudyFile, TomlAndJsonSayTheSame) {
+    const TempDir dir;
+    const std::string toml = "[wall]\nheight = 4\nthickness = [0.2, 0.4]\nhinge = 0.7\n[excitation]\nkind = \"threshold\"\n";
+    const std::string json =
+        R"({"wall": {"height": 4, "thickness": [0.2, 0.4], "hinge": 0.7}, "excitation": {"kind": "threshold"}})";
+    const Grid a(study_of(dir, toml, "s.toml")), b(study_of(dir, json, "s.json"));
+    EXPECT_EQ(a.identity(), b.identity());
+    EXPECT_EQ(a.case_ids(), b.case_ids());
+    EXPECT_EQ(a.spec().metrics, std::vector<std::string>{"threshold_g"});  // the kind's default
+}
+
+TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
+    const TempDir dir;
+    const std::string wall = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n";
+    const std::string threshold = "[excitation]\nkind = \"threshold\"\n";
+    struct Case {
+        std::string toml, expected;
+    };
+    const std::vector<Case> cases = {
+        {wall + "foo = 1\n" + threshold, "wall: unknown key 'foo'"},
+        {"[wall]\nheight = \"4\"\nthickness = 0.4\nhinge = 0.7\n" + threshold, "wall.height: must be a finite number"},
+        {"[wall]\nheight = []\nthickness = 0.4\nhinge = 0.7\n" + threshold, "wall.height: an empty list"},
+        {"[wall]\nheight = [4, 4]\nthickness = 0.4\nhinge = 0.7\n" + threshold, "wall.height: lists 4 twice"},
+        {"[wall]\nheight = 4\nthickness = [0.4, -0.2]\nhinge = 0.7\n" + threshold, "got -0.2"},
+        {"[wall]\nheight = nan\nthickness = 0.4\nhinge = 0.7\n" + threshold, "wall.height: must be a finite number"},
+        {"[wall]\nheight = 4\nthickness = 0.4\nhinge = 1.5\n" + threshold, "hinge ratio h1/h must be strictly between"},
+        {"[wall]\nheight = 4\nthickness = 0.4\n" + threshold, "a VSSW needs 'hinge'"},
+        {"[wall]\nheight = 4\nalpha = 0.1\nR = 2\nhinge = 0.7\n" + threshold, "give the geometry one way"},
+        {wall, "no [excitation] table"},
+        {wall + "[excitation]\nkind = \"earthquake\"\n", "excitation.kind: must be one of"},
+        {wall + "[excitation]\nkind = \"free\"\n", "kind free needs 'theta0'"},
+        {wall + "[excitation]\nkind = \"free\"\ntheta0 = 0.001\n", "theta0: must be at least 0.01"},
+        {wall + "[excitation]\nkind = \"free\"\ntheta0 = 30\n", "beyond the wall's collapse angle"},
+        {wall + "[excitation]\nkind = \"record\"\nfile = \"no-such.AT2\"\n", "excitation.file"},
+        {wall + "[excitation]\nkind = \"record\"\nfile = \"x\"\nscale = 1\npga = 0.3\n", "'scale' or 'pga', not both"},
+        {wall + "[excitation]\nkind = \"pulse\"\nshape = \"harmonic\"\namplitude = 0.3\npulse_period = 1\n",
+         "shape harmonic needs 'duration'"},
+        {wall + "[excitation]\nkind = \"threshold\"\ntheta0 = 0.5\n", "unknown key 'theta0'"},
+        {"engines = [\"havok\"]\n" + wall + threshold, "no engine 'havok' in this build"},
+        {"engines = [\"analytic\", \"analytic\"]\n" + wall + threshold, "names engine 'analytic' twice"},
+        {"[settings.ode]\ndt = 1e-4\n" + wall + threshold, "settings.ode: settings for an engine the study does not run"},
+        {"[settings.analytic]\nrtol = 0\n" + wall + threshold, "settings of analytic (rtol=0)"},
+        {"[settings.analytic]\npaper_kinematics = 1\n" + wall + threshold, "go in [assumptions]"},
+        {"metrics = [\"period\"]\n" + wall + threshold, "'period' is not measured by an excitation of kind threshold"},
+        {"metrics = [\"wobble\"]\n" + wall + threshold, "unknown metric 'wobble'"},
+        {"[assumptions]\nimpact = 1.5\n" + wall + threshold, "an impact ratio must be in [0, 1]"},
+        {"[assumptions]\nkinematics = \"approximate\"\n" + wall + threshold, "assumptions.kinematics: must be one of"},
+        {"speed = 3\n" + wall + threshold, "unknown key 'speed'"},
+    };
+    for (const Case& c : cases) {
+        const std::string message = refusal(dir, c.toml);
+        EXPECT_NE(message.find("study file"), std::string::npos) << c.toml;
+        EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "' in: " << message;
+    }
+    if (built("ode")) {
+        const std::string message = refusal(dir, "engines = [\"ode\"]\n[settings.ode]\nerpp = 0.3\n" + wall + threshold);
+        EXPECT_NE(message.find("unknown ODE setting 'erpp'"), std::string::npos) << message;
+    }
+}
+
+// The grid -----------------------------------------------------------------------------------------------------
+
+TEST(StudyGrid, CaseIdsArePositionsAndAParapetHasNoHingeToVary) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "[wall]\nmodel = [\"vssw\", \"parapet\"]\nheight = 4\nthickness = [0.2, 0.4]\n"
+                                  "hinge = [0.5, 0.7]\n[excitation]\nkind = \"threshold\"\n"));
+    EXPECT_EQ(grid.product_size(), 8u);
+    // model x thickness x hinge, the hinge fastest: the parapet's second hinge level repeats its first.
+    EXPECT_EQ(grid.case_ids(), (std::vector<int>{1, 2, 3, 4, 5, 7}));
+    const study::CaseSpec c = grid.make_case(7);
+    EXPECT_EQ(c.model, "parapet");
+    EXPECT_DOUBLE_EQ(c.thickness, 0.4);
+    EXPECT_TRUE(std::isnan(c.hinge));
+    EXPECT_EQ(grid.varied_parameters(), (std::vector<std::string>{"model", "thickness", "hinge"}));
+}
+
+TEST(StudyGrid, ThePapersKinematicsWithAUnilateralRollerIsNotAModel) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n[assumptions]\n"
+                                  "kinematics = [\"paper\", \"exact\"]\nroller = [\"bilateral\", \"unilateral\"]\n"
+                                  "[excitation]\nkind = \"threshold\"\n"));
+    ASSERT_EQ(grid.runs().size(), 3u);
+    for (const study::RunSpec& r : grid.runs())
+        EXPECT_FALSE(r.kinematics == Kinematics::paper && r.roller == Roller::unilateral);
+    ASSERT_EQ(grid.skipped_runs().size(), 1u);
+    EXPECT_NE(grid.skipped_runs()[0].find("not a model"), std::string::npos);
+}
+
+TEST(StudyGrid, WallsGivenBySlendernessAndSizeAreTheWallsOfThatShape) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "[wall]\nalpha = 0.1\nR = 2.5\nhinge = 0.6\n[excitation]\nkind = \"threshold\"\n"));
+    const study::CaseSpec c = grid.make_case(1);
+    EXPECT_NEAR(c.alpha, 0.1, kRoundoff);
+    EXPECT_NEAR(c.R, 2.5, kRoundoff);
+    EXPECT_NEAR(std::atan(c.thickness / c.height), 0.1, kRoundoff);
+    EXPECT_NEAR(c.scene.vssw->hinge_ratio(), 0.6, kRoundoff);
+}
+
+// What a run measures: closed forms ----------------------------------------------------------------------------
+
+// Fig. 3(b): the VSSW/PW threshold ratio with the hinge where Eq. (15) puts it is Eq. (18), and it tends to 3 + 2 sqrt 2.
+TEST(StudyClosedForms, ThresholdRatioAtTheOptimalHingeIsEq18) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_ratio_to_parapet\"]\n[wall]\nheight = 4\n"
+                                  "thickness = 0.4\nhinge = \"eq15\"\nxi = [0.01, 0.1, 0.5, 2.0, 1000.0]\n"
+                                  "[excitation]\nkind = \"closed-form\"\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    double previous = 0.0;
+    // xi 0 puts Eq. (15)'s hinge at the very top (h1/h = 1): no wall.
+    for (const char* xi : {"0.01", "0.1", "0.5", "2", "1000"}) {
+        const double ratio = value_of(t, "threshold_ratio_to_parapet", {{"xi", xi}});
+        EXPECT_NEAR(ratio, eq18_threshold_ratio(std::stod(xi)), kRoundoff * ratio) << "xi " << xi;
+        EXPECT_GT(ratio, previous) << "the ratio grows with the overburden (Fig. 3b)";
+        previous = ratio;
+    }
+    EXPECT_NEAR(previous, 3.0 + 2.0 * std::sqrt(2.0), 1e-2) << "Eq. (18)'s limit (at xi 1000 the rest is O(1/xi))";
+}
+
+// Fig. 5(b) and 7(b): a VSSW's restitution and period are below its parapet's; the difference shrinks as the wall gets
+// more slender or the hinge moves up; the period ratio depends on shape, not size.
+TEST(StudyClosedForms, RatiosToTheParapetFollowThePapersFigures5bAnd7b) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"restitution_ratio_to_parapet\", \"period_ratio_to_parapet\"]\n"
+                                  "[wall]\nalpha = [0.05, 0.1, 0.2]\nR = [1.0, 4.0]\nhinge = [0.5, 0.6, 0.7]\n"
+                                  "[excitation]\nkind = \"closed-form\"\ntheta0 = 0.5\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    for (const char* hinge : {"0.5", "0.6", "0.7"})
+        for (const char* alpha : {"0.05", "0.1", "0.2"}) {
+            const double e = value_of(t, "restitution_ratio_to_parapet", {{"hinge", hinge}, {"alpha", alpha}, {"R", "1"}});
+            const double T1 = value_of(t, "period_ratio_to_parapet", {{"hinge", hinge}, {"alpha", alpha}, {"R", "1"}});
+            const double T4 = value_of(t, "period_ratio_to_parapet", {{"hinge", hinge}, {"alpha", alpha}, {"R", "4"}});
+            EXPECT_LT(e, 1.0) << "a VSSW dissipates more than its parapet (Fig. 5b)";
+            EXPECT_LT(T1, 1.0) << "the top restraint shortens the period (Fig. 7b)";
+            EXPECT_NEAR(T1, T4, kRoundoff * T1) << "the period ratio does not depend on the size (Fig. 7b)";
+        }
+    // Closer to the parapet as the wall gets more slender (smaller alpha) and as the hinge moves up.
+    EXPECT_GT(value_of(t, "restitution_ratio_to_parapet", {{"hinge", "0.6"}, {"alpha", "0.05"}, {"R", "1"}}),
+              value_of(t, "restitution_ratio_to_parapet", {{"hinge", "0.6"}, {"alpha", "0.2"}, {"R", "1"}}));
+    EXPECT_GT(value_of(t, "restitution_ratio_to_parapet", {{"hinge", "0.7"}, {"alpha", "0.1"}, {"R", "1"}}),
+              value_of(t, "restitution_ratio_to_parapet", {{"hinge", "0.5"}, {"alpha", "0.1"}, {"R", "1"}}));
+}
+
+// Fig. 8: the ratio of two peaks half a cycle apart falls with the amplitude, and at small amplitudes it is what the
+// simulated model gives between its release and its next peak.
+TEST(StudyClosedForms, PeakRatioHalfACycleApartIsTheSimulatedModels) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"peak_ratio_half_cycle\"]\n[wall]\nheight = 4\nthickness = 0.4\n"
+                                  "hinge = 0.7\n[excitation]\nkind = \"closed-form\"\n"
+                                  "theta0 = [0.02, 0.05, 0.1, 0.3, 0.6, 0.9]\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    const auto model = make_vssw_model(make_vssw(4.0, 0.4, 0.7), Kinematics::paper);
+    double previous = 1.0;
+    for (const char* r : {"0.02", "0.05", "0.1", "0.3", "0.6", "0.9"}) {
+        const double ratio = value_of(t, "peak_ratio_half_cycle", {{"theta0", r}});
+        EXPECT_LT(ratio, previous) << "more damping at a larger amplitude (Fig. 8a)";
+        previous = ratio;
+        if (std::stod(r) > 0.3) continue;
+        SimulationOptions o;
+        o.keep_samples = false;
+        const SimulationResult run = free_vibration(*model, std::stod(r) * model->reference_angle(), o);
+        ASSERT_GE(run.peaks.size(), 2u);
+        const double simulated = std::abs(run.peaks[1].theta) / std::abs(run.peaks[0].theta);
+        EXPECT_NEAR(ratio / simulated - 1.0, 0.0, kLinearisedPeakRatio) << "theta0 " << r;
+    }
+}
+
+// What a run measures: simulations --------------------------------------------------------------------------------
+
+// The threshold found by bisection on the analytic model is Eq. (12), and it does not depend on the wall's size.
+TEST(StudyMeasure, ThresholdIsEq12AndDoesNotDependOnSize) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_g\", \"threshold_closed_form_g\"]\n[wall]\nalpha = 0.1\n"
+                                  "R = [0.5, 2.0, 8.0]\nhinge = 0.6\nxi = 0.1\n[excitation]\nkind = \"threshold\"\n"));
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const double eq12 = value_of(t, "threshold_closed_form_g", {{"R", "0.5"}});
+    for (const char* R : {"0.5", "2", "8"}) {
+        EXPECT_NEAR(value_of(t, "threshold_closed_form_g", {{"R", R}}), eq12, kRoundoff * eq12);
+        EXPECT_NEAR(value_of(t, "threshold_g", {{"R", R}}) / eq12 - 1.0, 0.0, kThresholdBracket) << "R " << R;
+    }
+}
+
+// A free vibration's restitution is the run's impact law (Eq. 19, the whole mechanism's) and its period the model's.
+TEST(StudyMeasure, FreeVibrationGivesTheModelsImpactLawAndPeriod) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"period\", \"restitution\", \"peak_rotation\"]\n[wall]\nheight = 4\n"
+                                  "thickness = 0.4\nhinge = 0.7\n[assumptions]\nkinematics = \"exact\"\n"
+                                  "impact = [\"eq19\", \"whole-mechanism\", 0.8]\n[excitation]\nkind = \"free\"\n"
+                                  "theta0 = 0.5\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    const VsswGeometry w = make_vssw(4.0, 0.4, 0.7);
+    EXPECT_NEAR(value_of(t, "restitution", {{"impact", "eq19"}}), eq19_restitution(w), kSampledRatio);
+    EXPECT_NEAR(value_of(t, "restitution", {{"impact", "whole-mechanism"}}), restitution_whole_mechanism(w),
+                kSampledRatio);
+    EXPECT_NEAR(value_of(t, "restitution", {{"impact", "0.8"}}), 0.8, kSampledRatio);
+    const auto model = make_vssw_model(w, Kinematics::exact);
+    SimulationOptions o;
+    o.keep_samples = false;
+    const SimulationResult run = free_vibration(*model, 0.5 * w.alpha1, o);
+    ASSERT_FALSE(run.impacts.empty());
+    EXPECT_NEAR(value_of(t, "period", {{"impact", "eq19"}}) / (4.0 * run.impacts.front().t) - 1.0, 0.0, kSampledRatio);
+    EXPECT_DOUBLE_EQ(value_of(t, "peak_rotation", {{"impact", "eq19"}}), 0.5) << "the release is the largest rotation";
+}
+
+// Under a record, the study's analytic peak is the model's own (the same run `vssw history` makes).
+TEST(StudyMeasure, RecordPeakIsTheModelsRunDirectly) {
+    const TempDir dir;
+    const std::string record = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
+    const Grid grid(study_of(dir, "metrics = [\"peak_rotation\", \"overturned\", \"energy_balance_error\"]\n"
+                                  "[wall]\nheight = 3.05\nthickness = 0.143\nhinge = 0.6\nxi = 0.1\n"
+                                  "[assumptions]\nkinematics = \"exact\"\n[excitation]\nkind = \"record\"\nfile = \"" +
+                                      record + "\"\nscale = 0.25\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    const VsswGeometry w = make_vssw(3.05, 0.143, 0.6, 0.1);
+    const GroundMotion motion = read_record(record).scaled(0.25);  // rocks through the whole record (README, "Speed")
+    SimulationOptions o;
+    o.keep_samples = false;
+    o.t_end = motion.duration() + study::kResponseTail;
+    const SimulationResult run =
+        simulate(*make_vssw_model(w, Kinematics::exact), motion, GroundMotion::none(), {}, o);
+    ASSERT_FALSE(run.overturned);
+    EXPECT_NEAR(value_of(t, "peak_rotation", {}), run.max_abs_theta / w.alpha1, kRoundoff);
+    EXPECT_EQ(value_of(t, "overturned", {}), 0.0);
+    EXPECT_LT(value_of(t, "energy_balance_error", {}), SimulationOptions{}.energy_ceiling);
+}
+
+// A run that fails is rows with the reason, and the study goes on: the unilateral roller on Table 1 #6 at xi 0.5 from
+// 0.8 alpha1 runs away on the far guide and fails its energy ceiling (README), while the bilateral model gives values.
+TEST(StudyMeasure, AFailingRunIsARowWithItsReason) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"period\", \"peak_rotation\"]\n[wall]\nheight = 3.05\n"
+                                  "thickness = 0.143\nhinge = 0.67\nxi = 0.5\n[assumptions]\nkinematics = \"exact\"\n"
+                                  "roller = [\"bilateral\", \"unilateral\"]\n[excitation]\nkind = \"free\"\n"
+                                  "theta0 = 0.8\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    ASSERT_EQ(t.rows.size(), 4u);
+    const std::size_t status = t.column("status"), roller = t.column("roller"), warnings = t.column("warnings");
+    for (const auto& row : t.rows) {
+        if (row[roller] == "bilateral") {
+            EXPECT_EQ(row[status], "ok");
+            EXPECT_NE(row[warnings].find("roller would have to pull"), std::string::npos) << row[warnings];
+        } else {
+            EXPECT_EQ(row[status].rfind("failed: ", 0), 0u);
+            EXPECT_NE(row[status].find("energy balance"), std::string::npos) << row[status];
+        }
+    }
+}
+
+// The machinery ----------------------------------------------------------------------------------------------------
+
+const char* const kSmallStudy = R"(
+metrics = ["threshold_g", "period", "restitution", "peak_rotation"]
+[wall]
+height = [3.05, 4.0]
+thickness = 0.3
+hinge = [0.55, 0.7]
+xi = [0.0, 0.2]
+[assumptions]
+kinematics = ["paper", "exact"]
+impact = ["eq19", "whole-mechanism"]
+[excitation]
+kind = "free"
+theta0 = [0.3, 0.6]
+)";
+
+TEST(StudyRun, ThreadsShardsAndMergeGiveTheSameRows) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kSmallStudy));
+    run_into(grid, dir / "one", 1);
+    run_into(grid, dir / "two", 2);
+    const std::string one = vssw::testing::read_file(dir / "one" / "results.csv");
+    EXPECT_EQ(one, vssw::testing::read_file(dir / "two" / "results.csv"));
+    std::vector<std::filesystem::path> shards;
+    for (int k = 1; k <= 3; ++k) {
+        shards.push_back(dir / ("shard" + std::to_string(k)));
+        run_into(grid, shards.back(), 1, {k, 3});
+    }
+    std::reverse(shards.begin(), shards.end());  // the order the folders are named in does not matter
+    const study::MergeResult merged = study::merge_studies(shards, dir / "merged");
+    EXPECT_EQ(merged.shards, 3);
+    EXPECT_EQ(one, vssw::testing::read_file(dir / "merged" / "results.csv"));
+    EXPECT_EQ(merged.rows, static_cast<long>(std::count(one.begin(), one.end(), '\n')) - 1);
+}
+
+TEST(StudyRun, MergeRefusesShardsThatAreNotOneStudy) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kSmallStudy));
+    run_into(grid, dir / "a1", 1, {1, 2});
+    run_into(grid, dir / "a2", 1, {2, 2});
+    const Grid other(study_of(dir, std::string(kSmallStudy) + "\n[settings.analytic]\nrtol = 1e-9\n", "other.toml"));
+    run_into(other, dir / "b2", 1, {2, 2});
+    const auto refusal_of = [&](std::vector<std::filesystem::path> dirs) {
+        try {
+            study::merge_studies(dirs, dir / "merged");
+            return std::string();
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+    };
+    EXPECT_NE(refusal_of({dir / "a1"}).find("shard 2 of 2 missing"), std::string::npos);
+    EXPECT_NE(refusal_of({dir / "a1", dir / "a1"}).find("given twice"), std::string::npos);
+    EXPECT_NE(refusal_of({dir / "a1", dir / "b2"}).find("another study"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir / "merged" / "results.csv"));
+}
+
+// An interrupted study leaves its journal; --resume runs only the missing tasks (a task cut off mid-write again) and
+// ends with the rows of an uninterrupted run.
+TEST(StudyRun, AnInterruptedStudyResumesWhereItStopped) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kSmallStudy));
+    run_into(grid, dir / "whole", 2);
+
+    struct Interrupt : std::runtime_error {
+        using std::runtime_error::runtime_error;
+    };
+    constexpr long kStopAfter = 10;
+    study::StudyRunOptions o;
+    o.threads = 1;
+    o.progress = [&](long done, long, const std::string&) {
+        if (done == kStopAfter) throw Interrupt("stopped");
+    };
+    study::prepare_study_dir(grid, dir / "cut", o);
+    EXPECT_THROW(study::run_study(grid, dir / "cut", o), Interrupt);
+    ASSERT_TRUE(std::filesystem::exists(dir / "cut" / "journal.csv"));
+    std::ofstream(dir / "cut" / "journal.csv", std::ios::app) << "3,1,0,0.5,ok,\n3,1,1,0.";  // a task cut off
+
+    study::StudyRunOptions plain;
+    EXPECT_THROW(study::prepare_study_dir(grid, dir / "cut", plain), InputError) << "without --resume: refused";
+    study::StudyRunOptions resume;
+    resume.resume = true;
+    study::prepare_study_dir(grid, dir / "cut", resume);
+    const study::StudyRunResult r = study::run_study(grid, dir / "cut", resume);
+    EXPECT_EQ(r.meta.tasks_resumed, kStopAfter);
+    EXPECT_EQ(vssw::testing::read_file(dir / "whole" / "results.csv"), vssw::testing::read_file(dir / "cut" / "results.csv"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "cut" / "journal.csv"));
+
+    const Grid other(study_of(dir, std::string(kSmallStudy) + "\n[settings.analytic]\nrtol = 1e-9\n", "other.toml"));
+    std::ofstream(dir / "cut" / "journal.csv") << "#vssw-study-journal," << grid.identity() << ",1/1\n";
+    std::set<study::TaskKey> done;
+    EXPECT_THROW(study::Journal(dir / "cut" / "journal.csv", other.identity(), {}, done), InputError)
+        << "a journal of another study is not continued";
+}
+
+}  // namespace

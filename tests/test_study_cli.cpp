@@ -1,0 +1,132 @@
+// `vssw study` and `vssw study merge` as a user runs them: exit codes, the JSON summary, refusals before anything is
+// created, --strict, --force, --shard, merge.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+#include "tests/cli_runner.hpp"
+#include "tests/study_fixtures.hpp"
+
+namespace {
+
+using vssw::testing::run_cli;
+using vssw::testing::TempDir;
+using vssw::testing::write_file;
+
+const char* const kStudy = R"(
+name = "cli"
+metrics = ["period", "restitution"]
+[wall]
+height = 4
+thickness = 0.4
+hinge = [0.6, 0.7]
+[assumptions]
+kinematics = ["paper", "exact"]
+[excitation]
+kind = "free"
+theta0 = 0.5
+)";
+
+TEST(StudyCli, RunsAStudyAndSummarisesItInJson) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string(), out = (dir / "out").string();
+    const auto r = run_cli({"study", file, "--out", out, "--json", "--no-plots"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["study"], "cli");
+    EXPECT_EQ(j["cases"], 2);
+    EXPECT_EQ(j["runs"], 2);
+    EXPECT_EQ(j["tasks_run"], 4);
+    EXPECT_EQ(j["rows"], 8);  // 2 cases x 2 runs x 2 metrics
+    EXPECT_EQ(j["failed_rows"], 0);
+    for (const char* f : {"results.csv", "results.json", "manifest.json"})
+        EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+    const auto results = nlohmann::json::parse(vssw::testing::read_file(dir / "out" / "results.json"));
+    ASSERT_EQ(results["rows"].size(), 8u);
+    EXPECT_EQ(results["rows"][0]["case_id"], 1);
+    EXPECT_TRUE(results["rows"][0]["value"].is_number());
+    EXPECT_EQ(results["study"]["as_read"]["wall"]["hinge"], nlohmann::json::parse("[0.6, 0.7]"));
+    EXPECT_FALSE(results["vssw"]["commit"].get<std::string>().empty());
+}
+
+TEST(StudyCli, BadInputIsRefusedBeforeAnythingIsCreated) {
+    const TempDir dir;
+    const std::string out = (dir / "out").string();
+    const std::string good = write_file(dir / "s.toml", kStudy).string();
+    const std::string bad = write_file(dir / "bad.toml", std::string(kStudy) + "\n[settings.ode]\ndt = 1e-4\n").string();
+    const std::string huge = write_file(dir / "huge.toml", "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
+                                                           "xi = [" + [] {
+                                                               std::string l;
+                                                               for (int i = 0; i < 10001; ++i)
+                                                                   l += (i ? "," : "") + std::to_string(i * 1e-3);
+                                                               return l;
+                                                           }() + "]\n[excitation]\nkind = \"threshold\"\n")
+                                 .string();
+    struct Case {
+        std::vector<std::string> args;
+        std::string expected;
+    };
+    const std::vector<Case> cases = {
+        {{"study", bad, "--out", out}, "settings for an engine the study does not run"},
+        {{"study", (dir / "missing.toml").string(), "--out", out}, "no such file"},
+        {{"study", good}, "--out DIR is required"},
+        {{"study", good, "--out", out, "--shard", "0/2"}, "--shard must be K/N"},
+        {{"study", good, "--out", out, "--shard", "3/2"}, "--shard must be K/N"},
+        {{"study", good, "--out", out, "--threads", "-1"}, "--threads must be an integer"},
+        {{"study", huge, "--out", out}, "10001 tasks (cases x runs), more than 10000: add --force"},
+    };
+    for (const Case& c : cases) {
+        const auto r = run_cli(c.args);
+        EXPECT_EQ(r.code, 2) << c.expected;
+        EXPECT_NE(r.err.find(c.expected), std::string::npos) << "expected '" << c.expected << "' in: " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << c.expected;
+    }
+}
+
+// --strict: a row that failed is a failed study (exit 3), its results still written.
+TEST(StudyCli, StrictFailsAStudyWithAFailedRow) {
+    const TempDir dir;
+    // The unilateral roller fails its energy ceiling on Table 1 #6 at xi 0.5 from 0.8 alpha1 (README).
+    const std::string file = write_file(dir / "s.toml", "metrics = [\"period\"]\n[wall]\nheight = 3.05\n"
+                                                        "thickness = 0.143\nhinge = 0.67\nxi = 0.5\n[assumptions]\n"
+                                                        "kinematics = \"exact\"\nroller = \"unilateral\"\n"
+                                                        "[excitation]\nkind = \"free\"\ntheta0 = 0.8\n")
+                                 .string();
+    const auto lenient = run_cli({"study", file, "--out", (dir / "a").string(), "--no-plots"});
+    EXPECT_EQ(lenient.code, 0) << lenient.err;
+    EXPECT_NE(lenient.out.find("1 failed"), std::string::npos) << lenient.out;
+    const auto strict = run_cli({"study", file, "--out", (dir / "b").string(), "--no-plots", "--strict"});
+    EXPECT_EQ(strict.code, 3);
+    EXPECT_NE(strict.err.find("--strict: 1 row failed"), std::string::npos) << strict.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "b" / "results.csv"));
+}
+
+TEST(StudyCli, ShardsMergeIntoOneRunsFiles) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string();
+    ASSERT_EQ(run_cli({"study", file, "--out", (dir / "one").string(), "--no-plots"}).code, 0);
+    for (const char* k : {"1", "2"})
+        ASSERT_EQ(run_cli({"study", file, "--out", (dir / k).string(), "--shard", std::string(k) + "/2", "--no-plots"}).code,
+                  0);
+    const auto missing = run_cli({"study", "merge", (dir / "1").string(), "--out", (dir / "m").string()});
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_NE(missing.err.find("shard 2 of 2 missing"), std::string::npos) << missing.err;
+    const auto merged =
+        run_cli({"study", "merge", (dir / "2").string(), (dir / "1").string(), "--out", (dir / "m").string(), "--json",
+                 "--no-plots"});
+    ASSERT_EQ(merged.code, 0) << merged.err;
+    EXPECT_EQ(nlohmann::json::parse(merged.out)["shards"], 2);
+    EXPECT_EQ(vssw::testing::read_file(dir / "one" / "results.csv"), vssw::testing::read_file(dir / "m" / "results.csv"));
+}
+
+TEST(StudyCli, HelpListsEveryMetric) {
+    const auto r = run_cli({"study", "--help"});
+    EXPECT_EQ(r.code, 0);
+    for (const char* m : {"threshold_g", "period", "restitution", "peak_rotation", "peak_time", "overturned",
+                          "t_overturn", "roller_tension_time", "collapse_scale", "energy_balance_error"})
+        EXPECT_NE(r.out.find(m), std::string::npos) << m;
+}
+
+}  // namespace
