@@ -28,7 +28,7 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "file",  "scale",     "pga",       "shape",  "amplitude",
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "units", "duration",
-                                                "tolerance", "max_pga"};
+                                                "tolerance", "max_pga", "step"};
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : std::string(); }
 
@@ -273,6 +273,7 @@ CaseSpec Grid::make_case(int id) const {
     c.duration = num("duration", 0.0);
     c.tolerance = num("tolerance", 0.0);
     c.max_pga_g = num("max_pga", 0.0);
+    c.step = num("step", 0.0);
     return c;
 }
 
@@ -307,7 +308,10 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
         return nullptr;
     };
     for (const std::string& col : columns_) {
-        if (const Level* l = given(col); l && std::holds_alternative<double>(*l) && col != "pga" && col != "scale") {
+        // (hinge "eq15" too: the resolved ratio follows from xi by Eq. 15, and the level groups the rows as the file
+        // does.)
+        if (const Level* l = given(col); l && (std::holds_alternative<double>(*l) || col == "hinge") && col != "pga" &&
+                                         col != "scale") {
             v.push_back(col == "hinge" && !vssw ? "" : to_text(*l));
             continue;
         }

@@ -51,7 +51,7 @@ struct CaseSpec {
     double pga_g = 0.0;             // record: its peak ground acceleration after scaling [g]
     std::string shape;              // pulse
     double amplitude_g = 0.0, pulse_period = 0.0, duration = 0.0;  // pulse [g], [s], harmonic [s]
-    double tolerance = 0.0, max_pga_g = 0.0;  // scale-to-collapse; max_pga_g 0: the default (measure.hpp)
+    double tolerance = 0.0, max_pga_g = 0.0, step = 0.0;  // scale-to-collapse; 0: the defaults (measure.cpp)
     // The wall's position among the wall axes alone (cases that differ only in their excitation share it): the key
     // of the thresholds a process computes once per wall and run.
     std::size_t wall_index = 0;

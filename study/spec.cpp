@@ -20,7 +20,7 @@ const std::vector<std::string> kWallKeys = {"model", "height", "thickness", "hin
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "shape",    "amplitude", "pulse_period",
-                                                  "duration",     "tolerance", "max_pga"};
+                                                  "duration",     "tolerance", "max_pga",  "step"};
 
 namespace {
 
@@ -161,6 +161,11 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
         if (x < kMinTheta0) r.fail(key, fmt::format("must be at least {} (a fraction of alpha), got {}", kMinTheta0, v.dump()));
         return x;
     }
+    if (k == "step") {
+        const double x = r.number(v, key, "a relative increment in (0, 1]");
+        if (!(x > 0.0 && x <= 1.0)) r.fail(key, fmt::format("must be a relative increment in (0, 1], got {}", v.dump()));
+        return x;
+    }
     if (k == "tolerance") {
         const double x = r.number(v, key, "a relative width in (0, 0.1]");
         if (!(x > 0.0 && x <= 0.1)) r.fail(key, fmt::format("must be a relative width in (0, 0.1], got {}", v.dump()));
@@ -181,7 +186,7 @@ KindKeys kind_keys(ExcitationKind kind) {
         case ExcitationKind::pulse:
             return {{"shape", "amplitude", "pulse_period", "duration"}, {"shape", "amplitude", "pulse_period"}};
         case ExcitationKind::record: return {{"file", "units", "scale", "pga"}, {"file"}};
-        case ExcitationKind::scale_to_collapse: return {{"file", "units", "tolerance", "max_pga"}, {"file"}};
+        case ExcitationKind::scale_to_collapse: return {{"file", "units", "tolerance", "max_pga", "step"}, {"file"}};
     }
     return {};
 }

@@ -1,0 +1,202 @@
+// The studies shipped in studies/, each run as a user runs it and held against what the paper says of the figure it
+// reproduces: so the study machinery is tested against the paper, and the shipped files cannot rot.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/model.hpp"
+#include "analytic/simulate.hpp"
+#include "analytic/wall.hpp"
+#include "tests/study_fixtures.hpp"
+
+namespace {
+
+using namespace vssw;
+using study::Grid;
+using study::ResultsTable;
+using vssw::testing::run_into;
+using vssw::testing::TempDir;
+using vssw::testing::value_of;
+
+// Floating-point agreement of one formula evaluated two ways.
+constexpr double kRoundoff = 1e-12;
+// Eq. (20) linearises the restoring moment: the peak ratio it gives is within 2.4e-4 of the simulated paper model on
+// Fig. 6 up to theta0 = 0.3 alpha1 (measured with vssw free --json peaks); ten times that.
+constexpr double kLinearisedPeakRatio = 2.5e-3;
+
+ResultsTable run_shipped(const TempDir& dir, const std::string& name) {
+    const Grid grid(study::read_study_file(std::string(VSSW_STUDIES_DIR) + "/" + name + ".toml"));
+    const ResultsTable t = run_into(grid, dir / name, 2);
+    const std::size_t status = t.column("status");
+    for (const auto& row : t.rows) EXPECT_EQ(row[status], "ok") << name;
+    return t;
+}
+
+// The levels of a column, in the order of the rows.
+std::vector<std::string> levels(const ResultsTable& t, const std::string& column) {
+    std::vector<std::string> out;
+    for (const auto& row : t.rows) {
+        const std::string& v = row[t.column(column)];
+        if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+    }
+    return out;
+}
+
+// Fig. 3(b): the VSSW/PW threshold ratio grows with xi; at Eq. (15)'s hinge it is Eq. (18) and tends to 3 + 2 sqrt 2.
+TEST(ShippedStudies, Fig3bThresholdRatio) {
+    const TempDir dir;
+    const ResultsTable t = run_shipped(dir, "fig3b-threshold-ratio");
+    for (const std::string& hinge : levels(t, "hinge")) {
+        double previous = 1.0;  // the VSSW's threshold is above its parapet's at every xi
+        for (const std::string& xi : levels(t, "xi")) {
+            const double ratio = value_of(t, "threshold_ratio_to_parapet", {{"hinge", hinge}, {"xi", xi}});
+            EXPECT_GT(ratio, previous) << "hinge " << hinge << ", xi " << xi;
+            previous = ratio;
+            if (hinge == "eq15") {
+                EXPECT_NEAR(ratio, eq18_threshold_ratio(std::stod(xi)), kRoundoff * ratio) << xi;
+            }
+        }
+    }
+    // At xi = 10, Eq. (18) is 3 + 2 sqrt(20/11) - 1/11: within 0.23 of its limit 5.83, and below it.
+    const double at10 = value_of(t, "threshold_ratio_to_parapet", {{"hinge", "eq15"}, {"xi", "10"}});
+    EXPECT_LT(at10, 3.0 + 2.0 * std::sqrt(2.0));
+    EXPECT_GT(at10, 3.0 + 2.0 * std::sqrt(2.0) - 0.25);
+}
+
+// Fig. 4: Eq. (19) falls as either angle grows, and "e is more sensitive to alpha1 than to alpha2".
+TEST(ShippedStudies, Fig4RestitutionIsMoreSensitiveToAlpha1) {
+    const TempDir dir;
+    const ResultsTable t = run_shipped(dir, "fig4-restitution-angles");
+    const auto e = [&](const std::string& a1, const std::string& a2) {
+        return value_of(t, "restitution_closed_form", {{"alpha1", a1}, {"alpha2", a2}});
+    };
+    const std::vector<std::string> a1 = levels(t, "alpha1"), a2 = levels(t, "alpha2");
+    for (std::size_t i = 1; i < a1.size(); ++i)
+        for (std::size_t j = 1; j < a2.size(); ++j) {
+            EXPECT_LT(e(a1[i], a2[j]), e(a1[i - 1], a2[j]));
+            EXPECT_LT(e(a1[i], a2[j]), e(a1[i], a2[j - 1]));
+            EXPECT_LT(value_of(t, "restitution_whole_mechanism", {{"alpha1", a1[i]}, {"alpha2", a2[j]}}), e(a1[i], a2[j]))
+                << "the whole mechanism's impact dissipates more than Eq. (19) leaves out";
+        }
+    // Across the figure's ranges: the spread over alpha1 (at the middle alpha2) against the spread over alpha2 (at the
+    // middle alpha1).
+    const std::string mid1 = a1[a1.size() / 2], mid2 = a2[a2.size() / 2];
+    const double over_alpha1 = e(a1.front(), mid2) - e(a1.back(), mid2);
+    const double over_alpha2 = e(mid1, a2.front()) - e(mid1, a2.back());
+    EXPECT_GT(over_alpha1, 2.0 * over_alpha2) << over_alpha1 << " against " << over_alpha2;
+}
+
+// Fig. 5: a VSSW dissipates more than its parapet (ratio < 1), less so as the wall gets more slender or the hinge
+// moves up; and stockier walls or lower hinges have a lower e (Fig. 5a).
+TEST(ShippedStudies, Fig5RestitutionAgainstHingeAndSlenderness) {
+    const TempDir dir;
+    const ResultsTable t = run_shipped(dir, "fig5-restitution-hinge");
+    const std::vector<std::string> thick = levels(t, "thickness"), hinge = levels(t, "hinge");  // stocky to slender
+    for (std::size_t i = 0; i < thick.size(); ++i)
+        for (std::size_t j = 0; j < hinge.size(); ++j) {
+            const auto at = [&](std::size_t a, std::size_t b) {
+                return std::vector<std::pair<std::string, std::string>>{{"thickness", thick[a]}, {"hinge", hinge[b]}};
+            };
+            const double ratio = value_of(t, "restitution_ratio_to_parapet", at(i, j));
+            EXPECT_LT(ratio, 1.0);
+            if (i > 0) {
+                EXPECT_GT(ratio, value_of(t, "restitution_ratio_to_parapet", at(i - 1, j)));
+                EXPECT_GT(value_of(t, "restitution_closed_form", at(i, j)),
+                          value_of(t, "restitution_closed_form", at(i - 1, j)));
+            }
+            if (j > 0) {
+                EXPECT_GT(ratio, value_of(t, "restitution_ratio_to_parapet", at(i, j - 1)));
+                EXPECT_GT(value_of(t, "restitution_closed_form", at(i, j)),
+                          value_of(t, "restitution_closed_form", at(i, j - 1)));
+            }
+        }
+}
+
+// Fig. 7(b): the top restraint shortens the period (ratio < 1), and the ratio depends on the shape, not the size.
+TEST(ShippedStudies, Fig7bPeriodRatioDependsOnShapeNotSize) {
+    const TempDir dir;
+    const ResultsTable t = run_shipped(dir, "fig7b-period-ratio");
+    for (const std::string& alpha : levels(t, "alpha"))
+        for (const std::string& hinge : levels(t, "hinge")) {
+            const double small = value_of(t, "period_ratio_to_parapet", {{"alpha", alpha}, {"hinge", hinge}, {"R", "1"}});
+            const double big = value_of(t, "period_ratio_to_parapet", {{"alpha", alpha}, {"hinge", hinge}, {"R", "4"}});
+            EXPECT_LT(small, 1.0);
+            EXPECT_NEAR(small, big, kRoundoff * small) << "alpha " << alpha << ", hinge " << hinge;
+            // The periods themselves scale with sqrt(R) (Eq. 21b: P^2 ~ g / R1).
+            const double T1 = value_of(t, "period_linearised", {{"alpha", alpha}, {"hinge", hinge}, {"R", "1"}});
+            const double T4 = value_of(t, "period_linearised", {{"alpha", alpha}, {"hinge", hinge}, {"R", "4"}});
+            EXPECT_NEAR(T4 / T1, 2.0, kRoundoff);
+        }
+}
+
+// Fig. 8: the ratio of peaks half a cycle apart falls with the amplitude, is lower with the whole mechanism's impact,
+// and at small amplitudes is what the simulated paper model gives between its release and its next peak.
+TEST(ShippedStudies, Fig8PeakRatioFallsWithAmplitude) {
+    const TempDir dir;
+    const ResultsTable t = run_shipped(dir, "fig8-peak-ratio");
+    for (const std::string& hinge : levels(t, "hinge")) {
+        double previous = 1.0;
+        const auto model = make_vssw_model(make_vssw(4.0, 0.4, std::stod(hinge)), Kinematics::paper);
+        for (const std::string& r : levels(t, "theta0")) {
+            const double ratio = value_of(t, "peak_ratio_half_cycle", {{"hinge", hinge}, {"theta0", r}, {"impact", "eq19"}});
+            EXPECT_LT(ratio, previous) << "more damping at a larger amplitude (Fig. 8a)";
+            EXPECT_LT(value_of(t, "peak_ratio_half_cycle", {{"hinge", hinge}, {"theta0", r}, {"impact", "whole-mechanism"}}),
+                      ratio);
+            previous = ratio;
+            if (std::stod(r) > 0.3) continue;
+            SimulationOptions o;
+            o.keep_samples = false;
+            const SimulationResult run = free_vibration(*model, std::stod(r) * model->reference_angle(), o);
+            ASSERT_GE(run.peaks.size(), 2u);
+            const double simulated = std::abs(run.peaks[1].theta) / std::abs(run.peaks[0].theta);
+            EXPECT_NEAR(ratio / simulated - 1.0, 0.0, kLinearisedPeakRatio) << "hinge " << hinge << ", theta0 " << r;
+        }
+    }
+}
+
+// Fig. 10: rocking curves. "At least in a statistical sense" the stockier (larger alpha) and the bigger (larger R) the
+// wall, the lower its response; and the whole mechanism's impact, which dissipates more than Eq. (19), lowers them.
+TEST(ShippedStudies, Fig10RockingCurvesFallWithSlendernessAndSize) {
+    const TempDir dir;
+    const ResultsTable t = run_shipped(dir, "fig10-rocking-curves");
+    const std::vector<std::string> alphas = levels(t, "alpha"), Rs = levels(t, "R");
+    for (const std::string& file : levels(t, "file"))
+        for (const char* kinematics : {"paper", "exact"}) {
+            std::map<std::string, int> falls_by_impact;
+            for (const char* impact : {"eq19", "whole-mechanism"}) {
+                int previous_falls = static_cast<int>(alphas.size()) + 1;
+                for (const std::string& R : Rs) {
+                    // The response along the curve (an overturned run counts as the largest response), and how often
+                    // it falls towards larger alpha: more pairs must fall than rise (a negative Kendall tau).
+                    std::vector<double> response;
+                    int falls = 0;
+                    for (const std::string& alpha : alphas) {
+                        const std::vector<std::pair<std::string, std::string>> at = {
+                            {"file", file}, {"kinematics", kinematics}, {"impact", impact}, {"R", R}, {"alpha", alpha}};
+                        const bool overturned = value_of(t, "overturned", at) == 1.0;
+                        response.push_back(overturned ? HUGE_VAL : value_of(t, "peak_rotation", at));
+                        falls += overturned ? 1 : 0;
+                    }
+                    int down = 0, up = 0;
+                    for (std::size_t i = 0; i < response.size(); ++i)
+                        for (std::size_t j = i + 1; j < response.size(); ++j) {
+                            down += response[j] < response[i] ? 1 : 0;
+                            up += response[j] > response[i] ? 1 : 0;
+                        }
+                    EXPECT_GT(down, up) << file << " " << kinematics << " " << impact << " R " << R;
+                    EXPECT_LE(falls, previous_falls) << "a bigger wall falls at no more slendernesses: " << file << " "
+                                                     << kinematics << " " << impact << " R " << R;
+                    previous_falls = falls;
+                    falls_by_impact[impact] += falls;
+                }
+            }
+            EXPECT_LE(falls_by_impact["whole-mechanism"], falls_by_impact["eq19"]) << file << " " << kinematics;
+        }
+}
+
+}  // namespace
