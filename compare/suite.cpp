@@ -273,7 +273,8 @@ void free_task(const TaskContext& x, TaskOutput& out) {
     }
     EngineSettings settings = x.engine.default_settings();
     if (x.c.dt) settings.dt = *x.c.dt;
-    const FreeVibrationComparison runs = free_vibration_with_analytic(x.engine, settings, x.wall.scene, options);
+    const FreeVibrationComparison runs =
+        free_vibration_with_analytic(x.engine, settings, x.wall.scene, options, analytic_reference_settings(settings));
     free_rows(x, runs.analytic, runs.engine, out);
     // A first-impact ratio outside (0, 1] is a failure of the engine's run, not a restitution: the row is NaN and
     // the report lists why.

@@ -85,6 +85,9 @@ public:
     // Throws EngineFailure when the run fails; InputError on a bad scene or setting.
     virtual Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                                 const EngineSettings& settings) const = 0;
+    // Throws InputError on a knob this backend does not know or a knob value it refuses, as simulate() would: lets a
+    // caller refuse a whole study before anything runs. The step and iterations are the caller's to check.
+    virtual void check_settings(const EngineSettings& settings) const = 0;
     // Whether simulate() may run on several threads at once (each call with its own scene). false for a library
     // with process-wide state that is not re-entrant (ODE): callers running cases in parallel (compare/suite.hpp)
     // then run that engine's simulations one at a time, beside other engines' ones.
@@ -95,5 +98,9 @@ public:
 std::vector<std::string> available_engines();
 // Throws InputError naming the engine and the available ones.
 std::unique_ptr<Engine> make_engine(const std::string& name);
+// The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
+// except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold
+// bisections take minutes (README, "Simbody"); name it to include it.
+std::vector<std::string> default_compared_engines();
 
 }  // namespace vssw::multibody

@@ -257,6 +257,7 @@ public:
         return s;
     }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+    void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
 };
 
 Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

@@ -407,6 +407,7 @@ public:
         return s;
     }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+    void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
     // ODE's library state is process-wide (ensure_ode(): the initialisation, the message handler and its count,
     // per-thread collision data): one run at a time.
     bool runs_concurrently() const override { return false; }

@@ -202,6 +202,8 @@ private:
 
 }  // namespace
 
+void check_compliant_settings(const EngineSettings& settings) { (void)read_knobs(settings); }
+
 Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) {
     // SimbodyEngine::simulate, the only caller, has checked dt and the scene.
     const Knobs knobs = read_knobs(settings);

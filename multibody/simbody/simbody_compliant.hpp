@@ -6,5 +6,7 @@
 namespace vssw::multibody {
 
 Trajectory simulate_compliant(const WallScene& scene, const Excitation& excitation, const EngineSettings& settings);
+// Throws InputError on a knob the compliant route does not know or refuses (Engine::check_settings).
+void check_compliant_settings(const EngineSettings& settings);
 
 }  // namespace vssw::multibody

@@ -227,6 +227,10 @@ public:
         return s;
     }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+    void check_settings(const EngineSettings& settings) const override {
+        if (compliant_) check_compliant_settings(settings);
+        else (void)read_knobs(settings);
+    }
 
 private:
     bool compliant_;
