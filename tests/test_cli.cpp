@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,7 @@
 #include "analytic/wall.hpp"
 #include "apps/option_values.hpp"
 #include "multibody/engine.hpp"
+#include "tests/table1.hpp"
 
 namespace {
 
@@ -51,6 +53,16 @@ using vssw::testing::run_cli;
 std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
+}
+
+// The wall options of Table 1 specimen `number` (data/table1.csv), as a user types them (shortest round-trip text).
+std::vector<std::string> specimen_args(int number) {
+    const vssw::Specimen& s = vssw::testing::table1(number);
+    auto text = [](double x) {
+        char buffer[32];
+        return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
+    };
+    return {"--height", text(s.height), "--thickness", text(s.thickness), "--hinge", text(s.hinge_ratio)};
 }
 
 // Runs a command that must succeed with --json and returns its parsed output.
@@ -651,8 +663,9 @@ TEST(CliHardening, CompareRefusesAReleaseTooSmallToMeasure) {
 // A release from which the analytic wall falls has no impact to measure: the output says so and the exit code is
 // 3, never 0 with nulls.
 TEST(CliHardening, CompareWithAnUnmeasuredMetricExitsThreeWithTheReason) {
-    const CliResult r = run_cli({"compare", "--engine", "analytic", "--height", "3.05", "--thickness", "0.143",
-                                 "--hinge", "0.6", "--xi", "0.5", "--theta0", "0.99", "--json"});
+    const CliResult r = run_cli(std::vector<std::string>{"compare", "--engine", "analytic", "--xi", "0.5", "--theta0",
+                                                         "0.99", "--json"} +
+                                specimen_args(18));
     EXPECT_EQ(r.code, vssw::cli::kExitSimulationFailed) << r.err;
     EXPECT_NE(r.err.find("not measured"), std::string::npos) << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << r.err;
@@ -665,8 +678,7 @@ TEST(CliHardening, CompareWithAnUnmeasuredMetricExitsThreeWithTheReason) {
 namespace {
 
 // Table 1 #7 at xi 0.5: released from 0.8 alpha1 its exact kinematics need the roller to pull (README).
-const std::vector<std::string> kT1n7Heavy = {"--height", "4.88", "--thickness", "0.2", "--hinge", "0.5", "--xi",
-                                             "0.5"};
+std::vector<std::string> t1n7_heavy() { return specimen_args(7) + std::vector<std::string>{"--xi", "0.5"}; }
 
 }  // namespace
 
@@ -681,7 +693,7 @@ TEST(CliAssumptions, FreeReportsTheRollerAndFrictionAndWarnsWhereTheRollerPulls)
     EXPECT_EQ(pushes["impact"]["law"], "eq19");
 
     const Json pulls =
-        run_json(std::vector<std::string>{"free", "--theta0", "0.8", "--kinematics", "exact"} + kT1n7Heavy);
+        run_json(std::vector<std::string>{"free", "--theta0", "0.8", "--kinematics", "exact"} + t1n7_heavy());
     EXPECT_LT(pulls["roller"]["min_reaction"].get<double>(), 0.0);
     EXPECT_EQ(pulls["roller"]["tension_at"].get<double>(), 0.0);
     ASSERT_EQ(pulls["warnings"].size(), 1u);
@@ -725,15 +737,15 @@ TEST(CliAssumptions, HistoryOfAHighHingeOverturnsAndWarns) {
 
 TEST(CliAssumptions, CompareCarriesTheAnalyticModelsWarnings) {
     const Json j = run_json(std::vector<std::string>{"compare", "--engine", "analytic", "--theta0", "0.8"} +
-                            kT1n7Heavy);
+                            t1n7_heavy());
     ASSERT_TRUE(j["analytic_warnings"].is_array());
     ASSERT_FALSE(j["analytic_warnings"].empty());
     EXPECT_NE(j["analytic_warnings"][0].get<std::string>().find("roller"), std::string::npos);
 }
 
 TEST(CliAssumptions, UnilateralRollerIsAChoiceOfTheExactKinematics) {
-    const std::vector<std::string> t1n2 = {"--height", "4.88", "--thickness", "0.356", "--hinge", "0.64", "--xi",
-                                           "0.5", "--theta0", "0.8", "--kinematics", "exact"};
+    const std::vector<std::string> t1n2 =
+        specimen_args(2) + std::vector<std::string>{"--xi", "0.5", "--theta0", "0.8", "--kinematics", "exact"};
     const Json bi = run_json(std::vector<std::string>{"free"} + t1n2);
     const Json uni = run_json(std::vector<std::string>{"free", "--roller", "unilateral"} + t1n2);
     EXPECT_EQ(uni["roller"]["model"], "unilateral");
@@ -761,8 +773,7 @@ constexpr double kReferenceRatioSampling = 1e-5;
 constexpr double kWholeMechanismRatioSampling = 1e-4;
 
 // Table 1 #1 (hinge 0.69, high): the paper's Eq. (3) and the exact kinematics part measurably from 0.8 alpha1.
-const std::vector<std::string> kT1n1From08 = {"--height", "4.88", "--thickness", "0.356", "--hinge", "0.69",
-                                              "--theta0", "0.8"};
+std::vector<std::string> t1n1_from_08() { return specimen_args(1) + std::vector<std::string>{"--theta0", "0.8"}; }
 
 bool engine_available(const std::string& name) {
     const auto engines = vssw::multibody::available_engines();
@@ -779,11 +790,11 @@ Json without_wall_time(Json j) {
 
 TEST(CliCompare, KinematicsChoosesTheAnalyticReferenceExactByDefault) {
     const auto compare_period = [](const std::vector<std::string>& extra) {
-        const Json j = run_json(std::vector<std::string>{"compare", "--engine", "analytic"} + kT1n1From08 + extra);
+        const Json j = run_json(std::vector<std::string>{"compare", "--engine", "analytic"} + t1n1_from_08() + extra);
         return std::make_pair(j["period"]["analytic"].get<double>(), j["analytic_model"]["kinematics"]);
     };
     const auto free_period = [](const char* kinematics) {
-        const Json j = run_json(std::vector<std::string>{"free", "--kinematics", kinematics} + kT1n1From08);
+        const Json j = run_json(std::vector<std::string>{"free", "--kinematics", kinematics} + t1n1_from_08());
         return 4.0 * j["first_impact_time"].get<double>();
     };
     const auto [by_default, default_name] = compare_period({});
@@ -800,8 +811,8 @@ TEST(CliCompare, KinematicsChoosesTheAnalyticReferenceExactByDefault) {
     const CliResult help = run_cli({"compare", "--help"});
     EXPECT_NE(help.out.find("(default exact;"), std::string::npos) << help.out;
     EXPECT_NE(run_cli({"free", "--help"}).out.find("(default paper;"), std::string::npos);
-    const CliResult table = run_cli(std::vector<std::string>{"compare", "--engine", "analytic", "--kinematics", "paper"} +
-                                    kT1n1From08);
+    const CliResult table =
+        run_cli(std::vector<std::string>{"compare", "--engine", "analytic", "--kinematics", "paper"} + t1n1_from_08());
     EXPECT_EQ(table.code, 0) << table.err;
     EXPECT_NE(table.out.find("against the analytic model (paper kinematics, impact eq19, bilateral roller)"),
               std::string::npos)
@@ -819,8 +830,7 @@ TEST(CliCompare, ImpactAndRollerChooseTheAnalyticReference) {
     EXPECT_NEAR(whole["restitution"]["engine"].get<double>(), eq19, kReferenceRatioSampling * eq19);
 
     // Table 1 #3 at xi 0.5 from 0.8 alpha1: the unilateral roller lets the top leave, the first impact comes later.
-    const std::vector<std::string> t1n3 = {"--height", "4.88", "--thickness", "0.356", "--hinge", "0.54", "--xi",
-                                           "0.5", "--theta0", "0.8"};
+    const std::vector<std::string> t1n3 = specimen_args(3) + std::vector<std::string>{"--xi", "0.5", "--theta0", "0.8"};
     const std::vector<std::string> compare = {"compare", "--engine", "analytic"};
     const Json bilateral = run_json(compare + t1n3);
     const Json unilateral = run_json(compare + t1n3 + std::vector<std::string>{"--roller", "unilateral"});
@@ -844,7 +854,8 @@ TEST(CliCompare, ImpactAndRollerChooseTheAnalyticReference) {
 
 TEST(CliCompare, TwoEnginesGiveTheSingleEngineComparisons) {
     if (!engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
-    const std::vector<std::string> parapet = {"compare", "--model", "parapet", "--height", "0.9", "--thickness", "0.11"};
+    const std::vector<std::string> parapet = {"compare", "--model", "parapet", "--height", "0.9",
+                                              "--thickness", "0.11"};
     const Json both = run_json(parapet + std::vector<std::string>{"--engine", "ode,analytic"});
     ASSERT_TRUE(both["comparisons"].is_array());
     ASSERT_EQ(both["comparisons"].size(), 2u);
@@ -897,8 +908,9 @@ TEST(CliCompare, BadEngineListsAreRefusedNamingTheEngines) {
 TEST(CliCompare, SeveralEnginesExitThreeWhenAnyComparisonIsIncomplete) {
     if (!engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
     // The analytic wall falls from 0.99 alpha1: no period on the reference side, for either engine.
-    const CliResult r = run_cli({"compare", "--engine", "analytic,ode", "--height", "3.05", "--thickness", "0.143",
-                                 "--hinge", "0.6", "--xi", "0.5", "--theta0", "0.99", "--json"});
+    const CliResult r = run_cli(std::vector<std::string>{"compare", "--engine", "analytic,ode", "--xi", "0.5",
+                                                         "--theta0", "0.99", "--json"} +
+                                specimen_args(18));
     EXPECT_EQ(r.code, vssw::cli::kExitSimulationFailed) << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << r.err;
     EXPECT_NE(r.err.find("analytic: "), std::string::npos) << r.err;
