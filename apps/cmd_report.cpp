@@ -43,18 +43,10 @@ struct ReportCommandOptions {
     std::string out;
 };
 
-// Every engine compiled in except the analytic model, which always runs as the reference, and Simbody's rigid route
-// (simbody-rigid), Simbody's second route: its threshold bisections take minutes (README, "Simbody"); name it in
-// --engines to include it.
-std::vector<std::string> default_engines() {
-    std::vector<std::string> engines;
-    for (const std::string& name : multibody::available_engines())
-        if (name != "analytic" && name != "simbody-rigid") engines.push_back(name);
-    return engines;
-}
-
+// Without --engines: multibody::default_compared_engines() (all but the analytic model, which always runs as the
+// reference, and simbody-rigid). A name given twice runs once, "analytic" is the reference anyway.
 std::vector<std::string> checked_engines(const std::vector<std::string>& asked) {
-    if (asked.empty()) return default_engines();
+    if (asked.empty()) return multibody::default_compared_engines();
     const std::vector<std::string> available = multibody::available_engines();
     std::vector<std::string> engines;
     for (const std::string& name : asked) {
@@ -138,7 +130,7 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--suite", o->suite, "default (about 40 s on 2 cores with Bullet, ODE and Simbody) or full (233 cases, about 4 min)");
     cmd->add_option("--engines", o->engines,
                     fmt::format("engines to compare, comma-separated (default: {}; simbody-rigid on request)",
-                                fmt::join(default_engines(), ", ")))
+                                fmt::join(multibody::default_compared_engines(), ", ")))
         ->delimiter(',');
     cmd->add_option("--cases", o->cases, "only these case ids, comma-separated (e.g. fig6-vssw,fig6-vssw/r0.5)")
         ->delimiter(',');

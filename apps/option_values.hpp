@@ -1,6 +1,7 @@
 #pragma once
 // Checks of option values that CLI11 would report without naming the value as typed, or not at all.
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -19,6 +20,11 @@ constexpr int kMaxIterations = 1000;
 // Whole-number option: `text` must be an integer from lo to hi, else InputError
 // "<name> must be an integer from <lo> to <hi><meaning>, got <text>" (meaning: e.g. " (0: the available cores)").
 int parse_bounded_int(const std::string& name, const std::string& text, int lo, int hi, const std::string& meaning = "");
+
+// A list of engines as given to `option` (comma-separated, already split): "all" stands for
+// multibody::default_compared_engines() where it appears. Each name must be available in this build and appear once
+// (also through "all"): InputError naming every unknown and every repeated name otherwise.
+std::vector<std::string> parse_engine_list(const std::string& option, const std::vector<std::string>& names);
 
 // Every floating-point option given to `cmd` must be finite, also one the command accepts and ignores (--hinge for a
 // parapet): InputError "<option> must be a finite number, got nan" otherwise. Ranges are checked where the values are

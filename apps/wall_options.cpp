@@ -41,8 +41,9 @@ void add_wall_options(CLI::App& cmd, WallOptions& o, bool model_choice) {
 void add_model_options(CLI::App& cmd, ModelOptions& o) {
     cmd.add_option("--model", o.model, "vssw (two blocks with a top roller) or parapet (one block) (default vssw)");
     cmd.add_option("--kinematics", o.kinematics,
-                   "VSSW kinematics: paper (Eq. 3 inside Eq. 10-11, as printed) or exact (Eq. 2) (default paper; "
-                   "ignored for a parapet)");
+                   fmt::format("VSSW kinematics: paper (Eq. 3 inside Eq. 10-11, as printed) or exact (Eq. 2) (default "
+                               "{}; ignored for a parapet)",
+                               o.kinematics));
 }
 
 void add_assumption_options(CLI::App& cmd, ModelOptions& o) {

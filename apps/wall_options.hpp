@@ -50,9 +50,10 @@ struct ModelOptions {
 // only changes the help of --hinge: whether a hinge is required is decided by vssw_geometry(), so that a parapet
 // can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
-// --model, --kinematics.
+// --model, --kinematics; the help names options.kinematics as the default (paper, but exact for compare).
 void add_model_options(CLI::App& cmd, ModelOptions& options);
-// --impact, --roller: the analytic model's assumptions that `free` and `history` let a user change.
+// --impact, --roller: the analytic model's assumptions that `free`, `history` and `compare` (its reference) let a
+// user change.
 void add_assumption_options(CLI::App& cmd, ModelOptions& options);
 
 VsswGeometry vssw_geometry(const WallOptions& options);  // InputError when --hinge is missing

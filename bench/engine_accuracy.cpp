@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analytic/closed_forms.hpp"
+#include "analytic/specimens.hpp"
 #include "compare/experiments.hpp"
 #include "multibody/engine.hpp"
 
@@ -26,13 +27,15 @@ std::vector<NamedWall> walls() {
     std::vector<NamedWall> w;
     w.push_back({"Fig. 6 VSSW 4 x 0.4 m, h1/h 0.7", multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7))});
     // Table 1 specimens 1, 7 and 15 (hinges at 0.69, 0.50, 0.60) at the three overburdens of the issue.
+    const std::vector<Specimen> table1 = read_table1(default_table1_path());
     for (double xi : {0.0, 0.1, 0.5}) {
-        w.push_back({"T1 #1 4.88 x 0.356, h1/h 0.69, xi " + std::to_string(xi).substr(0, 3),
-                     multibody::WallScene::of(make_vssw(4.88, 0.356, 0.69, xi))});
-        w.push_back({"T1 #7 4.88 x 0.200, h1/h 0.50, xi " + std::to_string(xi).substr(0, 3),
-                     multibody::WallScene::of(make_vssw(4.88, 0.2, 0.5, xi))});
-        w.push_back({"T1 #15 3.05 x 0.194, h1/h 0.60, xi " + std::to_string(xi).substr(0, 3),
-                     multibody::WallScene::of(make_vssw(3.05, 0.194, 0.6, xi))});
+        for (int number : {1, 7, 15}) {
+            const Specimen& s = table1_specimen(table1, number);
+            char name[80];
+            std::snprintf(name, sizeof name, "T1 #%d %.2f x %.3f, h1/h %.2f, xi %.1f", s.number, s.height, s.thickness,
+                          s.hinge_ratio, xi);
+            w.push_back({name, multibody::WallScene::of(make_vssw(s, xi))});
+        }
     }
     w.push_back({"Fig. 6 PW 4 x 0.4 m (h/b 10)", multibody::WallScene::of(make_parapet(4.0, 0.4))});
     w.push_back({"PW 0.9 x 0.11 m (Lam, h/b 8.2)", multibody::WallScene::of(make_parapet(0.9, 0.11))});

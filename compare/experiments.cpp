@@ -169,14 +169,15 @@ EngineSettings analytic_reference_settings(const EngineSettings& /*settings*/) {
 }
 
 FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const EngineSettings& settings,
-                                                     const WallScene& scene, const FreeVibrationOptions& options) {
+                                                     const WallScene& scene, const FreeVibrationOptions& options,
+                                                     const EngineSettings& reference) {
     require_scene(scene);
     const multibody::AnalyticEngine analytic;
     FreeVibrationOptions free = options;
     require(std::isfinite(free.r) && free.r > 0.0, "release angle r (units of alpha)", "a positive finite number",
             free.r);
     if (free.t_end <= 0.0) free.t_end = free_vibration_duration(scene, free.r * scene.alpha(), free.impacts);
-    return {run_free_vibration(analytic, analytic_reference_settings(settings), scene, free),
+    return {run_free_vibration(analytic, reference, scene, free),
             run_free_vibration(engine, settings, scene, free)};
 }
 
@@ -196,17 +197,16 @@ EngineComparison compare_with_analytic(const Engine& engine, const EngineSetting
                                        double r, const ComparisonOptions& options) {
     require_scene(scene);
     const multibody::AnalyticEngine analytic;
-    const EngineSettings analytic_settings = analytic_reference_settings(settings);
 
     EngineComparison c{};
-    c.analytic_threshold = find_threshold(analytic, analytic_settings, scene, options.threshold);
+    c.analytic_threshold = find_threshold(analytic, options.reference, scene, options.threshold);
     c.engine_threshold = find_threshold(engine, settings, scene, options.threshold);
     c.threshold_g = compare_metric(c.analytic_threshold.value_g, c.engine_threshold.value_g);
 
     FreeVibrationOptions free = options.free;
     free.r = r;
     const double theta0 = r * scene.alpha();
-    const FreeVibrationComparison runs = free_vibration_with_analytic(engine, settings, scene, free);
+    const FreeVibrationComparison runs = free_vibration_with_analytic(engine, settings, scene, free, options.reference);
     const FreeVibrationResult& a = runs.analytic;
     const FreeVibrationResult& e = runs.engine;
     c.period = compare_metric(a.period.value_or(kNaN), e.period.value_or(kNaN));

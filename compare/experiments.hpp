@@ -110,9 +110,21 @@ struct MetricComparison {
 };
 MetricComparison compare_metric(double analytic, double engine);
 
+// The analytic side of a comparison with an engine run at `settings`: AnalyticEngine's defaults (exact kinematics,
+// output every 1e-4 s) whatever the engine's step, so that the reference is the model's own value and the sampling
+// error of a coarse engine step is charged to the engine. At 1e-4 s the sampled metrics are within 5.4e-6
+// (restitution, Fig. 6 VSSW) of the model's events, 400 times below the tightest target; they are the values of the
+// analytic model's own rows in the validation suite. `settings` is not read: kept so that callers say which engine
+// the reference is for.
+EngineSettings analytic_reference_settings(const EngineSettings& settings);
+
 struct ComparisonOptions {
     ThresholdOptions threshold;
     FreeVibrationOptions free;  // its r is replaced by the r given to compare_with_analytic
+    // The analytic reference's settings (independent of the engine's step): its model's knobs (kinematics, impact
+    // law, roller: multibody::analytic_settings) and output interval. Default: exact kinematics, Eq. (19), the
+    // bilateral roller, every 1e-4 s.
+    EngineSettings reference = analytic_reference_settings(EngineSettings{});
 };
 
 struct EngineComparison {
@@ -135,24 +147,18 @@ struct EngineComparison {
     std::vector<std::string> analytic_warnings;
 };
 
-// The analytic side of a comparison with an engine run at `settings`: AnalyticEngine's defaults (exact kinematics,
-// output every 1e-4 s) whatever the engine's step, so that the reference is the model's own value and the sampling
-// error of a coarse engine step is charged to the engine. At 1e-4 s the sampled metrics are within 5.4e-6
-// (restitution, Fig. 6 VSSW) of the model's events, 400 times below the tightest target; they are the values of the
-// analytic model's own rows in the validation suite. `settings` is not read: kept so that callers say which engine
-// the reference is for.
-EngineSettings analytic_reference_settings(const EngineSettings& settings);
-
-// The free vibrations of a comparison: the analytic model (analytic_reference_settings) and the engine, released at
-// options.r alpha, both run for the same time (options.t_end, or free_vibration_duration when 0).
+// The free vibrations of a comparison: the analytic model at `reference` (AnalyticEngine's settings, e.g.
+// analytic_reference_settings) and the engine, released at options.r alpha, both run for the same time
+// (options.t_end, or free_vibration_duration when 0).
 struct FreeVibrationComparison {
     FreeVibrationResult analytic, engine;
 };
 FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const EngineSettings& settings,
-                                                     const WallScene& scene, const FreeVibrationOptions& options);
+                                                     const WallScene& scene, const FreeVibrationOptions& options,
+                                                     const EngineSettings& reference);
 
-// The engine against AnalyticEngine (exact kinematics), both measured by the code above. The analytic side is
-// analytic_reference_settings' (independent of the engine's step), and both free vibrations run for the same time.
+// The engine against AnalyticEngine at options.reference (exact kinematics unless it says otherwise), both measured
+// by the code above, both free vibrations run for the same time.
 EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
                                        double r, const ComparisonOptions& options = {});
 

@@ -15,6 +15,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
+#include "analytic/specimens.hpp"
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/analytic_engine.hpp"
@@ -31,18 +32,8 @@ constexpr const char* kReferenceEngine = "analytic";
 
 // The walls ------------------------------------------------------------------------------------------------------
 
-// Table 1 of the paper (ABK 1981): the specimens with data (4 and 12 were discarded as damaged). Full height and
-// thickness [m] and h1/h as printed (14's hinge varied during the tests, 17's is the value before it fractured).
-struct Specimen {
-    int number;
-    double height, thickness, hinge_ratio;
-};
-constexpr Specimen kTable1[] = {
-    {1, 4.88, 0.356, 0.69},  {2, 4.88, 0.356, 0.64},  {3, 4.88, 0.356, 0.54},  {5, 3.05, 0.143, 0.53},
-    {6, 3.05, 0.143, 0.67},  {7, 4.88, 0.200, 0.50},  {8, 4.88, 0.200, 0.54},  {9, 4.88, 0.200, 0.46},
-    {10, 4.88, 0.194, 0.75}, {11, 4.88, 0.194, 0.67}, {13, 3.05, 0.194, 0.53}, {14, 3.05, 0.194, 0.63},
-    {15, 3.05, 0.194, 0.60}, {16, 3.05, 0.143, 0.67}, {17, 3.05, 0.143, 0.60}, {18, 3.05, 0.143, 0.60},
-};
+// Table 1 of the paper (ABK 1981) is data/table1.csv (analytic/specimens.hpp), always the shipped one: the case ids
+// name its specimens, and bounds files name the case ids (--data of report and check moves the records only).
 // The default suite's specimens: hinge high (0.69), at mid-height (0.50), between (0.60), as bench/engine_accuracy.
 constexpr int kDefaultSpecimens[] = {1, 7, 15};
 constexpr double kOverburdens[] = {0.0, 0.1, 0.5};
@@ -260,7 +251,8 @@ void free_task(const TaskContext& x, TaskOutput& out) {
     }
     EngineSettings settings = x.engine.default_settings();
     if (x.c.dt) settings.dt = *x.c.dt;
-    const FreeVibrationComparison runs = free_vibration_with_analytic(x.engine, settings, x.wall.scene, options);
+    const FreeVibrationComparison runs =
+        free_vibration_with_analytic(x.engine, settings, x.wall.scene, options, analytic_reference_settings(settings));
     free_rows(x, runs.analytic, runs.engine, out);
     // A first-impact ratio outside (0, 1] is a failure of the engine's run, not a restitution: the row is NaN and
     // the report lists why.
@@ -403,12 +395,14 @@ Suite make_suite(const std::string& name, const std::string& data_dir) {
     s.walls.push_back({kFig6Vssw, "Fig. 6 VSSW 4 x 0.4 m, h1/h 0.7",
                        multibody::WallScene::of(make_vssw(kFig6Height, kFig6Thickness, kFig6Hinge))});
     s.walls.push_back({kFig6Pw, "Fig. 6 PW 4 x 0.4 m", multibody::WallScene::of(make_parapet(kFig6Height, kFig6Thickness))});
-    for (const Specimen& sp : kTable1) {
-        if (!full && std::find(std::begin(kDefaultSpecimens), std::end(kDefaultSpecimens), sp.number) ==
-                         std::end(kDefaultSpecimens))
-            continue;
-        for (double xi : kOverburdens) s.walls.push_back(table1_wall(sp, xi));
+    const std::vector<Specimen> table1 = read_table1(default_table1_path());
+    std::vector<Specimen> specimens = table1;  // full: all, in the table's order
+    if (!full) {
+        specimens.clear();
+        for (int number : kDefaultSpecimens) specimens.push_back(table1_specimen(table1, number));
     }
+    for (const Specimen& sp : specimens)
+        for (double xi : kOverburdens) s.walls.push_back(table1_wall(sp, xi));
 
     const std::string dir = data_dir.empty() ? std::string(".") : data_dir;
     for (const RecordSpec& r : kRecords) {

@@ -136,4 +136,13 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     return out;
 }
 
+EngineSettings analytic_settings(Kinematics kinematics, const ImpactLaw& impact, Roller roller) {
+    EngineSettings s = AnalyticEngine().default_settings();
+    s.knobs[kPaperKinematics] = kinematics == Kinematics::paper ? 1.0 : 0.0;
+    if (impact.kind == ImpactLaw::Kind::ratio) s.knobs[kRestitution] = impact.ratio;
+    if (impact.kind == ImpactLaw::Kind::whole_mechanism) s.knobs[kWholeMechanism] = 1.0;
+    if (roller == Roller::unilateral) s.knobs[kUnilateralRoller] = 1.0;
+    return s;
+}
+
 }  // namespace vssw::multibody

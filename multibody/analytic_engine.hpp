@@ -7,9 +7,10 @@
 //    > 0, takes precedence, as for an engine. Default 1e-4 s, the engines' default step, so that both sides of a
 //    comparison are sampled alike unless the caller says otherwise.
 //  - knobs: "paper_kinematics" (0: exact kinematics of Eq. 2, the default, as every comparison with an engine uses;
-//    1: the paper's Eq. 3), "rtol" (DOP853's relative tolerance, default 1e-10), "restitution" (> 0: this impact
-//    ratio instead of Eq. (19) / Housner's, with_restitution in analytic/model.hpp). Any other knob is an InputError:
-//    a misspelt knob must not be ignored silently.
+//    1: the paper's Eq. 3), "rtol" (DOP853's relative tolerance, default 1e-10), "restitution" (given: this impact
+//    ratio in [0, 1] instead of Eq. (19) / Housner's, 0 included), "whole_mechanism_impact" (1: the whole mechanism's
+//    plastic impact), "unilateral_roller" (1: a roller that can only push; exact kinematics only). Any other knob is
+//    an InputError: a misspelt knob must not be ignored silently.
 //  - iterations: unused.
 // The integrator's own failures (step size underflow, step limit, a non-finite state) are reported as EngineFailure;
 // bad input stays InputError.
@@ -17,6 +18,7 @@
 #include <string>
 
 #include "analytic/model.hpp"
+#include "analytic/simulate.hpp"  // Roller
 #include "multibody/engine.hpp"
 #include "multibody/scene_geometry.hpp"  // analytic_model
 
@@ -31,5 +33,10 @@ public:
                         const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override;
 };
+
+// The settings that run the model chosen by name (vssw compare's --kinematics, --impact, --roller for its
+// reference): default_settings() with paper_kinematics, restitution or whole_mechanism_impact, and unilateral_roller
+// set to match. The defaults (exact, Eq. 19, bilateral) give default_settings() itself.
+EngineSettings analytic_settings(Kinematics kinematics, const ImpactLaw& impact, Roller roller);
 
 }  // namespace vssw::multibody

@@ -111,5 +111,9 @@ public:
 std::vector<std::string> available_engines();
 // Throws InputError naming the engine and the available ones.
 std::unique_ptr<Engine> make_engine(const std::string& name);
+// The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
+// except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold
+// bisections take minutes (README, "Simbody"); name it to include it.
+std::vector<std::string> default_compared_engines();
 
 }  // namespace vssw::multibody

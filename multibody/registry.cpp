@@ -30,6 +30,13 @@ std::vector<std::string> available_engines() {
     return names;
 }
 
+std::vector<std::string> default_compared_engines() {
+    std::vector<std::string> engines;
+    for (const std::string& name : available_engines())
+        if (name != "analytic" && name != "simbody-rigid") engines.push_back(name);
+    return engines;
+}
+
 std::unique_ptr<Engine> make_engine(const std::string& name) {
     if (name == "analytic") return std::make_unique<AnalyticEngine>();
 #ifdef VSSW_HAVE_BULLET

@@ -15,9 +15,12 @@
 #include "analytic/simulate.hpp"
 #include "analytic/support_monitor.hpp"
 #include "analytic/two_block.hpp"
+#include "tests/table1.hpp"
 
 namespace vssw {
 namespace {
+
+using testing::table1;
 
 const std::string kRinaldi = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
 // The runs below keep their energy balance near 1e-9 of the largest energy (rtol 1e-10), 1e-8 over the ~900 impacts
@@ -99,15 +102,19 @@ TEST(HingeNearEnds, RunCleanlyInBothKinematics) {
 // to pull (Table 1 #7 and #2); from 0.5 alpha1, or at xi 0, it pushes throughout.
 TEST(Supports, TheRollersSignAlongFreeFlights) {
     struct Case {
-        double height, thickness, hinge, xi, r;
+        const char* name;
+        VsswGeometry w;
+        double r;
         bool pulls;
     };
-    const Case cases[] = {{4.88, 0.2, 0.5, 0.5, 0.8, true},    {4.88, 0.356, 0.64, 0.5, 0.8, true},
-                          {4.88, 0.2, 0.5, 0.5, 0.5, false},   {4.88, 0.356, 0.64, 0.0, 0.8, false},
-                          {4.0, 0.4, 0.7, 0.0, 0.5, false}};
+    const Case cases[] = {{"Table 1 #7, xi 0.5", make_vssw(table1(7), 0.5), 0.8, true},
+                          {"Table 1 #2, xi 0.5", make_vssw(table1(2), 0.5), 0.8, true},
+                          {"Table 1 #7, xi 0.5", make_vssw(table1(7), 0.5), 0.5, false},
+                          {"Table 1 #2, xi 0", make_vssw(table1(2), 0.0), 0.8, false},
+                          {"Fig. 6", make_vssw(4.0, 0.4, 0.7), 0.5, false}};
     for (const Case& c : cases) {
-        SCOPED_TRACE(fmt::format("{} x {} h1/h {} xi {} from {} alpha1", c.height, c.thickness, c.hinge, c.xi, c.r));
-        const VsswGeometry w = make_vssw(c.height, c.thickness, c.hinge, c.xi);
+        SCOPED_TRACE(fmt::format("{} from {} alpha1", c.name, c.r));
+        const VsswGeometry& w = c.w;
         const auto m = make_vssw_model(w, Kinematics::exact);
         SimulationOptions o;
         o.keep_samples = false;
@@ -134,7 +141,7 @@ TEST(Supports, TheRollersSignAlongFreeFlights) {
 
 // The mirror rule holds for the supports: forces are the same on both sides, friction too.
 TEST(Supports, MirrorImagesNeedTheSameForces) {
-    const VsswGeometry w = make_vssw(4.88, 0.356, 0.64, 0.5);
+    const VsswGeometry w = make_vssw(table1(2), 0.5);
     for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
         const auto m = make_vssw_model(w, k);
         const SupportMonitor monitor(*m);
@@ -213,7 +220,7 @@ TEST(UnilateralRoller, LeavesOnlyWhereTheRollerWouldPull) {
     ASSERT_EQ(u.impacts.size(), b.impacts.size());
     EXPECT_EQ(u.impacts.front().t, b.impacts.front().t);
 
-    for (const VsswGeometry& w : {make_vssw(4.88, 0.356, 0.64, 0.5), make_vssw(3.05, 0.194, 0.63, 0.5)}) {
+    for (const VsswGeometry& w : {make_vssw(table1(2), 0.5), make_vssw(table1(14), 0.5)}) {
         const SimulationResult bi = run(w, 0.8, Roller::bilateral), uni = run(w, 0.8, Roller::unilateral);
         ASSERT_TRUE(bi.supports.roller_tension_at.has_value());
         EXPECT_GE(uni.supports.roller_departures, 1);

@@ -16,9 +16,12 @@
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
+#include "tests/table1.hpp"
 
 namespace vssw {
 namespace {
+
+using testing::table1;
 
 using multibody::EngineFailure;
 using multibody::WallScene;
@@ -99,7 +102,7 @@ std::string fmt_scene(const WallScene& scene, double r) {
 
 WallScene fig6_vssw() { return WallScene::of(make_vssw(4.0, 0.4, 0.7)); }
 WallScene fig6_parapet() { return WallScene::of(make_parapet(4.0, 0.4)); }
-WallScene table1_specimen11(double xi) { return WallScene::of(make_vssw(4.88, 0.194, 0.67, xi)); }
+WallScene table1_specimen11(double xi) { return WallScene::of(make_vssw(table1(11), xi)); }
 
 // Time of the first impact after a release at r alpha, from the engine's trajectory (the metric code's definition).
 double first_impact(const multibody::Engine& engine, multibody::EngineSettings settings, const WallScene& scene,
@@ -299,19 +302,17 @@ constexpr double kUnexplainedFraction = 0.1;
 TEST(UnilateralRoller, ExplainsTheEnginesPeriodsWhereThePapersRollerPulls) {
     using multibody::EngineSettings;
     using multibody::WallScene;
-    const WallScene scene = WallScene::of(make_vssw(3.05, 0.194, 0.63, 0.5));
+    const WallScene scene = WallScene::of(make_vssw(table1(14), 0.5));
     compare::FreeVibrationOptions options;
     options.r = 0.8;
     options.impacts = 1;
     const multibody::AnalyticEngine analytic;
-    EngineSettings unilateral = analytic.default_settings();
-    unilateral.knobs["unilateral_roller"] = 1.0;
+    const EngineSettings unilateral = multibody::analytic_settings(Kinematics::exact, {}, Roller::unilateral);
     const auto reference = compare::run_free_vibration(analytic, unilateral, scene, options);
     const auto paper_roller = compare::run_free_vibration(analytic, analytic.default_settings(), scene, options);
     ASSERT_TRUE(reference.period && paper_roller.period);
     int engines = 0;
-    for (const std::string& name : multibody::available_engines()) {
-        if (name == "analytic" || name == "simbody-rigid") continue;
+    for (const std::string& name : multibody::default_compared_engines()) {
         SCOPED_TRACE(name);
         const auto engine = multibody::make_engine(name);
         const auto r = compare::run_free_vibration(*engine, engine->default_settings(), scene, options);

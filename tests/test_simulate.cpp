@@ -8,9 +8,12 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
+#include "tests/table1.hpp"
 
 namespace vssw {
 namespace {
+
+using testing::table1;
 
 // rtol 1e-10 per step accumulates over 1e3-1e4 steps; observed drifts are ~1e-9 to ~1e-8 of V_r: 10x headroom.
 constexpr double kEnergyBalance = 1e-7;
@@ -43,7 +46,7 @@ TEST(Simulate, FreeVibrationConservesEnergyBetweenImpactsAndDissipatesAllOfItAtI
 TEST(Simulate, PeaksEitherSideOfAnImpactGiveTheRestitutionBack) {
     // Between impacts energy is conserved, so the peaks either side of an impact give e back by energy.
     constexpr double kPeakBased = 1e-7;  // peaks located on the dense output at rtol 1e-10
-    const VsswGeometry w = make_vssw(3.05, 0.143, 0.6, 0.1);
+    const VsswGeometry w = make_vssw(table1(18), 0.1);
     for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
         const auto m = make_vssw_model(w, k);
         const SimulationResult r = free_vibration(*m, 0.8 * w.alpha1);
@@ -55,7 +58,7 @@ TEST(Simulate, PeaksEitherSideOfAnImpactGiveTheRestitutionBack) {
 TEST(Simulate, Eq23AsPrintedIsOffByTheChangeOfCAAcrossTheImpact) {
     // Eq. (23) evaluates C_A at the peaks, not at rest where the velocities are compared: its error is of the order
     // of the relative change of C_A between the two peaks, and vanishes as they approach each other.
-    const VsswGeometry w = make_vssw(3.05, 0.143, 0.6);
+    const VsswGeometry w = make_vssw(table1(18));
     const auto m = make_vssw_model(w, Kinematics::paper);
     const SimulationResult r = free_vibration(*m, 0.8 * w.alpha1);
     for (std::size_t i = 0; i + 1 < 6; ++i) {
@@ -91,7 +94,7 @@ TEST(Simulate, MirrorImageReleaseGivesMirrorImageMotion) {
 }
 
 TEST(Simulate, ReversedRecordGivesMirrorImageResponse) {
-    const auto m = make_vssw_model(make_vssw(3.05, 0.143, 0.6, 0.1), Kinematics::exact);
+    const auto m = make_vssw_model(make_vssw(table1(18), 0.1), Kinematics::exact);
     const GroundMotion record = read_record(kRinaldi).scaled(0.25);  // rocks through the whole record, no fall
     SimulationOptions o;
     o.t_end = 25.0;
@@ -124,7 +127,8 @@ double threshold_by_bisection(const RockingModel& m, const GroundMotion& vertica
 
 TEST(Simulate, ThresholdFoundBySimulationIsEq12) {
     for (double xi : {0.0, 0.1, 0.5}) {
-        const VsswGeometry w = make_vssw(4.88, 0.356, 0.64, xi, kDefaultDensity, kGravityInG);
+        const Specimen& t1 = table1(2);
+        const VsswGeometry w = make_vssw(t1.height, t1.thickness, t1.hinge_ratio, xi, kDefaultDensity, kGravityInG);
         const auto m = make_vssw_model(w, Kinematics::exact);
         EXPECT_NEAR(threshold_by_bisection(*m), eq12_threshold(w) / kGravityInG,
                     2.0 * kThresholdBisection * eq12_threshold(w) / kGravityInG);
@@ -239,7 +243,7 @@ TEST(Simulate, EnergyBalanceClosesUnderTheRinaldiRecordWithOverburdenAndVertical
     const GroundMotion record = read_record(kRinaldi).scaled(0.25);  // rocks through the whole record, no fall
     const GroundMotion vertical = harmonic(0.05 * kGravityInG, 0.3, 15.0);  // with the 0.25 record: ~100 impacts, no fall
     for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
-        const auto m = make_vssw_model(make_vssw(3.05, 0.143, 0.6, 0.1), k);
+        const auto m = make_vssw_model(make_vssw(table1(18), 0.1), k);
         SimulationOptions o;
         o.t_end = 25.0;
         o.output_dt = 0.01;

@@ -17,9 +17,12 @@
 #include "analytic/error.hpp"
 #include "analytic/model.hpp"
 #include "analytic/two_block.hpp"
+#include "tests/table1.hpp"
 
 namespace vssw {
 namespace {
+
+using testing::table1;
 
 constexpr double kRoundoffRel = 1e-12;   // the same quantity by two exact formulas, relative to its scale
 constexpr double kAlgebraRel = 1e-11;    // two exact derivations through 2x2/3x3 solves (observed below 1e-12)
@@ -263,27 +266,31 @@ TEST(TwoBlock, RollerForceAlongFreeFlightsHasTheReadmesSigns) {
     constexpr double kReadmeRel = 0.01;  // the README prints integers (0.6 % on -87) from finite differences
     struct Flight {
         const char* name;
-        double height, thickness, hinge_ratio, xi, r;
+        VsswGeometry w;
+        double r;
         double readme_min;  // N/m, NaN where the README gives none
     };
     const double none = std::numeric_limits<double>::quiet_NaN();
     const Flight flights[] = {
-        {"Table 1 #7", 4.88, 0.200, 0.50, 0.5, 0.8, -87.0},  {"Table 1 #2", 4.88, 0.356, 0.64, 0.5, 0.8, -648.0},
-        {"Table 1 #8", 4.88, 0.200, 0.54, 0.5, 0.8, -121.0}, {"Table 1 #6", 3.05, 0.143, 0.67, 0.5, 0.8, -125.0},
-        {"Table 1 #14", 3.05, 0.194, 0.63, 0.5, 0.8, -186.0}, {"Table 1 #3", 4.88, 0.356, 0.54, 0.5, 0.8, -369.0},
-        {"Table 1 #7 from 0.5", 4.88, 0.200, 0.50, 0.5, 0.5, none},
-        {"Table 1 #2 from 0.5", 4.88, 0.356, 0.64, 0.5, 0.5, none},
-        {"Table 1 #2 at xi 0", 4.88, 0.356, 0.64, 0.0, 0.8, none},
-        {"Fig. 6 from 0.5", 4.0, 0.4, 0.7, 0.0, 0.5, 946.0},
+        {"Table 1 #7", make_vssw(table1(7), 0.5), 0.8, -87.0},
+        {"Table 1 #2", make_vssw(table1(2), 0.5), 0.8, -648.0},
+        {"Table 1 #8", make_vssw(table1(8), 0.5), 0.8, -121.0},
+        {"Table 1 #6", make_vssw(table1(6), 0.5), 0.8, -125.0},
+        {"Table 1 #14", make_vssw(table1(14), 0.5), 0.8, -186.0},
+        {"Table 1 #3", make_vssw(table1(3), 0.5), 0.8, -369.0},
+        {"Table 1 #7 from 0.5", make_vssw(table1(7), 0.5), 0.5, none},
+        {"Table 1 #2 from 0.5", make_vssw(table1(2), 0.5), 0.5, none},
+        {"Table 1 #2 at xi 0", make_vssw(table1(2), 0.0), 0.8, none},
+        {"Fig. 6 from 0.5", make_vssw(4.0, 0.4, 0.7, 0.0), 0.5, 946.0},
     };
     for (const auto& f : flights) {
         SCOPED_TRACE(f.name);
-        const VsswGeometry w = make_vssw(f.height, f.thickness, f.hinge_ratio, f.xi);
+        const VsswGeometry& w = f.w;
         const RollerRange range = roller_along_flight(w, f.r * w.alpha1);
         std::printf("  %-22s roller at release %7.1f N/m, min %7.1f, max %7.1f; friction needed: base %.3f, "
                     "hinge %.3f%s\n", f.name, range.at_release, range.min, range.max, range.base_friction,
                     range.hinge_friction, range.contact_pulls ? " (a contact pulls)" : "");
-        if (f.xi > 0.0 && f.r > 0.6) {
+        if (w.xi > 0.0 && f.r > 0.6) {
             EXPECT_LT(range.at_release, 0.0);  // a pull at the release
         } else {
             EXPECT_GT(range.min, 0.0);  // a push throughout
@@ -302,16 +309,17 @@ TEST(TwoBlock, WhereTheRollerWouldPullTheFreeMotionLeavesIt) {
     // opens the gap (g'' > 0) exactly when the bilateral multiplier is negative, and closes it when it is positive.
     struct Release {
         const char* name;
-        double height, thickness, hinge_ratio, xi, r;
+        VsswGeometry w;
+        double r;
     };
     const Release releases[] = {
-        {"Table 1 #7 from 0.8, xi 0.5", 4.88, 0.200, 0.50, 0.5, 0.8},
-        {"Table 1 #2 from 0.8, xi 0.5", 4.88, 0.356, 0.64, 0.5, 0.8},
-        {"Fig. 6 from 0.5, xi 0", 4.0, 0.4, 0.7, 0.0, 0.5},
+        {"Table 1 #7 from 0.8, xi 0.5", make_vssw(table1(7), 0.5), 0.8},
+        {"Table 1 #2 from 0.8, xi 0.5", make_vssw(table1(2), 0.5), 0.8},
+        {"Fig. 6 from 0.5, xi 0", make_vssw(4.0, 0.4, 0.7, 0.0), 0.5},
     };
     for (const auto& rel : releases) {
         SCOPED_TRACE(rel.name);
-        const VsswGeometry w = make_vssw(rel.height, rel.thickness, rel.hinge_ratio, rel.xi);
+        const VsswGeometry& w = rel.w;
         for (int side : {1, -1}) {
             const TwoBlockWall wall(w, side);
             const Vec2 q = wall.on_roller(side * rel.r * w.alpha1), rest = Vec2::Zero();
@@ -330,7 +338,7 @@ TEST(TwoBlock, LeavingTheRollerTheUpperBlockFallsBackOntoTheFarGuide) {
     // come back; there the far guide pushes. (A scenario check: the signs and the order of events, not a number.)
     constexpr double kDt = 1e-5;      // [s] RK4; the excursion lasts tens of ms
     constexpr double kHorizon = 0.5;  // [s] far longer than the excursion; the run stops at the first contact
-    const VsswGeometry w = make_vssw(4.88, 0.200, 0.50, 0.5);
+    const VsswGeometry w = make_vssw(table1(7), 0.5);
     for (int side : {1, -1}) {
         const TwoBlockWall wall(w, side);
         Vec2 q = wall.on_roller(side * 0.8 * w.alpha1), qdot = Vec2::Zero();
