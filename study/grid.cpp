@@ -11,6 +11,7 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
+#include "analytic/specimens.hpp"
 #include "analytic/wall.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/scene_geometry.hpp"
@@ -80,6 +81,13 @@ std::string settings_text(const std::vector<Axis>& axes, const std::vector<Level
 
 Grid::Grid(const StudySpec& spec) : spec_(spec) {
     identity_ = fnv1a(spec.as_read.dump());
+    if (spec_.wall_axis("specimen")) {
+        try {
+            table1_ = read_table1(default_table1_path());
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("{} {}: wall.specimen: {}", kWhat, spec_.path, e.what()));
+        }
+    }
 
     // Records: read once, up front, so that a missing or malformed file is refused before anything runs.
     if (const Axis* files = spec_.excitation_axis("file")) {
@@ -219,6 +227,12 @@ CaseSpec Grid::make_case(int id) const {
         if (has("height")) {
             height = num("height", 0.0);
             thickness = num("thickness", 0.0);
+        } else if (has("specimen")) {
+            // Table 1 (data/table1.csv): its height and thickness, and its hinge unless the file gives one.
+            const Specimen& s = table1_specimen(table1_, static_cast<int>(num("specimen", 0.0)));
+            height = s.height;
+            thickness = s.thickness;
+            if (!hinge) hinge = s.hinge_ratio;
         } else if (has("alpha")) {
             // The whole wall's slenderness and half-diagonal: b = R sin(alpha), h = R cos(alpha).
             height = 2.0 * num("R", 0.0) * std::cos(num("alpha", 0.0));

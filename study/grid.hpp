@@ -21,6 +21,7 @@
 #include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
+#include "analytic/specimens.hpp"
 #include "multibody/engine.hpp"
 #include "study/spec.hpp"
 
@@ -98,6 +99,7 @@ private:
     std::vector<RunSpec> runs_;
     std::vector<std::string> skipped_runs_;
     std::map<std::string, GroundMotion> records_;
+    std::vector<Specimen> table1_;  // read when the study names specimens
     std::vector<std::string> columns_;
     std::string identity_;
 };

@@ -16,7 +16,7 @@
 namespace vssw::study {
 
 const std::vector<std::string> kWallKeys = {"model", "height", "thickness", "hinge", "xi",     "density", "g",
-                                            "alpha", "R",      "alpha1",    "alpha2", "R1"};
+                                            "alpha", "R",      "alpha1",    "alpha2", "R1",    "specimen"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "shape",    "amplitude", "pulse_period",
