@@ -13,6 +13,8 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
+#include "apps/compare_response.hpp"
+#include "apps/ground_motion_options.hpp"
 #include "apps/option_values.hpp"
 #include "apps/report_compare.hpp"
 #include "apps/simulation_failure.hpp"
@@ -47,6 +49,8 @@ struct CompareOptions {
     std::optional<std::string> iterations;  // as typed, checked by parse_bounded_int
     std::vector<std::string> knobs;  // NAME=VALUE
     bool json = false;
+    GroundMotionOptions motion;  // --record or --pulse: a comparison under a ground motion (compare_response.hpp)
+    bool theta0_given = false;
 };
 
 multibody::EngineSettings settings_of(const multibody::Engine& engine, const CompareOptions& o) {
@@ -86,7 +90,26 @@ CompareReference reference_of(const CompareOptions& o, const ChosenModel& chosen
             o.theta0, whole};
 }
 
+// Under a ground motion: the engines and the analytic model from rest, peak against peak (a one-case study).
+void run_compare_response(const CompareOptions& o, std::ostream& out) {
+    if (o.theta0_given) throw InputError("--theta0 is a release for the free vibration; with --record or --pulse the "
+                                         "wall starts from rest");
+    (void)load_ground_motion(o.motion);  // the motion's options checked with the messages `vssw history` gives
+    (void)choose_model(o.wall, o.model);
+    ResponseCompareRequest request{o.wall, o.model, o.motion, {}, {}, o.json};
+    for (const std::string& name : parse_engine_list("--engine", o.engines)) {
+        const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(name);
+        request.engines.push_back(name);
+        request.settings.push_back(settings_of(*engine, o));
+    }
+    compare_response(request, out);
+}
+
 void run_compare(const CompareOptions& o, std::ostream& out) {
+    if (o.motion.record || o.motion.pulse) {
+        run_compare_response(o, out);
+        return;
+    }
     // Every input is checked before the first engine runs: the wall and the reference's model, the engines and each
     // one's settings, the release.
     const ChosenModel chosen = choose_model(o.wall, o.model);
@@ -146,10 +169,16 @@ Command add_compare_command(CLI::App& root) {
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
-    cmd->add_option("--theta0", o->theta0,
+    cmd->add_option_function<double>(
+           "--theta0",
+           [o](const double& r) {
+               o->theta0 = r;
+               o->theta0_given = true;
+           },
                     fmt::format("release from rest at theta0 = r * alpha for the period and restitution, r from "
                                 "{:g} to below 1 (default 0.5)",
                                 kMinRelease));
+    add_ground_motion_options(*cmd, o->motion);
     cmd->add_option("--dt", o->dt,
                     "engine step [s], for every engine named (default: each engine's own, see the README)");
     cmd->add_option("--iterations", o->iterations,
@@ -175,7 +204,12 @@ Command add_compare_command(CLI::App& root) {
         "analytic_warnings: the analytic model's own assumptions failing along its free vibration (e.g. a roller\n"
         "that would have to pull): its values are the model's, but the model may not hold there.\n"
         "Exit 3 when an engine fails (NaN, sliding, ...) or a metric could not be measured (the output is printed;\n"
-        "with one engine, an engine that fails prints nothing).");
+        "with one engine, an engine that fails prints nothing).\n"
+        "With --record or --pulse (the ground-motion options of `vssw history`): every engine and the analytic model\n"
+        "from rest under that motion instead, each run's peak rotation (theta1/alpha1), its time and overturning side\n"
+        "by side: a one-case study (`vssw study` runs grids of them). JSON: {ground_motion, analytic_model, runs\n"
+        "[{engine, version, settings, peak_rotation, peak_time, overturned, t_overturn, status, warnings (analytic),\n"
+        "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.");
     return {cmd, [o](std::ostream& out) { run_compare(*o, out); }};
 }
 

@@ -129,4 +129,48 @@ TEST(StudyCli, HelpListsEveryMetric) {
         EXPECT_NE(r.out.find(m), std::string::npos) << m;
 }
 
+// `vssw compare` under a ground motion is a one-case study: the same numbers as `vssw study` on that case, and the
+// analytic run is `vssw history`'s.
+TEST(CompareResponse, IsAOneCaseStudyAndItsAnalyticRunIsHistorys) {
+    const TempDir dir;
+    const std::string record = std::string(VSSW_DATA_DIR) + "/elcentro_chopra.txt";
+    const std::vector<std::string> wall = {"--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--xi", "0.1"};
+    std::vector<std::string> args = {"compare", "--engine", "analytic", "--record", record, "--pga", "0.35",
+                                     "--impact", "whole-mechanism", "--json"};
+    args.insert(args.end(), wall.begin(), wall.end());
+    const auto c = run_cli(args);
+    ASSERT_EQ(c.code, 0) << c.err;
+    const auto cj = nlohmann::json::parse(c.out);
+    ASSERT_EQ(cj["runs"].size(), 1u);  // "analytic" named as an engine is the reference's own run
+    const double peak = cj["runs"][0]["peak_rotation"].get<double>();
+
+    const std::string file =
+        write_file(dir / "one.toml", "metrics = [\"peak_rotation\"]\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
+                                     "xi = 0.1\n[assumptions]\nkinematics = \"exact\"\nimpact = \"whole-mechanism\"\n"
+                                     "[excitation]\nkind = \"record\"\nfile = \"" + record + "\"\npga = 0.35\n")
+            .string();
+    ASSERT_EQ(run_cli({"study", file, "--out", (dir / "out").string(), "--no-plots"}).code, 0);
+    const auto table = vssw::study::read_results_csv(dir / "out" / "results.csv");
+    EXPECT_EQ(std::stod(table.rows.at(0).at(table.column("value"))), peak);
+
+    std::vector<std::string> h = {"history", "--record", record, "--pga", "0.35", "--kinematics", "exact",
+                                  "--impact", "whole-mechanism", "--json"};
+    h.insert(h.end(), wall.begin(), wall.end());
+    const auto history = run_cli(h);
+    ASSERT_EQ(history.code, 0) << history.err;
+    EXPECT_EQ(nlohmann::json::parse(history.out)["max_theta_over_alpha"].get<double>(), peak);
+}
+
+TEST(CompareResponse, ARecordAndAReleaseAreRefusedTogether) {
+    const auto r = run_cli({"compare", "--engine", "analytic", "--pulse", "sine", "--amplitude", "0.5",
+                            "--pulse-period", "0.5", "--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--theta0",
+                            "0.3"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--theta0 is a release for the free vibration"), std::string::npos) << r.err;
+    const auto both = run_cli({"compare", "--engine", "analytic", "--pulse", "sine", "--record", "x.AT2", "--height",
+                               "4", "--thickness", "0.4", "--hinge", "0.7"});
+    EXPECT_EQ(both.code, 2);
+    EXPECT_NE(both.err.find("either --record or --pulse"), std::string::npos) << both.err;
+}
+
 }  // namespace
