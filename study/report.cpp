@@ -1,9 +1,8 @@
-#include "apps/report_suite.hpp"
+#include "study/report.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <limits>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -11,7 +10,7 @@
 
 #include <fmt/format.h>
 
-namespace vssw::cli {
+namespace vssw::study {
 namespace {
 
 // Metrics in the order the report shows them; others follow by name.
@@ -22,17 +21,12 @@ const std::vector<std::string> kKnownMetrics = {
 // A step-study series needs this many points with a nonzero error before its order is fitted (two points always fit
 // a line; three can disagree with one).
 constexpr std::size_t kMinPointsForOrder = 3;
-// Fitted orders below this magnitude: the error does not depend on the step (it is not discretisation error). A first
-// order method gives ~1, so 0.3 separates "no trend" from "falling" with room for noisy points.
-constexpr double kFlatOrder = 0.3;
-// A fitted order is quoted as "roughly dt^p" only when the line explains this share of the variance of log|error|;
-// below it the points scatter (e.g. an error that changes sign between steps) and the report says so.
-constexpr double kRegularFit = 0.9;
-// Errors whose magnitudes stay within this factor of each other over the steps studied "hardly change with the
-// step": a first-order error would change by the ratio of the steps (5 to 10 over the suite's step studies).
-constexpr double kFlatSpread = 1.5;
 
-bool is_step_case(const ReportInput& in, const std::string& id) { return case_kind(in, id) == compare::CaseKind::step; }
+// The free-vibration case a step case belongs to: its id without the "/dt<dt>/<engine>" end.
+std::string step_base(const std::string& id) {
+    const auto pos = id.rfind("/dt");
+    return pos == std::string::npos ? id : id.substr(0, pos);
+}
 
 }  // namespace
 
@@ -43,9 +37,7 @@ std::string engine_display_name(const std::string& engine) {
     return it != names.end() ? it->second : engine;
 }
 
-namespace {
-
-std::string possessive(const std::string& engine) { return engine_display_name(engine) + "'s"; }
+bool is_step_case(const ReportInput& in, const std::string& id) { return case_kind(in, id) == compare::CaseKind::step; }
 
 std::string short_title(const std::string& metric) {
     if (metric == "threshold_g") return "threshold";
@@ -58,22 +50,7 @@ std::string short_title(const std::string& metric) {
     return metric;
 }
 
-// "the one case" or "all 4 cases".
-std::string all_of(std::size_t n, const std::string& noun) {
-    return n == 1 ? "the one " + noun : fmt::format("all {} {}s", n, noun);
-}
-
-std::string step_ms(double dt) { return fmt::format("{:g} ms", dt * 1e3); }
-
-// The free-vibration case a step case belongs to: its id without the "/dt<dt>/<engine>" end.
-std::string step_base(const std::string& id) {
-    const auto pos = id.rfind("/dt");
-    return pos == std::string::npos ? id : id.substr(0, pos);
-}
-
 bool within(double rel_error, double target) { return std::isfinite(rel_error) && std::abs(rel_error) <= target; }
-
-}  // namespace
 
 std::optional<double> target_of(const std::string& metric) {
     if (metric == "threshold_g") return kReportThresholdTarget;
@@ -162,16 +139,6 @@ double case_step(const ReportInput& in, const std::string& case_id) {
     char* end = nullptr;
     const double dt = std::strtod(text.c_str(), &end);
     return (end != text.c_str() && (*end == '\0' || *end == '/')) ? dt : std::nan("");
-}
-
-std::string percent(double rel_error) {
-    if (!std::isfinite(rel_error)) return "n/a";
-    const double p = 100.0 * rel_error;
-    const double a = std::abs(p);
-    if (a == 0.0) return "0 %";
-    if (a >= 1.0) return fmt::format("{:+.1f} %", p);
-    if (a >= 0.01) return fmt::format("{:+.2f} %", p);
-    return fmt::format("{:+.1e} %", p);
 }
 
 std::string file_stem(const std::string& case_id) {
@@ -370,203 +337,4 @@ std::vector<StepSeries> step_series(const ReportInput& in) {
     return series;
 }
 
-std::vector<std::string> findings(const ReportInput& in, const std::string& only_engine) {
-    const compare::SuiteResults& res = in.results;
-    std::vector<std::string> out;
-    auto rows_of = [&](const std::string& engine, const std::string& metric) {
-        std::vector<const compare::MetricRow*> rows;
-        for (const compare::MetricRow& r : res.rows)
-            if (r.engine == engine && r.metric == metric && !is_step_case(in, r.case_id) && std::isfinite(r.rel_error))
-                rows.push_back(&r);
-        return rows;
-    };
-    auto largest = [](const std::vector<const compare::MetricRow*>& rows) {
-        return *std::max_element(rows.begin(), rows.end(), [](const compare::MetricRow* a, const compare::MetricRow* b) {
-            return std::abs(a->rel_error) < std::abs(b->rel_error);
-        });
-    };
-    std::set<std::string> all_cases;
-    for (const compare::MetricRow& r : res.rows) all_cases.insert(r.case_id);
-    for (const compare::CaseFailure& f : res.failures) all_cases.insert(f.case_id);
-
-    for (const std::string& engine : compared_engines(res)) {
-        if (!only_engine.empty() && engine != only_engine) continue;
-        const std::string who = possessive(engine);
-        // Each metric against its target.
-        for (const std::string& metric : metric_order(res)) {
-            const auto rows = rows_of(engine, metric);
-            if (rows.empty()) continue;
-            const compare::MetricRow* worst = largest(rows);
-            const std::optional<double> target = target_of(metric);
-            const std::string title = metric == "restitution_whole_mechanism"
-                                          ? "restitution against the whole-mechanism plastic impact"
-                                          : metric_title(metric);
-            if (metric == "overturned") {
-                std::vector<std::string> differ;
-                for (const compare::MetricRow* r : rows)
-                    if (r->rel_error != 0.0)
-                        differ.push_back(fmt::format("{} ({})", r->case_id,
-                                                     r->engine_value != 0.0
-                                                         ? "the engine's wall overturns, the analytic model's does not"
-                                                         : "the analytic model's wall overturns, the engine's does not"));
-                out.push_back(differ.empty()
-                                  ? fmt::format("{} verdict on overturning agrees with the analytic model's on {}.",
-                                                who, all_of(rows.size(), "history case"))
-                                  : fmt::format("{} verdict on overturning differs from the analytic model's on {} of "
-                                                "{}: {}.",
-                                                who, differ.size(), rows.size(), fmt::join(differ, "; ")));
-                continue;
-            }
-            if (metric == "rms_difference") {
-                out.push_back(fmt::format("{} time histories differ from the analytic model's by an rms of up to "
-                                          "{:.2g} % of the analytic peak rotation ({}); no target is set on it.",
-                                          who, 100.0 * std::abs(worst->rel_error), worst->case_id));
-                continue;
-            }
-            if (metric == "peak_time") {
-                const compare::MetricRow* latest = *std::max_element(
-                    rows.begin(), rows.end(), [](const compare::MetricRow* a, const compare::MetricRow* b) {
-                        return std::abs(a->engine_value - a->analytic) < std::abs(b->engine_value - b->analytic);
-                    });
-                out.push_back(fmt::format("{} peak rotation comes up to {:.3g} s from the analytic model's ({}); no "
-                                          "target is set on it.",
-                                          who, std::abs(latest->engine_value - latest->analytic), latest->case_id));
-                continue;
-            }
-            if (!target) {
-                out.push_back(fmt::format("{} {} differs from the analytic model's by up to {} ({}, {} case{}); the "
-                                          "project sets no target on it.",
-                                          who, title, percent(worst->rel_error), worst->case_id, rows.size(),
-                                          rows.size() == 1 ? "" : "s"));
-                continue;
-            }
-            const auto outside = static_cast<std::size_t>(std::count_if(
-                rows.begin(), rows.end(), [&](const compare::MetricRow* r) { return !within(r->rel_error, *target); }));
-            if (outside == 0)
-                out.push_back(fmt::format("{} {} is within the {:g} % target on {} (largest error {} on {}).", who,
-                                          title, 100.0 * *target, all_of(rows.size(), "case"),
-                                          percent(worst->rel_error), worst->case_id));
-            else
-                out.push_back(fmt::format("{} {} is outside the {:g} % target on {} of {} case{} (largest error {} "
-                                          "on {}).",
-                                          who, title, 100.0 * *target, outside, rows.size(),
-                                          rows.size() == 1 ? "" : "s", percent(worst->rel_error), worst->case_id));
-        }
-        // The VSSW restitution: is the gap to Eq. (19) the roller's impulse? Only where the numbers say so.
-        std::vector<std::pair<const compare::MetricRow*, const compare::MetricRow*>> pairs;  // (Eq. 19, whole)
-        for (const compare::MetricRow* w : rows_of(engine, "restitution_whole_mechanism"))
-            for (const compare::MetricRow* e : rows_of(engine, "restitution"))
-                if (e->case_id == w->case_id) pairs.emplace_back(e, w);
-        std::vector<std::pair<const compare::MetricRow*, const compare::MetricRow*>> explained, unexplained;
-        for (const auto& p : pairs) {
-            if (within(p.first->rel_error, kReportRestitutionTarget)) continue;
-            (within(p.second->rel_error, kReportRestitutionTarget) ? explained : unexplained).push_back(p);
-        }
-        if (!explained.empty()) {
-            double lo = explained[0].first->rel_error, hi = lo, whole = 0.0;
-            const compare::MetricRow* example = explained[0].first;
-            for (const auto& p : explained) {
-                lo = std::min(lo, p.first->rel_error);
-                hi = std::max(hi, p.first->rel_error);
-                whole = std::max(whole, std::abs(p.second->rel_error));
-                if (p.first->case_id.rfind("fig6-vssw", 0) == 0) example = p.first;
-            }
-            const std::string range =
-                explained.size() == 1 ? percent(lo) : fmt::format("{} to {}", percent(lo), percent(hi));
-            out.push_back(fmt::format(
-                "{} restitution is {} from the analytic model's impact (Eq. 19) on {} VSSW case{} (e.g. {} on {}), "
-                "yet within {:.2g} % of the whole-mechanism plastic impact on {}: its impact acts with every "
-                "constraint of the new mechanism, the roller included, and the roller's impulse, which Eq. (19) leaves "
-                "out, accounts for the gap.",
-                who, range, explained.size(), explained.size() == 1 ? "" : "s", percent(example->rel_error),
-                example->case_id, 100.0 * whole,
-                explained.size() == 1 ? "it" : "each of them"));
-        }
-        // Under the records: a wall that rocks much less than the analytic model, on which the engine's impacts keep
-        // less energy than Eq. (19) in free vibration. Said only when both numbers are there.
-        std::map<std::string, std::vector<const compare::MetricRow*>> low_peaks;  // by wall id
-        for (const compare::MetricRow* r : rows_of(engine, "peak_rotation"))
-            if (std::isfinite(r->rel_error) && r->rel_error < -kReportMuchLowerPeak)
-                low_peaks[r->case_id.substr(0, r->case_id.find('/'))].push_back(r);
-        for (const auto& [wall_id, peaks] : low_peaks) {
-            double sum = 0.0;
-            int n = 0;
-            for (const compare::MetricRow* e : rows_of(engine, "restitution"))
-                if (e->case_id.rfind(wall_id + "/r", 0) == 0 && e->case_id.find("/dt") == std::string::npos &&
-                    std::isfinite(e->rel_error)) {
-                    sum += e->rel_error;
-                    ++n;
-                }
-            if (n == 0 || sum / n > -kReportRestitutionTarget) continue;
-            std::vector<std::string> listed, whole;
-            for (const compare::MetricRow* r : peaks) {
-                listed.push_back(fmt::format("{:.3g} alpha against {:.3g} on {}", r->engine_value, r->analytic,
-                                             r->case_id));
-                for (const compare::MetricRow* w : rows_of(engine, "peak_rotation_whole_mechanism"))
-                    if (w->case_id == r->case_id && std::isfinite(w->rel_error))
-                        whole.push_back(fmt::format("{:.3g} alpha, {} from the engine's", w->analytic,
-                                                    percent(-w->rel_error / (1.0 + w->rel_error))));
-            }
-            out.push_back(fmt::format(
-                "{} {} rocks much less than the analytic model under the records ({}): on the same wall its impacts "
-                "keep less energy than Eq. (19) (first-impact restitution {} on average over its free vibrations){}.",
-                who, wall_id, fmt::join(listed, "; "), percent(sum / n),
-                whole.empty() ? ""
-                              : fmt::format(", and the analytic model with the whole-mechanism impact in place of "
-                                            "Eq. (19) rocks as little ({})",
-                                            fmt::join(whole, "; "))));
-        }
-        for (const auto& p : unexplained)
-            out.push_back(fmt::format(
-                "{} restitution on {} is {} from Eq. (19) and {} from the whole-mechanism plastic impact: {}, but "
-                "outside the {:g} % target against both.",
-                who, p.first->case_id, percent(p.first->rel_error), percent(p.second->rel_error),
-                std::abs(p.second->rel_error) < std::abs(p.first->rel_error) ? "nearer the whole-mechanism value"
-                                                                              : "nearer Eq. (19)",
-                100.0 * kReportRestitutionTarget));
-        // Error against step size.
-        for (const StepSeries& s : step_series(in)) {
-            if (s.engine != engine || !std::isfinite(s.order)) continue;
-            std::vector<std::string> points;  // largest step first, as the error is expected to fall
-            double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-            for (std::size_t i = s.dt.size(); i-- > 0;) {
-                points.push_back(fmt::format("{}: {}", step_ms(s.dt[i]), percent(s.rel_error[i])));
-                if (std::isfinite(s.rel_error[i]) && s.rel_error[i] != 0.0) {
-                    lo = std::min(lo, std::abs(s.rel_error[i]));
-                    hi = std::max(hi, std::abs(s.rel_error[i]));
-                }
-            }
-            const std::string span = fmt::format("{}", fmt::join(points, ", "));
-            const std::string what = fmt::format("{} {} error on {}", who, short_title(s.metric), s.base_case);
-            // Simbody's default route integrates with error control: its dt is the reporting interval, not a step.
-            const std::string step = engine == "simbody" ? "reporting interval (its integrator picks its own steps)"
-                                                         : "step";
-            const bool regular = s.r_squared >= kRegularFit;
-            if (hi <= kFlatSpread * lo)
-                out.push_back(fmt::format("{} hardly changes with the {} ({}): it is not discretisation error.",
-                                          what, step, span));
-            else if (s.order >= kFlatOrder && regular)
-                out.push_back(fmt::format("{} falls with the {}, roughly as dt^{:.1f} ({}).", what, step, s.order,
-                                          span));
-            else if (s.order >= kFlatOrder)
-                out.push_back(fmt::format("{} falls with the {} overall but not regularly ({}; fitted order {:.1f}, "
-                                          "r^2 {:.2f}).",
-                                          what, step, span, s.order, s.r_squared));
-            else if (s.order <= -kFlatOrder && regular)
-                out.push_back(fmt::format("{} grows as the {} falls ({}; fitted order {:.1f}).", what, step, span,
-                                          s.order));
-            else
-                out.push_back(fmt::format("{} changes with the {} without a trend ({}).", what, step, span));
-        }
-        // Failures.
-        std::vector<std::string> failed;
-        for (const compare::CaseFailure& f : res.failures)
-            if (f.engine == engine) failed.push_back(fmt::format("{} ({})", f.case_id, f.message));
-        if (!failed.empty())
-            out.push_back(fmt::format("{} failed on {} of {} cases: {}.", engine_display_name(engine), failed.size(),
-                                      all_cases.size(), fmt::join(failed, "; ")));
-    }
-    return out;
-}
-
-}  // namespace vssw::cli
+}  // namespace vssw::study
