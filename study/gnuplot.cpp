@@ -100,7 +100,8 @@ PlotResult draw_plots(const std::vector<PlotScript>& scripts, const fs::path& pl
     for (const PlotScript& s : scripts) {
         Plot plot = s.plot;
         const fs::path svg = plots_dir / (plot.name + ".svg"), log = plots_dir / (plot.name + ".log");
-        if (!write_text(plots_dir / (plot.name + ".gp"), s.gp) || !write_text(plots_dir / (plot.name + ".dat"), s.dat)) {
+        if (!write_text(plots_dir / (plot.name + ".gp"), s.gp) ||
+            !write_text(plots_dir / (plot.name + ".dat"), s.dat)) {
             failed.push_back(plot.name + " (cannot write its script or data)");
             continue;
         }

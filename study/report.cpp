@@ -30,13 +30,6 @@ std::string step_base(const std::string& id) {
 
 }  // namespace
 
-std::string engine_display_name(const std::string& engine) {
-    static const std::map<std::string, std::string> names = {
-        {"bullet", "Bullet"}, {"ode", "ODE"}, {"simbody", "Simbody"}, {"analytic", "analytic"}};
-    const auto it = names.find(engine);
-    return it != names.end() ? it->second : engine;
-}
-
 bool is_step_case(const ReportInput& in, const std::string& id) { return case_kind(in, id) == compare::CaseKind::step; }
 
 std::string short_title(const std::string& metric) {
@@ -139,15 +132,6 @@ double case_step(const ReportInput& in, const std::string& case_id) {
     char* end = nullptr;
     const double dt = std::strtod(text.c_str(), &end);
     return (end != text.c_str() && (*end == '\0' || *end == '/')) ? dt : std::nan("");
-}
-
-std::string file_stem(const std::string& case_id) {
-    std::string s = case_id;
-    for (char& c : s) {
-        if (c == '/') c = '_';
-        else if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '-';
-    }
-    return s;
 }
 
 std::vector<std::string> compared_engines(const compare::SuiteResults& results) {

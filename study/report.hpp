@@ -49,8 +49,6 @@ const char* kind_name(compare::CaseKind kind);
 // The engine step of a `step` case (from the suite, else from the "/dt<dt>/<engine>" end of its id); NaN if none.
 double case_step(const ReportInput& in, const std::string& case_id);
 
-// "ODE", "Bullet", "Simbody" for the engine names (others as they are).
-std::string engine_display_name(const std::string& engine);
 // Whether a case belongs to the error-against-step study (summaries and tables leave those out).
 bool is_step_case(const ReportInput& in, const std::string& case_id);
 // A metric's name in a summary line ("threshold", "restitution (vs Eq. 19/Housner)").
@@ -113,8 +111,5 @@ std::vector<StepSeries> step_series(const ReportInput& in);
 // The findings in plain words, each one sentence or two built from the numbers (never a claim they do not show),
 // engine after engine; only those of one engine when it is named.
 std::vector<std::string> findings(const ReportInput& in, const std::string& only_engine = "");
-
-// Case ids as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'.
-std::string file_stem(const std::string& case_id);
 
 }  // namespace vssw::study

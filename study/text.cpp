@@ -1,6 +1,8 @@
 #include "study/text.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -18,6 +20,22 @@ std::string percent(double rel_error) {
     if (a >= 1.0) return fmt::format("{:+.1f} %", p);
     if (a >= 0.01) return fmt::format("{:+.2f} %", p);
     return fmt::format("{:+.1e} %", p);
+}
+
+std::string engine_display_name(const std::string& engine) {
+    static const std::map<std::string, std::string> names = {
+        {"bullet", "Bullet"}, {"ode", "ODE"}, {"simbody", "Simbody"}, {"analytic", "analytic"}};
+    const auto it = names.find(engine);
+    return it != names.end() ? it->second : engine;
+}
+
+std::string file_stem(const std::string& case_id) {
+    std::string s = case_id;
+    for (char& c : s) {
+        if (c == '/') c = '_';
+        else if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '-';
+    }
+    return s;
 }
 
 }  // namespace vssw::study

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli_runner.hpp"
+#include "tests/temp_files.hpp"
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -38,27 +39,9 @@ constexpr double kCsvRoundTrip = 1e-15;
 // A failure message with HTML and CSV special characters.
 const std::string kFailureMessage = "slid past 0.05 b at t = 1.2 s <x, \"y\"> & more";
 
-// A temporary folder, removed at the end of the test.
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name) {
-        std::string pattern = (fs::temp_directory_path() / ("vssw_report_" + name + "_XXXXXX")).string();
-        char* made = mkdtemp(pattern.data());
-        if (made == nullptr) throw std::runtime_error("mkdtemp failed");
-        path = made;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
-
-std::string read(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using vssw::testing::contains;
+using vssw::testing::TempDir;
+std::string read(const fs::path& p) { return vssw::testing::read_file(p); }
 
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> lines;
@@ -66,8 +49,6 @@ std::vector<std::string> lines_of(const std::string& text) {
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     return lines;
 }
-
-bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 vssw::compare::MetricRow row(const std::string& case_id, const std::string& engine, const std::string& metric,
                              double analytic, double value, const std::string& unit,
