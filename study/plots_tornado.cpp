@@ -43,7 +43,7 @@ PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Eff
     s.gp = gp_preamble("vssw study", s.plot.name, kTornadoWidth, height) +
            fmt::format("set title {}\nset xlabel {}\nset yrange [-0.6:{}]\nset ytics nomirror\nunset key\n"
                        "set arrow from 0, graph 0 to 0, graph 1 nohead lc rgb '#555555'\n"
-                       "set offsets graph 0.05, graph 0.05, 0, 0\n",
+                       "set xrange [*<0:0<*]\nset offsets graph 0.05, graph 0.05, 0, 0\n",
                        gp_string(s.plot.title),
                        gp_string(m.binary ? "share of paired runs [%]" : "relative change of " + m.name + " [%]"),
                        static_cast<double>(n) - 0.4) +
