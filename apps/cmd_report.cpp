@@ -19,9 +19,10 @@
 #include "analytic/ground_motion.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
-#include "apps/report_suite_write.hpp"
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
+#include "study/clock.hpp"
+#include "study/report_write.hpp"
 
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (apps/CMakeLists.txt)
 
@@ -165,7 +166,7 @@ Command add_report_command(CLI::App& root) {
                 const std::filesystem::path dir = o->out;
                 // After every other check, before the suite runs; removed again if the run fails (FolderGuard).
                 FolderGuard folder(dir);
-                prepare_report_dir(dir);
+                study::prepare_report_dir(dir);
 
                 Progress progress(err);
                 compare::RunOptions run;
@@ -183,13 +184,13 @@ Command add_report_command(CLI::App& root) {
                 }
                 progress.clear();
 
-                ReportMeta meta;
-                meta.date = utc_now();
+                study::ReportMeta meta;
+                meta.date = study::utc_now();
                 meta.commit = VSSW_GIT_COMMIT;
-                ReportOptions options;
+                study::ReportOptions options;
                 options.plots = !o->no_plots;
                 options.plot.gnuplot = o->gnuplot;
-                const ReportFiles files = write_suite_report(dir, suite, results, meta, options);
+                const study::ReportFiles files = study::write_suite_report(dir, suite, results, meta, options);
                 folder.keep();
                 for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
 

@@ -1,17 +1,11 @@
 #pragma once
-// JSON as the commands write it: keys in the order they were set (easier to read than sorted), and an absent
-// quantity (e.g. Eq. 26 for a hinge at or below mid-height) as null.
-#include <cmath>
-#include <optional>
-
-#include <nlohmann/json.hpp>
+// The commands write JSON as the study library does (study/json.hpp): ordered keys, absent quantities as null.
+#include "study/json.hpp"
 
 namespace vssw::cli {
 
-using Json = nlohmann::ordered_json;
-
-inline Json or_null(const std::optional<double>& value) { return value ? Json(*value) : Json(nullptr); }
-// A number, or null when it is NaN or infinite (JSON has neither; a metric that could not be measured is NaN).
-inline Json finite_or_null(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+using study::finite_or_null;
+using study::Json;
+using study::or_null;
 
 }  // namespace vssw::cli

@@ -7,11 +7,7 @@
 
 namespace vssw::cli {
 
-std::string num(double value) { return fmt::format("{:.6g}", value); }
-
 std::string num_or(const std::optional<double>& value, const std::string& none) { return value ? num(*value) : none; }
-
-std::string yes_no(bool value) { return value ? "yes" : "no"; }
 
 Table& Table::add(std::string name, std::string value, std::string unit, std::string note) {
     rows_.push_back({std::move(name), std::move(value), std::move(unit), std::move(note), false});

@@ -5,13 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "study/text.hpp"
+
 namespace vssw::cli {
 
-// A number for people: 6 significant digits (JSON and CSV carry full precision).
-std::string num(double value);
-// The same, or `none` when the quantity does not exist.
+// A number for people: 6 significant digits (JSON and CSV carry full precision); yes or no.
+using study::num;
+using study::yes_no;
+// A number, or `none` when the quantity does not exist.
 std::string num_or(const std::optional<double>& value, const std::string& none);
-std::string yes_no(bool value);
 
 class Table {
 public:

@@ -49,4 +49,10 @@ void AtomicFile::commit() {
     committed_ = true;
 }
 
+void write_file(const fs::path& target, const std::function<void(std::ostream&)>& write) {
+    AtomicFile f(target);
+    write(f.stream());
+    f.commit();
+}
+
 }  // namespace vssw::study

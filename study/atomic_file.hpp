@@ -4,6 +4,7 @@
 // disk) leaves the target as it was: an existing file is never truncated or half-written.
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 
 namespace vssw::study {
@@ -27,5 +28,9 @@ private:
     std::ofstream out_;
     bool committed_ = false;
 };
+
+// The whole file in one call: `write` fills the stream, then it is committed (InputError naming the target when it
+// cannot be written; the target is then as it was).
+void write_file(const std::filesystem::path& target, const std::function<void(std::ostream&)>& write);
 
 }  // namespace vssw::study

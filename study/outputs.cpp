@@ -5,9 +5,16 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "study/agreement.hpp"
 #include "study/atomic_file.hpp"
+#include "study/document_html.hpp"
+#include "study/document_markdown.hpp"
+#include "study/effects.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"
+#include "study/study_data.hpp"
+#include "study/study_document.hpp"
+#include "study/study_plots.hpp"
 
 namespace vssw::study {
 
@@ -24,14 +31,27 @@ nlohmann::ordered_json read_manifest(const std::filesystem::path& dir) {
 
 OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options) {
     OutputFiles files;
-    const nlohmann::ordered_json manifest = read_manifest(dir);
-    {
-        AtomicFile json(dir / kResultsJson);
-        write_results_json(json.stream(), manifest, dir / kResultsCsv);
-        json.commit();
-        files.written.push_back(dir / kResultsJson);
+    const StudyData data = read_study_data(dir);
+    write_file(dir / kResultsJson,
+               [&](std::ostream& out) { write_results_json(out, data.manifest, dir / kResultsCsv); });
+    files.written.push_back(dir / kResultsJson);
+
+    const std::vector<Effect> effects = parameter_effects(data);
+    const std::vector<Agreement> agreement = engine_agreement(data);
+    StudyPlots scripts;
+    PlotResult plots;
+    const std::filesystem::path plots_dir = dir / kPlotsDir;
+    if (options.plots) {
+        scripts = study_plot_scripts(data, effects);
+        plots = draw_plots(scripts.scripts, plots_dir, options.gnuplot);
+        if (!plots.note.empty()) files.warnings.push_back("plots: " + plots.note);
+        if (!scripts.scripts.empty()) files.written.push_back(plots_dir);
     }
-    (void)options;
+    const Document doc = build_study_document({data, effects, agreement, scripts, plots, !options.plots});
+    write_file(dir / kStudyMarkdown, [&](std::ostream& out) { write_markdown(out, doc); });
+    write_file(dir / kStudyHtml, [&](std::ostream& out) { write_html(out, doc, plots_dir); });
+    files.written.push_back(dir / kStudyMarkdown);
+    files.written.push_back(dir / kStudyHtml);
     return files;
 }
 

@@ -2,8 +2,10 @@
 // What a study folder holds besides results.csv and manifest.json, written from those two alone (so that one run, a
 // resumed run and a merge of shards are written by the same code):
 //   results.json           the manifest's keys and every row (results_files.hpp)
-//   plots/                 gnuplot SVGs with their .gp scripts and .dat data (study/plots.hpp)
-//   study.md, study.html   the study in plain words, the largest sensitivities first, the plots inline
+//   plots/                 gnuplot SVGs with their .gp scripts and .dat data (study/study_plots.hpp); without gnuplot
+//                          the scripts and data only, and a warning
+//   study.md, study.html   the study in plain words, the largest sensitivities first, the engines against each of the
+//                          analytic model's assumption sets, the plots inline (study/study_document.hpp)
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,13 +14,18 @@
 
 namespace vssw::study {
 
+// The file names in DIR (besides those of study/runner.hpp).
+constexpr const char* kPlotsDir = "plots";
+constexpr const char* kStudyMarkdown = "study.md";
+constexpr const char* kStudyHtml = "study.html";
+
 struct OutputOptions {
     bool plots = true;                // false: --no-plots
     std::string gnuplot = "gnuplot";  // the program (looked up in PATH unless it holds a '/')
 };
 
 struct OutputFiles {
-    std::vector<std::filesystem::path> written;
+    std::vector<std::filesystem::path> written;  // results.json, plots/ (when it has plots), study.md, study.html
     std::vector<std::string> warnings;  // for stderr, one line each (e.g. gnuplot missing)
 };
 

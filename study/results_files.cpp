@@ -87,7 +87,8 @@ Json manifest_json(const Grid& grid, const StudyMeta& meta) {
     j["columns"] = results_header(grid);
     j["varied"] = grid.varied_parameters();
     j["metrics"] = metrics;
-    j["cases"] = {{"in_grid", grid.product_size()}, {"run", grid.case_ids().size()}};
+    // This shard's cases: `vssw study merge` sums them over the shards.
+    j["cases"] = {{"in_grid", grid.product_size()}, {"run", grid.shard_case_ids(meta.shard.k, meta.shard.n).size()}};
     j["runs"] = runs;
     j["skipped_runs"] = grid.skipped_runs();
     j["tasks"] = {{"run", meta.tasks_run}, {"resumed", meta.tasks_resumed}};

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -15,21 +14,13 @@
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
 #include "study/atomic_file.hpp"
+#include "study/clock.hpp"
 #include "study/measure.hpp"
 #include "study/mpi.hpp"
 
 namespace vssw::study {
 namespace fs = std::filesystem;
 namespace {
-
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&now, &tm);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return text;
-}
 
 // The identity and shard an existing manifest records ("" when there is none or it does not read).
 std::string recorded_study(const fs::path& manifest) {

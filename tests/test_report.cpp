@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli_runner.hpp"
+#include "tests/temp_files.hpp"
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -18,13 +19,10 @@
 
 #include "analytic/error.hpp"
 #include "apps/cli.hpp"
-#include "apps/report_suite.hpp"
-#include "apps/report_suite_data.hpp"
-#include "apps/report_suite_document.hpp"
-#include "apps/report_suite_html.hpp"
-#include "apps/report_suite_markdown.hpp"
-#include "apps/report_suite_write.hpp"
 #include "multibody/engine.hpp"
+#include "study/document_html.hpp"
+#include "study/report.hpp"
+#include "study/report_write.hpp"
 
 namespace {
 
@@ -41,27 +39,9 @@ constexpr double kCsvRoundTrip = 1e-15;
 // A failure message with HTML and CSV special characters.
 const std::string kFailureMessage = "slid past 0.05 b at t = 1.2 s <x, \"y\"> & more";
 
-// A temporary folder, removed at the end of the test.
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& name) {
-        std::string pattern = (fs::temp_directory_path() / ("vssw_report_" + name + "_XXXXXX")).string();
-        char* made = mkdtemp(pattern.data());
-        if (made == nullptr) throw std::runtime_error("mkdtemp failed");
-        path = made;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
-
-std::string read(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using vssw::testing::contains;
+using vssw::testing::TempDir;
+std::string read(const fs::path& p) { return vssw::testing::read_file(p); }
 
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> lines;
@@ -69,8 +49,6 @@ std::vector<std::string> lines_of(const std::string& text) {
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     return lines;
 }
-
-bool contains(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 vssw::compare::MetricRow row(const std::string& case_id, const std::string& engine, const std::string& metric,
                              double analytic, double value, const std::string& unit,
@@ -146,27 +124,27 @@ bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1
 
 struct Written {
     TempDir dir;
-    vssw::cli::ReportFiles files;
+    vssw::study::ReportFiles files;
     std::string md, html;
     Json json;
 };
 
-Written write_hand_report(const std::string& name, const vssw::cli::ReportOptions& options) {
+Written write_hand_report(const std::string& name, const vssw::study::ReportOptions& options) {
     Written w{TempDir(name), {}, {}, {}, {}};
     const vssw::compare::Suite suite = hand_suite();
     const vssw::compare::SuiteResults results = hand_results();
-    vssw::cli::ReportMeta meta;
+    vssw::study::ReportMeta meta;
     meta.date = "2025-01-01T00:00:00Z";
     meta.commit = "abc1234";
-    w.files = vssw::cli::write_suite_report(w.dir.path, suite, results, meta, options);
+    w.files = vssw::study::write_suite_report(w.dir.path, suite, results, meta, options);
     w.md = read(w.files.markdown);
     w.html = read(w.files.html);
     w.json = Json::parse(read(w.files.json));
     return w;
 }
 
-vssw::cli::ReportOptions no_plots() {
-    vssw::cli::ReportOptions o;
+vssw::study::ReportOptions no_plots() {
+    vssw::study::ReportOptions o;
     o.plots = false;
     return o;
 }
@@ -183,33 +161,33 @@ std::string table_line(const std::string& md, const std::string& heading, const 
 // --- the shared analysis ----------------------------------------------------------------------------------------
 
 TEST(ReportAnalysis, PercentTextAndFileStems) {
-    EXPECT_EQ(vssw::cli::percent(-0.132), "-13.2 %");
-    EXPECT_EQ(vssw::cli::percent(-6.993e-4), "-0.07 %");
-    EXPECT_EQ(vssw::cli::percent(0.0), "0 %");
-    EXPECT_EQ(vssw::cli::percent(2e-6), "+2.0e-04 %");
-    EXPECT_EQ(vssw::cli::percent(kNaN), "n/a");
-    EXPECT_EQ(vssw::cli::file_stem("fig6-vssw/r0.5/dt0.0005/ode"), "fig6-vssw_r0.5_dt0.0005_ode");
+    EXPECT_EQ(vssw::study::percent(-0.132), "-13.2 %");
+    EXPECT_EQ(vssw::study::percent(-6.993e-4), "-0.07 %");
+    EXPECT_EQ(vssw::study::percent(0.0), "0 %");
+    EXPECT_EQ(vssw::study::percent(2e-6), "+2.0e-04 %");
+    EXPECT_EQ(vssw::study::percent(kNaN), "n/a");
+    EXPECT_EQ(vssw::study::file_stem("fig6-vssw/r0.5/dt0.0005/ode"), "fig6-vssw_r0.5_dt0.0005_ode");
 }
 
 TEST(ReportAnalysis, CaseKindsAndStepsFromIdsWhenTheSuiteDoesNotList) {
     const vssw::compare::Suite empty;
     const vssw::compare::SuiteResults results;
-    const vssw::cli::ReportInput in{empty, results, {}};
-    EXPECT_EQ(vssw::cli::case_kind(in, "t1-07-xi0.1"), CaseKind::threshold);
-    EXPECT_EQ(vssw::cli::case_kind(in, "fig6-vssw/r0.5"), CaseKind::free);
-    EXPECT_EQ(vssw::cli::case_kind(in, "fig6-vssw/rinaldi-x0.45"), CaseKind::history);
-    EXPECT_EQ(vssw::cli::case_kind(in, "fig6-vssw/r0.5/dt0.0005/ode"), CaseKind::step);
-    EXPECT_DOUBLE_EQ(vssw::cli::case_step(in, "fig6-vssw/r0.5/dt0.0005/ode"), 5e-4);
-    EXPECT_DOUBLE_EQ(vssw::cli::case_step(in, "fig6-vssw/r0.5/dt0.001"), 1e-3);
-    EXPECT_TRUE(std::isnan(vssw::cli::case_step(in, "fig6-vssw/r0.5")));
+    const vssw::study::ReportInput in{empty, results, {}};
+    EXPECT_EQ(vssw::study::case_kind(in, "t1-07-xi0.1"), CaseKind::threshold);
+    EXPECT_EQ(vssw::study::case_kind(in, "fig6-vssw/r0.5"), CaseKind::free);
+    EXPECT_EQ(vssw::study::case_kind(in, "fig6-vssw/rinaldi-x0.45"), CaseKind::history);
+    EXPECT_EQ(vssw::study::case_kind(in, "fig6-vssw/r0.5/dt0.0005/ode"), CaseKind::step);
+    EXPECT_DOUBLE_EQ(vssw::study::case_step(in, "fig6-vssw/r0.5/dt0.0005/ode"), 5e-4);
+    EXPECT_DOUBLE_EQ(vssw::study::case_step(in, "fig6-vssw/r0.5/dt0.001"), 1e-3);
+    EXPECT_TRUE(std::isnan(vssw::study::case_step(in, "fig6-vssw/r0.5")));
 }
 
 TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
     const vssw::compare::Suite suite = hand_suite();
     const vssw::compare::SuiteResults results = hand_results();
-    const auto summaries = vssw::cli::summarize({suite, results, {}});
+    const auto summaries = vssw::study::summarize({suite, results, {}});
     ASSERT_EQ(summaries.size(), 2u);  // ode, bullet: the analytic model is the reference
-    const vssw::cli::EngineSummary& ode = summaries[0];
+    const vssw::study::EngineSummary& ode = summaries[0];
     EXPECT_EQ(ode.engine, "ode");
     // threshold x2, period, restitution (outside), whole mechanism; the three step rows are not counted.
     EXPECT_EQ(ode.with_target, 5);
@@ -220,7 +198,7 @@ TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
                              0),
               0u)
         << ode.line;
-    const vssw::cli::EngineSummary& bullet = summaries[1];
+    const vssw::study::EngineSummary& bullet = summaries[1];
     EXPECT_EQ(bullet.not_measured, 1);
     EXPECT_EQ(bullet.failures, 1);
     EXPECT_TRUE(contains(bullet.line, "Bullet: 2/3 metrics within target (1 not measured)")) << bullet.line;
@@ -230,7 +208,7 @@ TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
 TEST(ReportAnalysis, FindingsSayOnlyWhatTheNumbersShow) {
     const vssw::compare::Suite suite = hand_suite();
     const vssw::compare::SuiteResults results = hand_results();
-    const std::vector<std::string> found = vssw::cli::findings({suite, results, {}});
+    const std::vector<std::string> found = vssw::study::findings({suite, results, {}});
     auto any = [&](const std::string& a, const std::string& b) {
         for (const std::string& f : found)
             if (contains(f, a) && contains(f, b)) return true;
@@ -355,12 +333,12 @@ TEST(ReportFiles, HtmlEscapesTextAndShowsTheFailure) {
     EXPECT_TRUE(contains(w.html, "<td class=\"flag\">-13.2 %</td>"));
     EXPECT_TRUE(contains(w.html, "<li>ODE: 4/5 metrics within target;"));
     EXPECT_FALSE(contains(w.html, "<svg")) << "no plots asked";
-    EXPECT_EQ(vssw::cli::html_escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+    EXPECT_EQ(vssw::study::html_escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
 }
 
 TEST(ReportFiles, PlotsAreDrawnAndInlinedAsSvg) {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
-    const Written w = write_hand_report("plots", vssw::cli::ReportOptions{});
+    const Written w = write_hand_report("plots", vssw::study::ReportOptions{});
     EXPECT_TRUE(w.files.plots_made);
     EXPECT_TRUE(w.files.warnings.empty()) << w.files.warnings.front();
     const fs::path plots = w.dir.path / "plots";
@@ -377,7 +355,7 @@ TEST(ReportFiles, PlotsAreDrawnAndInlinedAsSvg) {
 }
 
 TEST(ReportFiles, WithoutGnuplotTheReportIsStillWritten) {
-    vssw::cli::ReportOptions options;
+    vssw::study::ReportOptions options;
     options.plot.gnuplot = "/nonexistent/vssw-test/gnuplot";
     const Written w = write_hand_report("nognuplot", options);
     EXPECT_FALSE(w.files.plots_made);
@@ -397,8 +375,8 @@ TEST(ReportFiles, AFileInPlaceOfTheFolderIsBadInput) {
     TempDir tmp("notdir");
     const fs::path file = tmp.path / "file";
     std::ofstream(file) << "x";
-    EXPECT_THROW(vssw::cli::prepare_report_dir(file), vssw::InputError);
-    EXPECT_NO_THROW(vssw::cli::prepare_report_dir(tmp.path / "new" / "deeper"));
+    EXPECT_THROW(vssw::study::prepare_report_dir(file), vssw::InputError);
+    EXPECT_NO_THROW(vssw::study::prepare_report_dir(tmp.path / "new" / "deeper"));
     EXPECT_TRUE(fs::is_directory(tmp.path / "new" / "deeper"));
 }
 

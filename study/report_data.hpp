@@ -16,11 +16,11 @@
 #include <iosfwd>
 #include <string>
 
-#include "apps/json.hpp"
-#include "apps/report_suite.hpp"
 #include "study/csv.hpp"
+#include "study/json.hpp"
+#include "study/report.hpp"
 
-namespace vssw::cli {
+namespace vssw::study {
 
 // Bumped when a key changes meaning (never for an added key).
 constexpr int kReportFormat = 1;
@@ -30,7 +30,4 @@ void write_metrics_csv(std::ostream& out, const compare::SuiteResults& results);
 void write_failures_csv(std::ostream& out, const compare::SuiteResults& results);
 void write_traces_csv(std::ostream& out, const compare::SuiteResults& results);
 
-using study::csv_field;  // study/csv.hpp
-using study::csv_number;
-
-}  // namespace vssw::cli
+}  // namespace vssw::study

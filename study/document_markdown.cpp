@@ -1,9 +1,9 @@
-#include "apps/report_suite_markdown.hpp"
+#include "study/document_markdown.hpp"
 
 #include <ostream>
 #include <string>
 
-namespace vssw::cli {
+namespace vssw::study {
 namespace {
 
 // A table cell on one line, its pipes escaped.
@@ -55,4 +55,4 @@ void write_markdown(std::ostream& out, const Document& doc) {
     }
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::study

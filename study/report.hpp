@@ -11,8 +11,9 @@
 
 #include "compare/suite.hpp"
 #include "compare/targets.hpp"
+#include "study/text.hpp"
 
-namespace vssw::cli {
+namespace vssw::study {
 
 // The accuracy the project asks of an engine (compare/targets.hpp).
 constexpr double kReportThresholdTarget = compare::kThresholdTarget;
@@ -48,11 +49,12 @@ const char* kind_name(compare::CaseKind kind);
 // The engine step of a `step` case (from the suite, else from the "/dt<dt>/<engine>" end of its id); NaN if none.
 double case_step(const ReportInput& in, const std::string& case_id);
 
-// "ODE", "Bullet", "Simbody" for the engine names (others as they are).
-std::string engine_display_name(const std::string& engine);
-
-// Percent text of a relative error for people: "+0.02 %", "-13.2 %", "3.1e-04 %", "n/a" when not finite.
-std::string percent(double rel_error);
+// Whether a case belongs to the error-against-step study (summaries and tables leave those out).
+bool is_step_case(const ReportInput& in, const std::string& case_id);
+// A metric's name in a summary line ("threshold", "restitution (vs Eq. 19/Housner)").
+std::string short_title(const std::string& metric);
+// |rel_error| <= target; false when it was not measured.
+bool within(double rel_error, double target);
 
 // One engine in one line: how many metrics with a target are within it (step-study cases left out: they vary the
 // step on purpose), the largest |error| per metric (signed), the failures.
@@ -110,7 +112,4 @@ std::vector<StepSeries> step_series(const ReportInput& in);
 // engine after engine; only those of one engine when it is named.
 std::vector<std::string> findings(const ReportInput& in, const std::string& only_engine = "");
 
-// Case ids as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'.
-std::string file_stem(const std::string& case_id);
-
-}  // namespace vssw::cli
+}  // namespace vssw::study

@@ -1,10 +1,10 @@
-#include "apps/report_suite_html.hpp"
+#include "study/document_html.hpp"
 
 #include <fstream>
 #include <ostream>
 #include <sstream>
 
-namespace vssw::cli {
+namespace vssw::study {
 namespace {
 
 const char* const kStyle = R"(
@@ -107,4 +107,4 @@ void write_html(std::ostream& out, const Document& doc, const std::filesystem::p
     out << "</body>\n</html>\n";
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::study

@@ -1,13 +1,12 @@
 #pragma once
-// The content of report.md and report.html, built once as a small document (headings, paragraphs, lists, tables,
-// plots) and rendered by report_suite_markdown and report_suite_html, so the two say the same thing.
+// A document built once and rendered twice, as Markdown (study/document_markdown.hpp) and as one self-contained HTML
+// page (study/document_html.hpp), so that the two say the same thing: headings, paragraphs, lists, tables and plots
+// (SVGs in the document's plots/ folder). The validation report and a study's prose are both built as one.
+#include <cstddef>
 #include <string>
 #include <vector>
 
-#include "apps/report_suite.hpp"
-#include "apps/report_suite_plots.hpp"
-
-namespace vssw::cli {
+namespace vssw::study {
 
 struct DocCell {
     std::string text;
@@ -31,7 +30,11 @@ struct Document {
     std::vector<DocBlock> blocks;
 };
 
-// plots: what write_plots made (empty with --no-plots); plots_skipped: --no-plots was given.
-Document build_document(const ReportInput& in, const PlotResult& plots, bool plots_skipped);
+DocBlock heading(int level, std::string text);
+DocBlock paragraph(std::string text);
+DocBlock list(std::vector<std::string> items);
+// A table without rows yet; its first text_columns columns are left-aligned text, the others numbers.
+DocBlock table(std::vector<std::string> header, std::size_t text_columns);
+DocBlock plot(std::string title, std::string plot_name);
 
-}  // namespace vssw::cli
+}  // namespace vssw::study

@@ -1,11 +1,11 @@
-#include "apps/report_suite_data.hpp"
+#include "study/report_data.hpp"
 
 #include <cmath>
 #include <ostream>
 
 #include <fmt/format.h>
 
-namespace vssw::cli {
+namespace vssw::study {
 namespace {
 
 Json settings_json(const multibody::EngineSettings& s) {
@@ -149,4 +149,4 @@ void write_traces_csv(std::ostream& out, const compare::SuiteResults& results) {
     }
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::study

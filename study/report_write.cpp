@@ -1,41 +1,19 @@
-#include "apps/report_suite_write.hpp"
+#include "study/report_write.hpp"
 
-#include <ctime>
 #include <fstream>
-#include <functional>
-#include <sstream>
 #include <system_error>
 
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
 #include "study/atomic_file.hpp"
-#include "apps/report_suite_data.hpp"
-#include "apps/report_suite_document.hpp"
-#include "apps/report_suite_html.hpp"
-#include "apps/report_suite_markdown.hpp"
+#include "study/document_html.hpp"
+#include "study/document_markdown.hpp"
+#include "study/report_data.hpp"
+#include "study/report_document.hpp"
 
-namespace vssw::cli {
+namespace vssw::study {
 namespace fs = std::filesystem;
-namespace {
-
-// Through a temporary file renamed on success (atomic_file.hpp): a failure leaves the previous file as it was.
-void write_file(const fs::path& path, const std::function<void(std::ostream&)>& write) {
-    study::AtomicFile f(path);
-    write(f.stream());
-    f.commit();
-}
-
-}  // namespace
-
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&now, &tm);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return text;
-}
 
 void prepare_report_dir(const fs::path& dir) {
     std::error_code ec;
@@ -82,4 +60,4 @@ ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite,
     return files;
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::study

@@ -2,15 +2,15 @@
 // Writes every output of `vssw report` into one folder:
 //   DIR/report.md, DIR/report.html, DIR/results.json, DIR/metrics.csv, DIR/failures.csv, DIR/traces.csv,
 //   DIR/plots/{trace,error,step}_*.{svg,gp,dat}
-// (see report_suite_data.hpp for the JSON keys and CSV columns, report_suite_plots.hpp for the plots).
+// (see report_data.hpp for the JSON keys and CSV columns, report_plots.hpp for the plots).
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "apps/report_suite.hpp"
-#include "apps/report_suite_plots.hpp"
+#include "study/report.hpp"
+#include "study/report_plots.hpp"
 
-namespace vssw::cli {
+namespace vssw::study {
 
 struct ReportOptions {
     bool plots = true;  // false: --no-plots
@@ -33,7 +33,4 @@ void prepare_report_dir(const std::filesystem::path& dir);
 ReportFiles write_suite_report(const std::filesystem::path& dir, const compare::Suite& suite,
                                const compare::SuiteResults& results, ReportMeta meta, const ReportOptions& options);
 
-// The current time as ISO 8601 UTC ("2025-01-31T12:00:00Z").
-std::string utc_now();
-
-}  // namespace vssw::cli
+}  // namespace vssw::study

@@ -1,0 +1,151 @@
+#include "study/effects.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace vssw::study {
+namespace {
+
+using Key = std::vector<std::uint32_t>;  // metric, engine, settings, then the other varied parameters' levels
+
+// The keys under which a row pairs: its own levels of the other varied parameters, one key per level of each that does
+// not apply to it.
+std::vector<Key> pairing_keys(const StudyData& d, const StudyRow& row, const std::vector<std::size_t>& others) {
+    std::vector<Key> keys = {{row.metric, row.levels.front(), row.levels.back()}};
+    for (std::size_t c : others) {
+        const std::uint32_t level = row.levels[c];
+        if (level != kEmptyLevel) {
+            for (Key& k : keys) k.push_back(level);
+            continue;
+        }
+        std::vector<Key> expanded;
+        for (const Key& k : keys)
+            for (std::uint32_t l : d.columns[c].order) {
+                expanded.push_back(k);
+                expanded.back().push_back(l);
+            }
+        keys = std::move(expanded);
+    }
+    return keys;
+}
+
+// Accumulates one (parameter level, metric)'s pairs.
+struct Tally {
+    std::vector<double> changes;
+    long pairs = 0, up = 0, down = 0;
+};
+
+void add_pair(Tally& t, bool binary, double base, double other) {
+    if (!std::isfinite(base) || !std::isfinite(other)) return;
+    if (binary) {
+        ++t.pairs;
+        t.up += base == 0.0 && other == 1.0 ? 1 : 0;
+        t.down += base == 1.0 && other == 0.0 ? 1 : 0;
+    } else if (base != 0.0) {
+        ++t.pairs;
+        t.changes.push_back(other / base - 1.0);
+    }
+}
+
+Effect effect_of(const StudyData& d, std::size_t column, std::uint32_t level, std::size_t metric, const Tally& t) {
+    const ColumnLevels& c = d.columns[column];
+    Effect e;
+    e.column = column;
+    e.parameter = c.key;
+    e.from = c.texts[c.order.front()];
+    e.to = c.texts[level];
+    e.assumption = c.assumption;
+    e.metric = metric;
+    e.binary = d.metrics[metric].binary;
+    e.pairs = t.pairs;
+    e.up = t.up;
+    e.down = t.down;
+    const double n = static_cast<double>(t.pairs);
+    if (t.pairs == 0) {
+        e.median = e.lo = e.hi = std::nan("");
+    } else if (e.binary) {
+        e.median = static_cast<double>(t.up - t.down) / n;
+        e.lo = -static_cast<double>(t.down) / n;
+        e.hi = static_cast<double>(t.up) / n;
+    } else {
+        e.median = median(t.changes);
+        e.lo = *std::min_element(t.changes.begin(), t.changes.end());
+        e.hi = *std::max_element(t.changes.begin(), t.changes.end());
+    }
+    return e;
+}
+
+// The effects of one parameter: its rows grouped by pairing key, each group's first-level rows paired with its rows at
+// every other level (each pair of rows once, however many keys they share).
+std::vector<Effect> effects_of(const StudyData& d, std::size_t column) {
+    const ColumnLevels& col = d.columns[column];
+    if (col.order.size() < 2) return {};  // varied in the file, but a single level applies (a parapet's hinge)
+    std::vector<std::size_t> others;
+    for (std::size_t c : d.varied())
+        if (c != column) others.push_back(c);
+    std::map<Key, std::map<std::uint32_t, std::vector<std::size_t>>> groups;  // key -> level -> rows
+    for (std::size_t i = 0; i < d.rows.size(); ++i) {
+        const std::uint32_t level = d.rows[i].levels[column];
+        if (level == kEmptyLevel) continue;
+        for (Key& k : pairing_keys(d, d.rows[i], others)) groups[std::move(k)][level].push_back(i);
+    }
+    const std::uint32_t first = col.order.front();
+    std::map<std::pair<std::uint32_t, std::size_t>, Tally> tallies;  // (level, metric) -> pairs
+    std::set<std::pair<std::size_t, std::size_t>> seen;
+    for (const auto& [key, by_level] : groups) {
+        const auto base = by_level.find(first);
+        if (base == by_level.end()) continue;
+        for (const auto& [level, rows] : by_level) {
+            if (level == first) continue;
+            for (std::size_t b : base->second)
+                for (std::size_t o : rows) {
+                    if (!seen.insert({b, o}).second) continue;
+                    const std::size_t metric = d.rows[b].metric;
+                    add_pair(tallies[{level, metric}], d.metrics[metric].binary, d.rows[b].value, d.rows[o].value);
+                }
+        }
+    }
+    std::vector<Effect> out;
+    for (std::size_t k = 1; k < col.order.size(); ++k)
+        for (std::size_t m = 0; m < d.metrics.size(); ++m) {
+            if (!d.metrics[m].any_value) continue;
+            const auto it = tallies.find({col.order[k], m});
+            out.push_back(effect_of(d, column, col.order[k], m, it == tallies.end() ? Tally{} : it->second));
+        }
+    return out;
+}
+
+}  // namespace
+
+double Effect::magnitude() const {
+    if (pairs == 0) return 0.0;
+    return binary ? static_cast<double>(up + down) / static_cast<double>(pairs) : std::abs(median);
+}
+
+double Effect::extent() const { return pairs == 0 ? 0.0 : std::max(std::abs(lo), std::abs(hi)); }
+
+double median(std::vector<double> values) {
+    if (values.empty()) return std::nan("");
+    const std::size_t mid = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
+    const double upper = values[mid];
+    if (values.size() % 2 == 1) return upper;
+    const double lower = *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid));
+    return 0.5 * (lower + upper);
+}
+
+std::vector<Effect> parameter_effects(const StudyData& data) {
+    std::vector<Effect> all;
+    for (std::size_t c : data.varied())
+        for (Effect& e : effects_of(data, c)) all.push_back(std::move(e));
+    std::stable_sort(all.begin(), all.end(), [](const Effect& a, const Effect& b) {
+        if (a.magnitude() != b.magnitude()) return a.magnitude() > b.magnitude();
+        return a.extent() > b.extent();
+    });
+    return all;
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,94 @@
+#include "study/plot_lines.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "study/plot_panels.hpp"
+
+namespace vssw::study {
+namespace {
+
+// Categories sit at 0, 1, ...: half a category of room on either side keeps the first and last off the frame.
+constexpr double kCategoryMargin = 0.5;
+
+bool panel_has_value(const LineFigure& f, std::size_t p) {
+    for (const auto& line : f.y[p])
+        for (double v : line)
+            if (std::isfinite(v)) return true;
+    return false;
+}
+
+std::string data_of(const LineFigure& f) {
+    std::string dat = fmt::format("# {}\n# x y marked   (one block per panel and line, in that order)\n", f.title);
+    for (std::size_t p = 0; p < f.y.size(); ++p)
+        for (std::size_t l = 0; l < f.lines.size(); ++l) {
+            dat += fmt::format("# panel {}: {}; line {}: {}\n", p + 1, f.panel_titles[p], l + 1, f.lines[l].first);
+            for (std::size_t i = 0; i < f.x.size(); ++i)
+                dat += fmt::format("{} {} {}\n", gp_number(f.x[i]), gp_number(f.y[p][l][i]), f.marked[p][l][i] ? 1 : 0);
+            dat += "\n\n";
+        }
+    return dat;
+}
+
+std::string panel_plot(const LineFigure& f, const PanelLayout& layout, std::size_t p) {
+    std::string s = panel_begin(layout, f.panel_titles[p]);
+    if (!panel_has_value(f, p))
+        return s + "set label 1 'no value' at graph 0.5, graph 0.5 center\nplot [0:1][0:1] NaN notitle\n"
+                   "unset label 1\n";
+    std::string cmd;
+    bool marker_titled = false;
+    for (std::size_t l = 0; l < f.lines.size(); ++l) {
+        const std::size_t index = p * f.lines.size() + l;
+        cmd += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints {} title {}",
+                           cmd.empty() ? "plot " : ", \\\n     ", f.name, index, f.lines[l].second,
+                           gp_string(f.lines[l].first));
+        if (f.marker_title.empty()) continue;
+        cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:($3 > 0.5 ? $2 : NaN) with points pt 6 ps 2 lc rgb "
+                           "'black' {}",
+                           f.name, index, marker_titled ? "notitle" : "title " + gp_string(f.marker_title));
+        marker_titled = true;
+    }
+    return s + cmd + "\n";
+}
+
+}  // namespace
+
+void LineFigure::resize() {
+    y.assign(panel_titles.size(),
+             std::vector<std::vector<double>>(lines.size(), std::vector<double>(x.size(), std::nan(""))));
+    marked.assign(panel_titles.size(),
+                  std::vector<std::vector<bool>>(lines.size(), std::vector<bool>(x.size(), false)));
+}
+
+bool LineFigure::any_value() const {
+    for (std::size_t p = 0; p < y.size(); ++p)
+        if (panel_has_value(*this, p)) return true;
+    return false;
+}
+
+PlotScript line_figure_script(const LineFigure& f) {
+    const PanelLayout layout = panel_layout(f.panel_titles.size());
+    std::string gp = gp_preamble("vssw study", f.name, layout.width, layout.height) +
+                     fmt::format("set xlabel {}\nset ylabel {}\nset format y '%.4g'\n", gp_string(f.xlabel),
+                                 gp_string(f.ylabel));
+    if (!f.categories.empty()) {
+        std::vector<std::string> tics;
+        for (std::size_t i = 0; i < f.categories.size(); ++i)
+            tics.push_back(fmt::format("{} {}", gp_string(f.categories[i]), i));
+        gp += fmt::format("set xtics ({})\nset xrange [{}:{}]\nset offsets 0, 0, graph 0.05, graph 0.05\n",
+                          fmt::join(tics, ", "), -kCategoryMargin,
+                          static_cast<double>(f.categories.size()) - 1.0 + kCategoryMargin);
+    } else {
+        gp += "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n";
+    }
+    gp += f.setup + layout_begin(layout, f.title);
+    for (std::size_t p = 0; p < f.panel_titles.size(); ++p) gp += panel_plot(f, layout, p);
+    std::vector<std::pair<std::string, std::string>> entries = f.lines;
+    const std::string marker =
+        f.marker_title.empty() ? "" : "NaN with points pt 6 ps 2 lc rgb 'black' title " + gp_string(f.marker_title);
+    gp += layout_end(layout, entries, marker);
+    return {{f.section, f.name, f.title, false}, gp, data_of(f)};
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,74 @@
+// Tornado charts: the effect of each varied assumption of the analytic model on a metric (study/study_plots.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "study/study_plots.hpp"
+#include "study/text.hpp"
+
+namespace vssw::study {
+namespace {
+
+// Bar height in SVG pixels, and the room title, axis and margins take.
+constexpr int kBarPixels = 46, kFramePixels = 170, kTornadoWidth = 860;
+// A bar's thickness in units of the spacing between bars.
+constexpr double kBarHalfHeight = 0.3;
+
+std::string bar_label(const Effect& e) { return fmt::format("{}: {} -> {}", e.parameter, e.from, e.to); }
+
+PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Effect*> bars) {
+    // Largest first, at the top: the bar's reach, then its median.
+    std::stable_sort(bars.begin(), bars.end(), [](const Effect* a, const Effect* b) {
+        if (a->extent() != b->extent()) return a->extent() > b->extent();
+        return a->magnitude() > b->magnitude();
+    });
+    const MetricMeta& m = d.metrics[metric];
+    PlotScript s;
+    s.plot.section = kTornadoSection;
+    s.plot.name = file_stem("tornado_" + m.name);
+    s.plot.title = m.binary
+                       ? fmt::format("{}: share of paired runs that flip (right: to 1, left: to 0; dot: net)", m.name)
+                       : fmt::format("{}: change with each assumption (bar: smallest to largest; dot: median)", m.name);
+    s.dat = fmt::format("# {}\n# y label lo median hi pairs   (changes as fractions; binary metric: shares of pairs, "
+                        "lo = -(1 -> 0), hi = +(0 -> 1), median = net)\n",
+                        m.name);
+    const std::size_t n = bars.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Effect& e = *bars[i];
+        s.dat += fmt::format("{} {} {} {} {} {}\n", n - 1 - i, gp_string(bar_label(e)), gp_number(e.lo),
+                             gp_number(e.median), gp_number(e.hi), e.pairs);
+    }
+    const int height = kFramePixels + kBarPixels * static_cast<int>(n);
+    s.gp = gp_preamble("vssw study", s.plot.name, kTornadoWidth, height) +
+           fmt::format("set title {}\nset xlabel {}\nset yrange [-0.6:{}]\nset ytics nomirror\nunset key\n"
+                       "set arrow from 0, graph 0 to 0, graph 1 nohead lc rgb '#555555'\n"
+                       "set xrange [*<0:0<*]\nset offsets graph 0.05, graph 0.05, 0, 0\n",
+                       gp_string(s.plot.title),
+                       gp_string(m.binary ? "share of paired runs [%]" : "relative change of " + m.name + " [%]"),
+                       static_cast<double>(n) - 0.4) +
+           fmt::format("plot '{0}.dat' using (50*($3+$5)):1:(100*$3):(100*$5):($1-{1}):($1+{1}):ytic(2) with "
+                       "boxxyerror fs solid 0.45 noborder lc rgb '#1f77b4', \\\n"
+                       "     '{0}.dat' using (100*$4):1 with points pt 7 ps 1.4 lc rgb 'black'\n",
+                       s.plot.name, kBarHalfHeight);
+    return s;
+}
+
+}  // namespace
+
+void add_tornado_plots(const StudyData& d, const std::vector<Effect>& effects, StudyPlots& out) {
+    bool any_assumption = false;
+    for (std::size_t c : d.varied()) any_assumption = any_assumption || d.columns[c].assumption;
+    if (!any_assumption) {
+        out.notes.push_back("No assumption of the analytic model varies: there are no tornado charts.");
+        return;
+    }
+    for (std::size_t m = 0; m < d.metrics.size(); ++m) {
+        std::vector<const Effect*> bars;
+        for (const Effect& e : effects)
+            if (e.assumption && e.metric == m && e.pairs > 0) bars.push_back(&e);
+        if (!bars.empty()) out.scripts.push_back(tornado(d, m, bars));
+    }
+}
+
+}  // namespace vssw::study

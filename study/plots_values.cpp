@@ -1,0 +1,127 @@
+// Value plots: each metric against each varied parameter (study/study_plots.hpp).
+#include <cmath>
+#include <optional>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "study/plot_lines.hpp"
+#include "study/plot_panels.hpp"
+#include "study/spec.hpp"
+#include "study/study_plots.hpp"
+#include "study/text.hpp"
+
+namespace vssw::study {
+namespace {
+
+// A line of a value plot: a series, with the x parameter left out of the analytic ones when it is an assumption (the
+// line then runs across that assumption's levels).
+struct ValueLine {
+    Series series;
+    std::string label;
+};
+
+std::vector<ValueLine> value_lines(const StudyData& d, std::size_t x, const std::vector<std::size_t>& ignored) {
+    std::vector<ValueLine> lines;
+    std::set<std::string> seen;
+    for (const Series& s : d.series) {
+        Series projected = s;
+        for (std::size_t i = 0; i < kAssumptionKeys.size(); ++i)
+            if (d.assumption_columns[i] == x) projected.assumptions[i].clear();
+        const std::string key = fmt::format("{}\n{}\n{}", projected.engine, projected.settings,
+                                            fmt::join(projected.assumptions, "\n"));
+        if (seen.insert(key).second) lines.push_back({projected, d.series_label(s, ignored)});
+    }
+    return lines;
+}
+
+// The parameters a value plot of x gets panels for: the other varied wall and excitation parameters.
+std::vector<std::size_t> panel_candidates(const StudyData& d, std::size_t x) {
+    std::vector<std::size_t> out;
+    for (std::size_t c : d.varied())
+        if (c != x && !d.columns[c].assumption) out.push_back(c);
+    return out;
+}
+
+// The metric's values bucketed by panel, line and x level, then summarised into the figure.
+void fill_values(const StudyData& d, std::size_t metric, std::size_t x, const PanelSplit& split,
+                 const std::vector<ValueLine>& lines, const std::vector<std::size_t>& ignored, LineFigure& f) {
+    const ColumnLevels& xc = d.columns[x];
+    std::vector<std::vector<std::vector<std::vector<double>>>> buckets(
+        f.panel_titles.size(),
+        std::vector<std::vector<std::vector<double>>>(lines.size(), std::vector<std::vector<double>>(f.x.size())));
+    for (const StudyRow& r : d.rows) {
+        if (r.metric != metric || !std::isfinite(r.value)) continue;
+        std::vector<std::size_t> points;
+        if (r.levels[x] != kEmptyLevel) points.push_back(level_position(xc, r.levels[x]));
+        else
+            for (std::size_t k = 0; k < f.x.size(); ++k) points.push_back(k);
+        const std::vector<std::size_t> panels = combination_indices(d, r, split.split);
+        for (std::size_t l = 0; l < lines.size(); ++l) {
+            if (!d.in_series(r, lines[l].series, ignored)) continue;
+            for (std::size_t p : panels)
+                for (std::size_t k : points) buckets[p][l][k].push_back(r.value);
+        }
+    }
+    const bool share = d.metrics[metric].binary;
+    for (std::size_t p = 0; p < buckets.size(); ++p)
+        for (std::size_t l = 0; l < lines.size(); ++l)
+            for (std::size_t k = 0; k < f.x.size(); ++k) f.y[p][l][k] = summarise(buckets[p][l][k], share);
+}
+
+// Empty when the metric has no value to draw against x.
+std::optional<PlotScript> value_plot(const StudyData& d, std::size_t metric, std::size_t x) {
+    const ColumnLevels& xc = d.columns[x];
+    const MetricMeta& m = d.metrics[metric];
+    const std::vector<std::size_t> ignored = xc.assumption ? std::vector<std::size_t>{x} : std::vector<std::size_t>{};
+    const std::vector<ValueLine> lines = value_lines(d, x, ignored);
+    const PanelSplit split = split_panels(d, panel_candidates(d, x), kMaxPanels);
+
+    LineFigure f;
+    f.section = kValueSection;
+    f.name = file_stem(fmt::format("value_{}_vs_{}", m.name, xc.key));
+    f.title = fmt::format("{} against {}{}", m.name, xc.key, summary_note(d, split.rest, m.binary));
+    f.xlabel = parameter_label(xc.key);
+    f.ylabel = m.binary ? m.name + " (share of runs)" : metric_label(m);
+    for (const auto& combo : combinations(d, split.split))
+        f.panel_titles.push_back(split.split.empty() ? f.title : levels_title(d, split.split, combo));
+    for (std::size_t l = 0; l < lines.size(); ++l)
+        f.lines.push_back({lines[l].label, series_style(l, lines[l].series.analytic())});
+    for (std::size_t k = 0; k < xc.order.size(); ++k) {
+        f.x.push_back(xc.numeric ? xc.values[xc.order[k]] : static_cast<double>(k));
+        if (!xc.numeric) f.categories.push_back(xc.texts[xc.order[k]]);
+    }
+    f.resize();
+    fill_values(d, metric, x, split, lines, ignored, f);
+    if (!f.any_value()) return std::nullopt;
+    return line_figure_script(f);
+}
+
+}  // namespace
+
+void add_value_plots(const StudyData& d, StudyPlots& out) {
+    std::size_t drawn = 0, left_out = 0;
+    for (std::size_t m = 0; m < d.metrics.size(); ++m) {
+        if (!d.metrics[m].any_value) {
+            out.notes.push_back(fmt::format("{} has no value in any row: it is not plotted.", d.metrics[m].name));
+            continue;
+        }
+        for (std::size_t x : d.varied()) {
+            if (d.columns[x].order.size() < 2) continue;
+            if (drawn == kMaxValuePlots) {
+                ++left_out;
+                continue;
+            }
+            if (std::optional<PlotScript> s = value_plot(d, m, x)) {
+                out.scripts.push_back(std::move(*s));
+                ++drawn;
+            }
+        }
+    }
+    if (left_out > 0)
+        out.notes.push_back(fmt::format("{} value plot{} (metric against parameter) not drawn: a study draws at most "
+                                        "{}.",
+                                        left_out, left_out == 1 ? "" : "s", kMaxValuePlots));
+}
+
+}  // namespace vssw::study

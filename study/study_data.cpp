@@ -1,0 +1,268 @@
+#include "study/study_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <tuple>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "study/csv.hpp"
+#include "study/outputs.hpp"
+#include "study/runner.hpp"
+#include "study/spec.hpp"
+#include "study/text.hpp"
+
+namespace vssw::study {
+namespace fs = std::filesystem;
+namespace {
+
+// Columns holding numbers that name things rather than measure them: a categorical axis, not a numeric one.
+const std::set<std::string> kIdColumns = {"engine", "settings", "specimen"};
+
+// The units of the parameter columns, for axis labels.
+const std::map<std::string, std::string> kParameterUnits = {
+    {"height", "m"},   {"thickness", "m"},   {"density", "kg/m^3"}, {"g", "m/s^2"},    {"alpha", "rad"},
+    {"R", "m"},        {"alpha1", "rad"},    {"alpha2", "rad"},     {"R1", "m"},       {"theta0", "alpha"},
+    {"pga", "g"},      {"amplitude", "g"},   {"pulse_period", "s"}, {"duration", "s"}, {"max_pga", "g"}};
+
+// A whole field read as a number; NaN when it is not one.
+double number_of(const std::string& text) {
+    if (text.empty()) return std::nan("");
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    return *end == '\0' ? v : std::nan("");
+}
+
+// Significant digits that make two numbers one level: a derived column (R of a wall given by alpha and R) carries the
+// last bits of its computation (3.0000000000000004 beside 3); twelve digits hold every level a study file can sensibly
+// give apart.
+constexpr int kLevelDigits = 12;
+
+// A level's text: a number in its shortest form at kLevelDigits, a word as it is.
+std::string canonical_level(const std::string& text) {
+    const double v = number_of(text);
+    return std::isfinite(v) ? fmt::format("{:.{}g}", v, kLevelDigits) : text;
+}
+
+// Interns the texts of one column.
+class Interner {
+public:
+    explicit Interner(ColumnLevels& column) : column_(column) {
+        column_.texts = {""};
+        column_.values = {std::nan("")};
+        index_[""] = kEmptyLevel;
+    }
+    std::uint32_t id(const std::string& field) {
+        const std::string text = canonical_level(field);
+        const auto [it, inserted] = index_.try_emplace(text, static_cast<std::uint32_t>(column_.texts.size()));
+        if (inserted) {
+            column_.texts.push_back(text);
+            column_.values.push_back(number_of(text));
+            column_.order.push_back(it->second);
+        }
+        return it->second;
+    }
+
+private:
+    ColumnLevels& column_;
+    std::unordered_map<std::string, std::uint32_t> index_;
+};
+
+std::size_t header_index(const std::vector<std::string>& header, const std::string& name, const fs::path& path) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw InputError(fmt::format("{}: no column '{}'", path.string(), name));
+    return static_cast<std::size_t>(it - header.begin());
+}
+
+void read_metrics(StudyData& d) {
+    for (const Json& m : d.manifest.at("metrics"))
+        d.metrics.push_back({m.at("name").get<std::string>(), m.at("unit").get<std::string>(),
+                             m.value("description", std::string()), false, false});
+}
+
+// The assumption levels in the order of the manifest's runs (the file's order), ahead of any the runs do not name.
+void order_assumptions(StudyData& d) {
+    for (ColumnLevels& c : d.columns) {
+        if (!c.assumption) continue;
+        std::vector<std::uint32_t> order;
+        for (const Json& run : d.manifest.at("runs")) {
+            if (!run.contains(c.key)) continue;
+            const std::string text = canonical_level(run.at(c.key).get<std::string>());
+            for (std::uint32_t id = 1; id < c.texts.size(); ++id)
+                if (c.texts[id] == text && std::find(order.begin(), order.end(), id) == order.end())
+                    order.push_back(id);
+        }
+        for (std::uint32_t id : c.order)
+            if (std::find(order.begin(), order.end(), id) == order.end()) order.push_back(id);
+        c.order = order;
+    }
+}
+
+void classify_columns(StudyData& d) {
+    for (const std::string& key : kAssumptionKeys) d.assumption_columns.push_back(d.column(key));
+    std::set<std::string> varied;
+    for (const Json& v : d.manifest.at("varied")) varied.insert(v.get<std::string>());
+    for (ColumnLevels& c : d.columns) {
+        c.assumption = std::find(kAssumptionKeys.begin(), kAssumptionKeys.end(), c.key) != kAssumptionKeys.end();
+        c.varied = varied.count(c.key) > 0;
+        const auto is_number = [&](std::uint32_t id) { return std::isfinite(c.values[id]); };
+        c.numeric = !kIdColumns.count(c.key) && !c.order.empty() &&
+                    std::all_of(c.order.begin(), c.order.end(), is_number);
+    }
+}
+
+void read_series(StudyData& d) {
+    for (const Json& run : d.manifest.at("runs")) {
+        Series s;
+        s.engine = run.at("engine").get<std::string>();
+        s.settings = run.value("settings", std::string());
+        for (const std::string& key : kAssumptionKeys)
+            s.assumptions.push_back(run.contains(key) ? canonical_level(run.at(key).get<std::string>())
+                                                      : std::string());
+        s.label = d.series_label(s);
+        d.series.push_back(std::move(s));
+    }
+}
+
+void read_rows(StudyData& d, const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+    std::vector<std::string> header, fields;
+    try {
+        if (!read_csv_record(in, header) || header.empty() || header.front() != "case_id")
+            throw InputError("no header line starting with case_id");
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+    }
+    const std::size_t first = header_index(header, "engine", path), last = header_index(header, "settings", path);
+    const std::size_t metric = header_index(header, "metric", path), value = header_index(header, "value", path);
+    const std::size_t status = header_index(header, "status", path), warnings = header_index(header, "warnings", path);
+    d.columns.resize(last - first + 1);
+    std::vector<Interner> interners;
+    interners.reserve(d.columns.size());
+    for (std::size_t c = 0; c < d.columns.size(); ++c) {
+        d.columns[c].key = header[first + c];
+        interners.emplace_back(d.columns[c]);
+    }
+    std::unordered_map<std::string, std::uint32_t> metric_index;
+    for (std::size_t m = 0; m < d.metrics.size(); ++m) metric_index[d.metrics[m].name] = static_cast<std::uint32_t>(m);
+    std::set<std::tuple<int, std::vector<std::uint32_t>>> warned_tasks;
+    try {
+        while (read_csv_record(in, fields)) {
+            if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
+            if (fields.size() != header.size())
+                throw InputError(fmt::format("a row of {} fields, the header has {}", fields.size(), header.size()));
+            StudyRow row;
+            char* end = nullptr;
+            row.case_id = static_cast<int>(std::strtol(fields[0].c_str(), &end, 10));
+            if (fields[0].empty() || *end != '\0')
+                throw InputError(fmt::format("case_id '{}' is not a number", fields[0]));
+            const auto m = metric_index.find(fields[metric]);
+            if (m == metric_index.end())
+                throw InputError(fmt::format("metric '{}' is not one of the manifest's", fields[metric]));
+            row.metric = m->second;
+            row.value = fields[value].empty() ? std::nan("") : number_of(fields[value]);
+            for (std::size_t c = 0; c < d.columns.size(); ++c) row.levels.push_back(interners[c].id(fields[first + c]));
+            if (fields[status].rfind("failed", 0) == 0) {
+                ++d.failed_rows;
+                const auto colon = fields[status].find(": ");
+                ++d.failure_reasons[colon == std::string::npos ? fields[status] : fields[status].substr(colon + 2)];
+            }
+            if (!fields[warnings].empty()) {
+                ++d.warned_rows;
+                warned_tasks.insert({row.case_id, row.levels});
+            }
+            d.rows.push_back(std::move(row));
+        }
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+    }
+    d.warned_tasks = static_cast<long>(warned_tasks.size());
+}
+
+void classify_metrics(StudyData& d) {
+    std::vector<bool> only_0_1(d.metrics.size(), true);
+    for (const StudyRow& r : d.rows) {
+        if (!std::isfinite(r.value)) continue;
+        d.metrics[r.metric].any_value = true;
+        if (r.value != 0.0 && r.value != 1.0) only_0_1[r.metric] = false;
+    }
+    for (std::size_t m = 0; m < d.metrics.size(); ++m) d.metrics[m].binary = d.metrics[m].any_value && only_0_1[m];
+}
+
+}  // namespace
+
+std::size_t StudyData::column(const std::string& key) const {
+    for (std::size_t c = 0; c < columns.size(); ++c)
+        if (columns[c].key == key) return c;
+    return std::string::npos;
+}
+
+std::vector<std::size_t> StudyData::varied() const {
+    std::vector<std::size_t> out;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+        if (columns[c].varied) out.push_back(c);
+    return out;
+}
+
+bool StudyData::in_series(const StudyRow& row, const Series& s, const std::vector<std::size_t>& ignored) const {
+    if (text(row, 0) != s.engine || text(row, columns.size() - 1) != s.settings) return false;
+    for (std::size_t i = 0; i < kAssumptionKeys.size(); ++i) {
+        const std::size_t c = assumption_columns[i];
+        if (c == std::string::npos || row.levels[c] == kEmptyLevel) continue;
+        if (std::find(ignored.begin(), ignored.end(), c) != ignored.end()) continue;
+        if (text(row, c) != s.assumptions[i]) return false;
+    }
+    return true;
+}
+
+std::string StudyData::series_label(const Series& s, const std::vector<std::size_t>& ignored) const {
+    std::string label = engine_display_name(s.engine);
+    for (std::size_t i = 0; i < kAssumptionKeys.size() && s.analytic(); ++i) {
+        const std::size_t c = assumption_columns[i];
+        if (c == std::string::npos || !columns[c].varied) continue;
+        if (std::find(ignored.begin(), ignored.end(), c) != ignored.end()) continue;
+        label += fmt::format(" {}={}", kAssumptionKeys[i], s.assumptions[i]);
+    }
+    return s.settings.empty() ? label : label + " " + s.settings;
+}
+
+StudyData read_study_data(const fs::path& dir) {
+    StudyData d;
+    d.manifest = read_manifest(dir);
+    try {
+        const Json& study = d.manifest.at("study");
+        d.name = study.at("name").get<std::string>();
+        d.description = study.value("description", std::string());
+        d.kind = study.at("kind").get<std::string>();
+        read_metrics(d);
+    } catch (const Json::exception& e) {
+        throw InputError(fmt::format("'{}' is not a study manifest: {}", (dir / kManifestFile).string(), e.what()));
+    }
+    read_rows(d, dir / kResultsCsv);
+    try {
+        classify_columns(d);
+        order_assumptions(d);
+        read_series(d);
+    } catch (const Json::exception& e) {
+        throw InputError(fmt::format("'{}' is not a study manifest: {}", (dir / kManifestFile).string(), e.what()));
+    }
+    classify_metrics(d);
+    return d;
+}
+
+std::string parameter_label(const std::string& key) {
+    const auto it = kParameterUnits.find(key);
+    return it == kParameterUnits.end() ? key : fmt::format("{} [{}]", key, it->second);
+}
+
+std::string metric_label(const MetricMeta& metric) {
+    return metric.unit.empty() ? metric.name : fmt::format("{} [{}]", metric.name, metric.unit);
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,34 @@
+#pragma once
+// The content of study.md and study.html (study/document.hpp): what the study is, what varied and what ran, the
+// counts, the largest sensitivities first, the engines against each analytic assumption set, the plots, the run.
+#include "study/agreement.hpp"
+#include "study/document.hpp"
+#include "study/effects.hpp"
+#include "study/gnuplot.hpp"
+#include "study/study_data.hpp"
+#include "study/study_plots.hpp"
+
+namespace vssw::study {
+
+// At most this many sentences of sensitivities (the table below them holds every effect): past twenty the reader is
+// in the table anyway.
+constexpr std::size_t kMaxSensitivitySentences = 20;
+// Failure reasons listed by name, the most common first.
+constexpr std::size_t kMaxFailureReasons = 3;
+
+struct StudyDocumentInput {
+    const StudyData& data;
+    const std::vector<Effect>& effects;
+    const std::vector<Agreement>& agreement;
+    const StudyPlots& plot_notes;  // its notes (its scripts are drawn into `plots`)
+    const PlotResult& plots;
+    bool plots_skipped = false;    // --no-plots
+};
+
+Document build_study_document(const StudyDocumentInput& in);
+
+// The heading of the paragraph that says when and where the study ran: the only part of the document that differs
+// between one run of a study and a merge of its shards.
+extern const char* const kRunHeading;
+
+}  // namespace vssw::study

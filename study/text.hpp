@@ -1,0 +1,18 @@
+#pragma once
+// Numbers and names as people read them in vssw's tables and sentences (JSON and CSV carry full precision), and names
+// as file names.
+#include <string>
+
+namespace vssw::study {
+
+// 6 significant digits.
+std::string num(double value);
+std::string yes_no(bool value);
+// A relative error or change in percent: "+0.02 %", "-13.2 %", "+3.1e-04 %", "0 %"; "n/a" when not finite.
+std::string percent(double rel_error);
+// "ODE", "Bullet", "Simbody" for the engine names (others as they are).
+std::string engine_display_name(const std::string& engine);
+// Case ids and other names as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'.
+std::string file_stem(const std::string& case_id);
+
+}  // namespace vssw::study
