@@ -1,9 +1,7 @@
 #pragma once
-// Helpers shared by the study tests: a fresh temporary folder per test, a study file written from text, a study run
-// into a folder, its results.csv read back.
+// Helpers shared by the study tests (the temporary folder is tests/temp_files.hpp's): a study file written from
+// text, a study run into a folder, its results.csv read back.
 #include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,43 +12,13 @@
 #include "study/results_files.hpp"
 #include "study/runner.hpp"
 #include "study/spec.hpp"
+#include "tests/temp_files.hpp"
 
 namespace vssw::testing {
-
-// A folder of its own under the system's temporary folder, removed when the test ends.
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = std::filesystem::temp_directory_path() /
-                (std::string("vssw-study-") + info->test_suite_name() + "-" + info->name() + "-" +
-                 std::to_string(::getpid()));
-        std::filesystem::remove_all(path_);
-        std::filesystem::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const std::filesystem::path& path() const { return path_; }
-    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-    std::filesystem::path path_;
-};
 
 inline std::filesystem::path write_file(const std::filesystem::path& path, const std::string& text) {
     std::ofstream(path) << text;
     return path;
-}
-
-inline std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 // The study in `toml`, parsed as the file `dir/name` would be (records relative to `dir`).

@@ -1,6 +1,8 @@
 #pragma once
-// Files for the writers' tests: a temporary folder removed at the end of the test, a file read whole, a substring.
+// Files for the tests that write files: a temporary folder removed at the end of the test, a file read whole, a substring.
 #include <stdlib.h>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,10 @@
 namespace vssw::testing {
 
 struct TempDir {
+    static std::string test_name() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        return info ? std::string(info->test_suite_name()) + "_" + info->name() : std::string("test");
+    }
     std::filesystem::path path;
     // A new folder "vssw_<name>_XXXXXX" in the system's temporary folder.
     explicit TempDir(const std::string& name) {
@@ -24,6 +30,9 @@ struct TempDir {
         std::error_code ec;
         if (!path.empty()) std::filesystem::remove_all(path, ec);
     }
+    // A new folder named after the running test.
+    TempDir() : TempDir(test_name()) {}
+    std::filesystem::path operator/(const std::string& name) const { return path / name; }
     // Moved, not copied: one owner removes the folder.
     TempDir(TempDir&& other) noexcept : path(std::move(other.path)) { other.path.clear(); }
     TempDir(const TempDir&) = delete;
