@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -127,10 +130,15 @@ void add_sensitivities(Blocks& b, const StudyData& d, const std::vector<Effect>&
         "Each varied parameter against its first level: runs are paired that differ in that parameter alone (the same "
         "engine and settings, the same levels of everything else that varies), and the change of a metric is its "
         "value over the value at the first level, minus 1 (for a 0/1 metric, the pairs that flip). Sorted by the size "
-        "of the median change (of the share of pairs that flip)."));
+        "of the median change (of the share of pairs that flip); a sentence for each parameter and metric at its "
+        "largest, the table below for every level."));
+    // One sentence per parameter and metric, its largest change (effects come sorted largest first): a parameter
+    // with many levels would otherwise fill the list with its own levels and hide the others (the table has them all).
     std::vector<std::string> sentences;
+    std::set<std::pair<std::string, std::size_t>> said;
     for (const Effect& e : effects)
-        if (sentences.size() < kMaxSensitivitySentences && e.pairs > 0) sentences.push_back(effect_sentence(d, e));
+        if (sentences.size() < kMaxSensitivitySentences && e.pairs > 0 && said.insert({e.parameter, e.metric}).second)
+            sentences.push_back(effect_sentence(d, e));
     if (sentences.empty()) b.push_back(paragraph("No pair of runs gives a change: every paired value is missing."));
     else b.push_back(list(sentences));
     const bool any_assumption = std::any_of(d.columns.begin(), d.columns.end(),
