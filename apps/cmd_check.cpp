@@ -20,6 +20,7 @@
 #include "apps/json.hpp"
 #include "compare/bounds.hpp"
 #include "compare/suite.hpp"
+#include "study/suite_file.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::cli {
@@ -116,7 +117,7 @@ void require_measurable(const compare::Bounds& bounds, const compare::Suite& sui
 
 void run_check(const CheckOptions& o, std::ostream& out) {
     const compare::Bounds bounds = read_bounds_file(o.bounds);
-    const compare::Suite all = compare::make_suite(bounds.suite, o.data_dir);
+    const compare::Suite all = study::read_suite(bounds.suite, o.data_dir);
     compare::RunOptions run;
     run.threads = o.threads;
     run.keep_traces = false;

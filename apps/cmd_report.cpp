@@ -23,6 +23,7 @@
 #include "multibody/engine.hpp"
 #include "study/clock.hpp"
 #include "study/report_write.hpp"
+#include "study/suite_file.hpp"
 
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (apps/CMakeLists.txt)
 
@@ -128,7 +129,9 @@ Command add_report_command(CLI::App& root) {
     auto o = std::make_shared<ReportCommandOptions>();
     CLI::App* cmd = root.add_subcommand(
         "report", "Run the validation suite for the analytic model and the engines; write a report into a folder");
-    cmd->add_option("--suite", o->suite, "default (about 40 s on 2 cores with Bullet, ODE and Simbody) or full (233 cases, about 4 min)");
+    cmd->add_option("--suite", o->suite,
+                    "default (about 40 s on 2 cores with Bullet, ODE and Simbody), full (233 cases, about 4 min), or a "
+                    "suite file (a study file whose parts name their walls: studies/validation-default.toml is one)");
     cmd->add_option("--engines", o->engines,
                     fmt::format("engines to compare, comma-separated (default: {}; simbody-rigid on request)",
                                 fmt::join(multibody::default_compared_engines(), ", ")))
@@ -160,7 +163,7 @@ Command add_report_command(CLI::App& root) {
                 const std::vector<std::string> engines = checked_engines(o->engines);
                 o->threads = parse_bounded_int("--threads", o->threads_text, 0, kMaxThreads, " (0: the available cores)");
                 require_data_folder(o->data);
-                compare::Suite suite = compare::make_suite(o->suite, o->data);
+                compare::Suite suite = study::read_suite(o->suite, o->data);
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
                 require_records_readable(suite);
                 const std::filesystem::path dir = o->out;

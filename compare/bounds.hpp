@@ -30,7 +30,7 @@ struct EngineBound {
 };
 
 struct Bounds {
-    std::string suite = "default";  // where the case ids come from (make_suite)
+    std::string suite = "default";  // where the case ids come from: a shipped suite or a suite file (study::read_suite)
     std::vector<AnalyticBound> analytic;
     std::vector<EngineBound> engines;
 };

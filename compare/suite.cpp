@@ -15,7 +15,6 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
-#include "analytic/specimens.hpp"
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/analytic_engine.hpp"
@@ -30,103 +29,13 @@ using multibody::Excitation;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kReferenceEngine = "analytic";
 
-// The walls ------------------------------------------------------------------------------------------------------
-
-// Table 1 of the paper (ABK 1981) is data/table1.csv (analytic/specimens.hpp), always the shipped one: the case ids
-// name its specimens, and bounds files name the case ids (--data of report and check moves the records only).
-// The default suite's specimens: hinge high (0.69), at mid-height (0.50), between (0.60), as bench/engine_accuracy.
-constexpr int kDefaultSpecimens[] = {1, 7, 15};
-constexpr double kOverburdens[] = {0.0, 0.1, 0.5};
-constexpr double kReleases[] = {0.2, 0.5, 0.8};
-constexpr double kDefaultTable1Release = 0.5;
-constexpr double kStepStudyRelease = 0.5;
-
-// Fig. 6 of the paper: b = 0.2 m, h = 2 m, h1/h = 0.7, xi = 0 (and the parapet of the same size).
-constexpr double kFig6Height = 4.0, kFig6Thickness = 0.4, kFig6Hinge = 0.7;
-constexpr const char* kFig6Vssw = "fig6-vssw";
-constexpr const char* kFig6Pw = "fig6-pw";
-
-// The records --------------------------------------------------------------------------------------------------
-//
-// Each record is scaled per wall so that the analytic model (exact kinematics) rocks clearly and stays standing, at
-// a scale inside a band of scales that all leave the wall standing (the response to a record is erratic in the
-// scale: peaks do not grow monotonically). Measured with `vssw history --kinematics exact` (peak |theta1| / alpha):
-//  - Fig. 6 VSSW (threshold 0.286 g): Rinaldi (PGA 0.825 g) does not lift it up to x 0.36 (x 0.25 leaves it at rest);
-//    x 0.40-0.50 rock it to 0.10-0.81 and leave it standing, x 0.52 overturns it: x 0.45 (peak 0.27).
-//    El Centro (PGA 0.319 g): barely lifts it up to x 1.10, x 1.12-1.22 rock it to 0.12-0.92, x 1.25 overturns it:
-//    x 1.15 (peak 0.47), the narrowest band of the four.
-//  - Fig. 6 PW (threshold 0.1 g): Rinaldi x 0.14-0.24 rock it to 0.05-0.74, x 0.26 overturns it: x 0.17 (peak 0.40;
-//    x 0.25 leaves it standing too, at 0.67, too near alpha for an engine's small differences).
-//    El Centro x 0.36-0.65 rock it to 0.02-0.80, x 0.70 overturns it: x 0.5 (peak 0.45).
-struct RecordSpec {
-    const char* wall_id;
-    const char* stem;   // id prefix
-    const char* label;  // record name
-    const char* file;   // in data/
-    double scale;
-};
-constexpr const char* kRinaldiFile = "NGA_no_1063_RRS228.AT2";
-constexpr const char* kRinaldiLabel = "Northridge 1994, Rinaldi 228";
-constexpr const char* kElCentroFile = "elcentro_chopra.txt";
-constexpr const char* kElCentroLabel = "Imperial Valley 1940, El Centro N-S";
-constexpr RecordSpec kRecords[] = {
-    {kFig6Vssw, "rinaldi", kRinaldiLabel, kRinaldiFile, 0.45},
-    {kFig6Vssw, "elcentro", kElCentroLabel, kElCentroFile, 1.15},
-    {kFig6Pw, "rinaldi", kRinaldiLabel, kRinaldiFile, 0.17},
-    {kFig6Pw, "elcentro", kElCentroLabel, kElCentroFile, 0.5},
-};
 // A history runs on past the record's end until the wall is at rest (stop_at_rest), at most this long [s]: the
-// Fig. 6 walls' free rocking from the amplitudes above dies out within a few seconds.
+// Fig. 6 walls' free rocking from the shipped suites' record scales dies out within a few seconds.
 constexpr double kHistoryTail = 5.0;
-
-// Step studies: four steps per engine spanning its default (Bullet 0.2 ms, ODE 0.2 ms, Simbody's rigid route
-// 0.5 ms), so that the first-order error of each is seen falling. Simbody's default (compliant) route integrates with
-// error control: its dt is the reporting interval (default 1 ms), so its study shows the sampling error only.
-const std::map<std::string, std::vector<double>>& step_studies() {
-    static const std::map<std::string, std::vector<double>> steps = {
-        {"bullet", {1e-3, 5e-4, 2e-4, 1e-4}},
-        {"ode", {2e-3, 1e-3, 5e-4, 2e-4}},
-        {"simbody", {4e-3, 2e-3, 1e-3, 5e-4}},
-        {"simbody-rigid", {2e-3, 1e-3, 5e-4, 2.5e-4}},
-    };
-    return steps;
-}
 
 // Traces: at most this many points per trace (plots), a free vibration's first seconds only.
 constexpr std::size_t kMaxTracePoints = 2000;
 constexpr double kFreeTraceSeconds = 10.0;
-
-std::string fmt_number(double x) { return fmt::format("{}", x); }
-
-// Whether the analytic model (exact kinematics) released from rest at r alpha rocks rather than falls: a heavy
-// overburden with a high hinge puts the unstable equilibrium below 0.8 alpha1 (Table 1 #1, #10, #11 at xi 0.5 fall
-// from 0.8 alpha1), and a wall that falls has no period or restitution to compare. Such free cases are left out.
-bool rocks_from(const multibody::WallScene& scene, double r) {
-    SimulationOptions options;
-    options.keep_samples = false;
-    return !free_vibration(*multibody::analytic_model(scene, Kinematics::exact), r * scene.alpha(), options).overturned;
-}
-
-SuiteWall table1_wall(const Specimen& s, double xi) {
-    SuiteWall w;
-    w.id = fmt::format("t1-{:02d}-xi{}", s.number, fmt_number(xi));
-    w.label = fmt::format("Table 1 #{}, {:.2f} x {:.3f} m, h1/h {:.2f}, xi {}", s.number, s.height, s.thickness,
-                          s.hinge_ratio, fmt_number(xi));
-    w.scene = multibody::WallScene::of(make_vssw(s.height, s.thickness, s.hinge_ratio, xi));
-    return w;
-}
-
-SuiteCase threshold_case(const std::string& wall) { return {wall, CaseKind::threshold, wall, 0.0, "", {}, ""}; }
-SuiteCase free_case(const std::string& wall, double r) {
-    return {fmt::format("{}/r{}", wall, fmt_number(r)), CaseKind::free, wall, r, "", {}, ""};
-}
-SuiteCase history_case(const std::string& wall, const std::string& record) {
-    return {fmt::format("{}/{}", wall, record), CaseKind::history, wall, 0.0, record, {}, ""};
-}
-SuiteCase step_case(const std::string& wall, double r, double dt, const std::string& engine) {
-    return {fmt::format("{}/r{}/dt{}/{}", wall, fmt_number(r), fmt_number(dt), engine),
-            CaseKind::step, wall, r, "", dt, engine};
-}
 
 // Running ----------------------------------------------------------------------------------------------------------
 
@@ -383,54 +292,6 @@ const SuiteRecord& Suite::record(const std::string& id) const {
     for (const SuiteRecord& r : records)
         if (r.id == id) return r;
     throw InputError(fmt::format("suite '{}' has no record '{}'", name, id));
-}
-
-Suite make_suite(const std::string& name, const std::string& data_dir) {
-    if (name != "default" && name != "full")
-        throw InputError(fmt::format("unknown suite '{}' (valid: default, full)", name));
-    const bool full = name == "full";
-    Suite s;
-    s.name = name;
-
-    s.walls.push_back({kFig6Vssw, "Fig. 6 VSSW 4 x 0.4 m, h1/h 0.7",
-                       multibody::WallScene::of(make_vssw(kFig6Height, kFig6Thickness, kFig6Hinge))});
-    s.walls.push_back({kFig6Pw, "Fig. 6 PW 4 x 0.4 m", multibody::WallScene::of(make_parapet(kFig6Height, kFig6Thickness))});
-    const std::vector<Specimen> table1 = read_table1(default_table1_path());
-    std::vector<Specimen> specimens = table1;  // full: all, in the table's order
-    if (!full) {
-        specimens.clear();
-        for (int number : kDefaultSpecimens) specimens.push_back(table1_specimen(table1, number));
-    }
-    for (const Specimen& sp : specimens)
-        for (double xi : kOverburdens) s.walls.push_back(table1_wall(sp, xi));
-
-    const std::string dir = data_dir.empty() ? std::string(".") : data_dir;
-    for (const RecordSpec& r : kRecords) {
-        const std::string id = fmt::format("{}-x{}", r.stem, fmt_number(r.scale));
-        if (std::none_of(s.records.begin(), s.records.end(), [&](const SuiteRecord& x) { return x.id == id; }))
-            s.records.push_back({id, fmt::format("{}, x {}", r.label, fmt_number(r.scale)), dir + "/" + r.file,
-                                 r.scale});
-    }
-
-    for (const SuiteWall& w : s.walls) s.cases.push_back(threshold_case(w.id));
-    for (const SuiteWall& w : s.walls) {
-        const bool fig6 = w.id == kFig6Vssw || w.id == kFig6Pw;
-        std::vector<double> releases(std::begin(kReleases), std::end(kReleases));
-        if (!fig6 && !full) releases = {kDefaultTable1Release};
-        for (double r : releases)
-            if (rocks_from(w.scene, r)) s.cases.push_back(free_case(w.id, r));
-    }
-    for (const RecordSpec& r : kRecords)
-        s.cases.push_back(history_case(r.wall_id, fmt::format("{}-x{}", r.stem, fmt_number(r.scale))));
-
-    std::vector<std::string> step_walls = {kFig6Vssw};
-    if (full) step_walls.push_back(kFig6Pw);
-    for (const auto& [engine, dts] : step_studies()) {
-        s.step_study[engine] = dts;
-        for (const std::string& w : step_walls)
-            for (double dt : dts) s.cases.push_back(step_case(w, kStepStudyRelease, dt, engine));
-    }
-    return s;
 }
 
 Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids) {

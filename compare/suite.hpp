@@ -70,10 +70,8 @@ struct Suite {
     const SuiteRecord& record(const std::string& id) const;  // throws InputError on an unknown id
 };
 
-// The shipped suites: "default" (minutes on 2 cores) and "full". data_dir holds the records. Throws InputError on
-// another name. A free case whose release the analytic model (exact kinematics) does not survive is left out (in
-// "full": Table 1 #1, #10, #11 at xi 0.5 fall from 0.8 alpha1, their unstable equilibrium being lower).
-Suite make_suite(const std::string& name, const std::string& data_dir);
+// The shipped suites ("default", "full") are study files, studies/validation-<name>.toml, read by
+// study::read_suite (study/suite_file.hpp): walls and cases are data, and a user can copy one and change it.
 // The cases whose ids are listed (each must exist: InputError naming the first that does not), with the walls and
 // records they need.
 Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids);

@@ -30,6 +30,7 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "units", "duration",
                                                 "tolerance", "max_pga", "step"};
+// Then wall_name and record_name when a part names its walls or records, then settings.
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : std::string(); }
 
@@ -77,126 +78,171 @@ std::string settings_text(const std::vector<Axis>& axes, const std::vector<Level
     return text;
 }
 
+// Whether the analytic model (exact kinematics) released from rest at theta0 alpha falls rather than rocks: a heavy
+// overburden with a high hinge puts the unstable equilibrium below 0.8 alpha1 (Table 1 #1, #10, #11 at xi 0.5), and
+// a wall that falls has no period or restitution to compare (a suite's free cases leave such releases out).
+bool falls_from(const multibody::WallScene& scene, double theta0) {
+    SimulationOptions options;
+    options.keep_samples = false;
+    return free_vibration(*multibody::analytic_model(scene, Kinematics::exact), theta0 * scene.alpha(), options)
+        .overturned;
+}
+
 }  // namespace
 
 Grid::Grid(const StudySpec& spec) : spec_(spec) {
     identity_ = fnv1a(spec.as_read.dump());
-    if (spec_.wall_axis("specimen")) {
-        try {
-            table1_ = read_table1(default_table1_path());
-        } catch (const InputError& e) {
-            throw InputError(fmt::format("{} {}: wall.specimen: {}", kWhat, spec_.path, e.what()));
+    const auto where = [&](const PartSpec& part, const std::string& key) {
+        return fmt::format("{} {}: {}{}", kWhat, spec_.path, part.where.empty() ? "" : part.where + ".", key);
+    };
+    for (const PartSpec& part : spec_.parts)
+        if (part.wall_axis("specimen") && table1_.empty()) {
+            try {
+                table1_ = read_table1(default_table1_path());
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("{}: {}", where(part, "wall.specimen"), e.what()));
+            }
         }
-    }
 
     // Records: read once, up front, so that a missing or malformed file is refused before anything runs.
-    if (const Axis* files = spec_.excitation_axis("file")) {
+    for (const PartSpec& part : spec_.parts) {
+        const Axis* files = part.excitation_axis("file");
+        if (!files) continue;
         std::optional<AccelUnits> units;
-        if (const Axis* u = spec_.excitation_axis("units")) {
-            if (u->varied())
-                throw InputError(fmt::format("{} {}: excitation.units: one unit for the study's records", kWhat,
-                                             spec_.path));
+        if (const Axis* u = part.excitation_axis("units")) {
+            if (u->varied()) throw InputError(where(part, "excitation.units: one unit for the part's records"));
             units = parse_units(as_word(u->levels.front()));
         }
         for (const Level& f : files->levels) {
-            const std::filesystem::path given = as_word(f);
-            const std::filesystem::path path = given.is_absolute() ? given : std::filesystem::path(spec_.base_dir) / given;
+            if (records_.count(as_word(f))) continue;
             try {
-                records_.emplace(as_word(f), read_record(path.string(), units ? &*units : nullptr));
+                records_.emplace(as_word(f), read_record(record_path(as_word(f)), units ? &*units : nullptr));
             } catch (const InputError& e) {
-                throw InputError(fmt::format("{} {}: excitation.file: {}", kWhat, spec_.path, e.what()));
+                throw InputError(fmt::format("{}: {}", where(part, "excitation.file"), e.what()));
             }
         }
     }
 
-    // Runs: the analytic model under each combination of assumptions and settings, each engine under each of its
-    // settings' combinations.
-    for (const EngineSpec& e : spec_.engines) {
-        const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(e.name);
-        const std::vector<std::vector<Level>> assumption_sets =
-            e.name == "analytic" ? combinations(spec_.assumptions) : std::vector<std::vector<Level>>{{}};
-        for (const std::vector<Level>& settings : combinations(e.settings))
-            for (const std::vector<Level>& assumptions : assumption_sets) {
-                RunSpec run;
-                run.engine = e.name;
-                run.assumptions = assumptions;
-                run.settings = engine->default_settings();
-                run.settings_text = settings_text(e.settings, settings);
-                for (std::size_t i = 0; i < e.settings.size(); ++i) {
-                    const std::string& key = e.settings[i].key;
-                    const double v = as_number(settings[i]);
-                    if (key == "dt") run.settings.dt = v;
-                    else if (key == "iterations") run.settings.iterations = static_cast<int>(v);
-                    else run.settings.knobs[key] = v;
-                }
-                if (e.name == "analytic") {
-                    run.kinematics = parse_kinematics(as_word(assumptions[0]));
-                    run.impact = std::holds_alternative<double>(assumptions[1])
-                                     ? ImpactLaw{ImpactLaw::Kind::ratio, as_number(assumptions[1])}
-                                     : parse_impact_law(as_word(assumptions[1]));
-                    run.roller = parse_roller(as_word(assumptions[2]));
-                    if (run.roller == Roller::unilateral && run.kinematics == Kinematics::paper) {
-                        skipped_runs_.push_back(
-                            "the paper's kinematics with the unilateral roller: not a model (Eq. 3 does not keep the "
-                            "top corner on the roller's line, so it can neither leave the roller nor land back on it); "
-                            "not run");
-                        continue;
+    // Runs, per part: the analytic model under each combination of assumptions and settings, each engine under each
+    // of its settings' combinations (a closed-form part runs the analytic model only).
+    for (std::size_t pi = 0; pi < spec_.parts.size(); ++pi) {
+        const PartSpec& part = spec_.parts[pi];
+        for (const EngineSpec& e : part.engines) {
+            if (part.kind == ExcitationKind::closed_form && e.name != "analytic") continue;
+            const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(e.name);
+            const std::vector<std::vector<Level>> assumption_sets =
+                e.name == "analytic" ? combinations(spec_.assumptions) : std::vector<std::vector<Level>>{{}};
+            for (const std::vector<Level>& settings : combinations(e.settings))
+                for (const std::vector<Level>& assumptions : assumption_sets) {
+                    RunSpec run;
+                    run.part = pi;
+                    run.engine = e.name;
+                    run.assumptions = assumptions;
+                    run.settings = engine->default_settings();
+                    run.settings_text = settings_text(e.settings, settings);
+                    for (std::size_t i = 0; i < e.settings.size(); ++i) {
+                        const std::string& key = e.settings[i].key;
+                        const double v = as_number(settings[i]);
+                        if (key == "dt") run.settings.dt = v;
+                        else if (key == "iterations") run.settings.iterations = static_cast<int>(v);
+                        else run.settings.knobs[key] = v;
                     }
-                    if (run.kinematics == Kinematics::paper) run.settings.knobs["paper_kinematics"] = 1.0;
-                    if (run.impact.kind == ImpactLaw::Kind::whole_mechanism)
-                        run.settings.knobs["whole_mechanism_impact"] = 1.0;
-                    if (run.impact.kind == ImpactLaw::Kind::ratio) run.settings.knobs["restitution"] = run.impact.ratio;
-                    if (run.roller == Roller::unilateral) run.settings.knobs["unilateral_roller"] = 1.0;
+                    if (e.name == "analytic") {
+                        run.kinematics = parse_kinematics(as_word(assumptions[0]));
+                        run.impact = std::holds_alternative<double>(assumptions[1])
+                                         ? ImpactLaw{ImpactLaw::Kind::ratio, as_number(assumptions[1])}
+                                         : parse_impact_law(as_word(assumptions[1]));
+                        run.roller = parse_roller(as_word(assumptions[2]));
+                        if (run.roller == Roller::unilateral && run.kinematics == Kinematics::paper) {
+                            skipped_runs_.push_back(
+                                "the paper's kinematics with the unilateral roller: not a model (Eq. 3 does not keep "
+                                "the top corner on the roller's line, so it can neither leave the roller nor land back "
+                                "on it); not run");
+                            continue;
+                        }
+                        if (run.kinematics == Kinematics::paper) run.settings.knobs["paper_kinematics"] = 1.0;
+                        if (run.impact.kind == ImpactLaw::Kind::whole_mechanism)
+                            run.settings.knobs["whole_mechanism_impact"] = 1.0;
+                        if (run.impact.kind == ImpactLaw::Kind::ratio)
+                            run.settings.knobs["restitution"] = run.impact.ratio;
+                        if (run.roller == Roller::unilateral) run.settings.knobs["unilateral_roller"] = 1.0;
+                    }
+                    try {
+                        engine->check_settings(run.settings);
+                    } catch (const InputError& err) {
+                        throw InputError(fmt::format("{}: {}", where(part, "settings of " + e.name +
+                                                                               (run.settings_text.empty()
+                                                                                    ? ""
+                                                                                    : " (" + run.settings_text + ")")),
+                                                     err.what()));
+                    }
+                    runs_.push_back(std::move(run));
                 }
-                try {
-                    engine->check_settings(run.settings);
-                } catch (const InputError& err) {
-                    throw InputError(fmt::format("{} {}: settings of {}{}: {}", kWhat, spec_.path, e.name,
-                                                 run.settings_text.empty() ? "" : " (" + run.settings_text + ")",
-                                                 err.what()));
-                }
-                runs_.push_back(std::move(run));
-            }
+        }
     }
     std::sort(skipped_runs_.begin(), skipped_runs_.end());
     skipped_runs_.erase(std::unique(skipped_runs_.begin(), skipped_runs_.end()), skipped_runs_.end());
     if (runs_.empty())
         throw InputError(fmt::format("{} {}: no run left: {}", kWhat, spec_.path, fmt::join(skipped_runs_, "; ")));
 
-    // Cases: every combination, each built (a wall out of range is refused here, naming the case), the repeats of a
-    // parapet's hinge left out.
-    product_size_ = 1;
-    for (const Axis& a : spec_.wall) product_size_ *= a.levels.size();
-    for (const Axis& a : spec_.excitation) product_size_ *= a.levels.size();
-    const Axis* hinge = spec_.wall_axis("hinge");
-    std::size_t hinge_axis = 0;
-    for (std::size_t i = 0; i < spec_.wall.size(); ++i)
-        if (&spec_.wall[i] == hinge) hinge_axis = i;
-    std::vector<const Axis*> axes;
-    for (const Axis& a : spec_.wall) axes.push_back(&a);
-    for (const Axis& a : spec_.excitation) axes.push_back(&a);
-    for (std::size_t p = 0; p < product_size_; ++p) {
-        const CaseSpec c = make_case(static_cast<int>(p + 1));
-        if (c.model == "parapet" && hinge && digits(p, axes)[hinge_axis] != 0) continue;
-        case_ids_.push_back(c.id);
+    // Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
+    // repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
+    product_size_ = 0;
+    for (const PartSpec& part : spec_.parts) {
+        PartGrid g;
+        for (const Axis& a : part.wall) g.axes.push_back(&a);
+        for (const Axis& a : part.excitation) g.axes.push_back(&a);
+        for (const Axis* a : g.axes) g.size *= a->levels.size();
+        g.first = product_size_ + 1;
+        product_size_ += g.size;
+        parts_.push_back(std::move(g));
+    }
+    for (std::size_t pi = 0; pi < parts_.size(); ++pi) {
+        const PartSpec& part = spec_.parts[pi];
+        const Axis* hinge = part.wall_axis("hinge");
+        std::size_t hinge_axis = 0;
+        for (std::size_t i = 0; i < part.wall.size(); ++i)
+            if (&part.wall[i] == hinge) hinge_axis = i;
+        for (std::size_t p = 0; p < parts_[pi].size; ++p) {
+            const CaseSpec c = make_case(static_cast<int>(parts_[pi].first + p));
+            if (c.model == "parapet" && hinge && digits(p, parts_[pi].axes)[hinge_axis] != 0) continue;
+            if (part.skip_falling_releases && falls_from(c.scene, c.theta0)) continue;
+            case_ids_.push_back(c.id);
+        }
     }
 
     columns_ = kBaseColumns;
+    const auto used = [&](const std::string& k) {
+        for (const PartSpec& part : spec_.parts)
+            if (part.wall_axis(k) || part.excitation_axis(k)) return true;
+        return false;
+    };
     for (const std::string& k : kExtraColumns)
-        if (spec_.wall_axis(k) || spec_.excitation_axis(k)) columns_.push_back(k);
+        if (used(k)) columns_.push_back(k);
+    const auto named = [&](std::string NameTemplates::*field) {
+        return std::any_of(spec_.parts.begin(), spec_.parts.end(),
+                           [&](const PartSpec& p) { return !(p.names.*field).empty(); });
+    };
+    if (named(&NameTemplates::wall_name)) columns_.push_back("wall_name");
+    if (named(&NameTemplates::record_name)) columns_.push_back("record_name");
     columns_.push_back("settings");
 }
 
+const Grid::PartGrid& Grid::part_of(int id, std::size_t& index) const {
+    for (index = 0; index < parts_.size(); ++index)
+        if (static_cast<std::size_t>(id) < parts_[index].first + parts_[index].size) return parts_[index];
+    throw InputError(fmt::format("study {}: no case {} (1 to {})", spec_.name, id, product_size_));
+}
+
 CaseSpec Grid::make_case(int id) const {
-    std::vector<const Axis*> axes;
-    for (const Axis& a : spec_.wall) axes.push_back(&a);
-    for (const Axis& a : spec_.excitation) axes.push_back(&a);
     if (id < 1 || static_cast<std::size_t>(id) > product_size_)
         throw InputError(fmt::format("study {}: no case {} (1 to {})", spec_.name, id, product_size_));
-    const std::vector<std::size_t> d = digits(static_cast<std::size_t>(id - 1), axes);
-
     CaseSpec c;
     c.id = id;
+    const PartGrid& g = part_of(id, c.part);
+    const PartSpec& part = spec_.parts[c.part];
+    const std::vector<const Axis*>& axes = g.axes;
+    const std::vector<std::size_t> d = digits(static_cast<std::size_t>(id) - g.first, axes);
     std::map<std::string, Level> level;
     std::string described;
     for (std::size_t i = 0; i < axes.size(); ++i) {
@@ -205,7 +251,7 @@ CaseSpec Grid::make_case(int id) const {
         described += fmt::format("{}{} {}", described.empty() ? "" : ", ", axes[i]->key, to_text(c.levels.back()));
     }
     std::size_t wall_index = 0;
-    for (std::size_t i = 0; i < spec_.wall.size(); ++i) wall_index = wall_index * spec_.wall[i].levels.size() + d[i];
+    for (std::size_t i = 0; i < part.wall.size(); ++i) wall_index = wall_index * part.wall[i].levels.size() + d[i];
     c.wall_index = wall_index;
     const auto num = [&](const char* k, double fallback) {
         const auto it = level.find(k);
@@ -248,7 +294,7 @@ CaseSpec Grid::make_case(int id) const {
             c.scene = multibody::WallScene::of(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g));
         }
     } catch (const InputError& e) {
-        throw InputError(fmt::format("{} {}: case {} ({}): {}", kWhat, spec_.path, id, described, e.what()));
+        throw InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path, part.where.empty() ? "" : part.where + ", ", id, described, e.what()));
     }
     if (c.scene.vssw) {
         const VsswGeometry& w = *c.scene.vssw;
@@ -270,9 +316,10 @@ CaseSpec Grid::make_case(int id) const {
     if (c.theta0 > 0.0) {
         const double collapse = multibody::collapse_angle(c.scene);
         if (!(c.theta0 * c.scene.alpha() < collapse))
-            throw InputError(fmt::format("{} {}: case {} ({}): theta0 {} alpha is at or beyond the wall's collapse "
+            throw InputError(fmt::format("{} {}: {}case {} ({}): theta0 {} alpha is at or beyond the wall's collapse "
                                          "angle ({:.4g} alpha)",
-                                         kWhat, spec_.path, id, described, c.theta0, collapse / c.scene.alpha()));
+                                         kWhat, spec_.path, part.where.empty() ? "" : part.where + ", ", id,
+                                         described, c.theta0, collapse / c.scene.alpha()));
     }
     if (has("file")) {
         c.file = as_word(level["file"]);
@@ -292,6 +339,7 @@ CaseSpec Grid::make_case(int id) const {
 }
 
 bool Grid::run_applies(const RunSpec& run, const CaseSpec& c) const {
+    if (run.part != c.part) return false;
     if (run.engine != "analytic" || c.model != "parapet") return true;
     // A parapet has neither a roller nor two kinematics: the first levels stand for all.
     return run.assumptions[0] == spec_.assumptions[0].levels.front() &&
@@ -307,15 +355,14 @@ const GroundMotion& Grid::record(const std::string& file) const {
 std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& run) const {
     const bool vssw = c.model == "vssw";
     const bool analytic = run.engine == "analytic";
-    const ExcitationKind kind = spec_.kind;
+    const PartSpec& part = spec_.parts[c.part];
+    const ExcitationKind kind = part.kind;
     const bool record_kind = kind == ExcitationKind::record;
     const bool pulse = kind == ExcitationKind::pulse;
     std::vector<std::string> v;
     v.reserve(columns_.size());
     // A number the file gives is written as the file gives it (a derived one may differ in its last digit).
-    std::vector<const Axis*> axes;
-    for (const Axis& x : spec_.wall) axes.push_back(&x);
-    for (const Axis& x : spec_.excitation) axes.push_back(&x);
+    const std::vector<const Axis*>& axes = parts_[c.part].axes;
     const auto given = [&](const std::string& col) -> const Level* {
         for (std::size_t i = 0; i < axes.size(); ++i)
             if (axes[i]->key == col) return &c.levels[i];
@@ -353,6 +400,8 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
         else if (col == "alpha2") v.push_back(vssw ? number(c.scene.vssw->alpha2) : "");
         else if (col == "R1") v.push_back(vssw ? number(c.scene.vssw->R1) : "");
         else if (col == "settings") v.push_back(run.settings_text);
+        else if (col == "wall_name") v.push_back(wall_name(c));
+        else if (col == "record_name") v.push_back(record_name(c));
         else v.push_back(given(col) ? to_text(*given(col)) : "");  // units, duration, tolerance, max_pga
     }
     return v;
@@ -361,10 +410,13 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
 std::vector<std::string> Grid::varied_parameters() const {
     std::vector<std::string> out;
     const auto varied = [&](const std::string& col) {
-        for (const Axis& a : spec_.wall)
-            if (a.key == col && a.varied()) return true;
-        for (const Axis& a : spec_.excitation)
-            if (a.key == col && a.varied()) return true;
+        if (col == "kind") return spec_.kind_text() == "mixed";
+        for (const PartSpec& part : spec_.parts) {
+            for (const Axis& a : part.wall)
+                if (a.key == col && a.varied()) return true;
+            for (const Axis& a : part.excitation)
+                if (a.key == col && a.varied()) return true;
+        }
         for (const Axis& a : spec_.assumptions)
             if (a.key == col && a.varied()) return true;
         return false;
@@ -372,6 +424,91 @@ std::vector<std::string> Grid::varied_parameters() const {
     for (const std::string& col : columns_)
         if (varied(col)) out.push_back(col);
     // alpha and R given as alpha/R vary under their own names; specimen under its.
+    return out;
+}
+
+std::string Grid::record_path(const std::string& file) const {
+    const std::filesystem::path given = file;
+    return (given.is_absolute() ? given : std::filesystem::path(spec_.base_dir) / given).string();
+}
+
+std::string Grid::wall_name(const CaseSpec& c) const {
+    return render(spec_.parts[c.part].names.wall_name, c, "wall_name");
+}
+std::string Grid::wall_label(const CaseSpec& c) const {
+    return render(spec_.parts[c.part].names.wall_label, c, "wall_label");
+}
+std::string Grid::record_name(const CaseSpec& c) const {
+    return render(spec_.parts[c.part].names.record_name, c, "record_name");
+}
+std::string Grid::record_label(const CaseSpec& c) const {
+    return render(spec_.parts[c.part].names.record_label, c, "record_label");
+}
+
+// "{key}" or "{key:spec}" replaced by the case's value of key (a whole number formatted as an integer, so that
+// "{specimen:02}" gives "07"); "{{" and "}}" are braces.
+std::string Grid::render(const std::string& tmpl, const CaseSpec& c, const char* key) const {
+    if (tmpl.empty()) return "";
+    const PartSpec& part = spec_.parts[c.part];
+    const std::vector<const Axis*>& axes = parts_[c.part].axes;
+    const auto value = [&](const std::string& name) -> std::optional<Level> {
+        for (std::size_t i = 0; i < axes.size(); ++i)
+            if (axes[i]->key == name && std::holds_alternative<double>(c.levels[i])) return c.levels[i];
+        if (name == "model") return c.model;
+        if (name == "height") return c.height;
+        if (name == "thickness") return c.thickness;
+        if (name == "hinge" && c.scene.vssw) return c.hinge;
+        if (name == "xi") return c.xi;
+        if (name == "density") return c.density;
+        if (name == "g") return c.g;
+        if (name == "alpha") return c.alpha;
+        if (name == "R") return c.R;
+        if (name == "theta0" && c.theta0 > 0.0) return c.theta0;
+        if (name == "file" && !c.file.empty()) return c.file;
+        if (name == "scale" && !c.file.empty()) return c.scale;
+        if (name == "pga" && !c.file.empty()) return c.pga_g;
+        if (name == "kind") return std::string(to_string(part.kind));
+        return std::nullopt;
+    };
+    const auto fail = [&](const std::string& why) {
+        return InputError(fmt::format("{} {}: {}{}: \"{}\": {}", kWhat, spec_.path,
+                                      part.where.empty() ? "" : part.where + ".", key, tmpl, why));
+    };
+    std::string out;
+    for (std::size_t i = 0; i < tmpl.size(); ++i) {
+        const char ch = tmpl[i];
+        if ((ch == '{' || ch == '}') && i + 1 < tmpl.size() && tmpl[i + 1] == ch) {
+            out += ch;
+            ++i;
+            continue;
+        }
+        if (ch == '}') throw fail("a '}' without its '{'");
+        if (ch != '{') {
+            out += ch;
+            continue;
+        }
+        const std::size_t close = tmpl.find('}', i);
+        if (close == std::string::npos) throw fail("a '{' without its '}'");
+        const std::string field = tmpl.substr(i + 1, close - i - 1);
+        const std::size_t colon = field.find(':');
+        const std::string name = field.substr(0, colon);
+        const std::string format = colon == std::string::npos ? "" : field.substr(colon + 1);
+        const std::optional<Level> v = value(name);
+        if (!v) throw fail(fmt::format("no value '{}' for this case", name));
+        try {
+            if (const auto* x = std::get_if<double>(&*v)) {
+                const bool whole = *x == std::floor(*x) && std::abs(*x) < 1e15 &&
+                                   format.find_first_of("eEfFgG%") == std::string::npos;
+                out += whole ? fmt::format(fmt::runtime("{:" + format + "}"), static_cast<long long>(*x))
+                             : fmt::format(fmt::runtime("{:" + format + "}"), *x);
+            } else {
+                out += fmt::format(fmt::runtime("{:" + format + "}"), std::get<std::string>(*v));
+            }
+        } catch (const fmt::format_error& e) {
+            throw fail(fmt::format("format '{}' of '{}': {}", format, name, e.what()));
+        }
+        i = close;
+    }
     return out;
 }
 

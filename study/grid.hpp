@@ -3,9 +3,10 @@
 //
 // A case is one wall under one excitation: a combination of the levels of the [wall] and [excitation] keys (the
 // Cartesian product, the last key varying fastest in kWallKeys then kExcitationKeys order). Its id is its 1-based
-// position in that product, so ids and order depend on the file alone, never on threads, shards or processes. A case
-// that would repeat another is left out and its id unused: a parapet has no hinge, so only the first hinge level
-// gives parapet cases.
+// position in that product (a study of several parts numbers each part's cases after the previous part's), so ids and
+// order depend on the file alone, never on threads, shards or processes. A case that would repeat another is left out
+// and its id unused: a parapet has no hinge, so only the first hinge level gives parapet cases; a part that asks for it
+// leaves out the releases from which the analytic model (exact kinematics) falls.
 //
 // A run is what is done to every case: the analytic model under one combination of the assumptions (and of its
 // settings), or one engine under one combination of its settings. Engines ignore the assumptions (their physics is
@@ -28,6 +29,7 @@
 namespace vssw::study {
 
 struct RunSpec {
+    std::size_t part = 0;  // the part whose cases it runs on (StudySpec::parts)
     std::string engine;
     std::vector<Level> assumptions;  // the analytic model's, one per StudySpec::assumptions; empty for an engine
     multibody::EngineSettings settings;  // the engine's defaults with the file's settings (and assumptions) applied
@@ -39,7 +41,8 @@ struct RunSpec {
 };
 
 struct CaseSpec {
-    int id = 0;                     // 1-based position in the product
+    int id = 0;                     // 1-based position in the product (of all parts)
+    std::size_t part = 0;           // StudySpec::parts
     std::vector<Level> levels;      // one per wall axis, then one per excitation axis (StudySpec order)
     multibody::WallScene scene;
     std::string model;              // "vssw" or "parapet"
@@ -53,8 +56,8 @@ struct CaseSpec {
     std::string shape;              // pulse
     double amplitude_g = 0.0, pulse_period = 0.0, duration = 0.0;  // pulse [g], [s], harmonic [s]
     double tolerance = 0.0, max_pga_g = 0.0, step = 0.0;  // scale-to-collapse; 0: the defaults (measure.cpp)
-    // The wall's position among the wall axes alone (cases that differ only in their excitation share it): the key
-    // of the thresholds a process computes once per wall and run.
+    // The wall's position among its part's wall axes alone (cases that differ only in their excitation share it):
+    // with the run (which belongs to one part), the key of the thresholds a process computes once per wall and run.
     std::size_t wall_index = 0;
 };
 
@@ -70,7 +73,7 @@ public:
     explicit Grid(const StudySpec& spec);
 
     const StudySpec& spec() const { return spec_; }
-    std::size_t product_size() const { return product_size_; }
+    std::size_t product_size() const { return product_size_; }  // every part's product
     const std::vector<int>& case_ids() const { return case_ids_; }  // the cases that run, in order
     CaseSpec make_case(int id) const;
     const std::vector<RunSpec>& runs() const { return runs_; }
@@ -85,6 +88,15 @@ public:
     // The parameters that vary: the varied axes of the wall, the excitation and the assumptions, in column order.
     std::vector<std::string> varied_parameters() const;
 
+    // A part's names of the case's wall and record, from its templates ("" when the part has none; InputError naming
+    // the part and the key on a template that does not format).
+    std::string wall_name(const CaseSpec& c) const;
+    std::string wall_label(const CaseSpec& c) const;
+    std::string record_name(const CaseSpec& c) const;
+    std::string record_label(const CaseSpec& c) const;
+    // The record as a path (relative ones from the study file's folder).
+    std::string record_path(const std::string& file) const;
+
     // A hash of the study as read (FNV-1a 64 of its canonical JSON): results, journals and shards name the study by
     // it, so that a resume or a merge cannot mix two studies.
     const std::string& identity() const { return identity_; }
@@ -93,7 +105,15 @@ public:
     std::vector<int> shard_case_ids(int k, int n) const;
 
 private:
+    struct PartGrid {
+        std::vector<const Axis*> axes;  // wall axes, then excitation axes
+        std::size_t size = 1, first = 1;  // its product's size and its first case id
+    };
+    std::string render(const std::string& tmpl, const CaseSpec& c, const char* key) const;
+    const PartGrid& part_of(int id, std::size_t& index) const;
+
     StudySpec spec_;
+    std::vector<PartGrid> parts_;
     std::size_t product_size_ = 0;
     std::vector<int> case_ids_;
     std::vector<RunSpec> runs_;

@@ -165,7 +165,7 @@ Response response_of(const Trajectory& t, const multibody::WallScene& scene) {
 }
 
 GroundMotion case_motion(const Grid& grid, const CaseSpec& c, double scale) {
-    switch (grid.spec().kind) {
+    switch (grid.spec().parts[c.part].kind) {
         case ExcitationKind::pulse: {
             const double a = c.amplitude_g * kStandardGravity;
             if (c.shape == "sine") return sine_pulse(a, c.pulse_period);
@@ -253,6 +253,7 @@ ThresholdOutcome ThresholdCache::get(std::size_t wall, std::size_t run, const st
 std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_t run_index,
                                  const multibody::Engine& engine, ThresholdCache& thresholds) {
     const StudySpec& spec = grid.spec();
+    const PartSpec& part = spec.parts[c.part];
     const RunSpec& run = grid.runs().at(run_index);
     const bool analytic = run.engine == "analytic";
     const double alpha = c.scene.alpha();
@@ -283,6 +284,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
         const std::string& metric = spec.metrics[m];
         const MetricInfo& info = metric_info(metric);
         if (info.analytic_only && !analytic) continue;
+        if (std::find(part.metrics.begin(), part.metrics.end(), metric) == part.metrics.end()) continue;
         switch (info.source) {
             case MetricSource::closed_form: {
                 const ClosedForm f = closed_form(metric, c, run);
@@ -326,7 +328,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 if (!response && response_failure.empty())
                     guarded(
                         [&] {
-                            if (spec.kind == ExcitationKind::free) {
+                            if (part.kind == ExcitationKind::free) {
                                 if (!free && free_failure.empty()) {
                                     compare::FreeVibrationOptions o;
                                     o.r = c.theta0;
@@ -381,16 +383,16 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
 double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
     // Simulated seconds, roughly: a threshold search is ~17 trials of a few seconds; a free vibration a few seconds;
     // a pulse or a record its duration and the tail; a collapse search ~35 such runs.
-    const StudySpec& spec = grid.spec();
+    const PartSpec& part = grid.spec().parts[c.part];
     double seconds = 0.0;
-    for (const std::string& metric : spec.metrics) {
+    for (const std::string& metric : part.metrics) {
         switch (metric_info(metric).source) {
             case MetricSource::closed_form: break;
             case MetricSource::threshold: seconds += 17.0 * 2.5; break;
             case MetricSource::free: seconds += 5.0; break;
             case MetricSource::response:
-                seconds += spec.kind == ExcitationKind::free ? 5.0
-                           : spec.kind == ExcitationKind::pulse ? 3.0 * c.pulse_period + c.duration + kResponseTail
+                seconds += part.kind == ExcitationKind::free ? 5.0
+                           : part.kind == ExcitationKind::pulse ? 3.0 * c.pulse_period + c.duration + kResponseTail
                                                                 : grid.record(c.file).duration() + kResponseTail;
                 break;
             case MetricSource::collapse: seconds += 35.0 * (grid.record(c.file).duration() + kResponseTail); break;

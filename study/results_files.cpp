@@ -79,7 +79,7 @@ Json manifest_json(const Grid& grid, const StudyMeta& meta) {
                   {"file", spec.path},
                   {"base_dir", spec.base_dir},
                   {"identity", grid.identity()},
-                  {"kind", to_string(spec.kind)},
+                  {"kind", spec.kind_text()},
                   {"as_read", spec.as_read}};
     j["shard"] = {{"k", meta.shard.k}, {"n", meta.shard.n}};
     j["date"] = meta.date;

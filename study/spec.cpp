@@ -15,8 +15,8 @@
 
 namespace vssw::study {
 
-const std::vector<std::string> kWallKeys = {"model", "height", "thickness", "hinge", "xi",     "density", "g",
-                                            "alpha", "R",      "alpha1",    "alpha2", "R1",    "specimen"};
+const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thickness", "alpha", "R",      "alpha1",
+                                            "alpha2", "R1",      "hinge",  "xi",        "density", "g"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "shape",    "amplitude", "pulse_period",
@@ -27,8 +27,11 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kWhat = "study file";
-const std::vector<std::string> kTopKeys = {"name", "description", "metrics", "engines",
-                                           "wall", "assumptions", "excitation", "settings"};
+const std::vector<std::string> kTopKeys = {"name",        "description", "metrics",  "engines", "wall",
+                                           "assumptions", "excitation",  "settings", "part"};
+const std::vector<std::string> kPartKeys = {"wall",        "excitation", "metrics",     "settings",
+                                            "wall_name",   "wall_label", "record_name", "record_label",
+                                            "skip_falling_releases"};
 // The analytic backend's knobs that stand for assumptions: the file gives them in [assumptions], where they vary
 // and have columns of their own.
 const std::vector<std::string> kAssumptionKnobs = {"paper_kinematics", "restitution", "whole_mechanism_impact",
@@ -52,10 +55,13 @@ public:
         throw InputError(fmt::format("{} {}: {}{}", kWhat, name_, key.empty() ? "" : key + ": ", message));
     }
 
-    const json& table(const json& doc, const std::string& key, const std::vector<std::string>& known) const {
+    // doc[key] as a table of known keys; `where` names it in messages (default: key).
+    const json& table(const json& doc, const std::string& key, const std::vector<std::string>& known,
+                      const std::string& where = "") const {
         const json& t = doc.at(key);
-        if (!t.is_object()) fail(key, fmt::format("must be a table of keys, got {}", t.dump()));
-        unknown_keys(t, key, known);
+        const std::string name = where.empty() ? key : where;
+        if (!t.is_object()) fail(name, fmt::format("must be a table of keys, got {}", t.dump()));
+        unknown_keys(t, name, known);
         return t;
     }
 
@@ -191,8 +197,8 @@ KindKeys kind_keys(ExcitationKind kind) {
     return {};
 }
 
-ExcitationKind parse_kind(const Reader& r, const json& v) {
-    const std::string k = r.word(v, "excitation.kind",
+ExcitationKind parse_kind(const Reader& r, const json& v, const std::string& key) {
+    const std::string k = r.word(v, key,
                                  {"closed-form", "threshold", "free", "pulse", "record", "scale-to-collapse"});
     if (k == "closed-form") return ExcitationKind::closed_form;
     if (k == "threshold") return ExcitationKind::threshold;
@@ -203,20 +209,20 @@ ExcitationKind parse_kind(const Reader& r, const json& v) {
 }
 
 // The wall's geometry must come one way: height and thickness, alpha and R, alpha1-alpha2-R1, or a specimen.
-void check_wall_routes(const Reader& r, const json& wall) {
+void check_wall_routes(const Reader& r, const json& wall, const std::string& where) {
     const auto has = [&](const char* k) { return wall.contains(k); };
     const int routes = (has("height") || has("thickness") ? 1 : 0) + (has("alpha") || has("R") ? 1 : 0) +
                        (has("alpha1") || has("alpha2") || has("R1") ? 1 : 0) + (has("specimen") ? 1 : 0);
     if (routes != 1)
-        r.fail("wall", "give the geometry one way: height and thickness; alpha and R (the whole wall's slenderness "
+        r.fail(where, "give the geometry one way: height and thickness; alpha and R (the whole wall's slenderness "
                        "and half-diagonal); alpha1, alpha2 and R1 (the paper's parameters); or specimen (Table 1)");
     const auto pair = [&](const char* a, const char* b) {
-        if (has(a) != has(b)) r.fail("wall", fmt::format("'{}' needs '{}' too", has(a) ? a : b, has(a) ? b : a));
+        if (has(a) != has(b)) r.fail(where, fmt::format("'{}' needs '{}' too", has(a) ? a : b, has(a) ? b : a));
     };
     pair("height", "thickness");
     pair("alpha", "R");
     if ((has("alpha1") || has("alpha2") || has("R1")) && !(has("alpha1") && has("alpha2") && has("R1")))
-        r.fail("wall", "alpha1, alpha2 and R1 go together (the paper's parameters of a VSSW)");
+        r.fail(where, "alpha1, alpha2 and R1 go together (the paper's parameters of a VSSW)");
 }
 
 std::vector<Axis> read_axes(const Reader& r, const json& t, const std::string& table,
@@ -283,7 +289,10 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
                 add(name, "engines");
                 engines.back().settings = read_settings(r, doc["engines"][name], "engines." + name, name);
             }
-        for (const auto& item : doc["engines"].items()) add(item.key(), "engines");  // unknown names fail here
+        for (const auto& item : doc["engines"].items())
+            if (!contains(available, item.key()))
+                r.fail("engines", fmt::format("no engine '{}' in this build (available: {})", item.key(),
+                                              fmt::join(available, ", ")));
     } else {
         r.fail("engines", fmt::format("must be a list of engine names or a table of engines, got {}",
                                       doc["engines"].dump()));
@@ -302,6 +311,120 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
         }
     }
     return engines;
+}
+
+std::vector<std::string> read_metrics(const Reader& r, const json& m, const std::string& key) {
+    if (!m.is_array() || m.empty()) r.fail(key, fmt::format("must be a non-empty list of metric names, got {}", m.dump()));
+    std::vector<std::string> out;
+    for (const json& v : m) {
+        if (!v.is_string()) r.fail(key, fmt::format("must list metric names, got {}", v.dump()));
+        const std::string metric = v.get<std::string>();
+        try {
+            (void)metric_info(metric);
+        } catch (const InputError& e) {
+            r.fail(key, e.what());
+        }
+        if (contains(out, metric)) r.fail(key, fmt::format("names '{}' twice", metric));
+        out.push_back(metric);
+    }
+    return out;
+}
+
+// One grid: the whole study's [wall] and [excitation] (where ""), or a [[part]]'s (where "part[N]").
+PartSpec read_part(const Reader& r, const json& t, const std::string& where, const StudySpec& study) {
+    PartSpec p;
+    p.where = where;
+    const auto key = [&](const std::string& k) { return where.empty() ? k : where + "." + k; };
+
+    if (!t.contains("excitation")) r.fail(where, "no [excitation] table (kind = closed-form, threshold, free, ...)");
+    const json& ex = t["excitation"];
+    const std::string ex_key = key("excitation");
+    if (!ex.is_object()) r.fail(ex_key, fmt::format("must be a table of keys, got {}", ex.dump()));
+    if (!ex.contains("kind")) r.fail(ex_key, "'kind' is missing");
+    p.kind = parse_kind(r, ex["kind"], ex_key + ".kind");
+    const KindKeys keys = kind_keys(p.kind);
+    std::vector<std::string> known = {"kind"};
+    known.insert(known.end(), keys.allowed.begin(), keys.allowed.end());
+    r.unknown_keys(ex, fmt::format("{} (kind {})", ex_key, to_string(p.kind)), known);
+    for (const std::string& k : keys.required)
+        if (!ex.contains(k)) r.fail(ex_key, fmt::format("kind {} needs '{}'", to_string(p.kind), k));
+    if (ex.contains("scale") && ex.contains("pga")) r.fail(ex_key, "give 'scale' or 'pga', not both");
+    p.excitation = read_axes(r, ex, ex_key, kExcitationKeys, excitation_level);
+    if (const Axis* shape = p.excitation_axis("shape")) {
+        const bool harmonic = std::find(shape->levels.begin(), shape->levels.end(), Level{"harmonic"}) !=
+                              shape->levels.end();
+        if (harmonic != ex.contains("duration"))
+            r.fail(ex_key, harmonic ? "shape harmonic needs 'duration' (s)"
+                                    : "'duration' is for shape harmonic only (the pulses last one period, the "
+                                      "Ricker wavelet three)");
+    }
+
+    const std::string wall_key = key("wall");
+    if (!t.contains("wall")) r.fail(where, "no [wall] table");
+    const json& wall = r.table(t, "wall", kWallKeys, wall_key);
+    check_wall_routes(r, wall, wall_key);
+    p.wall = read_axes(r, wall, wall_key, kWallKeys, wall_level);
+    const Axis* model = p.wall_axis("model");
+    const bool parapet_only = model && model->levels.size() == 1 && model->levels[0] == Level{"parapet"};
+    const bool angles = wall.contains("alpha1") || wall.contains("specimen");
+    if (!parapet_only && !angles && !wall.contains("hinge"))
+        r.fail(wall_key, "a VSSW needs 'hinge' (h1/h, or \"eq15\")");
+    if (model && angles &&
+        std::find(model->levels.begin(), model->levels.end(), Level{"parapet"}) != model->levels.end())
+        r.fail(wall_key, "alpha1-alpha2-R1 and specimen describe a VSSW: model must be vssw");
+
+    // What the part measures: its own list, else the study's that its kind measures, else the kind's defaults.
+    if (!where.empty() && t.contains("metrics")) {
+        p.metrics = read_metrics(r, t["metrics"], key("metrics"));
+        for (const std::string& metric : p.metrics)
+            if (!kind_measures(p.kind, metric_info(metric)))
+                r.fail(key("metrics"), fmt::format("'{}' is not measured by an excitation of kind {}", metric,
+                                                   to_string(p.kind)));
+    } else if (where.empty() && !study.metrics.empty()) {
+        p.metrics = study.metrics;  // a study of one grid measures all it names (study_from_json checks it can)
+    } else if (!study.metrics.empty()) {
+        for (const std::string& metric : study.metrics)
+            if (kind_measures(p.kind, metric_info(metric))) p.metrics.push_back(metric);
+    } else {
+        p.metrics = default_metrics(p.kind);
+    }
+    if (p.metrics.empty())
+        r.fail(where, where.empty() ? "a closed-form study must name its metrics"
+                                    : "measures none of the study's metrics: give it its own metrics");
+
+    // The study's engines, with this part's settings where it gives them.
+    p.engines = study.engines;
+    if (!where.empty() && t.contains("settings")) {
+        const json& st = t["settings"];
+        if (!st.is_object()) r.fail(key("settings"), fmt::format("must be a table of engines, got {}", st.dump()));
+        for (const auto& item : st.items()) {
+            const auto it = std::find_if(p.engines.begin(), p.engines.end(),
+                                         [&](const EngineSpec& e) { return e.name == item.key(); });
+            const std::string k = key("settings." + item.key());
+            if (it == p.engines.end()) r.fail(k, "settings for an engine the study does not run (add it to engines)");
+            it->settings = read_settings(r, item.value(), k, item.key());
+        }
+    }
+
+    if (!where.empty()) {
+        for (auto [name, target] : {std::pair{"wall_name", &p.names.wall_name}, std::pair{"wall_label", &p.names.wall_label},
+                                    std::pair{"record_name", &p.names.record_name},
+                                    std::pair{"record_label", &p.names.record_label}})
+            if (t.contains(name)) {
+                if (!t[name].is_string() || t[name].get<std::string>().empty())
+                    r.fail(key(name), fmt::format("must be a non-empty template, got {}", t[name].dump()));
+                *target = t[name].get<std::string>();
+            }
+        if (t.contains("skip_falling_releases")) {
+            if (!t["skip_falling_releases"].is_boolean())
+                r.fail(key("skip_falling_releases"),
+                       fmt::format("must be true or false, got {}", t["skip_falling_releases"].dump()));
+            p.skip_falling_releases = t["skip_falling_releases"].get<bool>();
+            if (p.skip_falling_releases && p.kind != ExcitationKind::free)
+                r.fail(key("skip_falling_releases"), "is for kind free (a release from theta0)");
+        }
+    }
+    return p;
 }
 
 }  // namespace
@@ -323,16 +446,22 @@ const char* to_string(ExcitationKind kind) {
     return "unknown";
 }
 
-const Axis* StudySpec::wall_axis(const std::string& key) const {
+const Axis* PartSpec::wall_axis(const std::string& key) const {
     for (const Axis& a : wall)
         if (a.key == key) return &a;
     return nullptr;
 }
 
-const Axis* StudySpec::excitation_axis(const std::string& key) const {
+const Axis* PartSpec::excitation_axis(const std::string& key) const {
     for (const Axis& a : excitation)
         if (a.key == key) return &a;
     return nullptr;
+}
+
+std::string StudySpec::kind_text() const {
+    for (const PartSpec& p : parts)
+        if (p.kind != parts.front().kind) return "mixed";
+    return parts.empty() ? "" : to_string(parts.front().kind);
 }
 
 StudySpec study_from_json(const json& doc, const std::string& name, const std::string& base_dir) {
@@ -357,41 +486,6 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
         s.description = doc["description"].get<std::string>();
     }
 
-    if (!doc.contains("excitation")) r.fail("", "no [excitation] table (kind = closed-form, threshold, free, ...)");
-    const json& ex = doc["excitation"];
-    if (!ex.is_object()) r.fail("excitation", fmt::format("must be a table of keys, got {}", ex.dump()));
-    if (!ex.contains("kind")) r.fail("excitation", "'kind' is missing");
-    s.kind = parse_kind(r, ex["kind"]);
-    const KindKeys keys = kind_keys(s.kind);
-    std::vector<std::string> known = {"kind"};
-    known.insert(known.end(), keys.allowed.begin(), keys.allowed.end());
-    r.unknown_keys(ex, fmt::format("excitation (kind {})", to_string(s.kind)), known);
-    for (const std::string& k : keys.required)
-        if (!ex.contains(k)) r.fail("excitation", fmt::format("kind {} needs '{}'", to_string(s.kind), k));
-    if (ex.contains("scale") && ex.contains("pga")) r.fail("excitation", "give 'scale' or 'pga', not both");
-    s.excitation = read_axes(r, ex, "excitation", kExcitationKeys, excitation_level);
-    if (const Axis* shape = s.excitation_axis("shape")) {
-        const bool harmonic = std::find(shape->levels.begin(), shape->levels.end(), Level{"harmonic"}) !=
-                              shape->levels.end();
-        if (harmonic != ex.contains("duration"))
-            r.fail("excitation", harmonic ? "shape harmonic needs 'duration' (s)"
-                                          : "'duration' is for shape harmonic only (the pulses last one period, the "
-                                            "Ricker wavelet three)");
-    }
-
-    if (!doc.contains("wall")) r.fail("", "no [wall] table");
-    const json& wall = r.table(doc, "wall", kWallKeys);
-    check_wall_routes(r, wall);
-    s.wall = read_axes(r, wall, "wall", kWallKeys, wall_level);
-    const Axis* model = s.wall_axis("model");
-    const bool parapet_only = model && model->levels.size() == 1 && model->levels[0] == Level{"parapet"};
-    const bool angles = wall.contains("alpha1") || wall.contains("specimen");
-    if (!parapet_only && !angles && !wall.contains("hinge"))
-        r.fail("wall", "a VSSW needs 'hinge' (h1/h, or \"eq15\")");
-    if (model && angles &&
-        std::find(model->levels.begin(), model->levels.end(), Level{"parapet"}) != model->levels.end())
-        r.fail("wall", "alpha1-alpha2-R1 and specimen describe a VSSW: model must be vssw");
-
     s.assumptions = {{"kinematics", {std::string("paper")}},
                      {"impact", {std::string("eq19")}},
                      {"roller", {std::string("bilateral")}}};
@@ -403,39 +497,45 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
                 axis = r.axis(a[axis.key], key, [&](const json& v) { return assumption_level(r, key, v); });
             }
     }
-
     s.engines = read_engines(r, doc);
-
-    if (doc.contains("metrics")) {
-        const json& m = doc["metrics"];
-        if (!m.is_array() || m.empty()) r.fail("metrics", fmt::format("must be a non-empty list of metric names, got {}", m.dump()));
-        for (const json& v : m) {
-            if (!v.is_string()) r.fail("metrics", fmt::format("must list metric names, got {}", v.dump()));
-            const std::string metric = v.get<std::string>();
-            try {
-                (void)metric_info(metric);
-            } catch (const InputError& e) {
-                r.fail("metrics", e.what());
-            }
-            if (contains(s.metrics, metric)) r.fail("metrics", fmt::format("names '{}' twice", metric));
-            s.metrics.push_back(metric);
-        }
-    } else {
-        s.metrics = default_metrics(s.kind);
-        if (s.metrics.empty()) r.fail("", "a closed-form study must name its metrics");
-    }
+    if (doc.contains("metrics")) s.metrics = read_metrics(r, doc["metrics"], "metrics");
     const bool analytic = std::any_of(s.engines.begin(), s.engines.end(),
                                       [](const EngineSpec& e) { return e.name == "analytic"; });
-    for (const std::string& metric : s.metrics) {
-        const MetricInfo& info = metric_info(metric);
-        if (!kind_measures(s.kind, info))
-            r.fail("metrics", fmt::format("'{}' is not measured by an excitation of kind {}", metric, to_string(s.kind)));
-        if (info.analytic_only && !analytic)
-            r.fail("metrics", fmt::format("'{}' is the analytic model's: add \"analytic\" to engines", metric));
+
+    if (doc.contains("part")) {
+        if (doc.contains("wall") || doc.contains("excitation"))
+            r.fail("", "give [wall] and [excitation], or [[part]] tables each with its own: not both");
+        const json& parts = doc["part"];
+        if (!parts.is_array() || parts.empty())
+            r.fail("part", "must be a non-empty list of tables ([[part]] in TOML)");
+        for (std::size_t i = 0; i < parts.size(); ++i) {
+            const std::string where = fmt::format("part[{}]", i + 1);
+            if (!parts[i].is_object()) r.fail(where, "must be a table of keys");
+            r.unknown_keys(parts[i], where, kPartKeys);
+            s.parts.push_back(read_part(r, parts[i], where, s));
+        }
+        // Every metric the study names is measured somewhere.
+        for (const std::string& metric : s.metrics)
+            if (std::none_of(s.parts.begin(), s.parts.end(), [&](const PartSpec& p) { return contains(p.metrics, metric); }))
+                r.fail("metrics", fmt::format("'{}' is measured by no part's excitation", metric));
+    } else {
+        s.parts.push_back(read_part(r, doc, "", s));
+        const PartSpec& only = s.parts.front();
+        for (const std::string& metric : s.metrics)
+            if (!kind_measures(only.kind, metric_info(metric)))
+                r.fail("metrics", fmt::format("'{}' is not measured by an excitation of kind {}", metric,
+                                              to_string(only.kind)));
+        if (only.kind == ExcitationKind::closed_form &&
+            std::any_of(s.engines.begin(), s.engines.end(), [](const EngineSpec& e) { return e.name != "analytic"; }))
+            r.fail("engines", "a closed-form study runs no simulation: its engine is \"analytic\" only");
     }
-    if (s.kind == ExcitationKind::closed_form &&
-        std::any_of(s.engines.begin(), s.engines.end(), [](const EngineSpec& e) { return e.name != "analytic"; }))
-        r.fail("engines", "a closed-form study runs no simulation: its engine is \"analytic\" only");
+    // The study's metrics: its own list first, then those parts add, each once.
+    for (const PartSpec& part : s.parts)
+        for (const std::string& metric : part.metrics)
+            if (!contains(s.metrics, metric)) s.metrics.push_back(metric);
+    for (const std::string& metric : s.metrics)
+        if (metric_info(metric).analytic_only && !analytic)
+            r.fail("metrics", fmt::format("'{}' is the analytic model's: add \"analytic\" to engines", metric));
     return s;
 }
 

@@ -13,6 +13,12 @@
 //   [excitation]    kind = closed-form | threshold | free | pulse | record | scale-to-collapse, and its keys
 //   [settings.ode]  dt = 2e-4, iterations, knobs by name (a list varies them)
 //
+// A study may instead be several grids, each a [[part]] with its own [part.wall], [part.excitation] (any kind),
+// optional metrics and [part.settings.ENGINE], sharing the study's engines and assumptions; its cases follow the
+// previous part's. A part can name its walls and records (wall_name, wall_label, record_name, record_label: templates
+// such as "t1-{specimen:02}-xi{xi}") and leave out the releases from which the analytic model falls
+// (skip_falling_releases): what a validation suite needs (studies/validation-default.toml; study/suite_file.hpp).
+//
 // Everything is checked here or when the grid is built, before any case runs: an unknown key, a value of the wrong
 // type, an empty list, an engine not built, a metric the excitation cannot measure, a record that does not read:
 // InputError naming the file, the key and the value.
@@ -46,9 +52,32 @@ struct EngineSpec {
 };
 
 // The keys each table may hold, in the order their columns appear in results.csv.
-extern const std::vector<std::string> kWallKeys;        // model, height, thickness, hinge, xi, density, g, alpha, R, ...
+// kWallKeys is the order of the product too: geometry first (model, specimen, height, thickness, alpha, R, alpha1,
+// alpha2, R1), then hinge, xi, density, g.
+extern const std::vector<std::string> kWallKeys;
 extern const std::vector<std::string> kAssumptionKeys;  // kinematics, impact, roller
 extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, scale, pga, shape, amplitude, ...
+
+// Templates naming a part's walls and records ("" when not given): {key} or {key:format} (fmt's format spec) with the
+// case's wall and excitation values (height, thickness, hinge, xi, specimen, scale, ... as results.csv has them).
+struct NameTemplates {
+    std::string wall_name, wall_label, record_name, record_label;
+};
+
+// One grid: the whole study, or one [[part]] of it.
+struct PartSpec {
+    std::string where;  // how messages name it: "" for a study of one grid, "part[2]" for the second part
+    ExcitationKind kind = ExcitationKind::free;
+    std::vector<Axis> wall;        // in kWallKeys order, only the keys given (defaults are the grid's)
+    std::vector<Axis> excitation;  // in kExcitationKeys order, only the keys given
+    std::vector<std::string> metrics;  // what this part measures: its own list, else the study's that its kind measures
+    std::vector<EngineSpec> engines;   // the study's engines, each with this part's settings where it gives them
+    NameTemplates names;
+    bool skip_falling_releases = false;  // free: leave out a release from which the analytic model (exact) falls
+
+    const Axis* wall_axis(const std::string& key) const;        // nullptr when not given
+    const Axis* excitation_axis(const std::string& key) const;  // nullptr when not given
+};
 
 struct StudySpec {
     std::string name;
@@ -56,15 +85,13 @@ struct StudySpec {
     std::string path;      // the file as named ("" for a study built in memory)
     std::string base_dir;  // where relative record paths start: the study file's folder
     nlohmann::json as_read;  // the file's content as read (TOML as the JSON it stands for): results.json keeps it
-    std::vector<std::string> metrics;
-    std::vector<EngineSpec> engines;  // in the file's order
-    std::vector<Axis> wall;           // in kWallKeys order, only the keys given (defaults are the grid's)
-    std::vector<Axis> assumptions;    // every key of kAssumptionKeys, defaulted (paper, eq19, bilateral)
-    ExcitationKind kind = ExcitationKind::free;
-    std::vector<Axis> excitation;     // in kExcitationKeys order, only the keys given
+    std::vector<std::string> metrics;  // every part's, the study's own list first
+    std::vector<EngineSpec> engines;   // in the file's order, with the study-wide settings
+    std::vector<Axis> assumptions;     // every key of kAssumptionKeys, defaulted (paper, eq19, bilateral)
+    std::vector<PartSpec> parts;       // one for a study of one grid
 
-    const Axis* wall_axis(const std::string& key) const;        // nullptr when not given
-    const Axis* excitation_axis(const std::string& key) const;  // nullptr when not given
+    // The excitation kind of every part ("free"), or "mixed".
+    std::string kind_text() const;
 };
 
 // Reads and checks a study file (.toml or .json).

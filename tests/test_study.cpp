@@ -20,6 +20,7 @@
 #include "multibody/engine.hpp"
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
+#include "study/suite_file.hpp"
 #include "tests/study_fixtures.hpp"
 
 namespace {
@@ -381,6 +382,113 @@ TEST(StudyRun, AnInterruptedStudyResumesWhereItStopped) {
     std::set<study::TaskKey> done;
     EXPECT_THROW(study::Journal(dir / "cut" / "journal.csv", other.identity(), {}, done), InputError)
         << "a journal of another study is not continued";
+}
+
+}  // namespace
+
+// Suite files -------------------------------------------------------------------------------------------------------
+// (The shipped suites, studies/validation-*.toml, are read by the suite's own tests, tests/test_suite.cpp, and were
+// checked against the suites the code built before they became data: the same walls, records and cases, 46 and 233.)
+
+namespace {
+
+const char* const kSuite = R"(
+name = "mine"
+engines = ["analytic", "ode"]
+[[part]]
+wall_name = "w{thickness}"
+wall_label = "a wall {thickness:.2f} m thick"
+[part.wall]
+height = 4.0
+thickness = [0.3, 0.4]
+hinge = 0.7
+[part.excitation]
+kind = "threshold"
+[[part]]
+wall_name = "t1-01-xi{xi}"
+skip_falling_releases = true
+[part.wall]
+specimen = 1
+xi = 0.5
+[part.excitation]
+kind = "free"
+theta0 = [0.5, 0.8]
+[[part]]
+wall_name = "w{thickness}"
+[part.wall]
+height = 4.0
+thickness = 0.4
+hinge = 0.7
+[part.excitation]
+kind = "free"
+theta0 = 0.5
+[part.settings.ode]
+dt = [1e-3, 5e-4]
+)";
+
+TEST(SuiteFile, AUsersSuiteFollowsTheSuitesIdConventions) {
+    const TempDir dir;
+    const compare::Suite s = study::suite_from_study(Grid(study_of(dir, kSuite)), "mine");
+    std::vector<std::string> ids;
+    for (const compare::SuiteCase& c : s.cases) ids.push_back(c.id);
+    // Table 1 #1 at xi 0.5 falls from 0.8 alpha1 (its unstable equilibrium is lower): that release is left out.
+    EXPECT_EQ(ids, (std::vector<std::string>{"w0.3", "w0.4", "t1-01-xi0.5/r0.5", "w0.4/r0.5/dt0.001/ode",
+                                             "w0.4/r0.5/dt0.0005/ode"}));
+    ASSERT_EQ(s.walls.size(), 3u);
+    EXPECT_EQ(s.walls[0].label, "a wall 0.30 m thick");
+    EXPECT_EQ(s.step_study.at("ode"), (std::vector<double>{1e-3, 5e-4}));
+}
+
+TEST(SuiteFile, WhatASuiteCannotHoldIsNamed) {
+    const TempDir dir;
+    const auto refusal_of = [&](const std::string& toml) {
+        try {
+            (void)study::suite_from_study(Grid(study_of(dir, toml)), "x");
+            return std::string();
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+    };
+    const std::string wall = "[part.wall]\nheight = 4.0\nthickness = 0.4\nhinge = 0.7\n";
+    EXPECT_NE(refusal_of("[[part]]\n" + wall + "[part.excitation]\nkind = \"threshold\"\n").find("names its walls"),
+              std::string::npos);
+    EXPECT_NE(refusal_of("[[part]]\nwall_name = \"w\"\n" + wall +
+                         "[part.excitation]\nkind = \"pulse\"\nshape = \"sine\"\namplitude = 0.3\npulse_period = 1\n")
+                  .find("not kind pulse"),
+              std::string::npos);
+    EXPECT_NE(refusal_of("[[part]]\nwall_name = \"w\"\n[part.wall]\nheight = 4.0\nthickness = [0.3, 0.4]\nhinge = 0.7\n"
+                         "[part.excitation]\nkind = \"threshold\"\n")
+                  .find("given to two different walls"),
+              std::string::npos);
+    EXPECT_NE(refusal_of("[[part]]\nwall_name = \"w\"\n" + wall + "[part.excitation]\nkind = \"threshold\"\n[[part]]\n"
+                         "wall_name = \"w\"\n" + wall + "[part.excitation]\nkind = \"threshold\"\n")
+                  .find("the case id 'w' comes twice"),
+              std::string::npos);
+    EXPECT_NE(refusal_of("[[part]]\nwall_name = \"w{nothing}\"\n" + wall + "[part.excitation]\nkind = \"threshold\"\n")
+                  .find("no value 'nothing'"),
+              std::string::npos);
+    // A study file of one grid and parts at once is refused when read.
+    EXPECT_NE(refusal_of("[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n[excitation]\nkind = \"threshold\"\n[[part]]\n" +
+                         wall + "[part.excitation]\nkind = \"threshold\"\n")
+                  .find("not both"),
+              std::string::npos);
+}
+
+// A study of several parts runs as one: each part's cases only with its own runs, ids after the previous part's.
+TEST(SuiteFile, AStudyOfPartsRunsEachPartsCasesWithItsRuns) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kSuite));
+    EXPECT_EQ(grid.case_ids(), (std::vector<int>{1, 2, 3, 5}));  // case 4, #1 released from 0.8 alpha1, falls
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    std::set<std::string> seen;
+    for (const auto& row : t.rows)
+        seen.insert(row[t.column("case_id")] + " " + row[t.column("engine")] + " " + row[t.column("settings")] + " " +
+                    row[t.column("metric")] + " " + row[t.column("wall_name")]);
+    EXPECT_TRUE(seen.count("1 analytic  threshold_g w0.3"));
+    EXPECT_TRUE(seen.count("3 ode  period t1-01-xi0.5"));
+    EXPECT_TRUE(seen.count("5 ode dt=0.001 period w0.4"));
+    EXPECT_FALSE(seen.count("3 ode dt=0.001 period t1-01-xi0.5")) << "a part's settings are its own";
+    EXPECT_FALSE(seen.count("1 analytic  period w0.3")) << "a threshold part measures no period";
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "compare/suite.hpp"
+#include "study/suite_file.hpp"
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
@@ -51,7 +52,7 @@ using vssw::compare::kRestitutionTarget;
 // A trace holds at most this many points (suite.cpp decimates to 2000 for the plots).
 constexpr std::size_t kMaxTracePoints = 2000;
 
-Suite default_suite() { return make_suite("default", VSSW_DATA_DIR); }
+Suite default_suite() { return vssw::study::read_suite("default", VSSW_DATA_DIR); }
 
 bool has_engine(const std::string& name) {
     const auto names = multibody::available_engines();
@@ -157,7 +158,7 @@ TEST(Suite, DefaultCasesAreUniqueAndEveryWallAndRecordExists) {
 }
 
 TEST(Suite, FullHoldsEveryTable1SpecimenWithDataAtEveryRelease) {
-    const Suite s = make_suite("full", VSSW_DATA_DIR);
+    const Suite s = vssw::study::read_suite("full", VSSW_DATA_DIR);
     std::set<std::string> ids;
     for (const SuiteCase& c : s.cases) EXPECT_TRUE(ids.insert(c.id).second) << "duplicate case " << c.id;
     EXPECT_EQ(s.walls.size(), 2u + 16u * 3u);  // 18 specimens less the two discarded (4, 12), three xi each
@@ -169,7 +170,7 @@ TEST(Suite, FullHoldsEveryTable1SpecimenWithDataAtEveryRelease) {
 
 TEST(Suite, UnknownNameIsAnInputErrorNamingTheValidOnes) {
     try {
-        (void)make_suite("quick", VSSW_DATA_DIR);
+        (void)vssw::study::read_suite("quick", VSSW_DATA_DIR);
         FAIL() << "no error";
     } catch (const InputError& e) {
         const std::string m = e.what();
@@ -464,7 +465,7 @@ namespace {
 // The analytic model's warnings reach the suite's results once per case (from its own run, not once per engine):
 // from 0.8 alpha1 at xi 0.5 the roller must pull (Table 1 #7); from 0.5 alpha1 it pushes throughout.
 TEST(RunSuite, TheAnalyticModelsWarningsAreCarriedOncePerCase) {
-    const Suite full = make_suite("full", VSSW_DATA_DIR);
+    const Suite full = vssw::study::read_suite("full", VSSW_DATA_DIR);
     const SuiteResults r = run_suite(select_cases(full, {"t1-07-xi0.5/r0.8", "t1-07-xi0.5/r0.5"}), {"analytic"});
     ASSERT_EQ(r.model_warnings.size(), 1u);
     EXPECT_EQ(r.model_warnings[0].case_id, "t1-07-xi0.5/r0.8");
