@@ -19,6 +19,7 @@
 #include "analytic/ground_motion.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
+#include "apps/progress.hpp"
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
 #include "study/clock.hpp"
@@ -30,8 +31,6 @@
 namespace vssw::cli {
 namespace {
 
-// The progress line is cut to fit an 80-column terminal.
-constexpr std::size_t kProgressWidth = 79;
 
 struct ReportCommandOptions {
     std::string suite = "default";
@@ -61,29 +60,6 @@ std::vector<std::string> checked_engines(const std::vector<std::string>& asked) 
     return engines;
 }
 
-// A progress line on a terminal, rewritten in place; nothing when err is not a terminal (a log, a test's stream).
-class Progress {
-public:
-    explicit Progress(std::ostream& err) : err_(err), on_(&err == &std::cerr && isatty(STDERR_FILENO) == 1) {}
-    bool on() const { return on_; }
-    void show(int done, int total, const std::string& what) {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        std::string line = fmt::format("[{}/{}] {}", done, total, what);
-        if (line.size() > kProgressWidth) line.resize(kProgressWidth);
-        err_ << '\r' << line << std::string(shown_ > line.size() ? shown_ - line.size() : 0, ' ') << std::flush;
-        shown_ = line.size();
-    }
-    void clear() {
-        if (shown_ > 0) err_ << '\r' << std::string(shown_, ' ') << '\r' << std::flush;
-        shown_ = 0;
-    }
-
-private:
-    std::ostream& err_;
-    bool on_;
-    std::mutex mutex_;
-    std::size_t shown_ = 0;
-};
 
 // --data must be an existing folder: a mistyped path is refused before anything is created.
 void require_data_folder(const std::string& data) {

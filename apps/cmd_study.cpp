@@ -21,6 +21,7 @@
 #include "apps/commands.hpp"
 #include "apps/json.hpp"
 #include "apps/option_values.hpp"
+#include "apps/progress.hpp"
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
 #include "study/grid.hpp"
@@ -39,8 +40,6 @@ namespace {
 // A study of more tasks (cases x runs) than this needs --force: a list typed with one zero too many would otherwise
 // start days of work. 10,000 analytic tasks take about a minute on 2 cores; 10,000 engine tasks, hours.
 constexpr long kMaxTasksWithoutForce = 10000;
-// The progress line is cut to fit an 80-column terminal.
-constexpr std::size_t kProgressWidth = 79;
 
 struct StudyOptions {
     std::string file;
@@ -75,33 +74,6 @@ long task_count(const study::Grid& grid, const study::Shard& shard) {
     return n;
 }
 
-// A progress line on a terminal, rewritten in place at most every tenth of a second; nothing otherwise.
-class Progress {
-public:
-    explicit Progress(std::ostream& err) : err_(err), on_(&err == &std::cerr && isatty(STDERR_FILENO) == 1) {}
-    bool on() const { return on_; }
-    void show(long done, long total, const std::string& what) {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        const auto now = std::chrono::steady_clock::now();
-        if (done < total && now - last_ < std::chrono::milliseconds(100)) return;
-        last_ = now;
-        std::string line = fmt::format("[{}/{}] {}", done, total, what);
-        if (line.size() > kProgressWidth) line.resize(kProgressWidth);
-        err_ << '\r' << line << std::string(shown_ > line.size() ? shown_ - line.size() : 0, ' ') << std::flush;
-        shown_ = line.size();
-    }
-    void clear() {
-        if (shown_ > 0) err_ << '\r' << std::string(shown_, ' ') << '\r' << std::flush;
-        shown_ = 0;
-    }
-
-private:
-    std::ostream& err_;
-    bool on_;
-    std::mutex mutex_;
-    std::size_t shown_ = 0;
-    std::chrono::steady_clock::time_point last_{};
-};
 
 void print_outputs(std::ostream& out, const std::string& dir, const study::OutputFiles& files) {
     out << "  " << dir << "/results.csv\n";
