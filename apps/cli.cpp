@@ -14,15 +14,12 @@
 #include "apps/option_values.hpp"
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
+#include "study/text.hpp"
 
 namespace vssw::cli {
 namespace {
 
-// Error messages are one line, whatever the text that raised them holds.
-std::string one_line(std::string message) {
-    std::replace(message.begin(), message.end(), '\n', ' ');
-    return message;
-}
+using study::one_line;  // error messages are one line, whatever the text that raised them holds
 
 int fail(std::ostream& err, const char* kind, const std::string& message, int code) {
     err << "vssw: " << kind << ": " << one_line(message) << '\n';

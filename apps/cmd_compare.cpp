@@ -26,11 +26,7 @@
 namespace vssw::cli {
 namespace {
 
-// Smallest release, in units of alpha, that compare measures: the threshold's lift criterion (ThresholdOptions::
-// lift_angle). Below it an engine's elastic rotation on its contacts (~1e-6 rad) and its step are no longer small
-// against the motion (at 1e-4 alpha the Fig. 6 wall's whole period is 18 ms), and at 1e-6 alpha the analytic model
-// comes to rest without an impact to measure.
-constexpr double kMinRelease = 0.01;
+using compare::kMinRelease;  // compare/experiments.hpp says why 0.01
 
 // The reference of every comparison with an engine is the exact kinematics (README): the default here, unlike the
 // other commands'.

@@ -65,13 +65,24 @@ study::Shard parse_shard(const std::string& text) {
     return {static_cast<int>(k), static_cast<int>(n)};
 }
 
-long task_count(const study::Grid& grid, const study::Shard& shard) {
-    long n = 0;
-    for (const int id : grid.shard_case_ids(shard.k, shard.n)) {
-        const study::CaseSpec c = grid.make_case(id);
-        for (const study::RunSpec& r : grid.runs()) n += grid.run_applies(r, c) ? 1 : 0;
+// The study's tasks at most (cases x runs of every part, before repeats are left out), from the file alone: so that a
+// grid too large is refused before its cases are built.
+double tasks_at_most(const study::StudySpec& spec) {
+    double total = 0.0;
+    for (const study::PartSpec& part : spec.parts) {
+        double cases = 1.0, runs = 0.0;
+        for (const study::Axis& a : part.wall) cases *= static_cast<double>(a.levels.size());
+        for (const study::Axis& a : part.excitation) cases *= static_cast<double>(a.levels.size());
+        for (const study::EngineSpec& e : part.engines) {
+            double r = 1.0;
+            for (const study::Axis& a : e.settings) r *= static_cast<double>(a.levels.size());
+            if (e.name == "analytic")
+                for (const study::Axis& a : spec.assumptions) r *= static_cast<double>(a.levels.size());
+            runs += r;
+        }
+        total += cases * runs;
     }
-    return n;
+    return total;
 }
 
 
@@ -123,14 +134,16 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
         run.shard = parse_shard(o.shard_text);
         run.resume = o.resume;
         run.commit = VSSW_GIT_COMMIT;
-        grid.emplace(study::read_study_file(o.file));
-        const long tasks = task_count(*grid, run.shard);
-        if (tasks == 0) throw InputError(fmt::format("study file {}: the grid has no case to run", o.file));
+        study::StudySpec spec = study::read_study_file(o.file);
+        const double tasks = tasks_at_most(spec) / run.shard.n;
         if (tasks > kMaxTasksWithoutForce && !o.force)
-            throw InputError(fmt::format("study file {}: {} tasks (cases x runs{}), more than {}: add --force to run "
-                                         "them all",
+            throw InputError(fmt::format("study file {}: {:.0f} tasks (cases x runs{}), more than {}: add --force to "
+                                         "run them all",
                                          o.file, tasks, run.shard.n > 1 ? " in this shard" : "",
                                          kMaxTasksWithoutForce));
+        grid.emplace(spec);
+        // A shard may be empty (more shards than cases): it writes empty results, which merge as such.
+        if (grid->case_ids().empty()) throw InputError(fmt::format("study file {}: the grid has no case to run", o.file));
         if (leader) study::prepare_study_dir(*grid, o.out, run);
     } catch (const InputError& e) {
         refusal = e.what();

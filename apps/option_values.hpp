@@ -1,6 +1,8 @@
 #pragma once
 // Checks of option values that CLI11 would report without naming the value as typed, or not at all.
 #include <string>
+
+#include "multibody/engine.hpp"
 #include <vector>
 
 namespace CLI {
@@ -12,10 +14,8 @@ namespace vssw::cli {
 // --threads of report and check: 0 means the available cores. 256 is far above the cores of any machine this runs
 // on; each thread runs one engine simulation at a time and holds its trajectory, so the bound also bounds memory.
 constexpr int kMaxThreads = 256;
-// --iterations of compare: Bullet's sequential-impulse iterations per step (default 20; 100 changes nothing measured,
-// README "Bullet"), ODE's quickstep iterations (default 20), unused by Simbody and the analytic model. The cost grows
-// linearly with them; 1000, 50 times the default, still ends a compare in minutes rather than days.
-constexpr int kMaxIterations = 1000;
+// --iterations of compare (multibody/engine.hpp says why 1000).
+using multibody::kMaxIterations;
 
 // Whole-number option: `text` must be an integer from lo to hi, else InputError
 // "<name> must be an integer from <lo> to <hi><meaning>, got <text>" (meaning: e.g. " (0: the available cores)").

@@ -71,6 +71,12 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
 
 // Free vibration -----------------------------------------------------------------------------------------------
 
+// Smallest release, in units of alpha, that an engine's free vibration is measured from (vssw compare, studies): the
+// threshold's lift criterion (ThresholdOptions::lift_angle). Below it an engine's elastic rotation on its contacts
+// (~1e-6 rad) and its step are no longer small against the motion (at 1e-4 alpha the Fig. 6 wall's whole period is
+// 18 ms), and at 1e-6 alpha the analytic model comes to rest without an impact to measure.
+constexpr double kMinRelease = 0.01;
+
 struct FreeVibrationOptions {
     double r = 0.5;          // release from rest at theta1,0 = r alpha
     double t_end = 0.0;      // [s]; 0: long enough for `impacts` impacts of the analytic model (see duration below)

@@ -46,6 +46,12 @@ struct Excitation {
     double stop_angle = 0.0;
 };
 
+// Solver iterations a caller may ask of an engine (`vssw compare --iterations`, a study's settings): Bullet's
+// sequential-impulse iterations per step (default 20; 100 changes nothing measured, README "Bullet"), ODE's quickstep
+// iterations (default 20), unused by Simbody and the analytic model. The cost grows linearly with them; 1000, 50 times
+// the default, still ends a compare in minutes rather than days.
+constexpr int kMaxIterations = 1000;
+
 // Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (README).
 struct EngineSettings {
     double dt = 1e-4;        // engine step [s]

@@ -19,4 +19,6 @@ command -v parallel >/dev/null || { echo "study_parallel.sh: GNU parallel is not
 mkdir -p "$out/shards"
 
 parallel --will-cite --halt now,fail=1 "$@" "$vssw" study "$study" --out "$out/shards/{}-of-$n" --shard "{}/$n" --threads 1 '>' "$out/shards/{}-of-$n.log" ::: $(seq 1 "$n")
-"$vssw" study merge $(for k in $(seq 1 "$n"); do echo "$out/shards/$k-of-$n"; done) --out "$out"
+shards=()
+for k in $(seq 1 "$n"); do shards+=("$out/shards/$k-of-$n"); done
+"$vssw" study merge "${shards[@]}" --out "$out"

@@ -29,10 +29,12 @@ case "$mode" in
     resume=()
     [ -f "$out/shards/$k-of-$n/journal.csv" ] && resume=(--resume)  # a requeued task finishes what it started
     exec "$vssw" study "$study" --out "$out/shards/$k-of-$n" --shard "$k/$n" --threads "${SLURM_CPUS_PER_TASK:-1}" \
-      "${resume[@]}"
+      ${resume[@]+"${resume[@]}"}
     ;;
   merge)
-    exec "$vssw" study merge $(for k in $(seq 1 "$n"); do echo "$out/shards/$k-of-$n"; done) --out "$out"
+    shards=()
+    for k in $(seq 1 "$n"); do shards+=("$out/shards/$k-of-$n"); done
+    exec "$vssw" study merge "${shards[@]}" --out "$out"
     ;;
   submit)
     command -v sbatch >/dev/null || { echo "study_slurm.sh: sbatch not found (not a Slurm login node?)" >&2; exit 2; }

@@ -3,6 +3,8 @@
 #include <ostream>
 #include <string>
 
+#include "study/text.hpp"
+
 namespace vssw::study {
 namespace {
 
@@ -14,13 +16,6 @@ std::string cell(const std::string& text) {
         else if (c == '|') s += "\\|";
         else s += c;
     }
-    return s;
-}
-
-std::string one_line(const std::string& text) {
-    std::string s = text;
-    for (char& c : s)
-        if (c == '\n' || c == '\r') c = ' ';
     return s;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <limits>
 #include <memory>
 
@@ -78,6 +80,16 @@ std::string settings_text(const std::vector<Axis>& axes, const std::vector<Level
     return text;
 }
 
+// The key of a record read with given units ("" for the file's own): one file may be read in two parts' units.
+std::string record_key(const std::string& file, const std::string& units) { return file + "\n" + units; }
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
 // Whether the analytic model (exact kinematics) released from rest at theta0 alpha falls rather than rocks: a heavy
 // overburden with a high hinge puts the unstable equilibrium below 0.8 alpha1 (Table 1 #1, #10, #11 at xi 0.5), and
 // a wall that falls has no period or restitution to compare (a suite's free cases leave such releases out).
@@ -91,7 +103,7 @@ bool falls_from(const multibody::WallScene& scene, double theta0) {
 }  // namespace
 
 Grid::Grid(const StudySpec& spec) : spec_(spec) {
-    identity_ = fnv1a(spec.as_read.dump());
+    std::string identity_text = spec.as_read.dump();
     const auto where = [&](const PartSpec& part, const std::string& key) {
         return fmt::format("{} {}: {}{}", kWhat, spec_.path, part.where.empty() ? "" : part.where + ".", key);
     };
@@ -102,6 +114,7 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             } catch (const InputError& e) {
                 throw InputError(fmt::format("{}: {}", where(part, "wall.specimen"), e.what()));
             }
+            identity_text += "\n" + read_bytes(default_table1_path());
         }
 
     // Records: read once, up front, so that a missing or malformed file is refused before anything runs.
@@ -113,13 +126,20 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             if (u->varied()) throw InputError(where(part, "excitation.units: one unit for the part's records"));
             units = parse_units(as_word(u->levels.front()));
         }
+        const std::string units_text = units ? as_word(part.excitation_axis("units")->levels.front()) : "";
         for (const Level& f : files->levels) {
-            if (records_.count(as_word(f))) continue;
+            const std::string key = record_key(as_word(f), units_text);
+            if (records_.count(key)) continue;
             try {
-                records_.emplace(as_word(f), read_record(record_path(as_word(f)), units ? &*units : nullptr));
+                GroundMotion r = read_record(record_path(as_word(f)), units ? &*units : nullptr);
+                // A record that is zero everywhere cannot be scaled to a PGA, nor shake anything.
+                if (!(r.pga() > 0.0)) throw InputError(fmt::format("'{}' is zero everywhere", as_word(f)));
+                records_.emplace(key, std::move(r));
             } catch (const InputError& e) {
                 throw InputError(fmt::format("{}: {}", where(part, "excitation.file"), e.what()));
             }
+            // The record's bytes go into the study's identity: shards and a resume must have read the same record.
+            identity_text += "\n" + read_bytes(record_path(as_word(f)));
         }
     }
 
@@ -185,6 +205,8 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
     if (runs_.empty())
         throw InputError(fmt::format("{} {}: no run left: {}", kWhat, spec_.path, fmt::join(skipped_runs_, "; ")));
 
+    identity_ = fnv1a(identity_text);
+
     // Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
     // repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
     product_size_ = 0;
@@ -193,20 +215,36 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
         for (const Axis& a : part.wall) g.axes.push_back(&a);
         for (const Axis& a : part.excitation) g.axes.push_back(&a);
         for (const Axis* a : g.axes) g.size *= a->levels.size();
+        // Case ids are ints; a grid this large is a typo, not a study (vssw study's --force bound is far below).
+        if (g.size > static_cast<std::size_t>(std::numeric_limits<int>::max()) - product_size_)
+            throw InputError(fmt::format("{} {}: a grid of more than {} cases", kWhat, spec_.path,
+                                         std::numeric_limits<int>::max()));
         g.first = product_size_ + 1;
         product_size_ += g.size;
         parts_.push_back(std::move(g));
     }
     for (std::size_t pi = 0; pi < parts_.size(); ++pi) {
         const PartSpec& part = spec_.parts[pi];
-        const Axis* hinge = part.wall_axis("hinge");
-        std::size_t hinge_axis = 0;
-        for (std::size_t i = 0; i < part.wall.size(); ++i)
-            if (&part.wall[i] == hinge) hinge_axis = i;
+        const auto axis_index = [&](const char* key) -> std::optional<std::size_t> {
+            for (std::size_t i = 0; i < parts_[pi].axes.size(); ++i)
+                if (parts_[pi].axes[i]->key == key) return i;
+            return std::nullopt;
+        };
+        const std::optional<std::size_t> hinge = axis_index("hinge"), duration = axis_index("duration");
+        // A parapet has neither kinematics nor roller: its analytic run is the part's first analytic run built.
+        for (const RunSpec& r : runs_)
+            if (r.part == pi && r.engine == "analytic") {
+                parapet_run_.emplace(pi, std::make_pair(r.assumptions[0], r.assumptions[2]));
+                break;
+            }
         for (std::size_t p = 0; p < parts_[pi].size; ++p) {
             const CaseSpec c = make_case(static_cast<int>(parts_[pi].first + p));
-            if (c.model == "parapet" && hinge && digits(p, parts_[pi].axes)[hinge_axis] != 0) continue;
+            const std::vector<std::size_t> d = digits(p, parts_[pi].axes);
+            if (c.model == "parapet" && hinge && d[*hinge] != 0) continue;
+            if (duration && c.shape != "harmonic" && d[*duration] != 0) continue;  // only a harmonic lasts `duration`
             if (part.skip_falling_releases && falls_from(c.scene, c.theta0)) continue;
+            // Names are rendered now, so that a template that cannot format fails before anything runs.
+            for (const auto& name : {wall_name(c), wall_label(c), record_name(c), record_label(c)}) (void)name;
             case_ids_.push_back(c.id);
         }
     }
@@ -323,7 +361,10 @@ CaseSpec Grid::make_case(int id) const {
     }
     if (has("file")) {
         c.file = as_word(level["file"]);
-        const GroundMotion& r = record(c.file);
+        c.record_key = record_key(c.file, part.excitation_axis("units")
+                                              ? as_word(part.excitation_axis("units")->levels.front())
+                                              : "");
+        const GroundMotion& r = record(c);
         if (has("pga")) c.scale = num("pga", 0.0) * kStandardGravity / r.pga();
         else c.scale = num("scale", 1.0);
         c.pga_g = c.scale * r.pga() / kStandardGravity;
@@ -341,14 +382,14 @@ CaseSpec Grid::make_case(int id) const {
 bool Grid::run_applies(const RunSpec& run, const CaseSpec& c) const {
     if (run.part != c.part) return false;
     if (run.engine != "analytic" || c.model != "parapet") return true;
-    // A parapet has neither a roller nor two kinematics: the first levels stand for all.
-    return run.assumptions[0] == spec_.assumptions[0].levels.front() &&
-           run.assumptions[2] == spec_.assumptions[2].levels.front();
+    // A parapet has neither a roller nor two kinematics: one analytic run per impact law stands for all.
+    const auto it = parapet_run_.find(run.part);
+    return it != parapet_run_.end() && run.assumptions[0] == it->second.first && run.assumptions[2] == it->second.second;
 }
 
-const GroundMotion& Grid::record(const std::string& file) const {
-    const auto it = records_.find(file);
-    if (it == records_.end()) throw InputError(fmt::format("study {}: no record '{}'", spec_.name, file));
+const GroundMotion& Grid::record(const CaseSpec& c) const {
+    const auto it = records_.find(c.record_key);
+    if (it == records_.end()) throw InputError(fmt::format("study {}: no record '{}'", spec_.name, c.file));
     return it->second;
 }
 

@@ -51,6 +51,7 @@ struct CaseSpec {
     double alpha = 0.0, R = 0.0;    // the whole wall's slenderness atan(b/h) and half-diagonal (Fig. 10's alpha, R)
     double theta0 = 0.0;            // release, a fraction of alpha (free, closed-form; 0 when not given)
     std::string file;               // record or scale-to-collapse: the record as the file names it
+    std::string record_key;         // the record as read (the file and its units): Grid::record
     double scale = 1.0;             // record: the factor applied to it
     double pga_g = 0.0;             // record: its peak ground acceleration after scaling [g]
     std::string shape;              // pulse
@@ -61,16 +62,14 @@ struct CaseSpec {
     std::size_t wall_index = 0;
 };
 
-// A results.csv column of the case and run parameters, named as in the study file.
-struct Column {
-    std::string name;
-};
-
 class Grid {
 public:
     // Builds every case's wall and every run's settings, checking them (InputError naming the file, the case's
     // levels and the bad value), and reads every record once (a missing or malformed one: InputError).
     explicit Grid(const StudySpec& spec);
+    // Not copied: its parts' axes point into its own study.
+    Grid(const Grid&) = delete;
+    Grid& operator=(const Grid&) = delete;
 
     const StudySpec& spec() const { return spec_; }
     std::size_t product_size() const { return product_size_; }  // every part's product
@@ -79,8 +78,8 @@ public:
     const std::vector<RunSpec>& runs() const { return runs_; }
     bool run_applies(const RunSpec& run, const CaseSpec& c) const;
     const std::vector<std::string>& skipped_runs() const { return skipped_runs_; }  // why, one line each
-    // The record named in the file (read once, unscaled, in m/s^2).
-    const GroundMotion& record(const std::string& file) const;
+    // The case's record (read once, unscaled, in m/s^2).
+    const GroundMotion& record(const CaseSpec& c) const;
 
     // The parameter columns (between `engine` and `metric` in results.csv) and their values for a case and a run.
     const std::vector<std::string>& columns() const { return columns_; }
@@ -120,6 +119,8 @@ private:
     std::vector<std::string> skipped_runs_;
     std::map<std::string, GroundMotion> records_;
     std::vector<Specimen> table1_;  // read when the study names specimens
+    std::map<std::size_t, std::pair<Level, Level>> parapet_run_;  // per part: the kinematics and roller levels a
+                                                                  // parapet's analytic runs use
     std::vector<std::string> columns_;
     std::string identity_;
 };

@@ -38,6 +38,7 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
         throw InputError(fmt::format("journal {} belongs to another study or shard ({}; this is {})", path.string(),
                                      first, header(*identity, *shard)));
     std::vector<ResultRow> rows, pending;
+    std::set<TaskKey> seen;
     std::streamoff whole = in.tellg();
     std::vector<std::string> f;
     for (;;) {
@@ -52,7 +53,8 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
             for (ResultRow& r : pending)
                 if (r.case_id != key.first || r.run != key.second)
                     throw InputError(fmt::format("journal {}: rows of another task before '{}'", path.string(), line));
-            rows.insert(rows.end(), std::make_move_iterator(pending.begin()), std::make_move_iterator(pending.end()));
+            if (seen.insert(key).second)
+                rows.insert(rows.end(), std::make_move_iterator(pending.begin()), std::make_move_iterator(pending.end()));
             pending.clear();
             if (done) done->insert(key);
             whole = in.tellg();
@@ -100,10 +102,6 @@ Journal::Journal(std::filesystem::path path, const std::string& identity, Shard 
     if (!out_) throw InputError(fmt::format("cannot write the study journal '{}'", path_.string()));
 }
 
-void Journal::append(int case_id, std::size_t run, const std::vector<Measurement>& rows) {
-    append_text(journal_text(case_id, run, rows));
-}
-
 void Journal::append_text(const std::string& text) {
     const std::lock_guard<std::mutex> lock(mutex_);
     out_ << text << std::flush;
@@ -112,6 +110,10 @@ void Journal::append_text(const std::string& text) {
 
 std::vector<ResultRow> read_journal(const std::filesystem::path& path) {
     return read_whole_tasks(path, nullptr, nullptr, nullptr, nullptr);
+}
+
+void check_journal(const std::filesystem::path& path, const std::string& identity, Shard shard) {
+    (void)read_whole_tasks(path, &identity, &shard, nullptr, nullptr);
 }
 
 }  // namespace vssw::study

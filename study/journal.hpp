@@ -44,12 +44,10 @@ public:
     // holds whole and cuts off a task left half-written.
     Journal(std::filesystem::path path, const std::string& identity, Shard shard, std::set<TaskKey>& done);
 
-    // Appends one task's rows and its closing line, and flushes (thread-safe).
-    void append(int case_id, std::size_t run, const std::vector<Measurement>& rows);
-    // Appends rows already formatted as journal text (from another process), whole tasks with their closing lines.
+    // Appends whole tasks' rows already formatted as journal text (journal_text; from this process or another), and
+    // flushes (thread-safe).
     void append_text(const std::string& text);
     void close() { out_.close(); }
-    const std::filesystem::path& path() const { return path_; }
 
 private:
     std::filesystem::path path_;
@@ -59,7 +57,9 @@ private:
 
 // One task's rows as journal text (what a worker process sends to the one that writes).
 std::string journal_text(int case_id, std::size_t run, const std::vector<Measurement>& rows);
-// The whole tasks' rows of a journal, in file order.
+// The whole tasks' rows of a journal, in file order; a task written twice (two runs on one folder) counts once.
 std::vector<ResultRow> read_journal(const std::filesystem::path& path);
+// InputError unless the journal at `path` is this study's and shard's and reads (what --resume will continue).
+void check_journal(const std::filesystem::path& path, const std::string& identity, Shard shard);
 
 }  // namespace vssw::study

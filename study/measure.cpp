@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "study/text.hpp"
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
@@ -40,11 +41,6 @@ constexpr double kDefaultCollapseTolerance = 1e-3;  // relative width of the fin
 // stand up to it do not fall to that record at any credible intensity; the study file's max_pga raises it.
 constexpr double kDefaultMaxPgaOverThreshold = 20.0;
 
-std::string one_line(std::string text) {
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    std::replace(text.begin(), text.end(), '\r', ' ');
-    return text;
-}
 std::string failed(const std::string& reason) { return "failed: " + one_line(reason); }
 
 // The impact ratio of an analytic run's law on this wall (Fig. 8 follows the run's impact assumption).
@@ -111,6 +107,7 @@ ClosedForm closed_form(const std::string& metric, const CaseSpec& c, const RunSp
     }
     if (metric == "period_ratio_to_parapet") {
         if (auto no = vssw_only()) return *no;
+        if (!(c.theta0 < 1.0)) return {kNaN, fmt::format("theta0 {} is not below A and alpha (Eq. 22 and Housner's period)", c.theta0)};
         const ParapetGeometry pw = same_size_parapet(*w);
         return {eq22_period(*w, c.theta0 * A) / housner_period(pw.alpha, pw.R, pw.g, c.theta0 * pw.alpha), ""};
     }
@@ -132,7 +129,6 @@ struct Response {
     bool overturned = false;
     std::optional<double> t_overturn;
     std::optional<double> energy_error;
-    bool supports_computed = false;
     std::optional<double> tension_at;
 };
 
@@ -144,7 +140,6 @@ Response response_of(const Trajectory& t, const multibody::WallScene& scene) {
         r.peak_time = t.located->t_max_abs_theta1;
         r.t_overturn = t.located->t_overturn;
         r.energy_error = t.located->energy_balance_error;
-        r.supports_computed = t.located->supports_computed;
         r.tension_at = t.located->roller_tension_at;
         return r;
     }
@@ -174,7 +169,7 @@ GroundMotion case_motion(const Grid& grid, const CaseSpec& c, double scale) {
             return harmonic(a, c.pulse_period, c.duration);
         }
         case ExcitationKind::record:
-        case ExcitationKind::scale_to_collapse: return grid.record(c.file).scaled(scale);
+        case ExcitationKind::scale_to_collapse: return grid.record(c).scaled(scale);
         default: return GroundMotion::none();
     }
 }
@@ -197,7 +192,7 @@ struct Collapse {
     std::string why_not;
 };
 Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine) {
-    const GroundMotion& record = grid.record(c.file);
+    const GroundMotion& record = grid.record(c);
     const double pga = record.pga();  // [m/s^2] at scale 1
     const double threshold = multibody::analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0);
     const double max_pga = c.max_pga_g > 0.0 ? c.max_pga_g * kStandardGravity : kDefaultMaxPgaOverThreshold * threshold;
@@ -270,6 +265,11 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     std::string response_failure;
     std::optional<Collapse> collapse;
 
+    const auto run_free = [&] {
+        compare::FreeVibrationOptions o;
+        o.r = c.theta0;
+        free = compare::run_free_vibration(engine, run.settings, c.scene, o);
+    };
     const auto guarded = [](auto&& body, std::string& failure) {
         try {
             body();
@@ -287,7 +287,12 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
         if (std::find(part.metrics.begin(), part.metrics.end(), metric) == part.metrics.end()) continue;
         switch (info.source) {
             case MetricSource::closed_form: {
-                const ClosedForm f = closed_form(metric, c, run);
+                ClosedForm f;
+                try {
+                    f = closed_form(metric, c, run);
+                } catch (const InputError& e) {  // a formula outside its range is a row with the reason, not the end
+                    f = {kNaN, e.what()};
+                }
                 add(m, f.value, f.why_not.empty() ? kOk : failed(f.why_not));
                 break;
             }
@@ -302,14 +307,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 break;
             }
             case MetricSource::free: {
-                if (!free && free_failure.empty())
-                    guarded(
-                        [&] {
-                            compare::FreeVibrationOptions o;
-                            o.r = c.theta0;
-                            free = compare::run_free_vibration(engine, run.settings, c.scene, o);
-                        },
-                        free_failure);
+                if (!free && free_failure.empty()) guarded(run_free, free_failure);
                 if (!free) {
                     add(m, kNaN, failed(free_failure));
                 } else if (metric == "period") {
@@ -329,11 +327,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                     guarded(
                         [&] {
                             if (part.kind == ExcitationKind::free) {
-                                if (!free && free_failure.empty()) {
-                                    compare::FreeVibrationOptions o;
-                                    o.r = c.theta0;
-                                    free = compare::run_free_vibration(engine, run.settings, c.scene, o);
-                                }
+                                if (!free && free_failure.empty()) run_free();
                                 if (!free) throw EngineFailure(free_failure);
                                 response = response_of(free->trajectory, c.scene);
                             } else {
@@ -364,7 +358,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 }
                 const double scale = collapse->scale;
                 const double value =
-                    metric == "collapse_scale" ? scale : scale * grid.record(c.file).pga() / kStandardGravity;
+                    metric == "collapse_scale" ? scale : scale * grid.record(c).pga() / kStandardGravity;
                 add(m, value, collapse->why_not.empty() ? kOk : failed(collapse->why_not));
                 break;
             }
@@ -393,9 +387,9 @@ double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
             case MetricSource::response:
                 seconds += part.kind == ExcitationKind::free ? 5.0
                            : part.kind == ExcitationKind::pulse ? 3.0 * c.pulse_period + c.duration + kResponseTail
-                                                                : grid.record(c.file).duration() + kResponseTail;
+                                                                : grid.record(c).duration() + kResponseTail;
                 break;
-            case MetricSource::collapse: seconds += 35.0 * (grid.record(c.file).duration() + kResponseTail); break;
+            case MetricSource::collapse: seconds += 35.0 * (grid.record(c).duration() + kResponseTail); break;
         }
     }
     double cost = seconds * compare::cost_per_simulated_second(run.engine);

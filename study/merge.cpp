@@ -71,6 +71,10 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
             throw InputError(fmt::format("study merge: '{}' is shard {}/{}, '{}' of a split into {}", d.string(),
                                          m["shard"]["k"].get<int>(), m["shard"]["n"].get<int>(),
                                          dirs.front().string(), first["shard"]["n"].get<int>()));
+        if (m.at("engines") != first.at("engines"))
+            throw InputError(fmt::format("study merge: '{}' was run by other engine versions than '{}' ({} against {})",
+                                         d.string(), dirs.front().string(), m["engines"].dump(),
+                                         first["engines"].dump()));
         if (!ks.insert(m["shard"]["k"].get<int>()).second)
             throw InputError(fmt::format("study merge: shard {} is given twice ('{}')", m["shard"]["k"].get<int>(),
                                          d.string()));
@@ -82,6 +86,13 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
     if (!missing.empty())
         throw InputError(fmt::format("study merge: shard{} {} of {} missing", missing.size() == 1 ? "" : "s",
                                      fmt::join(missing, ", "), n));
+
+    long shard_cases = 0;
+    for (const Json& m : manifests) shard_cases += m["cases"]["run"].get<long>();
+    const Json& cases_of = manifests.front()["cases"];
+    if (cases_of.contains("total") && shard_cases != cases_of["total"].get<long>())
+        throw InputError(fmt::format("study merge: the shards hold {} cases, the study {}", shard_cases,
+                                     cases_of["total"].get<long>()));
 
     std::error_code ec;
     fs::create_directories(out, ec);

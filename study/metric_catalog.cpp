@@ -38,7 +38,7 @@ const std::vector<MetricInfo>& metric_catalog() {
         {"period_ratio_to_parapet", "", S::closed_form, true,
          "Eq. (22) at theta0 A over Housner's period at theta0 alpha of the same-size parapet (Fig. 7b; N = 0)"},
         {"peak_ratio_half_cycle", "", S::closed_form, true,
-         "ratio of two peaks half a cycle apart from theta0, Eq. (20) with Eq. (19) (Fig. 8; N = 0)"},
+         "ratio of two peaks half a cycle apart from theta0, Eq. (20) with the run's impact law (Fig. 8; N = 0)"},
     };
     return catalog;
 }

@@ -30,6 +30,8 @@ bool mpi_built() { return false; }
 MpiSession::MpiSession() = default;
 MpiSession::~MpiSession() = default;
 bool MpiSession::all_ok(bool ok) const { return ok; }
+void MpiSession::share_done(std::set<std::pair<int, std::size_t>>&, bool&) const {}
+void MpiSession::abort(const std::string& why) const { throw std::logic_error("MpiSession::abort without MPI: " + why); }
 void run_tasks_mpi(const MpiSession&, const std::vector<compare::PoolTask>&, const std::function<std::string(std::size_t)>&,
                    const std::function<void(const std::string&)>&) {
     throw std::logic_error("run_tasks_mpi: this build has no MPI");
@@ -104,6 +106,20 @@ void leader(const MpiSession& session, const std::vector<compare::PoolTask>& tas
         }
     });
 
+    // This thread's failure (the journal cannot be written) must not leave `local` joinable: stop handing out, wait
+    // for it, then rethrow (run_tasks_mpi ends every process).
+    struct JoinOnExit {
+        std::thread& t;
+        std::mutex& m;
+        std::deque<std::size_t>& q;
+        ~JoinOnExit() {
+            {
+                const std::lock_guard<std::mutex> lock(m);
+                q.clear();
+            }
+            if (t.joinable()) t.join();
+        }
+    } join_on_exit{local, mutex, queue};
     int stops_left = (session.size() - 1) * kRequestsInFlight;
     while (stops_left > 0) {
         int flag = 0;
@@ -146,21 +162,42 @@ bool MpiSession::all_ok(bool ok) const {
     return all == 1;
 }
 
+void MpiSession::share_done(std::set<std::pair<int, std::size_t>>& done, bool& finished) const {
+    // As a flat list: finished, then case id and run per task.
+    std::vector<long> flat;
+    if (rank_ == 0) {
+        flat.push_back(finished ? 1 : 0);
+        for (const auto& [id, run] : done) {
+            flat.push_back(id);
+            flat.push_back(static_cast<long>(run));
+        }
+    }
+    long n = static_cast<long>(flat.size());
+    MPI_Bcast(&n, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+    flat.resize(static_cast<std::size_t>(n));
+    MPI_Bcast(flat.data(), static_cast<int>(n), MPI_LONG, 0, MPI_COMM_WORLD);
+    if (rank_ == 0) return;
+    finished = flat.at(0) == 1;
+    for (std::size_t i = 1; i + 1 < flat.size(); i += 2)
+        done.insert({static_cast<int>(flat[i]), static_cast<std::size_t>(flat[i + 1])});
+}
+
+void MpiSession::abort(const std::string& why) const {
+    std::fprintf(stderr, "vssw: error on MPI process %d: %s\n", rank_, why.c_str());
+    MPI_Abort(MPI_COMM_WORLD, 3);
+    std::abort();  // MPI_Abort does not return
+}
+
 void run_tasks_mpi(const MpiSession& session, const std::vector<compare::PoolTask>& tasks,
                    const std::function<std::string(std::size_t)>& run,
                    const std::function<void(const std::string&)>& sink) {
     try {
         if (session.rank() == 0) leader(session, tasks, run, sink);
         else worker(run);
+    } catch (const std::exception& e) {
+        session.abort(e.what());  // the others would wait for this process's messages for ever
     } catch (...) {
-        // A process that cannot go on would leave the others waiting for its messages: end them all.
-        try {
-            throw;
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "vssw: error on MPI process %d: %s\n", session.rank(), e.what());
-        } catch (...) {
-        }
-        MPI_Abort(MPI_COMM_WORLD, 3);
+        session.abort("an unknown failure");
     }
 }
 

@@ -6,6 +6,8 @@
 // per core).
 #include <cstddef>
 #include <functional>
+#include <set>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,12 @@ public:
     // Whether every process says ok (a collective: every process must call it). Lets all processes stop together
     // when any of them found bad input, instead of waiting on each other for ever.
     bool all_ok(bool ok) const;
+    // Rank 0's finished tasks (a resumed journal) and whether the study is finished already, given to every process
+    // (a collective), so that all hold the same list of tasks.
+    void share_done(std::set<std::pair<int, std::size_t>>& done, bool& finished) const;
+    // Ends every process (exit code 3) after printing why: a process that cannot go on must not leave the others
+    // waiting for its messages.
+    [[noreturn]] void abort(const std::string& why) const;
 
 private:
     int rank_ = 0, size_ = 1;

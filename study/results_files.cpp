@@ -88,7 +88,7 @@ Json manifest_json(const Grid& grid, const StudyMeta& meta) {
     j["varied"] = grid.varied_parameters();
     j["metrics"] = metrics;
     // This shard's cases: `vssw study merge` sums them over the shards.
-    j["cases"] = {{"in_grid", grid.product_size()}, {"run", grid.shard_case_ids(meta.shard.k, meta.shard.n).size()}};
+    j["cases"] = {{"in_grid", grid.product_size()}, {"total", grid.case_ids().size()}, {"run", grid.shard_case_ids(meta.shard.k, meta.shard.n).size()}};
     j["runs"] = runs;
     j["skipped_runs"] = grid.skipped_runs();
     j["tasks"] = {{"run", meta.tasks_run}, {"resumed", meta.tasks_resumed}};
@@ -102,10 +102,6 @@ std::size_t ResultsTable::column(const std::string& name) const {
     const auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end()) throw InputError(fmt::format("results.csv has no column '{}'", name));
     return static_cast<std::size_t>(it - header.begin());
-}
-
-bool ResultsTable::has(const std::string& name) const {
-    return std::find(header.begin(), header.end(), name) != header.end();
 }
 
 ResultsTable read_results_csv(const std::filesystem::path& path) {
@@ -146,10 +142,13 @@ void write_results_json(std::ostream& out, const Json& manifest, const std::file
         Json row;
         for (std::size_t i = 0; i < header.size(); ++i) {
             const std::string& v = fields[i];
+            char* end = nullptr;
+            const double x = std::strtod(v.c_str(), &end);
+            const bool number = !v.empty() && *end == '\0';  // a word in a numeric column (hinge "eq15") stays a word
             if (v.empty()) row[header[i]] = nullptr;
-            else if (header[i] == "case_id" || header[i] == "specimen") row[header[i]] = std::strtol(v.c_str(), nullptr, 10);
-            else if (kNumericColumns.count(header[i])) row[header[i]] = std::strtod(v.c_str(), nullptr);
-            else row[header[i]] = v;
+            else if (!number || !kNumericColumns.count(header[i])) row[header[i]] = v;
+            else if (header[i] == "case_id" || header[i] == "specimen") row[header[i]] = static_cast<long>(x);
+            else row[header[i]] = x;
         }
         out << (first ? "\n    " : ",\n    ") << row.dump();
         first = false;
@@ -157,10 +156,5 @@ void write_results_json(std::ostream& out, const Json& manifest, const std::file
     out << (first ? "]\n}\n" : "\n  ]\n}\n");
 }
 
-StudySpec spec_of_manifest(const Json& manifest) {
-    const Json& s = manifest.at("study");
-    return study_from_json(nlohmann::json::parse(s.at("as_read").dump()), s.at("file").get<std::string>(),
-                           s.at("base_dir").get<std::string>());
-}
 
 }  // namespace vssw::study

@@ -52,14 +52,11 @@ struct ResultsTable {
     std::vector<std::vector<std::string>> rows;
     // Index of a column; InputError naming it when absent.
     std::size_t column(const std::string& name) const;
-    bool has(const std::string& name) const;
 };
 ResultsTable read_results_csv(const std::filesystem::path& path);
 
 // results.json from the manifest and results.csv (streamed row by row).
 void write_results_json(std::ostream& out, const nlohmann::ordered_json& manifest, const std::filesystem::path& csv);
 
-// The study as a manifest names it, without its records (for writers that need only its keys).
-StudySpec spec_of_manifest(const nlohmann::ordered_json& manifest);
 
 }  // namespace vssw::study

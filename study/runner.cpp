@@ -52,6 +52,7 @@ void prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyRunOpti
     const std::string this_study =
         fmt::format("{} {}/{}", grid.identity(), options.shard.k, options.shard.n);
     if (options.resume) {
+        if (journal) check_journal(dir / kJournalFile, grid.identity(), options.shard);
         if (!journal && recorded_study(dir / kManifestFile) != this_study)
             throw InputError(fmt::format("--resume: '{}' holds no journal of this study to resume (and no finished "
                                          "results of it)",
@@ -88,16 +89,28 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         throw InputError(fmt::format("study: no engine '{}'", name));
     };
 
-    // The journal: a new one, or the one to resume (its finished tasks are skipped).
+    // The journal: a new one, or the one to resume (its finished tasks are skipped). Under MPI only rank 0 reads and
+    // writes it, and tells the others which tasks are done, so that every process holds the same list of tasks (rank
+    // 0 hands them out by their place in it). A failure here on rank 0 ends every process rather than leave the
+    // others waiting.
     std::set<TaskKey> done;
     std::unique_ptr<Journal> journal;
+    bool finished_already = false;  // --resume of a study whose results are complete: its files stand
     const fs::path journal_path = dir / kJournalFile;
-    if (writer) {
-        std::error_code ec;
-        if (options.resume && fs::exists(journal_path, ec))
-            journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard, done);
-        else if (!options.resume || !fs::exists(dir / kResultsCsv, ec))
-            journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard);
+    try {
+        if (writer) {
+            std::error_code ec;
+            if (options.resume && fs::exists(journal_path, ec))
+                journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard, done);
+            else if (!options.resume || !fs::exists(dir / kResultsCsv, ec))
+                journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard);
+            else
+                finished_already = true;
+        }
+        if (options.mpi) options.mpi->share_done(done, finished_already);
+    } catch (const std::exception& e) {
+        if (options.mpi) options.mpi->abort(e.what());
+        throw;
     }
 
     std::vector<Task> tasks;
@@ -113,8 +126,7 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
             tasks.push_back({id, r, estimated_cost(grid, c, run), engine_index(run.engine)});
         }
     }
-    // --resume of a study whose results are complete: nothing to run, its files stand.
-    if (writer && !journal) {
+    if (finished_already) {
         result.meta.tasks_resumed = static_cast<long>(tasks.size());
         tasks.clear();
     }
@@ -156,6 +168,10 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     if (journal) {
         journal->close();
         std::vector<ResultRow> rows = read_journal(journal_path);
+        for (const ResultRow& row : rows)
+            if (row.run >= grid.runs().size() || row.metric >= grid.spec().metrics.size())
+                throw InputError(fmt::format("journal {}: a row of run {} and metric {}, which the study does not have",
+                                             journal_path.string(), row.run, row.metric));
         std::stable_sort(rows.begin(), rows.end(), [](const ResultRow& a, const ResultRow& b) {
             return std::tie(a.case_id, a.run, a.metric) < std::tie(b.case_id, b.run, b.metric);
         });
@@ -164,6 +180,13 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         AtomicFile csv(dir / kResultsCsv);
         write_results_csv(csv.stream(), grid, rows);
         csv.commit();
+    }
+    if (finished_already) {
+        // The results stand: their rows are counted as they are (a --strict resume judges them too).
+        const ResultsTable t = read_results_csv(dir / kResultsCsv);
+        const std::size_t status = t.column("status");
+        result.rows = static_cast<long>(t.rows.size());
+        for (const auto& row : t.rows) result.failed_rows += row[status] == "ok" ? 0 : 1;
     }
     result.meta.commit = options.commit;
     result.meta.date = utc_now();

@@ -11,6 +11,7 @@
 #include "analytic/ground_motion.hpp"
 #include "study/config_file.hpp"
 #include "study/metric_catalog.hpp"
+#include "compare/experiments.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::study {
@@ -36,11 +37,11 @@ const std::vector<std::string> kPartKeys = {"wall",        "excitation", "metric
 // and have columns of their own.
 const std::vector<std::string> kAssumptionKnobs = {"paper_kinematics", "restitution", "whole_mechanism_impact",
                                                    "unilateral_roller"};
-// compare's smallest release (apps/cmd_compare.cpp): below it an engine's elastic rotation and step are no longer
-// small against the motion, and the analytic wall comes to rest without an impact to measure.
-constexpr double kMinTheta0 = 0.01;
-// Engines' solver iterations, as `vssw compare --iterations` (apps/option_values.hpp kMaxIterations).
-constexpr int kMaxIterations = 1000;
+// The smallest release and the most iterations, as vssw compare's (compare/experiments.hpp, multibody/engine.hpp).
+constexpr double kMinTheta0 = compare::kMinRelease;
+using multibody::kMaxIterations;
+// Table 1's numbers are below this; a larger one cannot be a specimen (and would not fit an int).
+constexpr double kMaxSpecimen = 1000.0;
 
 bool contains(const std::vector<std::string>& list, const std::string& x) {
     return std::find(list.begin(), list.end(), x) != list.end();
@@ -121,7 +122,8 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
     }
     if (k == "specimen") {
         const double x = r.number(v, key, "a Table 1 specimen number");
-        if (x != std::floor(x) || x < 1.0) r.fail(key, fmt::format("must be a Table 1 specimen number, got {}", v.dump()));
+        if (x != std::floor(x) || x < 1.0 || x > kMaxSpecimen)
+            r.fail(key, fmt::format("must be a Table 1 specimen number, got {}", v.dump()));
         return x;
     }
     if (k == "xi") {
@@ -223,6 +225,8 @@ void check_wall_routes(const Reader& r, const json& wall, const std::string& whe
     pair("alpha", "R");
     if ((has("alpha1") || has("alpha2") || has("R1")) && !(has("alpha1") && has("alpha2") && has("R1")))
         r.fail(where, "alpha1, alpha2 and R1 go together (the paper's parameters of a VSSW)");
+    if (has("alpha1") && has("hinge"))
+        r.fail(where, "alpha1, alpha2 and R1 fix the hinge (h1/h = tan(alpha2) / (tan(alpha1) + tan(alpha2))): no 'hinge'");
 }
 
 std::vector<Axis> read_axes(const Reader& r, const json& t, const std::string& table,
@@ -249,6 +253,9 @@ std::vector<Axis> read_settings(const Reader& r, const json& t, const std::strin
         if (item.key() != "dt" && item.key() != "iterations") keys.push_back(item.key());
     for (const std::string& k : keys) {
         const std::string key = where + "." + k;
+        if (engine == "analytic" && (k == "dt" || k == "iterations"))
+            r.fail(key, "the analytic model has no step or iterations to set (its tolerance is rtol; its free "
+                        "vibrations are sampled every 1e-4 s, like an engine's, for the metric code)");
         if (engine == "analytic" && contains(kAssumptionKnobs, k))
             r.fail(key, "the analytic model's assumptions go in [assumptions] (kinematics, impact, roller), where they "
                         "can vary and have columns of their own");
@@ -402,7 +409,17 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
                                          [&](const EngineSpec& e) { return e.name == item.key(); });
             const std::string k = key("settings." + item.key());
             if (it == p.engines.end()) r.fail(k, "settings for an engine the study does not run (add it to engines)");
-            it->settings = read_settings(r, item.value(), k, item.key());
+            // Added to the study-wide settings of the engine; a setting given at both levels is refused.
+            for (Axis& a : read_settings(r, item.value(), k, item.key())) {
+                if (std::any_of(it->settings.begin(), it->settings.end(), [&](const Axis& x) { return x.key == a.key; }))
+                    r.fail(k + "." + a.key, "given in the study's [settings." + item.key() + "] too: give it once");
+                it->settings.push_back(std::move(a));
+            }
+            // dt, iterations, then the knobs by name, as read_settings orders them.
+            std::stable_sort(it->settings.begin(), it->settings.end(), [](const Axis& a, const Axis& b) {
+                const auto rank = [](const Axis& x) { return x.key == "dt" ? 0 : x.key == "iterations" ? 1 : 2; };
+                return rank(a) != rank(b) ? rank(a) < rank(b) : (rank(a) == 2 && a.key < b.key);
+            });
         }
     }
 

@@ -93,11 +93,18 @@ compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name)
                 break;
             case ExcitationKind::record:
                 if (part.names.record_name.empty()) throw fail(part, "a suite's record part names its records (record_name)");
+                // The report reads a suite's records in the units their files say (compare/suite.cpp): refuse others.
+                if (part.excitation_axis("units"))
+                    throw fail(part, "a suite's records are read in the units their files give: no 'units'");
                 for (const CaseSpec& c : cases) {
                     const std::string w = add_wall(part, c);
                     const std::string r = grid.record_name(c);
-                    if (std::none_of(suite.records.begin(), suite.records.end(),
-                                     [&](const compare::SuiteRecord& x) { return x.id == r; })) {
+                    const auto same = std::find_if(suite.records.begin(), suite.records.end(),
+                                                   [&](const compare::SuiteRecord& x) { return x.id == r; });
+                    if (same != suite.records.end() &&
+                        (same->path != grid.record_path(c.file) || same->scale != c.scale))
+                        throw fail(part, fmt::format("the record name '{}' is given to two different records", r));
+                    if (same == suite.records.end()) {
                         const std::string label = grid.record_label(c);
                         suite.records.push_back({r, label.empty() ? r : label, grid.record_path(c.file), c.scale});
                     }

@@ -29,6 +29,12 @@ std::string engine_display_name(const std::string& engine) {
     return it != names.end() ? it->second : engine;
 }
 
+std::string one_line(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
 std::string file_stem(const std::string& case_id) {
     std::string s = case_id;
     for (char& c : s) {

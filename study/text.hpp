@@ -12,6 +12,8 @@ std::string yes_no(bool value);
 std::string percent(double rel_error);
 // "ODE", "Bullet", "Simbody" for the engine names (others as they are).
 std::string engine_display_name(const std::string& engine);
+// The text with its line breaks as spaces: for one-line messages, CSV statuses and Markdown list items.
+std::string one_line(std::string text);
 // Case ids and other names as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'.
 std::string file_stem(const std::string& case_id);
 

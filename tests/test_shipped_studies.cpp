@@ -25,8 +25,9 @@ using vssw::testing::value_of;
 
 // Floating-point agreement of one formula evaluated two ways.
 constexpr double kRoundoff = 1e-12;
-// Eq. (20) linearises the restoring moment: the peak ratio it gives is within 2.4e-4 of the simulated paper model on
-// Fig. 6 up to theta0 = 0.3 alpha1 (measured with vssw free --json peaks); ten times that.
+// Eq. (20) linearises the restoring moment: the peak ratio it gives is within 2.9e-4 of the simulated paper model up
+// to theta0 = 0.3 alpha1 on the study's walls (4 m x 0.4 m, h1/h 0.5, 0.6, 0.7: measured 2.9e-4, 2.2e-4, 2.4e-4 with
+// vssw free --json peaks); about ten times that.
 constexpr double kLinearisedPeakRatio = 2.5e-3;
 
 ResultsTable run_shipped(const TempDir& dir, const std::string& name) {
@@ -127,10 +128,6 @@ TEST(ShippedStudies, Fig7bPeriodRatioDependsOnShapeNotSize) {
             const double big = value_of(t, "period_ratio_to_parapet", {{"alpha", alpha}, {"hinge", hinge}, {"R", "4"}});
             EXPECT_LT(small, 1.0);
             EXPECT_NEAR(small, big, kRoundoff * small) << "alpha " << alpha << ", hinge " << hinge;
-            // The periods themselves scale with sqrt(R) (Eq. 21b: P^2 ~ g / R1).
-            const double T1 = value_of(t, "period_linearised", {{"alpha", alpha}, {"hinge", hinge}, {"R", "1"}});
-            const double T4 = value_of(t, "period_linearised", {{"alpha", alpha}, {"hinge", hinge}, {"R", "4"}});
-            EXPECT_NEAR(T4 / T1, 2.0, kRoundoff);
         }
 }
 

@@ -158,6 +158,12 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {"[assumptions]\nimpact = 1.5\n" + wall + threshold, "an impact ratio must be in [0, 1]"},
         {"[assumptions]\nkinematics = \"approximate\"\n" + wall + threshold, "assumptions.kinematics: must be one of"},
         {"speed = 3\n" + wall + threshold, "unknown key 'speed'"},
+        {"[wall]\nalpha1 = 0.1\nalpha2 = 0.2\nR1 = 1.5\nhinge = 0.6\n" + threshold, "fix the hinge"},
+        {"[wall]\nspecimen = 1e10\n" + threshold, "must be a Table 1 specimen number"},
+        {"[settings.analytic]\ndt = 1e-3\n" + wall + threshold, "no step or iterations to set"},
+        {"[settings.analytic]\nrtol = 1e-9\n[[part]]\n[part.wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
+         "[part.excitation]\nkind = \"threshold\"\n[part.settings.analytic]\nrtol = 1e-8\n",
+         "part[1].settings.analytic.rtol: given in the study's [settings.analytic] too"},
     };
     for (const Case& c : cases) {
         const std::string message = refusal(dir, c.toml);
@@ -489,6 +495,84 @@ TEST(SuiteFile, AStudyOfPartsRunsEachPartsCasesWithItsRuns) {
     EXPECT_TRUE(seen.count("5 ode dt=0.001 period w0.4"));
     EXPECT_FALSE(seen.count("3 ode dt=0.001 period t1-01-xi0.5")) << "a part's settings are its own";
     EXPECT_FALSE(seen.count("1 analytic  period w0.3")) << "a threshold part measures no period";
+}
+
+}  // namespace
+
+namespace {
+
+// A closed form outside its range is a row with the reason; the other rows of the study stand.
+TEST(StudyMeasure, AClosedFormOutsideItsRangeIsARowNotTheEnd) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"period_ratio_to_parapet\"]\n[wall]\nheight = 4\nthickness = 0.4\n"
+                                  "hinge = 0.7\n[excitation]\nkind = \"closed-form\"\ntheta0 = [0.5, 1.2]\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    ASSERT_EQ(t.rows.size(), 2u);
+    EXPECT_EQ(t.rows[0][t.column("status")], "ok");
+    EXPECT_NE(t.rows[1][t.column("status")].find("failed: theta0 1.2 is not below"), std::string::npos)
+        << t.rows[1][t.column("status")];
+}
+
+// A parapet's analytic run is the first one built, also when the first levels of kinematics and roller are not a
+// model together (the paper's kinematics with a unilateral roller).
+TEST(StudyGrid, AParapetKeepsItsAnalyticRunWhenTheFirstLevelsAreNotAModel) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "[wall]\nmodel = \"parapet\"\nheight = 2\nthickness = 0.2\n[assumptions]\n"
+                                  "kinematics = [\"paper\", \"exact\"]\nroller = [\"unilateral\", \"bilateral\"]\n"
+                                  "[excitation]\nkind = \"threshold\"\n"));
+    const study::CaseSpec c = grid.make_case(1);
+    int applying = 0;
+    for (const study::RunSpec& r : grid.runs()) applying += grid.run_applies(r, c) ? 1 : 0;
+    EXPECT_EQ(applying, 1);
+}
+
+// A record that is zero everywhere is bad input: it can be scaled to no PGA and shakes nothing.
+TEST(StudyFile, ARecordOfZerosIsRefused) {
+    const TempDir dir;
+    vssw::testing::write_file(dir / "zeros.txt", "0 0\n0.01 0\n0.02 0\n");
+    try {
+        const Grid grid(study_of(dir, "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n[excitation]\n"
+                                      "kind = \"record\"\nfile = \"zeros.txt\"\npga = 0.3\n"));
+        FAIL() << "refused";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("zero everywhere"), std::string::npos) << e.what();
+    }
+}
+
+// ODE's quickstep reorders its rows with a process-wide random generator: a run must not depend on the runs before it
+// (else a study's rows would depend on threads, shards and processes).
+TEST(StudyRun, OdeQuickstepGivesTheSameRunWhateverRanBefore) {
+    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    const auto ode = multibody::make_engine("ode");
+    multibody::EngineSettings s = ode->default_settings();
+    s.knobs["quickstep"] = 1.0;
+    const multibody::WallScene wall = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
+    multibody::Excitation ex;
+    ex.theta0 = 0.5 * wall.alpha();
+    ex.t_end = 1.0;
+    const multibody::Trajectory first = ode->simulate(wall, ex, s);
+    multibody::Excitation other = ex;
+    other.theta0 = 0.3 * wall.alpha();
+    (void)ode->simulate(wall, other, s);
+    const multibody::Trajectory again = ode->simulate(wall, ex, s);
+    ASSERT_EQ(first.samples.size(), again.samples.size());
+    EXPECT_EQ(first.samples.back().theta1, again.samples.back().theta1);
+}
+
+// Suite files read their records in the files' own units: a part that says otherwise is refused.
+TEST(SuiteFile, UnitsAreRefused) {
+    const TempDir dir;
+    const std::string record = std::string(VSSW_DATA_DIR) + "/elcentro_chopra.txt";
+    try {
+        (void)study::suite_from_study(Grid(study_of(dir, "[[part]]\nwall_name = \"w\"\nrecord_name = \"r\"\n"
+                                                         "[part.wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
+                                                         "[part.excitation]\nkind = \"record\"\nfile = \"" +
+                                                             record + "\"\nunits = \"g\"\n")),
+                                      "x");
+        FAIL() << "refused";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("no 'units'"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

@@ -173,4 +173,35 @@ TEST(CompareResponse, ARecordAndAReleaseAreRefusedTogether) {
     EXPECT_NE(both.err.find("either --record or --pulse"), std::string::npos) << both.err;
 }
 
+// More shards than cases: a shard with no case writes empty results, and the shards still merge into the study.
+TEST(StudyCli, AnEmptyShardIsEmptyResultsNotAnError) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string();
+    ASSERT_EQ(run_cli({"study", file, "--out", (dir / "one").string(), "--no-plots"}).code, 0);
+    for (const char* k : {"1", "2", "3"}) {
+        const auto r = run_cli({"study", file, "--out", (dir / k).string(), "--shard", std::string(k) + "/3", "--no-plots"});
+        ASSERT_EQ(r.code, 0) << r.err;
+    }
+    ASSERT_EQ(run_cli({"study", "merge", (dir / "1").string(), (dir / "2").string(), (dir / "3").string(), "--out",
+                       (dir / "m").string(), "--no-plots"})
+                  .code,
+              0);
+    EXPECT_EQ(vssw::testing::read_file(dir / "one" / "results.csv"), vssw::testing::read_file(dir / "m" / "results.csv"));
+}
+
+// --strict judges the rows of a study that a --resume finds finished, as it judged them when they were written.
+TEST(StudyCli, StrictJudgesAFinishedStudyOnResumeToo) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", "metrics = [\"period\"]\n[wall]\nheight = 3.05\n"
+                                                        "thickness = 0.143\nhinge = 0.67\nxi = 0.5\n[assumptions]\n"
+                                                        "kinematics = \"exact\"\nroller = \"unilateral\"\n"
+                                                        "[excitation]\nkind = \"free\"\ntheta0 = 0.8\n")
+                                 .string();
+    const std::string out = (dir / "a").string();
+    EXPECT_EQ(run_cli({"study", file, "--out", out, "--no-plots", "--strict"}).code, 3);
+    const auto again = run_cli({"study", file, "--out", out, "--no-plots", "--strict", "--resume"});
+    EXPECT_EQ(again.code, 3) << again.out;
+    EXPECT_NE(again.out.find("1 failed"), std::string::npos) << again.out;
+}
+
 }  // namespace

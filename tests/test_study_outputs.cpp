@@ -87,10 +87,10 @@ void write_study(const fs::path& dir, const st::Grid& grid, const ValueOf& value
     std::ofstream(dir / st::kManifestFile) << st::manifest_json(grid, meta).dump(2) << '\n';
 }
 
-st::Grid grid_of(const fs::path& dir, const std::string& toml) {
+st::StudySpec spec_of(const fs::path& dir, const std::string& toml) {
     const fs::path file = dir / "study.toml";
     std::ofstream(file) << toml;
-    return st::Grid(st::read_study_file(file.string()));
+    return st::read_study_file(file.string());
 }
 
 // The tiny study: two hinges, both kinematics, both impact laws, an engine, a free vibration measuring the period
@@ -169,7 +169,7 @@ protected:
     void SetUp() override {
         engine_ = an_engine();
         if (engine_.empty()) GTEST_SKIP() << "no engine built besides the analytic model";
-        grid_.emplace(grid_of(dir_.path, tiny_study(engine_)));
+        grid_.emplace(spec_of(dir_.path, tiny_study(engine_)));
         write_study(dir_.path / "out", *grid_, tiny_value);
     }
     fs::path out() const { return dir_.path / "out"; }
@@ -323,10 +323,10 @@ TEST_F(TinyStudy, AMergedStudyIsWrittenAsASingleRun) {
 // Past kMaxPanels, the last parameters are summarised by their median and the title says over which.
 TEST(StudyOutputs, PanelsPastTheLimitAreMediansOverTheLastParameters) {
     TempDir dir("study_panels");
-    const st::Grid grid = grid_of(dir.path, "name = \"panels\"\nmetrics = [\"period\"]\nengines = [\"analytic\"]\n"
+    const st::Grid grid(spec_of(dir.path, "name = \"panels\"\nmetrics = [\"period\"]\nengines = [\"analytic\"]\n"
                                             "[wall]\nheight = [3, 4, 5]\nthickness = [0.2, 0.3, 0.4]\n"
                                             "hinge = [0.6, 0.7]\nxi = [0, 0.1]\n"
-                                            "[excitation]\nkind = \"free\"\ntheta0 = 0.5\n");
+                                            "[excitation]\nkind = \"free\"\ntheta0 = 0.5\n"));
     // period = height + hinge: the median over the two hinges is height + 0.65.
     write_study(dir.path / "out", grid,
                 [](const st::CaseSpec& c, const st::RunSpec&, const std::string&) { return c.height + c.hinge; });
@@ -346,11 +346,11 @@ TEST(StudyOutputs, PanelsPastTheLimitAreMediansOverTheLastParameters) {
 // Record studies: rocking curves per record and level, a panel per R, an overturned run at 1 and marked.
 TEST(StudyOutputs, RockingCurvesMarkOverturnedRunsAtOne) {
     TempDir dir("study_rocking");
-    const st::Grid grid =
-        grid_of(dir.path, "name = \"rocking\"\nmetrics = [\"peak_rotation\", \"overturned\"]\n"
+    const st::Grid grid(
+        spec_of(dir.path, "name = \"rocking\"\nmetrics = [\"peak_rotation\", \"overturned\"]\n"
                           "engines = [\"analytic\"]\n[wall]\nalpha = [0.05, 0.1, 0.2]\nR = [1, 3]\nhinge = 0.6\nxi = 0.1\n"
                           "[excitation]\nkind = \"record\"\nfile = \"" VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2\"\n"
-                          "pga = [0.3, 0.6]\n");
+                          "pga = [0.3, 0.6]\n"));
     // The slenderest wall overturns (its peak is the collapse angle, 4.2 alpha); the others peak at 0.1 / alpha.
     write_study(dir.path / "out", grid, [](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
         const bool over = c.alpha < 0.06;
@@ -377,12 +377,12 @@ TEST(StudyOutputs, RockingCurvesMarkOverturnedRunsAtOne) {
 // Pulse studies: the overturning map's points, peak capped at 1, overturned runs flagged, a block per series.
 TEST(StudyOutputs, OverturningMapHoldsEveryPulseWithItsVerdict) {
     TempDir dir("study_map");
-    const st::Grid grid = grid_of(dir.path, "name = \"map\"\nmetrics = [\"peak_rotation\", \"overturned\"]\n"
+    const st::Grid grid(spec_of(dir.path, "name = \"map\"\nmetrics = [\"peak_rotation\", \"overturned\"]\n"
                                             "engines = [\"analytic\"]\n"
                                             "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
                                             "[assumptions]\nimpact = [\"eq19\", \"whole-mechanism\"]\n"
                                             "[excitation]\nkind = \"pulse\"\nshape = \"sine\"\n"
-                                            "amplitude = [0.3, 0.6]\npulse_period = [0.5, 1.0]\n");
+                                            "amplitude = [0.3, 0.6]\npulse_period = [0.5, 1.0]\n"));
     // Eq. (19) overturns from 0.6 g; the peak otherwise is amplitude x period.
     write_study(dir.path / "out", grid, [](const st::CaseSpec& c, const st::RunSpec& run, const std::string& metric) {
         const bool over = c.amplitude_g > 0.5 && text_of(run, 1) == "eq19";

@@ -419,6 +419,9 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
     require_one_description(scene);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
+    // dWorldQuickStep reorders its constraint rows with ODE's process-wide random generator: seeded at every run, so
+    // that a run's result does not depend on the runs before it in the process (threads, shards, MPI processes).
+    dRandSetSeed(0);
     OdeScene w(scene, knobs, ex.theta0, dt);
     const BlockSizes s = block_sizes(scene);
     const double g = scene.gravity();

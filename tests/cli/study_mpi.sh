@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# `mpirun -n 2 vssw study` writes the rows of a single-process run (the processes share the tasks; rank 0 writes).
+# `mpirun -n 2 vssw study` writes the rows of a single-process run (the processes share the tasks; rank 0 writes),
+# also when it was interrupted and resumed.
 # As root (CI) OpenMPI needs --allow-run-as-root; --oversubscribe lets 2 processes start on a 1-core machine.
 # usage: study_mpi.sh VSSW SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -11,3 +12,15 @@ mpirun --allow-run-as-root --oversubscribe -n 2 "$vssw" study "$study" --out "$w
 grep -q '"processes": 2' "$work/mpi.json"
 cmp "$work/single/results.csv" "$work/mpi/results.csv"
 echo "mpirun -n 2: the same rows as one process"
+
+# Interrupted under MPI (SIGINT after a second; the tasks it finished are in the journal) and resumed under MPI: the
+# rows of one uninterrupted process. (If the run ends before the signal, the resume finds it finished: the same rows.)
+slow="$src/tests/cli/study_engines.toml"
+"$vssw" study "$slow" --out "$work/slow-single" --no-plots >/dev/null
+timeout -s INT 1 mpirun --allow-run-as-root --oversubscribe -n 2 "$vssw" study "$slow" --out "$work/slow-mpi" \
+  --no-plots >/dev/null 2>&1 || true
+[ -f "$work/slow-mpi/journal.csv" ] && echo "interrupted with $(grep -c '^#done' "$work/slow-mpi/journal.csv") tasks done"
+mpirun --allow-run-as-root --oversubscribe -n 2 "$vssw" study "$slow" --out "$work/slow-mpi" --no-plots --resume \
+  >/dev/null
+cmp "$work/slow-single/results.csv" "$work/slow-mpi/results.csv"
+echo "mpirun -n 2, interrupted and resumed: the same rows as one process"
