@@ -88,7 +88,6 @@ void compare_response(const ResponseCompareRequest& request, std::ostream& out) 
     const auto start = std::chrono::steady_clock::now();
     const study::Grid grid(study::study_from_json(study_document(request), "(vssw compare options)", "."));
     const study::CaseSpec c = grid.make_case(grid.case_ids().front());
-    study::ThresholdCache thresholds;  // unused: no threshold among the metrics
 
     std::vector<RunResult> runs;
     for (std::size_t r = 0; r < grid.runs().size(); ++r) {
@@ -98,7 +97,7 @@ void compare_response(const ResponseCompareRequest& request, std::ostream& out) 
         res.engine = run.engine;
         res.version = engine->version();
         res.settings = run.settings_text;
-        for (const study::Measurement& m : study::measure(grid, c, r, *engine, thresholds)) {
+        for (const study::Measurement& m : study::measure(grid, c, r, *engine)) {
             const std::string& metric = kMetrics[m.metric];
             if (metric == "peak_rotation") res.peak = m.value;
             if (metric == "peak_time") res.peak_time = m.value;

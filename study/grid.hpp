@@ -58,7 +58,7 @@ struct CaseSpec {
     double amplitude_g = 0.0, pulse_period = 0.0, duration = 0.0;  // pulse [g], [s], harmonic [s]
     double tolerance = 0.0, max_pga_g = 0.0, step = 0.0;  // scale-to-collapse; 0: the defaults (measure.cpp)
     // The wall's position among its part's wall axes alone (cases that differ only in their excitation share it):
-    // with the run (which belongs to one part), the key of the thresholds a process computes once per wall and run.
+    // with the part and the run, the key of a threshold task (study/runner.cpp: one per wall and run in a shard).
     std::size_t wall_index = 0;
 };
 

@@ -221,32 +221,27 @@ Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run,
 
 }  // namespace
 
-ThresholdOutcome ThresholdCache::get(std::size_t wall, std::size_t run, const std::function<ThresholdOutcome()>& compute) {
-    std::promise<ThresholdOutcome> promise;
-    std::shared_future<ThresholdOutcome> future;
-    {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        const auto it = outcomes_.find({wall, run});
-        if (it != outcomes_.end()) {
-            future = it->second;
-        } else {
-            outcomes_.emplace(std::make_pair(wall, run), promise.get_future().share());
-            future = {};
-        }
-    }
-    if (future.valid()) return future.get();
+Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,
+                              const multibody::Engine& engine) {
+    const std::vector<std::string>& metrics = grid.spec().metrics;
+    const std::size_t m = static_cast<std::size_t>(std::find(metrics.begin(), metrics.end(), "threshold_g") -
+                                                   metrics.begin());
     try {
-        const ThresholdOutcome out = compute();
-        promise.set_value(out);
-        return out;
-    } catch (...) {
-        promise.set_exception(std::current_exception());
-        throw;
+        return {m, compare::find_threshold(engine, grid.runs().at(run_index).settings, c.scene).value_g, kOk, {}};
+    } catch (const EngineFailure& e) {
+        return {m, kNaN, failed(e.what()), {}};
+    } catch (const InputError& e) {
+        return {m, kNaN, failed(e.what()), {}};
     }
 }
 
+bool measures_threshold(const Grid& grid, const CaseSpec& c) {
+    const std::vector<std::string>& metrics = grid.spec().parts[c.part].metrics;
+    return std::find(metrics.begin(), metrics.end(), "threshold_g") != metrics.end();
+}
+
 std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_t run_index,
-                                 const multibody::Engine& engine, ThresholdCache& thresholds) {
+                                 const multibody::Engine& engine) {
     const StudySpec& spec = grid.spec();
     const PartSpec& part = spec.parts[c.part];
     const RunSpec& run = grid.runs().at(run_index);
@@ -296,16 +291,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 add(m, f.value, f.why_not.empty() ? kOk : failed(f.why_not));
                 break;
             }
-            case MetricSource::threshold: {
-                const ThresholdOutcome t = thresholds.get(c.wall_index, run_index, [&] {
-                    ThresholdOutcome o;
-                    guarded([&] { o.value_g = compare::find_threshold(engine, run.settings, c.scene).value_g; },
-                            o.failure);
-                    return o;
-                });
-                add(m, t.failure.empty() ? t.value_g : kNaN, t.failure.empty() ? kOk : failed(t.failure));
-                break;
-            }
+            case MetricSource::threshold: break;  // measure_threshold, a task of its own
             case MetricSource::free: {
                 if (!free && free_failure.empty()) guarded(run_free, free_failure);
                 if (!free) {
@@ -374,6 +360,11 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     return out;
 }
 
+double threshold_cost(const RunSpec& run) {
+    // ~17 trials, those below the threshold run the whole hold (a few seconds), those above stop once the wall lifts.
+    return 17.0 * 2.5 * compare::cost_per_simulated_second(run.engine);
+}
+
 double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
     // Simulated seconds, roughly: a threshold search is ~17 trials of a few seconds; a free vibration a few seconds;
     // a pulse or a record its duration and the tail; a collapse search ~35 such runs.
@@ -382,7 +373,7 @@ double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
     for (const std::string& metric : part.metrics) {
         switch (metric_info(metric).source) {
             case MetricSource::closed_form: break;
-            case MetricSource::threshold: seconds += 17.0 * 2.5; break;
+            case MetricSource::threshold: break;  // a task of its own (threshold_cost)
             case MetricSource::free: seconds += 5.0; break;
             case MetricSource::response:
                 seconds += part.kind == ExcitationKind::free ? 5.0

@@ -3,8 +3,7 @@
 // (compare/experiments.hpp and compare/metrics.hpp) whatever the backend, beside the closed forms of the paper.
 //
 // What each excitation runs:
-//  - threshold_g: find_threshold on the case's wall (a property of the wall and the run: computed once per wall and
-//    run in a process, whatever the excitation's levels; ThresholdCache);
+//  - threshold_g: find_threshold on the case's wall (measure_threshold: a task of its own per wall and run);
 //  - free: run_free_vibration released at theta0 alpha (the analytic model sampled every 1e-4 s, as vssw compare
 //    measures it, so that its period and restitution are measured like an engine's);
 //  - pulse, record: a run from rest until the motion's end + kResponseTail, or rest, or overturning;
@@ -15,10 +14,6 @@
 // A run that fails (an engine blows up, an integration fails, the case is not a model the run can hold) gives its
 // metrics the status "failed: <reason>"; the study goes on.
 #include <cstddef>
-#include <functional>
-#include <future>
-#include <map>
-#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,26 +36,21 @@ struct Measurement {
     std::string warnings;
 };
 
-// Thresholds computed once per (wall, run) in a process, shared by the threads (a second asker waits for the first).
-struct ThresholdOutcome {
-    double value_g = 0.0;
-    std::string failure;  // empty: measured
-};
-class ThresholdCache {
-public:
-    ThresholdOutcome get(std::size_t wall, std::size_t run, const std::function<ThresholdOutcome()>& compute);
-
-private:
-    std::mutex mutex_;
-    std::map<std::pair<std::size_t, std::size_t>, std::shared_future<ThresholdOutcome>> outcomes_;
-};
-
-// The metrics of the study that apply to this run on this case, in StudySpec::metrics order (the analytic model's
-// own metrics are left out for an engine). `run_index` is the run's index in Grid::runs().
+// The metrics of the study that apply to this run on this case, in StudySpec::metrics order, but threshold_g (the
+// analytic model's own metrics are left out for an engine). `run_index` is the run's index in Grid::runs().
 std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_t run_index,
-                                 const multibody::Engine& engine, ThresholdCache& thresholds);
+                                 const multibody::Engine& engine);
 
-// A rough cost of the run [s], for ordering tasks longest first (compare/task_pool.hpp).
+// threshold_g of the case's wall for the run: a property of the wall, not of the excitation, so a study runs it as a
+// task of its own, once per wall and run, and gives it to every case of that wall (study/runner.cpp).
+Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,
+                              const multibody::Engine& engine);
+// Whether the case's part measures threshold_g.
+bool measures_threshold(const Grid& grid, const CaseSpec& c);
+
+// A rough cost of the run [s] (its threshold apart), and of a threshold task, for ordering tasks longest first
+// (compare/task_pool.hpp).
 double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run);
+double threshold_cost(const RunSpec& run);
 
 }  // namespace vssw::study

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <set>
 #include <system_error>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -35,12 +37,44 @@ std::string recorded_study(const fs::path& manifest) {
     }
 }
 
+// A case's run, or the threshold of a wall for a run. A threshold task carries the first case of its wall in the
+// shard, and is journaled under that case id negated (its rows are copied to every case of the wall at the end).
 struct Task {
-    int case_id;
+    int case_id;  // < 0: the threshold task of the wall of case -case_id
     std::size_t run;
     double cost;
     std::size_t engine;  // index into the study's engine objects (the pool's group)
 };
+
+// The wall a case belongs to, for a run: one threshold per key.
+using WallRun = std::tuple<std::size_t, std::size_t, std::size_t>;  // part, wall index, run
+
+// The threshold tasks' rows (case ids negated) given to every case of their wall in the shard, in their place.
+std::vector<ResultRow> with_thresholds(const Grid& grid, Shard shard, std::vector<ResultRow> rows) {
+    std::map<WallRun, ResultRow> thresholds;
+    std::vector<ResultRow> out;
+    out.reserve(rows.size());
+    for (ResultRow& row : rows) {
+        if (row.case_id >= 0) {
+            out.push_back(std::move(row));
+            continue;
+        }
+        const CaseSpec c = grid.make_case(-row.case_id);
+        thresholds.emplace(WallRun{c.part, c.wall_index, row.run}, std::move(row));
+    }
+    if (thresholds.empty()) return out;
+    for (const int id : grid.shard_case_ids(shard.k, shard.n)) {
+        const CaseSpec c = grid.make_case(id);
+        for (std::size_t r = 0; r < grid.runs().size(); ++r) {
+            const auto it = thresholds.find(WallRun{c.part, c.wall_index, r});
+            if (it == thresholds.end() || !grid.run_applies(grid.runs()[r], c)) continue;
+            ResultRow row = it->second;
+            row.case_id = id;
+            out.push_back(std::move(row));
+        }
+    }
+    return out;
+}
 
 }  // namespace
 
@@ -114,11 +148,16 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     }
 
     std::vector<Task> tasks;
+    std::map<WallRun, int> wall_case;  // the first case of each wall in the shard: its threshold task's id
     for (const int id : grid.shard_case_ids(options.shard.k, options.shard.n)) {
         const CaseSpec c = grid.make_case(id);
         for (std::size_t r = 0; r < grid.runs().size(); ++r) {
             const RunSpec& run = grid.runs()[r];
             if (!grid.run_applies(run, c)) continue;
+            if (measures_threshold(grid, c) && wall_case.emplace(WallRun{c.part, c.wall_index, r}, id).second) {
+                if (done.count({-id, r})) ++result.meta.tasks_resumed;
+                else tasks.push_back({-id, r, threshold_cost(run), engine_index(run.engine)});
+            }
             if (done.count({id, r})) {
                 ++result.meta.tasks_resumed;
                 continue;
@@ -131,14 +170,17 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         tasks.clear();
     }
 
-    ThresholdCache thresholds;
     std::mutex progress_mutex;
     long finished = 0;
     const long total = static_cast<long>(tasks.size());
     const auto run_task = [&](std::size_t i) {
         const Task& t = tasks[i];
+        if (t.case_id < 0) {
+            const CaseSpec c = grid.make_case(-t.case_id);
+            return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, *engines[t.engine])});
+        }
         const CaseSpec c = grid.make_case(t.case_id);
-        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *engines[t.engine], thresholds));
+        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *engines[t.engine]));
     };
     const auto note_progress = [&](const std::string& what) {
         if (!options.progress) return;
@@ -158,7 +200,9 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     } else {
         result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
             journal->append_text(run_task(i));
-            note_progress(fmt::format("case {} {}", tasks[i].case_id, grid.runs()[tasks[i].run].engine));
+            note_progress(tasks[i].case_id < 0
+                              ? fmt::format("threshold of case {} {}", -tasks[i].case_id, grid.runs()[tasks[i].run].engine)
+                              : fmt::format("case {} {}", tasks[i].case_id, grid.runs()[tasks[i].run].engine));
         });
     }
     result.meta.tasks_run = total;
@@ -172,6 +216,7 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
             if (row.run >= grid.runs().size() || row.metric >= grid.spec().metrics.size())
                 throw InputError(fmt::format("journal {}: a row of run {} and metric {}, which the study does not have",
                                              journal_path.string(), row.run, row.metric));
+        rows = with_thresholds(grid, options.shard, std::move(rows));
         std::stable_sort(rows.begin(), rows.end(), [](const ResultRow& a, const ResultRow& b) {
             return std::tie(a.case_id, a.run, a.metric) < std::tie(b.case_id, b.run, b.metric);
         });

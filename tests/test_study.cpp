@@ -576,3 +576,32 @@ TEST(SuiteFile, UnitsAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// threshold_g belongs to the wall: one task per wall and run, its value given to every case of the wall (here the two
+// releases of each), the same in a single run and in shards merged.
+TEST(StudyRun, AThresholdIsATaskOfItsWallGivenToEveryCaseOfIt) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_g\", \"period\"]\n[wall]\nheight = 4\n"
+                                  "thickness = [0.3, 0.4]\nhinge = 0.7\n[excitation]\nkind = \"free\"\n"
+                                  "theta0 = [0.3, 0.6]\n"));
+    study::StudyRunOptions o;
+    o.threads = 2;
+    study::prepare_study_dir(grid, dir / "one", o);
+    const study::StudyRunResult r = study::run_study(grid, dir / "one", o);
+    EXPECT_EQ(r.meta.tasks_run, 4 + 2) << "four cases and two walls' thresholds";
+    const ResultsTable t = study::read_results_csv(dir / "one" / "results.csv");
+    for (const char* thickness : {"0.3", "0.4"}) {
+        const double a = value_of(t, "threshold_g", {{"thickness", thickness}, {"theta0", "0.3"}});
+        EXPECT_EQ(a, value_of(t, "threshold_g", {{"thickness", thickness}, {"theta0", "0.6"}}));
+        EXPECT_TRUE(std::isfinite(a));
+    }
+    run_into(grid, dir / "s1", 1, {1, 2});
+    run_into(grid, dir / "s2", 1, {2, 2});
+    (void)study::merge_studies({dir / "s1", dir / "s2"}, dir / "merged");
+    EXPECT_EQ(vssw::testing::read_file(dir / "one" / "results.csv"),
+              vssw::testing::read_file(dir / "merged" / "results.csv"));
+}
+
+}  // namespace
