@@ -10,6 +10,7 @@
 #include "apps/ground_motion_options.hpp"
 #include "apps/json.hpp"
 #include "apps/wall_options.hpp"
+#include "compare/experiments.hpp"
 
 namespace vssw::cli {
 
@@ -19,8 +20,8 @@ struct HistoryRequest {
     bool keep_trajectory = false;     // samples are needed only for a CSV file
 };
 
-// How long a run continues after the ground motion ends by default: the wall may keep rocking after the shaking.
-constexpr double kDefaultExtraTime = 10.0;  // [s]
+// How long a run continues after the ground motion ends by default (compare/experiments.hpp: a study's runs too).
+constexpr double kDefaultExtraTime = compare::kResponseTail;  // [s]
 
 struct HistoryRun {
     WallOptions wall;

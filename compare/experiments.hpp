@@ -71,6 +71,10 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
 
 // Free vibration -----------------------------------------------------------------------------------------------
 
+// After a pulse or a record a response run goes on this long (or until the wall is at rest, or overturns) [s]: the
+// wall may keep rocking after the shaking (`vssw history`'s default end, and a study's).
+constexpr double kResponseTail = 10.0;
+
 // Smallest release, in units of alpha, that an engine's free vibration is measured from (vssw compare, studies): the
 // threshold's lift criterion (ThresholdOptions::lift_angle). Below it an engine's elastic rotation on its contacts
 // (~1e-6 rad) and its step are no longer small against the motion (at 1e-4 alpha the Fig. 6 wall's whole period is

@@ -18,14 +18,15 @@
 #include <utility>
 #include <vector>
 
+#include "compare/experiments.hpp"
 #include "multibody/engine.hpp"
 #include "study/grid.hpp"
 
 namespace vssw::study {
 
-// After a pulse or a record the run goes on this long (or until the wall is at rest, or overturns) [s]: the wall may
-// keep rocking after the shaking; `vssw history`'s default (kDefaultExtraTime), so both give the same peaks.
-constexpr double kResponseTail = 10.0;
+// After a pulse or a record the run goes on this long (compare/experiments.hpp), as `vssw history`'s does by default:
+// both give the same peaks.
+using compare::kResponseTail;
 
 struct Measurement {
     std::size_t metric = 0;  // index in StudySpec::metrics

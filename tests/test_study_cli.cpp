@@ -29,6 +29,23 @@ kind = "free"
 theta0 = 0.5
 )";
 
+// The unilateral roller fails its energy ceiling on Table 1 #6 at xi 0.5 from 0.8 alpha1 (README): a study with a
+// failed row.
+const char* const kFailingStudy = R"(
+metrics = ["period"]
+[wall]
+height = 3.05
+thickness = 0.143
+hinge = 0.67
+xi = 0.5
+[assumptions]
+kinematics = "exact"
+roller = "unilateral"
+[excitation]
+kind = "free"
+theta0 = 0.8
+)";
+
 TEST(StudyCli, RunsAStudyAndSummarisesItInJson) {
     const TempDir dir;
     const std::string file = write_file(dir / "s.toml", kStudy).string(), out = (dir / "out").string();
@@ -88,11 +105,7 @@ TEST(StudyCli, BadInputIsRefusedBeforeAnythingIsCreated) {
 // --strict: a row that failed is a failed study (exit 3), its results still written.
 TEST(StudyCli, StrictFailsAStudyWithAFailedRow) {
     const TempDir dir;
-    // The unilateral roller fails its energy ceiling on Table 1 #6 at xi 0.5 from 0.8 alpha1 (README).
-    const std::string file = write_file(dir / "s.toml", "metrics = [\"period\"]\n[wall]\nheight = 3.05\n"
-                                                        "thickness = 0.143\nhinge = 0.67\nxi = 0.5\n[assumptions]\n"
-                                                        "kinematics = \"exact\"\nroller = \"unilateral\"\n"
-                                                        "[excitation]\nkind = \"free\"\ntheta0 = 0.8\n")
+    const std::string file = write_file(dir / "s.toml", kFailingStudy)
                                  .string();
     const auto lenient = run_cli({"study", file, "--out", (dir / "a").string(), "--no-plots"});
     EXPECT_EQ(lenient.code, 0) << lenient.err;
@@ -192,10 +205,7 @@ TEST(StudyCli, AnEmptyShardIsEmptyResultsNotAnError) {
 // --strict judges the rows of a study that a --resume finds finished, as it judged them when they were written.
 TEST(StudyCli, StrictJudgesAFinishedStudyOnResumeToo) {
     const TempDir dir;
-    const std::string file = write_file(dir / "s.toml", "metrics = [\"period\"]\n[wall]\nheight = 3.05\n"
-                                                        "thickness = 0.143\nhinge = 0.67\nxi = 0.5\n[assumptions]\n"
-                                                        "kinematics = \"exact\"\nroller = \"unilateral\"\n"
-                                                        "[excitation]\nkind = \"free\"\ntheta0 = 0.8\n")
+    const std::string file = write_file(dir / "s.toml", kFailingStudy)
                                  .string();
     const std::string out = (dir / "a").string();
     EXPECT_EQ(run_cli({"study", file, "--out", out, "--no-plots", "--strict"}).code, 3);
