@@ -243,7 +243,34 @@ private:
     double e_;
 };
 
+// The same model ending its runs at a smaller angle: a trial that needs to know only whether the wall gets there.
+class WithStopAngle final : public RockingModel {
+public:
+    WithStopAngle(std::unique_ptr<RockingModel> model, double stop) : model_(std::move(model)), stop_(stop) {}
+    ModelTerms terms(double q) const override { return model_->terms(q); }
+    double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
+    double load_height(double q) const override { return model_->load_height(q); }
+    double restitution() const override { return model_->restitution(); }
+    double reference_angle() const override { return model_->reference_angle(); }
+    double collapse_angle() const override { return std::min(stop_, model_->collapse_angle()); }
+    double gravity() const override { return model_->gravity(); }
+    double overburden() const override { return model_->overburden(); }
+    const VsswGeometry* vssw_geometry() const override { return model_->vssw_geometry(); }
+    UpperRotation upper_rotation(double q) const override { return model_->upper_rotation(q); }
+    std::optional<Kinematics> kinematics() const override { return model_->kinematics(); }
+    std::string name() const override { return model_->name() + fmt::format(", stopped at {:.6g} rad", stop_); }
+
+private:
+    std::unique_ptr<RockingModel> model_;
+    double stop_;
+};
+
 }  // namespace
+
+std::unique_ptr<RockingModel> with_stop_angle(std::unique_ptr<RockingModel> model, double stop) {
+    require(std::isfinite(stop) && stop > 0.0, "stop angle", "a positive finite angle in rad", stop);
+    return std::make_unique<WithStopAngle>(std::move(model), stop);
+}
 
 std::unique_ptr<RockingModel> with_restitution(std::unique_ptr<RockingModel> model, double e) {
     require(std::isfinite(e) && e >= 0.0 && e <= 1.0, "impact ratio (restitution)", "a number in [0, 1]", e);

@@ -79,6 +79,11 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     const Knobs knobs = read_knobs(settings);
     std::unique_ptr<RockingModel> model =
         with_impact_law(analytic_model(scene, knobs.kinematics), knobs.impact);
+    // A stop angle (a threshold trial) ends the run there, as it ends an engine's (RunMonitor): the trial's question is
+    // answered, and the rest of its hold, with the wall flying towards its collapse, is not integrated (with the
+    // unilateral roller such a flight may fail the energy ceiling it has no need to meet).
+    const bool stops = excitation.stop_angle > 0.0 && excitation.stop_angle < model->collapse_angle();
+    if (stops) model = with_stop_angle(std::move(model), excitation.stop_angle);
     const double output_dt = settings.sample_dt > 0.0 ? settings.sample_dt : settings.dt;
     require(std::isfinite(output_dt) && output_dt > 0.0, "analytic output interval (sample_dt, else dt)",
             "a positive finite time in s", output_dt);
@@ -102,8 +107,9 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
         throw EngineFailure(fmt::format("analytic integration failed: {}", e.what()));
     }
 
+    const bool stopped = stops && r.overturned;  // at the stop angle, not the collapse angle
     Trajectory out;
-    out.overturned = r.overturned;
+    out.overturned = r.overturned && !stopped;
     out.at_rest_at_end = r.at_rest_at_end;
     out.warnings = validity_warnings(*model, scene.vssw ? std::optional(knobs.kinematics) : std::nullopt, r);
     out.steps = r.steps;
@@ -113,7 +119,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     if (r.overturned) {
         located.max_abs_theta1 = model->collapse_angle();
         located.t_max_abs_theta1 = r.t_overturn;
-        located.t_overturn = r.t_overturn;
+        if (!stopped) located.t_overturn = r.t_overturn;
     }
     located.energy_balance_error = r.energy_balance_error;
     located.supports_computed = r.supports.computed;
@@ -131,6 +137,15 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
         t.kinetic = s.kinetic;
         t.potential = s.weight_potential - s.work_overburden;
         t.contacts = 0;
+        out.samples.push_back(t);
+    }
+    // The stop angle reached between two output times: its own last sample, so that the samples show it too.
+    if (stopped && (out.samples.empty() || std::abs(out.samples.back().theta1) < excitation.stop_angle)) {
+        TrajectorySample t = out.samples.empty() ? TrajectorySample{} : out.samples.back();
+        const double side = !out.samples.empty() && out.samples.back().theta1 < 0.0 ? -1.0 : 1.0;
+        t.t = r.t_overturn;
+        t.theta1 = side * excitation.stop_angle;
+        t.theta2 = upper_rotation(scene, knobs.kinematics, t.theta1);
         out.samples.push_back(t);
     }
     return out;

@@ -286,6 +286,38 @@ std::string engine_name(const ::testing::TestParamInfo<std::string>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Engines, CrossEngine, ::testing::ValuesIn(multibody::available_engines()), engine_name);
 
+
+// A threshold trial's stop angle ends the analytic backend's run there, as RunMonitor ends an engine's: the wall is
+// reported as having reached it (its last sample), not as overturned, and nothing after it is integrated.
+constexpr double kStopAngleFraction = 0.05;  // the threshold search's lift angle, as a fraction of alpha
+constexpr double kAboveThreshold = 1.5;      // a step well past the threshold: the wall surely lifts
+
+TEST(AnalyticBackend, StopAngleEndsTheRunThere) {
+    using multibody::WallScene;
+    for (const Roller roller : {Roller::bilateral, Roller::unilateral}) {
+        SCOPED_TRACE(roller == Roller::bilateral ? "bilateral" : "unilateral");
+        const WallScene scene = WallScene::of(make_vssw(table1(14), 0.5));
+        const multibody::AnalyticEngine analytic;
+        const auto settings = multibody::analytic_settings(Kinematics::exact, {}, roller);
+        const double threshold = multibody::analytic_model(scene, Kinematics::exact)->rest_threshold(0.0);
+        multibody::Excitation ex;
+        ex.horizontal = compare::ramp_and_hold(kAboveThreshold * threshold, 0.1, 3.0);
+        ex.t_end = 3.1;
+        ex.stop_at_rest = false;
+        const auto to_collapse = analytic.simulate(scene, ex, settings);
+        ASSERT_TRUE(to_collapse.overturned);
+        ex.stop_angle = kStopAngleFraction * scene.alpha();
+        const auto stopped = analytic.simulate(scene, ex, settings);
+        EXPECT_FALSE(stopped.overturned);
+        ASSERT_TRUE(stopped.located.has_value());
+        EXPECT_FALSE(stopped.located->t_overturn.has_value());
+        ASSERT_FALSE(stopped.samples.empty());
+        EXPECT_DOUBLE_EQ(std::abs(stopped.samples.back().theta1), ex.stop_angle);
+        EXPECT_LT(stopped.samples.back().t, *to_collapse.located->t_overturn);
+        EXPECT_TRUE(compare::lifted(stopped, ex.stop_angle));
+    }
+}
+
 }  // namespace
 }  // namespace vssw
 
