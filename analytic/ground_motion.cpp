@@ -423,6 +423,11 @@ double GroundMotion::operator()(double t) const {
     return (1.0 - w) * values_[i] + w * values_[i + 1];
 }
 
+bool GroundMotion::continuous_at(double t) const {
+    if (is_zero_) return true;
+    return !times_.empty() && t > times_.front() && t < duration_;
+}
+
 double GroundMotion::pga() const {
     if (is_zero_) return 0.0;
     double peak = 0.0;

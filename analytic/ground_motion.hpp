@@ -33,6 +33,9 @@ public:
     static GroundMotion none();
 
     double operator()(double t) const;
+    // Whether a(t) is known to be continuous at t: a record inside its span (linear between samples), no motion at
+    // all. False where it may jump (a record's first and last sample, any analytic signal's breakpoint).
+    bool continuous_at(double t) const;
     double duration() const { return duration_; }
     const std::vector<double>& breakpoints() const { return breakpoints_; }
     const std::string& name() const { return name_; }

@@ -72,8 +72,9 @@ private:
     };
 
     State derivative(double t, const State& y) const {
-        const RockingRates r =
-            rocking_rates(model_.terms(side_ * y[0]), side_, y[1], ah_(t), av_(t), g_, N_);
+        // Most runs have no vertical motion: not evaluated then (two calls per stage otherwise).
+        const double a_v = av_.is_zero() ? 0.0 : av_(t);
+        const RockingRates r = rocking_rates(model_.terms(side_ * y[0]), side_, y[1], ah_(t), a_v, g_, N_);
         return {y[1], r.acceleration, r.ground_force * y[1]};
     }
 
@@ -441,8 +442,10 @@ Event Simulator::rocking_phase(double& t, State& y) {
             }
         }
         // A ground motion may jump at a breakpoint (a cosine pulse's end) and is left-continuous there: the next
-        // step's first stage must see the value after the jump.
-        if (on_breakpoint) dy = integrator_.rhs(std::nextafter(t, opt_.t_end + 1.0), y);
+        // step's first stage must see the value after the jump. Where both motions are continuous (a record's
+        // interior samples: every breakpoint but its ends) the step's last stage is already that value, to rounding.
+        if (on_breakpoint && !(ah_.continuous_at(t) && av_.continuous_at(t)))
+            dy = integrator_.rhs(std::nextafter(t, opt_.t_end + 1.0), y);
         out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(y[0]));
         if (ev == Event::impact) y[0] = 0.0;
         if (opt_.keep_samples || ev != Event::none) check_balance(t, y);  // events always; every step when sampling
