@@ -498,6 +498,19 @@ TEST(GroundMotion, CosinePulseJumpsAtItsEnds) {
     EXPECT_NEAR(m.pga(), std::abs(ap), kScanTol);
 }
 
+// The integrator skips the extra evaluation after a breakpoint only where continuous_at says so: a jump must never
+// be called continuous.
+TEST(GroundMotion, ContinuityIsClaimedOnlyInsideARecordOrWithoutMotion) {
+    const GroundMotion record = GroundMotion::sampled({0.0, 0.01, 0.02, 0.03}, {1.0, -2.0, 3.0, 4.0}, "r");
+    EXPECT_TRUE(record.continuous_at(0.01));
+    EXPECT_TRUE(record.continuous_at(0.02));
+    EXPECT_FALSE(record.continuous_at(0.0));   // from 0 before the record to 1 m/s^2
+    EXPECT_FALSE(record.continuous_at(0.03));  // from 4 m/s^2 to 0 after it
+    const GroundMotion pulse = cosine_pulse(-2.0, 0.5);
+    for (double t : pulse.breakpoints()) EXPECT_FALSE(pulse.continuous_at(t));
+    EXPECT_TRUE(GroundMotion::none().continuous_at(1.0));
+}
+
 TEST(GroundMotion, RickerWaveletPeaksAtItsCentre) {
     const double ap = 3.0, tp = 0.4;
     const GroundMotion m = ricker_wavelet(ap, tp);
