@@ -94,19 +94,19 @@ std::vector<Case> make_cases() {
                  [](const std::string&, const EngineSettings& d, bool q) {
                      return free_vibration(WallScene::of(make_vssw(4.0, 0.04, 0.7)), d, q);
                  }});
-    c.push_back({"squat-t/h0.5", "VSSW 4 x 2 m (t/h 0.5), h1/h 0.5, free vibration from 0.5 alpha: as above", true,
+    c.push_back({"squat-t/h0.5", "VSSW 4 x 2 m (t/h 0.5), h1/h 0.7, free vibration from 0.5 alpha: as above", true,
                  [](const std::string&, const EngineSettings& d, bool q) {
-                     return free_vibration(WallScene::of(make_vssw(4.0, 2.0, 0.5)), d, q);
+                     return free_vibration(WallScene::of(make_vssw(4.0, 2.0, 0.7)), d, q);
                  }});
     for (double hinge : {0.05, 0.95})
         c.push_back({fmt::format("hinge-{}", hinge),
-                     fmt::format("VSSW 4 x 0.4 m, h1/h {}, free vibration from 0.5 alpha: as above", hinge), true,
+                     fmt::format("VSSW 4 x 0.4 m, h1/h {}, free vibration from 0.5 alpha: as above", hinge), hinge < 0.5,
                      [hinge](const std::string&, const EngineSettings& d, bool q) {
                          return free_vibration(WallScene::of(make_vssw(4.0, 0.4, hinge)), d, q);
                      }});
     for (double xi : {0.0, 50.0})
         c.push_back({fmt::format("xi-{}", xi),
-                     fmt::format("Fig. 6 VSSW with xi {}, free vibration from 0.5 alpha: as above", xi), true,
+                     fmt::format("Fig. 6 VSSW with xi {}, free vibration from 0.5 alpha: as above", xi), xi > 0.0,
                      [xi](const std::string&, const EngineSettings& d, bool q) { return free_vibration(fig6_vssw(xi), d, q); }});
     c.push_back({"release-0.999-collapse", "Fig. 6 parapet released at 0.999 alpha (its static collapse angle): "
                  "slow fall back, no overturning (as analytic), first impact within 2 %", true,
@@ -126,7 +126,7 @@ std::vector<Case> make_cases() {
                      sign < 0 ? "Fig. 6 VSSW, ramp and hold at Eq. (12) x (1 - 1e-9): the analytic model must not lift "
                                 "(1e-2 alpha); engines (own threshold within 0.15 % of it) only no failure"
                               : "Fig. 6 VSSW, ramp and hold at Eq. (12) x (1 + 1e-9), ending once lifted: no failure, no NaN",
-                     true,
+                     sign < 0,
                      [sign](const std::string& engine, const EngineSettings& d, bool) {
                          Setup s = start(fig6_vssw(), sampled(d));
                          const double a = rest_threshold(s.scene) * (1.0 + sign * 1e-9);
@@ -196,7 +196,7 @@ std::vector<Case> make_cases() {
                                  "{} Pa, ode erp {} cfm {}, bullet erp {}; analytic and simbody-rigid refuse): as above",
                                  stiff ? "stiff" : "soft", stiff ? "1e18" : "1e12", stiff ? "1" : "0.2",
                                  stiff ? "0" : "1e-5", stiff ? "1" : "0"),
-                     stiff,
+                     false,  // Simbody at 1e18 Pa runs past a minute (README, "Stress")
                      [stiff](const std::string& engine, const EngineSettings& d, bool q) {
                          return free_vibration(fig6_vssw(), contact_end(engine, d, stiff), q);
                      }});

@@ -41,6 +41,16 @@ CaseResult check(const Case& c, const std::string& engine, const Setup& s, const
     const bool needs_answer = s.overturn_as_analytic || s.period_tol;
     Trajectory answer;
     if (needs_answer) answer = analytic_answer(s);  // its own failure propagates: "failed: reported" (judge)
+    // The analytic model's answer is known only where its own assumptions hold: a support that would have to pull
+    // (the roller, the base, the hinge: analytic/validity.hpp) means the real wall leaves the rocking mechanism, and an
+    // engine need not follow the model there. A friction warning (measured against a design value of 0.6, below the
+    // scene's friction 2) does not void it.
+    std::string void_reason;
+    for (const std::string& w : answer.warnings)
+        if (void_reason.empty() && w.find("friction coefficient") == std::string::npos) void_reason = w;
+    if (!void_reason.empty())
+        return make(c, engine, Verdict::ok, Failure::none,
+                    "no failure, no NaN; not held against the analytic model, whose assumptions fail: " + void_reason);
     if (s.overturn_as_analytic) {
         if (t.overturned != answer.overturned)
             return make(c, engine, Verdict::failed, Failure::wrong,
