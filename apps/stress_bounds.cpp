@@ -14,7 +14,7 @@ namespace vssw::cli {
 namespace {
 
 // The quick set's time limit (cmd_stress.cpp's default): a bound sees the verdicts `vssw stress --quick` gives.
-constexpr double kTimeLimit = 30.0;
+constexpr double kTimeLimit = 120.0;
 
 void add_once(std::vector<std::string>& list, const std::string& item) {
     if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);

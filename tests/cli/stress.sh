@@ -52,4 +52,16 @@ code=$?
 if [ "$code" -ne 2 ] || ! grep -q "nosuch" "$dir/bad.txt"; then
   echo "FAIL: --engines nosuch exited $code (expected 2 naming the engine)"; cat "$dir/bad.txt"; exit 1
 fi
+# [[stress]] bounds in vssw check: a verdict held (0), one out (1), a malformed bound or an unknown case (2).
+check_with() {  # ALLOWED CASE -> exit code of vssw check
+  printf 'suite = "default"\n[[stress]]\ncases = ["%s"]\nengines = ["analytic"]\nallowed = [%s]\n' "$2" "$1" >"$dir/b.toml"
+  "$vssw" check --bounds "$dir/b.toml" >"$dir/check.txt" 2>&1
+}
+check_with '"ok"' release-1e-6-alpha;      c0=$?
+check_with '"refused"' release-1e-6-alpha; c1=$?
+check_with '"maybe"' release-1e-6-alpha;   c2=$?
+check_with '"ok"' no-such-case;            c3=$?
+if [ "$c0 $c1 $c2 $c3" != "0 1 2 2" ]; then
+  echo "FAIL: vssw check with [[stress]] bounds exited $c0 $c1 $c2 $c3, expected 0 1 2 2"; cat "$dir/check.txt"; exit 1
+fi
 echo "ok: vssw stress --quick: $(python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(len(d['cases']), 'runs,', round(d['wall_time_s'],1), 's')" "$dir/stdout.json")"
