@@ -38,6 +38,7 @@ struct StressOptions {
     bool quick = false;
     bool json = false;
     std::vector<std::string> engines;
+    std::vector<std::string> cases;  // --cases: only these (no step search)
     double time_limit = 0.0;  // 0: the default of the set
     std::string threads_text = "0";
 };
@@ -64,8 +65,10 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     run.quick = o.quick;
     run.time_limit_s = report.time_limit_s;
     run.threads = threads;
+    run.cases = o.cases;
     report.cases = stress::run_cases(run);
-    if (!o.quick) report.stable_steps = stress::find_stable_steps(report.engines, report.time_limit_s, threads);
+    if (!o.quick && o.cases.empty())
+        report.stable_steps = stress::find_stable_steps(report.engines, report.time_limit_s, threads);
     report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Json doc = stress_json(report);
     if (!files.empty()) {
@@ -94,6 +97,7 @@ Command add_stress_command(CLI::App& root) {
     cmd->add_flag("--quick", o->quick, "the quick set (CI): fewer cases, shorter runs, no step search");
     cmd->add_option("--engines", o->engines, "backends, comma-separated (default: every one compiled in)")
         ->delimiter(',');
+    cmd->add_option("--cases", o->cases, "only these cases, comma-separated (no step search)")->delimiter(',');
     cmd->add_option("--time-limit", o->time_limit,
                     fmt::format("seconds per case and backend, up to {} (default {} quick, {} full)", kMaxTimeLimit,
                                 kQuickTimeLimit, kFullTimeLimit));

@@ -25,20 +25,20 @@ constexpr double kGenerousLimit = 60.0;
 constexpr double kShortLimit = 0.5;
 constexpr unsigned kSleepSeconds = 50;
 
-TEST(Isolated, ReturnsTheChildsAnswer) {
+TEST(StressRunner, ReturnsTheChildsAnswer) {
     const ChildResult r = run_isolated([] { return std::string("ok\tnone\tfine"); }, kGenerousLimit);
     EXPECT_EQ(r.end, ChildEnd::completed);
     EXPECT_EQ(r.output, "ok\tnone\tfine");
 }
 
-TEST(Isolated, AnAnswerLongerThanThePipeBufferArrivesWhole) {
+TEST(StressRunner, AnAnswerLongerThanThePipeBufferArrivesWhole) {
     const std::string big(1 << 20, 'x');  // 1 MiB: 16 times a Linux pipe's buffer
     const ChildResult r = run_isolated([&] { return big; }, kGenerousLimit);
     ASSERT_EQ(r.end, ChildEnd::completed);
     EXPECT_EQ(r.output.size(), big.size());
 }
 
-TEST(Isolated, ACaseThatSleepsPastTheLimitTimesOut) {
+TEST(StressRunner, ACaseThatSleepsPastTheLimitTimesOut) {
     const ChildResult r = run_isolated(
         [] {
             ::sleep(kSleepSeconds);
@@ -53,7 +53,7 @@ TEST(Isolated, ACaseThatSleepsPastTheLimitTimesOut) {
     EXPECT_TRUE(is_unsafe(v));
 }
 
-TEST(Isolated, ACaseThatAbortsIsACrashNamingTheSignal) {
+TEST(StressRunner, ACaseThatAbortsIsACrashNamingTheSignal) {
     const ChildResult r = run_isolated(
         []() -> std::string {
             std::abort();
@@ -66,7 +66,7 @@ TEST(Isolated, ACaseThatAbortsIsACrashNamingTheSignal) {
     EXPECT_NE(v.reason.find("crashed (signal " + std::to_string(SIGABRT)), std::string::npos) << v.reason;
 }
 
-TEST(Isolated, ASegfaultIsACrash) {
+TEST(StressRunner, ASegfaultIsACrash) {
     const ChildResult r = run_isolated(
         []() -> std::string {
             std::raise(SIGSEGV);
@@ -77,7 +77,7 @@ TEST(Isolated, ASegfaultIsACrash) {
     EXPECT_EQ(r.signal, SIGSEGV);
 }
 
-TEST(Isolated, AnExceptionIsAReportedFailureWithItsMessage) {
+TEST(StressRunner, AnExceptionIsAReportedFailureWithItsMessage) {
     const ChildResult r = run_isolated([]() -> std::string { throw std::runtime_error("engine blew up at 1 s"); },
                                        kGenerousLimit);
     EXPECT_EQ(r.end, ChildEnd::threw);
@@ -87,14 +87,14 @@ TEST(Isolated, AnExceptionIsAReportedFailureWithItsMessage) {
     EXPECT_FALSE(is_unsafe(v));
 }
 
-TEST(Isolated, ALibraryCallingExitIsNotAnAnswer) {
+TEST(StressRunner, ALibraryCallingExitIsNotAnAnswer) {
     const ChildResult r = run_isolated([]() -> std::string { ::_exit(7); }, kGenerousLimit);
     EXPECT_EQ(r.end, ChildEnd::exited);
     EXPECT_EQ(r.exit_code, 7);
     EXPECT_TRUE(is_unsafe(result_of(r, "exiter", "none")));
 }
 
-TEST(Isolated, SeveralThreadsEachGetTheirOwnChild) {
+TEST(StressRunner, SeveralThreadsEachGetTheirOwnChild) {
     std::string a, b;
     std::thread ta([&] { a = run_isolated([] { return std::string("a"); }, kGenerousLimit).output; });
     std::thread tb([&] { b = run_isolated([] { return std::string("b"); }, kGenerousLimit).output; });
@@ -104,7 +104,7 @@ TEST(Isolated, SeveralThreadsEachGetTheirOwnChild) {
     EXPECT_EQ(b, "b");
 }
 
-TEST(Verdicts, EncodeAndDecodeAgree) {
+TEST(StressVerdicts, EncodeAndDecodeAgree) {
     const CaseResult r{"x", "e", Verdict::failed, Failure::nan, "NaN in the output at t = 1.0 s", 0.0};
     const CaseResult back = decode(encode(r));
     EXPECT_EQ(back.verdict, Verdict::failed);
@@ -112,7 +112,7 @@ TEST(Verdicts, EncodeAndDecodeAgree) {
     EXPECT_EQ(back.reason, r.reason);
 }
 
-TEST(Cases, NamesAreUniqueAndTheQuickSetIsAProperSubset) {
+TEST(StressCases, NamesAreUniqueAndTheQuickSetIsAProperSubset) {
     std::set<std::string> names;
     int quick = 0;
     for (const Case& c : all_cases()) {
@@ -124,19 +124,19 @@ TEST(Cases, NamesAreUniqueAndTheQuickSetIsAProperSubset) {
     EXPECT_LT(quick, static_cast<int>(all_cases().size()));
 }
 
-TEST(Cases, ABackendWithoutTheKnobRefusesWithAReason) {
+TEST(StressCases, ABackendWithoutTheKnobRefusesWithAReason) {
     const CaseResult r = judge(*find_case("contact-soft"), "analytic", true);
     EXPECT_EQ(r.verdict, Verdict::refused);
     EXPECT_NE(r.reason.find("no contact stiffness"), std::string::npos) << r.reason;
 }
 
-TEST(Cases, TheAnalyticModelBelowItsThresholdDoesNotLift) {
+TEST(StressCases, TheAnalyticModelBelowItsThresholdDoesNotLift) {
     // Eq. (12) x (1 - 1e-9): the rest threshold is exact for the analytic model, so it must stay on its base.
     const CaseResult r = judge(*find_case("pulse-threshold-1e-9"), "analytic", true);
     EXPECT_EQ(r.verdict, Verdict::ok) << r.reason;
 }
 
-TEST(Cases, AnUnknownCaseOrEngineIsRefusedBeforeAnythingRuns) {
+TEST(StressCases, AnUnknownCaseOrEngineIsRefusedBeforeAnythingRuns) {
     RunOptions o;
     o.engines = {"analytic"};
     o.cases = {"no-such-case"};
