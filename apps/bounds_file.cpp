@@ -93,9 +93,9 @@ const json& list_of_tables(const json& doc, const char* key, const std::string& 
 compare::Bounds to_bounds(const json& doc, const std::string& name) {
     if (!doc.is_object()) throw InputError(fmt::format("bounds file {}: the top level must be a table", name));
     for (const auto& item : doc.items())
-        if (item.key() != "suite" && item.key() != "analytic" && item.key() != "engine")
-            throw InputError(
-                fmt::format("bounds file {}: unknown key '{}' (known: suite, analytic, engine)", name, item.key()));
+        if (item.key() != "suite" && item.key() != "analytic" && item.key() != "engine" && item.key() != "stress")
+            throw InputError(fmt::format("bounds file {}: unknown key '{}' (known: suite, analytic, engine, stress)",
+                                         name, item.key()));
     compare::Bounds bounds;
     if (doc.contains("suite")) {
         if (!doc["suite"].is_string())
@@ -129,8 +129,20 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
         }
         bounds.engines.push_back(b);
     }
-    if (bounds.analytic.empty() && bounds.engines.empty())
-        throw InputError(fmt::format("bounds file {}: no bounds ([[analytic]] or [[engine]] entries)", name));
+    i = 0;
+    for (const json& entry : list_of_tables(doc, "stress", name)) {
+        const EntryReader r(entry, fmt::format("bounds file {}: stress bound #{}", name, ++i),
+                            {"cases", "engines", "allowed"});
+        compare::StressBound b{r.texts("cases"), r.has("engines") ? r.texts("engines") : std::vector<std::string>{},
+                               r.texts("allowed")};
+        for (const std::string& v : b.allowed)
+            if (v != "ok" && v != "refused" && v != "failed")
+                throw InputError(fmt::format("{}: 'allowed' holds '{}', not a verdict (ok, refused, failed)", r.where(), v));
+        bounds.stress.push_back(b);
+    }
+    if (bounds.analytic.empty() && bounds.engines.empty() && bounds.stress.empty())
+        throw InputError(
+            fmt::format("bounds file {}: no bounds ([[analytic]], [[engine]] or [[stress]] entries)", name));
     return bounds;
 }
 

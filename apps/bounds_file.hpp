@@ -13,6 +13,10 @@
 //   metric = "period"
 //   max_error = 0.005                    # |rel_error| <= max_error, or
 //   # error = [-0.14, -0.12]             # min <= rel_error <= max (a known, explained offset)
+//   [[stress]]                           # verdicts of `vssw stress --quick` (README, "Stress")
+//   cases = ["hinge-0.05", "xi-50"]
+//   engines = ["ode"]                    # optional: every backend compiled in
+//   allowed = ["ok"]                     # of ok, refused, failed
 //
 // Every problem (missing file, syntax, unknown key, wrong type, NaN, negative bound, empty file) is an InputError
 // naming the file and the entry.

@@ -17,6 +17,7 @@
 #include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
+#include "apps/stress_bounds.hpp"
 #include "apps/json.hpp"
 #include "compare/bounds.hpp"
 #include "compare/suite.hpp"
@@ -35,11 +36,13 @@ struct CheckOptions {
 };
 
 std::string value_text(const compare::BoundVerdict& v) {
+    if (!v.value_label.empty()) return v.value_label;  // a stress verdict
     if (!std::isfinite(v.value)) return "-";
     return v.engine == "analytic" ? fmt::format("{:.8g}", v.value) : fmt::format("{:+.3e}", v.value);
 }
 
 std::string bound_text(const compare::BoundVerdict& v) {
+    if (!v.allowed_label.empty()) return v.allowed_label;
     return v.engine == "analytic" ? fmt::format("[{:.8g}, {:.8g}]", v.lo, v.hi)
                                   : fmt::format("[{:+.3e}, {:+.3e}]", v.lo, v.hi);
 }
@@ -67,10 +70,16 @@ Json verdicts_json(const std::vector<compare::BoundVerdict>& verdicts, const com
         j["engine"] = v.engine;
         j["case"] = v.case_id;
         j["metric"] = v.metric;
-        j["kind"] = v.engine == "analytic" ? "drift" : "rel_error";
-        j["value"] = finite_or_null(v.value);
-        j["min"] = v.lo;
-        j["max"] = v.hi;
+        if (!v.allowed_label.empty()) {  // a stress verdict: the verdict and the allowed ones
+            j["kind"] = "stress";
+            j["value"] = v.value_label;
+            j["allowed"] = v.allowed_label;
+        } else {
+            j["kind"] = v.engine == "analytic" ? "drift" : "rel_error";
+            j["value"] = finite_or_null(v.value);
+            j["min"] = v.lo;
+            j["max"] = v.hi;
+        }
         j["held"] = v.held;
         j["note"] = v.note;
         list.push_back(j);
@@ -149,7 +158,10 @@ void run_check(const CheckOptions& o, std::ostream& out) {
         results.wall_time_s += r.wall_time_s;
         results.threads = r.threads;
     }
-    const std::vector<compare::BoundVerdict> verdicts = compare::evaluate(bounds, results);
+    std::vector<compare::BoundVerdict> verdicts = compare::evaluate(bounds, results);
+    // [[stress]] bounds: the named stress cases in their quick form (a few seconds; README, "Stress").
+    const auto stress_verdicts = check_stress_bounds(bounds.stress, o.bounds, o.threads);
+    verdicts.insert(verdicts.end(), stress_verdicts.begin(), stress_verdicts.end());
     const auto out_of_bounds = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.held; });
     if (o.json) {
         out << verdicts_json(verdicts, results, o.bounds, bounds.suite).dump(2) << '\n';
@@ -182,7 +194,9 @@ Command add_check_command(CLI::App& root) {
         "engine's relative error against the analytic model (engine / analytic - 1) lies in [min, max]; an analytic "
         "bound when the analytic model's own value lies within max_drift (relative) of the stored reference. A "
         "metric that could not be measured (the engine failed, no impact) does not hold. Exit codes: 0 all hold, 1 "
-        "some do not, 2 bad input (a missing or malformed bounds file, an unknown case, engine or key).\n"
+        "some do not, 2 bad input (a missing or malformed bounds file, an unknown case, engine or key). [[stress]] "
+        "bounds run the named `vssw stress` cases in their quick form and hold each verdict against the allowed "
+        "ones.\n"
         "JSON keys: bounds, suite, held, verdicts [{engine, case, metric, kind (drift or rel_error), value, min, max, "
         "held, note}], wall_time_s.");
     return {cmd, [o](std::ostream& out) {

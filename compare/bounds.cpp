@@ -59,7 +59,7 @@ std::vector<BoundVerdict> evaluate(const Bounds& bounds, const SuiteResults& res
         const double value = row != nullptr ? row->engine_value : kNaN;
         // The allowed interval of the value itself: reference (1 -/+ max_drift), or +/- max_drift about 0.
         const double spread = b.reference != 0.0 ? std::abs(b.reference) * b.max_drift : b.max_drift;
-        BoundVerdict v{"analytic", b.case_id, b.metric, value, b.reference - spread, b.reference + spread, false, ""};
+        BoundVerdict v{"analytic", b.case_id, b.metric, value, b.reference - spread, b.reference + spread, false, "", "", ""};
         v.held = std::isfinite(value) && value >= v.lo && value <= v.hi;
         if (!std::isfinite(value)) v.note = missing_note(results, b.case_id, "analytic", row);
         verdicts.push_back(v);
@@ -68,7 +68,7 @@ std::vector<BoundVerdict> evaluate(const Bounds& bounds, const SuiteResults& res
         for (const std::string& case_id : b.case_ids) {
             const MetricRow* row = find_row(results, case_id, b.engine, b.metric);
             const double value = row != nullptr ? row->rel_error : kNaN;
-            BoundVerdict v{b.engine, case_id, b.metric, value, b.min_error, b.max_error, false, ""};
+            BoundVerdict v{b.engine, case_id, b.metric, value, b.min_error, b.max_error, false, "", "", ""};
             v.held = std::isfinite(value) && value >= b.min_error && value <= b.max_error;
             if (!std::isfinite(value)) v.note = missing_note(results, case_id, b.engine, row);
             verdicts.push_back(v);

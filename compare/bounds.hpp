@@ -29,10 +29,19 @@ struct EngineBound {
     double max_error;
 };
 
+// The verdicts `vssw stress --quick` may give (README, "Stress"): each listed case on each listed engine must end with
+// one of `allowed` ("ok", "refused", "failed"). Held in apps/ (cmd_check.cpp), which runs the stress cases.
+struct StressBound {
+    std::vector<std::string> case_ids;  // stress case names (stress/cases.cpp)
+    std::vector<std::string> engines;   // empty: every backend compiled in
+    std::vector<std::string> allowed;
+};
+
 struct Bounds {
     std::string suite = "default";  // where the case ids come from: a shipped suite or a suite file (study::read_suite)
     std::vector<AnalyticBound> analytic;
     std::vector<EngineBound> engines;
+    std::vector<StressBound> stress;
 };
 
 // The case ids and engines the bounds need (each once, in first-mention order): `check` runs only these.
@@ -48,6 +57,8 @@ struct BoundVerdict {
     double lo, hi;    // the allowed interval for `value`
     bool held;
     std::string note;  // why it failed when that is not the number (the engine failed, the metric is missing)
+    // A stress bound's verdict and the verdicts allowed, shown instead of value, lo and hi (which are NaN).
+    std::string value_label, allowed_label;
 };
 
 // Every bound against the results, in the bounds' order. A missing row, a NaN or an engine failure on the case is a

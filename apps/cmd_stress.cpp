@@ -1,0 +1,118 @@
+// `vssw stress`: the stress set (stress/cases.cpp) on every backend, each case in a child process with a time limit;
+// the full set also searches each engine's largest stable step. Exit 0 when no case hung, crashed, gave NaN or
+// contradicted the analytic model (ok, refused with a reason, or failed as reported by the backend itself), 3 when
+// one did, 2 on bad input.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+#include "apps/commands.hpp"
+#include "apps/option_values.hpp"
+#include "apps/simulation_failure.hpp"
+#include "apps/stress_output.hpp"
+#include "multibody/engine.hpp"
+#include "stress/run.hpp"
+#include "study/atomic_file.hpp"
+
+namespace vssw::cli {
+namespace {
+
+// --time-limit's range [s]: an hour per case is far past the slowest full case measured (README, "Stress").
+constexpr double kMaxTimeLimit = 3600.0;
+// Defaults [s]: the quick set's runs took up to 15 s each on 2 cores under load 21 (simbody-rigid holding the
+// threshold pulse), 30 s timed that one out with a second run beside it; the full set's 600 s harmonic
+// and 0.01 x steps up to minutes; the limits leave room for a loaded machine (README, "Stress").
+constexpr double kQuickTimeLimit = 120.0;
+constexpr double kFullTimeLimit = 300.0;
+
+struct StressOptions {
+    std::string out_dir;
+    bool quick = false;
+    bool json = false;
+    std::vector<std::string> engines;
+    std::vector<std::string> cases;  // --cases: only these (no step search)
+    double time_limit = 0.0;  // 0: the default of the set
+    std::string threads_text = "0";
+};
+
+void run_stress(const StressOptions& o, std::ostream& out) {
+    if (!(o.time_limit >= 0.0 && o.time_limit <= kMaxTimeLimit))
+        throw InputError(fmt::format("--time-limit must be from 0 to {} s (0: {} s quick, {} s full), got {}",
+                                     kMaxTimeLimit, kQuickTimeLimit, kFullTimeLimit, o.time_limit));
+    StressReport report;
+    report.quick = o.quick;
+    report.time_limit_s = o.time_limit > 0.0 ? o.time_limit : (o.quick ? kQuickTimeLimit : kFullTimeLimit);
+    report.engines = o.engines.empty() ? multibody::available_engines() : parse_engine_list("--engines", o.engines);
+    const int threads = parse_bounded_int("--threads", o.threads_text, 0, kMaxThreads, " (0: the available cores)");
+    // Check the folder can be written before anything runs (AtomicFile creates its temporary file at once).
+    std::vector<std::unique_ptr<study::AtomicFile>> files;
+    if (!o.out_dir.empty()) {
+        std::filesystem::create_directories(o.out_dir);
+        for (const char* name : {"stress.json", "stress.csv", "stress.md"})
+            files.push_back(std::make_unique<study::AtomicFile>(std::filesystem::path(o.out_dir) / name));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    stress::RunOptions run;
+    run.engines = report.engines;
+    run.quick = o.quick;
+    run.time_limit_s = report.time_limit_s;
+    run.threads = threads;
+    run.cases = o.cases;
+    report.cases = stress::run_cases(run);
+    if (!o.quick && o.cases.empty())
+        report.stable_steps = stress::find_stable_steps(report.engines, report.time_limit_s, threads);
+    report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const Json doc = stress_json(report);
+    if (!files.empty()) {
+        files[0]->stream() << doc.dump(2) << '\n';
+        write_stress_csv(files[1]->stream(), report);
+        write_stress_md(files[2]->stream(), report);
+        for (auto& f : files) f->commit();
+    }
+    if (o.json) out << doc.dump(2) << '\n';
+    else write_stress_table(out, report);
+    std::vector<std::string> unsafe;
+    for (const auto& c : report.cases)
+        if (stress::is_unsafe(c)) unsafe.push_back(fmt::format("{} on {}: {}", c.name, c.engine, c.reason));
+    if (!unsafe.empty())
+        throw SimulationFailure(fmt::format("{} of {} stress runs hung, crashed, gave NaN or a wrong answer: {}",
+                                            unsafe.size(), report.cases.size(), fmt::join(unsafe, "; ")));
+}
+
+}  // namespace
+
+Command add_stress_command(CLI::App& root) {
+    auto o = std::make_shared<StressOptions>();
+    CLI::App* cmd = root.add_subcommand(
+        "stress", "Hard cases on every backend, each in a child process with a time limit: ok, refused or failed");
+    cmd->add_option("--out", o->out_dir, "folder for stress.json, stress.csv and stress.md (created if missing)");
+    cmd->add_flag("--quick", o->quick, "the quick set (CI): fewer cases, shorter runs, no step search");
+    cmd->add_option("--engines", o->engines, "backends, comma-separated (default: every one compiled in)")
+        ->delimiter(',');
+    cmd->add_option("--cases", o->cases, "only these cases, comma-separated (no step search)")->delimiter(',');
+    cmd->add_option("--time-limit", o->time_limit,
+                    fmt::format("seconds per case and backend, up to {} (default {} quick, {} full)", kMaxTimeLimit,
+                                kQuickTimeLimit, kFullTimeLimit));
+    cmd->add_option("--threads", o->threads_text,
+                    fmt::format("cases at once, 0 to {} (default 0: the available cores)", kMaxThreads));
+    cmd->add_flag("--json", o->json, "print JSON instead of the verdict table");
+    cmd->footer(
+        "Verdicts: ok (no failure, no NaN, and the case's checks held: README \"Stress\"), refused (the backend or "
+        "the library refused the input, with its message), failed (reported: the backend's own failure; wrong: a "
+        "result contradicting the analytic model; nan; timed_out; crashed). Exit codes: 0 when nothing hung, "
+        "crashed, gave NaN or a wrong answer; 3 when something did; 2 bad input.\n"
+        "JSON keys: quick, time_limit_s, engines, cases [{name, engine, verdict, failure, reason, time_s}], unsafe, "
+        "stable_steps [{engine, wall, default_dt, largest_stable_dt, first_unstable_dt, ...}], case_list, "
+        "wall_time_s.");
+    return {cmd, [o](std::ostream& out) { run_stress(*o, out); }};
+}
+
+}  // namespace vssw::cli

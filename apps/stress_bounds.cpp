@@ -1,0 +1,63 @@
+#include "apps/stress_bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/engine.hpp"
+#include "stress/case.hpp"
+#include "stress/run.hpp"
+
+namespace vssw::cli {
+namespace {
+
+// The quick set's time limit (cmd_stress.cpp's default): a bound sees the verdicts `vssw stress --quick` gives.
+constexpr double kTimeLimit = 120.0;
+
+void add_once(std::vector<std::string>& list, const std::string& item) {
+    if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
+}
+
+}  // namespace
+
+std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare::StressBound>& bounds,
+                                                       const std::string& path, int threads) {
+    if (bounds.empty()) return {};
+    const std::vector<std::string> available = multibody::available_engines();
+    stress::RunOptions run;
+    run.quick = true;
+    run.time_limit_s = kTimeLimit;
+    run.threads = threads;
+    for (const compare::StressBound& b : bounds) {
+        for (const std::string& id : b.case_ids) {
+            if (stress::find_case(id) == nullptr)
+                throw InputError(fmt::format("bounds file {}: no stress case '{}'", path, id));
+            add_once(run.cases, id);
+        }
+        for (const std::string& e : b.engines.empty() ? available : b.engines) {
+            if (std::find(available.begin(), available.end(), e) == available.end())
+                throw InputError(fmt::format("bounds file {}: engine '{}' is not in this build (available: {})", path, e,
+                                             fmt::join(available, ", ")));
+            add_once(run.engines, e);
+        }
+    }
+    const std::vector<stress::CaseResult> results = stress::run_cases(run);
+    std::vector<compare::BoundVerdict> verdicts;
+    for (const compare::StressBound& b : bounds)
+        for (const std::string& id : b.case_ids)
+            for (const std::string& e : b.engines.empty() ? available : b.engines) {
+                const auto r = std::find_if(results.begin(), results.end(),
+                                            [&](const stress::CaseResult& x) { return x.name == id && x.engine == e; });
+                compare::BoundVerdict v{e, id, "stress", NAN, NAN, NAN, false, "", "", fmt::format("{}", fmt::join(b.allowed, "|"))};
+                v.value_label = stress::to_string(r->verdict);
+                if (r->verdict == stress::Verdict::failed) v.value_label += std::string(" (") + stress::to_string(r->failure) + ")";
+                v.held = std::find(b.allowed.begin(), b.allowed.end(), stress::to_string(r->verdict)) != b.allowed.end();
+                if (!v.held) v.note = r->reason;
+                verdicts.push_back(v);
+            }
+    return verdicts;
+}
+
+}  // namespace vssw::cli

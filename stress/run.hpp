@@ -1,0 +1,28 @@
+#pragma once
+// Running the stress set: every (case, backend) pair in a child process of its own (isolated.hpp) with a time limit,
+// several at a time on a pool of threads that only wait for their children.
+#include <string>
+#include <vector>
+
+#include "stress/isolated.hpp"
+#include "stress/verdict.hpp"
+
+namespace vssw::stress {
+
+struct RunOptions {
+    std::vector<std::string> engines;  // backends to run (each must be compiled in: InputError otherwise)
+    bool quick = false;                // the quick set (Case::quick) with shortened durations
+    double time_limit_s = 60.0;        // per case and backend
+    int threads = 0;                   // children at once (0: the available cores)
+    // Only these cases (names; any of the set, run at the quick durations when `quick`); empty: the whole set or the
+    // quick set. An unknown name is an InputError.
+    std::vector<std::string> cases;
+};
+
+// The verdicts, in case order then engine order.
+std::vector<CaseResult> run_cases(const RunOptions& options);
+
+// A child's end as a verdict: its own answer when it completed, otherwise failed (timed out, crashed, threw).
+CaseResult result_of(const ChildResult& child, const std::string& name, const std::string& engine);
+
+}  // namespace vssw::stress

@@ -1,0 +1,150 @@
+// The stress runner (stress/isolated.hpp, run.hpp, judge.hpp): one bad case cannot take a run down, and each way a
+// child can end has its verdict. The verdicts of the stress set itself are asserted through the program
+// (tests/cli/stress.sh).
+#include <csignal>
+#include <cstdlib>
+#include <set>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "stress/case.hpp"
+#include "stress/isolated.hpp"
+#include "stress/judge.hpp"
+#include "stress/run.hpp"
+
+namespace vssw::stress {
+namespace {
+
+// A time limit the quick children below end well inside even on a loaded machine (they return at once).
+constexpr double kGenerousLimit = 60.0;
+// The limit of the case that sleeps: short, so the test is quick; the sleep is 100 times longer, so only the kill
+// can end it in time.
+constexpr double kShortLimit = 0.5;
+constexpr unsigned kSleepSeconds = 50;
+
+TEST(StressRunner, ReturnsTheChildsAnswer) {
+    const ChildResult r = run_isolated([] { return std::string("ok\tnone\tfine"); }, kGenerousLimit);
+    EXPECT_EQ(r.end, ChildEnd::completed);
+    EXPECT_EQ(r.output, "ok\tnone\tfine");
+}
+
+TEST(StressRunner, AnAnswerLongerThanThePipeBufferArrivesWhole) {
+    const std::string big(1 << 20, 'x');  // 1 MiB: 16 times a Linux pipe's buffer
+    const ChildResult r = run_isolated([&] { return big; }, kGenerousLimit);
+    ASSERT_EQ(r.end, ChildEnd::completed);
+    EXPECT_EQ(r.output.size(), big.size());
+}
+
+TEST(StressRunner, ACaseThatSleepsPastTheLimitTimesOut) {
+    const ChildResult r = run_isolated(
+        [] {
+            ::sleep(kSleepSeconds);
+            return std::string("late");
+        },
+        kShortLimit);
+    EXPECT_EQ(r.end, ChildEnd::timed_out);
+    const CaseResult v = result_of(r, "sleeper", "none");
+    EXPECT_EQ(v.verdict, Verdict::failed);
+    EXPECT_EQ(v.failure, Failure::timed_out);
+    EXPECT_NE(v.reason.find("timed out"), std::string::npos) << v.reason;
+    EXPECT_TRUE(is_unsafe(v));
+}
+
+TEST(StressRunner, ACaseThatAbortsIsACrashNamingTheSignal) {
+    const ChildResult r = run_isolated(
+        []() -> std::string {
+            std::abort();
+        },
+        kGenerousLimit);
+    EXPECT_EQ(r.end, ChildEnd::crashed);
+    EXPECT_EQ(r.signal, SIGABRT);
+    const CaseResult v = result_of(r, "aborter", "none");
+    EXPECT_EQ(v.failure, Failure::crashed);
+    EXPECT_NE(v.reason.find("crashed (signal " + std::to_string(SIGABRT)), std::string::npos) << v.reason;
+}
+
+TEST(StressRunner, ASegfaultIsACrash) {
+    const ChildResult r = run_isolated(
+        []() -> std::string {
+            std::raise(SIGSEGV);
+            return "survived";
+        },
+        kGenerousLimit);
+    EXPECT_EQ(r.end, ChildEnd::crashed);
+    EXPECT_EQ(r.signal, SIGSEGV);
+}
+
+TEST(StressRunner, AnExceptionIsAReportedFailureWithItsMessage) {
+    const ChildResult r = run_isolated([]() -> std::string { throw std::runtime_error("engine blew up at 1 s"); },
+                                       kGenerousLimit);
+    EXPECT_EQ(r.end, ChildEnd::threw);
+    const CaseResult v = result_of(r, "thrower", "none");
+    EXPECT_EQ(v.failure, Failure::reported);
+    EXPECT_EQ(v.reason, "engine blew up at 1 s");
+    EXPECT_FALSE(is_unsafe(v));
+}
+
+TEST(StressRunner, ALibraryCallingExitIsNotAnAnswer) {
+    const ChildResult r = run_isolated([]() -> std::string { ::_exit(7); }, kGenerousLimit);
+    EXPECT_EQ(r.end, ChildEnd::exited);
+    EXPECT_EQ(r.exit_code, 7);
+    EXPECT_TRUE(is_unsafe(result_of(r, "exiter", "none")));
+}
+
+TEST(StressRunner, SeveralThreadsEachGetTheirOwnChild) {
+    std::string a, b;
+    std::thread ta([&] { a = run_isolated([] { return std::string("a"); }, kGenerousLimit).output; });
+    std::thread tb([&] { b = run_isolated([] { return std::string("b"); }, kGenerousLimit).output; });
+    ta.join();
+    tb.join();
+    EXPECT_EQ(a, "a");
+    EXPECT_EQ(b, "b");
+}
+
+TEST(StressVerdicts, EncodeAndDecodeAgree) {
+    const CaseResult r{"x", "e", Verdict::failed, Failure::nan, "NaN in the output at t = 1.0 s", 0.0};
+    const CaseResult back = decode(encode(r));
+    EXPECT_EQ(back.verdict, Verdict::failed);
+    EXPECT_EQ(back.failure, Failure::nan);
+    EXPECT_EQ(back.reason, r.reason);
+}
+
+TEST(StressCases, NamesAreUniqueAndTheQuickSetIsAProperSubset) {
+    std::set<std::string> names;
+    int quick = 0;
+    for (const Case& c : all_cases()) {
+        EXPECT_TRUE(names.insert(c.name).second) << c.name;
+        EXPECT_FALSE(c.what.empty()) << c.name;
+        quick += c.quick ? 1 : 0;
+    }
+    EXPECT_GT(quick, 0);
+    EXPECT_LT(quick, static_cast<int>(all_cases().size()));
+}
+
+TEST(StressCases, ABackendWithoutTheKnobRefusesWithAReason) {
+    const CaseResult r = judge(*find_case("contact-soft"), "analytic", true);
+    EXPECT_EQ(r.verdict, Verdict::refused);
+    EXPECT_NE(r.reason.find("no contact stiffness"), std::string::npos) << r.reason;
+}
+
+TEST(StressCases, TheAnalyticModelBelowItsThresholdDoesNotLift) {
+    // Eq. (12) x (1 - 1e-9): the rest threshold is exact for the analytic model, so it must stay on its base.
+    const CaseResult r = judge(*find_case("pulse-threshold-1e-9"), "analytic", true);
+    EXPECT_EQ(r.verdict, Verdict::ok) << r.reason;
+}
+
+TEST(StressCases, AnUnknownCaseOrEngineIsRefusedBeforeAnythingRuns) {
+    RunOptions o;
+    o.engines = {"analytic"};
+    o.cases = {"no-such-case"};
+    EXPECT_THROW(run_cases(o), std::runtime_error);
+    o.cases = {};
+    o.engines = {"no-such-engine"};
+    EXPECT_THROW(run_cases(o), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace vssw::stress
