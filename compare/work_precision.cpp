@@ -47,7 +47,11 @@ multibody::WallScene problem_scene(const std::string& problem) {
     return fig6_vssw();
 }
 
-std::string sci(double v) { return fmt::format("{:.0e}", v); }
+// A setting's value in a label: 1e-04, 2.5e-04 (one decimal only when it is needed).
+std::string sci(double v) {
+    const std::string whole = fmt::format("{:.0e}", v);
+    return std::stod(whole) == v ? whole : fmt::format("{:.1e}", v);
+}
 
 BenchSetting with_dt(const multibody::Engine& engine, double dt, int iterations, std::string label) {
     multibody::EngineSettings s = engine.default_settings();
