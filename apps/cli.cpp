@@ -78,6 +78,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         add_check_command(app),
         add_study_command(app),
         add_stress_command(app),
+        add_bench_command(app),
     };
     try {
         app.parse(argc, argv);

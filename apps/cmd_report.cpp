@@ -22,6 +22,7 @@
 #include "apps/progress.hpp"
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
+#include "study/bench_files.hpp"
 #include "study/clock.hpp"
 #include "study/report_write.hpp"
 #include "study/suite_file.hpp"
@@ -39,6 +40,7 @@ struct ReportCommandOptions {
     std::string threads_text = "0";  // --threads as typed, checked by parse_bounded_int
     int threads = 0;
     bool no_plots = false;
+    std::string bench;  // a finished `vssw bench` folder to include
     std::string gnuplot = "gnuplot";
     std::string data = VSSW_DATA_DIR;
     std::string out;
@@ -117,6 +119,9 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--threads", o->threads_text,
                     fmt::format("worker threads, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
+    cmd->add_option("--bench", o->bench,
+                    "a finished `vssw bench --out DIR` folder: its cheapest settings and work-precision plots end the "
+                    "report (the report does not run the sweep)");
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_option("--data", o->data, "folder of the ground-motion records (default: the source tree's data/)");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
@@ -139,6 +144,7 @@ Command add_report_command(CLI::App& root) {
                 const std::vector<std::string> engines = checked_engines(o->engines);
                 o->threads = parse_bounded_int("--threads", o->threads_text, 0, kMaxThreads, " (0: the available cores)");
                 require_data_folder(o->data);
+                if (!o->bench.empty()) study::check_bench_dir(o->bench);
                 compare::Suite suite = study::read_suite(o->suite, o->data);
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
                 require_records_readable(suite);
@@ -169,6 +175,7 @@ Command add_report_command(CLI::App& root) {
                 study::ReportOptions options;
                 options.plots = !o->no_plots;
                 options.plot.gnuplot = o->gnuplot;
+                options.bench_dir = o->bench;
                 const study::ReportFiles files = study::write_suite_report(dir, suite, results, meta, options);
                 folder.keep();
                 for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';

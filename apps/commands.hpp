@@ -26,5 +26,6 @@ Command add_report_command(CLI::App& root);
 Command add_check_command(CLI::App& root);
 Command add_study_command(CLI::App& root);
 Command add_stress_command(CLI::App& root);
+Command add_bench_command(CLI::App& root);
 
 }  // namespace vssw::cli

@@ -7,6 +7,7 @@
 
 #include "analytic/error.hpp"
 #include "study/atomic_file.hpp"
+#include "study/bench_files.hpp"
 #include "study/document_html.hpp"
 #include "study/document_markdown.hpp"
 #include "study/report_data.hpp"
@@ -53,7 +54,11 @@ ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite,
     write_file(dir / "metrics.csv", [&](std::ostream& out) { write_metrics_csv(out, results); });
     write_file(dir / "failures.csv", [&](std::ostream& out) { write_failures_csv(out, results); });
     write_file(dir / "traces.csv", [&](std::ostream& out) { write_traces_csv(out, results); });
-    const Document doc = build_document(in, plots, !options.plots);
+    Document doc = build_document(in, plots, !options.plots);
+    if (!options.bench_dir.empty()) {
+        const std::vector<DocBlock> bench = bench_report_blocks(options.bench_dir, plots_dir);
+        doc.blocks.insert(doc.blocks.end(), bench.begin(), bench.end());
+    }
     write_file(files.markdown, [&](std::ostream& out) { write_markdown(out, doc); });
     write_file(files.html, [&](std::ostream& out) { write_html(out, doc, plots_dir); });
     for (const EngineSummary& s : summarize(in)) files.summary_lines.push_back(s.line);

@@ -15,6 +15,8 @@ namespace vssw::study {
 struct ReportOptions {
     bool plots = true;  // false: --no-plots
     PlotOptions plot;
+    // --bench: a finished `vssw bench` folder whose section (study/bench_files.hpp) ends the report; empty: none.
+    std::string bench_dir;
 };
 
 struct ReportFiles {
