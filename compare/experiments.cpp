@@ -73,8 +73,8 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
                                const ThresholdOptions& o) {
     require_scene(scene);
     require(std::isfinite(o.ramp_time) && o.ramp_time > 0.0, "ramp time", "a positive finite time in s", o.ramp_time);
-    require(std::isfinite(o.start_g) && o.start_g > 0.0, "first threshold guess (g)", "a positive finite number",
-            o.start_g);
+    require(std::isfinite(o.bracket) && o.bracket > 1.0, "threshold search bracket (factor around the analytic "
+            "threshold)", "a finite number > 1", o.bracket);
     require(std::isfinite(o.max_over_estimate) && o.max_over_estimate >= 2.0,
             "threshold search cap (multiple of the analytic threshold)", ">= 2", o.max_over_estimate);
     require(std::isfinite(o.sample_dt) && o.sample_dt >= 0.0, "trial sampling interval", ">= 0 s", o.sample_dt);
@@ -98,16 +98,29 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
         return lifted(engine.simulate(scene, ex, trial_settings), lift);
     };
 
-    // Bracket: double from the guess until the wall lifts; the last value that did not is the lower end.
-    double lo = 0.0, hi = o.start_g;
+    // Bracket around the estimate (ThresholdOptions: why it holds for an engine within its target). The upper end
+    // first: when it does not lift, the lower end would not either, and that trial is saved.
+    double factor = o.bracket;
+    double lo = estimate_g / factor, hi = estimate_g * factor;
+    bool lower_known = false;  // lo is a trial that did not lift
     while (!lifts(hi)) {
         lo = hi;
-        hi *= 2.0;
-        if (hi > cap_g)
+        lower_known = true;  // did not lift: a lower end, the upper end moves out
+        if (hi >= cap_g)
             throw multibody::EngineFailure(
                 fmt::format("{}: the wall did not lift under a constant ground acceleration of {} g ({:.3g} times the "
                             "analytic model's threshold, {:.4g} g)",
                             engine.name(), lo, lo / estimate_g, estimate_g));
+        factor *= factor;
+        hi = std::min(estimate_g * factor, cap_g);
+    }
+    if (!lower_known) {  // the upper end held at once: now the lower end must not lift
+        factor = o.bracket;
+        while (lo > 0.0 && lifts(lo)) {
+            hi = lo;  // lifted: an upper end, the lower end moves out
+            factor *= factor;
+            lo = factor > o.max_over_estimate ? 0.0 : estimate_g / factor;
+        }
     }
     while (hi - lo > o.rel_tol * hi) {
         const double mid = 0.5 * (lo + hi);

@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <ctime>
 #include <limits>
 #include <memory>
+#include <atomic>
 #include <mutex>
 #include <set>
 #include <utility>
@@ -39,7 +41,15 @@ constexpr double kFreeTraceSeconds = 10.0;
 
 // Running ----------------------------------------------------------------------------------------------------------
 
+// CPU time of the calling thread [s] (POSIX): a task runs on one thread from start to end.
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 struct TaskOutput {
+    double cpu_s = 0.0;
     std::vector<MetricRow> rows;
     std::vector<Trace> traces;
     std::optional<std::string> failure;
@@ -107,6 +117,22 @@ double rms_difference(const multibody::Trajectory& reference, const multibody::T
     return std::sqrt(integral / duration);
 }
 
+// The analytic model's side of a case, computed once by whichever of the case's tasks (the reference's or an
+// engine's) comes first and shared by the others: its reference value does not depend on the engine
+// (analytic_reference_settings ignores the engine's settings), and before this each engine's task ran it again
+// (a threshold bisection, a free vibration, two record runs per engine). The history trajectory is released by the
+// last task that reads it.
+struct CaseReference {
+    std::once_flag once;
+    double free_t_end = 0.0;  // free, step: the run's end (free_vibration_duration), set before the tasks run
+    double threshold_g = kNaN;                  // threshold
+    FreeVibrationResult free;                   // free, step: the analytic run, its trajectory dropped
+    std::optional<Trace> free_trace;            // free: the analytic trace when traces are kept
+    multibody::Trajectory history;              // history: the analytic run (engines' RMS difference)
+    double whole_mechanism_peak = kNaN;         // history, VSSW: peak with the whole mechanism's impact [alpha]
+    std::atomic<int> users{0};                  // tasks of the case still to read `history`
+};
+
 struct TaskContext {
     const SuiteCase& c;
     const SuiteWall& wall;
@@ -114,19 +140,70 @@ struct TaskContext {
     bool reference;  // the analytic model's own rows
     const GroundMotion* record;
     bool keep_traces;
+    CaseReference& ref;
 };
 
-void threshold_task(const TaskContext& x, TaskOutput& out) {
+EngineSettings reference_settings() { return analytic_reference_settings(EngineSettings{}); }
+
+FreeVibrationOptions free_options(const TaskContext& x) {
+    FreeVibrationOptions options;
+    options.r = x.c.r;
+    options.t_end = x.ref.free_t_end;  // what t_end 0 would compute, computed once
+    return options;
+}
+
+Excitation history_excitation(const TaskContext& x) {
+    Excitation ex;
+    ex.horizontal = *x.record;
+    ex.theta0 = 0.0;
+    ex.t_end = x.record->duration() + kHistoryTail;
+    ex.stop_at_rest = true;
+    return ex;
+}
+
+// The analytic model's runs of the case (CaseReference), once.
+void compute_reference(const TaskContext& x) {
     const AnalyticEngine analytic;
-    const std::string name = x.engine.name();
-    if (x.reference) {
-        const double a = find_threshold(analytic, analytic.default_settings(), x.wall.scene).value_g;
-        out.rows.push_back(make_row(x.c.id, name, "threshold_g", a, a, "analytic model", "g"));
-        return;
+    CaseReference& ref = x.ref;
+    switch (x.c.kind) {
+        case CaseKind::threshold:
+            ref.threshold_g = find_threshold(analytic, reference_settings(), x.wall.scene).value_g;
+            return;
+        case CaseKind::free:
+        case CaseKind::step: {
+            ref.free = run_free_vibration(analytic, reference_settings(), x.wall.scene, free_options(x));
+            if (x.keep_traces && x.c.kind == CaseKind::free)
+                ref.free_trace = make_trace(x.c.id, kReferenceEngine, ref.free.trajectory, x.wall.scene.alpha(),
+                                            kFreeTraceSeconds);
+            ref.free.trajectory.samples = {};  // the rows need its metrics only (warnings kept)
+            return;
+        }
+        case CaseKind::history: {
+            const Excitation ex = history_excitation(x);
+            ref.history = analytic.simulate(x.wall.scene, ex, reference_settings());
+            // A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in
+            // place of Eq. (19) (the impact the engines make: README "Engines"): does the impact law account for a
+            // difference in peaks?
+            if (x.wall.scene.vssw) {
+                EngineSettings s = reference_settings();
+                s.knobs["restitution"] = restitution_whole_mechanism(*x.wall.scene.vssw);
+                ref.whole_mechanism_peak =
+                    peak_rotation(analytic.simulate(x.wall.scene, ex, s)).value / x.wall.scene.alpha();
+            }
+            return;
+        }
     }
-    const EngineSettings settings = x.engine.default_settings();
-    const double a = find_threshold(analytic, analytic_reference_settings(settings), x.wall.scene).value_g;
-    const double e = find_threshold(x.engine, settings, x.wall.scene).value_g;
+}
+
+const CaseReference& reference_of(const TaskContext& x) {
+    std::call_once(x.ref.once, [&] { compute_reference(x); });  // an exception leaves it for the next task to try
+    return x.ref;
+}
+
+void threshold_task(const TaskContext& x, TaskOutput& out) {
+    const std::string name = x.engine.name();
+    const double a = reference_of(x).threshold_g;
+    const double e = x.reference ? a : find_threshold(x.engine, x.engine.default_settings(), x.wall.scene).value_g;
     out.rows.push_back(make_row(x.c.id, name, "threshold_g", a, e, "analytic model", "g"));
 }
 
@@ -146,28 +223,24 @@ void free_rows(const TaskContext& x, const FreeVibrationResult& a, const FreeVib
 }
 
 void free_task(const TaskContext& x, TaskOutput& out) {
-    FreeVibrationOptions options;
-    options.r = x.c.r;
-    const double alpha = x.wall.scene.alpha();
+    const CaseReference& ref = reference_of(x);
     if (x.reference) {
-        const AnalyticEngine analytic;
-        const FreeVibrationResult a = run_free_vibration(analytic, analytic.default_settings(), x.wall.scene, options);
-        free_rows(x, a, a, out);
-        out.model_warnings = a.trajectory.warnings;
-        if (x.keep_traces && x.c.kind == CaseKind::free)
-            out.traces.push_back(make_trace(x.c.id, x.engine.name(), a.trajectory, alpha, kFreeTraceSeconds));
+        free_rows(x, ref.free, ref.free, out);
+        out.model_warnings = ref.free.trajectory.warnings;
+        if (ref.free_trace) out.traces.push_back(*ref.free_trace);
         return;
     }
     EngineSettings settings = x.engine.default_settings();
     if (x.c.dt) settings.dt = *x.c.dt;
-    const FreeVibrationComparison runs =
-        free_vibration_with_analytic(x.engine, settings, x.wall.scene, options, analytic_reference_settings(settings));
-    free_rows(x, runs.analytic, runs.engine, out);
+    // Both sides run for the same time (free_vibration_with_analytic's rule), the analytic one shared.
+    const FreeVibrationResult e = run_free_vibration(x.engine, settings, x.wall.scene, free_options(x));
+    free_rows(x, ref.free, e, out);
     // A first-impact ratio outside (0, 1] is a failure of the engine's run, not a restitution: the row is NaN and
     // the report lists why.
-    if (!runs.engine.restitution_note.empty()) out.failure = runs.engine.restitution_note;
+    if (!e.restitution_note.empty()) out.failure = e.restitution_note;
     if (x.keep_traces && x.c.kind == CaseKind::free)
-        out.traces.push_back(make_trace(x.c.id, x.engine.name(), runs.engine.trajectory, alpha, kFreeTraceSeconds));
+        out.traces.push_back(
+            make_trace(x.c.id, x.engine.name(), e.trajectory, x.wall.scene.alpha(), kFreeTraceSeconds));
 }
 
 void history_rows(const TaskContext& x, const multibody::Trajectory& a, const multibody::Trajectory& e,
@@ -185,44 +258,37 @@ void history_rows(const TaskContext& x, const multibody::Trajectory& a, const mu
     out.rows.push_back({x.c.id, name, "rms_difference", peak_a, rms, rms / peak_a, "analytic model", "alpha"});
 }
 
-// A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in place of
-// Eq. (19) (the impact the engines make: README "Engines"): does the impact law account for a difference in peaks?
-void whole_mechanism_peak_row(const TaskContext& x, const Excitation& ex, const EngineSettings& analytic_settings,
-                              const multibody::Trajectory& e, TaskOutput& out) {
+void whole_mechanism_peak_row(const TaskContext& x, const multibody::Trajectory& e, TaskOutput& out) {
     if (!x.wall.scene.vssw) return;
-    EngineSettings s = analytic_settings;
-    s.knobs["restitution"] = restitution_whole_mechanism(*x.wall.scene.vssw);
-    const multibody::Trajectory w = AnalyticEngine().simulate(x.wall.scene, ex, s);
-    const double alpha = x.wall.scene.alpha();
-    const double peak_w = peak_rotation(w).value / alpha;
-    const double peak_e = x.reference ? peak_w : peak_rotation(e).value / alpha;
+    const double peak_w = x.ref.whole_mechanism_peak;
+    const double peak_e = x.reference ? peak_w : peak_rotation(e).value / x.wall.scene.alpha();
     out.rows.push_back(make_row(x.c.id, x.engine.name(), "peak_rotation_whole_mechanism", peak_w, peak_e,
                                 "analytic model with the whole-mechanism impact", "alpha"));
 }
 
 void history_task(const TaskContext& x, TaskOutput& out) {
-    Excitation ex;
-    ex.horizontal = *x.record;
-    ex.theta0 = 0.0;
-    ex.t_end = x.record->duration() + kHistoryTail;
-    ex.stop_at_rest = true;
-    const double alpha = x.wall.scene.alpha();
+    CaseReference& ref = x.ref;
+    // The last task of the case to read the analytic trajectory releases it, however this one ends.
+    struct Release {
+        CaseReference& r;
+        ~Release() {
+            if (r.users.fetch_sub(1) == 1) r.history = {};
+        }
+    } release{ref};
+    const multibody::Trajectory& a = reference_of(x).history;
     const double all = std::numeric_limits<double>::infinity();
-    const AnalyticEngine analytic;
     if (x.reference) {
-        const multibody::Trajectory a = analytic.simulate(x.wall.scene, ex, analytic.default_settings());
         history_rows(x, a, a, out);
         out.model_warnings = a.warnings;
-        whole_mechanism_peak_row(x, ex, analytic.default_settings(), a, out);
-        if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, alpha, all));
+        whole_mechanism_peak_row(x, a, out);
+        if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, x.wall.scene.alpha(), all));
         return;
     }
-    const EngineSettings settings = x.engine.default_settings();
-    const multibody::Trajectory a = analytic.simulate(x.wall.scene, ex, analytic_reference_settings(settings));
-    const multibody::Trajectory e = x.engine.simulate(x.wall.scene, ex, settings);
+    const multibody::Trajectory e =
+        x.engine.simulate(x.wall.scene, history_excitation(x), x.engine.default_settings());
     history_rows(x, a, e, out);
-    whole_mechanism_peak_row(x, ex, analytic_reference_settings(settings), e, out);
-    if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), e, alpha, all));
+    whole_mechanism_peak_row(x, e, out);
+    if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), e, x.wall.scene.alpha(), all));
 }
 
 void run_task(const TaskContext& x, TaskOutput& out) {
@@ -239,16 +305,17 @@ struct Task {
     double cost;  // estimated [s], for the queue's order only
 };
 
-// Simulated seconds a task's engine runs, at its default step (the threshold: ~17 trials, those below the threshold
-// run the whole hold, those above stop once the wall lifts: about half of it on average).
-double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMotion* record) {
+// Simulated seconds a task's engine runs, at its default step (the threshold: ~10 trials, those below the threshold
+// run the whole hold, those above stop once the wall lifts: about half of it on average). free_t_end: the case's
+// free vibration end (CaseReference).
+double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMotion* record, double free_t_end) {
     switch (c.kind) {
         case CaseKind::threshold: {
             const ThresholdOptions o;
-            return 17.0 * (o.ramp_time + 0.5 * threshold_hold_time(w.scene, o));
+            return 10.0 * (o.ramp_time + 0.5 * threshold_hold_time(w.scene, o));
         }
         case CaseKind::free:
-        case CaseKind::step: return free_vibration_duration(w.scene, c.r * w.scene.alpha(), FreeVibrationOptions{}.impacts);
+        case CaseKind::step: return free_t_end;
         case CaseKind::history: return record ? record->duration() + kHistoryTail : 0.0;
     }
     return 0.0;
@@ -374,16 +441,22 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
 
     // Tasks in (case, engine) order: their outputs are assembled in this order whatever the threads did.
     std::vector<Task> tasks;
+    std::vector<CaseReference> references(suite.cases.size());
     for (std::size_t ci = 0; ci < suite.cases.size(); ++ci) {
         const SuiteCase& c = suite.cases[ci];
+        const SuiteWall& w = *case_walls[ci];
         const GroundMotion* record = c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr;
-        const double seconds = simulated_seconds(c, *case_walls[ci], record);
+        if (c.kind == CaseKind::free || c.kind == CaseKind::step)
+            references[ci].free_t_end =
+                free_vibration_duration(w.scene, c.r * w.scene.alpha(), FreeVibrationOptions{}.impacts);
+        const double seconds = simulated_seconds(c, w, record, references[ci].free_t_end);
         for (std::size_t ei = 0; ei < engines.size(); ++ei) {
             const std::string name = engines[ei]->name();
             if (!c.engine.empty() && c.engine != name) continue;
             double cost = seconds * cost_per_simulated_second(name);
             if (c.dt && *c.dt > 0.0) cost *= engines[ei]->default_settings().dt / *c.dt;
             tasks.push_back({ci, ei, cost});
+            references[ci].users.fetch_add(1);
         }
     }
     std::vector<TaskOutput> outputs(tasks.size());
@@ -400,14 +473,17 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
         const Task& task = tasks[ti];
         const SuiteCase& c = suite.cases[task.case_index];
         const multibody::Engine& engine = *engines[task.engine_index];
+        const double cpu_start = thread_cpu_seconds();
         try {
             const TaskContext x{c, *case_walls[task.case_index], engine, task.engine_index == 0,
-                                c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr, options.keep_traces};
+                                c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr, options.keep_traces,
+                                references[task.case_index]};
             run_task(x, outputs[ti]);
         } catch (const EngineFailure& e) {
             outputs[ti] = TaskOutput{};
             outputs[ti].failure = e.what();
         }
+        outputs[ti].cpu_s = thread_cpu_seconds() - cpu_start;
         if (options.progress) {
             const std::lock_guard<std::mutex> lock(progress_mutex);
             ++done;
@@ -419,6 +495,8 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     for (std::size_t ti = 0; ti < tasks.size(); ++ti) {
         TaskOutput& o = outputs[ti];
         const std::string& case_id = suite.cases[tasks[ti].case_index].id;
+        results.task_times.push_back({case_id, suite.cases[tasks[ti].case_index].kind,
+                                      engines[tasks[ti].engine_index]->name(), o.cpu_s});
         if (o.failure) results.failures.push_back({case_id, engines[tasks[ti].engine_index]->name(), *o.failure});
         for (std::string& w : o.model_warnings) results.model_warnings.push_back({case_id, std::move(w)});
         for (MetricRow& r : o.rows) results.rows.push_back(std::move(r));

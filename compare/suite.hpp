@@ -126,6 +126,15 @@ struct Trace {
     std::vector<double> t, theta1_over_alpha;
 };
 
+// CPU time of one (case, engine) task on its thread [s]: where a suite's time goes (bench/suite_profile.cpp). The
+// analytic model's side of a case, shared by the case's tasks, is charged to the task that ran it first.
+struct TaskTime {
+    std::string case_id;
+    CaseKind kind;
+    std::string engine;
+    double cpu_s;
+};
+
 struct EngineRunInfo {
     std::string name, version;
     multibody::EngineSettings settings;  // as used (the engine's defaults unless a step case overrides dt)
@@ -138,6 +147,7 @@ struct SuiteResults {
     std::vector<CaseFailure> failures;
     std::vector<ModelWarning> model_warnings;  // from the analytic model's own runs (free vibrations, histories)
     std::vector<Trace> traces;
+    std::vector<TaskTime> task_times;  // one per task, in (case, engine) order
     double wall_time_s = 0.0;
     int threads = 1;
 };
