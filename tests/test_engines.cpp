@@ -3,9 +3,11 @@
 // restitution within 2 % of the analytic model with exact kinematics. A metric an engine cannot reach is skipped
 // explicitly with the measured value and the reason (kKnownDifferences), never loosened per case.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 
@@ -367,6 +369,36 @@ TEST(UnilateralRoller, ExplainsTheEnginesPeriodsWhereThePapersRollerPulls) {
 // 1000 s/m moves the Fig. 6 restitution by 1.3 %, README).
 constexpr double kSameLawPeriod = 5e-5;       // about 10x the measured difference, 1e-4 of the period target
 constexpr double kSameLawRestitution = 5e-4;  // 10x the measured difference, 1/40 of the restitution target
+
+// Debian's libsimbody prints debug text on stdout at every rigid step; QuietStdout drops it (without formatting it)
+// while a run steps and gives stdout back afterwards: nothing of it may reach file descriptor 1, and what the
+// program prints after the run must. Suite named in lower case for `ctest -R simbody`.
+TEST(simbody_quiet_stdout, DebugTextIsDroppedAndStdoutComesBack) {
+    const auto names = multibody::available_engines();
+    if (std::find(names.begin(), names.end(), "simbody-rigid") == names.end())
+        GTEST_SKIP() << "Simbody not compiled in";
+    const auto engine = multibody::make_engine("simbody-rigid");
+    const WallScene scene = fig6_vssw();
+    multibody::Excitation ex;
+    ex.theta0 = 0.5 * scene.alpha();
+    ex.t_end = 0.05;  // 100 steps, each printing when the library is built without NDEBUG
+    std::fflush(stdout);
+    std::FILE* capture = std::tmpfile();
+    ASSERT_NE(capture, nullptr);
+    const int saved = ::dup(1);
+    ASSERT_GE(saved, 0);
+    ::dup2(::fileno(capture), 1);
+    (void)engine->simulate(scene, ex, engine->default_settings());
+    std::printf("after the run\n");
+    std::fflush(stdout);
+    ::dup2(saved, 1);
+    ::close(saved);
+    std::rewind(capture);
+    std::string text;
+    for (int c = std::fgetc(capture); c != EOF; c = std::fgetc(capture)) text.push_back(static_cast<char>(c));
+    std::fclose(capture);
+    EXPECT_EQ(text, "after the run\n");
+}
 
 // Suite named in lower case so that `ctest -R simbody` runs it with the cross-engine cases.
 TEST(simbody_compliant, CornerContactsReproduceTheContactSubsystem) {
