@@ -29,10 +29,12 @@
 // transition velocity vt: there is no true stiction, a loaded contact creeps at a fraction of vt (measured below).
 //
 // Time: settings.dt is the REPORTING interval (the integrator's steps are chosen by its error control); each report is
-// an integrator step end (no interpolation), the RunMonitor checks it, and the trajectory samples it.
+// interpolated by the integrator inside its step (or, with interpolate = 0, is a step end), the RunMonitor checks it,
+// and the trajectory samples it.
 //
 // Defaults, each measured (vssw compare; numbers in the comments where they are set).
 #include "multibody/simbody/simbody_compliant.hpp"
+#include "multibody/simbody/corner_contacts.hpp"
 #include "multibody/simbody/quiet_stdout.hpp"
 #include "multibody/simbody/simbody_wall.hpp"
 
@@ -43,6 +45,8 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -66,13 +70,16 @@ struct Knobs {
     double transition_velocity;  // [m/s] Simbody's friction transition (creep) velocity vt
     double accuracy;             // integrator accuracy (Simbody's relative/weighted error per step)
     int integrator;              // 0 Runge-Kutta-Merson, 1 CPodes (BDF, for stiff contact)
+    bool contact_subsystem;      // 1: Simbody's CompliantContactSubsystem; 0: the same law as CornerContacts
+    bool interpolate;            // 1: reports interpolated between the integrator's steps; 0: each report a step end
     FailureLimits limits;        // slide_limit, penetration_limit (run_monitor.hpp)
 };
 
 Knobs read_knobs(const EngineSettings& s) {
     const SettingsReader r(kName, s,
                            {"stiffness", "radius", "dissipation", "transition_velocity", "accuracy",
-                            "integrator", "slide_limit", "penetration_limit", "moving_supports"});
+                            "integrator", "contact_subsystem", "interpolate", "slide_limit", "penetration_limit",
+                            "moving_supports"});
     Knobs k{};
     // Defaults, measured with `vssw compare` and single free vibrations on the Fig. 6 walls (4 m x 0.4 m, h1/h 0.7):
     // stiffness 1e15 Pa with radius 1e-4 m (E sqrt(r) = 1e13 N/m^1.5: a base corner sinks 1.6e-6 m under the whole
@@ -89,13 +96,24 @@ Knobs read_knobs(const EngineSettings& s) {
     // m for the parapet), 1.8e-4 m with dissipation 10; 1e-5 m/s changes no metric beyond the sampling's and costs
     // 1.3x the steps.
     k.transition_velocity = r.positive("transition_velocity", 1e-4);
-    // accuracy 1e-6: the flight agrees with the analytic model to 1e-6 rad at 1e-6 and 1e-8 alike; tighter settings
-    // resolve the ~1 ms the impact lasts differently, which only moves the samples that fall inside it.
-    k.accuracy = r.positive("accuracy", 1e-6);
+    // accuracy 3e-6 (was 1e-6): the flight agrees with the analytic model to 1e-6 rad at 1e-6 and 1e-8 alike; tighter
+    // settings resolve the ~1 ms the impact lasts differently, which only moves the samples that fall inside it. With
+    // interpolated reports the Fig. 6 VSSW's quarter-period error at reporting intervals 4 / 2 / 1 / 0.5 ms is
+    // 4.1e-4 / 1.16e-4 / 8.4e-5 / 3.3e-5 at 3e-6 (the same as 1e-6: the sampling's), but 4.1e-4 / 1.15e-4 / 1.58e-4 /
+    // 3.8e-5 at 1e-5: the integrator's error shows, and the error no longer falls with the interval. 1e-4 drifts
+    // (theta1 0.0167 rad instead of 0.0092 after 2 s of free vibration). Cost per accuracy: README "Simbody (3.7)".
+    k.accuracy = r.positive("accuracy", 3e-6);
     // integrator 1 (CPodes, BDF): the contacts are stiff (friction slope mu N / vt); Runge-Kutta-Merson took 881k
     // steps and 141 s for a 3.6 s free vibration of the Fig. 6 VSSW (E 1e13, r 1e-3), CPodes 13k steps and 0.9 s, with
     // the same period and restitution to 2e-5.
     k.integrator = r.choice("integrator", 1, 2);
+    // contact_subsystem 0: the corner pairs evaluated directly (corner_contacts.hpp), Simbody's force law without
+    // its contact tracking; 1 keeps CompliantContactSubsystem + ContactTrackerSubsystem (the former route, kept to
+    // check the two against each other: tests/test_engines.cpp). Cost and agreement in README "Simbody (3.7)".
+    k.contact_subsystem = r.flag("contact_subsystem");
+    // interpolate 1 (was 0): a report no longer ends a step, so the integrator is not held to 1 ms steps where the
+    // wall is at rest or in flight, and the samples are CPodes' own interpolant, of the method's order. Cost: README.
+    k.interpolate = r.choice("interpolate", 1, 2) == 1;
     k.limits = FailureLimits::read(r);
     require(k.accuracy < 1.0, std::string(kName) + " setting accuracy", "below 1", k.accuracy);
     if (r.flag("moving_supports"))
@@ -108,52 +126,17 @@ Knobs read_knobs(const EngineSettings& s) {
 class CompliantScene {
 public:
     CompliantScene(const WallScene& scene, const Excitation& ex, const Knobs& k)
-        : matter_(system_), forces_(system_), tracker_(system_), contact_(system_, tracker_),
-          sizes_(block_sizes(scene)), r_(k.radius) {
+        : matter_(system_), forces_(system_), sizes_(block_sizes(scene)), r_(k.radius) {
         using namespace SimTK;
-        const double b = sizes_.b, mu = scene.friction;
-        // Equal materials on both sides combine as E_material / 2^1.5 (Simbody's 2/3-power rule).
-        const double E = k.stiffness * std::pow(2.0, 1.5);
-        const ContactMaterial rough(E, k.dissipation, mu, mu, 0.0);
-        const ContactMaterial smooth(E, k.dissipation, 0.0, 0.0, 0.0);
-        contact_.setTransitionVelocity(k.transition_velocity);
         SimTK::Force::UniformGravity(forces_, matter_, Vec3(0, -scene.gravity(), 0));
-
-        // Cliques: `guides` holds the guides and every sphere that must not meet them; `planes` the half-spaces.
-        const ContactCliqueId guides = ContactSurface::createNewContactClique();
-        const ContactCliqueId planes = ContactSurface::createNewContactClique();
-        // A half-space occupies x > 0 of its frame: turned by -90 deg about z it is y < 0 (the ground).
-        matter_.Ground().updBody().addContactSurface(
-            Transform(Rotation(-0.5 * Pi, ZAxis), Vec3(0)),
-            ContactSurface(ContactGeometry::HalfSpace(), rough).joinClique(planes));
-
-        const bool vssw = scene.vssw.has_value();
-        Body::Rigid lower_body = block_body(sizes_.h_lower, sizes_.m_lower);
-        for (double side : {1.0, -1.0})
-            lower_body.addContactSurface(Transform(Vec3(side * b, -sizes_.h_lower, 0)),
-                                         ContactSurface(ContactGeometry::Sphere(r_), rough).joinClique(guides));
-        if (vssw)  // the hinge: the lower block's top face, y < h1 in its frame
-            lower_body.addContactSurface(Transform(Rotation(-0.5 * Pi, ZAxis), Vec3(0, sizes_.h_lower, 0)),
-                                         ContactSurface(ContactGeometry::HalfSpace(), rough).joinClique(planes));
-        lower_ = MobilizedBody::Planar(matter_.Ground(), Transform(), lower_body, Transform());
-        if (vssw) {
-            Body::Rigid upper_body = block_body(sizes_.h_upper, sizes_.m_upper);
-            for (double side : {1.0, -1.0}) {
-                upper_body.addContactSurface(Transform(Vec3(side * b, -sizes_.h_upper, 0)),
-                                             ContactSurface(ContactGeometry::Sphere(r_), rough).joinClique(guides));
-                upper_body.addContactSurface(Transform(Vec3(side * b, sizes_.h_upper, 0)),
-                                             ContactSurface(ContactGeometry::Sphere(r_), smooth));
-            }
-            upper_ = MobilizedBody::Planar(matter_.Ground(), Transform(), upper_body, Transform());
-            has_upper_ = true;
-            // Roller guides: the half-space x > 0 moved to x > b + r, and turned by 180 deg about z to x < -(b + r).
-            matter_.Ground().updBody().addContactSurface(
-                Transform(Vec3(b + r_, 0, 0)),
-                ContactSurface(ContactGeometry::HalfSpace(), smooth).joinClique(guides).joinClique(planes));
-            matter_.Ground().updBody().addContactSurface(
-                Transform(Rotation(Pi, ZAxis), Vec3(-(b + r_), 0, 0)),
-                ContactSurface(ContactGeometry::HalfSpace(), smooth).joinClique(guides).joinClique(planes));
-        }
+        lower_ = MobilizedBody::Planar(matter_.Ground(), Transform(), block_body(sizes_.h_lower, sizes_.m_lower),
+                                       Transform());
+        has_upper_ = scene.vssw.has_value();
+        if (has_upper_)
+            upper_ = MobilizedBody::Planar(matter_.Ground(), Transform(), block_body(sizes_.h_upper, sizes_.m_upper),
+                                           Transform());
+        if (k.contact_subsystem) add_subsystem_contacts(scene, k);
+        else add_corner_contacts(scene, k);
         const double N = scene.overburden() * kDepth;
         // a_h at the integrator's own times: the error control follows a record between its samples.
         SimTK::Force::Custom(forces_, new WallLoads([&a_h = ex.horizontal](const State& st) { return a_h(st.getTime()); },
@@ -172,10 +155,80 @@ public:
     const SimTK::State& initial_state() const { return state_; }
     const SimTK::MobilizedBody& lower() const { return lower_; }
     const SimTK::MobilizedBody& upper() const { return upper_; }
-    const SimTK::CompliantContactSubsystem& contact() const { return contact_; }
     bool has_upper() const { return has_upper_; }
+    // Contacts pressing in a state realized to Velocity.
+    int contacts(const SimTK::State& st) const {
+        return contact_ ? contact_->getNumContactForces(st) : corners_->count_touching(st);
+    }
 
 private:
+    // The pairs that can touch, each once: the lower block's base spheres on the ground, the upper block's bottom
+    // spheres on the lower block's top face, each top sphere of the upper block on the guide on its own side (a top
+    // sphere could reach the other guide only by crossing the wall's thickness). The subsystem also tests the pairs
+    // that cannot touch (cliques aside) at every evaluation.
+    void add_corner_contacts(const WallScene& scene, const Knobs& k) {
+        using SimTK::Vec3;
+        const double b = sizes_.b, mu = scene.friction;
+        std::vector<CornerPair> pairs;
+        const SimTK::MobilizedBody& ground = matter_.Ground();
+        for (double side : {1.0, -1.0}) {
+            pairs.push_back({ground, lower_, true, Vec3(0), Vec3(0, 1, 0), Vec3(side * b, -sizes_.h_lower, 0), mu});
+            if (has_upper_) {
+                pairs.push_back({lower_, upper_, false, Vec3(0, sizes_.h_lower, 0), Vec3(0, 1, 0),
+                                 Vec3(side * b, -sizes_.h_upper, 0), mu});
+                // The guide's face at x = side (b + r), its normal pointing back at the wall.
+                pairs.push_back({ground, upper_, true, Vec3(side * (b + r_), 0, 0), Vec3(-side, 0, 0),
+                                 Vec3(side * b, sizes_.h_upper, 0), 0.0});
+            }
+        }
+        corners_ = new CornerContacts(std::move(pairs),
+                                      {k.stiffness, k.radius, k.dissipation, k.transition_velocity});
+        SimTK::Force::Custom(forces_, corners_);  // the force owns corners_
+    }
+
+    void add_subsystem_contacts(const WallScene& scene, const Knobs& k) {
+        using namespace SimTK;
+        tracker_ = std::make_unique<ContactTrackerSubsystem>(system_);
+        contact_ = std::make_unique<CompliantContactSubsystem>(system_, *tracker_);
+        const double b = sizes_.b, mu = scene.friction;
+        // Equal materials on both sides combine as E_material / 2^1.5 (Simbody's 2/3-power rule).
+        const double E = k.stiffness * std::pow(2.0, 1.5);
+        const ContactMaterial rough(E, k.dissipation, mu, mu, 0.0);
+        const ContactMaterial smooth(E, k.dissipation, 0.0, 0.0, 0.0);
+        contact_->setTransitionVelocity(k.transition_velocity);
+
+        // Cliques: `guides` holds the guides and every sphere that must not meet them; `planes` the half-spaces.
+        const ContactCliqueId guides = ContactSurface::createNewContactClique();
+        const ContactCliqueId planes = ContactSurface::createNewContactClique();
+        // A half-space occupies x > 0 of its frame: turned by -90 deg about z it is y < 0 (the ground).
+        matter_.Ground().updBody().addContactSurface(
+            Transform(Rotation(-0.5 * Pi, ZAxis), Vec3(0)),
+            ContactSurface(ContactGeometry::HalfSpace(), rough).joinClique(planes));
+
+        Body& lower_body = lower_.updBody();
+        for (double side : {1.0, -1.0})
+            lower_body.addContactSurface(Transform(Vec3(side * b, -sizes_.h_lower, 0)),
+                                         ContactSurface(ContactGeometry::Sphere(r_), rough).joinClique(guides));
+        if (!has_upper_) return;
+        // the hinge: the lower block's top face, y < h1 in its frame
+        lower_body.addContactSurface(Transform(Rotation(-0.5 * Pi, ZAxis), Vec3(0, sizes_.h_lower, 0)),
+                                     ContactSurface(ContactGeometry::HalfSpace(), rough).joinClique(planes));
+        Body& upper_body = upper_.updBody();
+        for (double side : {1.0, -1.0}) {
+            upper_body.addContactSurface(Transform(Vec3(side * b, -sizes_.h_upper, 0)),
+                                         ContactSurface(ContactGeometry::Sphere(r_), rough).joinClique(guides));
+            upper_body.addContactSurface(Transform(Vec3(side * b, sizes_.h_upper, 0)),
+                                         ContactSurface(ContactGeometry::Sphere(r_), smooth));
+        }
+        // Roller guides: the half-space x > 0 moved to x > b + r, and turned by 180 deg about z to x < -(b + r).
+        matter_.Ground().updBody().addContactSurface(
+            Transform(Vec3(b + r_, 0, 0)),
+            ContactSurface(ContactGeometry::HalfSpace(), smooth).joinClique(guides).joinClique(planes));
+        matter_.Ground().updBody().addContactSurface(
+            Transform(Rotation(Pi, ZAxis), Vec3(-(b + r_), 0, 0)),
+            ContactSurface(ContactGeometry::HalfSpace(), smooth).joinClique(guides).joinClique(planes));
+    }
+
     SimTK::Body::Rigid block_body(double half_h, double mass_per_depth) const {
         using namespace SimTK;
         // I_z = m (b^2 + h^2) / 3 = m R^2 / 3, as the analytic model's homogeneous blocks.
@@ -191,8 +244,9 @@ private:
     SimTK::MultibodySystem system_;
     SimTK::SimbodyMatterSubsystem matter_;
     SimTK::GeneralForceSubsystem forces_;
-    SimTK::ContactTrackerSubsystem tracker_;
-    SimTK::CompliantContactSubsystem contact_;
+    std::unique_ptr<SimTK::ContactTrackerSubsystem> tracker_;    // contact_subsystem = 1 only
+    std::unique_ptr<SimTK::CompliantContactSubsystem> contact_;  // contact_subsystem = 1 only
+    CornerContacts* corners_ = nullptr;                          // contact_subsystem = 0; owned by its Force
     BlockSizes sizes_;
     double r_;
     SimTK::MobilizedBody lower_, upper_;
@@ -227,7 +281,7 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
     else
         integ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(w.system());
     integ->setAccuracy(knobs.accuracy);
-    integ->setAllowInterpolation(false);  // every report is a step end: no interpolation error in the samples
+    integ->setAllowInterpolation(knobs.interpolate);
     integ->setFinalTime(ex.t_end);
     // CPodes stops after 500 internal steps per stepTo by default and then prints "[CPODES ERROR] mxstep steps
     // taken" on stderr: measured at the first impact of the Fig. 6 VSSW with accuracy 1e-8 or transition_velocity
@@ -245,7 +299,7 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
         const SimTK::State& st = integ->getState();
         w.system().realize(st, SimTK::Stage::Velocity);
         TrajectorySample p = sample_of(bodies, st, t);
-        p.contacts = w.contact().getNumContactForces(st);
+        p.contacts = w.contacts(st);
         out.samples.push_back(p);
     };
 
