@@ -42,21 +42,12 @@ const std::map<std::string, std::string> kKnownDifferences = {
      "Simbody's SemiExplicitEuler stepper ignores prescribed motion, so the adapter refuses moving supports; a ground "
      "on a heavy Slider whose speed was reset each step was tried and failed (the parapet sank 0.01 m in a threshold "
      "trial; the VSSW's pulse peak came out 0.41 of the pseudo-forces'). Pseudo-forces only."},
-    {"bullet/Fig6WholeMechanism",
-     "Bullet's first-impact ratio on the Fig. 6 wall is 0.806 at 0.2 ms (0.82 at 1 ms and 0.05 ms) against the whole "
-     "mechanism's plastic impact 0.825 (-2.3 %): its sequential-impulse solve of the simultaneous landing, hinge and "
-     "roller impulses does not reach the exact projection on this stocky, high-hinged wall (on Table 1 #11 it is "
-     "within 0.02 %)."},
-    {"bullet/VsswMovingSupportsPeak",
-     "with the ground and the roller anchored to it moving as a kinematic body, Bullet evaluates the roller's frame "
-     "at the end of the step and the blocks at its start: a lag of v dt that the constraint's error correction "
-     "pushes against, turning the upper block (theta2 ~ 2e-4 rad after 2 s at 0.6 of the threshold). Thresholds "
-     "agree; the peak of a small rocking response differs by 6 % (measured; README). Pseudo-forces on fixed supports "
-     "are Bullet's default for that reason."},
     {"bullet/VsswRestitution",
-     "Bullet resolves the impact with every closing contact and the roller at once; Eq. (19) conserves angular "
-     "momentum about the new pivot, which assumes no impulse at the roller. Measured on the Fig. 6 wall: 0.81 "
-     "against 0.95 (-15 %), converged in step and iterations (README)."},
+     "Bullet resolves the impact with the new pivot, the closing hinge and the roller in one solve, perfectly "
+     "plastic: the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which "
+     "assumes no impulse at the roller. Measured on the Fig. 6 wall at the default 1 ms, 10 iterations: 0.820 "
+     "(-13.8 % against Eq. (19), -0.6 % against the whole mechanism; -0.02 % at 0.2 ms), unchanged by iterations "
+     "10 to 200 (README \"Bullet\")."},
     {"ode/VsswRestitution",
      "ODE's LCP resolves the impact with the new pivot, the closing hinge and the roller at once, perfectly plastic: "
      "the plastic impact of the whole new mechanism, (V+' M V-)/(V+' M V+) = 0.8252 on the Fig. 6 wall, whereas "
@@ -288,6 +279,35 @@ std::string engine_name(const ::testing::TestParamInfo<std::string>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, CrossEngine, ::testing::ValuesIn(multibody::available_engines()), engine_name);
+
+// Bullet's restitution once missed the whole-mechanism impact by 5-6 % on the Table 1 walls at xi 0.5 and did not
+// settle as the step fell on Fig. 6 (+0.2, -2.3, -2.3, -0.4 % at 1, 0.5, 0.2, 0.1 ms): contacts found a step late and
+// pushed out through the velocity (README "Bullet"). Held here on those walls and steps.
+bool has_engine(const std::string& name) {
+    const auto names = multibody::available_engines();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+TEST(BulletRestitution, Table1WallsUnderHeavyOverburdenTakeTheWholeMechanismImpact) {
+    if (!has_engine("bullet")) GTEST_SKIP() << "Bullet is not compiled in";
+    const auto engine = multibody::make_engine("bullet");
+    for (int number : {1, 14, 15}) {
+        SCOPED_TRACE("Table 1 #" + std::to_string(number) + ", xi 0.5");
+        expect_whole_mechanism_restitution(*engine, engine->default_settings(),
+                                           WallScene::of(make_vssw(table1(number), 0.5)));
+    }
+}
+
+TEST(BulletRestitution, Fig6WallTakesTheWholeMechanismImpactAtEveryStep) {
+    if (!has_engine("bullet")) GTEST_SKIP() << "Bullet is not compiled in";
+    const auto engine = multibody::make_engine("bullet");
+    for (double dt : {1e-3, 5e-4, 2e-4}) {
+        SCOPED_TRACE("dt " + std::to_string(dt));
+        multibody::EngineSettings settings = engine->default_settings();
+        settings.dt = dt;
+        expect_whole_mechanism_restitution(*engine, settings, fig6_vssw());
+    }
+}
 
 
 // A threshold trial's stop angle ends the analytic backend's run there, as RunMonitor ends an engine's: the wall is
