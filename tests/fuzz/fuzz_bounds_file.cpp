@@ -26,7 +26,12 @@ namespace {
 }
 
 void check_bounds(const vssw::compare::Bounds& b, const char* format) {
-    if (b.analytic.empty() && b.engines.empty()) finding(format, "bounds without an entry");
+    if (b.analytic.empty() && b.engines.empty() && b.stress.empty()) finding(format, "bounds without an entry");
+    for (const auto& st : b.stress) {
+        if (st.case_ids.empty() || st.allowed.empty()) finding(format, "stress bound without cases or verdicts");
+        for (const auto& v : st.allowed)
+            if (v != "ok" && v != "refused" && v != "failed") finding(format, "stress bound with an unknown verdict");
+    }
     for (const auto& a : b.analytic) {
         if (a.case_id.empty() || a.metric.empty()) finding(format, "analytic bound with an empty case or metric");
         if (!std::isfinite(a.reference) || !std::isfinite(a.max_drift) || a.max_drift < 0.0)
