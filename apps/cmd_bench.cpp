@@ -15,6 +15,7 @@
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
+#include "compare/targets.hpp"
 #include "compare/work_precision.hpp"
 #include "multibody/engine.hpp"
 #include "study/bench_files.hpp"
@@ -141,7 +142,10 @@ Command add_bench_command(CLI::App& root) {
                 out << fmt::format("vssw bench: {} point{}, {} repeat{} each; files in {}\n", data.points.size(),
                                    data.points.size() == 1 ? "" : "s", options.repeats,
                                    options.repeats == 1 ? "" : "s", o->out)
-                    << "Cheapest settings within the targets (threshold 0.5 %, period 0.5 %, restitution 2 %):\n"
+                    << fmt::format("Cheapest settings within the targets (threshold {:g} %, period {:g} %, "
+                                   "restitution {:g} %):\n",
+                                   100.0 * compare::kThresholdTarget, 100.0 * compare::kPeriodTarget,
+                                   100.0 * compare::kRestitutionTarget)
                     << study::cheapest_markdown(data);
             }};
 }

@@ -197,10 +197,11 @@ Command add_check_command(CLI::App& root) {
         "some do not, 2 bad input (a missing or malformed bounds file, an unknown case, engine or key). [[stress]] "
         "bounds run the named `vssw stress` cases in their quick form and hold each verdict against the allowed "
         "ones.\n"
-        "JSON keys: bounds, suite, held, verdicts [{engine, case, metric, kind (drift or rel_error), value, min, max, "
-        "held, note}], wall_time_s.");
+        "JSON keys: bounds, suite, held, verdicts [{engine, case, metric, kind (drift, rel_error or stress), value, min, max "
+        "(a stress verdict: value is the verdict, allowed the verdicts allowed, no min and max), held, note}], "
+        "wall_time_s.");
     return {cmd, [o](std::ostream& out) {
-                o->threads = parse_bounded_int("--threads", o->threads_text, 0, kMaxThreads, " (0: the available cores)");
+                o->threads = parse_threads(o->threads_text);
                 run_check(*o, out);
             }};
 }

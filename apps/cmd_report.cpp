@@ -142,7 +142,7 @@ Command add_report_command(CLI::App& root) {
         "--out that is not a writable folder). Without gnuplot the report is written without plots (a warning).");
     return {cmd, {}, [o](std::ostream& out, std::ostream& err) {
                 const std::vector<std::string> engines = checked_engines(o->engines);
-                o->threads = parse_bounded_int("--threads", o->threads_text, 0, kMaxThreads, " (0: the available cores)");
+                o->threads = parse_threads(o->threads_text);
                 require_data_folder(o->data);
                 if (!o->bench.empty()) study::check_bench_dir(o->bench);
                 compare::Suite suite = study::read_suite(o->suite, o->data);

@@ -27,11 +27,8 @@ namespace {
 
 // --time-limit's range [s]: an hour per case is far past the slowest full case measured (README, "Stress").
 constexpr double kMaxTimeLimit = 3600.0;
-// Defaults [s]: the quick set's runs took up to 15 s each on 2 cores under load 21 (simbody-rigid holding the
-// threshold pulse), 30 s timed that one out with a second run beside it; the full set's 600 s harmonic
-// and 0.01 x steps up to minutes; the limits leave room for a loaded machine (README, "Stress").
-constexpr double kQuickTimeLimit = 120.0;
-constexpr double kFullTimeLimit = 300.0;
+using stress::kFullTimeLimit;
+using stress::kQuickTimeLimit;
 
 struct StressOptions {
     std::string out_dir;
@@ -51,7 +48,7 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     report.quick = o.quick;
     report.time_limit_s = o.time_limit > 0.0 ? o.time_limit : (o.quick ? kQuickTimeLimit : kFullTimeLimit);
     report.engines = o.engines.empty() ? multibody::available_engines() : parse_engine_list("--engines", o.engines);
-    const int threads = parse_bounded_int("--threads", o.threads_text, 0, kMaxThreads, " (0: the available cores)");
+    const int threads = parse_threads(o.threads_text);
     // Check the folder can be written before anything runs (AtomicFile creates its temporary file at once).
     std::vector<std::unique_ptr<study::AtomicFile>> files;
     if (!o.out_dir.empty()) {

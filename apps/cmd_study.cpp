@@ -130,7 +130,7 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
     try {
         if (o.file.empty()) throw InputError("a study file is required (vssw study FILE --out DIR)");
         if (o.out.empty()) throw InputError("--out DIR is required");
-        run.threads = parse_bounded_int("--threads", o.threads_text, 0, kMaxThreads, " (0: the available cores)");
+        run.threads = parse_threads(o.threads_text);
         run.shard = parse_shard(o.shard_text);
         run.resume = o.resume;
         run.commit = VSSW_GIT_COMMIT;

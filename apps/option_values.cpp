@@ -24,6 +24,10 @@ int parse_bounded_int(const std::string& name, const std::string& text, int lo, 
     return static_cast<int>(value);
 }
 
+int parse_threads(const std::string& text) {
+    return parse_bounded_int("--threads", text, 0, kMaxThreads, " (0: the available cores)");
+}
+
 std::vector<std::string> parse_engine_list(const std::string& option, const std::vector<std::string>& names) {
     const std::vector<std::string> defaults = multibody::default_compared_engines();
     std::vector<std::string> engines;

@@ -11,7 +11,7 @@ class App;
 
 namespace vssw::cli {
 
-// --threads of report and check: 0 means the available cores. 256 is far above the cores of any machine this runs
+// --threads of report, check, study and stress: 0 means the available cores. 256 is far above the cores of any machine this runs
 // on; each thread runs one engine simulation at a time and holds its trajectory, so the bound also bounds memory.
 constexpr int kMaxThreads = 256;
 // --iterations of compare (multibody/engine.hpp says why 1000).
@@ -20,6 +20,10 @@ using multibody::kMaxIterations;
 // Whole-number option: `text` must be an integer from lo to hi, else InputError
 // "<name> must be an integer from <lo> to <hi><meaning>, got <text>" (meaning: e.g. " (0: the available cores)").
 int parse_bounded_int(const std::string& name, const std::string& text, int lo, int hi, const std::string& meaning = "");
+
+// --threads as typed (every command that runs cases in parallel): an integer from 0 (the available cores) to
+// kMaxThreads, else InputError naming it.
+int parse_threads(const std::string& text);
 
 // A list of engines as given to `option` (comma-separated, already split): "all" stands for
 // multibody::default_compared_engines() where it appears. Each name must be available in this build and appear once

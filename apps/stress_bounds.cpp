@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -12,9 +13,6 @@
 
 namespace vssw::cli {
 namespace {
-
-// The quick set's time limit (cmd_stress.cpp's default): a bound sees the verdicts `vssw stress --quick` gives.
-constexpr double kTimeLimit = 120.0;
 
 void add_once(std::vector<std::string>& list, const std::string& item) {
     if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
@@ -28,7 +26,7 @@ std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare
     const std::vector<std::string> available = multibody::available_engines();
     stress::RunOptions run;
     run.quick = true;
-    run.time_limit_s = kTimeLimit;
+    run.time_limit_s = stress::kQuickTimeLimit;  // the verdicts `vssw stress --quick` gives
     run.threads = threads;
     for (const compare::StressBound& b : bounds) {
         for (const std::string& id : b.case_ids) {
@@ -50,10 +48,20 @@ std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare
             for (const std::string& e : b.engines.empty() ? available : b.engines) {
                 const auto r = std::find_if(results.begin(), results.end(),
                                             [&](const stress::CaseResult& x) { return x.name == id && x.engine == e; });
-                compare::BoundVerdict v{e, id, "stress", NAN, NAN, NAN, false, "", "", fmt::format("{}", fmt::join(b.allowed, "|"))};
+                if (r == results.end())
+                    throw std::logic_error(fmt::format("stress run gave no verdict for {} on {}", id, e));
+                compare::BoundVerdict v;
+                v.engine = e;
+                v.case_id = id;
+                v.metric = "stress";
+                v.value = v.lo = v.hi = NAN;
+                v.allowed_label = fmt::format("{}", fmt::join(b.allowed, "|"));
                 v.value_label = stress::to_string(r->verdict);
                 if (r->verdict == stress::Verdict::failed) v.value_label += std::string(" (") + stress::to_string(r->failure) + ")";
-                v.held = std::find(b.allowed.begin(), b.allowed.end(), stress::to_string(r->verdict)) != b.allowed.end();
+                // A hang, a crash, NaN or a wrong answer never holds, whatever the file allows: "failed" there means a
+                // failure the backend reports itself.
+                v.held = !stress::is_unsafe(*r) &&
+                         std::find(b.allowed.begin(), b.allowed.end(), stress::to_string(r->verdict)) != b.allowed.end();
                 if (!v.held) v.note = r->reason;
                 verdicts.push_back(v);
             }

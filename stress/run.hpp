@@ -9,6 +9,13 @@
 
 namespace vssw::stress {
 
+// Time limits per case and backend [s]: the quick set's runs took up to 15 s each on 2 cores under load 21
+// (simbody-rigid holding the threshold pulse), 30 s timed that one out with a second run beside it; the full set's
+// 600 s harmonic and 0.01 x steps take up to minutes; the limits leave room for a loaded machine (README, "Stress").
+// `vssw stress` and the [[stress]] bounds of `vssw check` both use the quick one.
+constexpr double kQuickTimeLimit = 120.0;
+constexpr double kFullTimeLimit = 300.0;
+
 struct RunOptions {
     std::vector<std::string> engines;  // backends to run (each must be compiled in: InputError otherwise)
     bool quick = false;                // the quick set (Case::quick) with shortened durations

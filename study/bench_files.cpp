@@ -298,13 +298,20 @@ std::vector<DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir
     blocks.push_back(t);
     std::error_code ec;
     std::filesystem::create_directories(plots_dir, ec);
-    for (const auto& entry : std::filesystem::directory_iterator(bench_dir / "plots", ec)) {
-        const std::filesystem::path p = entry.path();
-        if (p.extension() != ".svg" || p.stem().string().rfind("wp_", 0) != 0) continue;
+    // The plots of this bench's own problems and metrics, in the order of its points: a folder benched before may
+    // hold plots of problems this bench did not run.
+    std::vector<std::string> names;
+    for (const Json& p : j.value("points", Json::array())) {
+        const std::string name = "wp_" + text_of(p, "problem") + "_" + text_of(p, "metric");
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    for (const std::string& name : names) {
+        const std::filesystem::path svg = bench_dir / "plots" / (name + ".svg");
+        if (!std::filesystem::exists(svg, ec)) continue;  // no gnuplot, or a metric with nothing to plot
         std::error_code copy_ec;
-        std::filesystem::copy_file(p, plots_dir / p.filename(), std::filesystem::copy_options::overwrite_existing,
+        std::filesystem::copy_file(svg, plots_dir / svg.filename(), std::filesystem::copy_options::overwrite_existing,
                                    copy_ec);
-        if (!copy_ec) blocks.push_back(plot("Work-precision " + p.stem().string().substr(3), p.stem().string()));
+        if (!copy_ec) blocks.push_back(plot("Work-precision " + name.substr(3), name));
     }
     return blocks;
 }
