@@ -30,6 +30,8 @@ constexpr double kRestScanFraction = 1e-3;
 // Runs longer than this, or with more output samples, are refused as bad input rather than left to run for hours.
 constexpr double kMaxEndTime = 1e7;      // [s]
 constexpr double kMaxOutputSamples = 1e8;
+// Samples reserved at the start of a run (2^21, 144 MiB of address space): a longer run's vector grows as it fills.
+constexpr double kReservedSamples = 2097152.0;
 constexpr int kMaxNewtonIterations = 8;
 // After the top lands back on the roller the step restarts small: the motion has just changed mechanism.
 constexpr double kFirstStepAfterLanding = 1e-4;  // [s]
@@ -97,6 +99,11 @@ private:
 
     void emit(double t, const State& y) {
         if (!opt_.keep_samples) return;
+        if (!opt_.sample_energies) {
+            constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+            out_.samples.push_back({t, y[0], y[1], kNotComputed, kNotComputed, kNotComputed, y[2], dissipated_, ah_(t)});
+            return;
+        }
         out_.samples.push_back({t, y[0], y[1], model_.kinetic(y[0], y[1]), model_.weight_potential(y[0]),
                                 model_.overburden_work(y[0]), y[2], dissipated_, ah_(t)});
     }
@@ -201,8 +208,12 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
         for_output_times(t0, t1, [&](double tau) {
             const Vec<5> z = at(tau);
             const Vec2 q(z[0], z[1]), qd(z[2], z[3]);
-            out_.samples.push_back({tau, z[0], z[2], blocks.kinetic(q, qd), blocks.weight_potential(q),
-                                    blocks.overburden_work(q), z[4], dissipated_, ah_(tau)});
+            constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+            const bool energies = opt_.sample_energies;
+            out_.samples.push_back({tau, z[0], z[2], energies ? blocks.kinetic(q, qd) : kNotComputed,
+                                    energies ? blocks.weight_potential(q) : kNotComputed,
+                                    energies ? blocks.overburden_work(q) : kNotComputed, z[4], dissipated_,
+                                    ah_(tau)});
         });
     };
     setup.check_energy = [&](double at, const Vec<5>& z, double flight_dissipated) {
@@ -448,7 +459,8 @@ Event Simulator::rocking_phase(double& t, State& y) {
             dy = integrator_.rhs(std::nextafter(t, opt_.t_end + 1.0), y);
         out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(y[0]));
         if (ev == Event::impact) y[0] = 0.0;
-        if (opt_.keep_samples || ev != Event::none) check_balance(t, y);  // events always; every step when sampling
+        // Events always; every step when the samples carry the energies.
+        if ((opt_.keep_samples && opt_.sample_energies) || ev != Event::none) check_balance(t, y);
         if (opt_.output_dt <= 0.0) emit(t, y);
         if (ev != Event::none) return ev;
     }
@@ -470,6 +482,10 @@ SimulationResult Simulator::run(InitialState init) {
     initial_energy_ = model_.kinetic(y[0], y[1]) + model_.weight_potential(y[0]) - model_.overburden_work(y[0]);
     energy_scale_ = v_ref_;
     out_.max_abs_theta = std::abs(y[0]);
+    // The output grid's size, up to kReservedSamples: the samples fill without reallocation and copying (they were
+    // 9 % of `vssw check`'s instructions). Pages of a run that ends early are reserved, never touched.
+    if (opt_.keep_samples && opt_.output_dt > 0.0)
+        out_.samples.reserve(static_cast<std::size_t>(std::min(opt_.t_end / opt_.output_dt + 2.0, kReservedSamples)));
     emit_grid(-1.0, 0.0, [&](double) { return y; });
     if (opt_.output_dt <= 0.0) emit(t, y);
 

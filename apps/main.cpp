@@ -1,6 +1,23 @@
 // The `vssw` program: every command is implemented in the vssw_cli library (cli.hpp).
+#include <malloc.h>
+
 #include <iostream>
 
 #include "apps/cli.hpp"
 
-int main(int argc, char** argv) { return vssw::cli::run(argc, argv, std::cout, std::cerr); }
+namespace {
+
+// A sampled run's trajectory is megabytes. Above glibc's mmap threshold each one was mapped, page-faulted in and
+// unmapped again, run after run: `vssw check` spent 0.45 of its 0.96 s of CPU on 58,000 minor page faults. Taken from
+// the heap and kept there when freed, the next run reuses the same pages (README, "Speed"). The peak resident size
+// is the same (81 against 85 MiB for check): the memory is reused, not added to.
+constexpr int kMmapThreshold = 256 << 20;  // [bytes] larger than any one run's samples (validate() bounds them)
+constexpr int kTrimThreshold = 512 << 20;  // [bytes] free memory kept for the next run instead of returned
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
+    mallopt(M_TRIM_THRESHOLD, kTrimThreshold);
+    return vssw::cli::run(argc, argv, std::cout, std::cerr);
+}

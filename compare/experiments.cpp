@@ -94,6 +94,7 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
         ex.t_end = o.ramp_time + hold;
         ex.stop_at_rest = false;
         ex.stop_angle = lift;  // the trial's question is answered once the wall has lifted
+        ex.motion_only = true;  // whether it lifted is read from theta1 alone
         ++result.trials;
         return lifted(engine.simulate(scene, ex, trial_settings), lift);
     };
@@ -154,6 +155,7 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
     ex.theta0 = out.theta0;
     ex.t_end = o.t_end > 0.0 ? o.t_end : free_vibration_duration(scene, out.theta0, o.impacts);
     ex.stop_at_rest = true;
+    ex.motion_only = true;  // the impacts and peaks are read from theta1 and theta1' alone
     out.trajectory = engine.simulate(scene, ex, settings);
 
     out.impacts = impacts(out.trajectory, o.skip, o.noise_angle);

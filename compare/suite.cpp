@@ -158,6 +158,7 @@ Excitation history_excitation(const TaskContext& x) {
     ex.theta0 = 0.0;
     ex.t_end = x.record->duration() + kHistoryTail;
     ex.stop_at_rest = true;
+    ex.motion_only = true;  // the peak and the trace are read from theta1 alone
     return ex;
 }
 

@@ -83,6 +83,7 @@ multibody::Excitation record_excitation(const std::string& record_path) {
     multibody::Excitation e;
     e.horizontal = read_record(record_path).scaled(kRecordScale);
     e.t_end = e.horizontal.duration() + kResponseTail;
+    e.motion_only = true;  // the peak is read from theta1 alone
     return e;
 }
 

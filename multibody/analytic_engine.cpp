@@ -96,6 +96,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     options.roller = knobs.roller;
     // A threshold trial (a stop angle) needs only whether the wall lifted: the supports' forces are not computed.
     options.monitor_supports = !(excitation.stop_angle > 0.0);
+    options.sample_energies = !excitation.motion_only;
 
     // The integrator's sign convention is engine.hpp's: a positive a_h tips the wall towards theta1 < 0.
     SimulationResult r;
@@ -128,6 +129,10 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     out.samples.reserve(r.samples.size());
     const double top_at_rest = model->load_height(0.0);
     for (const Sample& s : r.samples) {
+        if (excitation.motion_only) {
+            out.samples.push_back(motion_sample(s.t, s.theta, s.theta_dot));
+            continue;
+        }
         TrajectorySample t{};
         t.t = s.t;
         t.theta1 = s.theta;
@@ -145,7 +150,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
         const double side = !out.samples.empty() && out.samples.back().theta1 < 0.0 ? -1.0 : 1.0;
         t.t = r.t_overturn;
         t.theta1 = side * excitation.stop_angle;
-        t.theta2 = upper_rotation(scene, knobs.kinematics, t.theta1);
+        if (!excitation.motion_only) t.theta2 = upper_rotation(scene, knobs.kinematics, t.theta1);
         out.samples.push_back(t);
     }
     return out;

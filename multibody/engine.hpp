@@ -9,6 +9,7 @@
 //    which is the analytic model's sign: a positive ground acceleration a_h (along +x) tips it towards theta1 < 0;
 //  - theta2 is the upper body's rotation in the same sense (negative while theta1 > 0, Eq. 2);
 //  - top_dy is the vertical displacement of the centre of the top face from rest (the roller lets it rise).
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -44,6 +45,10 @@ struct Excitation {
     bool stop_at_rest = true;  // end the run once the wall is at rest after the ground motion (nothing left to see)
     // > 0: end the run once |theta1| reaches this angle [rad] (a threshold trial needs to know no more than that).
     double stop_angle = 0.0;
+    // true: the caller reads the lower body's motion alone (t, theta1, theta1_dot: all that compare/ and study/
+    // measure), so the samples' theta2, top_dy, kinetic and potential are not computed (NaN; contacts 0). On the
+    // analytic model those fields were three quarters of a sampled run's instructions (README, "Speed").
+    bool motion_only = false;
 };
 
 // Solver iterations a caller may ask of an engine (`vssw compare --iterations`, a study's settings): Bullet's
@@ -65,6 +70,13 @@ struct TrajectorySample {
     double kinetic, potential;  // [J] for the scene's depth (per unit depth for the analytic model)
     int contacts;               // contact points in use (0 for the analytic model)
 };
+
+// A sample of the motion alone (Excitation::motion_only): the fields not computed are NaN, so that nothing can read
+// them as values.
+inline TrajectorySample motion_sample(double t, double theta1, double theta1_dot) {
+    constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+    return {t, theta1, theta1_dot, kNotComputed, kNotComputed, kNotComputed, kNotComputed, 0};
+}
 
 // What a backend that locates its events by root finding knows beyond its samples: the analytic model's turning
 // points and overturning, its energy balance and the supports' demand. Unset for the engines, whose metrics come from

@@ -181,6 +181,7 @@ Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, co
     ex.theta0 = 0.0;
     ex.t_end = motion.duration() + kResponseTail;
     ex.stop_at_rest = true;
+    ex.motion_only = true;  // the response metrics are read from theta1 alone
     multibody::EngineSettings settings = run.settings;
     if (run.engine == "analytic") settings.sample_dt = kAnalyticResponseSampleDt;
     return engine.simulate(c.scene, ex, settings);

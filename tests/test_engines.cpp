@@ -198,6 +198,30 @@ TEST_P(CrossEngine, NoEnergyIsGainedInFlight) {
     for (const auto& s : tr.samples) EXPECT_LT(s.kinetic + s.potential - e0, kGain * v_r) << "t " << s.t;
 }
 
+TEST_P(CrossEngine, MotionOnlyRunsMoveAsFullRunsAndComputeNothingElse) {
+    // Excitation::motion_only drops the work of theta2, top_dy and the energies: the motion must not change by a bit
+    // (the sampled state does not feed back into the run), and the fields not computed must be NaN, not stale values.
+    const WallScene scene = fig6_vssw();
+    multibody::Excitation ex;
+    ex.theta0 = 0.5 * scene.alpha();
+    ex.t_end = 1.5 * free_vibration(*analytic_reference(scene), ex.theta0).impacts.at(0).t;  // through an impact
+    const multibody::Trajectory full = engine_->simulate(scene, ex, settings_);
+    ex.motion_only = true;
+    const multibody::Trajectory motion = engine_->simulate(scene, ex, settings_);
+    ASSERT_EQ(motion.samples.size(), full.samples.size());
+    for (std::size_t i = 0; i < full.samples.size(); ++i) {
+        const auto &a = full.samples[i], &b = motion.samples[i];
+        ASSERT_EQ(b.t, a.t) << "sample " << i;
+        ASSERT_EQ(b.theta1, a.theta1) << "t " << a.t;
+        ASSERT_EQ(b.theta1_dot, a.theta1_dot) << "t " << a.t;
+        ASSERT_TRUE(std::isfinite(a.theta2) && std::isfinite(a.top_dy) && std::isfinite(a.kinetic) &&
+                    std::isfinite(a.potential))
+            << "t " << a.t;
+        ASSERT_TRUE(std::isnan(b.theta2) && std::isnan(b.top_dy) && std::isnan(b.kinetic) && std::isnan(b.potential))
+            << "t " << b.t;
+    }
+}
+
 TEST_P(CrossEngine, OverburdenRaisesTheThresholdAsEq12Says) {
     // xi = 0.5 against xi = 0: the engine's N must act where the analytic model puts it (centre of the top face).
     const compare::ThresholdResult light = compare::find_threshold(*engine_, settings_, table1_specimen11(0.0));

@@ -243,6 +243,10 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     Trajectory out;
     const long every = sample_every(settings, settings.dt);
     auto record = [&](double t) {
+        if (ex.motion_only) {
+            out.samples.push_back(motion_sample(t, clockwise_angle(lower), -lower.getAngularVelocity().z()));
+            return out.samples.back();
+        }
         TrajectorySample p{};
         p.t = t;
         p.theta1 = clockwise_angle(lower);

@@ -102,6 +102,9 @@ Knobs read_knobs(const EngineSettings& s) {
     // 4.1e-4 / 1.16e-4 / 8.4e-5 / 3.3e-5 at 3e-6 (the same as 1e-6: the sampling's), but 4.1e-4 / 1.15e-4 / 1.58e-4 /
     // 3.8e-5 at 1e-5: the integrator's error shows, and the error no longer falls with the interval. 1e-4 drifts
     // (theta1 0.0167 rad instead of 0.0092 after 2 s of free vibration). Cost per accuracy: README "Simbody (3.7)".
+    // `vssw bench` finds 1e-5 the cheapest accuracy within every target (0.51 against 0.58 s of CPU at 1e-6 on the
+    // Fig. 6 free vibration), but there the quarter-period error rises as the reporting interval falls from 4 to 1 ms
+    // (1.15e-4 at 2 ms, 1.58e-4 at 1 ms: CrossEngine.QuarterPeriodErrorFallsAsTheStepFalls fails), so it stays 3e-6.
     k.accuracy = r.positive("accuracy", 3e-6);
     // integrator 1 (CPodes, BDF): the contacts are stiff (friction slope mu N / vt); Runge-Kutta-Merson took 881k
     // steps and 141 s for a 3.6 s free vibration of the Fig. 6 VSSW (E 1e13, r 1e-3), CPodes 13k steps and 0.9 s, with
@@ -298,6 +301,10 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
     auto record = [&](double t) {
         const SimTK::State& st = integ->getState();
         w.system().realize(st, SimTK::Stage::Velocity);
+        if (ex.motion_only) {
+            out.samples.push_back(motion_of(bodies, st, t));
+            return;
+        }
         TrajectorySample p = sample_of(bodies, st, t);
         p.contacts = w.contacts(st);
         out.samples.push_back(p);

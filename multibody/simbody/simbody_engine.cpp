@@ -272,6 +272,10 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     auto record = [&](double t) {
         const SimTK::State& st = ts.getState();
         w.system().realize(st, SimTK::Stage::Velocity);
+        if (ex.motion_only) {
+            out.samples.push_back(motion_of(bodies, st, t));
+            return;
+        }
         TrajectorySample p = sample_of(bodies, st, t);
         int contacts = 0;
         for (SimTK::UnilateralContactIndex i(0); i < matter.getNumUnilateralContacts(); ++i)

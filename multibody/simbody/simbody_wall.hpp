@@ -72,15 +72,17 @@ struct WallBodies {
     double y_lower0, y_upper0, y_top0;  // [m] at rest
 };
 
+// The lower body's motion of a state realized to Velocity (Excitation::motion_only: the rest NaN).
+inline TrajectorySample motion_of(const WallBodies& w, const SimTK::State& st, double t) {
+    return motion_sample(t, clockwise_angle(w.lower, st), -w.lower.getBodyAngularVelocity(st)[2]);
+}
+
 // The sample of a state realized to Velocity (contacts left to the route, which counts them its own way).
 inline TrajectorySample sample_of(const WallBodies& w, const SimTK::State& st, double t) {
     const BlockSizes& s = w.sizes;
     const SimTK::MobilizedBody& top_body = w.vssw ? w.upper : w.lower;
     const double top_half = w.vssw ? s.h_upper : s.h_lower;
-    TrajectorySample p{};
-    p.t = t;
-    p.theta1 = clockwise_angle(w.lower, st);
-    p.theta1_dot = -w.lower.getBodyAngularVelocity(st)[2];
+    TrajectorySample p = motion_of(w, st, t);
     p.theta2 = w.vssw ? clockwise_angle(w.upper, st) : 0.0;
     p.top_dy = world_point(top_body, st, 0.0, top_half)[1] - w.y_top0;
     // Homogeneous blocks: I = m (b^2 + h^2) / 3 about the centre.
