@@ -9,12 +9,15 @@
 #include <set>
 #include <system_error>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/worker_process.hpp"
 #include "study/atomic_file.hpp"
 #include "study/clock.hpp"
 #include "study/measure.hpp"
@@ -107,14 +110,15 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
             "k/n with 1 <= k <= n", options.shard.k);
     const bool writer = options.mpi == nullptr || options.mpi->rank() == 0;
 
-    // Engines: one object each, shared by every task (simulate() is const; ODE's runs are serialised by the pool).
+    // Engines: one object each, shared by every task (simulate() is const). `callee` is what a task calls: the engine,
+    // or with several threads, for ODE, the engine in worker processes (set below).
     std::vector<std::unique_ptr<multibody::Engine>> engines;
-    std::vector<bool> exclusive;
+    std::vector<const multibody::Engine*> callee;
     StudyRunResult result;
     result.writer = writer;
     for (const EngineSpec& e : grid.spec().engines) {
         engines.push_back(multibody::make_engine(e.name));
-        exclusive.push_back(!engines.back()->runs_concurrently());
+        callee.push_back(engines.back().get());
         result.meta.engines.push_back({e.name, engines.back()->version()});
     }
     const auto engine_index = [&](const std::string& name) {
@@ -177,10 +181,10 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         const Task& t = tasks[i];
         if (t.case_id < 0) {
             const CaseSpec c = grid.make_case(-t.case_id);
-            return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, *engines[t.engine])});
+            return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, *callee[t.engine])});
         }
         const CaseSpec c = grid.make_case(t.case_id);
-        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *engines[t.engine]));
+        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *callee[t.engine]));
     };
     const auto note_progress = [&](const std::string& what) {
         if (!options.progress) return;
@@ -198,6 +202,18 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         result.meta.threads = 1;
         result.meta.processes = options.mpi->size();
     } else {
+        // An engine that is not re-entrant (ODE) runs in worker processes when several threads run, beside itself
+        // (multibody/worker_process.hpp); otherwise its tasks take turns (the pool's exclusive groups).
+        std::vector<std::unique_ptr<multibody::Engine>> workers;
+        std::vector<bool> exclusive;
+        const int threads = compare::pool_threads(options.threads, pool.size());
+        for (std::size_t e = 0; e < engines.size(); ++e) {
+            if (auto w = multibody::worker_process_engine_for(*engines[e], threads)) {
+                callee[e] = w.get();
+                workers.push_back(std::move(w));
+            }
+            exclusive.push_back(!callee[e]->runs_concurrently());
+        }
         result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
             journal->append_text(run_task(i));
             note_progress(tasks[i].case_id < 0

@@ -1,0 +1,79 @@
+#include "multibody/worker_process.hpp"
+
+#include <cstdlib>
+#include <exception>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/child_process.hpp"
+#include "multibody/trajectory_bytes.hpp"
+
+namespace vssw::multibody {
+namespace {
+
+// The child's answer: one tag byte, then the trajectory's bytes or the exception's message.
+constexpr char kReturned = 'r';
+constexpr char kEngineFailure = 'f';
+constexpr char kInputError = 'i';
+constexpr char kOtherError = 'e';
+
+// Runs in the child: every exception becomes a tagged message, so that the parent throws the same type.
+std::string answer(const Engine& engine, const WallScene& scene, const Excitation& ex, const EngineSettings& settings) {
+    try {
+        return kReturned + to_bytes(engine.simulate(scene, ex, settings));
+    } catch (const EngineFailure& e) {
+        return kEngineFailure + std::string(e.what());
+    } catch (const InputError& e) {
+        return kInputError + std::string(e.what());
+    } catch (const std::exception& e) {
+        return kOtherError + std::string(e.what());
+    } catch (...) {
+        return kOtherError + std::string("an exception of unknown type");
+    }
+}
+
+}  // namespace
+
+Trajectory WorkerProcessEngine::simulate(const WallScene& scene, const Excitation& ex,
+                                         const EngineSettings& settings) const {
+    const ChildResult child = run_in_child([&] { return answer(inner_, scene, ex, settings); }, 0.0);
+    const std::string who = inner_.name();
+    if (child.end != ChildEnd::completed)  // answer() catches everything: a signal or an exit of the library's own
+        throw EngineFailure(fmt::format("{}: its worker process {}", who, describe_end(child)));
+    const std::string& out = child.output;
+    const std::string text = out.empty() ? std::string() : out.substr(1);
+    switch (out.empty() ? '\0' : out[0]) {
+        case kReturned:
+            try {
+                return trajectory_from_bytes(std::string_view(out).substr(1));
+            } catch (const std::runtime_error& e) {
+                throw EngineFailure(fmt::format("{}: its worker process sent a broken answer: {}", who, e.what()));
+            }
+        case kEngineFailure:
+            throw EngineFailure(text);
+        case kInputError:
+            throw InputError(text);
+        case kOtherError:
+            throw std::runtime_error(text);
+        default:
+            throw EngineFailure(
+                fmt::format("{}: its worker process ended without an answer ({} bytes)", who, out.size()));
+    }
+}
+
+bool worker_processes_enabled() {
+    const char* v = std::getenv("VSSW_WORKER_PROCESSES");
+    if (!v || std::string(v).empty() || std::string(v) == "1") return true;
+    if (std::string(v) == "0") return false;
+    throw InputError(fmt::format("VSSW_WORKER_PROCESSES must be 0 (off) or 1 (on), got '{}'", v));
+}
+
+std::unique_ptr<Engine> worker_process_engine_for(const Engine& engine, int threads) {
+    if (threads <= 1 || engine.runs_concurrently() || !engine.runs_in_worker_process()) return nullptr;
+    if (!worker_processes_enabled()) return nullptr;
+    return std::make_unique<WorkerProcessEngine>(engine);
+}
+
+}  // namespace vssw::multibody
