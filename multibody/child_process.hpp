@@ -9,6 +9,7 @@
 // and it ends with _exit (no atexit handlers, static destructors or stdio flushes of the parent's copy run twice).
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace vssw::multibody {
 
@@ -32,6 +33,9 @@ struct ChildResult {
 // from several threads at once (each call forks and waits for its own child only). Throws std::runtime_error only
 // when the process cannot fork or make a pipe.
 ChildResult run_in_child(const std::function<std::string()>& work, double time_limit_s);
+// The same with the answer (of a child that completed or threw) left where it was received, in a buffer of the calling
+// thread's that no child shares, valid until the thread's next call; r.output stays empty. For answers of megabytes.
+ChildResult run_in_child(const std::function<std::string()>& work, double time_limit_s, std::string_view& answer);
 
 // CPU seconds (user + system) of the children the calling thread has waited for in run_in_child, since the thread
 // began: a caller timing a task by its thread's CPU adds the work its children did.

@@ -13,6 +13,7 @@ namespace {
 
 class Writer {
 public:
+    explicit Writer(std::string& out) : out_(out) {}
     template <class T>
     void put(const T& v) {
         static_assert(std::is_trivially_copyable_v<T>);
@@ -26,11 +27,12 @@ public:
         put(static_cast<char>(v.has_value()));
         if (v) put(*v);
     }
-    std::string take() { return std::move(out_); }
 
 private:
-    std::string out_;
+    std::string& out_;
 };
+
+constexpr std::size_t kSampleBytes = 7 * sizeof(double) + sizeof(int);
 
 class Reader {
 public:
@@ -68,7 +70,14 @@ private:
 
 // Field by field (not the structs' raw bytes: their padding is indeterminate, and the strings are not bytes).
 std::string to_bytes(const Trajectory& t) {
-    Writer w;
+    std::string out;
+    append_bytes(out, t);
+    return out;
+}
+
+void append_bytes(std::string& out, const Trajectory& t) {
+    out.reserve(out.size() + 256 + t.samples.size() * kSampleBytes);  // the samples, and room for the rest
+    Writer w(out);
     w.put(static_cast<std::uint64_t>(t.samples.size()));
     for (const TrajectorySample& p : t.samples) {
         w.put(p.t);
@@ -95,7 +104,6 @@ std::string to_bytes(const Trajectory& t) {
         w.put(static_cast<char>(e.supports_computed));
         w.put_optional(e.roller_tension_at);
     }
-    return w.take();
 }
 
 Trajectory trajectory_from_bytes(std::string_view bytes) {

@@ -10,6 +10,8 @@
 namespace vssw::multibody {
 
 std::string to_bytes(const Trajectory& t);
+// The same bytes appended to `out` (room made once: a trajectory is megabytes).
+void append_bytes(std::string& out, const Trajectory& t);
 // Throws std::runtime_error when the bytes end early or run on past the trajectory (a child that died mid-write).
 Trajectory trajectory_from_bytes(std::string_view bytes);
 

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -22,7 +24,10 @@ constexpr char kOtherError = 'e';
 // Runs in the child: every exception becomes a tagged message, so that the parent throws the same type.
 std::string answer(const Engine& engine, const WallScene& scene, const Excitation& ex, const EngineSettings& settings) {
     try {
-        return kReturned + to_bytes(engine.simulate(scene, ex, settings));
+        const Trajectory t = engine.simulate(scene, ex, settings);
+        std::string out(1, kReturned);
+        append_bytes(out, t);
+        return out;
     } catch (const EngineFailure& e) {
         return kEngineFailure + std::string(e.what());
     } catch (const InputError& e) {
@@ -38,28 +43,28 @@ std::string answer(const Engine& engine, const WallScene& scene, const Excitatio
 
 Trajectory WorkerProcessEngine::simulate(const WallScene& scene, const Excitation& ex,
                                          const EngineSettings& settings) const {
-    const ChildResult child = run_in_child([&] { return answer(inner_, scene, ex, settings); }, 0.0);
+    std::string_view out;  // in place, where it was received: a trajectory is megabytes
+    const ChildResult child = run_in_child([&] { return answer(inner_, scene, ex, settings); }, 0.0, out);
     const std::string who = inner_.name();
     if (child.end != ChildEnd::completed)  // answer() catches everything: a signal or an exit of the library's own
         throw EngineFailure(fmt::format("{}: its worker process {}", who, describe_end(child)));
-    const std::string& out = child.output;
-    const std::string text = out.empty() ? std::string() : out.substr(1);
-    switch (out.empty() ? '\0' : out[0]) {
+    const char tag = out.empty() ? '\0' : out[0];
+    out.remove_prefix(out.empty() ? 0 : 1);
+    switch (tag) {
         case kReturned:
             try {
-                return trajectory_from_bytes(std::string_view(out).substr(1));
+                return trajectory_from_bytes(out);
             } catch (const std::runtime_error& e) {
                 throw EngineFailure(fmt::format("{}: its worker process sent a broken answer: {}", who, e.what()));
             }
         case kEngineFailure:
-            throw EngineFailure(text);
+            throw EngineFailure(std::string(out));
         case kInputError:
-            throw InputError(text);
+            throw InputError(std::string(out));
         case kOtherError:
-            throw std::runtime_error(text);
+            throw std::runtime_error(std::string(out));
         default:
-            throw EngineFailure(
-                fmt::format("{}: its worker process ended without an answer ({} bytes)", who, out.size()));
+            throw EngineFailure(fmt::format("{}: its worker process ended without an answer", who));
     }
 }
 
