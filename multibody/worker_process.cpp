@@ -15,18 +15,17 @@
 namespace vssw::multibody {
 namespace {
 
-// The child's answer: one tag byte, then the trajectory's bytes or the exception's message.
+// The child's answer: one tag byte, then what the work wrote or the exception's message.
 constexpr char kReturned = 'r';
 constexpr char kEngineFailure = 'f';
 constexpr char kInputError = 'i';
 constexpr char kOtherError = 'e';
 
 // Runs in the child: every exception becomes a tagged message, so that the parent throws the same type.
-std::string answer(const Engine& engine, const WallScene& scene, const Excitation& ex, const EngineSettings& settings) {
+std::string answer(const std::function<void(std::string&)>& work) {
     try {
-        const Trajectory t = engine.simulate(scene, ex, settings);
         std::string out(1, kReturned);
-        append_bytes(out, t);
+        work(out);
         return out;
     } catch (const EngineFailure& e) {
         return kEngineFailure + std::string(e.what());
@@ -41,22 +40,16 @@ std::string answer(const Engine& engine, const WallScene& scene, const Excitatio
 
 }  // namespace
 
-Trajectory WorkerProcessEngine::simulate(const WallScene& scene, const Excitation& ex,
-                                         const EngineSettings& settings) const {
+std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who) {
     std::string_view out;  // in place, where it was received: a trajectory is megabytes
-    const ChildResult child = run_in_child([&] { return answer(inner_, scene, ex, settings); }, 0.0, out);
-    const std::string who = inner_.name();
+    const ChildResult child = run_in_child([&] { return answer(work); }, 0.0, out);
     if (child.end != ChildEnd::completed)  // answer() catches everything: a signal or an exit of the library's own
         throw EngineFailure(fmt::format("{}: its worker process {}", who, describe_end(child)));
     const char tag = out.empty() ? '\0' : out[0];
     out.remove_prefix(out.empty() ? 0 : 1);
     switch (tag) {
         case kReturned:
-            try {
-                return trajectory_from_bytes(out);
-            } catch (const std::runtime_error& e) {
-                throw EngineFailure(fmt::format("{}: its worker process sent a broken answer: {}", who, e.what()));
-            }
+            return out;
         case kEngineFailure:
             throw EngineFailure(std::string(out));
         case kInputError:
@@ -68,6 +61,18 @@ Trajectory WorkerProcessEngine::simulate(const WallScene& scene, const Excitatio
     }
 }
 
+Trajectory WorkerProcessEngine::simulate(const WallScene& scene, const Excitation& ex,
+                                         const EngineSettings& settings) const {
+    const std::string who = inner_.name();
+    const std::string_view bytes = run_in_worker_process(
+        [&](std::string& out) { append_bytes(out, inner_.simulate(scene, ex, settings)); }, who);
+    try {
+        return trajectory_from_bytes(bytes);
+    } catch (const std::runtime_error& e) {
+        throw EngineFailure(fmt::format("{}: its worker process sent a broken answer: {}", who, e.what()));
+    }
+}
+
 bool worker_processes_enabled() {
     const char* v = std::getenv("VSSW_WORKER_PROCESSES");
     if (!v || std::string(v).empty() || std::string(v) == "1") return true;
@@ -75,9 +80,13 @@ bool worker_processes_enabled() {
     throw InputError(fmt::format("VSSW_WORKER_PROCESSES must be 0 (off) or 1 (on), got '{}'", v));
 }
 
+bool runs_in_worker_processes(const Engine& engine, int threads) {
+    if (threads <= 1 || engine.runs_concurrently() || !engine.runs_in_worker_process()) return false;
+    return worker_processes_enabled();
+}
+
 std::unique_ptr<Engine> worker_process_engine_for(const Engine& engine, int threads) {
-    if (threads <= 1 || engine.runs_concurrently() || !engine.runs_in_worker_process()) return nullptr;
-    if (!worker_processes_enabled()) return nullptr;
+    if (!runs_in_worker_processes(engine, threads)) return nullptr;
     return std::make_unique<WorkerProcessEngine>(engine);
 }
 

@@ -6,8 +6,10 @@
 //
 // Off with the environment variable VSSW_WORKER_PROCESSES=0 (then such an engine's runs take turns, as before).
 // Only a pool of more than one thread uses it: with one thread nothing forks.
+#include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "multibody/engine.hpp"
 
@@ -35,9 +37,19 @@ private:
 // VSSW_WORKER_PROCESSES: unset, empty or "1" on; "0" off. Throws InputError naming any other value.
 bool worker_processes_enabled();
 
-// For a pool running `threads` threads at once (compare/task_pool.hpp): a WorkerProcessEngine around `engine` when
-// its runs cannot share a process (runs_concurrently() false) but can each run in a child (runs_in_worker_process()),
-// more than one thread runs and worker processes are not off; otherwise nullptr (call `engine` itself).
+// Whether a pool running `threads` threads at once should run `engine`'s work in worker processes: its runs cannot
+// share a process (runs_concurrently() false) but can each run in a child (runs_in_worker_process()), more than one
+// thread runs and worker processes are not off.
+bool runs_in_worker_processes(const Engine& engine, int threads);
+
+// Runs `work` in a forked child; what it appends to its string comes back, in a buffer of the calling thread's valid
+// until its next call (child_process.hpp). Errors come back as for WorkerProcessEngine; `who` names the worker in
+// the message of a child that died. A caller whose task makes several runs (a threshold search: about ten) forks
+// once for the task rather than once per run (study/runner.cpp).
+std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who);
+
+// A WorkerProcessEngine around `engine` when runs_in_worker_processes(engine, threads); otherwise nullptr (call
+// `engine` itself).
 std::unique_ptr<Engine> worker_process_engine_for(const Engine& engine, int threads);
 
 }  // namespace vssw::multibody

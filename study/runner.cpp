@@ -110,15 +110,13 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
             "k/n with 1 <= k <= n", options.shard.k);
     const bool writer = options.mpi == nullptr || options.mpi->rank() == 0;
 
-    // Engines: one object each, shared by every task (simulate() is const). `callee` is what a task calls: the engine,
-    // or with several threads, for ODE, the engine in worker processes (set below).
+    // Engines: one object each, shared by every task (simulate() is const; ODE's runs are kept apart by the pool or
+    // by worker processes, below).
     std::vector<std::unique_ptr<multibody::Engine>> engines;
-    std::vector<const multibody::Engine*> callee;
     StudyRunResult result;
     result.writer = writer;
     for (const EngineSpec& e : grid.spec().engines) {
         engines.push_back(multibody::make_engine(e.name));
-        callee.push_back(engines.back().get());
         result.meta.engines.push_back({e.name, engines.back()->version()});
     }
     const auto engine_index = [&](const std::string& name) {
@@ -181,10 +179,10 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         const Task& t = tasks[i];
         if (t.case_id < 0) {
             const CaseSpec c = grid.make_case(-t.case_id);
-            return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, *callee[t.engine])});
+            return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, *engines[t.engine])});
         }
         const CaseSpec c = grid.make_case(t.case_id);
-        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *callee[t.engine]));
+        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *engines[t.engine]));
     };
     const auto note_progress = [&](const std::string& what) {
         if (!options.progress) return;
@@ -202,20 +200,20 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         result.meta.threads = 1;
         result.meta.processes = options.mpi->size();
     } else {
-        // An engine that is not re-entrant (ODE) runs in worker processes when several threads run, beside itself
-        // (multibody/worker_process.hpp); otherwise its tasks take turns (the pool's exclusive groups).
-        std::vector<std::unique_ptr<multibody::Engine>> workers;
-        std::vector<bool> exclusive;
+        // An engine that is not re-entrant (ODE) has its tasks run in worker processes when several threads run, a
+        // fork per task (a threshold search's ten runs in one child; only the task's rows come back), beside each
+        // other (multibody/worker_process.hpp); otherwise its tasks take turns (the pool's exclusive groups).
+        std::vector<bool> in_child, exclusive;
         const int threads = compare::pool_threads(options.threads, pool.size());
-        for (std::size_t e = 0; e < engines.size(); ++e) {
-            if (auto w = multibody::worker_process_engine_for(*engines[e], threads)) {
-                callee[e] = w.get();
-                workers.push_back(std::move(w));
-            }
-            exclusive.push_back(!callee[e]->runs_concurrently());
+        for (const auto& e : engines) {
+            in_child.push_back(multibody::runs_in_worker_processes(*e, threads));
+            exclusive.push_back(!e->runs_concurrently() && !in_child.back());
         }
         result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
-            journal->append_text(run_task(i));
+            const std::size_t e = tasks[i].engine;
+            journal->append_text(in_child[e] ? std::string(multibody::run_in_worker_process(
+                                                   [&](std::string& out) { out += run_task(i); }, engines[e]->name()))
+                                             : run_task(i));
             note_progress(tasks[i].case_id < 0
                               ? fmt::format("threshold of case {} {}", -tasks[i].case_id, grid.runs()[tasks[i].run].engine)
                               : fmt::format("case {} {}", tasks[i].case_id, grid.runs()[tasks[i].run].engine));
