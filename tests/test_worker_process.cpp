@@ -14,10 +14,12 @@
 
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
+#include "compare/suite.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/trajectory_bytes.hpp"
 #include "multibody/worker_process.hpp"
+#include "study/suite_file.hpp"
 #include "tests/study_fixtures.hpp"
 
 namespace {
@@ -240,6 +242,32 @@ TEST(WorkerProcess, AnOdeStudysResultsAreTheSameFileOnOneAndTwoThreads) {
     EXPECT_NE(one.find(",ode,"), std::string::npos) << "ODE's rows are in it";
     EXPECT_EQ(one, vssw::testing::read_file(dir / "two" / study::kResultsCsv));
     EXPECT_EQ(one, vssw::testing::read_file(dir / "off" / study::kResultsCsv));
+}
+
+// The validation suite runs ODE's simulations in worker processes on two threads (a fork per run): its rows, failures and
+// traces are those of one thread, where ODE runs in the process.
+TEST(WorkerProcess, OdesSuiteRowsAreTheSameOnOneAndTwoThreads) {
+    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    ::unsetenv("VSSW_WORKER_PROCESSES");
+    const compare::Suite s = compare::select_cases(study::read_suite("default", VSSW_DATA_DIR), {"fig6-pw", "fig6-vssw/r0.5"});
+    compare::RunOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const compare::SuiteResults a = compare::run_suite(s, {"ode"}, one);
+    const compare::SuiteResults b = compare::run_suite(s, {"ode"}, two);
+    ASSERT_EQ(b.threads, 2);
+    ASSERT_EQ(a.rows.size(), b.rows.size());
+    bool has_ode = false;
+    for (std::size_t i = 0; i < a.rows.size(); ++i) {
+        const compare::MetricRow &x = a.rows[i], &y = b.rows[i];
+        has_ode = has_ode || x.engine == "ode";
+        EXPECT_EQ(x.case_id + x.engine + x.metric, y.case_id + y.engine + y.metric);
+        EXPECT_TRUE(same_bits(x.engine_value, y.engine_value)) << x.case_id << " " << x.engine << " " << x.metric;
+    }
+    EXPECT_TRUE(has_ode);
+    EXPECT_EQ(a.failures.size(), b.failures.size());
+    ASSERT_EQ(a.traces.size(), b.traces.size());
+    for (std::size_t i = 0; i < a.traces.size(); ++i) EXPECT_EQ(a.traces[i].theta1_over_alpha, b.traces[i].theta1_over_alpha) << i;
 }
 
 }  // namespace
