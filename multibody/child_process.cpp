@@ -156,8 +156,10 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
         received += static_cast<std::size_t>(n);
         if (!had_header && received >= kHeaderBytes) {
             std::memcpy(&length, buffer.data(), sizeof length);
-            // Room for the whole answer at once (a length past any answer's is a broken header: read what comes).
-            if (length < (std::uint64_t{1} << 40)) buffer.reserve(kHeaderBytes + length, received);
+            // Room for the whole answer at once; a longer one (never met) grows the buffer as it comes, so that a broken
+            // header cannot ask for any amount of memory.
+            constexpr std::uint64_t kMaxReserve = std::uint64_t{1} << 28;  // 256 MiB
+            buffer.reserve(kHeaderBytes + static_cast<std::size_t>(std::min(length, kMaxReserve)), received);
         }
     }
     ::close(fds[0]);
