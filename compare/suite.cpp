@@ -20,6 +20,8 @@
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/analytic_engine.hpp"
+#include "multibody/child_process.hpp"
+#include "multibody/worker_process.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -464,8 +466,19 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
 
     std::vector<PoolTask> pool_tasks;
     for (const Task& t : tasks) pool_tasks.push_back({t.cost, t.engine_index});
+    // An engine that is not re-entrant (ODE) runs in worker processes when several threads run, beside itself
+    // (multibody/worker_process.hpp); otherwise its tasks take turns (the pool's exclusive groups).
+    std::vector<const multibody::Engine*> callee = engines;
+    std::vector<std::unique_ptr<multibody::Engine>> workers;
     std::vector<bool> exclusive;
-    for (const multibody::Engine* e : engines) exclusive.push_back(!e->runs_concurrently());
+    const int threads = pool_threads(options.threads, pool_tasks.size());
+    for (std::size_t ei = 0; ei < engines.size(); ++ei) {
+        if (auto w = multibody::worker_process_engine_for(*engines[ei], threads)) {
+            callee[ei] = w.get();
+            workers.push_back(std::move(w));
+        }
+        exclusive.push_back(!callee[ei]->runs_concurrently());
+    }
 
     std::mutex progress_mutex;
     int done = 0;
@@ -473,8 +486,9 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     results.threads = run_pool(pool_tasks, exclusive, options.threads, [&](std::size_t ti) {
         const Task& task = tasks[ti];
         const SuiteCase& c = suite.cases[task.case_index];
-        const multibody::Engine& engine = *engines[task.engine_index];
-        const double cpu_start = thread_cpu_seconds();
+        const multibody::Engine& engine = *callee[task.engine_index];
+        // A worker process's CPU is its own, counted once it has ended.
+        const double cpu_start = thread_cpu_seconds() + multibody::reaped_children_cpu_seconds();
         try {
             const TaskContext x{c, *case_walls[task.case_index], engine, task.engine_index == 0,
                                 c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr, options.keep_traces,
@@ -484,7 +498,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
             outputs[ti] = TaskOutput{};
             outputs[ti].failure = e.what();
         }
-        outputs[ti].cpu_s = thread_cpu_seconds() - cpu_start;
+        outputs[ti].cpu_s = thread_cpu_seconds() + multibody::reaped_children_cpu_seconds() - cpu_start;
         if (options.progress) {
             const std::lock_guard<std::mutex> lock(progress_mutex);
             ++done;

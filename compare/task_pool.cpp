@@ -19,9 +19,15 @@ double cost_per_simulated_second(const std::string& engine) {
     return 30e-3;
 }
 
+int pool_threads(int threads, std::size_t tasks) {
+    require(threads >= 0, "threads", ">= 0 (0: the available cores)", threads);
+    unsigned int want = threads > 0 ? static_cast<unsigned int>(threads) : std::max(1u, std::thread::hardware_concurrency());
+    want = std::max(1u, std::min(want, static_cast<unsigned int>(std::max<std::size_t>(1, tasks))));
+    return static_cast<int>(want);
+}
+
 int run_pool(const std::vector<PoolTask>& tasks, const std::vector<bool>& exclusive, int threads,
              const std::function<void(std::size_t task)>& run) {
-    require(threads >= 0, "threads", ">= 0 (0: the available cores)", threads);
     for (const PoolTask& t : tasks)
         if (t.group >= exclusive.size()) throw InputError("run_pool: a task's group has no exclusive flag");
 
@@ -81,8 +87,7 @@ int run_pool(const std::vector<PoolTask>& tasks, const std::vector<bool>& exclus
         }
     };
 
-    unsigned int want = threads > 0 ? static_cast<unsigned int>(threads) : std::max(1u, std::thread::hardware_concurrency());
-    want = std::max(1u, std::min(want, static_cast<unsigned int>(std::max<std::size_t>(1, tasks.size()))));
+    const auto want = static_cast<unsigned int>(pool_threads(threads, tasks.size()));
     if (want == 1) {
         worker();
     } else {

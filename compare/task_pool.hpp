@@ -24,6 +24,11 @@ double cost_per_simulated_second(const std::string& engine);
 // task it may run and waits only when every remaining task belongs to a busy exclusive group. The first exception
 // thrown by run stops the pool (tasks not yet started are not started) and is rethrown here once every running task
 // has returned. Returns the number of threads used.
+// The number of threads run_pool uses for `tasks` tasks: min(threads, tasks), at least 1 (threads 0: the available
+// cores). A caller that wraps a non-re-entrant engine in worker processes (multibody/worker_process.hpp) asks this
+// first: with one thread nothing forks.
+int pool_threads(int threads, std::size_t tasks);
+
 int run_pool(const std::vector<PoolTask>& tasks, const std::vector<bool>& exclusive, int threads,
              const std::function<void(std::size_t task)>& run);
 

@@ -9,12 +9,15 @@
 #include <set>
 #include <system_error>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/worker_process.hpp"
 #include "study/atomic_file.hpp"
 #include "study/clock.hpp"
 #include "study/measure.hpp"
@@ -107,14 +110,13 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
             "k/n with 1 <= k <= n", options.shard.k);
     const bool writer = options.mpi == nullptr || options.mpi->rank() == 0;
 
-    // Engines: one object each, shared by every task (simulate() is const; ODE's runs are serialised by the pool).
+    // Engines: one object each, shared by every task (simulate() is const; ODE's runs are kept apart by the pool or
+    // by worker processes, below).
     std::vector<std::unique_ptr<multibody::Engine>> engines;
-    std::vector<bool> exclusive;
     StudyRunResult result;
     result.writer = writer;
     for (const EngineSpec& e : grid.spec().engines) {
         engines.push_back(multibody::make_engine(e.name));
-        exclusive.push_back(!engines.back()->runs_concurrently());
         result.meta.engines.push_back({e.name, engines.back()->version()});
     }
     const auto engine_index = [&](const std::string& name) {
@@ -198,8 +200,20 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         result.meta.threads = 1;
         result.meta.processes = options.mpi->size();
     } else {
+        // An engine that is not re-entrant (ODE) has its tasks run in worker processes when several threads run, a
+        // fork per task (a threshold search's ten runs in one child; only the task's rows come back), beside each
+        // other (multibody/worker_process.hpp); otherwise its tasks take turns (the pool's exclusive groups).
+        std::vector<bool> in_child, exclusive;
+        const int threads = compare::pool_threads(options.threads, pool.size());
+        for (const auto& e : engines) {
+            in_child.push_back(multibody::runs_in_worker_processes(*e, threads));
+            exclusive.push_back(!e->runs_concurrently() && !in_child.back());
+        }
         result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
-            journal->append_text(run_task(i));
+            const std::size_t e = tasks[i].engine;
+            journal->append_text(in_child[e] ? std::string(multibody::run_in_worker_process(
+                                                   [&](std::string& out) { out += run_task(i); }, engines[e]->name()))
+                                             : run_task(i));
             note_progress(tasks[i].case_id < 0
                               ? fmt::format("threshold of case {} {}", -tasks[i].case_id, grid.runs()[tasks[i].run].engine)
                               : fmt::format("case {} {}", tasks[i].case_id, grid.runs()[tasks[i].run].engine));

@@ -397,6 +397,10 @@ private:
 
 class OdeEngine final : public Engine {
 public:
+    // The library is initialised with the engine, on the thread that makes it, before any pool starts: a worker
+    // process forked later inherits it whole, never half done by another thread (whose lock the child would wait on
+    // for ever), and pays no dInitODE2 per run.
+    OdeEngine() { ensure_ode(); }
     std::string name() const override { return "ode"; }
     std::string version() const override {
         ensure_ode();
@@ -419,8 +423,11 @@ public:
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
     // ODE's library state is process-wide (ensure_ode(): the initialisation, the message handler and its count,
-    // per-thread collision data): one run at a time.
+    // per-thread collision data): one run at a time in a process.
     bool runs_concurrently() const override { return false; }
+    // A run takes no lock of ours, and its only process-wide state is the message count and the random seed, both
+    // set per run: in a forked child each run is the same as in this process (multibody/worker_process.hpp).
+    bool runs_in_worker_process() const override { return true; }
 };
 
 Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
