@@ -49,6 +49,7 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     report.time_limit_s = o.time_limit > 0.0 ? o.time_limit : (o.quick ? kQuickTimeLimit : kFullTimeLimit);
     report.engines = o.engines.empty() ? multibody::available_engines() : parse_engine_list("--engines", o.engines);
     const int threads = parse_threads(o.threads_text);
+    for (const std::string& name : o.cases) (void)stress::require_case(name);  // before --out is created
     // Check the folder can be written before anything runs (AtomicFile creates its temporary file at once).
     std::vector<std::unique_ptr<study::AtomicFile>> files;
     if (!o.out_dir.empty()) {

@@ -29,17 +29,19 @@ CaseResult result_of(const ChildResult& child, const std::string& name, const st
     return r;
 }
 
+const Case& require_case(const std::string& name) {
+    const Case* c = find_case(name);
+    if (c == nullptr) {
+        std::vector<std::string> names;
+        for (const Case& k : all_cases()) names.push_back(k.name);
+        throw InputError(fmt::format("no stress case '{}' (cases: {})", name, fmt::join(names, ", ")));
+    }
+    return *c;
+}
+
 std::vector<CaseResult> run_cases(const RunOptions& o) {
     std::vector<const Case*> chosen;
-    for (const std::string& name : o.cases) {
-        const Case* c = find_case(name);
-        if (c == nullptr) {
-            std::vector<std::string> names;
-            for (const Case& k : all_cases()) names.push_back(k.name);
-            throw InputError(fmt::format("no stress case '{}' (cases: {})", name, fmt::join(names, ", ")));
-        }
-        chosen.push_back(c);
-    }
+    for (const std::string& name : o.cases) chosen.push_back(&require_case(name));
     if (o.cases.empty())
         for (const Case& c : all_cases())
             if (!o.quick || c.quick) chosen.push_back(&c);

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "stress/case.hpp"
+
 #include "stress/isolated.hpp"
 #include "stress/verdict.hpp"
 
@@ -28,6 +30,9 @@ struct RunOptions {
 
 // The verdicts, in case order then engine order.
 std::vector<CaseResult> run_cases(const RunOptions& options);
+
+// The stress case of that name; InputError naming it and listing the set otherwise.
+const Case& require_case(const std::string& name);
 
 // A child's end as a verdict: its own answer when it completed, otherwise failed (timed out, crashed, threw).
 CaseResult result_of(const ChildResult& child, const std::string& name, const std::string& engine);

@@ -587,6 +587,13 @@ TEST(CliHardening, HistoryCsvIsLeftAsItWasWhenTheRunFails) {
                      {"no_such_folder"});
 }
 
+// An unknown stress case used to be refused only after --out had been created (an empty folder left behind).
+TEST(CliHardening, StressRefusesAnUnknownCaseBeforeCreatingItsFolder) {
+    const fs::path out = fresh_folder("stress_unknown") / "out";
+    expect_bad_input({"stress", "--cases", "no-such-case", "--out", out.string()}, {"no-such-case"});
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(CliHardening, CountsAreNamedAsTypedWithTheirRange) {
     expect_bad_input({"check", "--bounds", "bounds.toml", "--threads", "-1"},
                      {"--threads must be an integer from 0 to 256 (0: the available cores), got -1"});
