@@ -211,10 +211,11 @@ public:
         EngineSettings s;
         // Measured (README, "Bullet"): at 1, 0.5 and 0.2 ms with 10 iterations every wall of the issue is within the
         // targets, errors in threshold and period falling with the step; 20 to 200 iterations move the restitution by
-        // 0.13 % at most (Table 1 #1 at xi 0.5). The step stays 0.2 ms because a flight off the roller (Table 1 #14,
-        // xi 0.5, from 0.8 alpha1) has a period error first order in the step: +3.16 / +1.51 / +0.59 / +0.29 % at
-        // 1 / 0.5 / 0.2 / 0.1 ms against the analytic model with the unilateral roller.
-        s.dt = 2e-4;
+        // 0.13 % at most (Table 1 #1 at xi 0.5). 1 ms is the cheapest of them. The flight off the roller that once
+        // kept the step at 0.2 ms (Table 1 #14, xi 0.5, from 0.8 alpha1: +3.16 % at 1 ms) was N's torque missing from
+        // Bullet's friction rows (simulate()); with N as an impulse it is -0.063 % at 1 ms against the analytic model
+        // with the unilateral roller, ODE's figure.
+        s.dt = 1e-3;
         s.iterations = kDefaultIterations;
         return s;
     }
@@ -290,7 +291,14 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
             lower.applyCentralForce(btVector3(-s.m_lower * kDepth * a_h, 0, 0));
             if (upper) upper->applyCentralForce(btVector3(-s.m_upper * kDepth * a_h, 0, 0));
         }
-        if (N > 0.0) top_body.applyForce(btVector3(0, -N, 0), top_centre() - top_body.getCenterOfMassPosition());
+        // N as its impulse over the step, added to the velocities before the solve, not as a force: Bullet's solver
+        // adds a force's torque to a body's spin only after the solve, and its friction rows leave that torque out
+        // of the relative velocity they hold at zero (btSequentialImpulseConstraintSolver::setupFrictionConstraint
+        // reads the force's linear impulse but not its angular one; the normal rows read both). N is the one force
+        // here with a torque about a centre of mass, so the hinge slid every step by the spin N's torque gave in it
+        // (5.4 mm/s at 1 ms on Table 1 #14 at xi 0.5 off the roller), friction doing work F v_t: a loss first order
+        // in the step (README "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
+        if (N > 0.0) top_body.applyImpulse(btVector3(0, -N * dt, 0), top_centre() - top_body.getCenterOfMassPosition());
         w.step(dt);
         ++out.steps;
 
