@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "error.hpp"
+#include "fast_sincos.hpp"
 
 namespace vssw {
 namespace {
@@ -86,9 +87,9 @@ double eq8_overburden_work(const VsswGeometry& w, double theta1, double theta2) 
 Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1) {
     const double q = abs_theta1;
     // sin and cos of k q serve both A2 = alpha2 - k q and C_N: two sincos calls per evaluation instead of three.
-    const double skq = std::sin(w.k * q), ckq = std::cos(w.k * q);
-    const AnglePair a(std::sin(w.alpha1 - q), std::cos(w.alpha1 - q), w.sin_a2 * ckq - w.cos_a2 * skq,
-                      w.cos_a2 * ckq + w.sin_a2 * skq);
+    const SinCos kq = fast_sincos(w.k * q), A1 = fast_sincos(w.alpha1 - q);
+    const double skq = kq.sin, ckq = kq.cos;
+    const AnglePair a(A1.sin, A1.cos, w.sin_a2 * ckq - w.cos_a2 * skq, w.cos_a2 * ckq + w.sin_a2 * skq);
     const double tA2 = a.sA2 / a.cA2;
     const double sec2A2 = 1.0 / sq(a.cA2);
     const double L = a.lever_times_sin();

@@ -12,6 +12,7 @@
 
 #include "closed_forms.hpp"
 #include "error.hpp"
+#include "fast_sincos.hpp"
 
 namespace vssw {
 namespace {
@@ -92,8 +93,9 @@ public:
     };
     Angles angles(double q) const {
         Angles g{};
-        g.sa = std::sin(w_.alpha1 - q);
-        g.ca = std::cos(w_.alpha1 - q);
+        const SinCos a = fast_sincos(w_.alpha1 - q);
+        g.sa = a.sin;
+        g.ca = a.cos;
         g.spsi = w_.s * g.sa;
         // Past Eq. (26) there is no configuration; the floor keeps a trial step finite so the step is rejected.
         g.cpsi = std::sqrt(std::max(1.0 - sq(g.spsi), 1e-30));
@@ -141,9 +143,8 @@ class Parapet final : public RockingModel {
 public:
     explicit Parapet(const ParapetGeometry& p) : p_(p) {}
     ModelTerms terms(double q) const override {
-        const double a = p_.alpha - q;
-        return {p_.I_O, 0.0, p_.m * p_.R * std::cos(a), p_.m * p_.R * std::sin(a),
-                p_.b * std::cos(q) - 2.0 * p_.h * std::sin(q)};
+        const SinCos a = fast_sincos(p_.alpha - q), turn = fast_sincos(q);
+        return {p_.I_O, 0.0, p_.m * p_.R * a.cos, p_.m * p_.R * a.sin, p_.b * turn.cos - 2.0 * p_.h * turn.sin};
     }
     double mass_moment_height(double q) const override { return p_.m * p_.R * std::cos(p_.alpha - q); }
     double load_height(double q) const override { return 2.0 * p_.h * std::cos(q) + p_.b * std::sin(q); }

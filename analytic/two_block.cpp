@@ -7,6 +7,7 @@
 
 #include "closed_forms.hpp"
 #include "error.hpp"
+#include "fast_sincos.hpp"
 
 namespace vssw {
 namespace {
@@ -15,7 +16,8 @@ namespace {
 // every step of a run, and the sines and cosines were most of their cost.
 struct Turn {
     double c, s;
-    explicit Turn(double t) : c(std::cos(t)), s(std::sin(t)) {}
+    explicit Turn(double t) : Turn(fast_sincos(t)) {}
+    explicit Turn(SinCos sc) : c(sc.cos), s(sc.sin) {}
 };
 // Rot(t) turns a rest offset clockwise by t (the sense of positive theta1 and theta2).
 Vec2 rot(const Turn& t, const Vec2& r) { return {r.x() * t.c + r.y() * t.s, -r.x() * t.s + r.y() * t.c}; }
