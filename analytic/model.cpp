@@ -63,10 +63,10 @@ double paper_lock_angle(const VsswGeometry& w) { return (w.alpha2 + kHalfPi - st
 
 class PaperVssw final : public VsswModel {
 public:
-    explicit PaperVssw(const VsswGeometry& w) : VsswModel(w) {}
+    explicit PaperVssw(const VsswGeometry& w) : VsswModel(w), eq11_(w) {}
     double collapse_angle() const override { return std::min(vssw_collapse_angle(w_), paper_lock_angle(w_)); }
     ModelTerms terms(double q) const override {
-        const Eq11Coefficients c = eq11_coefficients(w_, q);
+        const Eq11Coefficients c = eq11_(q);
         const double R1 = w_.R1;
         return {R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
     }
@@ -80,6 +80,9 @@ public:
     std::string name() const override { return "vssw/paper"; }
     UpperRotation upper_rotation(double q) const override { return {-w_.k * q, -w_.k, 0.0}; }  // Eq. (3)
     std::optional<Kinematics> kinematics() const override { return Kinematics::paper; }
+
+private:
+    Eq11Evaluator eq11_;
 };
 
 // Exact kinematics: psi = alpha2 + theta2 from Eq. (2), sin(psi) = s sin(alpha1 - q). G1 = R1(-sin a, cos a) with
