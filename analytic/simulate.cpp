@@ -388,7 +388,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
             int first_change = 0;
             for (int k = 1; k <= kScanPoints; ++k) {
                 const double tau = t + h * k / kScanPoints;
-                const double th = k == kScanPoints ? step.y1[0] : step.at(tau)[0];
+                const double th = k == kScanPoints ? step.y1[0] : step.component_at(tau, 0);
                 const double g = ev == Event::impact ? side_ * th : collapse_ - side_ * th;
                 if (prev > 0.0 && g <= 0.0) {
                     lo = tau - h / kScanPoints;
@@ -410,7 +410,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
                 continue;
             }
             shrink_bracket([&](double tau) {
-                const double th = step.at(tau)[0];
+                const double th = step.component_at(tau, 0);
                 return ev == Event::impact ? side_ * th : collapse_ - side_ * th;
             }, lo, hi, opt_.event_time_tol);
             event_time = hi;
@@ -420,12 +420,12 @@ Event Simulator::rocking_phase(double& t, State& y) {
             for (int k = 1; k <= kScanPoints; ++k) {
                 const double tau = t + h * k / kScanPoints;
                 if (tau_prev >= event_time) break;  // after the event: not part of this flight
-                const double v = k == kScanPoints ? step.y1[1] : step.at(tau)[1];
+                const double v = k == kScanPoints ? step.y1[1] : step.component_at(tau, 1);
                 if (v_prev != 0.0 && (v == 0.0 || (v > 0.0) != (v_prev > 0.0))) {
                     double a = tau_prev, b = tau;
-                    shrink_bracket([&](double x) { return step.at(x)[1]; }, a, b, opt_.event_time_tol);
+                    shrink_bracket([&](double x) { return step.component_at(x, 1); }, a, b, opt_.event_time_tol);
                     if (b <= event_time) {
-                        const double th = step.at(b)[0];
+                        const double th = step.component_at(b, 0);
                         out_.peaks.push_back({b, th});
                         out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(th));
                     }
