@@ -109,10 +109,19 @@ private:
 
     double next_breakpoint(double t) const {
         double next = opt_.t_end;
-        for (const GroundMotion* m : {&ah_, &av_}) {
-            const auto& bp = m->breakpoints();
-            const auto it = std::upper_bound(bp.begin(), bp.end(), t + 1e-12 * std::max(1.0, std::abs(t)));
-            if (it != bp.end()) next = std::min(next, *it);
+        const double after = t + 1e-12 * std::max(1.0, std::abs(t));
+        for (int c = 0; c < 2; ++c) {
+            const auto& bp = (c == 0 ? ah_ : av_).breakpoints();
+            // The first breakpoint past `after`. Runs move forward, so the last answer's neighbourhood is checked
+            // before a binary search over a record's thousands of samples.
+            std::size_t& i = breakpoint_hint_[c];
+            if (!(i <= bp.size() && (i == bp.size() || bp[i] > after) && (i == 0 || bp[i - 1] <= after))) {
+                if (i < bp.size() && bp[i] <= after && (i + 1 == bp.size() || bp[i + 1] > after))
+                    ++i;
+                else
+                    i = static_cast<std::size_t>(std::upper_bound(bp.begin(), bp.end(), after) - bp.begin());
+            }
+            if (i != bp.size()) next = std::min(next, bp[i]);
         }
         return next;
     }
@@ -205,6 +214,7 @@ private:
     double next_output_ = 0.0;
     long output_index_ = 0;
     double h_ = 1e-3;
+    mutable std::size_t breakpoint_hint_[2] = {0, 0};  // next_breakpoint's last answers (horizontal, vertical)
     SimulationResult out_;
 };
 
