@@ -101,8 +101,11 @@ public:
         g.ca = a.cos;
         g.spsi = w_.s * g.sa;
         // Past Eq. (26) there is no configuration; the floor keeps a trial step finite so the step is rejected.
-        g.cpsi = std::sqrt(std::max(1.0 - sq(g.spsi), 1e-30));
-        const double inv_cpsi = 1.0 / g.cpsi;
+        const double cpsi2 = std::max(1.0 - sq(g.spsi), 1e-30);
+        g.cpsi = std::sqrt(cpsi2);
+        // 1/cos(psi) as cos(psi) / cos^2(psi): the square root and the division run side by side instead of one
+        // after the other (every stage waits on this; the same number to rounding).
+        const double inv_cpsi = g.cpsi * (1.0 / cpsi2);
         g.dpsi = -w_.s * g.ca * inv_cpsi;
         g.ddpsi = -w_.s * (g.sa * g.cpsi + g.ca * g.spsi * g.dpsi) * inv_cpsi * inv_cpsi;
         return g;
