@@ -106,7 +106,8 @@ public:
     // Next step size from an error norm (Hairer's controller: growth limited to [1/3, 6]).
     double next_step(double h, double err) const {
         if (fixed_step()) return c_.max_step;
-        // err^(-1/8) as three square roots: the same number to rounding, four instructions for std::pow's ~70 (callgrind).
+        // err^(-1/8) as three square roots: the same number to rounding, four instructions for std::pow's ~70
+        // (callgrind).
         const double factor =
             err == 0.0 ? 6.0 : std::clamp(c_.safety / std::sqrt(std::sqrt(std::sqrt(err))), 1.0 / 3.0, 6.0);
         return std::clamp(h * factor, c_.min_step, c_.max_step);

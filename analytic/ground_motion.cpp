@@ -413,7 +413,8 @@ double GroundMotion::operator()(double t) const {
 
 std::optional<GroundMotion::LinearPiece> GroundMotion::linear_piece(double t) const {
     // No motion: every finite time (finite bounds, so that slope (x - start) is 0, not 0 times infinity).
-    if (is_zero_) return LinearPiece{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::max(), 0.0, 0.0};
+    constexpr double kLowest = std::numeric_limits<double>::lowest(), kHighest = std::numeric_limits<double>::max();
+    if (is_zero_) return LinearPiece{kLowest, kHighest, 0.0, 0.0};
     if (times_.empty() || !(t >= times_[0] && t <= duration_)) return std::nullopt;
     const std::size_t i = interval_of(t);
     const double t0 = times_[i], t1 = times_[i + 1];
