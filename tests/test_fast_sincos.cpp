@@ -2,6 +2,7 @@
 // it must agree to a few ulp wherever the models evaluate it, including where a result is near zero.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -46,7 +47,8 @@ TEST(AnalyticSinCos, KeepsRelativeAccuracyNearMultiplesOfHalfPi) {
     double worst = 0.0;
     for (int k = -8; k <= 8; ++k) {
         const double centre = k * 1.5707963267948966;
-        for (double x = centre, n = 0; n < 64; ++n) {
+        double x = centre;
+        for (int n = 0; n < 64; ++n) {  // the 64 doubles from k pi/2 up, and their mirrors below it
             worst = std::max(worst, ulp_error(x));
             worst = std::max(worst, ulp_error(2.0 * centre - x));
             x = std::nextafter(x, std::numeric_limits<double>::infinity());
