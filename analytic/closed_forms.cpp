@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "error.hpp"
+#include "fast_sincos.hpp"
 
 namespace vssw {
 namespace {
@@ -13,7 +14,6 @@ double sq(double x) { return x * x; }
 struct AnglePair {
     double sA1, cA1, sA2, cA2;
     AnglePair(double A1, double A2) : sA1(std::sin(A1)), cA1(std::cos(A1)), sA2(std::sin(A2)), cA2(std::cos(A2)) {}
-    AnglePair(double s1, double c1, double s2, double c2) : sA1(s1), cA1(c1), sA2(s2), cA2(c2) {}
     // sin A1 times the bracket (2 + tan A2 / tan A1) that recurs in Eqs. (7), (11), (23)-(25), written without the
     // division by sin A1, which is 0 at theta1 = alpha1 (where the bracket alone is infinite).
     double lever_times_sin() const { return 2.0 * sA1 + (sA2 / cA2) * cA1; }
@@ -83,29 +83,46 @@ double eq8_overburden_work(const VsswGeometry& w, double theta1, double theta2) 
             std::tan(w.alpha2) * std::cos(w.alpha1) * (std::cos(theta2) + 2.0 * std::sin(theta2) / std::tan(w.alpha2)));
 }
 
-Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1) {
+Eq11Evaluator::Eq11Evaluator(const VsswGeometry& w)
+    : alpha1_(w.alpha1),
+      k_(w.k),
+      sin_a2_(w.sin_a2),
+      cos_a2_(w.cos_a2),
+      m2_(w.m2),
+      mass0_(w.m1 + w.I1 / sq(w.R1)),
+      inertia2_(w.I2 / sq(w.R1) * sq(w.sin_a2 / w.sin_a1)),
+      m12_(w.m1 + 2.0 * w.m2),
+      m2_cos_(w.m2 * w.cos_a1 / w.cos_a2),
+      n_cos_(w.tan_a2 * w.cos_a1),
+      n_sin_(2.0 * w.cos_a1) {}
+
+Eq11Coefficients Eq11Evaluator::operator()(double abs_theta1) const {
     const double q = abs_theta1;
     // sin and cos of k q serve both A2 = alpha2 - k q and C_N: two sincos calls per evaluation instead of three.
-    const double skq = std::sin(w.k * q), ckq = std::cos(w.k * q);
-    const AnglePair a(std::sin(w.alpha1 - q), std::cos(w.alpha1 - q), w.sin_a2 * ckq - w.cos_a2 * skq,
-                      w.cos_a2 * ckq + w.sin_a2 * skq);
-    const double tA2 = a.sA2 / a.cA2;
-    const double sec2A2 = 1.0 / sq(a.cA2);
-    const double L = a.lever_times_sin();
-    const double ratio_sin2 = sq(w.sin_a2 / w.sin_a1);
-    const double cosratio = w.cos_a1 / w.cos_a2;
+    const SinCos kq = fast_sincos(k_ * q), A1 = fast_sincos(alpha1_ - q);
+    const double sA1 = A1.sin, cA1 = A1.cos;
+    const double sA2 = sin_a2_ * kq.cos - cos_a2_ * kq.sin, cA2 = cos_a2_ * kq.cos + sin_a2_ * kq.sin;
+    const double secA2 = 1.0 / cA2;
+    const double tA2 = sA2 * secA2;
+    const double sec2A2 = secA2 * secA2;
+    // sin A1 times the bracket (2 + tan A2 / tan A1) of Eqs. (7), (11): no division by sin A1 (0 at theta1 = alpha1).
+    const double L = 2.0 * sA1 + tA2 * cA1;
+    const double upper_rotary = inertia2_ * cA1 * sec2A2;  // I2 (theta2'/theta1')^2 / (R1^2 cA1), Eq. (4)
 
     Eq11Coefficients c{};
-    c.C_A = mass_coefficient(w, a);
+    // Eq. (11a), as mass_coefficient: m1 + m2 (cA1^2 + L^2) + (I1 + (sin a2 cA1 / (sin a1 cA2))^2 I2) / R1^2.
+    c.C_A = mass0_ + m2_ * (cA1 * cA1 + L * L) + upper_rotary * cA1;
     // The m2 term of Eq. (11b), m2 sA1 {cA1 [1 - lever^2] + sA1 lever (-k cot A1 sec^2 A2 + csc^2 A1 tan A2)},
     // rearranged with L = sA1 lever so that nothing divides by sA1: m2 [sA1 cA1 - L (2 cA1 - tA2 sA1) - k cA1 sec^2 A2 L].
-    c.C_S = a.cA1 * ratio_sin2 * sec2A2 * (a.sA1 - a.cA1 * w.k * tA2) * w.I2 / sq(w.R1) +
-            w.m2 * (a.sA1 * a.cA1 - L * (2.0 * a.cA1 - tA2 * a.sA1) - w.k * a.cA1 * sec2A2 * L);
-    c.C_H = (w.m1 + 2.0 * w.m2) * a.cA1 - w.m2 * cosratio * a.cA2;
-    c.C_V = (w.m1 + 2.0 * w.m2) * a.sA1 + w.m2 * cosratio * a.sA2;
-    c.C_N = 2.0 * a.sA1 + w.tan_a2 * w.cos_a1 * (ckq - 2.0 * skq / w.tan_a2);
+    c.C_S = upper_rotary * (sA1 - cA1 * k_ * tA2) +
+            m2_ * (sA1 * cA1 - L * (2.0 * cA1 - tA2 * sA1) - k_ * cA1 * sec2A2 * L);
+    c.C_H = m12_ * cA1 - m2_cos_ * cA2;
+    c.C_V = m12_ * sA1 + m2_cos_ * sA2;
+    c.C_N = 2.0 * sA1 + n_cos_ * kq.cos - n_sin_ * kq.sin;
     return c;
 }
+
+Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1) { return Eq11Evaluator(w)(abs_theta1); }
 
 double eq12_threshold(const VsswGeometry& w, double a_v) {
     const double g_eff = w.g + a_v;

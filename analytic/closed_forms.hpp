@@ -38,6 +38,23 @@ struct Eq11Coefficients {
 };
 Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1);
 
+// The same coefficients for one wall with its constant factors (masses over R1^2, the ratios of the constant
+// angles' functions) worked out once and one division per evaluation: the paper model evaluates Eq. (11) at every
+// integrator stage. eq11_coefficients(w, q) is Eq11Evaluator(w)(q).
+class Eq11Evaluator {
+public:
+    explicit Eq11Evaluator(const VsswGeometry& w);
+    Eq11Coefficients operator()(double abs_theta1) const;
+
+private:
+    double alpha1_, k_, sin_a2_, cos_a2_, m2_;
+    double mass0_;     // m1 + I1 / R1^2
+    double inertia2_;  // I2 / R1^2 (sin alpha2 / sin alpha1)^2: the upper body's rotary inertia term's factor
+    double m12_;       // m1 + 2 m2
+    double m2_cos_;    // m2 cos alpha1 / cos alpha2
+    double n_cos_, n_sin_;  // C_N's factors of cos(k q) and sin(k q): tan alpha2 cos alpha1 and 2 cos alpha1
+};
+
 // Eq. (12): threshold horizontal ground acceleration [m/s^2] under a vertical ground acceleration a_v (up positive).
 // Derived, as the paper says, from Eq. (10) at rest: N is a force and does not scale with a_v. As printed, N/g sits
 // inside the bracket multiplied by [g - y''], which contradicts Eq. (10) when both N and y'' are non-zero; the two

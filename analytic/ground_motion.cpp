@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -403,8 +404,25 @@ double GroundMotion::operator()(double t) const {
     if (!(t >= 0.0 && t <= duration_)) return std::isnan(t) ? t : 0.0;
     if (times_.empty()) return is_zero_ ? 0.0 : fn_(t);
 
-    const std::size_t n = times_.size();
     if (t < times_[0]) return 0.0;  // a record that starts after t = 0
+    const std::size_t i = interval_of(t);
+    const double w = (t - times_[i]) / (times_[i + 1] - times_[i]);
+    // (1 - w) a_i + w a_{i+1} returns the samples exactly at w = 0 and w = 1.
+    return (1.0 - w) * values_[i] + w * values_[i + 1];
+}
+
+std::optional<GroundMotion::LinearPiece> GroundMotion::linear_piece(double t) const {
+    // No motion: every finite time (finite bounds, so that slope (x - start) is 0, not 0 times infinity).
+    constexpr double kLowest = std::numeric_limits<double>::lowest(), kHighest = std::numeric_limits<double>::max();
+    if (is_zero_) return LinearPiece{kLowest, kHighest, 0.0, 0.0};
+    if (times_.empty() || !(t >= times_[0] && t <= duration_)) return std::nullopt;
+    const std::size_t i = interval_of(t);
+    const double t0 = times_[i], t1 = times_[i + 1];
+    return LinearPiece{t0, t1, values_[i], (values_[i + 1] - values_[i]) / (t1 - t0)};
+}
+
+std::size_t GroundMotion::interval_of(double t) const {
+    const std::size_t n = times_.size();
     std::size_t i = 0;
     if (uniform_dt_ > 0.0) {
         // The guess is within one interval of the truth (kUniformSpacingTolerance); fix it against the stored times
@@ -418,9 +436,7 @@ double GroundMotion::operator()(double t) const {
         const auto it = std::upper_bound(times_.begin(), times_.end(), t);  // first sample after t
         i = std::min(static_cast<std::size_t>(it - times_.begin()) - 1, n - 2);
     }
-    const double w = (t - times_[i]) / (times_[i + 1] - times_[i]);
-    // (1 - w) a_i + w a_{i+1} returns the samples exactly at w = 0 and w = 1.
-    return (1.0 - w) * values_[i] + w * values_[i + 1];
+    return i;
 }
 
 bool GroundMotion::continuous_at(double t) const {

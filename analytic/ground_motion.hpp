@@ -6,6 +6,7 @@
 // a(t) has a kink, so the integrator steps onto them and keeps its order between them.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,15 @@ public:
     static GroundMotion none();
 
     double operator()(double t) const;
+    // A piece of the line on which a(t) is linear around t, for a caller that evaluates the motion many times in one
+    // interval (the integrator's stages within a record's sample interval): a(x) = value + slope (x - start) for x
+    // in [start, end], equal to operator() there to rounding. A record's sample interval holding t, every finite time
+    // for no motion; nothing for an analytic signal or where a record is not sampled (before its first sample,
+    // after its end, a NaN time).
+    struct LinearPiece {
+        double start, end, value, slope;
+    };
+    std::optional<LinearPiece> linear_piece(double t) const;
     // Whether a(t) is known to be continuous at t: a record inside its span (linear between samples), no motion at
     // all. False where it may jump (a record's first and last sample, any analytic signal's breakpoint).
     bool continuous_at(double t) const;
@@ -50,6 +60,9 @@ public:
     const std::vector<double>& sample_values() const { return values_; }
 
 private:
+    // The sample interval [times_[i], times_[i + 1]] holding t, for t within the record's samples.
+    std::size_t interval_of(double t) const;
+
     std::function<double(double)> fn_;
     std::vector<double> times_, values_;
     std::vector<double> breakpoints_;

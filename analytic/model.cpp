@@ -12,6 +12,7 @@
 
 #include "closed_forms.hpp"
 #include "error.hpp"
+#include "fast_sincos.hpp"
 
 namespace vssw {
 namespace {
@@ -62,10 +63,10 @@ double paper_lock_angle(const VsswGeometry& w) { return (w.alpha2 + kHalfPi - st
 
 class PaperVssw final : public VsswModel {
 public:
-    explicit PaperVssw(const VsswGeometry& w) : VsswModel(w) {}
+    explicit PaperVssw(const VsswGeometry& w) : VsswModel(w), eq11_(w) {}
     double collapse_angle() const override { return std::min(vssw_collapse_angle(w_), paper_lock_angle(w_)); }
     ModelTerms terms(double q) const override {
-        const Eq11Coefficients c = eq11_coefficients(w_, q);
+        const Eq11Coefficients c = eq11_(q);
         const double R1 = w_.R1;
         return {R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
     }
@@ -79,6 +80,9 @@ public:
     std::string name() const override { return "vssw/paper"; }
     UpperRotation upper_rotation(double q) const override { return {-w_.k * q, -w_.k, 0.0}; }  // Eq. (3)
     std::optional<Kinematics> kinematics() const override { return Kinematics::paper; }
+
+private:
+    Eq11Evaluator eq11_;
 };
 
 // Exact kinematics: psi = alpha2 + theta2 from Eq. (2), sin(psi) = s sin(alpha1 - q). G1 = R1(-sin a, cos a) with
@@ -92,12 +96,16 @@ public:
     };
     Angles angles(double q) const {
         Angles g{};
-        g.sa = std::sin(w_.alpha1 - q);
-        g.ca = std::cos(w_.alpha1 - q);
+        const SinCos a = fast_sincos(w_.alpha1 - q);
+        g.sa = a.sin;
+        g.ca = a.cos;
         g.spsi = w_.s * g.sa;
         // Past Eq. (26) there is no configuration; the floor keeps a trial step finite so the step is rejected.
-        g.cpsi = std::sqrt(std::max(1.0 - sq(g.spsi), 1e-30));
-        const double inv_cpsi = 1.0 / g.cpsi;
+        const double cpsi2 = std::max(1.0 - sq(g.spsi), 1e-30);
+        g.cpsi = std::sqrt(cpsi2);
+        // 1/cos(psi) as cos(psi) / cos^2(psi): the square root and the division run side by side instead of one
+        // after the other (every stage waits on this; the same number to rounding).
+        const double inv_cpsi = g.cpsi * (1.0 / cpsi2);
         g.dpsi = -w_.s * g.ca * inv_cpsi;
         g.ddpsi = -w_.s * (g.sa * g.cpsi + g.ca * g.spsi * g.dpsi) * inv_cpsi * inv_cpsi;
         return g;
@@ -141,9 +149,8 @@ class Parapet final : public RockingModel {
 public:
     explicit Parapet(const ParapetGeometry& p) : p_(p) {}
     ModelTerms terms(double q) const override {
-        const double a = p_.alpha - q;
-        return {p_.I_O, 0.0, p_.m * p_.R * std::cos(a), p_.m * p_.R * std::sin(a),
-                p_.b * std::cos(q) - 2.0 * p_.h * std::sin(q)};
+        const SinCos a = fast_sincos(p_.alpha - q), turn = fast_sincos(q);
+        return {p_.I_O, 0.0, p_.m * p_.R * a.cos, p_.m * p_.R * a.sin, p_.b * turn.cos - 2.0 * p_.h * turn.sin};
     }
     double mass_moment_height(double q) const override { return p_.m * p_.R * std::cos(p_.alpha - q); }
     double load_height(double q) const override { return 2.0 * p_.h * std::cos(q) + p_.b * std::sin(q); }

@@ -141,8 +141,8 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
         if ((y[2] > 0.0) != (step.y1[2] > 0.0) && y[2] != 0.0) {
             integrator_.make_dense(step);
             double lo = t, hi = t + h;
-            shrink_bracket([&](double tau) { return step.at(tau)[2]; }, lo, hi, s_.event_time_tol);
-            if (hi <= first_time) out.peaks.push_back({hi, step.at(hi)[0]});
+            shrink_bracket([&](double tau) { return step.component_at(tau, 2); }, lo, hi, s_.event_time_tol);
+            if (hi <= first_time) out.peaks.push_back({hi, step.component_at(hi, 0)});
         }
         if (first == Event::none) {
             t += h;

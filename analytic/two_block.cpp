@@ -7,6 +7,7 @@
 
 #include "closed_forms.hpp"
 #include "error.hpp"
+#include "fast_sincos.hpp"
 
 namespace vssw {
 namespace {
@@ -15,7 +16,8 @@ namespace {
 // every step of a run, and the sines and cosines were most of their cost.
 struct Turn {
     double c, s;
-    explicit Turn(double t) : c(std::cos(t)), s(std::sin(t)) {}
+    explicit Turn(double t) : Turn(fast_sincos(t)) {}
+    explicit Turn(SinCos sc) : c(sc.cos), s(sc.sin) {}
 };
 // Rot(t) turns a rest offset clockwise by t (the sense of positive theta1 and theta2).
 Vec2 rot(const Turn& t, const Vec2& r) { return {r.x() * t.c + r.y() * t.s, -r.x() * t.s + r.y() * t.c}; }
@@ -27,9 +29,13 @@ Vec2 perp(const Vec2& r) { return {r.y(), -r.x()}; }
 double clockwise_moment(const Vec2& r, const Vec2& f) { return r.y() * f.x() - r.x() * f.y(); }
 
 // Tested before require() is called: its std::string arguments would be built at every call otherwise, and the
-// supports' monitor makes eight of these checks at every step (8 % of a record run's instructions, callgrind).
-void require_finite(double v, const char* name) {
-    if (!std::isfinite(v)) require(false, name, "a finite number", v);
+// supports' monitor makes ten of these checks at every step (8 % of a record run's instructions, callgrind). The
+// throwing part is kept out of line so that the test itself inlines.
+[[gnu::cold, gnu::noinline]] void refuse_non_finite(double v, const char* name) {
+    require(false, name, "a finite number", v);
+}
+inline void require_finite(double v, const char* name) {
+    if (!std::isfinite(v)) refuse_non_finite(v, name);
 }
 void require_finite(const Vec2& v, const char* name0, const char* name1) {
     require_finite(v.x(), name0);
@@ -244,19 +250,19 @@ TwoBlockReactions TwoBlockWall::reactions(const Vec2& q, const Vec2& qdot, const
     const Vec2 T = position_of(WallPoint::top_centre);
     const Vec2 push = l.normal;  // the guide's direction on its corner
 
-    // Upper block, unknowns (H_x, H_y, lambda): m2 a_G2 = H + lambda push + F2 + FN; I2 theta2'' = moments about G2.
-    Eigen::Matrix3d A;
-    A << 1.0, 0.0, push.x(),  //
-        0.0, 1.0, push.y(),   //
-        (H - G2).y(), -(H - G2).x(), clockwise_moment(C - G2, push);
+    // Upper block, unknowns (H_x, H_y, lambda): m2 a_G2 = H + lambda push + F2 + FN (two rows) and I2 theta2'' =
+    // the clockwise moments about G2, (H - G2).y H_x - (H - G2).x H_y + moment(C - G2, push) lambda (third row).
+    // The force rows give H = force_rhs - lambda push; put into the moment row, lambda times the moment of `push`
+    // about the hinge, moment(C - H, push) = -+(C - H).y (nonzero unless the block lies flat), is what is left: a
+    // 3 x 3 system solved by hand (a general LU was 9 % of a record run's instructions, callgrind).
     const Vec2 force_rhs = w_.m2 * acceleration(WallPoint::upper_centroid) - F2 - FN;
-    const Eigen::Vector3d rhs(force_rhs.x(), force_rhs.y(), w_.I2 * qddot(1) - clockwise_moment(T - G2, FN));
-    // A's determinant is the moment of `push` about the hinge, +-(C - H).y: nonzero unless the block lies flat.
-    const Eigen::Vector3d u = A.partialPivLu().solve(rhs);
+    const double moment_rhs = w_.I2 * qddot(1) - clockwise_moment(T - G2, FN);
+    const Vec2 d = H - G2;
+    const double lambda = (moment_rhs - clockwise_moment(d, force_rhs)) / clockwise_moment(C - H, push);
 
     TwoBlockReactions r;
-    r.hinge = u.head<2>();
-    r.roller = u(2);
+    r.hinge = force_rhs - lambda * push;
+    r.roller = lambda;
     // Lower block: m1 a_G1 = B - H + F1; its moment equation is the residual.
     r.base = w_.m1 * acceleration(WallPoint::lower_centroid) - F1 + r.hinge;
     r.moment_residual =

@@ -14,6 +14,7 @@
 #include <functional>
 #include <initializer_list>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -377,6 +378,36 @@ TEST(GroundMotion, EvenSpacingLookupMatchesReference) {
             EXPECT_NEAR(m(x), reference_interpolation(times, values, x), kRoundoff * 4.0) << x;
     }
     EXPECT_EQ(m(times.back()), values.back());
+}
+
+// The integrator's stages read a record through its linear pieces (simulate.cpp): each piece must hold its time and
+// give the interpolated value, and there must be none where the record is not sampled.
+TEST(GroundMotion, LinearPiecesReproduceTheInterpolation) {
+    std::vector<double> times, values;
+    for (int i = 0; i <= 400; ++i) {
+        times.push_back(0.5 + 0.01 * i);  // a record starting late: nothing before 0.5 s
+        values.push_back(std::sin(0.37 * i) + 0.1 * (i % 7));
+    }
+    const GroundMotion m = GroundMotion::sampled(times, values, "even");
+    for (std::size_t i = 0; i + 1 < times.size(); ++i) {
+        for (double x : {times[i], 0.3 * times[i] + 0.7 * times[i + 1], std::nextafter(times[i + 1], -1e9)}) {
+            const std::optional<GroundMotion::LinearPiece> p = m.linear_piece(x);
+            ASSERT_TRUE(p.has_value()) << x;
+            EXPECT_LE(p->start, x);
+            EXPECT_GE(p->end, x);
+            EXPECT_NEAR(p->value + p->slope * (x - p->start), m(x), kRoundoff * 4.0) << x;
+        }
+    }
+    const std::optional<GroundMotion::LinearPiece> last = m.linear_piece(times.back());
+    ASSERT_TRUE(last.has_value());
+    EXPECT_NEAR(last->value + last->slope * (times.back() - last->start), values.back(), kRoundoff * 4.0);
+    for (double x : {0.0, 0.499, std::nextafter(times.back(), 1e9), 10.0, double(NAN)})
+        EXPECT_FALSE(m.linear_piece(x).has_value()) << x;
+    EXPECT_FALSE(cosine_pulse(-2.0, 0.5).linear_piece(0.1).has_value());  // analytic: evaluated as it is
+    const std::optional<GroundMotion::LinearPiece> none = GroundMotion::none().linear_piece(3.0);
+    ASSERT_TRUE(none.has_value());
+    EXPECT_EQ(none->value + none->slope * (1e4 - none->start), 0.0);
+    EXPECT_EQ(none->value + none->slope * (-1e4 - none->start), 0.0);
 }
 
 TEST(GroundMotion, RecordStartingLateIsZeroBeforeFirstSample) {
