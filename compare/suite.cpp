@@ -20,8 +20,6 @@
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/analytic_engine.hpp"
-#include "multibody/child_process.hpp"
-#include "multibody/worker_process.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -466,19 +464,13 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
 
     std::vector<PoolTask> pool_tasks;
     for (const Task& t : tasks) pool_tasks.push_back({t.cost, t.engine_index});
-    // An engine that is not re-entrant (ODE) runs in worker processes when several threads run, beside itself
-    // (multibody/worker_process.hpp); otherwise its tasks take turns (the pool's exclusive groups).
-    std::vector<const multibody::Engine*> callee = engines;
-    std::vector<std::unique_ptr<multibody::Engine>> workers;
+    // An engine that is not re-entrant (ODE) has its tasks take turns (the pool's exclusive groups), beside other
+    // engines' ones. Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost
+    // the suite more than they gain: a fork per simulation of this large process, for ODE's small share of the suite
+    // at its 1 ms step (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s
+    // without, README "Speed").
     std::vector<bool> exclusive;
-    const int threads = pool_threads(options.threads, pool_tasks.size());
-    for (std::size_t ei = 0; ei < engines.size(); ++ei) {
-        if (auto w = multibody::worker_process_engine_for(*engines[ei], threads)) {
-            callee[ei] = w.get();
-            workers.push_back(std::move(w));
-        }
-        exclusive.push_back(!callee[ei]->runs_concurrently());
-    }
+    for (const multibody::Engine* e : engines) exclusive.push_back(!e->runs_concurrently());
 
     std::mutex progress_mutex;
     int done = 0;
@@ -486,9 +478,8 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     results.threads = run_pool(pool_tasks, exclusive, options.threads, [&](std::size_t ti) {
         const Task& task = tasks[ti];
         const SuiteCase& c = suite.cases[task.case_index];
-        const multibody::Engine& engine = *callee[task.engine_index];
-        // A worker process's CPU is its own, counted once it has ended.
-        const double cpu_start = thread_cpu_seconds() + multibody::reaped_children_cpu_seconds();
+        const multibody::Engine& engine = *engines[task.engine_index];
+        const double cpu_start = thread_cpu_seconds();
         try {
             const TaskContext x{c, *case_walls[task.case_index], engine, task.engine_index == 0,
                                 c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr, options.keep_traces,
@@ -498,7 +489,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
             outputs[ti] = TaskOutput{};
             outputs[ti].failure = e.what();
         }
-        outputs[ti].cpu_s = thread_cpu_seconds() + multibody::reaped_children_cpu_seconds() - cpu_start;
+        outputs[ti].cpu_s = thread_cpu_seconds() - cpu_start;
         if (options.progress) {
             const std::lock_guard<std::mutex> lock(progress_mutex);
             ++done;

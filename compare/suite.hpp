@@ -165,8 +165,7 @@ struct RunOptions {
 // available ones), on `threads` threads. An EngineFailure on a task becomes a CaseFailure; an InputError propagates.
 // Rows, failures and traces come in the suite's case order, then the engine order ("analytic" first), whatever the
 // threads did. A step case runs only for its own engine, when that engine is asked for. An engine whose
-// runs_concurrently() is false runs its tasks in worker processes on every thread when it can
-// (runs_in_worker_process(): ODE) and more than one thread runs, else one task at a time (beside other engines' ones).
+// runs_concurrently() is false has one task running at a time (other engines' tasks run beside it).
 SuiteResults run_suite(const Suite& suite, const std::vector<std::string>& engines, const RunOptions& options = {});
 // The same with engine objects the caller owns (alive during the call; each at its default_settings()): for engines
 // make_engine does not know, e.g. a test's. The analytic model is always run first (an "analytic" given is replaced
