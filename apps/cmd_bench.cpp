@@ -15,6 +15,7 @@
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
+#include "apps/simulation_failure.hpp"
 #include "compare/targets.hpp"
 #include "compare/work_precision.hpp"
 #include "multibody/engine.hpp"
@@ -103,7 +104,8 @@ Command add_bench_command(CLI::App& root) {
         "Writes bench.json, bench.csv (engine, problem, metric, setting, dt, iterations, knobs, cpu_s, noise, repeats,\n"
         "cpu_repeats, value, reference, error, pareto, failure), bench.md (the cheapest settings within the targets)\n"
         "and plots/wp_<problem>_<metric>.svg. A failed run is a row with its failure and no error (exit 0).\n"
-        "Exit 2 on bad input (unknown engine or problem, --repeats out of range, unwritable --out).");
+        "Exit 2 on bad input (unknown engine or problem, --repeats out of range, unwritable --out); exit 3 when a\n"
+        "problem's converged analytic reference cannot be measured (then no point of it could be), nothing written.");
     return {cmd, {}, [o](std::ostream& out, std::ostream& err) {
                 compare::BenchOptions options;
                 options.engines = bench_engines(o->engines);
@@ -126,11 +128,17 @@ Command add_bench_command(CLI::App& root) {
 
                 study::BenchMeta meta{study::utc_now(), VSSW_GIT_COMMIT, load_average(), options.repeats, o->quick,
                                       options.engines, options.problems};
-                std::vector<compare::BenchPoint> points = compare::run_bench(options, [&err](const compare::BenchPoint& p) {
-                    err << fmt::format("vssw bench: {} {} {} {}: {:.4g} s, error {}\n", p.engine, p.problem, p.metric,
-                                       p.setting, p.cpu.median,
-                                       p.failure.empty() ? fmt::format("{:.3g}", p.error) : "failed: " + p.failure);
-                });
+                std::vector<compare::BenchPoint> points;
+                try {
+                    points = compare::run_bench(options, [&err](const compare::BenchPoint& p) {
+                        err << fmt::format("vssw bench: {} {} {} {}: {:.4g} s, error {}\n", p.engine, p.problem,
+                                           p.metric, p.setting, p.cpu.median,
+                                           p.failure.empty() ? fmt::format("{:.3g}", p.error) : "failed: " + p.failure);
+                    });
+                } catch (const multibody::EngineFailure& e) {
+                    // A point's failure is a row of the bench; what escapes is the reference's own: no result (exit 3).
+                    throw SimulationFailure(e.what());
+                }
                 const study::BenchData data = study::bench_data(meta, std::move(points));
                 const study::PlotResult plots =
                     study::write_bench(data, o->out, o->no_plots ? std::string() : o->gnuplot);

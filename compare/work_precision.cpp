@@ -252,12 +252,23 @@ std::optional<double> bench_target(const std::string& metric) {
     return std::nullopt;
 }
 
+void require_measured_references(const std::string& problem, const std::map<std::string, double>& by_metric) {
+    for (const auto& [metric, value] : by_metric)
+        if (!std::isfinite(value))
+            throw multibody::EngineFailure(fmt::format(
+                "the converged analytic reference of problem '{}' has no {} (rtol {:g}): none of its points can be "
+                "measured",
+                problem, metric, kReferenceRtol));
+}
+
 std::vector<BenchPoint> run_bench(const BenchOptions& options, const std::function<void(const BenchPoint&)>& progress) {
     require(options.repeats >= 1, "--repeats", "a whole number >= 1", options.repeats);
     for (const std::string& p : options.problems) check_bench_problem(p);
     std::vector<BenchPoint> points;
     for (const std::string& problem : options.problems) {
         const References refs = problem_references(problem, options);
+        require_measured_references(problem, refs.engine);
+        require_measured_references(problem, refs.analytic);
         const multibody::WallScene scene = problem_scene(problem);
         for (const std::string& engine_name : options.engines) {
             const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(engine_name);

@@ -12,6 +12,7 @@
 //  - peak rotation under a record: the analytic model at kReferenceRtol with the whole-mechanism impact for an
 //    engine, with Eq. (19) for the analytic model itself.
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,6 +80,11 @@ struct BenchOptions {
     bool quick = false;
     std::string record_path;  // the shipped Rinaldi record (data/)
 };
+
+// A problem's converged references by metric must all be measured: one that is not (NaN: the analytic run found no
+// impact) would leave every point of the problem without an error while the bench still exited 0. Throws
+// multibody::EngineFailure naming the problem and the metric.
+void require_measured_references(const std::string& problem, const std::map<std::string, double>& by_metric);
 
 // Runs the sweep, one point after another on this thread (so that process CPU time is the point's). `progress`,
 // when set, is told of each point as it ends.

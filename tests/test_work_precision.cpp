@@ -148,6 +148,19 @@ std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path
     return rows;
 }
 
+// A reference the analytic model could not measure used to leave its problem's points without errors, exit 0.
+TEST(WorkPrecision, AnUnmeasuredReferenceIsAFailureNamingTheProblemAndMetric) {
+    EXPECT_NO_THROW(compare::require_measured_references("fig6-free", {{"period", 1.67}, {"restitution", 0.95}}));
+    try {
+        compare::require_measured_references("fig6-free", {{"period", 1.67}, {"restitution", std::nan("")}});
+        ADD_FAILURE() << "a NaN reference was accepted";
+    } catch (const multibody::EngineFailure& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("fig6-free"), std::string::npos) << what;
+        EXPECT_NE(what.find("restitution"), std::string::npos) << what;
+    }
+}
+
 TEST(BenchCli, QuickSweepWritesFinitePoints) {
     testing::TempDir dir;
     const auto r = testing::run_cli({"bench", "--quick", "--repeats", "1", "--out", dir.path.string()});
