@@ -179,7 +179,7 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
 
 MetricComparison compare_metric(double analytic, double engine) { return {analytic, engine, engine / analytic - 1.0}; }
 
-EngineSettings analytic_reference_settings(const EngineSettings& /*settings*/) {
+EngineSettings analytic_reference_settings() {
     return multibody::AnalyticEngine().default_settings();  // exact kinematics, output every 1e-4 s
 }
 

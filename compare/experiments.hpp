@@ -136,9 +136,9 @@ MetricComparison compare_metric(double analytic, double engine);
 // output every 1e-4 s) whatever the engine's step, so that the reference is the model's own value and the sampling
 // error of a coarse engine step is charged to the engine. At 1e-4 s the sampled metrics are within 5.4e-6
 // (restitution, Fig. 6 VSSW) of the model's events, 400 times below the tightest target; they are the values of the
-// analytic model's own rows in the validation suite. `settings` is not read: kept so that callers say which engine
-// the reference is for.
-EngineSettings analytic_reference_settings(const EngineSettings& settings);
+// analytic model's own rows in the validation suite. The same for every engine: it does not depend on the engine's
+// step or settings.
+EngineSettings analytic_reference_settings();
 
 struct ComparisonOptions {
     ThresholdOptions threshold;
@@ -146,7 +146,7 @@ struct ComparisonOptions {
     // The analytic reference's settings (independent of the engine's step): its model's knobs (kinematics, impact
     // law, roller: multibody::analytic_settings) and output interval. Default: exact kinematics, Eq. (19), the
     // bilateral roller, every 1e-4 s.
-    EngineSettings reference = analytic_reference_settings(EngineSettings{});
+    EngineSettings reference = analytic_reference_settings();
 };
 
 struct EngineComparison {

@@ -119,7 +119,7 @@ double rms_difference(const multibody::Trajectory& reference, const multibody::T
 
 // The analytic model's side of a case, computed once by whichever of the case's tasks (the reference's or an
 // engine's) comes first and shared by the others: its reference value does not depend on the engine
-// (analytic_reference_settings ignores the engine's settings), and before this each engine's task ran it again
+// (analytic_reference_settings does not depend on the engine), and before this each engine's task ran it again
 // (a threshold bisection, a free vibration, two record runs per engine). The history trajectory is released by the
 // last task that reads it.
 struct CaseReference {
@@ -143,7 +143,7 @@ struct TaskContext {
     CaseReference& ref;
 };
 
-EngineSettings reference_settings() { return analytic_reference_settings(EngineSettings{}); }
+EngineSettings reference_settings() { return analytic_reference_settings(); }
 
 FreeVibrationOptions free_options(const TaskContext& x) {
     FreeVibrationOptions options;
