@@ -42,16 +42,7 @@ struct BenchCommandOptions {
 
 // Without --engines: every backend in this build, the analytic model first.
 std::vector<std::string> bench_engines(const std::vector<std::string>& asked) {
-    if (asked.empty()) return multibody::available_engines();
-    std::vector<std::string> engines;
-    const std::vector<std::string> available = multibody::available_engines();
-    for (const std::string& name : asked) {
-        if (std::find(available.begin(), available.end(), name) == available.end())
-            throw InputError(fmt::format("--engines: no engine '{}' in this build (available: {})", name,
-                                         fmt::join(available, ", ")));
-        if (std::find(engines.begin(), engines.end(), name) == engines.end()) engines.push_back(name);
-    }
-    return engines;
+    return asked.empty() ? multibody::available_engines() : parse_engine_list("--engines", asked);
 }
 
 std::vector<std::string> bench_problems(const std::vector<std::string>& asked, bool quick) {
@@ -79,7 +70,8 @@ Command add_bench_command(CLI::App& root) {
         "bench", "Work-precision: CPU time against error per backend and setting; files and plots into a folder");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
     cmd->add_option("--engines", o->engines,
-                    fmt::format("backends, comma-separated (default: all in this build: {})",
+                    fmt::format("backends, comma-separated ('all': {}; default: every one in this build: {})",
+                                fmt::join(multibody::default_compared_engines(), ", "),
                                 fmt::join(multibody::available_engines(), ", ")))
         ->delimiter(',');
     cmd->add_option("--problems", o->problems,

@@ -11,12 +11,12 @@
 namespace vssw::compare {
 
 double cost_per_simulated_second(const std::string& engine) {
-    if (engine == "analytic") return 3e-4;
-    if (engine == "bullet") return 22e-3;
-    if (engine == "ode") return 12e-3;
-    if (engine == "simbody") return 30e-3;         // compliant, CPodes (measured: 4-15 x faster than the rigid)
-    if (engine == "simbody-rigid") return 230e-3;  // 116 ms at 1 ms, run at 0.5 ms
-    return 30e-3;
+    if (engine == "analytic") return 0.26e-3;
+    if (engine == "bullet") return 2.5e-3;          // at 1 ms
+    if (engine == "ode") return 2.0e-3;             // at 1 ms
+    if (engine == "simbody") return 77e-3;          // compliant, CPodes
+    if (engine == "simbody-rigid") return 189e-3;   // at 0.5 ms
+    return 77e-3;
 }
 
 int pool_threads(int threads, std::size_t tasks) {

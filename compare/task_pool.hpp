@@ -15,20 +15,20 @@ struct PoolTask {
     std::size_t group = 0;  // the engine, for the exclusive rule
 };
 
-// A backend's estimated cost per simulated second at its default step [s/s] (README, "Speed": Fig. 6 VSSW medians),
-// for ordering tasks longest first: only the order depends on it.
+// A backend's estimated cost per simulated second at its default step [s/s] (README, "Speed" in the Bullet section:
+// Fig. 6 VSSW medians, 2026-11-23), for ordering tasks longest first: only the order depends on it.
 double cost_per_simulated_second(const std::string& engine);
+
+// The number of threads run_pool uses for `tasks` tasks: min(threads, tasks), at least 1 (threads 0: the available
+// cores). A caller that runs a non-re-entrant engine in worker processes (study/runner.cpp) asks this first: with
+// one thread nothing forks.
+int pool_threads(int threads, std::size_t tasks);
 
 // Calls run(i) once for every task i (in no promised order) on min(threads, tasks) threads (threads 0: the available
 // cores). A group g with exclusive[g] true has at most one task running at a time: a free worker takes the longest
 // task it may run and waits only when every remaining task belongs to a busy exclusive group. The first exception
 // thrown by run stops the pool (tasks not yet started are not started) and is rethrown here once every running task
 // has returned. Returns the number of threads used.
-// The number of threads run_pool uses for `tasks` tasks: min(threads, tasks), at least 1 (threads 0: the available
-// cores). A caller that wraps a non-re-entrant engine in worker processes (multibody/worker_process.hpp) asks this
-// first: with one thread nothing forks.
-int pool_threads(int threads, std::size_t tasks);
-
 int run_pool(const std::vector<PoolTask>& tasks, const std::vector<bool>& exclusive, int threads,
              const std::function<void(std::size_t task)>& run);
 

@@ -87,50 +87,56 @@ multibody::Excitation record_excitation(const std::string& record_path) {
     return e;
 }
 
-// The converged references of one problem, computed once per bench (they depend on the backend only through which
-// impact law it is measured against).
-struct References {
-    std::map<std::string, double> engine, analytic;  // by metric
+// One problem as the sweep runs it, prepared once per bench before any point is timed: its wall, the record's
+// excitation (read and parsed here, not inside a timed run) and its converged references by metric (they depend on
+// the backend only through which impact law it is measured against).
+struct Problem {
+    std::string name;
+    multibody::WallScene scene;
+    multibody::Excitation record;  // the record problem's only
+    std::map<std::string, double> engine_refs, analytic_refs;
 };
 
-References problem_references(const std::string& problem, const BenchOptions& options) {
-    References r;
-    const multibody::WallScene scene = problem_scene(problem);
+Problem prepare_problem(const std::string& name, const BenchOptions& options) {
+    Problem p{name, problem_scene(name), {}, {}, {}};
     const multibody::AnalyticEngine analytic;
-    if (problem == "threshold") {
-        const double closed = eq12_threshold(*scene.vssw) / scene.vssw->g;  // Eq. (12)
-        r.engine["threshold"] = r.analytic["threshold"] = closed;
-    } else if (problem == "record") {
-        const multibody::Excitation e = record_excitation(options.record_path);
-        r.engine["peak"] = peak_over_alpha(analytic.simulate(scene, e, analytic_at(kReferenceRtol, true)), scene.alpha());
-        r.analytic["peak"] =
-            peak_over_alpha(analytic.simulate(scene, e, analytic_at(kReferenceRtol, false)), scene.alpha());
+    if (name == "threshold") {
+        const double closed = eq12_threshold(*p.scene.vssw) / p.scene.vssw->g;  // Eq. (12)
+        p.engine_refs["threshold"] = p.analytic_refs["threshold"] = closed;
+    } else if (name == "record") {
+        p.record = record_excitation(options.record_path);
+        const double alpha = p.scene.alpha();
+        p.engine_refs["peak"] =
+            peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol, true)), alpha);
+        p.analytic_refs["peak"] =
+            peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol, false)), alpha);
     } else {
         FreeVibrationOptions free;
         free.r = kRelease;
-        const FreeVibrationResult ref = run_free_vibration(analytic, analytic_at(kReferenceRtol, false), scene, free);
-        r.engine["period"] = r.analytic["period"] = ref.period.value_or(kNaN);
-        if (scene.is_vssw()) {
-            r.engine["restitution"] = restitution_whole_mechanism(*scene.vssw);
-            r.analytic["restitution"] = eq19_restitution(*scene.vssw);  // Eq. (19)
+        const FreeVibrationResult ref = run_free_vibration(analytic, analytic_at(kReferenceRtol, false), p.scene, free);
+        p.engine_refs["period"] = p.analytic_refs["period"] = ref.period.value_or(kNaN);
+        if (p.scene.is_vssw()) {
+            p.engine_refs["restitution"] = restitution_whole_mechanism(*p.scene.vssw);
+            p.analytic_refs["restitution"] = eq19_restitution(*p.scene.vssw);  // Eq. (19)
         } else {
-            r.engine["restitution"] = r.analytic["restitution"] = housner_restitution(scene.parapet->alpha);
+            p.engine_refs["restitution"] = p.analytic_refs["restitution"] = housner_restitution(p.scene.parapet->alpha);
         }
     }
-    return r;
+    require_measured_references(name, p.engine_refs);
+    require_measured_references(name, p.analytic_refs);
+    return p;
 }
 
 // One experiment at one setting: the metric values by name (NaN when not measured).
-std::map<std::string, double> run_problem(const std::string& problem, const multibody::Engine& engine,
-                                          const multibody::EngineSettings& settings, const multibody::WallScene& scene,
-                                          const BenchOptions& options) {
-    if (problem == "threshold") return {{"threshold", find_threshold(engine, settings, scene).value_g}};
-    if (problem == "record")
-        return {{"peak", peak_over_alpha(engine.simulate(scene, record_excitation(options.record_path), settings),
-                                         scene.alpha())}};
+std::map<std::string, double> run_problem(const Problem& problem, const multibody::Engine& engine,
+                                          const multibody::EngineSettings& settings) {
+    if (problem.name == "threshold") return {{"threshold", find_threshold(engine, settings, problem.scene).value_g}};
+    if (problem.name == "record")
+        return {{"peak",
+                 peak_over_alpha(engine.simulate(problem.scene, problem.record, settings), problem.scene.alpha())}};
     FreeVibrationOptions free;
     free.r = kRelease;
-    const FreeVibrationResult run = run_free_vibration(engine, settings, scene, free);
+    const FreeVibrationResult run = run_free_vibration(engine, settings, problem.scene, free);
     return {{"period", run.period.value_or(kNaN)}, {"restitution", run.restitution.value_or(kNaN)}};
 }
 
@@ -236,7 +242,7 @@ std::vector<std::string> default_bench_problems(bool quick) {
 void check_bench_problem(const std::string& name) {
     const std::vector<std::string> known = bench_problem_names();
     if (std::find(known.begin(), known.end(), name) == known.end())
-        throw InputError(fmt::format("unknown problem '{}' (known: {})", name, fmt::join(known, ", ")));
+        throw InputError(fmt::format("--problems: unknown problem '{}' (known: {})", name, fmt::join(known, ", ")));
 }
 
 std::vector<std::string> bench_problem_metrics(const std::string& problem) {
@@ -264,12 +270,11 @@ void require_measured_references(const std::string& problem, const std::map<std:
 std::vector<BenchPoint> run_bench(const BenchOptions& options, const std::function<void(const BenchPoint&)>& progress) {
     require(options.repeats >= 1, "--repeats", "a whole number >= 1", options.repeats);
     for (const std::string& p : options.problems) check_bench_problem(p);
+    // Every problem's references first: one that cannot be measured ends the bench before minutes of sweeps are run.
+    std::vector<Problem> problems;
+    for (const std::string& name : options.problems) problems.push_back(prepare_problem(name, options));
     std::vector<BenchPoint> points;
-    for (const std::string& problem : options.problems) {
-        const References refs = problem_references(problem, options);
-        require_measured_references(problem, refs.engine);
-        require_measured_references(problem, refs.analytic);
-        const multibody::WallScene scene = problem_scene(problem);
+    for (const Problem& problem : problems) {
         for (const std::string& engine_name : options.engines) {
             const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(engine_name);
             const bool analytic = engine->name() == "analytic";
@@ -279,16 +284,16 @@ std::vector<BenchPoint> run_bench(const BenchOptions& options, const std::functi
                 const CpuTiming cpu = time_cpu(
                     [&] {
                         try {
-                            values = run_problem(problem, *engine, setting.settings, scene, options);
+                            values = run_problem(problem, *engine, setting.settings);
                         } catch (const multibody::EngineFailure& e) {
                             failure = e.what();
                         }
                     },
                     options.repeats);
-                for (const std::string& metric : bench_problem_metrics(problem)) {
-                    BenchPoint p{engine_name, problem, metric, setting.label, setting.settings, cpu, kNaN, kNaN, kNaN,
-                                 failure};
-                    p.reference = (analytic ? refs.analytic : refs.engine).at(metric);
+                for (const std::string& metric : bench_problem_metrics(problem.name)) {
+                    BenchPoint p{engine_name, problem.name, metric, setting.label, setting.settings, cpu,
+                                 kNaN, kNaN, kNaN, failure};
+                    p.reference = (analytic ? problem.analytic_refs : problem.engine_refs).at(metric);
                     if (failure.empty()) {
                         p.value = values.count(metric) ? values.at(metric) : kNaN;
                         p.error = relative_error(p.value, p.reference);
@@ -325,7 +330,8 @@ std::vector<Cheapest> cheapest_within_targets(const std::vector<BenchPoint>& poi
             if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
         }
         for (const std::string& s : settings) {
-            if (!ok[s]) continue;
+            // Without a metric with a target (only the record's peak was run) no setting is "within every target".
+            if (!ok[s] || keys.empty()) continue;
             double total = 0.0;
             for (const auto& [problem, median] : cpu[s]) total += median;
             if (!c.setting || total < c.cpu_s) c.setting = s, c.cpu_s = total;

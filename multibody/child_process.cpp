@@ -4,8 +4,6 @@
 #include <poll.h>
 #include <sys/mman.h>
 #include <signal.h>
-#include <sys/resource.h>
-#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,8 +66,8 @@ void write_all(int fd, const char* data, std::size_t size) {
 }
 
 // Where a thread receives its children's answers: pages of its own, mapped with MADV_DONTFORK so that no child shares
-// them. A trajectory is megabytes; received into ordinary heap pages, which the other threads' children share
-// copy-on-write, every page written would fault, and in a multi-threaded process each such fault flushes the other
+// them. An answer can be large (a task's rows; the suite once sent whole trajectories); received into ordinary heap
+// pages, which the other threads' children share copy-on-write, every page written would fault, and in a multi-threaded process each such fault flushes the other
 // cores' TLBs (measured: most of the cost of a worker process; README, "ODE").
 class ReceiveBuffer {
 public:
@@ -103,13 +101,8 @@ private:
 };
 
 thread_local ReceiveBuffer t_received;
-thread_local double t_children_cpu = 0.0;  // reaped_children_cpu_seconds()
-
-double seconds(const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); }
 
 }  // namespace
-
-double reaped_children_cpu_seconds() { return t_children_cpu; }
 
 ChildResult run_in_child(const std::function<std::string()>& work, double time_limit_s, std::string_view& answer) {
     answer = {};
@@ -164,10 +157,8 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
     }
     ::close(fds[0]);
     int status = 0;
-    rusage usage{};
-    while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
-    t_children_cpu += seconds(usage.ru_utime) + seconds(usage.ru_stime);
     ChildResult r;
     r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool whole = received >= kHeaderBytes && received - kHeaderBytes == length;

@@ -34,12 +34,8 @@ struct ChildResult {
 // when the process cannot fork or make a pipe.
 ChildResult run_in_child(const std::function<std::string()>& work, double time_limit_s);
 // The same with the answer (of a child that completed or threw) left where it was received, in a buffer of the calling
-// thread's that no child shares, valid until the thread's next call; r.output stays empty. For answers of megabytes.
+// thread's that no child shares, valid until the thread's next call; r.output stays empty. For large answers.
 ChildResult run_in_child(const std::function<std::string()>& work, double time_limit_s, std::string_view& answer);
-
-// CPU seconds (user + system) of the children the calling thread has waited for in run_in_child, since the thread
-// began: a caller timing a task by its thread's CPU adds the work its children did.
-double reaped_children_cpu_seconds();
 
 // "failed: timed out after 3.0 s", "failed: crashed (signal 6, Aborted)", ... for every end but completed.
 std::string describe_end(const ChildResult& r);

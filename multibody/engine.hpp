@@ -120,12 +120,13 @@ public:
     // caller refuse a whole study before anything runs. The step and iterations are the caller's to check.
     virtual void check_settings(const EngineSettings& settings) const = 0;
     // Whether simulate() may run on several threads at once (each call with its own scene). false for a library
-    // with process-wide state that is not re-entrant (ODE): callers running cases in parallel (compare/suite.hpp,
-    // study/runner.hpp) then run that engine's work in worker processes (below), or one run at a time.
+    // with process-wide state that is not re-entrant (ODE): callers running cases in parallel run that engine's work
+    // one task at a time (compare/suite.hpp) or, a study on several threads, in worker processes (below;
+    // study/runner.cpp).
     virtual bool runs_concurrently() const { return true; }
     // Whether simulate() may run in a child forked from a multi-threaded process (worker_process.hpp): it takes no
     // lock another thread could hold at the fork, and nothing of its process-wide state is needed back in the parent.
-    // A pool then runs an engine whose runs_concurrently() is false in worker processes, beside itself.
+    // A study's pool then runs an engine whose runs_concurrently() is false in worker processes, beside itself.
     virtual bool runs_in_worker_process() const { return false; }
 };
 

@@ -10,7 +10,6 @@
 
 #include "analytic/error.hpp"
 #include "multibody/child_process.hpp"
-#include "multibody/trajectory_bytes.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -41,7 +40,7 @@ std::string answer(const std::function<void(std::string&)>& work) {
 }  // namespace
 
 std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who) {
-    std::string_view out;  // in place, where it was received: a trajectory is megabytes
+    std::string_view out;  // in place, where it was received (a task's rows: no copy)
     const ChildResult child = run_in_child([&] { return answer(work); }, 0.0, out);
     if (child.end != ChildEnd::completed)  // answer() catches everything: a signal or an exit of the library's own
         throw EngineFailure(fmt::format("{}: its worker process {}", who, describe_end(child)));
@@ -61,18 +60,6 @@ std::string_view run_in_worker_process(const std::function<void(std::string&)>& 
     }
 }
 
-Trajectory WorkerProcessEngine::simulate(const WallScene& scene, const Excitation& ex,
-                                         const EngineSettings& settings) const {
-    const std::string who = inner_.name();
-    const std::string_view bytes = run_in_worker_process(
-        [&](std::string& out) { append_bytes(out, inner_.simulate(scene, ex, settings)); }, who);
-    try {
-        return trajectory_from_bytes(bytes);
-    } catch (const std::runtime_error& e) {
-        throw EngineFailure(fmt::format("{}: its worker process sent a broken answer: {}", who, e.what()));
-    }
-}
-
 bool worker_processes_enabled() {
     const char* v = std::getenv("VSSW_WORKER_PROCESSES");
     if (!v || std::string(v).empty() || std::string(v) == "1") return true;
@@ -83,11 +70,6 @@ bool worker_processes_enabled() {
 bool runs_in_worker_processes(const Engine& engine, int threads) {
     if (threads <= 1 || engine.runs_concurrently() || !engine.runs_in_worker_process()) return false;
     return worker_processes_enabled();
-}
-
-std::unique_ptr<Engine> worker_process_engine_for(const Engine& engine, int threads) {
-    if (!runs_in_worker_processes(engine, threads)) return nullptr;
-    return std::make_unique<WorkerProcessEngine>(engine);
 }
 
 }  // namespace vssw::multibody

@@ -21,7 +21,7 @@ constexpr double kFullTimeLimit = 300.0;
 struct RunOptions {
     std::vector<std::string> engines;  // backends to run (each must be compiled in: InputError otherwise)
     bool quick = false;                // the quick set (Case::quick) with shortened durations
-    double time_limit_s = 60.0;        // per case and backend
+    double time_limit_s = kQuickTimeLimit;  // per case and backend [s]
     int threads = 0;                   // children at once (0: the available cores)
     // Only these cases (names; any of the set, run at the quick durations when `quick`); empty: the whole set or the
     // quick set. An unknown name is an InputError.

@@ -65,12 +65,14 @@ std::string instability(const Probe& p, const StableStep& s) {
     return "";
 }
 
-StableStep search(const std::string& engine, const std::string& wall, double time_limit_s) {
+// default_dt is read by the caller before the pool starts: an engine made on a pool thread (ODE initialises its
+// library then) could be half set up in the sibling thread's forked probe child.
+StableStep search(const std::string& engine, const std::string& wall, double default_dt, double time_limit_s) {
     const auto start = std::chrono::steady_clock::now();
     StableStep s;
     s.engine = engine;
     s.wall = wall;
-    s.default_dt = multibody::make_engine(engine)->default_settings().dt;
+    s.default_dt = default_dt;
     s.reference_dt = s.default_dt / 4.0;
     const Probe ref = probe(engine, wall, s.reference_dt, time_limit_s);
     s.probes = 1;
@@ -113,14 +115,21 @@ StableStep search(const std::string& engine, const std::string& wall, double tim
 }  // namespace
 
 std::vector<StableStep> find_stable_steps(const std::vector<std::string>& engines, double time_limit_s, int threads) {
-    std::vector<std::pair<std::string, std::string>> searches;
+    struct Search {
+        std::string engine, wall;
+        double default_dt;
+    };
+    std::vector<Search> searches;
     for (const std::string& e : engines)
-        if (e != "analytic")
-            for (const char* wall : {"fig6-vssw", "fig6-pw"}) searches.emplace_back(e, wall);
+        if (e != "analytic") {
+            const double dt = multibody::make_engine(e)->default_settings().dt;
+            for (const char* wall : {"fig6-vssw", "fig6-pw"}) searches.push_back({e, wall, dt});
+        }
     std::vector<StableStep> out(searches.size());
     std::vector<compare::PoolTask> tasks(searches.size());
-    compare::run_pool(tasks, {false}, threads,
-                      [&](std::size_t i) { out[i] = search(searches[i].first, searches[i].second, time_limit_s); });
+    compare::run_pool(tasks, {false}, threads, [&](std::size_t i) {
+        out[i] = search(searches[i].engine, searches[i].wall, searches[i].default_dt, time_limit_s);
+    });
     return out;
 }
 

@@ -1,23 +1,21 @@
-// Worker processes (multibody/worker_process.hpp): a run in a child gives the caller the very numbers of the same run
-// in its own process (the trajectory's bytes round trip exactly; ODE's runs and a study's results.csv are identical
-// with and without them), and each way a child can fail comes back as the error it is.
+// Worker processes (multibody/worker_process.hpp): work run in a child gives the caller the very bytes it would have
+// made in its own process (ODE's runs and a study's results.csv are identical with and without them), and each way a
+// child can fail comes back as the error it is.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <unistd.h>
 
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
 #include "compare/suite.hpp"
-#include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/trajectory_bytes.hpp"
 #include "multibody/worker_process.hpp"
 #include "study/suite_file.hpp"
 #include "tests/study_fixtures.hpp"
@@ -26,8 +24,6 @@ namespace {
 
 using namespace vssw;
 using multibody::EngineFailure;
-using multibody::Trajectory;
-using multibody::TrajectorySample;
 
 bool built(const std::string& name) {
     const auto names = multibody::available_engines();
@@ -36,118 +32,40 @@ bool built(const std::string& name) {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-void expect_same(const Trajectory& a, const Trajectory& b) {
-    ASSERT_EQ(a.samples.size(), b.samples.size());
-    for (std::size_t i = 0; i < a.samples.size(); ++i) {
-        const TrajectorySample &x = a.samples[i], &y = b.samples[i];
-        for (const auto f : {&TrajectorySample::t, &TrajectorySample::theta1, &TrajectorySample::theta1_dot,
-                             &TrajectorySample::theta2, &TrajectorySample::top_dy, &TrajectorySample::kinetic,
-                             &TrajectorySample::potential})
-            ASSERT_TRUE(same_bits(x.*f, y.*f)) << "sample " << i << ": " << x.*f << " against " << y.*f;
-        ASSERT_EQ(x.contacts, y.contacts) << "sample " << i;
-    }
-    EXPECT_EQ(a.overturned, b.overturned);
-    EXPECT_EQ(a.at_rest_at_end, b.at_rest_at_end);
-    EXPECT_EQ(a.steps, b.steps);
-    EXPECT_EQ(a.warnings, b.warnings);
-    ASSERT_EQ(a.located.has_value(), b.located.has_value());
-    if (a.located) {
-        const multibody::LocatedEvents &x = *a.located, &y = *b.located;
-        EXPECT_TRUE(same_bits(x.max_abs_theta1, y.max_abs_theta1));
-        EXPECT_TRUE(same_bits(x.t_max_abs_theta1, y.t_max_abs_theta1));
-        ASSERT_EQ(x.t_overturn.has_value(), y.t_overturn.has_value());
-        if (x.t_overturn) {
-            EXPECT_TRUE(same_bits(*x.t_overturn, *y.t_overturn));
-        }
-        EXPECT_TRUE(same_bits(x.energy_balance_error, y.energy_balance_error));
-        EXPECT_EQ(x.supports_computed, y.supports_computed);
-        ASSERT_EQ(x.roller_tension_at.has_value(), y.roller_tension_at.has_value());
-        if (x.roller_tension_at) {
-            EXPECT_TRUE(same_bits(*x.roller_tension_at, *y.roller_tension_at));
-        }
-    }
-}
-
-// Values a text or rounded copy would change: -0, a subnormal, a NaN with a payload, infinities, 0.1 + 0.2.
-Trajectory awkward_trajectory() {
-    Trajectory t;
+// Bytes a text or rounded copy would change: a NUL, -0, a subnormal, a NaN with a payload, 0.1 + 0.2.
+std::string awkward_bytes() {
+    std::string out("a\0b", 3);
     double payload_nan;
     const std::uint64_t bits = 0x7ff8000000001234ULL;
     std::memcpy(&payload_nan, &bits, sizeof bits);
-    t.samples.push_back({0.0, -0.0, std::numeric_limits<double>::denorm_min(), payload_nan,
-                         std::numeric_limits<double>::infinity(), 0.1 + 0.2, -1e308, 3});
-    t.samples.push_back({1e-4, 1.0 / 3.0, -std::numeric_limits<double>::infinity(), 2.0, -7.5e-9, 0.0, 1.0, 0});
-    t.overturned = true;
-    t.at_rest_at_end = false;
-    t.steps = 1234567890123L;
-    t.warnings = {"the roller pulls at t = 1.2 s", "", std::string("a\0b", 3)};
-    multibody::LocatedEvents e;
-    e.max_abs_theta1 = 0.123456789012345678;
-    e.t_max_abs_theta1 = 0.7;
-    e.t_overturn = 2.5;
-    e.energy_balance_error = 1e-15;
-    e.supports_computed = true;  // roller_tension_at left unset: an optional both ways
-    t.located = e;
-    return t;
+    for (const double x : {-0.0, std::numeric_limits<double>::denorm_min(), payload_nan, 0.1 + 0.2})
+        out.append(reinterpret_cast<const char*>(&x), sizeof x);
+    return out;
 }
 
-TEST(TrajectoryBytes, ARoundTripKeepsEveryBit) {
-    const Trajectory t = awkward_trajectory();
-    expect_same(t, multibody::trajectory_from_bytes(multibody::to_bytes(t)));
-    Trajectory plain;  // no samples, no located events
-    plain.steps = 3;
-    expect_same(plain, multibody::trajectory_from_bytes(multibody::to_bytes(plain)));
-}
-
-TEST(TrajectoryBytes, ShortOrOverlongBytesAreRefused) {
-    const std::string bytes = multibody::to_bytes(awkward_trajectory());
-    for (const std::size_t cut : {std::size_t{0}, std::size_t{5}, bytes.size() / 2, bytes.size() - 1})
-        EXPECT_THROW((void)multibody::trajectory_from_bytes(std::string_view(bytes).substr(0, cut)),
-                     std::runtime_error)
-            << "cut at " << cut;
-    EXPECT_THROW((void)multibody::trajectory_from_bytes(bytes + "x"), std::runtime_error);
-}
-
-// A test engine whose run does what `how` says: return the awkward trajectory, throw each kind of error, or die.
+// What a worker's work does: append the awkward bytes, throw each kind of error, or die.
 enum class How { returns, engine_failure, input_error, other_error, aborts, exits };
 
-class ScriptedEngine final : public multibody::Engine {
-public:
-    explicit ScriptedEngine(How how, bool concurrent = false) : how_(how), concurrent_(concurrent) {}
-    std::string name() const override { return "scripted"; }
-    std::string version() const override { return "1"; }
-    multibody::EngineSettings default_settings() const override { return {}; }
-    Trajectory simulate(const multibody::WallScene&, const multibody::Excitation&,
-                        const multibody::EngineSettings&) const override {
-        switch (how_) {
-            case How::returns:
-                return awkward_trajectory();
-            case How::engine_failure:
-                throw EngineFailure("scripted: NaN at t = 1.5 s");
-            case How::input_error:
-                throw InputError("scripted setting x must be > 0, got -1");
-            case How::other_error:
-                throw std::logic_error("scripted: a bug");
-            case How::aborts:
-                std::abort();
-            case How::exits:
-                ::_exit(3);
-        }
-        return {};
-    }
-    void check_settings(const multibody::EngineSettings&) const override {}
-    bool runs_concurrently() const override { return concurrent_; }
-    bool runs_in_worker_process() const override { return true; }
-
-private:
-    How how_;
-    bool concurrent_;
-};
-
-Trajectory run_in_worker(How how) {
-    const ScriptedEngine inner(how);
-    const multibody::WorkerProcessEngine worker(inner);
-    return worker.simulate(multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7)), {}, {});
+std::string run_in_worker(How how) {
+    return std::string(multibody::run_in_worker_process(
+        [how](std::string& out) {
+            switch (how) {
+                case How::returns:
+                    out += awkward_bytes();
+                    return;
+                case How::engine_failure:
+                    throw EngineFailure("scripted: NaN at t = 1.5 s");
+                case How::input_error:
+                    throw InputError("scripted setting x must be > 0, got -1");
+                case How::other_error:
+                    throw std::logic_error("scripted: a bug");
+                case How::aborts:
+                    std::abort();
+                case How::exits:
+                    ::_exit(3);
+            }
+        },
+        "scripted"));
 }
 
 // The message the caller gets for an error of type E thrown by run_in_worker(how) (empty: none, or another type).
@@ -162,7 +80,7 @@ std::string message_of(How how) {
     return "";
 }
 
-TEST(WorkerProcess, ReturnsTheRunsTrajectoryExactly) { expect_same(awkward_trajectory(), run_in_worker(How::returns)); }
+TEST(WorkerProcess, ReturnsTheWorksBytesExactly) { EXPECT_EQ(run_in_worker(How::returns), awkward_bytes()); }
 
 TEST(WorkerProcess, ErrorsComeBackWithTheirTypeAndMessage) {
     EXPECT_EQ(message_of<EngineFailure>(How::engine_failure), "scripted: NaN at t = 1.5 s");
@@ -180,20 +98,36 @@ TEST(WorkerProcess, AChildThatDiesIsAnEngineFailureSayingHow) {
     EXPECT_NE(exited.find("exited with code 3"), std::string::npos) << exited;
 }
 
-TEST(WorkerProcess, OnlyANonReentrantEngineOnSeveralThreadsIsWrapped) {
+// An engine that says how it may run, for the rule below (never simulated).
+class DeclaredEngine final : public multibody::Engine {
+public:
+    explicit DeclaredEngine(bool concurrent) : concurrent_(concurrent) {}
+    std::string name() const override { return "declared"; }
+    std::string version() const override { return "1"; }
+    multibody::EngineSettings default_settings() const override { return {}; }
+    multibody::Trajectory simulate(const multibody::WallScene&, const multibody::Excitation&,
+                                   const multibody::EngineSettings&) const override {
+        throw EngineFailure("not simulated here");
+    }
+    void check_settings(const multibody::EngineSettings&) const override {}
+    bool runs_concurrently() const override { return concurrent_; }
+    bool runs_in_worker_process() const override { return true; }
+
+private:
+    bool concurrent_;
+};
+
+TEST(WorkerProcess, OnlyANonReentrantEngineOnSeveralThreadsIsSentToWorkers) {
     ::unsetenv("VSSW_WORKER_PROCESSES");
-    const ScriptedEngine exclusive(How::returns), concurrent(How::returns, /*concurrent=*/true);
-    EXPECT_EQ(multibody::worker_process_engine_for(exclusive, 1), nullptr) << "one thread: nothing forks";
-    EXPECT_EQ(multibody::worker_process_engine_for(concurrent, 2), nullptr) << "it runs on threads already";
-    const auto w = multibody::worker_process_engine_for(exclusive, 2);
-    ASSERT_NE(w, nullptr);
-    EXPECT_TRUE(w->runs_concurrently());
-    EXPECT_EQ(w->name(), "scripted");
+    const DeclaredEngine exclusive(false), concurrent(true);
+    EXPECT_FALSE(multibody::runs_in_worker_processes(exclusive, 1)) << "one thread: nothing forks";
+    EXPECT_FALSE(multibody::runs_in_worker_processes(concurrent, 2)) << "it runs on threads already";
+    EXPECT_TRUE(multibody::runs_in_worker_processes(exclusive, 2));
     ::setenv("VSSW_WORKER_PROCESSES", "0", 1);
-    EXPECT_EQ(multibody::worker_process_engine_for(exclusive, 2), nullptr) << "turned off";
+    EXPECT_FALSE(multibody::runs_in_worker_processes(exclusive, 2)) << "turned off";
     ::setenv("VSSW_WORKER_PROCESSES", "yes", 1);
     try {
-        (void)multibody::worker_process_engine_for(exclusive, 2);
+        (void)multibody::runs_in_worker_processes(exclusive, 2);
         ADD_FAILURE() << "'yes' accepted";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("'yes'"), std::string::npos) << e.what();
@@ -201,26 +135,37 @@ TEST(WorkerProcess, OnlyANonReentrantEngineOnSeveralThreadsIsWrapped) {
     ::unsetenv("VSSW_WORKER_PROCESSES");
 }
 
+// theta1 of every sample as its raw bytes: what the comparison below needs, bit for bit.
+std::string theta1_bytes(const multibody::Trajectory& t) {
+    std::string out;
+    for (const multibody::TrajectorySample& x : t.samples)
+        out.append(reinterpret_cast<const char*>(&x.theta1), sizeof x.theta1);
+    return out;
+}
+
 TEST(WorkerProcess, OdeGivesTheSameRunInAChild) {
     if (!built("ode")) GTEST_SKIP() << "ODE is not built";
     const auto ode = multibody::make_engine("ode");
     ASSERT_FALSE(ode->runs_concurrently());
     ASSERT_TRUE(ode->runs_in_worker_process());
-    const multibody::WorkerProcessEngine worker(*ode);
     const multibody::WallScene wall = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
     multibody::Excitation ex;
     ex.theta0 = 0.5 * wall.alpha();
     ex.t_end = 2.0;
+    auto in_child = [&](const multibody::EngineSettings& s) {
+        return std::string(multibody::run_in_worker_process(
+            [&](std::string& out) { out += theta1_bytes(ode->simulate(wall, ex, s)); }, "ode"));
+    };
     for (const double quickstep : {0.0, 1.0}) {  // quickstep draws on ODE's random generator, seeded per run
         multibody::EngineSettings s = ode->default_settings();
         s.knobs["quickstep"] = quickstep;
-        const Trajectory here = ode->simulate(wall, ex, s);
+        const multibody::Trajectory here = ode->simulate(wall, ex, s);
         ASSERT_GT(here.samples.size(), 100u);
-        expect_same(here, worker.simulate(wall, ex, s));
+        EXPECT_EQ(theta1_bytes(here), in_child(s)) << "quickstep " << quickstep;
     }
     multibody::EngineSettings bad = ode->default_settings();
     bad.knobs["no_such_knob"] = 1.0;
-    EXPECT_THROW((void)worker.simulate(wall, ex, bad), InputError);
+    EXPECT_THROW((void)in_child(bad), InputError);
 }
 
 // A study of ODE and the analytic model: results.csv is the same file on one thread (ODE in this process), on two
@@ -237,6 +182,9 @@ TEST(WorkerProcess, AnOdeStudysResultsAreTheSameFileOnOneAndTwoThreads) {
     (void)vssw::testing::run_into(grid, dir / "two", 2);
     ::setenv("VSSW_WORKER_PROCESSES", "0", 1);
     (void)vssw::testing::run_into(grid, dir / "off", 2);
+    // The two-thread run reads the switch (so "two" above ran ODE in workers): a bad value is refused there.
+    ::setenv("VSSW_WORKER_PROCESSES", "yes", 1);
+    EXPECT_THROW((void)vssw::testing::run_into(grid, dir / "bad", 2), InputError);
     ::unsetenv("VSSW_WORKER_PROCESSES");
     const std::string one = vssw::testing::read_file(dir / "one" / study::kResultsCsv);
     EXPECT_NE(one.find(",ode,"), std::string::npos) << "ODE's rows are in it";
@@ -244,8 +192,8 @@ TEST(WorkerProcess, AnOdeStudysResultsAreTheSameFileOnOneAndTwoThreads) {
     EXPECT_EQ(one, vssw::testing::read_file(dir / "off" / study::kResultsCsv));
 }
 
-// The validation suite runs ODE's simulations in worker processes on two threads (a fork per run): its rows, failures and
-// traces are those of one thread, where ODE runs in the process.
+// The validation suite runs ODE in its own process, its tasks taking turns on two threads (no worker processes there:
+// README, "ODE"): its rows, failures and traces are those of one thread.
 TEST(WorkerProcess, OdesSuiteRowsAreTheSameOnOneAndTwoThreads) {
     if (!built("ode")) GTEST_SKIP() << "ODE is not built";
     ::unsetenv("VSSW_WORKER_PROCESSES");
