@@ -331,5 +331,58 @@ TEST(Simulate, DefaultToleranceLocatesImpactsUnderARecordWithin1e8SecondsOfATigh
                                     simulate(*m, record, GroundMotion::none(), {}, tight));
 }
 
+// Free flights end where they are predicted (analytic/simulate.cpp: symmetry about the turning point, the last two
+// flights' durations) only once the ground is at rest. The ground "moving" at zero acceleration until long after the
+// wall has stopped is the same physics with no prediction made: every impact is found by the search on the
+// continuous extension and the Newton re-step.
+GroundMotion still_ground() {
+    return GroundMotion::analytic([](double) { return 0.0; }, 40.0, {}, "still ground");
+}
+
+SimulationResult release_on_still_ground(const RockingModel& m, double theta0, SimulationOptions o) {
+    o.stop_at_rest = true;
+    o.t_end = 60.0;
+    return simulate(m, still_ground(), GroundMotion::none(), {theta0, 0.0}, o);
+}
+
+constexpr double kFlightSymmetry = 1e-9;  // [s] a run at rtol 1e-13 places its events to ~1e-11 s: 100x headroom
+
+// What the prediction rests on: the equation of motion is even in theta1' and has no time in it when the ground is
+// still, so each flight from theta1 = 0 takes as long to fall from its turning point as it took to rise to it.
+TEST(Simulate, FreeFlightsAreSymmetricAboutTheirTurningPoints) {
+    const VsswGeometry w = fig6_vssw();
+    for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
+        const auto m = make_vssw_model(w, k);
+        SimulationOptions tight;
+        tight.step.rtol = 1e-13;
+        tight.keep_samples = false;
+        const SimulationResult r = release_on_still_ground(*m, 0.9 * w.alpha1, tight);
+        ASSERT_GT(r.impacts.size(), 50u);
+        int checked = 0;
+        for (std::size_t i = 1; i < r.impacts.size(); ++i) {
+            const double launch = r.impacts[i - 1].t, landing = r.impacts[i].t;
+            for (const TurningPoint& p : r.peaks) {
+                if (p.t <= launch || p.t >= landing) continue;
+                EXPECT_NEAR(landing - p.t, p.t - launch, kFlightSymmetry) << "flight " << i;
+                ++checked;
+            }
+        }
+        EXPECT_EQ(checked, static_cast<int>(r.impacts.size()) - 1);  // one turning point per flight
+    }
+}
+
+// Landings placed by the prediction agree with landings found by search to the accuracy goal, both at the default
+// tolerance, over the 130 impacts of Fig. 6 (84 of them predicted).
+TEST(Simulate, PredictedLandingsAreTheSearchedOnesWithinTheAccuracyGoal) {
+    const VsswGeometry w = fig6_vssw();
+    for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
+        const auto m = make_vssw_model(w, k);
+        SimulationOptions o;
+        o.keep_samples = false;
+        expect_impact_times_within_goal(free_vibration(*m, 0.9 * w.alpha1, o),
+                                        release_on_still_ground(*m, 0.9 * w.alpha1, o));
+    }
+}
+
 }  // namespace
 }  // namespace vssw
