@@ -220,13 +220,25 @@ Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run,
     return {hi, ""};
 }
 
+// Whether measure() gives `metric` a row for this run: the part measures it, the run's backend has it (the analytic
+// model's own metrics are left out for an engine), and it is not threshold_g (a task of its own).
+bool reports(const PartSpec& part, const RunSpec& run, const std::string& metric) {
+    const MetricInfo& info = metric_info(metric);
+    if (info.analytic_only && run.engine != "analytic") return false;
+    if (info.source == MetricSource::threshold) return false;
+    return std::find(part.metrics.begin(), part.metrics.end(), metric) != part.metrics.end();
+}
+
+std::size_t threshold_metric(const Grid& grid) {
+    const std::vector<std::string>& metrics = grid.spec().metrics;
+    return static_cast<std::size_t>(std::find(metrics.begin(), metrics.end(), "threshold_g") - metrics.begin());
+}
+
 }  // namespace
 
 Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,
                               const multibody::Engine& engine) {
-    const std::vector<std::string>& metrics = grid.spec().metrics;
-    const std::size_t m = static_cast<std::size_t>(std::find(metrics.begin(), metrics.end(), "threshold_g") -
-                                                   metrics.begin());
+    const std::size_t m = threshold_metric(grid);
     try {
         return {m, compare::find_threshold(engine, grid.runs().at(run_index).settings, c.scene).value_g, kOk, {}};
     } catch (const EngineFailure& e) {
@@ -246,7 +258,6 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     const StudySpec& spec = grid.spec();
     const PartSpec& part = spec.parts[c.part];
     const RunSpec& run = grid.runs().at(run_index);
-    const bool analytic = run.engine == "analytic";
     const double alpha = c.scene.alpha();
     std::vector<Measurement> out;
     const auto add = [&](std::size_t m, double value, std::string status) {
@@ -278,10 +289,8 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
 
     for (std::size_t m = 0; m < spec.metrics.size(); ++m) {
         const std::string& metric = spec.metrics[m];
-        const MetricInfo& info = metric_info(metric);
-        if (info.analytic_only && !analytic) continue;
-        if (std::find(part.metrics.begin(), part.metrics.end(), metric) == part.metrics.end()) continue;
-        switch (info.source) {
+        if (!reports(part, run, metric)) continue;
+        switch (metric_info(metric).source) {
             case MetricSource::closed_form: {
                 ClosedForm f;
                 try {
@@ -361,13 +370,25 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     return out;
 }
 
+std::vector<Measurement> failed_task(const Grid& grid, const CaseSpec& c, std::size_t run_index, bool threshold,
+                                     const std::string& reason) {
+    if (threshold) return {{threshold_metric(grid), kNaN, failed(reason), {}}};
+    const PartSpec& part = grid.spec().parts[c.part];
+    const RunSpec& run = grid.runs().at(run_index);
+    std::vector<Measurement> out;
+    for (std::size_t m = 0; m < grid.spec().metrics.size(); ++m)
+        if (reports(part, run, grid.spec().metrics[m])) out.push_back({m, kNaN, failed(reason), {}});
+    return out;
+}
+
 double threshold_cost(const RunSpec& run) {
-    // ~17 trials, those below the threshold run the whole hold (a few seconds), those above stop once the wall lifts.
-    return 17.0 * 2.5 * compare::cost_per_simulated_second(run.engine);
+    // ~10 trials (bracketed around the closed form): those below the threshold run the whole hold (a few seconds),
+    // those above stop once the wall lifts.
+    return 10.0 * 2.5 * compare::cost_per_simulated_second(run.engine);
 }
 
 double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
-    // Simulated seconds, roughly: a threshold search is ~17 trials of a few seconds; a free vibration a few seconds;
+    // Simulated seconds, roughly: a threshold search is ~10 trials of a few seconds; a free vibration a few seconds;
     // a pulse or a record its duration and the tail; a collapse search ~35 such runs.
     const PartSpec& part = grid.spec().parts[c.part];
     double seconds = 0.0;

@@ -11,8 +11,8 @@
 // Peaks, overturning, the energy balance and the roller's tension come from the analytic model's located events
 // (multibody::LocatedEvents) when it is the backend, from the samples otherwise.
 //
-// A run that fails (an engine blows up, an integration fails, the case is not a model the run can hold) gives its
-// metrics the status "failed: <reason>"; the study goes on.
+// A run that fails (an engine blows up, an integration fails, the case is not a model the run can hold, a worker
+// process dies) gives its metrics the status "failed: <reason>"; the study goes on.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -46,6 +46,11 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
 // task of its own, once per wall and run, and gives it to every case of that wall (study/runner.cpp).
 Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,
                               const multibody::Engine& engine);
+// The rows of a task that could not run at all (its worker process died inside the engine's library: a crash, not a
+// failure the run reported), each "failed: <reason>": the rows measure() or, for a threshold task, measure_threshold()
+// would have given. The study goes on.
+std::vector<Measurement> failed_task(const Grid& grid, const CaseSpec& c, std::size_t run_index, bool threshold,
+                                     const std::string& reason);
 // Whether the case's part measures threshold_g.
 bool measures_threshold(const Grid& grid, const CaseSpec& c);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -22,6 +23,7 @@
 #include "study/clock.hpp"
 #include "study/measure.hpp"
 #include "study/mpi.hpp"
+#include "study/worker_task.hpp"
 
 namespace vssw::study {
 namespace fs = std::filesystem;
@@ -209,10 +211,19 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
             in_child.push_back(multibody::runs_in_worker_processes(*e, threads));
             exclusive.push_back(!e->runs_concurrently() && !in_child.back());
         }
+        // A worker that dies (a crash inside the engine's library) fails its task's rows; the study goes on. (In the
+        // caller's process such a crash would end the study: that is what the worker process is also for.)
+        const auto failed_rows = [&](std::size_t i, const std::string& reason) {
+            const Task& t = tasks[i];
+            const CaseSpec c = grid.make_case(std::abs(t.case_id));
+            return journal_text(t.case_id, t.run, failed_task(grid, c, t.run, t.case_id < 0, reason));
+        };
         result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
             const std::size_t e = tasks[i].engine;
-            journal->append_text(in_child[e] ? std::string(multibody::run_in_worker_process(
-                                                   [&](std::string& out) { out += run_task(i); }, engines[e]->name()))
+            journal->append_text(in_child[e] ? run_task_in_worker([&] { return run_task(i); }, engines[e]->name(),
+                                                                  [&](const std::string& why) {
+                                                                      return failed_rows(i, why);
+                                                                  })
                                              : run_task(i));
             note_progress(tasks[i].case_id < 0
                               ? fmt::format("threshold of case {} {}", -tasks[i].case_id, grid.runs()[tasks[i].run].engine)

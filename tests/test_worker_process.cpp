@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -17,7 +18,9 @@
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/worker_process.hpp"
+#include "study/measure.hpp"
 #include "study/suite_file.hpp"
+#include "study/worker_task.hpp"
 #include "tests/study_fixtures.hpp"
 
 namespace {
@@ -190,6 +193,51 @@ TEST(WorkerProcess, AnOdeStudysResultsAreTheSameFileOnOneAndTwoThreads) {
     EXPECT_NE(one.find(",ode,"), std::string::npos) << "ODE's rows are in it";
     EXPECT_EQ(one, vssw::testing::read_file(dir / "two" / study::kResultsCsv));
     EXPECT_EQ(one, vssw::testing::read_file(dir / "off" / study::kResultsCsv));
+}
+
+// A study task whose worker dies (a crash inside an engine's library) becomes its rows, failed with the reason; a
+// task that runs gives its own text. (The runner's on_death: study::failed_task, below.)
+TEST(WorkerProcess, AStudyTaskWhoseWorkerDiesGivesTheTextOfItsDeath) {
+    const auto on_death = [](const std::string& why) { return "failed rows: " + why; };
+    EXPECT_EQ(study::run_task_in_worker([] { return std::string("rows"); }, "test", on_death), "rows");
+    const std::string died = study::run_task_in_worker(
+        []() -> std::string {
+            std::abort();
+        },
+        "scripted engine", on_death);
+    EXPECT_EQ(died.rfind("failed rows: scripted engine", 0), 0u) << died;
+    EXPECT_NE(died.find("signal 6"), std::string::npos) << died;
+    // An error the task throws is not a death: it comes back as itself (measure() keeps a run's failures as rows).
+    EXPECT_THROW((void)study::run_task_in_worker([]() -> std::string { throw InputError("bad case"); }, "test",
+                                                 on_death),
+                 InputError);
+}
+
+// The rows a dead task leaves are the rows the task would have given: the same metrics, each failed with the reason.
+TEST(WorkerProcess, AFailedTaskHasTheRowsOfTheTaskThatRuns) {
+    const vssw::testing::TempDir dir;
+    // The closed form is the analytic model's own metric: an engine's run (ODE, when built) has no row for it.
+    const std::string engines = built("ode") ? "[\"analytic\", \"ode\"]" : "[\"analytic\"]";
+    const study::Grid grid(vssw::testing::study_of(
+        dir, "metrics = [\"threshold_g\", \"period\", \"restitution\", \"threshold_closed_form_g\", "
+             "\"peak_rotation\"]\nengines = " + engines + "\n[wall]\nheight = 4.88\nthickness = 0.356\nhinge = 0.5\n"
+             "[excitation]\nkind = \"free\"\ntheta0 = 0.3\n"));
+    const study::CaseSpec c = grid.make_case(grid.shard_case_ids(1, 1).front());
+    for (std::size_t run = 0; run < grid.runs().size(); ++run) {
+        const auto engine = multibody::make_engine(grid.runs()[run].engine);
+        const std::vector<study::Measurement> measured = study::measure(grid, c, run, *engine);
+        const std::vector<study::Measurement> failed = study::failed_task(grid, c, run, false, "died\nby signal 11");
+        ASSERT_EQ(failed.size(), measured.size());
+        ASSERT_FALSE(failed.empty());
+        for (std::size_t i = 0; i < failed.size(); ++i) {
+            EXPECT_EQ(failed[i].metric, measured[i].metric);
+            EXPECT_EQ(failed[i].status, "failed: died by signal 11");  // one line, as every failed row
+            EXPECT_TRUE(std::isnan(failed[i].value));
+        }
+        const std::vector<study::Measurement> threshold = study::failed_task(grid, c, run, true, "died");
+        ASSERT_EQ(threshold.size(), 1u);
+        EXPECT_EQ(grid.spec().metrics[threshold[0].metric], "threshold_g");
+    }
 }
 
 // The validation suite runs ODE in its own process, its tasks taking turns on two threads (no worker processes there:
