@@ -20,9 +20,8 @@ void add_once(std::vector<std::string>& list, const std::string& item) {
 
 }  // namespace
 
-std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare::StressBound>& bounds,
-                                                       const std::string& path, int threads) {
-    if (bounds.empty()) return {};
+stress::RunOptions plan_stress_bounds(const std::vector<compare::StressBound>& bounds, const std::string& path,
+                                      int threads) {
     const std::vector<std::string> available = multibody::available_engines();
     stress::RunOptions run;
     run.quick = true;
@@ -41,6 +40,13 @@ std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare
             add_once(run.engines, e);
         }
     }
+    return run;
+}
+
+std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare::StressBound>& bounds,
+                                                       const stress::RunOptions& run) {
+    if (bounds.empty()) return {};
+    const std::vector<std::string> available = multibody::available_engines();
     const std::vector<stress::CaseResult> results = stress::run_cases(run);
     std::vector<compare::BoundVerdict> verdicts;
     for (const compare::StressBound& b : bounds)
