@@ -147,9 +147,12 @@ private:
             const auto& bp = (c == 0 ? ah_ : av_).breakpoints();
             // The first breakpoint past `after`. Runs move forward, so the last answer's neighbourhood is checked
             // before a binary search over a record's thousands of samples.
+            // The hint i is an index in [0, bp.size()] (bp.size(): none left), as set here.
             std::size_t& i = breakpoint_hint_[c];
-            if (!(i <= bp.size() && (i == bp.size() || bp[i] > after) && (i == 0 || bp[i - 1] <= after))) {
-                if (i < bp.size() && bp[i] <= after && (i + 1 == bp.size() || bp[i + 1] > after))
+            const bool hint_is_first = (i == bp.size() || bp[i] > after) && (i == 0 || bp[i - 1] <= after);
+            if (!hint_is_first) {
+                const bool next_is_first = i < bp.size() && bp[i] <= after && (i + 1 == bp.size() || bp[i + 1] > after);
+                if (next_is_first)
                     ++i;
                 else
                     i = static_cast<std::size_t>(std::upper_bound(bp.begin(), bp.end(), after) - bp.begin());
@@ -162,12 +165,16 @@ private:
     void emit(double t, const State& y) {
         if (!opt_.keep_samples) return;
         if (!opt_.sample_energies) {
-            constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
-            out_.samples.push_back({t, y[0], y[1], kNotComputed, kNotComputed, kNotComputed, y[2], dissipated_, ah_(t)});
+            out_.samples.push_back(sample_without_energies(t, y[0], y[1], y[2]));
             return;
         }
         out_.samples.push_back({t, y[0], y[1], model_.kinetic(y[0], y[1]), model_.weight_potential(y[0]),
                                 model_.overburden_work(y[0]), y[2], dissipated_, ah_(t)});
+    }
+    // A sample when no energies are asked for (sample_energies off): they are NaN, not zeros or stale values.
+    Sample sample_without_energies(double t, double theta, double theta_dot, double work_ground) const {
+        constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+        return {t, theta, theta_dot, kNotComputed, kNotComputed, kNotComputed, work_ground, dissipated_, ah_(t)};
     }
 
     // Energy balance at time t; throws EnergyBalanceFailure as soon as the error passes the ceiling.
@@ -272,13 +279,13 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
         setup.emit = [&](double t0, double t1, const std::function<Vec<5>(double)>& at) {
         for_output_times(t0, t1, [&](double tau) {
             const Vec<5> z = at(tau);
+            if (!opt_.sample_energies) {
+                out_.samples.push_back(sample_without_energies(tau, z[0], z[2], z[4]));
+                return;
+            }
             const Vec2 q(z[0], z[1]), qd(z[2], z[3]);
-            constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
-            const bool energies = opt_.sample_energies;
-            out_.samples.push_back({tau, z[0], z[2], energies ? blocks.kinetic(q, qd) : kNotComputed,
-                                    energies ? blocks.weight_potential(q) : kNotComputed,
-                                    energies ? blocks.overburden_work(q) : kNotComputed, z[4], dissipated_,
-                                    ah_(tau)});
+            out_.samples.push_back({tau, z[0], z[2], blocks.kinetic(q, qd), blocks.weight_potential(q),
+                                    blocks.overburden_work(q), z[4], dissipated_, ah_(tau)});
         });
     };
     setup.check_energy = [&](double at, const Vec<5>& z, double flight_dissipated) {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "stress/case.hpp"
+#include "study/csv.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -14,12 +15,6 @@ namespace {
 std::string cell(const stress::CaseResult& c) {
     if (c.verdict != stress::Verdict::failed) return stress::to_string(c.verdict);
     return fmt::format("failed ({})", stress::to_string(c.failure));
-}
-
-std::string csv_field(const std::string& s) {
-    std::string q = "\"";
-    for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-    return q + "\"";
 }
 
 std::vector<std::string> case_names(const StressReport& r) {
@@ -87,8 +82,8 @@ Json stress_json(const StressReport& r) {
 void write_stress_csv(std::ostream& out, const StressReport& r) {
     out << "name,engine,verdict,failure,reason,time_s\n";
     for (const auto& c : r.cases)
-        out << fmt::format("{},{},{},{},{},{:.3f}\n", csv_field(c.name), c.engine, stress::to_string(c.verdict),
-                           stress::to_string(c.failure), csv_field(c.reason), c.time_s);
+        out << fmt::format("{},{},{},{},{},{:.3f}\n", study::csv_field(c.name), c.engine, stress::to_string(c.verdict),
+                           stress::to_string(c.failure), study::csv_field(c.reason), c.time_s);
 }
 
 void write_stress_table(std::ostream& out, const StressReport& r) {

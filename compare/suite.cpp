@@ -143,8 +143,6 @@ struct TaskContext {
     CaseReference& ref;
 };
 
-EngineSettings reference_settings() { return analytic_reference_settings(); }
-
 FreeVibrationOptions free_options(const TaskContext& x) {
     FreeVibrationOptions options;
     options.r = x.c.r;
@@ -168,11 +166,11 @@ void compute_reference(const TaskContext& x) {
     CaseReference& ref = x.ref;
     switch (x.c.kind) {
         case CaseKind::threshold:
-            ref.threshold_g = find_threshold(analytic, reference_settings(), x.wall.scene).value_g;
+            ref.threshold_g = find_threshold(analytic, analytic_reference_settings(), x.wall.scene).value_g;
             return;
         case CaseKind::free:
         case CaseKind::step: {
-            ref.free = run_free_vibration(analytic, reference_settings(), x.wall.scene, free_options(x));
+            ref.free = run_free_vibration(analytic, analytic_reference_settings(), x.wall.scene, free_options(x));
             if (x.keep_traces && x.c.kind == CaseKind::free)
                 ref.free_trace = make_trace(x.c.id, kReferenceEngine, ref.free.trajectory, x.wall.scene.alpha(),
                                             kFreeTraceSeconds);
@@ -181,12 +179,12 @@ void compute_reference(const TaskContext& x) {
         }
         case CaseKind::history: {
             const Excitation ex = history_excitation(x);
-            ref.history = analytic.simulate(x.wall.scene, ex, reference_settings());
+            ref.history = analytic.simulate(x.wall.scene, ex, analytic_reference_settings());
             // A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in
             // place of Eq. (19) (the impact the engines make: README "Engines"): does the impact law account for a
             // difference in peaks?
             if (x.wall.scene.vssw) {
-                EngineSettings s = reference_settings();
+                EngineSettings s = analytic_reference_settings();
                 s.knobs["restitution"] = restitution_whole_mechanism(*x.wall.scene.vssw);
                 ref.whole_mechanism_peak =
                     peak_rotation(analytic.simulate(x.wall.scene, ex, s)).value / x.wall.scene.alpha();

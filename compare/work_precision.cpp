@@ -67,9 +67,10 @@ multibody::EngineSettings analytic_at(double rtol, bool whole_mechanism) {
     return s;
 }
 
+// |value / reference - 1| (compare_metric's error, unsigned); NaN unless both are finite and the reference is not 0.
 double relative_error(double value, double reference) {
     if (!std::isfinite(value) || !std::isfinite(reference) || reference == 0.0) return kNaN;
-    return std::abs(value / reference - 1.0);
+    return std::abs(compare_metric(reference, value).rel_error);
 }
 
 // The peak |theta1| / alpha of a run from rest under the record: the located peak when the backend locates it (the
@@ -179,20 +180,6 @@ std::vector<bool> pareto_front(const std::vector<double>& cost, const std::vecto
         front[i] = !dominated;
     }
     return front;
-}
-
-double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int n = 0;
-    for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
-        if (!(std::isfinite(x[i]) && std::isfinite(y[i]) && x[i] > 0.0 && y[i] > 0.0)) continue;
-        const double lx = std::log(x[i]), ly = std::log(y[i]);
-        sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
-        ++n;
-    }
-    const double d = n * sxx - sx * sx;
-    if (n < 2 || d == 0.0) return kNaN;
-    return (n * sxy - sx * sy) / d;
 }
 
 std::vector<BenchSetting> bench_sweep(const multibody::Engine& engine, bool quick) {

@@ -40,9 +40,6 @@ CpuTiming time_cpu(const std::function<void()>& run, int repeats);
 // The Pareto front of (cost, error) points: true where no other point is at most as costly and at most as wrong
 // with one of the two strictly less. Points with a non-finite cost or error are never on it.
 std::vector<bool> pareto_front(const std::vector<double>& cost, const std::vector<double>& error);
-// Least-squares slope of log(y) on log(x) over the points where both are finite and > 0 (NaN with fewer than two):
-// the order of convergence when x is the step and y the error.
-double loglog_slope(const std::vector<double>& x, const std::vector<double>& y);
 
 // One point of an engine's sweep: a label ("dt=2e-04 it=20") and the settings it stands for.
 struct BenchSetting {

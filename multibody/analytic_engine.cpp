@@ -146,7 +146,10 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     }
     // The stop angle reached between two output times: its own last sample, so that the samples show it too.
     if (stopped && (out.samples.empty() || std::abs(out.samples.back().theta1) < excitation.stop_angle)) {
-        TrajectorySample t = out.samples.empty() ? TrajectorySample{} : out.samples.back();
+        // Built like the others: under motion_only its fields not computed are NaN, as every other sample's.
+        TrajectorySample t = !out.samples.empty()     ? out.samples.back()
+                             : excitation.motion_only ? motion_sample(0.0, 0.0, 0.0)
+                                                      : TrajectorySample{};
         const double side = !out.samples.empty() && out.samples.back().theta1 < 0.0 ? -1.0 : 1.0;
         t.t = r.t_overturn;
         t.theta1 = side * excitation.stop_angle;

@@ -190,19 +190,23 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
 }
 
 std::string describe_end(const ChildResult& r) {
+    return r.end == ChildEnd::completed ? "completed" : "failed: " + describe_failure(r);
+}
+
+std::string describe_failure(const ChildResult& r) {
     switch (r.end) {
         case ChildEnd::completed:
-            return "completed";
+            return "completed";  // not a failure; callers ask only of ends that are
         case ChildEnd::threw:
-            return "failed: " + r.output;
+            return r.output;
         case ChildEnd::timed_out:
-            return fmt::format("failed: timed out after {:.1f} s", r.time_s);
+            return fmt::format("timed out after {:.1f} s", r.time_s);
         case ChildEnd::crashed:
-            return fmt::format("failed: crashed (signal {}, {})", r.signal, ::strsignal(r.signal));
+            return fmt::format("crashed (signal {}, {})", r.signal, ::strsignal(r.signal));
         case ChildEnd::exited:
-            return fmt::format("failed: the process exited with code {} without an answer", r.exit_code);
+            return fmt::format("the process exited with code {} without an answer", r.exit_code);
     }
-    return "failed";
+    return "ended in an unknown way";
 }
 
 }  // namespace vssw::multibody

@@ -1,6 +1,6 @@
 #pragma once
 // One piece of work in a forked child process, its answer (a string) written to a pipe: how `vssw stress` keeps a
-// case that hangs, crashes or aborts inside an engine library from taking the run down (stress/isolated.hpp), and how
+// case that hangs, crashes or aborts inside an engine library from taking the run down (stress/run.hpp), and how
 // a library that is not re-entrant runs beside itself on several cores (worker_process.hpp). The parent reads the
 // answer, kills the child with SIGKILL once a time limit (if any) has passed, and tells how it ended.
 //
@@ -39,5 +39,7 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
 
 // "failed: timed out after 3.0 s", "failed: crashed (signal 6, Aborted)", ... for every end but completed.
 std::string describe_end(const ChildResult& r);
+// describe_end without its "failed: ": "timed out after 3.0 s", ... (for an end that is not completed).
+std::string describe_failure(const ChildResult& r);
 
 }  // namespace vssw::multibody

@@ -12,6 +12,9 @@
 
 namespace vssw::stress {
 
+using multibody::ChildEnd;
+using multibody::ChildResult;
+
 CaseResult result_of(const ChildResult& child, const std::string& name, const std::string& engine) {
     CaseResult r;
     if (child.end == ChildEnd::completed) {
@@ -21,7 +24,7 @@ CaseResult result_of(const ChildResult& child, const std::string& name, const st
         r.failure = child.end == ChildEnd::timed_out ? Failure::timed_out
                     : child.end == ChildEnd::threw   ? Failure::reported
                                                      : Failure::crashed;
-        r.reason = describe_end(child).substr(std::string("failed: ").size());
+        r.reason = multibody::describe_failure(child);
     }
     r.name = name;
     r.engine = engine;
@@ -61,7 +64,8 @@ std::vector<CaseResult> run_cases(const RunOptions& o) {
         const auto& [c, engine] = runs[i];
         const bool quick = o.quick;
         const ChildResult child =
-            run_isolated([c = c, engine = engine, quick] { return encode(judge(*c, engine, quick)); }, o.time_limit_s);
+            multibody::run_in_child([c = c, engine = engine, quick] { return encode(judge(*c, engine, quick)); },
+                                    o.time_limit_s);
         results[i] = result_of(child, c->name, engine);
     });
     return results;

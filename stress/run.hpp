@@ -1,12 +1,12 @@
 #pragma once
-// Running the stress set: every (case, backend) pair in a child process of its own (isolated.hpp) with a time limit,
+// Running the stress set: every (case, backend) pair in a child process of its own (multibody/child_process.hpp: a
+// case that hangs, crashes or aborts inside an engine library cannot take the whole run down) with a time limit,
 // several at a time on a pool of threads that only wait for their children.
 #include <string>
 #include <vector>
 
+#include "multibody/child_process.hpp"
 #include "stress/case.hpp"
-
-#include "stress/isolated.hpp"
 #include "stress/verdict.hpp"
 
 namespace vssw::stress {
@@ -36,6 +36,6 @@ std::vector<CaseResult> run_cases(const RunOptions& options);
 const Case& require_case(const std::string& name);
 
 // A child's end as a verdict: its own answer when it completed, otherwise failed (timed out, crashed, threw).
-CaseResult result_of(const ChildResult& child, const std::string& name, const std::string& engine);
+CaseResult result_of(const multibody::ChildResult& child, const std::string& name, const std::string& engine);
 
 }  // namespace vssw::stress

@@ -9,12 +9,14 @@
 #include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
+#include "multibody/child_process.hpp"
 #include "multibody/engine.hpp"
-#include "stress/isolated.hpp"
 
 namespace vssw::stress {
 namespace {
 
+using multibody::ChildEnd;
+using multibody::ChildResult;
 using multibody::WallScene;
 
 WallScene wall_scene(const std::string& wall) {
@@ -29,7 +31,7 @@ struct Probe {
 
 // One free vibration (0.5 alpha, 3 impacts) at step dt, in a child.
 Probe probe(const std::string& engine, const std::string& wall, double dt, double time_limit_s) {
-    const ChildResult child = run_isolated(
+    const ChildResult child = multibody::run_in_child(
         [&] {
             const auto e = multibody::make_engine(engine);
             multibody::EngineSettings s = e->default_settings();
@@ -47,7 +49,7 @@ Probe probe(const std::string& engine, const std::string& wall, double dt, doubl
         time_limit_s);
     Probe p;
     if (child.end != ChildEnd::completed) {
-        p.failure = describe_end(child).substr(std::string("failed: ").size());
+        p.failure = multibody::describe_failure(child);
     } else if (std::sscanf(child.output.c_str(), "= %lg %lg", &p.period, &p.restitution) == 2) {
         p.ran = true;
     } else {

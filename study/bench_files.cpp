@@ -14,6 +14,7 @@
 #include "study/atomic_file.hpp"
 #include "study/csv.hpp"
 #include "study/plot_panels.hpp"  // series_style
+#include "study/report_data.hpp"  // settings_json
 
 namespace vssw::study {
 namespace {
@@ -30,7 +31,8 @@ std::string knobs_text(const multibody::EngineSettings& s) {
     return text;
 }
 
-std::string percent(double v) { return std::isfinite(v) ? fmt::format("{:.3g} %", 100.0 * v) : "-"; }
+// An error or a target in percent without a sign ("0.5 %"), "-" when not measured (study::percent is signed).
+std::string error_percent(double v) { return std::isfinite(v) ? fmt::format("{:.3g} %", 100.0 * v) : "-"; }
 
 // The (problem, metric) pairs in the order the points first give them.
 std::vector<std::pair<std::string, std::string>> problem_metrics(const std::vector<BenchPoint>& points) {
@@ -72,20 +74,19 @@ Json bench_json(const BenchData& d) {
     Json points = Json::array();
     for (std::size_t i = 0; i < d.points.size(); ++i) {
         const BenchPoint& p = d.points[i];
-        Json knobs = Json::object();
-        for (const auto& [name, value] : p.settings.knobs) knobs[name] = value;
+        const std::optional<double> target = compare::bench_target(p.metric);  // none for the peak
         points.push_back({{"engine", p.engine},
                           {"problem", p.problem},
                           {"metric", p.metric},
                           {"setting", p.setting},
-                          {"settings", {{"dt", p.settings.dt}, {"iterations", p.settings.iterations}, {"knobs", knobs}}},
+                          {"settings", settings_json(p.settings)},
                           {"cpu_s", p.cpu.median},
                           {"cpu_repeats", p.cpu.repeats},
                           {"noise", p.cpu.noise},
                           {"value", finite_or_null(p.value)},
                           {"reference", finite_or_null(p.reference)},
                           {"error", finite_or_null(p.error)},
-                          {"target", p.metric == "peak" ? Json(nullptr) : Json(*compare::bench_target(p.metric))},
+                          {"target", or_null(target)},
                           {"pareto", static_cast<bool>(d.pareto[i])},
                           {"failure", p.failure.empty() ? Json(nullptr) : Json(p.failure)}});
     }
@@ -141,7 +142,7 @@ std::string cheapest_markdown(const BenchData& d) {
                 if (k == key) {
                     if (index) {
                         const BenchPoint& p = d.points[*index];
-                        cell = fmt::format("{} ({:.3g} s, {})", p.setting, p.cpu.median, percent(p.error));
+                        cell = fmt::format("{} ({:.3g} s, {})", p.setting, p.cpu.median, error_percent(p.error));
                     } else {
                         cell = "none within";
                     }
@@ -242,8 +243,9 @@ PlotResult write_bench(const BenchData& d, const fs::path& dir, const std::strin
                           d.meta.quick ? " (--quick sweep)" : "", d.meta.load.empty() ? "unknown" : d.meta.load)
            << "CPU time is the process's (std::clock), the median of the repeats; errors are relative, against the "
               "converged reference of the same physics (compare/work_precision.hpp). Targets: threshold "
-           << percent(compare::kThresholdTarget) << ", period " << percent(compare::kPeriodTarget) << ", restitution "
-           << percent(compare::kRestitutionTarget) << ".\n\n## Cheapest settings within the targets\n\n"
+           << error_percent(compare::kThresholdTarget) << ", period " << error_percent(compare::kPeriodTarget)
+           << ", restitution " << error_percent(compare::kRestitutionTarget)
+           << ".\n\n## Cheapest settings within the targets\n\n"
            << cheapest_markdown(d) << "\n## Plots\n\n";
         if (!plots.note.empty()) md << "No plots or not all: " << plots.note << "\n\n";
         for (const Plot& p : plots.plots)
@@ -292,7 +294,9 @@ std::vector<DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir
         const bool met = c.contains("setting") && c["setting"].is_string();
         t.rows.push_back({{text_of(c, "engine"), false},
                           {met ? c["setting"].get<std::string>() : "none meets them all", !met},
-                          {met && c["cpu_s"].is_number() ? fmt::format("{:.4g}", c["cpu_s"].get<double>()) : "-",
+                          {met && c.contains("cpu_s") && c.at("cpu_s").is_number()
+                               ? fmt::format("{:.4g}", c.at("cpu_s").get<double>())
+                               : "-",
                            false}});
     }
     blocks.push_back(t);

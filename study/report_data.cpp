@@ -6,13 +6,14 @@
 #include <fmt/format.h>
 
 namespace vssw::study {
-namespace {
 
 Json settings_json(const multibody::EngineSettings& s) {
     Json knobs = Json::object();
     for (const auto& [k, v] : s.knobs) knobs[k] = finite_or_null(v);
     return {{"dt", finite_or_null(s.dt)}, {"iterations", s.iterations}, {"knobs", knobs}};
 }
+
+namespace {
 
 Json suite_json(const ReportInput& in) {
     const compare::Suite& suite = in.suite;

@@ -26,6 +26,8 @@ namespace vssw::study {
 constexpr int kReportFormat = 1;
 
 Json results_json(const ReportInput& in);
+// An engine's settings as results.json and bench.json write them: {dt, iterations, knobs {name: value}}.
+Json settings_json(const multibody::EngineSettings& s);
 void write_metrics_csv(std::ostream& out, const compare::SuiteResults& results);
 void write_failures_csv(std::ostream& out, const compare::SuiteResults& results);
 void write_traces_csv(std::ostream& out, const compare::SuiteResults& results);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli_runner.hpp"
+#include "tests/engine_available.hpp"
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -782,10 +783,7 @@ constexpr double kWholeMechanismRatioSampling = 1e-4;
 // Table 1 #1 (hinge 0.69, high): the paper's Eq. (3) and the exact kinematics part measurably from 0.8 alpha1.
 std::vector<std::string> t1n1_from_08() { return specimen_args(1) + std::vector<std::string>{"--theta0", "0.8"}; }
 
-bool engine_available(const std::string& name) {
-    const auto engines = vssw::multibody::available_engines();
-    return std::find(engines.begin(), engines.end(), name) != engines.end();
-}
+using vssw::testing::engine_available;
 
 // A compare object without its wall time, the one key that differs between two runs of the same comparison.
 Json without_wall_time(Json j) {

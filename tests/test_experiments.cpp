@@ -23,6 +23,12 @@ using multibody::Trajectory;
 // 1.01 - 1 / 1.01 = 0.0199 down to rel_tol 1e-4: ceil(log2(0.0199 / 1e-4)) = 8. The doubling from 0.05 g that this
 // search replaced took 16-17 trials on these walls.
 constexpr int kBracketedTrials = 10;
+// A trial's acceleration is the search's value in g times g (from the estimate in m/s^2 divided by g, times a bracket
+// factor): a few ulps from the m/s^2 value the test expects. Where a trial lies: far above that, far below the
+// bracket's 1 % and rel_tol 1e-4.
+constexpr double kGRoundTrip = 1e-9;
+// That no trial went beyond the cap: rounding only (a step past it would be of the order of rel_tol).
+constexpr double kCapRoundoff = 1e-12;
 
 // A backend whose wall lifts exactly when the held ground acceleration reaches a threshold of the test's choosing
 // (a step, no dynamics): the search's bracket logic alone, with the threshold placed away from the estimate.
@@ -85,7 +91,7 @@ TEST(ThresholdSearch, ABracketThatDoesNotHoldIsWidened) {
         EXPECT_EQ(r.trials, static_cast<int>(engine.tried.size()));
         // The first trial was the bracket's upper end, inside [E, 1.01 E]: the search did start from the estimate.
         ASSERT_FALSE(engine.tried.empty());
-        EXPECT_NEAR(engine.tried.front(), o.bracket * estimate, 1e-9 * estimate);
+        EXPECT_NEAR(engine.tried.front(), o.bracket * estimate, kGRoundTrip * estimate);
     }
 }
 
@@ -101,8 +107,8 @@ TEST(ThresholdSearch, AnEngineThatNeverLiftsIsTriedUpToTheCap) {
     }
     ASSERT_FALSE(engine.tried.empty());
     // The last trial is at the cap exactly; none went beyond it.
-    EXPECT_NEAR(engine.tried.back(), o.max_over_estimate * eq12_threshold(w), 1e-9 * eq12_threshold(w));
-    for (const double a : engine.tried) EXPECT_LE(a, o.max_over_estimate * eq12_threshold(w) * (1.0 + 1e-12));
+    EXPECT_NEAR(engine.tried.back(), o.max_over_estimate * eq12_threshold(w), kGRoundTrip * eq12_threshold(w));
+    for (const double a : engine.tried) EXPECT_LE(a, o.max_over_estimate * eq12_threshold(w) * (1.0 + kCapRoundoff));
 }
 
 TEST(ThresholdSearch, RejectsABracketThatIsNoBracket) {

@@ -29,6 +29,9 @@ constexpr double kPi = 3.141592653589793;
 constexpr double kRoundedPgaTol_g = 5e-4;
 // Relative rounding of a few double operations (unit conversion, i * dt, interpolation weights).
 constexpr double kRoundoff = 1e-12;
+// Two forms of one linear interpolation ((1 - w) a_i + w a_i+1 in GroundMotion; a_i + slope (x - t_i) in a piece, or
+// a_i + (x - t_i) / dt_i (a_i+1 - a_i) in the test's) each round twice (weight or slope, then the sum): 4 roundoffs.
+constexpr double kInterpolationsApart = 4.0 * kRoundoff;
 // The analytic PGA scan samples 20,000 points; our peaks fall on scan points, so only rounding remains.
 constexpr double kScanTol = 1e-9;
 
@@ -375,7 +378,7 @@ TEST(GroundMotion, EvenSpacingLookupMatchesReference) {
     for (std::size_t i = 0; i + 1 < times.size(); ++i) {
         for (double x : {times[i], std::nextafter(times[i], 1e9), 0.5 * (times[i] + times[i + 1]),
                          std::nextafter(times[i + 1], -1e9)})
-            EXPECT_NEAR(m(x), reference_interpolation(times, values, x), kRoundoff * 4.0) << x;
+            EXPECT_NEAR(m(x), reference_interpolation(times, values, x), kInterpolationsApart) << x;
     }
     EXPECT_EQ(m(times.back()), values.back());
 }
@@ -395,12 +398,12 @@ TEST(GroundMotion, LinearPiecesReproduceTheInterpolation) {
             ASSERT_TRUE(p.has_value()) << x;
             EXPECT_LE(p->start, x);
             EXPECT_GE(p->end, x);
-            EXPECT_NEAR(p->value + p->slope * (x - p->start), m(x), kRoundoff * 4.0) << x;
+            EXPECT_NEAR(p->value + p->slope * (x - p->start), m(x), kInterpolationsApart) << x;
         }
     }
     const std::optional<GroundMotion::LinearPiece> last = m.linear_piece(times.back());
     ASSERT_TRUE(last.has_value());
-    EXPECT_NEAR(last->value + last->slope * (times.back() - last->start), values.back(), kRoundoff * 4.0);
+    EXPECT_NEAR(last->value + last->slope * (times.back() - last->start), values.back(), kInterpolationsApart);
     for (double x : {0.0, 0.499, std::nextafter(times.back(), 1e9), 10.0, double(NAN)})
         EXPECT_FALSE(m.linear_piece(x).has_value()) << x;
     EXPECT_FALSE(cosine_pulse(-2.0, 0.5).linear_piece(0.1).has_value());  // analytic: evaluated as it is

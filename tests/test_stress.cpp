@@ -1,6 +1,6 @@
-// The stress runner (stress/isolated.hpp, run.hpp, judge.hpp): one bad case cannot take a run down, and each way a
-// child can end has its verdict. The verdicts of the stress set itself are asserted through the program
-// (tests/cli/stress.sh).
+// The stress runner (multibody/child_process.hpp's run_in_child, as run.hpp uses it; run.hpp, judge.hpp): one bad
+// case cannot take a run down, and each way a child can end has its verdict. The verdicts of the stress set itself
+// are asserted through the program (tests/cli/stress.sh).
 #include <csignal>
 #include <cstdlib>
 #include <set>
@@ -10,13 +10,17 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "multibody/child_process.hpp"
 #include "stress/case.hpp"
-#include "stress/isolated.hpp"
 #include "stress/judge.hpp"
 #include "stress/run.hpp"
 
 namespace vssw::stress {
 namespace {
+
+using multibody::ChildEnd;
+using multibody::ChildResult;
+using multibody::run_in_child;
 
 // A time limit the quick children below end well inside even on a loaded machine (they return at once).
 constexpr double kGenerousLimit = 60.0;
@@ -26,20 +30,20 @@ constexpr double kShortLimit = 0.5;
 constexpr unsigned kSleepSeconds = 50;
 
 TEST(StressRunner, ReturnsTheChildsAnswer) {
-    const ChildResult r = run_isolated([] { return std::string("ok\tnone\tfine"); }, kGenerousLimit);
+    const ChildResult r = run_in_child([] { return std::string("ok\tnone\tfine"); }, kGenerousLimit);
     EXPECT_EQ(r.end, ChildEnd::completed);
     EXPECT_EQ(r.output, "ok\tnone\tfine");
 }
 
 TEST(StressRunner, AnAnswerLongerThanThePipeBufferArrivesWhole) {
     const std::string big(1 << 20, 'x');  // 1 MiB: 16 times a Linux pipe's buffer
-    const ChildResult r = run_isolated([&] { return big; }, kGenerousLimit);
+    const ChildResult r = run_in_child([&] { return big; }, kGenerousLimit);
     ASSERT_EQ(r.end, ChildEnd::completed);
     EXPECT_EQ(r.output.size(), big.size());
 }
 
 TEST(StressRunner, ACaseThatSleepsPastTheLimitTimesOut) {
-    const ChildResult r = run_isolated(
+    const ChildResult r = run_in_child(
         [] {
             ::sleep(kSleepSeconds);
             return std::string("late");
@@ -54,7 +58,7 @@ TEST(StressRunner, ACaseThatSleepsPastTheLimitTimesOut) {
 }
 
 TEST(StressRunner, ACaseThatAbortsIsACrashNamingTheSignal) {
-    const ChildResult r = run_isolated(
+    const ChildResult r = run_in_child(
         []() -> std::string {
             std::abort();
         },
@@ -67,7 +71,7 @@ TEST(StressRunner, ACaseThatAbortsIsACrashNamingTheSignal) {
 }
 
 TEST(StressRunner, ASegfaultIsACrash) {
-    const ChildResult r = run_isolated(
+    const ChildResult r = run_in_child(
         []() -> std::string {
             std::raise(SIGSEGV);
             return "survived";
@@ -78,7 +82,7 @@ TEST(StressRunner, ASegfaultIsACrash) {
 }
 
 TEST(StressRunner, AnExceptionIsAReportedFailureWithItsMessage) {
-    const ChildResult r = run_isolated([]() -> std::string { throw std::runtime_error("engine blew up at 1 s"); },
+    const ChildResult r = run_in_child([]() -> std::string { throw std::runtime_error("engine blew up at 1 s"); },
                                        kGenerousLimit);
     EXPECT_EQ(r.end, ChildEnd::threw);
     const CaseResult v = result_of(r, "thrower", "none");
@@ -88,7 +92,7 @@ TEST(StressRunner, AnExceptionIsAReportedFailureWithItsMessage) {
 }
 
 TEST(StressRunner, ALibraryCallingExitIsNotAnAnswer) {
-    const ChildResult r = run_isolated([]() -> std::string { ::_exit(7); }, kGenerousLimit);
+    const ChildResult r = run_in_child([]() -> std::string { ::_exit(7); }, kGenerousLimit);
     EXPECT_EQ(r.end, ChildEnd::exited);
     EXPECT_EQ(r.exit_code, 7);
     EXPECT_TRUE(is_unsafe(result_of(r, "exiter", "none")));
@@ -96,8 +100,8 @@ TEST(StressRunner, ALibraryCallingExitIsNotAnAnswer) {
 
 TEST(StressRunner, SeveralThreadsEachGetTheirOwnChild) {
     std::string a, b;
-    std::thread ta([&] { a = run_isolated([] { return std::string("a"); }, kGenerousLimit).output; });
-    std::thread tb([&] { b = run_isolated([] { return std::string("b"); }, kGenerousLimit).output; });
+    std::thread ta([&] { a = run_in_child([] { return std::string("a"); }, kGenerousLimit).output; });
+    std::thread tb([&] { b = run_in_child([] { return std::string("b"); }, kGenerousLimit).output; });
     ta.join();
     tb.join();
     EXPECT_EQ(a, "a");

@@ -22,6 +22,7 @@
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
+#include "tests/engine_available.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -54,10 +55,7 @@ constexpr std::size_t kMaxTracePoints = 2000;
 
 Suite default_suite() { return vssw::study::read_suite("default", VSSW_DATA_DIR); }
 
-bool has_engine(const std::string& name) {
-    const auto names = multibody::available_engines();
-    return std::find(names.begin(), names.end(), name) != names.end();
-}
+using vssw::testing::engine_available;
 
 const MetricRow* find_row(const SuiteResults& r, const std::string& case_id, const std::string& engine,
                           const std::string& metric) {
@@ -422,7 +420,7 @@ TEST(RunSuite, BadInputPropagatesAndUnknownEnginesAreNamed) {
 // Two cheap real-engine cases: a Bullet free vibration of the Fig. 6 PW and an ODE step case (which must run for
 // ODE only).
 TEST(RunSuite, EngineRowsOnCheapCases) {
-    if (!has_engine("bullet") || !has_engine("ode")) GTEST_SKIP() << "Bullet or ODE not compiled in";
+    if (!engine_available("bullet") || !engine_available("ode")) GTEST_SKIP() << "Bullet or ODE not compiled in";
     const Suite s = select_cases(default_suite(), {"fig6-pw/r0.5", "fig6-vssw/r0.5/dt0.001/ode"});
     RunOptions o;
     o.threads = 2;

@@ -246,7 +246,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     auto record = [&](double t) {
         if (ex.motion_only) {
             out.samples.push_back(motion_sample(t, clockwise_angle(lower), -lower.getAngularVelocity().z()));
-            return out.samples.back();
+            return;
         }
         TrajectorySample p{};
         p.t = t;
@@ -268,7 +268,6 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
                       kDepth;
         p.contacts = w.contact_points();
         out.samples.push_back(p);
-        return p;
     };
 
     const double dt = settings.dt;

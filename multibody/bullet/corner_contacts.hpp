@@ -25,18 +25,18 @@ public:
     // h_lower, h_upper: half heights; friction at the ground and the hinge (the roller is frictionless).
     CornerContacts(btRigidBody& ground, btRigidBody& lower, btRigidBody* upper, double b, double h_lower,
                    double h_upper, double friction)
-        : lower_(lower), upper_(upper), b_(b), h_lower_(h_lower), h_upper_(h_upper), friction_(friction) {
+        : lower_(lower), upper_(upper), ground_(ground), b_(b), h_lower_(h_lower), h_upper_(h_upper),
+          friction_(friction) {
         manifolds_[0] = make(lower, ground);
         if (upper) {
             manifolds_[1] = make(*upper, lower);
             manifolds_[2] = make(*upper, ground);
         }
-        ground_ = &ground;
     }
 
     // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground).
     void update() {
-        const double x0 = ground_->getWorldTransform().getOrigin().x();
+        const double x0 = ground_.getWorldTransform().getOrigin().x();
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
         const btTransform& tl = lower_.getWorldTransform();
@@ -68,7 +68,8 @@ public:
         }
     }
 
-    btPersistentManifold** manifolds() { return manifolds_[0] ? &raw_[0] : nullptr; }
+    // The constructor always makes the base's manifold, so the list is never empty.
+    btPersistentManifold** manifolds() { return raw_.data(); }
     int count() const { return count_; }
 
     // Contact points in touch (not speculative): at or inside the surface, to a tolerance far below any step's
@@ -106,7 +107,7 @@ private:
 
     btRigidBody& lower_;
     btRigidBody* upper_;
-    btRigidBody* ground_ = nullptr;
+    btRigidBody& ground_;
     double b_, h_lower_, h_upper_, friction_;
     std::array<std::unique_ptr<btPersistentManifold>, 3> manifolds_{};
     std::array<btPersistentManifold*, 3> raw_{};

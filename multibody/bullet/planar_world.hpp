@@ -18,6 +18,20 @@ class PlanarDynamicsWorld : public btDiscreteDynamicsWorld {
 public:
     using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
 
+    // The solver's list of bodies follows the world's non-static bodies, which change only here (not every step).
+    void addRigidBody(btRigidBody* body) override {
+        btDiscreteDynamicsWorld::addRigidBody(body);
+        sync_bodies();
+    }
+    void addRigidBody(btRigidBody* body, int group, int mask) override {
+        btDiscreteDynamicsWorld::addRigidBody(body, group, mask);
+        sync_bodies();
+    }
+    void removeRigidBody(btRigidBody* body) override {
+        btDiscreteDynamicsWorld::removeRigidBody(body);
+        sync_bodies();
+    }
+
     // One step of dt in two halves, the same sequence as stepSimulation(dt, 0, dt) less the parts named above; the
     // caller writes the contacts in between, once the kinematic ground stands where it will be during the step.
     void begin_step(btScalar dt) {
@@ -27,19 +41,22 @@ public:
     }
     void finish_step(btScalar dt, btPersistentManifold** manifolds, int n_manifolds) {
         getSolverInfo().m_timeStep = dt;
-        bodies_.clear();
-        for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) bodies_.push_back(m_nonStaticRigidBodies[i]);
         btTypedConstraint** constraints = m_constraints.size() > 0 ? &m_constraints[0] : nullptr;
         // The whole scene as one island: what btSimulationIslandManager would hand the solver, without building it.
-        m_constraintSolver->prepareSolve(static_cast<int>(bodies_.size()), n_manifolds);
+        // (stepSimulation also calls the solver's prepareSolve and allSolved around this; btConstraintSolver's are
+        // empty and btSequentialImpulseConstraintSolver keeps them, so they are left out.)
         m_constraintSolver->solveGroup(bodies_.data(), static_cast<int>(bodies_.size()), manifolds, n_manifolds,
                                        constraints, m_constraints.size(), getSolverInfo(), nullptr, getDispatcher());
-        m_constraintSolver->allSolved(getSolverInfo(), nullptr);
         integrateTransforms(dt);
         clearForces();
     }
 
 private:
+    void sync_bodies() {
+        bodies_.clear();
+        for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) bodies_.push_back(m_nonStaticRigidBodies[i]);
+    }
+
     std::vector<btCollisionObject*> bodies_;
 };
 

@@ -19,7 +19,6 @@ namespace vssw::multibody::simbody_wall {
 // passes through `plane_point` with outward normal `normal` (both in plane_body's frame).
 struct CornerPair {
     SimTK::MobilizedBody plane_body, sphere_body;
-    bool plane_is_ground;
     SimTK::Vec3 plane_point, normal;  // plane body frame
     SimTK::Vec3 centre;               // sphere body frame
     double mu;                        // Simbody's combined coefficient 2 mu1 mu2 / (mu1 + mu2): mu or 0 here
@@ -52,8 +51,9 @@ public:
             if (g.depth <= 0.0) continue;
             const double x = g.depth;
             // Relative velocity of the sphere body's material point at the contact point against the plane body's.
-            const SimTK::Vec3 vel = station_velocity(s, p.sphere_body, g.point) -
-                                    (p.plane_is_ground ? SimTK::Vec3(0) : station_velocity(s, p.plane_body, g.point));
+            const SimTK::Vec3 vel =
+                station_velocity(s, p.sphere_body, g.point) -
+                (p.plane_body.isGround() ? SimTK::Vec3(0) : station_velocity(s, p.plane_body, g.point));
             const double xdot = -SimTK::dot(vel, g.normal);  // penetration rate
             const double fH = hertz_ * x * std::sqrt(x);
             const double fN = fH * (1.0 + 1.5 * law_.dissipation * xdot);
@@ -64,14 +64,14 @@ public:
                 const double v2 = slip.normSqr();
                 if (v2 > SimTK::square(SimTK::SignificantReal)) {
                     const double v = std::sqrt(v2);
-                    // Stribeck with equal static and dynamic coefficients: mu step5(v / vt) below vt, mu above.
-                    const double u = std::min(v / law_.transition, 1.0);
-                    const double mu = p.mu * u * u * u * (10.0 + u * (6.0 * u - 15.0));
+                    // Stribeck with equal static and dynamic coefficients: mu stepUp(v / vt) below vt (SimTK:
+                    // 10u^3 - 15u^4 + 6u^5), mu above.
+                    const double mu = p.mu * SimTK::stepUp(std::min(v / law_.transition, 1.0));
                     force -= (fN * mu / v) * slip;
                 }
             }
             apply(s, p.sphere_body, g.point, force, body_forces);
-            if (!p.plane_is_ground) apply(s, p.plane_body, g.point, -force, body_forces);
+            if (!p.plane_body.isGround()) apply(s, p.plane_body, g.point, -force, body_forces);
         }
     }
     // Hertz's stored energy 2/5 fH x, as the subsystem reports it.
@@ -83,7 +83,6 @@ public:
         }
         return pe;
     }
-    bool dependsOnlyOnPositions() const override { return false; }
 
 private:
     struct Geometry {

@@ -175,12 +175,12 @@ private:
         std::vector<CornerPair> pairs;
         const SimTK::MobilizedBody& ground = matter_.Ground();
         for (double side : {1.0, -1.0}) {
-            pairs.push_back({ground, lower_, true, Vec3(0), Vec3(0, 1, 0), Vec3(side * b, -sizes_.h_lower, 0), mu});
+            pairs.push_back({ground, lower_, Vec3(0), Vec3(0, 1, 0), Vec3(side * b, -sizes_.h_lower, 0), mu});
             if (has_upper_) {
-                pairs.push_back({lower_, upper_, false, Vec3(0, sizes_.h_lower, 0), Vec3(0, 1, 0),
+                pairs.push_back({lower_, upper_, Vec3(0, sizes_.h_lower, 0), Vec3(0, 1, 0),
                                  Vec3(side * b, -sizes_.h_upper, 0), mu});
                 // The guide's face at x = side (b + r), its normal pointing back at the wall.
-                pairs.push_back({ground, upper_, true, Vec3(side * (b + r_), 0, 0), Vec3(-side, 0, 0),
+                pairs.push_back({ground, upper_, Vec3(side * (b + r_), 0, 0), Vec3(-side, 0, 0),
                                  Vec3(side * b, sizes_.h_upper, 0), 0.0});
             }
         }

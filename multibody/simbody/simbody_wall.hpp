@@ -41,7 +41,6 @@ public:
         }
     }
     SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0.0; }
-    bool dependsOnlyOnPositions() const override { return false; }
 
 private:
     std::function<double(const SimTK::State&)> a_h_;
