@@ -13,12 +13,22 @@ grep -q '"processes": 2' "$work/mpi.json"
 cmp "$work/single/results.csv" "$work/mpi/results.csv"
 echo "mpirun -n 2: the same rows as one process"
 
-# Interrupted under MPI (SIGINT after a second; the tasks it finished are in the journal) and resumed under MPI: the
-# rows of one uninterrupted process. (If the run ends before the signal, the resume finds it finished: the same rows.)
+# Interrupted under MPI (SIGINT once a task is in the journal) and resumed under MPI: the rows of one uninterrupted
+# process. (If the run ends before the signal, the resume finds it finished: the same rows.) The signal waits for the
+# journal: a fixed second was, under load, sometimes before MPI's start-up had let any task finish, which left
+# nothing to resume (--resume then refuses the folder).
 slow="$src/tests/cli/study_engines.toml"
 "$vssw" study "$slow" --out "$work/slow-single" --no-plots >/dev/null
-timeout -s INT 1 mpirun --allow-run-as-root --oversubscribe -n 2 "$vssw" study "$slow" --out "$work/slow-mpi" \
-  --no-plots >/dev/null 2>&1 || true
+mpirun --allow-run-as-root --oversubscribe -n 2 "$vssw" study "$slow" --out "$work/slow-mpi" --no-plots \
+  >/dev/null 2>&1 &
+run=$!
+for _ in $(seq 1 600); do  # up to a minute
+  grep -q '^#done' "$work/slow-mpi/journal.csv" 2>/dev/null && break
+  kill -0 "$run" 2>/dev/null || break
+  sleep 0.1
+done
+kill -INT "$run" 2>/dev/null || true
+wait "$run" || true
 [ -f "$work/slow-mpi/journal.csv" ] && echo "interrupted with $(grep -c '^#done' "$work/slow-mpi/journal.csv") tasks done"
 mpirun --allow-run-as-root --oversubscribe -n 2 "$vssw" study "$slow" --out "$work/slow-mpi" --no-plots --resume \
   >/dev/null
