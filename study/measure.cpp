@@ -301,7 +301,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 add(m, f.value, f.why_not.empty() ? kOk : failed(f.why_not));
                 break;
             }
-            case MetricSource::threshold: break;  // measure_threshold, a task of its own
+            case MetricSource::threshold: break;  // not reached (reports()): measure_threshold, a task of its own
             case MetricSource::free: {
                 if (!free && free_failure.empty()) guarded(run_free, free_failure);
                 if (!free) {

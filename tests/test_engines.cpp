@@ -377,7 +377,7 @@ namespace {
 // up to 17 %, because the paper's roller pulls there and theirs cannot. The analytic model with a roller that can
 // only push (setting unilateral_roller) must account for that difference on Table 1 #14 (bilateral: 8 % off): each
 // engine's remaining difference at most a tenth of it. Measured: ODE -0.063 % and Bullet -0.063 % at their default
-// 1 ms, Simbody -0.06 % (this release is 3.8-10 times as sensitive to everything as others: README). Simbody's rigid route is left out for time.
+// 1 ms, Simbody -0.06 %. Simbody's rigid route is left out for time.
 constexpr double kUnexplainedFraction = 0.1;
 
 TEST(UnilateralRoller, ExplainsTheEnginesPeriodsWhereThePapersRollerPulls) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli_runner.hpp"
+#include "tests/engine_available.hpp"
 #include "tests/temp_files.hpp"
 #include <nlohmann/json.hpp>
 
@@ -414,8 +415,7 @@ TEST(ReportCommand, BadOutEngineOrCaseIsBadInputNamingIt) {
 }
 
 TEST(ReportCommand, OdeOnTwoParapetCasesEndToEnd) {
-    const auto engines = vssw::multibody::available_engines();
-    if (std::find(engines.begin(), engines.end(), "ode") == engines.end()) GTEST_SKIP() << "ODE not in this build";
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
     TempDir tmp("e2e");
     const fs::path out = tmp.path / "report";
     const CliResult r = run_cli({"report", "--engines", "ode", "--cases", "fig6-pw,fig6-pw/r0.5", "--threads", "2",

@@ -21,11 +21,13 @@
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
 #include "study/suite_file.hpp"
+#include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
 
 namespace {
 
 using namespace vssw;
+using vssw::testing::engine_available;
 using study::Grid;
 using study::ResultsTable;
 using vssw::testing::TempDir;
@@ -41,11 +43,6 @@ constexpr double kRoundoff = 1e-12;
 // by up to dt (1 - sqrt e)/(1 + sqrt e) (compare/metrics.hpp), so the error grows as e falls: measured on Fig. 6,
 // 5.4e-6 at Eq. (19)'s 0.951, 2.2e-5 at 0.8, 6.5e-5 at 0.5; this covers e down to 0.5.
 constexpr double kSampledRatio = 1e-4;
-
-bool built(const std::string& engine) {
-    const auto e = multibody::available_engines();
-    return std::find(e.begin(), e.end(), engine) != e.end();
-}
 
 std::string refusal(const TempDir& dir, const std::string& toml) {
     try {
@@ -85,7 +82,7 @@ dt = 2e-4
 )";
 
 TEST(StudyFile, TheIssuesExampleReadsAsWritten) {
-    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
     const TempDir dir;
     const Grid grid(study_of(dir, kIssueExample));
     EXPECT_EQ(grid.spec().name, "hinge-and-overburden");
@@ -170,7 +167,7 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         EXPECT_NE(message.find("study file"), std::string::npos) << c.toml;
         EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "' in: " << message;
     }
-    if (built("ode")) {
+    if (engine_available("ode")) {
         const std::string message = refusal(dir, "engines = [\"ode\"]\n[settings.ode]\nerpp = 0.3\n" + wall + threshold);
         EXPECT_NE(message.find("unknown ODE setting 'erpp'"), std::string::npos) << message;
     }
@@ -542,7 +539,7 @@ TEST(StudyFile, ARecordOfZerosIsRefused) {
 // ODE's quickstep reorders its rows with a process-wide random generator: a run must not depend on the runs before it
 // (else a study's rows would depend on threads, shards and processes).
 TEST(StudyRun, OdeQuickstepGivesTheSameRunWhateverRanBefore) {
-    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
     const auto ode = multibody::make_engine("ode");
     multibody::EngineSettings s = ode->default_settings();
     s.knobs["quickstep"] = 1.0;

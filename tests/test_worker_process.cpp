@@ -21,17 +21,14 @@
 #include "study/measure.hpp"
 #include "study/suite_file.hpp"
 #include "study/worker_task.hpp"
+#include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
 
 namespace {
 
 using namespace vssw;
+using vssw::testing::engine_available;
 using multibody::EngineFailure;
-
-bool built(const std::string& name) {
-    const auto names = multibody::available_engines();
-    return std::find(names.begin(), names.end(), name) != names.end();
-}
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
@@ -147,7 +144,7 @@ std::string theta1_bytes(const multibody::Trajectory& t) {
 }
 
 TEST(WorkerProcess, OdeGivesTheSameRunInAChild) {
-    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
     const auto ode = multibody::make_engine("ode");
     ASSERT_FALSE(ode->runs_concurrently());
     ASSERT_TRUE(ode->runs_in_worker_process());
@@ -174,7 +171,7 @@ TEST(WorkerProcess, OdeGivesTheSameRunInAChild) {
 // A study of ODE and the analytic model: results.csv is the same file on one thread (ODE in this process), on two
 // (ODE in worker processes) and on two with worker processes off (ODE's runs taking turns).
 TEST(WorkerProcess, AnOdeStudysResultsAreTheSameFileOnOneAndTwoThreads) {
-    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
     const vssw::testing::TempDir dir;
     const study::Grid grid(vssw::testing::study_of(
         dir, "metrics = [\"threshold_g\", \"period\", \"restitution\"]\nengines = [\"analytic\", \"ode\"]\n"
@@ -217,7 +214,7 @@ TEST(WorkerProcess, AStudyTaskWhoseWorkerDiesGivesTheTextOfItsDeath) {
 TEST(WorkerProcess, AFailedTaskHasTheRowsOfTheTaskThatRuns) {
     const vssw::testing::TempDir dir;
     // The closed form is the analytic model's own metric: an engine's run (ODE, when built) has no row for it.
-    const std::string engines = built("ode") ? "[\"analytic\", \"ode\"]" : "[\"analytic\"]";
+    const std::string engines = engine_available("ode") ? "[\"analytic\", \"ode\"]" : "[\"analytic\"]";
     const study::Grid grid(vssw::testing::study_of(
         dir, "metrics = [\"threshold_g\", \"period\", \"restitution\", \"threshold_closed_form_g\", "
              "\"peak_rotation\"]\nengines = " + engines + "\n[wall]\nheight = 4.88\nthickness = 0.356\nhinge = 0.5\n"
@@ -243,7 +240,7 @@ TEST(WorkerProcess, AFailedTaskHasTheRowsOfTheTaskThatRuns) {
 // The validation suite runs ODE in its own process, its tasks taking turns on two threads (no worker processes there:
 // README, "ODE"): its rows, failures and traces are those of one thread.
 TEST(WorkerProcess, OdesSuiteRowsAreTheSameOnOneAndTwoThreads) {
-    if (!built("ode")) GTEST_SKIP() << "ODE is not built";
+    if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
     ::unsetenv("VSSW_WORKER_PROCESSES");
     const compare::Suite s = compare::select_cases(study::read_suite("default", VSSW_DATA_DIR), {"fig6-pw", "fig6-vssw/r0.5"});
     compare::RunOptions one, two;
