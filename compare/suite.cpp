@@ -452,7 +452,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
         for (std::size_t ei = 0; ei < engines.size(); ++ei) {
             const std::string name = engines[ei]->name();
             if (!c.engine.empty() && c.engine != name) continue;
-            double cost = seconds * cost_per_simulated_second(name);
+            double cost = seconds * engines[ei]->cost_per_simulated_second();
             if (c.dt && *c.dt > 0.0) cost *= engines[ei]->default_settings().dt / *c.dt;
             tasks.push_back({ci, ei, cost});
             references[ci].users.fetch_add(1);

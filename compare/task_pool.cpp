@@ -7,16 +7,12 @@
 #include <thread>
 
 #include "analytic/error.hpp"
+#include "multibody/engine.hpp"
 
 namespace vssw::compare {
 
 double cost_per_simulated_second(const std::string& engine) {
-    if (engine == "analytic") return 0.26e-3;
-    if (engine == "bullet") return 2.5e-3;          // at 1 ms
-    if (engine == "ode") return 2.0e-3;             // at 1 ms
-    if (engine == "simbody") return 77e-3;          // compliant, CPodes
-    if (engine == "simbody-rigid") return 189e-3;   // at 0.5 ms
-    return 77e-3;
+    return multibody::make_engine(engine)->cost_per_simulated_second();
 }
 
 int pool_threads(int threads, std::size_t tasks) {

@@ -15,8 +15,8 @@ struct PoolTask {
     std::size_t group = 0;  // the engine, for the exclusive rule
 };
 
-// A backend's estimated cost per simulated second at its default step [s/s] (README, "Speed" in the Bullet section:
-// Fig. 6 VSSW medians, 2026-11-23), for ordering tasks longest first: only the order depends on it.
+// A backend's estimated cost per simulated second at its default step [s/s] (multibody::Engine's own figure), for
+// ordering tasks longest first: only the order depends on it.
 double cost_per_simulated_second(const std::string& engine);
 
 // The number of threads run_pool uses for `tasks` tasks: min(threads, tasks), at least 1 (threads 0: the available

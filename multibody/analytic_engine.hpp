@@ -27,6 +27,7 @@ namespace vssw::multibody {
 class AnalyticEngine final : public Engine {
 public:
     std::string name() const override { return "analytic"; }
+    double cost_per_simulated_second() const override { return 0.26e-3; }  // Fig. 6 VSSW, README "Speed"
     std::string version() const override { return "vssw analytic (DOP853, event-driven)"; }
     EngineSettings default_settings() const override;
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,

@@ -128,6 +128,9 @@ public:
     // lock another thread could hold at the fork, and nothing of its process-wide state is needed back in the parent.
     // A study's pool then runs an engine whose runs_concurrently() is false in worker processes, beside itself.
     virtual bool runs_in_worker_process() const { return false; }
+    // Wall time per simulated second at the default settings [s/s], measured (README, "Speed"): callers order their
+    // tasks longest first by it (compare/task_pool.hpp); only the order depends on it.
+    virtual double cost_per_simulated_second() const = 0;
 };
 
 // Backends compiled into this build ("analytic" always; "bullet", ... when found at configure time).

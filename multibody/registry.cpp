@@ -12,6 +12,9 @@
 #ifdef VSSW_HAVE_SIMBODY
 #include "multibody/simbody/simbody_engine.hpp"
 #endif
+#ifdef VSSW_HAVE_SICONOS
+#include "multibody/siconos/siconos_engine.hpp"
+#endif
 
 namespace vssw::multibody {
 
@@ -26,6 +29,9 @@ std::vector<std::string> available_engines() {
 #ifdef VSSW_HAVE_SIMBODY
     names.push_back("simbody");
     names.push_back("simbody-rigid");
+#endif
+#ifdef VSSW_HAVE_SICONOS
+    names.push_back("siconos");
 #endif
     return names;
 }
@@ -48,6 +54,9 @@ std::unique_ptr<Engine> make_engine(const std::string& name) {
 #ifdef VSSW_HAVE_SIMBODY
     if (name == "simbody") return make_simbody_engine();
     if (name == "simbody-rigid") return make_simbody_rigid_engine();
+#endif
+#ifdef VSSW_HAVE_SICONOS
+    if (name == "siconos") return make_siconos_engine();
 #endif
     throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
                                  fmt::join(available_engines(), ", ")));

@@ -10,8 +10,11 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/simulate.hpp"
 #include "compare/experiments.hpp"
@@ -44,6 +47,14 @@ const std::map<std::string, std::string> kKnownDifferences = {
      "Simbody's SemiExplicitEuler stepper ignores prescribed motion, so the adapter refuses moving supports; a ground "
      "on a heavy Slider whose speed was reset each step was tried and failed (the parapet sank 0.01 m in a threshold "
      "trial; the VSSW's pulse peak came out 0.41 of the pseudo-forces'). Pseudo-forces only."},
+    {"siconos/MovingSupports",
+     "The Siconos adapter applies the ground motion as pseudo-forces only: a moving ground needs the contacts' gaps "
+     "as functions of time (rheonomous relations), not written (multibody/siconos/siconos_engine.cpp)."},
+    {"siconos/QuarterPeriodErrorFalls",
+     "Siconos's first impact at 4 ms is nearer the analytic one than at 2 ms (period error -4.7e-4 against -5.3e-4 on "
+     "the Fig. 6 wall): Moreau-Jean places a landing within its step, and at 4 ms that error partly cancels the "
+     "flight's. From 2 ms down it falls (-5.4e-4, -2.4e-4, -1.5e-4, -3.6e-5 at 2, 1, 0.5, 0.2 ms), held by "
+     "Siconos.QuarterPeriodErrorFallsFromTwoMillisecondsDown."},
     {"bullet/VsswRestitution",
      "Bullet resolves the impact with the new pivot, the closing hinge and the roller in one solve, perfectly "
      "plastic: the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which "
@@ -62,6 +73,12 @@ const std::map<std::string, std::string> kKnownDifferences = {
      "mechanism's plastic impact (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which assumes no impulse at the "
      "roller. Measured on the Fig. 6 wall: 0.8287, -12.8 % against Eq. (19), +0.42 % against the whole mechanism "
      "(multibody/simbody/simbody_compliant.cpp)."},
+    {"siconos/VsswRestitution",
+     "Siconos's Moreau-Jean step resolves the landing with Newton's law, e = 0, at every contact that closes (new "
+     "pivot, hinge corner, roller guide) in one frictional contact problem: the plastic impact of the whole new "
+     "mechanism (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured "
+     "on the Fig. 6 wall: 0.8242 / 0.8246 at 1 / 0.2 ms, -13.3 % against Eq. (19), -0.12 % / -0.07 % against the "
+     "whole mechanism; no choice of Newton coefficients per contact reaches Eq. (19) (README \"Siconos\")."},
     {"simbody-rigid/VsswRestitution",
      "Simbody's SemiExplicitEulerTimeStepper resolves the impact with every proximal contact at once (new pivot, "
      "closing hinge and roller), restitution 0: the plastic impact of the whole new mechanism (0.8252 on the Fig. 6 "
@@ -121,6 +138,8 @@ TEST_P(CrossEngine, QuarterPeriodMatchesTheAnalyticModel) {
 }
 
 TEST_P(CrossEngine, QuarterPeriodErrorFallsAsTheStepFalls) {
+    skip_if_known("QuarterPeriodErrorFalls");
+    if (IsSkipped()) return;
     const WallScene scene = fig6_vssw();
     const double exact = free_vibration(*analytic_reference(scene), 0.5 * scene.alpha()).impacts.at(0).t;
     double previous = INFINITY;
@@ -327,6 +346,74 @@ TEST(BulletRestitution, Fig6WallTakesTheWholeMechanismImpactAtEveryStep) {
     }
 }
 
+// Siconos (multibody/siconos/siconos_engine.cpp): the step convergence the cross-engine test cannot hold at 4 ms (a
+// known difference above), the per-contact Newton coefficients, and a contact problem left unsolved reported as such.
+TEST(Siconos, QuarterPeriodErrorFallsFromTwoMillisecondsDown) {
+    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
+    const auto engine = multibody::make_engine("siconos");
+    const WallScene scene = fig6_vssw();
+    const double exact = free_vibration(*analytic_reference(scene), 0.5 * scene.alpha()).impacts.at(0).t;
+    double previous = INFINITY;
+    for (double dt : {2e-3, 1e-3, 5e-4, 2e-4}) {
+        multibody::EngineSettings s = engine->default_settings();
+        s.dt = dt;
+        const double err = std::abs(first_impact(*engine, s, scene, 0.5) / exact - 1.0);
+        EXPECT_LT(err, previous) << "dt " << dt;
+        previous = err;
+    }
+}
+
+// The coefficients reach their contacts: an elastic roller guide gives back some of the landing's loss, an elastic
+// hinge corner bounces the blocks apart and the rocking keeps less (measured on the Fig. 6 wall at 1 ms: 0.850 and
+// 0.723 against 0.824 with every contact plastic).
+TEST(Siconos, NewtonCoefficientsPerContactChangeTheLanding) {
+    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
+    const auto engine = multibody::make_engine("siconos");
+    auto restitution_with = [&](const std::string& knob, double e) {
+        multibody::EngineSettings s = engine->default_settings();
+        if (!knob.empty()) s.knobs[knob] = e;
+        const auto r = compare::run_free_vibration(*engine, s, fig6_vssw());
+        return r.restitution.value_or(NAN);
+    };
+    const double plastic = restitution_with("", 0.0);
+    EXPECT_GT(restitution_with("e_roller", 1.0), plastic);
+    EXPECT_LT(restitution_with("e_hinge", 0.5), plastic);
+}
+
+TEST(Siconos, BadSettingsAreRefusedByName) {
+    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
+    const auto engine = multibody::make_engine("siconos");
+    for (const auto& [knob, value] : std::vector<std::pair<std::string, double>>{
+             {"e_ground", 1.5}, {"e_hinge", -0.1}, {"theta", 0.3}, {"gamma", 2.0}, {"tolerance", 0.0}}) {
+        multibody::EngineSettings s = engine->default_settings();
+        s.knobs[knob] = value;
+        try {
+            engine->check_settings(s);
+            ADD_FAILURE() << knob << " = " << value << " was accepted";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(knob), std::string::npos) << e.what();
+        }
+    }
+}
+
+// One Gauss-Seidel sweep cannot bring a wall held at rest to a residual of 1e-14: the run fails with the reason
+// rather than going on with the impulses of an unfinished solve.
+TEST(Siconos, AnUnsolvedContactProblemFailsTheRun) {
+    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
+    const auto engine = multibody::make_engine("siconos");
+    multibody::EngineSettings s = engine->default_settings();
+    s.iterations = 1;
+    s.knobs["tolerance"] = 1e-14;
+    multibody::Excitation ex;
+    ex.horizontal = constant_motion(0.5 * 9.81 * eq12_threshold(*fig6_vssw().vssw), 1.0);
+    ex.t_end = 0.1;
+    try {
+        engine->simulate(fig6_vssw(), ex, s);
+        ADD_FAILURE() << "the run went on";
+    } catch (const EngineFailure& e) {
+        EXPECT_NE(std::string(e.what()).find("not solved"), std::string::npos) << e.what();
+    }
+}
 
 // A threshold trial's stop angle ends the analytic backend's run there, as RunMonitor ends an engine's: the wall is
 // reported as having reached it (its last sample), not as overturned, and nothing after it is integrated.

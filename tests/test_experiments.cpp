@@ -34,6 +34,7 @@ constexpr double kCapRoundoff = 1e-12;
 // (a step, no dynamics): the search's bracket logic alone, with the threshold placed away from the estimate.
 class StepThresholdEngine final : public multibody::Engine {
 public:
+    double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     explicit StepThresholdEngine(double threshold) : threshold_(threshold) {}  // [m/s^2]
     std::string name() const override { return "step-threshold"; }
     std::string version() const override { return "test"; }

@@ -314,6 +314,7 @@ TEST(Experiments, TheHoldLetsTheSmallestDetectableExcessLiftTheWall) {
 // A backend that never lifts the wall, or fails on every run.
 class StubEngine final : public multibody::Engine {
 public:
+    double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     explicit StubEngine(bool fails) : fails_(fails) {}
     std::string name() const override { return "stub"; }
     std::string version() const override { return "0"; }
@@ -349,6 +350,7 @@ TEST(Experiments, ThresholdReportsAnEngineThatFailsOrNeverLifts) {
 // a comparison with it lists the failure (vssw compare exits 3): Simbody once returned -0.26 with exit 0.
 class EnergyGainingEngine final : public multibody::Engine {
 public:
+    double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     std::string name() const override { return "gainer"; }
     std::string version() const override { return "stub"; }
     EngineSettings default_settings() const override {

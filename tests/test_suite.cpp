@@ -71,6 +71,7 @@ bool same_number(double a, double b) { return (std::isnan(a) && std::isnan(b)) |
 // how many of its simulate() calls overlap.
 class FakeEngine final : public multibody::Engine {
 public:
+    double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     FakeEngine(std::string name, bool fail_parapet, bool exclusive)
         : name_(std::move(name)), fail_parapet_(fail_parapet), exclusive_(exclusive) {}
     std::string name() const override { return name_; }
@@ -103,6 +104,7 @@ private:
 // An engine whose runs are bad input: InputError must leave run_suite, not become a CaseFailure.
 class BadInputEngine final : public multibody::Engine {
 public:
+    double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     std::string name() const override { return "bad-input"; }
     std::string version() const override { return "0"; }
     EngineSettings default_settings() const override { return {}; }

@@ -101,6 +101,7 @@ TEST(WorkerProcess, AChildThatDiesIsAnEngineFailureSayingHow) {
 // An engine that says how it may run, for the rule below (never simulated).
 class DeclaredEngine final : public multibody::Engine {
 public:
+    double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     explicit DeclaredEngine(bool concurrent) : concurrent_(concurrent) {}
     std::string name() const override { return "declared"; }
     std::string version() const override { return "1"; }
