@@ -112,6 +112,8 @@ public:
     virtual ~Engine() = default;
     virtual std::string name() const = 0;
     virtual std::string version() const = 0;  // of the engine library, for reports
+    // The name a report prints ("ODE" for "ode"); the name itself unless the adapter says otherwise.
+    virtual std::string display_name() const { return name(); }
     virtual EngineSettings default_settings() const = 0;
     // Throws EngineFailure when the run fails; InputError on a bad scene or setting.
     virtual Trajectory simulate(const WallScene& scene, const Excitation& excitation,
@@ -137,6 +139,8 @@ public:
 std::vector<std::string> available_engines();
 // Throws InputError naming the engine and the available ones.
 std::unique_ptr<Engine> make_engine(const std::string& name);
+// Engine::display_name() of a backend compiled in; the name itself otherwise (a report read back without the engine).
+std::string engine_display_name(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
 // except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold
 // bisections take minutes (README, "Simbody"); name it to include it.

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
@@ -41,6 +43,12 @@ std::vector<std::string> default_compared_engines() {
     for (const std::string& name : available_engines())
         if (name != "analytic" && name != "simbody-rigid") engines.push_back(name);
     return engines;
+}
+
+std::string engine_display_name(const std::string& name) {
+    const std::vector<std::string> known = available_engines();
+    if (std::find(known.begin(), known.end(), name) == known.end()) return name;
+    return make_engine(name)->display_name();
 }
 
 std::unique_ptr<Engine> make_engine(const std::string& name) {

@@ -2,9 +2,10 @@
 
 #include <cctype>
 #include <cmath>
-#include <map>
 
 #include <fmt/format.h>
+
+#include "multibody/engine.hpp"
 
 namespace vssw::study {
 
@@ -22,12 +23,7 @@ std::string percent(double rel_error) {
     return fmt::format("{:+.1e} %", p);
 }
 
-std::string engine_display_name(const std::string& engine) {
-    static const std::map<std::string, std::string> names = {
-        {"bullet", "Bullet"}, {"ode", "ODE"}, {"simbody", "Simbody"}, {"analytic", "analytic"}};
-    const auto it = names.find(engine);
-    return it != names.end() ? it->second : engine;
-}
+std::string engine_display_name(const std::string& engine) { return multibody::engine_display_name(engine); }
 
 std::string one_line(std::string text) {
     for (char& c : text)

@@ -403,6 +403,7 @@ public:
     // for ever), and pays no dInitODE2 per run.
     OdeEngine() { ensure_ode(); }
     std::string name() const override { return "ode"; }
+    std::string display_name() const override { return "ODE"; }
     double cost_per_simulated_second() const override { return 2.0e-3; }  // at 1 ms, README "Speed"
     std::string version() const override {
         ensure_ode();

@@ -331,6 +331,7 @@ public:
     // On the thread that makes the engine, before any pool starts.
     SiconosEngine() { one_blas_thread(); }
     std::string name() const override { return "siconos"; }
+    std::string display_name() const override { return "Siconos"; }
     double cost_per_simulated_second() const override { return kCostPerSimulatedSecond; }
     std::string version() const override { return "Siconos 4.4 kernel (Moreau-Jean, 2-D frictional contact, Gauss-Seidel)"; }
     EngineSettings default_settings() const override {

@@ -210,6 +210,7 @@ class SimbodyEngine final : public Engine {
 public:
     explicit SimbodyEngine(bool compliant) : compliant_(compliant) {}
     std::string name() const override { return compliant_ ? "simbody" : "simbody-rigid"; }
+    std::string display_name() const override { return compliant_ ? "Simbody" : "simbody-rigid"; }
     // README "Speed": the compliant route (CPodes) 77 ms, the rigid route at 0.5 ms 189 ms per simulated second.
     double cost_per_simulated_second() const override { return compliant_ ? 77e-3 : 189e-3; }
     std::string version() const override {
