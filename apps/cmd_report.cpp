@@ -108,7 +108,7 @@ Command add_report_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "report", "Run the validation suite for the analytic model and the engines; write a report into a folder");
     cmd->add_option("--suite", o->suite,
-                    "default (about 40 s on 2 cores with Bullet, ODE and Simbody), full (233 cases, about 4 min), or a "
+                    "default (about 30 s on 2 cores with Bullet, ODE, Simbody and Siconos), full (233 cases), or a "
                     "suite file (a study file whose parts name their walls: studies/validation-default.toml is one)");
     cmd->add_option("--engines", o->engines,
                     fmt::format("engines to compare, comma-separated (default: {}; simbody-rigid on request)",
