@@ -296,10 +296,143 @@ GroundMotion parse_two_column(const std::vector<std::string>& lines, const std::
     return sampled_from_file(std::move(times), std::move(values), path);
 }
 
+// --- one column at a step dt, and tables with a header row ----------------------------------------------------------
+
+// The line's data (before any '#') split into fields: by commas when `by_commas`, else by blanks and tabs.
+std::vector<std::string> fields_of(const std::string& line, bool by_commas) {
+    const std::string data = line.substr(0, line.find('#'));
+    if (!by_commas) return split(data, " \t\r");
+    std::vector<std::string> fields;
+    if (trim(data).empty()) return fields;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = data.find(',', start);
+        fields.push_back(trim(data.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return fields;
+}
+
+// A header row names every column: none of its fields is a number. A line of numbers and words is a malformed data
+// line (its reader says so), never a header that would drop it unread.
+bool is_header(const std::vector<std::string>& fields) {
+    double ignored = 0.0;
+    return std::none_of(fields.begin(), fields.end(), [&](const std::string& f) { return parse_number(f, ignored); });
+}
+
+// A finite acceleration in m/s^2 from field `text` of line `line_no`, or InputError.
+double acceleration_of(const std::string& text, double factor, const std::string& path, std::size_t line_no) {
+    double a = 0.0;
+    if (!parse_number(text, a)) throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, text));
+    if (!std::isfinite(a) || !std::isfinite(a * factor))
+        throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, text));
+    return a * factor;
+}
+
+std::vector<double> times_at_step(std::size_t count, double dt) {
+    std::vector<double> times(count);
+    for (std::size_t i = 0; i < count; ++i) times[i] = static_cast<double>(i) * dt;  // on the grid, not summed
+    return times;
+}
+
+GroundMotion require_two_samples(std::vector<double> times, std::vector<double> values, const std::string& path) {
+    if (times.size() < 2)
+        throw InputError(fmt::format("{}: {} sample(s), a record needs at least 2", path, times.size()));
+    return sampled_from_file(std::move(times), std::move(values), path);
+}
+
+// Accelerations only (no header), every number of the file in order, at the step dt.
+GroundMotion parse_single_column(const std::vector<std::string>& lines, const std::string& path, double factor,
+                                 double dt) {
+    std::vector<double> values;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        for (const std::string& field : fields_of(lines[i], lines[i].find(',') != std::string::npos))
+            values.push_back(acceleration_of(field, factor, path, i + 1));
+    std::vector<double> times = times_at_step(values.size(), dt);  // before `values` is moved from
+    return require_two_samples(std::move(times), std::move(values), path);
+}
+
+std::size_t column_index(const std::vector<std::string>& header, const std::string& name, const char* flag,
+                         const std::string& path, std::size_t line_no) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end())
+        throw InputError(fmt::format("{}:{}: {} '{}' is not a column of the header (columns: {})", path, line_no, flag,
+                                     name, fmt::join(header, ", ")));
+    return static_cast<std::size_t>(it - header.begin());
+}
+
+// A table whose first data line (line `header_at`, 0-based) names its columns.
+GroundMotion parse_table(const std::vector<std::string>& lines, std::size_t header_at, const std::string& path,
+                         double factor, const RecordFormat& format) {
+    const bool by_commas = lines[header_at].find(',') != std::string::npos;
+    const std::vector<std::string> header = fields_of(lines[header_at], by_commas);
+    const std::size_t header_line = header_at + 1;
+    if (format.dt && format.time_column)
+        throw InputError(fmt::format("{}: give either the record's step or its time column '{}', not both", path,
+                                     *format.time_column));
+    std::size_t accel = 0;
+    if (format.accel_column) accel = column_index(header, *format.accel_column, "acceleration column", path, header_line);
+    else if (header.size() == 2 && !format.dt) accel = 1;
+    else if (header.size() != 1)
+        throw InputError(fmt::format("{}:{}: name the acceleration column (columns: {})", path, header_line,
+                                     fmt::join(header, ", ")));
+    std::optional<std::size_t> time;
+    if (format.time_column) time = column_index(header, *format.time_column, "time column", path, header_line);
+    else if (!format.dt && header.size() == 2) time = 1 - accel;
+    else if (!format.dt)
+        throw InputError(fmt::format("{}:{}: name the time column or give the record's step (columns: {})", path,
+                                     header_line, fmt::join(header, ", ")));
+    if (time && *time == accel)
+        throw InputError(fmt::format("{}: the time column and the acceleration column are both '{}'", path,
+                                     header[accel]));
+    std::vector<double> times, values;
+    for (std::size_t i = header_at + 1; i < lines.size(); ++i) {
+        const std::vector<std::string> fields = fields_of(lines[i], by_commas);
+        if (fields.empty()) continue;
+        if (fields.size() != header.size())
+            throw InputError(fmt::format("{}:{}: {} field(s), the header has {}", path, i + 1, fields.size(),
+                                         header.size()));
+        values.push_back(acceleration_of(fields[accel], factor, path, i + 1));
+        if (!time) continue;
+        double t = 0.0;
+        if (!parse_number(fields[*time], t) || !std::isfinite(t))
+            throw InputError(fmt::format("{}:{}: time '{}' is not a finite number", path, i + 1, fields[*time]));
+        if (times.empty() && t < 0.0)
+            throw InputError(fmt::format("{}:{}: the first time must be >= 0, got {}", path, i + 1, fields[*time]));
+        if (!times.empty() && !(t > times.back()))
+            throw InputError(fmt::format("{}:{}: time {} is not after the previous time {}", path, i + 1,
+                                         fields[*time], times.back()));
+        times.push_back(t);
+    }
+    if (!time) times = times_at_step(values.size(), *format.dt);
+    return require_two_samples(std::move(times), std::move(values), path);
+}
+
 // read_record's choice of reader, on lines from a file or from text.
-GroundMotion parse_lines(const std::vector<std::string>& lines, const std::string& path, const AccelUnits* units) {
-    if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos)
+GroundMotion parse_lines(const std::vector<std::string>& lines, const std::string& path, const AccelUnits* units,
+                         const RecordFormat& format) {
+    if (format.dt)
+        require(std::isfinite(*format.dt) && *format.dt > 0.0, fmt::format("{}: record step", path),
+                "a positive finite time in s", *format.dt);
+    if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos) {
+        if (!format.is_default())
+            throw InputError(fmt::format("{} is a PEER AT2 record, whose header gives its step: the record's step "
+                                         "and column names apply to other files",
+                                         path));
         return parse_at2(lines, path, units);
+    }
+    const double factor = to_m_per_s2(units != nullptr ? *units : AccelUnits::g);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::vector<std::string> fields = fields_of(lines[i], lines[i].find(',') != std::string::npos);
+        if (fields.empty()) continue;
+        if (is_header(fields)) return parse_table(lines, i, path, factor, format);
+        break;
+    }
+    if (format.time_column || format.accel_column)
+        throw InputError(fmt::format("{} has no header row to name its columns (its first data line is numbers)",
+                                     path));
+    if (format.dt) return parse_single_column(lines, path, factor, *format.dt);
     return parse_two_column(lines, path, units != nullptr ? *units : AccelUnits::g);
 }
 
@@ -493,13 +626,14 @@ GroundMotion read_two_column(const std::string& path, AccelUnits units) {
     return parse_two_column(read_lines(path), path, units);
 }
 
-GroundMotion read_record(const std::string& path, const AccelUnits* units) {
-    return parse_lines(read_lines(path), path, units);
+GroundMotion read_record(const std::string& path, const AccelUnits* units, const RecordFormat& format) {
+    return parse_lines(read_lines(path), path, units, format);
 }
 
-GroundMotion parse_record(const std::string& text, const std::string& name, const AccelUnits* units) {
+GroundMotion parse_record(const std::string& text, const std::string& name, const AccelUnits* units,
+                          const RecordFormat& format) {
     std::istringstream in(text);
-    return parse_lines(lines_of(in, name), name, units);
+    return parse_lines(lines_of(in, name), name, units, format);
 }
 
 // --- synthetic inputs -----------------------------------------------------------------------------------------------

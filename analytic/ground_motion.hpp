@@ -86,12 +86,26 @@ GroundMotion read_peer_at2(const std::string& path, const AccelUnits* units_over
 // Two columns "time acceleration" separated by blanks, tabs or a comma; '#' starts a comment; blank lines skipped.
 // Times must be strictly increasing. Throws InputError like read_peer_at2.
 GroundMotion read_two_column(const std::string& path, AccelUnits units);
-// Chooses the reader by content: AT2 when line 4 holds NPTS, two-column otherwise. `units` applies to two-column
-// files (default g) and overrides an AT2 header when given.
-GroundMotion read_record(const std::string& path, const AccelUnits* units = nullptr);
+// What a file that is not a PEER AT2 record holds, when it is not two columns "time acceleration" (the default).
+struct RecordFormat {
+    // Accelerations only, evenly spaced by dt [s] from t = 0 (OpenSees `timeSeries Path -dt`): every number of the
+    // file in order, any number per line; with a header row, the column `accel_column`.
+    std::optional<double> dt;
+    // A header row names the columns (a CSV file, fields separated by commas, or else by blanks): the times' column
+    // and the accelerations' column. A header of two columns needs neither name (time first); of one column, dt.
+    std::optional<std::string> time_column, accel_column;
+    bool is_default() const { return !dt && !time_column && !accel_column; }
+};
+
+// Chooses the reader by content: AT2 when line 4 holds NPTS (and `format` is the default: an AT2 header gives its
+// own DT); otherwise a header row when the first data line is not all numbers, then `format`. `units` applies to the
+// other files (default g) and overrides an AT2 header when given. Throws InputError naming the file, the line and the
+// value, or the format setting that does not fit the file.
+GroundMotion read_record(const std::string& path, const AccelUnits* units = nullptr, const RecordFormat& format = {});
 // read_record on text already in memory (the fuzz harness, tests/fuzz/); `name` stands for the path in messages and
 // names the record.
-GroundMotion parse_record(const std::string& text, const std::string& name, const AccelUnits* units = nullptr);
+GroundMotion parse_record(const std::string& text, const std::string& name, const AccelUnits* units = nullptr,
+                          const RecordFormat& format = {});
 
 // Synthetic inputs ------------------------------------------------------------------------------------------------
 // All amplitudes in m/s^2, times in s; each validates its arguments (finite, periods and durations > 0).

@@ -11,9 +11,11 @@
 #include "analytic/error.hpp"
 #include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
+#include "apps/early_output.hpp"
 #include "apps/option_values.hpp"
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
+#include "apps/version_text.hpp"
 #include "study/text.hpp"
 
 namespace vssw::cli {
@@ -80,8 +82,14 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         add_stress_command(app),
         add_bench_command(app),
     };
+    app.add_flag_callback(
+        "--version", [] { throw EarlyOutput(version_text()); },
+        "print the version, the commit and each backend's library version, then exit");
     try {
         app.parse(argc, argv);
+    } catch (const EarlyOutput& e) {
+        out << e.text;
+        return kExitOk;
     } catch (const CLI::CallForHelp&) {
         out << app.help();  // the chosen subcommand's help when one was named
         return kExitOk;

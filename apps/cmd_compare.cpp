@@ -14,9 +14,11 @@
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
 #include "apps/compare_response.hpp"
+#include "apps/early_output.hpp"
 #include "apps/ground_motion_options.hpp"
 #include "apps/option_values.hpp"
 #include "apps/report_compare.hpp"
+#include "apps/settings_listing.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/wall_options.hpp"
 #include "compare/experiments.hpp"
@@ -184,28 +186,39 @@ Command add_compare_command(CLI::App& root) {
                     "engine setting NAME=VALUE, for every engine named (repeatable; each adapter lists its own; one "
                     "that an engine does not know is refused)");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
-    cmd->footer(
-        "The analytic reference is the model of --kinematics (default exact, what every engine realises), --impact\n"
-        "and --roller; the engines' options (--dt, --iterations, --set) do not reach it.\n"
-        "The threshold (in g) is the smallest constant ground acceleration that lifts the wall off rest, by bisection\n"
-        "to 1e-4; the period is 4x the time from release at theta0 to the first impact; the restitution is the ratio\n"
-        "of theta1' after and before the first impact. rel_error = engine / analytic - 1; targets 0.5 %, 0.5 %, 2 %.\n"
-        "JSON keys (one engine): engine, version, analytic_model {kinematics, impact, roller}, threshold, period,\n"
-        "restitution, restitution_amplitude (each {analytic, engine, rel_error, target, within_target}), closed_forms\n"
-        "{threshold_g, restitution, restitution_whole_mechanism, period_linearised}, theta0, settings {dt,\n"
-        "iterations, knobs}, wall_time_s, failures, analytic_warnings, wall {...}.\n"
-        "Several engines: {comparisons [one such object per engine], engine_failures [{engine, version, message}],\n"
-        "wall_time_s}; the table has one block per engine.\n"
-        "failures: why a metric is null (e.g. an engine's first-impact ratio outside (0, 1]).\n"
-        "analytic_warnings: the analytic model's own assumptions failing along its free vibration (e.g. a roller\n"
-        "that would have to pull): its values are the model's, but the model may not hold there.\n"
-        "Exit 3 when an engine fails (NaN, sliding, ...) or a metric could not be measured (the output is printed;\n"
-        "with one engine, an engine that fails prints nothing).\n"
-        "With --record or --pulse (the ground-motion options of `vssw history`): every engine and the analytic model\n"
-        "from rest under that motion instead, each run's peak rotation (theta1/alpha1), its time and overturning side\n"
-        "by side: a one-case study (`vssw study` runs grids of them). JSON: {ground_motion, analytic_model, runs\n"
-        "[{engine, version, settings, peak_rotation, peak_time, overturned, t_overturn, status, warnings (analytic),\n"
-        "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.");
+    // Defined after --engine and --json: CLI11 runs the callbacks in this order, so both are read by then.
+    cmd->add_flag_callback(
+        "--list-settings", [o] { throw EarlyOutput(settings_listing(o->engines, o->json)); },
+        "print every setting of the --engine backends (all compiled in when none is named) with its default, unit "
+        "and meaning, then exit (JSON with --json: [{engine, version, settings [{name, flag, default, unit, "
+        "meaning}]}])");
+    // A function, so that the backends are built for the listing only when the help is printed.
+    cmd->footer([]() -> std::string {
+        return std::string(
+               "The analytic reference is the model of --kinematics (default exact, what every engine realises), --impact\n"
+               "and --roller; the engines' options (--dt, --iterations, --set) do not reach it.\n"
+               "The threshold (in g) is the smallest constant ground acceleration that lifts the wall off rest, by bisection\n"
+               "to 1e-4; the period is 4x the time from release at theta0 to the first impact; the restitution is the ratio\n"
+               "of theta1' after and before the first impact. rel_error = engine / analytic - 1; targets 0.5 %, 0.5 %, 2 %.\n"
+               "JSON keys (one engine): engine, version, analytic_model {kinematics, impact, roller}, threshold, period,\n"
+               "restitution, restitution_amplitude (each {analytic, engine, rel_error, target, within_target}), closed_forms\n"
+               "{threshold_g, restitution, restitution_whole_mechanism, period_linearised}, theta0, settings {dt,\n"
+               "iterations, knobs}, wall_time_s, failures, analytic_warnings, wall {...}.\n"
+               "Several engines: {comparisons [one such object per engine], engine_failures [{engine, version, message}],\n"
+               "wall_time_s}; the table has one block per engine.\n"
+               "failures: why a metric is null (e.g. an engine's first-impact ratio outside (0, 1]).\n"
+               "analytic_warnings: the analytic model's own assumptions failing along its free vibration (e.g. a roller\n"
+               "that would have to pull): its values are the model's, but the model may not hold there.\n"
+               "Exit 3 when an engine fails (NaN, sliding, ...) or a metric could not be measured (the output is printed;\n"
+               "with one engine, an engine that fails prints nothing).\n"
+               "With --record or --pulse (the ground-motion options of `vssw history`): every engine and the analytic model\n"
+               "from rest under that motion instead, each run's peak rotation (theta1/alpha1), its time and overturning side\n"
+               "by side: a one-case study (`vssw study` runs grids of them). JSON: {ground_motion, analytic_model, runs\n"
+               "[{engine, version, settings, peak_rotation, peak_time, overturned, t_overturn, status, warnings (analytic),\n"
+               "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n\n"
+               "Every backend's settings in this build (--list-settings prints them alone):\n\n") +
+               settings_listing({}, false);
+    });
     return {cmd, [o](std::ostream& out) { run_compare(*o, out); }};
 }
 

@@ -23,8 +23,9 @@ Command add_history_command(CLI::App& root) {
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = root.add_subcommand(
-        "history", "Response from rest to a ground motion (horizontal only): a record file or a synthetic pulse");
-    add_ground_motion_options(*cmd, o->motion);
+        "history",
+        "Response from rest to a ground motion: a record file (and its vertical component) or a synthetic pulse");
+    add_ground_motion_options(*cmd, o->motion, true);
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
@@ -37,13 +38,14 @@ Command add_history_command(CLI::App& root) {
                     "wall is at rest after the shaking, or overturns)",
                     kDefaultExtraTime));
     cmd->add_option("--csv", o->csv,
-                    "write the trajectory to this file: t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, "
-                    "ED_over_Vr, ag_g");
+                    "write the trajectory to this file, or with '-' to standard output (the summary then goes to the "
+                    "error stream): t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     cmd->footer(
         "Exactly one of --record and --pulse is required. Accelerations given in g use g0 = 9.80665 m/s^2.\n"
         "JSON keys: record (path, null for a pulse), input, scale_factor, pga_g (after scaling), duration [s], model,\n"
-        "kinematics, alpha, max_theta_over_alpha, peak_is_collapse (true: the max is the collapse angle), overturned, t_overturn (null if not), impacts, energy_balance_error\n"
+        "vertical_record (path or null), vertical_pga_g, kinematics, alpha, max_theta_over_alpha, max_theta [rad],\n"
+        "t_max_theta [s] (when: the turning point, or the overturning), peak_is_collapse (true: the max is the collapse angle), overturned, t_overturn (null if not), impacts, energy_balance_error\n"
         "(relative to the largest energy in play), lift_offs, end_time, at_rest_at_end, t_end, output_dt,\n"
         "impact {law, restitution}, warnings, roller {model, min_reaction, t_min_reaction, tension_at, departures,\n"
         "time_off},\n"
@@ -51,22 +53,28 @@ Command add_history_command(CLI::App& root) {
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.\n"
         "CSV: theta_dot_over_ref = theta_dot / reference velocity; E = kinetic + weights' potential - work of N,\n"
         "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha); ag_g = a_h / g0.");
-    return {cmd, [o](std::ostream& out) {
+    return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) {
+                const bool csv_to_stdout = o->csv == "-";
+                if (csv_to_stdout && o->json)
+                    throw InputError("--csv - and --json both write to standard output: give the CSV a file name");
                 o->request.keep_trajectory = !o->csv.empty();
                 HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
                 // Into a temporary file, renamed onto --csv only after a successful run: a failure leaves an
                 // existing file as it was. Created before the run, so that an unwritable path fails at once.
                 std::unique_ptr<study::AtomicFile> csv;
-                if (!o->csv.empty()) csv = std::make_unique<study::AtomicFile>(o->csv);
+                if (!o->csv.empty() && !csv_to_stdout) csv = std::make_unique<study::AtomicFile>(o->csv);
                 simulate_history(run);
                 if (csv) {
                     write_history_csv(csv->stream(), run);
                     csv->commit();
                 }
+                if (csv_to_stdout) write_history_csv(out, run);  // after the run: a failed run prints no rows
+                std::ostream& summary = csv_to_stdout ? err : out;
                 if (o->json)
-                    out << to_json(run).dump(2) << '\n';
+                    summary << to_json(run).dump(2) << '\n';
                 else
-                    print_history_summary(out, run, "Time history of the " + describe_wall(o->wall, run.chosen.kind));
+                    print_history_summary(summary, run,
+                                          "Time history of the " + describe_wall(o->wall, run.chosen.kind));
             }};
 }
 

@@ -50,12 +50,24 @@ GroundMotion make_pulse(const GroundMotionOptions& o) {
 
 }  // namespace
 
-void add_ground_motion_options(CLI::App& cmd, GroundMotionOptions& o) {
+void add_ground_motion_options(CLI::App& cmd, GroundMotionOptions& o, bool vertical) {
     bind_optional(cmd, "--record", o.record,
-                  "ground-motion file: PEER AT2 (units from its header) or two columns 'time acceleration' (units g "
-                  "unless --units)");
+                  "ground-motion file: PEER AT2 (units from its header), two columns 'time acceleration', "
+                  "accelerations alone with --record-dt, or a table with a header row (CSV); units g unless --units");
     bind_optional(cmd, "--units", o.units,
                   "units of the record's accelerations: g, m/s2 or cm/s2 (overrides an AT2 header)");
+    bind_optional(cmd, "--record-dt", o.format.dt,
+                  "the record holds accelerations only, evenly spaced by this step [s] from t = 0 (OpenSees "
+                  "'Path -dt'): every number of the file in order, or the --accel-column of a table");
+    bind_optional(cmd, "--time-column", o.format.time_column,
+                  "the record is a table with a header row: the name of its time column (not needed for a table of "
+                  "two columns, time first)");
+    bind_optional(cmd, "--accel-column", o.format.accel_column,
+                  "the record is a table with a header row: the name of its acceleration column");
+    if (vertical)
+        bind_optional(cmd, "--vertical-record", o.vertical_record,
+                      "the vertical component (up positive), a file read as --record is (same units and format "
+                      "options) and scaled by the same factor");
     bind_optional(cmd, "--scale", o.scale, "multiply the ground motion by this factor (not with --pga)");
     bind_optional(cmd, "--pga", o.pga_g,
                   "scale the ground motion to this peak ground acceleration [g] (not with --scale)");
@@ -78,17 +90,23 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
         for (const auto* pulse_option : {&o.amplitude_g, &o.pulse_period, &o.duration})
             if (*pulse_option)
                 throw InputError("--amplitude, --pulse-period and --duration describe a --pulse, not a --record");
-    } else if (o.units) {
-        throw InputError("--units '" + *o.units + "' applies to --record only (pulse amplitudes are in g)");
+    } else {
+        if (o.units) throw InputError("--units '" + *o.units + "' applies to --record only (pulse amplitudes are in g)");
+        if (!o.format.is_default())
+            throw InputError("--record-dt, --time-column and --accel-column describe a --record file, not a --pulse");
+        if (o.vertical_record)
+            throw InputError("--vertical-record '" + *o.vertical_record + "' goes with --record, not with a --pulse");
     }
 
     double sample_dt = 0.0;
     GroundMotion motion = GroundMotion::none();
+    GroundMotion vertical = GroundMotion::none();
     if (o.record) {
         std::optional<AccelUnits> units;
         if (o.units) units = parse_units(*o.units);
-        motion = read_record(*o.record, units ? &*units : nullptr);
+        motion = read_record(*o.record, units ? &*units : nullptr, o.format);
         sample_dt = mean_spacing(motion);
+        if (o.vertical_record) vertical = read_record(*o.vertical_record, units ? &*units : nullptr, o.format);
     } else {
         motion = make_pulse(o);
         sample_dt = *o.pulse_period / kPulseSamplesPerPeriod;
@@ -98,6 +116,7 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
     if (o.scale) {
         factor = *o.scale;
         motion = motion.scaled(factor);
+        if (o.vertical_record) vertical = vertical.scaled(factor);
     } else if (o.pga_g) {
         // Checked here too, so that the message shows the value as typed (in g), not converted to m/s^2.
         require(std::isfinite(*o.pga_g) && *o.pga_g > 0.0, "target PGA (--pga)", "a positive finite number in g",
@@ -105,8 +124,9 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
         const double before = motion.pga();
         motion = motion.scaled_to_pga(*o.pga_g * kStandardGravity);
         factor = *o.pga_g * kStandardGravity / before;
+        if (o.vertical_record) vertical = vertical.scaled(factor);
     }
-    return {std::move(motion), factor, sample_dt};
+    return {std::move(motion), std::move(vertical), factor, sample_dt};
 }
 
 }  // namespace vssw::cli

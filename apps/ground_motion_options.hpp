@@ -12,8 +12,10 @@ class App;
 namespace vssw::cli {
 
 struct GroundMotionOptions {
-    std::optional<std::string> record;   // file path (PEER AT2 or two columns)
+    std::optional<std::string> record;   // file path (PEER AT2, two columns, one column with --record-dt, a CSV)
     std::optional<std::string> units;    // overrides the record's units
+    RecordFormat format;                 // --record-dt, --time-column, --accel-column
+    std::optional<std::string> vertical_record;  // `vssw history` only: the vertical component, read as --record
     std::optional<double> scale;         // factor on the record
     std::optional<double> pga_g;         // target PGA [g]
     std::optional<std::string> pulse;    // sine | cosine | ricker | harmonic
@@ -22,11 +24,14 @@ struct GroundMotionOptions {
     std::optional<double> duration;      // [s], harmonic only
 };
 
-// --record, --units, --scale, --pga, --pulse, --amplitude, --pulse-period, --duration.
-void add_ground_motion_options(CLI::App& cmd, GroundMotionOptions& options);
+// --record, --units, --record-dt, --time-column, --accel-column, --scale, --pga, --pulse, --amplitude,
+// --pulse-period, --duration; and --vertical-record when `vertical` (the analytic model's commands: the engines are
+// driven horizontally only).
+void add_ground_motion_options(CLI::App& cmd, GroundMotionOptions& options, bool vertical = false);
 
 struct LoadedMotion {
     GroundMotion motion;  // after scaling, in m/s^2
+    GroundMotion vertical = GroundMotion::none();  // --vertical-record, scaled by the same factor; none without it
     double scale_factor;  // what multiplied the input (1 when not scaled)
     double sample_dt;     // the record's mean sample spacing, or T_p / 100 for a pulse [s]
 };

@@ -11,6 +11,22 @@
 #include "apps/table.hpp"
 
 namespace vssw::cli {
+namespace {
+
+// When the largest |theta| was reached: the located turning point of largest |theta|, or the overturning (where the
+// collapse angle is the largest); 0 when the wall never left rest.
+double peak_time(const SimulationResult& res) {
+    if (res.overturned) return res.t_overturn;
+    double t = 0.0, largest = 0.0;
+    for (const TurningPoint& p : res.peaks)
+        if (std::abs(p.theta) > largest) {
+            largest = std::abs(p.theta);
+            t = p.t;
+        }
+    return t;
+}
+
+}  // namespace
 
 HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, const GroundMotionOptions& motion,
                            const HistoryRequest& request) {
@@ -26,13 +42,13 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
     options.keep_samples = request.keep_trajectory;
     options.stop_at_rest = true;
     options.roller = chosen.roller;
-    return {wall, motion.record, std::move(input), std::move(chosen), options, {}, {}};
+    return {wall, motion.record, motion.vertical_record, std::move(input), std::move(chosen), options, {}, {}};
 }
 
 void simulate_history(HistoryRun& run) {
-    const GroundMotion none = GroundMotion::none();
-    run.result = run_simulation(
-        [&] { return simulate(*run.chosen.model, run.input.motion, none, InitialState{}, run.options); });
+    run.result = run_simulation([&] {
+        return simulate(*run.chosen.model, run.input.motion, run.input.vertical, InitialState{}, run.options);
+    });
     run.warnings = validity_warnings(run.chosen, run.result);
 }
 
@@ -46,8 +62,12 @@ Json to_json(const HistoryRun& run) {
     j["duration"] = run.input.motion.duration();
     j["model"] = to_string(run.chosen.kind);
     j["kinematics"] = run.chosen.kinematics ? Json(to_string(*run.chosen.kinematics)) : Json(nullptr);
+    j["vertical_record"] = run.vertical_record ? Json(*run.vertical_record) : Json(nullptr);
+    j["vertical_pga_g"] = run.vertical_record ? Json(run.input.vertical.pga() / kStandardGravity) : Json(nullptr);
     j["alpha"] = run.chosen.model->reference_angle();
     j["max_theta_over_alpha"] = res.max_abs_theta / run.chosen.model->reference_angle();
+    j["max_theta"] = res.max_abs_theta;
+    j["t_max_theta"] = peak_time(res);
     // An overturned run's largest rotation is the collapse angle it reached, not a rocking peak.
     j["peak_is_collapse"] = res.overturned;
     j["overturned"] = res.overturned;
@@ -72,7 +92,11 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
     Table table(title);
     table.text("ground motion", run.record ? *run.record : run.input.motion.name())
         .add("peak ground acceleration", num(run.input.motion.pga() / kStandardGravity), "g",
-             run.input.scale_factor == 1.0 ? "unscaled" : fmt::format("scaled by {}", num(run.input.scale_factor)))
+             run.input.scale_factor == 1.0 ? "unscaled" : fmt::format("scaled by {}", num(run.input.scale_factor)));
+    if (run.vertical_record)
+        table.text("vertical component", *run.vertical_record)
+            .add("its peak acceleration", num(run.input.vertical.pga() / kStandardGravity), "g");
+    table
         .add("duration", num(run.input.motion.duration()), "s")
         .text("model", run.chosen.kinematics ? fmt::format("{}, {} kinematics", to_string(run.chosen.kind),
                                                            to_string(*run.chosen.kinematics))
@@ -82,7 +106,9 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
         .add("lift-offs", std::to_string(res.lift_offs.size()))
         .add("impacts", std::to_string(res.impacts.size()))
         .add(fmt::format("max |theta|/{}", alpha_name), num(res.max_abs_theta / run.chosen.model->reference_angle()),
-             "", res.overturned ? "the collapse angle: overturned, not a rocking peak" : "");
+             "", res.overturned ? "the collapse angle: overturned, not a rocking peak" : "")
+        .add("max |theta|", num(res.max_abs_theta), "rad")
+        .add("at", num(peak_time(res)), "s");
     for (const std::string& w : run.warnings) table.text("warning", w);
     if (res.overturned)
         table.add("overturns at", num(res.t_overturn), "s");

@@ -26,6 +26,7 @@ constexpr double kDefaultExtraTime = compare::kResponseTail;  // [s]
 struct HistoryRun {
     WallOptions wall;
     std::optional<std::string> record;  // path, when the input is a record
+    std::optional<std::string> vertical_record;  // path of the vertical component, when given
     LoadedMotion input;
     ChosenModel chosen;
     SimulationOptions options;

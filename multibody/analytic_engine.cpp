@@ -31,9 +31,21 @@ struct Knobs {
     Roller roller = Roller::bilateral;
 };
 
+std::vector<SettingDescription> setting_table() {
+    return {
+        {"dt", fmt::format("{:g}", kDefaultOutputDt), "s",
+         "the sampling interval of the trajectory (the integrator's steps are its own)"},
+        {"iterations", "none", "", "not used"},
+        {kPaperKinematics, "0", "0/1", "1: the paper's linearised kinematics (Eq. 3); 0: the exact ones (Eq. 2)"},
+        {kRtol, fmt::format("{:g}", kDefaultRtol), "", "DOP853's relative tolerance (impact times within 1e-8 s)"},
+        {kRestitution, "Eq. (19)", "", "when given: this impact ratio in [0, 1] instead of Eq. (19) / Housner's"},
+        {kWholeMechanism, "0", "0/1", "1: the whole mechanism's plastic impact (the roller's impulse kept)"},
+        {kUnilateralRoller, "0", "0/1", "1: a roller that can only push (exact kinematics)"},
+    };
+}
+
 Knobs read_knobs(const EngineSettings& settings) {
-    const SettingsReader r("analytic", settings, {kPaperKinematics, kRtol, kRestitution, kWholeMechanism,
-                                                     kUnilateralRoller});
+    const SettingsReader r("analytic", settings, setting_table());
     Knobs k;
     k.kinematics = r.flag(kPaperKinematics) ? Kinematics::paper : Kinematics::exact;
     k.rtol = r.number(kRtol, kDefaultRtol);  // its range is checked by simulate()
@@ -67,6 +79,8 @@ EngineSettings AnalyticEngine::default_settings() const {
     s.knobs = {{kPaperKinematics, 0.0}, {kRtol, kDefaultRtol}};
     return s;
 }
+
+std::vector<SettingDescription> AnalyticEngine::setting_descriptions() const { return setting_table(); }
 
 void AnalyticEngine::check_settings(const EngineSettings& settings) const {
     SimulationOptions options;

@@ -30,6 +30,7 @@ public:
     double cost_per_simulated_second() const override { return 0.26e-3; }  // Fig. 6 VSSW, README "Speed"
     std::string version() const override { return "vssw analytic (DOP853, event-driven)"; }
     EngineSettings default_settings() const override;
+    std::vector<SettingDescription> setting_descriptions() const override;
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                         const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override;

@@ -65,6 +65,18 @@ struct EngineSettings {
     double sample_dt = 0.0;  // trajectory sampling [s]; 0: every step
 };
 
+// One setting of a backend as `vssw compare --list-settings` prints it. "dt" and "iterations" are given as --dt and
+// --iterations (EngineSettings::dt and ::iterations); every other name is a knob, given as --set NAME=VALUE.
+struct SettingDescription {
+    std::string name;
+    // As typed on the command line ("0.2", "1e-10", "inf"; a switch "0" or "1"), or words when the default is not one
+    // number ("Eq. (19)", "none"). A number here is the value the backend uses when the setting is not given (the
+    // test SettingDescriptions.EveryNumericDefaultIsTheDefaultInUse holds it).
+    std::string default_value;
+    std::string unit;     // "s", "m", "m/s", "Pa", ...; "" when dimensionless; "0/1" for a switch; "choice" for 0, 1, ...
+    std::string meaning;  // one line
+};
+
 struct TrajectorySample {
     double t, theta1, theta1_dot, theta2, top_dy;
     double kinetic, potential;  // [J] for the scene's depth (per unit depth for the analytic model)
@@ -115,6 +127,9 @@ public:
     // The name a report prints ("ODE" for "ode"); the name itself unless the adapter says otherwise.
     virtual std::string display_name() const { return name(); }
     virtual EngineSettings default_settings() const = 0;
+    // Every setting this backend reads (dt, iterations and each knob), with its default, unit and meaning; the knobs'
+    // names are the ones check_settings() accepts.
+    virtual std::vector<SettingDescription> setting_descriptions() const = 0;
     // Throws EngineFailure when the run fails; InputError on a bad scene or setting.
     virtual Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                                 const EngineSettings& settings) const = 0;
@@ -139,6 +154,9 @@ public:
 std::vector<std::string> available_engines();
 // Throws InputError naming the engine and the available ones.
 std::unique_ptr<Engine> make_engine(const std::string& name);
+// The backends this project has adapters for that this build left out (not found at configure time), in the order of
+// available_engines(); empty when every one is compiled in.
+std::vector<std::string> missing_engines();
 // Engine::display_name() of a backend compiled in; the name itself otherwise (a report read back without the engine).
 std::string engine_display_name(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in

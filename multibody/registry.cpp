@@ -38,6 +38,14 @@ std::vector<std::string> available_engines() {
     return names;
 }
 
+std::vector<std::string> missing_engines() {
+    const std::vector<std::string> available = available_engines();
+    std::vector<std::string> missing;
+    for (const char* name : {"analytic", "bullet", "ode", "simbody", "simbody-rigid", "siconos"})
+        if (std::find(available.begin(), available.end(), name) == available.end()) missing.push_back(name);
+    return missing;
+}
+
 std::vector<std::string> default_compared_engines() {
     std::vector<std::string> engines;
     for (const std::string& name : available_engines())

@@ -15,6 +15,15 @@ FailureLimits FailureLimits::read(const SettingsReader& r) {
     return {r.positive("slide_limit", defaults.slide), r.positive("penetration_limit", defaults.penetration)};
 }
 
+std::vector<SettingDescription> FailureLimits::described_after(std::vector<SettingDescription> adapter_settings) {
+    const FailureLimits defaults;
+    adapter_settings.push_back({"slide_limit", fmt::format("{:g}", defaults.slide), "b",
+                                "the run fails when the pivot corner has slid this far (in half-thicknesses b)"});
+    adapter_settings.push_back({"penetration_limit", fmt::format("{:g}", defaults.penetration), "b",
+                                "the run fails when a corner sinks this far below the ground (in b)"});
+    return adapter_settings;
+}
+
 long sample_every(const EngineSettings& settings, double dt) {
     return settings.sample_dt > 0.0 ? std::max(1L, std::lround(settings.sample_dt / dt)) : 1L;
 }

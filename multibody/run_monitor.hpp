@@ -3,6 +3,7 @@
 // an EngineFailure naming the engine, the reason and the time; and reasons to stop (a threshold trial's stop angle,
 // overturning at the scene's collapse angle, rest once the ground motion is over). Engine-free.
 #include <string>
+#include <vector>
 
 #include "multibody/engine.hpp"
 #include "multibody/settings_reader.hpp"
@@ -17,6 +18,8 @@ struct FailureLimits {
     double penetration = 5e-2;
     // The two settings, read by an adapter whose known names include "slide_limit" and "penetration_limit".
     static FailureLimits read(const SettingsReader& r);
+    // An adapter's own settings followed by these two (Engine::setting_descriptions()).
+    static std::vector<SettingDescription> described_after(std::vector<SettingDescription> adapter_settings);
 };
 
 // Record every this many steps for settings.sample_dt (every step when it is 0).

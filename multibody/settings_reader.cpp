@@ -10,8 +10,12 @@
 
 namespace vssw::multibody {
 
-SettingsReader::SettingsReader(std::string engine, const EngineSettings& settings, std::vector<std::string> known)
+SettingsReader::SettingsReader(std::string engine, const EngineSettings& settings,
+                               const std::vector<SettingDescription>& described)
     : engine_(std::move(engine)), settings_(settings) {
+    std::vector<std::string> known;
+    for (const SettingDescription& d : described)
+        if (d.name != "dt" && d.name != "iterations") known.push_back(d.name);
     for (const auto& [name, value] : settings.knobs) {
         if (std::find(known.begin(), known.end(), name) == known.end())
             throw InputError(

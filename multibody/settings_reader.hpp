@@ -11,8 +11,9 @@ namespace vssw::multibody {
 
 class SettingsReader {
 public:
-    // Throws InputError on an unknown name or a NaN value.
-    SettingsReader(std::string engine, const EngineSettings& settings, std::vector<std::string> known);
+    // Throws InputError on a name that is not one of the described knobs, or a NaN value. `described` is the
+    // adapter's Engine::setting_descriptions() (its "dt" and "iterations" are not knobs).
+    SettingsReader(std::string engine, const EngineSettings& settings, const std::vector<SettingDescription>& described);
 
     double number(const std::string& name, double fallback) const;        // any value but NaN (inf allowed)
     double positive(const std::string& name, double fallback) const;      // finite and > 0

@@ -39,6 +39,7 @@ public:
     std::string name() const override { return "step-threshold"; }
     std::string version() const override { return "test"; }
     multibody::EngineSettings default_settings() const override { return {}; }
+    std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
     void check_settings(const multibody::EngineSettings&) const override {}  // no knobs
     Trajectory simulate(const multibody::WallScene& scene, const Excitation& ex,
                         const multibody::EngineSettings&) const override {

@@ -319,6 +319,7 @@ public:
     std::string name() const override { return "stub"; }
     std::string version() const override { return "0"; }
     EngineSettings default_settings() const override { return {}; }
+    std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
     void check_settings(const EngineSettings&) const override {}  // no knobs
     Trajectory simulate(const WallScene&, const Excitation& ex, const EngineSettings&) const override {
         ++runs;
@@ -358,6 +359,7 @@ public:
         s.dt = kDt;
         return s;
     }
+    std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
     void check_settings(const EngineSettings&) const override {}  // no knobs
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings&) const override {
         // theta1 falls linearly from theta0 at kSpeed, crosses 0 at t_c and leaves at twice the speed: ratio 2.

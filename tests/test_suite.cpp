@@ -77,6 +77,7 @@ public:
     std::string name() const override { return name_; }
     std::string version() const override { return "fake 1.0"; }
     EngineSettings default_settings() const override { return analytic_.default_settings(); }
+    std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
     void check_settings(const EngineSettings& s) const override { analytic_.check_settings(s); }
     bool runs_concurrently() const override { return !exclusive_; }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& s) const override {
@@ -108,6 +109,7 @@ public:
     std::string name() const override { return "bad-input"; }
     std::string version() const override { return "0"; }
     EngineSettings default_settings() const override { return {}; }
+    std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
     void check_settings(const EngineSettings&) const override {}  // no knobs
     Trajectory simulate(const WallScene&, const Excitation&, const EngineSettings&) const override {
         throw InputError("bad-input: a setting is wrong");

@@ -106,6 +106,7 @@ public:
     std::string name() const override { return "declared"; }
     std::string version() const override { return "1"; }
     multibody::EngineSettings default_settings() const override { return {}; }
+    std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
     multibody::Trajectory simulate(const multibody::WallScene&, const multibody::Excitation&,
                                    const multibody::EngineSettings&) const override {
         throw EngineFailure("not simulated here");

@@ -134,10 +134,24 @@ struct Knobs {
     bool plane_joints;
 };
 
+std::vector<SettingDescription> setting_table() {
+    return FailureLimits::described_after({
+        {"dt", "0.001", "s", "the step (README \"ODE\": every target met at 1 ms; the error grows as dt over the period)"},
+        {"iterations", "none", "",
+         "not used by the direct solver (dWorldStep); with quickstep = 1 the SOR iterations (20 unless given)"},
+        {"erp", "0.2", "", "error reduction parameter in [0, 1]: the share of a penetration corrected per step"},
+        {"cfm", "1e-10", "", "constraint force mixing: the contacts' softness (0 is rigid)"},
+        {"surface_layer", "0", "m", "penetration allowed before erp acts"},
+        {"max_correcting_vel", "inf", "m/s", "cap on the velocity erp may give (inf: no cap)"},
+        {"margin", "0.001", "m", "gap within which a corner and a face are given to the solver as a speculative contact"},
+        {"quickstep", "0", "0/1", "1: dWorldQuickStep (SOR, --iterations) instead of dWorldStep (Dantzig LCP)"},
+        {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces"},
+        {"plane_joints", "0", "0/1", "1: hold each block in the plane with a Plane2D joint (nothing needs it)"},
+    });
+}
+
 Knobs read_knobs(const EngineSettings& s) {
-    const SettingsReader r("ODE", s,
-                           {"erp", "cfm", "surface_layer", "max_correcting_vel", "margin", "quickstep", "slide_limit",
-                            "penetration_limit", "moving_supports", "plane_joints"});
+    const SettingsReader r("ODE", s, setting_table());
     Knobs k{};
     k.erp = r.number("erp", 0.2);
     require(k.erp >= 0.0 && k.erp <= 1.0, "ODE setting erp", "in [0, 1]", k.erp);
@@ -423,6 +437,7 @@ public:
         s.iterations = 0;  // the direct solver has none; dWorldQuickStep (quickstep = 1) takes 20 unless set
         return s;
     }
+    std::vector<SettingDescription> setting_descriptions() const override { return setting_table(); }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
     // ODE's library state is process-wide (ensure_ode(): the initialisation, the message handler and its count,

@@ -184,10 +184,23 @@ struct Knobs {
 // acceleration below its threshold, tens through an impact; 1000 is far past either and still bounds a step's cost.
 constexpr int kDefaultSweeps = 1000;
 
+std::vector<SettingDescription> setting_table() {
+    return FailureLimits::described_after({
+        {"dt", "0.001", "s", "the time step (README \"Siconos\": thresholds exact, restitution within 2 % at 1 ms)"},
+        {"iterations", std::to_string(kDefaultSweeps), "",
+         "at most this many Gauss-Seidel sweeps per step; a step whose contact problem is not solved fails the run"},
+        {"e_ground", "0", "", "Newton's coefficient of restitution at the base corners, in [0, 1]"},
+        {"e_hinge", "0", "", "Newton's coefficient at the hinge (upper block's bottom corners), in [0, 1]"},
+        {"e_roller", "0", "", "Newton's coefficient at the roller's guides, in [0, 1]"},
+        {"theta", "0.5", "", "Moreau-Jean's theta-method weight on the smooth forces, in [0.5, 1]"},
+        {"gamma", "0.5", "", "a contact joins a step when its gap predicted gamma steps ahead is closed, in [0, 1]"},
+        {"tolerance", "1e-06", "", "the contact solver's relative residual, in (0, 1)"},
+        {"nonlinear", "0", "0/1", "1: iterate each step's Newton loop on the contact geometry; 0: linearise once"},
+    });
+}
+
 Knobs read_knobs(const EngineSettings& s) {
-    const SettingsReader r("Siconos", s,
-                           {"e_ground", "e_hinge", "e_roller", "theta", "gamma", "tolerance", "nonlinear",
-                            "slide_limit", "penetration_limit"});
+    const SettingsReader r("Siconos", s, setting_table());
     Knobs k{};
     for (auto [name, value] : {std::pair{"e_ground", &k.e_ground}, std::pair{"e_hinge", &k.e_hinge},
                                std::pair{"e_roller", &k.e_roller}}) {
@@ -337,9 +350,10 @@ public:
     EngineSettings default_settings() const override {
         EngineSettings s;
         s.dt = 1e-3;
-        s.iterations = 0;  // Lemke's method is direct: no iterations
+        s.iterations = 0;  // the adapter's default sweeps (kDefaultSweeps)
         return s;
     }
+    std::vector<SettingDescription> setting_descriptions() const override { return setting_table(); }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
 };

@@ -75,11 +75,29 @@ struct Knobs {
     FailureLimits limits;        // slide_limit, penetration_limit (run_monitor.hpp)
 };
 
+}  // namespace
+
+std::vector<SettingDescription> compliant_setting_descriptions() {
+    return FailureLimits::described_after({
+        {"dt", "0.001", "s", "the reporting interval (the integrator picks its own steps)"},
+        {"iterations", "none", "", "not used"},
+        {"stiffness", "1e+15", "Pa", "Hunt-Crossley contact stiffness of the corner spheres"},
+        {"radius", "0.0001", "m", "radius of the corner spheres"},
+        {"dissipation", "1000", "s/m", "Hunt-Crossley dissipation (1000: a plastic contact at the wall's speeds)"},
+        {"transition_velocity", "0.0001", "m/s", "friction's stick/slip transition (creep) velocity"},
+        {"accuracy", "3e-06", "", "the integrator's accuracy (relative error per step), below 1"},
+        {"integrator", "1", "choice", "0 Runge-Kutta-Merson, 1 CPodes (BDF, for stiff contact)"},
+        {"contact_subsystem", "0", "0/1",
+         "1: Simbody's CompliantContactSubsystem and contact tracking; 0: the same law on the corner pairs directly"},
+        {"interpolate", "1", "0/1", "1: samples interpolated between the integrator's steps; 0: each sample a step end"},
+        {"moving_supports", "0", "0/1", "refused when 1: this route drives the wall by pseudo-forces only"},
+    });
+}
+
+namespace {
+
 Knobs read_knobs(const EngineSettings& s) {
-    const SettingsReader r(kName, s,
-                           {"stiffness", "radius", "dissipation", "transition_velocity", "accuracy",
-                            "integrator", "contact_subsystem", "interpolate", "slide_limit", "penetration_limit",
-                            "moving_supports"});
+    const SettingsReader r(kName, s, compliant_setting_descriptions());
     Knobs k{};
     // Defaults, measured with `vssw compare` and single free vibrations on the Fig. 6 walls (4 m x 0.4 m, h1/h 0.7):
     // stiffness 1e15 Pa with radius 1e-4 m (E sqrt(r) = 1e13 N/m^1.5: a base corner sinks 1.6e-6 m under the whole

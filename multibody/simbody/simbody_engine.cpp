@@ -92,10 +92,23 @@ struct Knobs {
     FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
 };
 
+std::vector<SettingDescription> rigid_setting_table() {
+    return FailureLimits::described_after({
+        {"dt", "0.0005", "s", "the step (the restitution is converged from 0.5 ms down)"},
+        {"iterations", "none", "", "not used"},
+        {"constraint_tol", "1e-06", "m", "a contact within this gap is proximal: given to the impulse solver for the step"},
+        {"transition_velocity", "0.001", "m/s", "friction's stick/slip transition speed"},
+        {"capture_velocity", "0.0002", "m/s", "closing speeds below it are not impacts"},
+        {"projection", "1", "choice", "position correction after each step: 0 bilateral, 1 unilateral, 2 none"},
+        {"restitution", "2", "choice", "the stepper's restitution model: 0 Poisson, 1 Newton, 2 none"},
+        {"solver", "0", "choice", "the impulse solver: 0 PLUS, 1 PGS"},
+        {"both_guides", "0", "0/1", "1: offer both roller guides to the stepper at every step"},
+        {"moving_supports", "0", "0/1", "refused when 1: the stepper ignores prescribed motion"},
+    });
+}
+
 Knobs read_knobs(const EngineSettings& s) {
-    const SettingsReader r("Simbody (rigid)", s,
-                           {"constraint_tol", "transition_velocity", "capture_velocity", "projection", "restitution", "solver",
-                            "both_guides", "slide_limit", "penetration_limit", "moving_supports"});
+    const SettingsReader r("Simbody (rigid)", s, rigid_setting_table());
     Knobs k{};
     k.constraint_tol = r.positive("constraint_tol", 1e-6);
     k.transition_velocity = r.positive("transition_velocity", 1e-3);
@@ -228,6 +241,9 @@ public:
         s.dt = compliant_ ? 1e-3 : 5e-4;
         s.iterations = 0;  // neither route has iterations to set
         return s;
+    }
+    std::vector<SettingDescription> setting_descriptions() const override {
+        return compliant_ ? compliant_setting_descriptions() : rigid_setting_table();
     }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override {

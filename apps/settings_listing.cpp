@@ -1,0 +1,64 @@
+#include "apps/settings_listing.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "apps/json.hpp"
+#include "apps/option_values.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::cli {
+namespace {
+
+// How a setting is given on the command line.
+std::string flag_of(const std::string& name) {
+    if (name == "dt") return "--dt";
+    if (name == "iterations") return "--iterations";
+    return "--set " + name + "=";
+}
+
+std::string text_of(const multibody::Engine& engine) {
+    const std::vector<multibody::SettingDescription> settings = engine.setting_descriptions();
+    std::size_t flag_width = 0, default_width = 0, unit_width = 0;
+    for (const auto& s : settings) {
+        flag_width = std::max(flag_width, flag_of(s.name).size());
+        default_width = std::max(default_width, s.default_value.size());
+        unit_width = std::max(unit_width, s.unit.size());
+    }
+    std::string text = fmt::format("{} ({}): {}\n", engine.display_name(), engine.name(), engine.version());
+    for (const auto& s : settings)
+        text += fmt::format("  {:<{}}  {:<{}}  {:<{}}  {}\n", flag_of(s.name), flag_width, s.default_value,
+                            default_width, s.unit, unit_width, s.meaning);
+    return text;
+}
+
+Json json_of(const multibody::Engine& engine) {
+    Json settings = Json::array();
+    for (const auto& s : engine.setting_descriptions())
+        settings.push_back(
+            {{"name", s.name}, {"flag", flag_of(s.name)}, {"default", s.default_value}, {"unit", s.unit},
+             {"meaning", s.meaning}});
+    return {{"engine", engine.name()}, {"version", engine.version()}, {"settings", settings}};
+}
+
+}  // namespace
+
+std::string settings_listing(const std::vector<std::string>& engines, bool json) {
+    const std::vector<std::string> names =
+        engines.empty() ? multibody::available_engines() : parse_engine_list("--engine", engines);
+    std::string text;
+    Json all = Json::array();
+    for (const std::string& name : names) {
+        const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(name);
+        if (json) all.push_back(json_of(*engine));
+        else text += (text.empty() ? "" : "\n") + text_of(*engine);
+    }
+    if (json) return all.dump(2) + "\n";
+    return text +
+           "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its meaning.\n"
+           "Each default and why it was chosen: README, \"Engines\".\n";
+}
+
+}  // namespace vssw::cli
