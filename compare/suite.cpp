@@ -64,7 +64,7 @@ MetricRow make_row(const std::string& case_id, const std::string& engine, const 
 
 Trace make_trace(const std::string& case_id, const std::string& engine, const multibody::Trajectory& traj,
                  double alpha, double t_max) {
-    Trace tr{case_id, engine, {}, {}};
+    Trace tr{case_id, engine, {}, {}, engine == kReferenceEngine ? kPaperModel : ""};
     std::size_t n = 0;
     while (n < traj.samples.size() && traj.samples[n].t <= t_max) ++n;
     if (n == 0) return tr;
@@ -128,6 +128,7 @@ struct CaseReference {
     double threshold_g = kNaN;                  // threshold
     FreeVibrationResult free;                   // free, step: the analytic run, its trajectory dropped
     std::optional<Trace> free_trace;            // free: the analytic trace when traces are kept
+    std::optional<Trace> whole_mechanism_trace;  // free, history (VSSW): the whole-mechanism impact's, likewise
     multibody::Trajectory history;              // history: the analytic run (engines' RMS difference)
     double whole_mechanism_peak = kNaN;         // history, VSSW: peak with the whole mechanism's impact [alpha]
     std::atomic<int> users{0};                  // tasks of the case still to read `history`
@@ -160,6 +161,14 @@ Excitation history_excitation(const TaskContext& x) {
     return ex;
 }
 
+// The analytic model's settings with the whole mechanism's plastic impact in place of Eq. (19) (the analytic backend's
+// setting `restitution`).
+EngineSettings whole_mechanism_settings(const VsswGeometry& wall) {
+    EngineSettings s = analytic_reference_settings();
+    s.knobs["restitution"] = restitution_whole_mechanism(wall);
+    return s;
+}
+
 // The analytic model's runs of the case (CaseReference), once.
 void compute_reference(const TaskContext& x) {
     const AnalyticEngine analytic;
@@ -171,9 +180,19 @@ void compute_reference(const TaskContext& x) {
         case CaseKind::free:
         case CaseKind::step: {
             ref.free = run_free_vibration(analytic, analytic_reference_settings(), x.wall.scene, free_options(x));
-            if (x.keep_traces && x.c.kind == CaseKind::free)
+            if (x.keep_traces && x.c.kind == CaseKind::free) {
                 ref.free_trace = make_trace(x.c.id, kReferenceEngine, ref.free.trajectory, x.wall.scene.alpha(),
                                             kFreeTraceSeconds);
+                // The same release with the whole mechanism's impact: the trace the engines' free rocking is
+                // measured against in restitution_whole_mechanism (a few ms of the analytic model).
+                if (x.wall.scene.vssw) {
+                    const FreeVibrationResult whole = run_free_vibration(
+                        analytic, whole_mechanism_settings(*x.wall.scene.vssw), x.wall.scene, free_options(x));
+                    ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole.trajectory,
+                                                           x.wall.scene.alpha(), kFreeTraceSeconds);
+                    ref.whole_mechanism_trace->assumption = kWholeMechanismImpact;
+                }
+            }
             ref.free.trajectory.samples = {};  // the rows need its metrics only (warnings kept)
             return;
         }
@@ -184,10 +203,14 @@ void compute_reference(const TaskContext& x) {
             // place of Eq. (19) (the impact the engines make: README "Engines"): does the impact law account for a
             // difference in peaks?
             if (x.wall.scene.vssw) {
-                EngineSettings s = analytic_reference_settings();
-                s.knobs["restitution"] = restitution_whole_mechanism(*x.wall.scene.vssw);
-                ref.whole_mechanism_peak =
-                    peak_rotation(analytic.simulate(x.wall.scene, ex, s)).value / x.wall.scene.alpha();
+                const multibody::Trajectory whole =
+                    analytic.simulate(x.wall.scene, ex, whole_mechanism_settings(*x.wall.scene.vssw));
+                ref.whole_mechanism_peak = peak_rotation(whole).value / x.wall.scene.alpha();
+                if (x.keep_traces) {
+                    ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole, x.wall.scene.alpha(),
+                                                           std::numeric_limits<double>::infinity());
+                    ref.whole_mechanism_trace->assumption = kWholeMechanismImpact;
+                }
             }
             return;
         }
@@ -227,6 +250,7 @@ void free_task(const TaskContext& x, TaskOutput& out) {
         free_rows(x, ref.free, ref.free, out);
         out.model_warnings = ref.free.trajectory.warnings;
         if (ref.free_trace) out.traces.push_back(*ref.free_trace);
+        if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
         return;
     }
     EngineSettings settings = x.engine.default_settings();
@@ -281,6 +305,7 @@ void history_task(const TaskContext& x, TaskOutput& out) {
         out.model_warnings = a.warnings;
         whole_mechanism_peak_row(x, a, out);
         if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, x.wall.scene.alpha(), all));
+        if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
         return;
     }
     const multibody::Trajectory e =

@@ -120,10 +120,17 @@ struct ModelWarning {
 };
 
 // A time history for the overlay plots: theta1 / alpha against t, decimated for plotting.
+// The analytic model's traces name the assumption they are run under (engines': empty): "paper", the report's
+// reference (Eq. 19's impact on a VSSW, Housner's on a PW; the bilateral roller), and on a VSSW's free and history
+// cases also "whole_mechanism_impact" (the whole mechanism's plastic impact in place of Eq. 19, what the metrics
+// restitution_whole_mechanism and peak_rotation_whole_mechanism measure against).
+constexpr const char* kPaperModel = "paper";
+constexpr const char* kWholeMechanismImpact = "whole_mechanism_impact";
 struct Trace {
     std::string case_id;
     std::string engine;  // "analytic" for the reference
     std::vector<double> t, theta1_over_alpha;
+    std::string assumption;  // the analytic model's: kPaperModel or kWholeMechanismImpact; "" for an engine
 };
 
 // CPU time of one (case, engine) task on its thread [s]: where a suite's time goes (bench/suite_profile.cpp). The

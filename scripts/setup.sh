@@ -34,6 +34,9 @@ packages=(
 # (libclang-rt-dev), and llvm for llvm-symbolizer, without which ASan and UBSan print stacks as bare addresses.
 # About 65 MB to download, 300 MB installed.
 case "$mode" in test|asan) packages+=(clang libclang-rt-dev llvm) ;; esac
+# The test that renders report.html in a real browser (tests/cli/report_browser.sh, skipped without it): headless
+# Chromium, test only (/usr/lib/chromium is 350 MB installed; `run` and `build` do not need it).
+case "$mode" in test) packages+=(chromium) ;; esac
 
 missing=()
 for p in "${packages[@]}"; do

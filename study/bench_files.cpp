@@ -22,8 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 using compare::BenchPoint;
 
-// Plot size: wide enough for the key outside on the right with five engines and the front.
-constexpr int kPlotWidth = 760, kPlotHeight = 480;
+// Plot size: the report page's width (study/report_plots.cpp), shown there at about its own size.
+constexpr int kPlotWidth = 1100, kPlotHeight = 480;
 
 std::string knobs_text(const multibody::EngineSettings& s) {
     std::string text;
@@ -174,7 +174,7 @@ std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
                     << gp_string(p->setting) << '\n';
             dat << "\n\n";
             series.push_back(fmt::format("'{}.dat' index {} using 1:2 with linespoints {} title {}", name, block++,
-                                         series_style(e, engine == "analytic"), gp_string(engine)));
+                                         series_style(engine, 0), gp_string(engine)));
         }
         if (series.empty()) continue;
         dat << "# Pareto front (all engines): cpu_s error\n";

@@ -1,5 +1,7 @@
 #include "study/document.hpp"
 
+#include <cctype>
+#include <map>
 #include <utility>
 
 namespace vssw::study {
@@ -40,6 +42,29 @@ DocBlock plot(std::string title, std::string plot_name) {
     b.text = std::move(title);
     b.plot_name = std::move(plot_name);
     return b;
+}
+
+DocBlock contents() {
+    DocBlock b;
+    b.kind = DocBlock::Kind::contents;
+    return b;
+}
+
+std::vector<std::string> heading_anchors(const Document& doc) {
+    std::vector<std::string> anchors(doc.blocks.size());
+    std::map<std::string, int> seen;
+    for (std::size_t i = 0; i < doc.blocks.size(); ++i) {
+        if (doc.blocks[i].kind != DocBlock::Kind::heading) continue;
+        std::string a;
+        for (char c : doc.blocks[i].text) {
+            const auto u = static_cast<unsigned char>(c);
+            if (u >= 0x80 || std::isalnum(u) || c == '-' || c == '_') a += static_cast<char>(std::tolower(u));
+            else if (c == ' ') a += '-';
+        }
+        const int n = seen[a]++;
+        anchors[i] = n == 0 ? a : a + "-" + std::to_string(n);
+    }
+    return anchors;
 }
 
 }  // namespace vssw::study

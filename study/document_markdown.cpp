@@ -2,6 +2,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "study/text.hpp"
 
@@ -19,11 +20,21 @@ std::string cell(const std::string& text) {
     return s;
 }
 
+// A cell's text as Markdown: bold when flagged or failed, its verdict's mark after it.
+std::string cell_text(const DocCell& c) {
+    std::string text = cell(c.text);
+    if (c.verdict == DocCell::Verdict::pass) text += " \u2713";
+    if (c.verdict == DocCell::Verdict::fail) text += " \u2717";
+    return c.flagged || c.verdict == DocCell::Verdict::fail ? "**" + text + "**" : text;
+}
+
 }  // namespace
 
 void write_markdown(std::ostream& out, const Document& doc) {
     out << "# " << one_line(doc.title) << "\n";
-    for (const DocBlock& b : doc.blocks) {
+    const std::vector<std::string> anchors = heading_anchors(doc);
+    for (std::size_t k = 0; k < doc.blocks.size(); ++k) {
+        const DocBlock& b = doc.blocks[k];
         out << '\n';
         switch (b.kind) {
             case DocBlock::Kind::heading: out << std::string(static_cast<std::size_t>(b.level), '#') << ' ' << one_line(b.text) << '\n'; break;
@@ -39,8 +50,15 @@ void write_markdown(std::ostream& out, const Document& doc) {
                 out << '\n';
                 for (const auto& row : b.rows) {
                     out << '|';
-                    for (const DocCell& c : row) out << ' ' << (c.flagged ? "**" + cell(c.text) + "**" : cell(c.text)) << " |";
+                    for (const DocCell& c : row) out << ' ' << cell_text(c) << " |";
                     out << '\n';
+                }
+                break;
+            case DocBlock::Kind::contents:
+                for (std::size_t i = 0; i < doc.blocks.size(); ++i) {
+                    const DocBlock& h = doc.blocks[i];
+                    if (h.kind != DocBlock::Kind::heading || h.level < 2 || h.level > 3) continue;
+                    out << (h.level == 2 ? "- " : "  - ") << '[' << one_line(h.text) << "](#" << anchors[i] << ")\n";
                 }
                 break;
             case DocBlock::Kind::plot:

@@ -79,7 +79,7 @@ std::string gp_preamble(const std::string& drawn_by, const std::string& name, in
         "set output '{0}.svg'\n"
         "set datafile missing '?'\n"
         "set grid lc rgb '#dddddd'\n"
-        "set key outside right top\n",
+        "set key inside top right opaque box lc rgb '#cccccc' samplen 2 spacing 1.1\n",
         name, width, height, drawn_by);
 }
 

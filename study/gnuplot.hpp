@@ -35,7 +35,8 @@ struct PlotResult {
 PlotResult draw_plots(const std::vector<PlotScript>& scripts, const std::filesystem::path& plots_dir,
                       const std::string& program);
 
-// The start of every script: SVG terminal of this size, output NAME.svg, '?' as missing data, a light grid.
+// The start of every script: SVG terminal of this size, output NAME.svg, '?' as missing data, a light grid, the
+// legend inside the plot (top right, on white, framed).
 // `drawn_by` names the command in the script's first comment ("vssw report").
 std::string gp_preamble(const std::string& drawn_by, const std::string& name, int width, int height);
 // A gnuplot string literal (double quotes, its quotes and backslashes escaped).

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 
 #include <fmt/format.h>
 
 #include "study/effects.hpp"
 #include "study/gnuplot.hpp"
+#include "study/palette.hpp"
 
 namespace vssw::study {
 namespace {
@@ -18,9 +20,9 @@ constexpr int kSingleWidth = 860, kSingleHeight = 440;
 // Panels per row: four of 380 px fill a 1520 px page, about what a report's width allows.
 constexpr std::size_t kMaxColumns = 4;
 
-// Tableau 10: ten colours that stay apart on a screen and on paper.
-const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
-                                "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+// Dash types and point types the variants of one engine's series cycle through (gnuplot's numbers).
+constexpr int kAnalyticDashes[] = {1, 2, 4, 5}, kEngineDashes[] = {2, 4, 5, 3};
+constexpr int kPoints[] = {7, 5, 9, 11, 13};
 
 }  // namespace
 
@@ -112,10 +114,20 @@ double summarise(const std::vector<double>& values, bool share) {
     return ones / static_cast<double>(values.size());
 }
 
-std::string series_style(std::size_t index, bool analytic) {
-    const char* colour = kColours[index % (sizeof kColours / sizeof kColours[0])];
-    return analytic ? fmt::format("lc rgb '{}' lw 2 dt 1 pt 7 ps 0.7", colour)
-                    : fmt::format("lc rgb '{}' lw 1.5 dt 2 pt 5 ps 0.7", colour);
+std::string series_style(const std::string& engine, std::size_t variant) {
+    const bool analytic = engine == "analytic";
+    const int dash = analytic ? kAnalyticDashes[variant % std::size(kAnalyticDashes)]
+                              : kEngineDashes[variant % std::size(kEngineDashes)];
+    return fmt::format("lc rgb '{}' lw {} dt {} pt {} ps 0.7", engine_colour(engine), analytic ? 2 : 1.5, dash,
+                       kPoints[variant % std::size(kPoints)]);
+}
+
+std::vector<std::size_t> series_variants(const std::vector<std::string>& engines) {
+    std::vector<std::size_t> variants;
+    for (std::size_t i = 0; i < engines.size(); ++i)
+        variants.push_back(static_cast<std::size_t>(
+            std::count(engines.begin(), engines.begin() + static_cast<std::ptrdiff_t>(i), engines[i])));
+    return variants;
 }
 
 PanelLayout panel_layout(std::size_t panels) {

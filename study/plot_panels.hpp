@@ -41,8 +41,11 @@ std::string summary_note(const StudyData& d, const std::vector<std::size_t>& res
 // What one point shows of several values: their median, or for a 0/1 metric the share of ones; NaN for none.
 double summarise(const std::vector<double>& values, bool share);
 
-// The line and point style of a series: a colour of its own, solid for the analytic model, dashed for an engine.
-std::string series_style(std::size_t index, bool analytic);
+// The line and point style of a series: its engine's colour (study/palette.hpp), solid for the analytic model, dashed
+// for an engine; `variant` (0, 1, ...: the series' place among those of the same engine) changes the dash and point.
+std::string series_style(const std::string& engine, std::size_t variant);
+// The variant of each series of these engines (one name per series): 0 for an engine's first, 1 for its second ...
+std::vector<std::size_t> series_variants(const std::vector<std::string>& engines);
 
 // The SVG size and gnuplot's multiplot layout for `panels` panels and, when there are several, a last panel that
 // holds only the legend. A single panel is a plain plot with its key outside on the right.

@@ -121,8 +121,11 @@ PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturning&
     f.xlabel = parameter_label("alpha");
     f.ylabel = "peak rotation [alpha]";
     for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back("R " + rc.texts[rc.order[p]] + " m");
+    std::vector<std::string> engines;
+    for (const Series& s : d.series) engines.push_back(s.engine);
+    const std::vector<std::size_t> variants = series_variants(engines);
     for (std::size_t l = 0; l < d.series.size(); ++l)
-        f.lines.push_back({d.series[l].label, series_style(l, d.series[l].analytic())});
+        f.lines.push_back({d.series[l].label, series_style(d.series[l].engine, variants[l])});
     for (std::uint32_t level : ac.order) f.x.push_back(ac.values[level]);
     f.marker_title = over.measured() ? "overturned" : "";
     f.setup = "set xrange [0:*]\nset yrange [0:*]\nset arrow from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc "

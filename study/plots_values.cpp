@@ -85,8 +85,11 @@ std::optional<PlotScript> value_plot(const StudyData& d, std::size_t metric, std
     f.ylabel = m.binary ? m.name + " (share of runs)" : metric_label(m);
     for (const auto& combo : combinations(d, split.split))
         f.panel_titles.push_back(split.split.empty() ? f.title : levels_title(d, split.split, combo));
+    std::vector<std::string> engines;
+    for (const ValueLine& line : lines) engines.push_back(line.series.engine);
+    const std::vector<std::size_t> variants = series_variants(engines);
     for (std::size_t l = 0; l < lines.size(); ++l)
-        f.lines.push_back({lines[l].label, series_style(l, lines[l].series.analytic())});
+        f.lines.push_back({lines[l].label, series_style(lines[l].series.engine, variants[l])});
     for (std::size_t k = 0; k < xc.order.size(); ++k) {
         f.x.push_back(xc.numeric ? xc.values[xc.order[k]] : static_cast<double>(k));
         if (!xc.numeric) f.categories.push_back(xc.texts[xc.order[k]]);

@@ -261,6 +261,40 @@ std::vector<MetricTable> metric_tables(const ReportInput& in) {
     return tables;
 }
 
+std::vector<MatrixCell> error_matrix(const ReportInput& in) {
+    std::vector<MatrixCell> cells;
+    const std::vector<MetricTable> tables = metric_tables(in);
+    for (std::size_t e = 0; e < compared_engines(in.results).size(); ++e) {
+        for (const MetricTable& t : tables) {
+            MatrixCell c;
+            c.engine = t.engines[e];
+            c.metric = t.metric;
+            c.target = t.target;
+            for (const MetricTableRow& r : t.rows) {
+                const MetricCell& m = r.cells[e];
+                if (!m.present) {
+                    c.failed += m.failed ? 1 : 0;
+                    continue;
+                }
+                if (!std::isfinite(m.rel_error)) {
+                    ++c.not_measured;
+                    continue;
+                }
+                if (c.rows == 0 || std::abs(m.rel_error) > std::abs(c.worst_rel_error)) {
+                    c.worst_rel_error = m.rel_error;
+                    c.case_id = r.case_id;
+                }
+                ++c.rows;
+                if (t.target ? !within(m.rel_error, *t.target) : m.rel_error != 0.0) ++c.outside;
+            }
+            if (c.rows + c.not_measured + c.failed == 0) continue;
+            c.pass = t.target && c.rows > 0 && c.outside == 0 && c.not_measured == 0 && c.failed == 0;
+            cells.push_back(std::move(c));
+        }
+    }
+    return cells;
+}
+
 std::vector<StepSeries> step_series(const ReportInput& in) {
     std::vector<StepSeries> series;
     for (const compare::MetricRow& r : in.results.rows) {

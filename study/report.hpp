@@ -5,6 +5,7 @@
 //
 // Nothing here runs a simulation: the writers and these functions take a SuiteResults built by compare::run_suite or
 // by hand (the tests).
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -96,6 +97,24 @@ struct MetricTable {
 // The metrics in report order: threshold_g, period, restitution, restitution_whole_mechanism, then the others by name.
 std::vector<std::string> metric_order(const compare::SuiteResults& results);
 std::vector<MetricTable> metric_tables(const ReportInput& in);
+
+// The report at a glance: per engine and metric (step-study cases left out), the signed error of largest magnitude
+// and whether every case is within the target. Pass iff the metric has a target, every row of the engine was
+// measured (no NaN), none failed, and each |error| is within the target; metrics without a target have no verdict.
+struct MatrixCell {
+    std::string engine, metric;
+    double worst_rel_error = std::numeric_limits<double>::quiet_NaN();  // NaN: nothing measured
+    std::string case_id;  // where the worst error is
+    std::optional<double> target;
+    bool pass = false;
+    int rows = 0;          // measured rows (finite error)
+    int not_measured = 0;  // rows whose error is NaN
+    int failed = 0;        // cases of this metric on which the engine failed (no row)
+    int outside = 0;       // measured rows outside the target (overturned: rows that disagree)
+};
+// Engines in compared_engines order, metrics in metric_order; a cell for every pair where the engine has a row or a
+// failure of that metric.
+std::vector<MatrixCell> error_matrix(const ReportInput& in);
 
 // The error-against-step study: per engine, per free-vibration case it belongs to ("<wall>/r<r>"), per metric, the
 // points (dt, rel_error) in increasing dt.

@@ -10,7 +10,13 @@ namespace vssw::study {
 Json settings_json(const multibody::EngineSettings& s) {
     Json knobs = Json::object();
     for (const auto& [k, v] : s.knobs) knobs[k] = finite_or_null(v);
-    return {{"dt", finite_or_null(s.dt)}, {"iterations", s.iterations}, {"knobs", knobs}};
+    Json j = {{"dt", finite_or_null(s.dt)}, {"knobs", knobs}};
+    if (s.iterations > 0) j["iterations"] = s.iterations;
+    return j;
+}
+
+std::string trace_number(double value, int digits) {
+    return std::isfinite(value) ? fmt::format("{:.{}g}", value, digits) : "";
 }
 
 namespace {
@@ -104,9 +110,22 @@ Json results_json(const ReportInput& in) {
                          {"order", finite_or_null(s.order)}});
     }
 
+    Json matrix = Json::array();
+    for (const MatrixCell& c : error_matrix(in))
+        matrix.push_back({{"engine", c.engine},
+                          {"metric", c.metric},
+                          {"worst_rel_error", finite_or_null(c.worst_rel_error)},
+                          {"case_id", c.case_id},
+                          {"target", c.target ? Json(*c.target) : Json(nullptr)},
+                          {"pass", c.target ? Json(c.pass) : Json(nullptr)},
+                          {"rows", c.rows},
+                          {"not_measured", c.not_measured},
+                          {"failed", c.failed}});
+
     Json traces = Json::array();
     for (const compare::Trace& t : res.traces)
-        traces.push_back({{"case_id", t.case_id}, {"engine", t.engine}, {"samples", t.t.size()}});
+        traces.push_back(
+            {{"case_id", t.case_id}, {"engine", t.engine}, {"assumption", t.assumption}, {"samples", t.t.size()}});
 
     return {{"vssw", {{"commit", in.meta.commit.empty() ? Json(nullptr) : Json(in.meta.commit)},
                       {"report_format", kReportFormat}}},
@@ -118,6 +137,7 @@ Json results_json(const ReportInput& in) {
             {"failures", failures},
             {"model_warnings", model_warnings},
             {"summary", summary},
+            {"matrix", matrix},
             {"findings", findings(in)},
             {"step_study", steps},
             {"traces", traces},
@@ -141,12 +161,14 @@ void write_failures_csv(std::ostream& out, const compare::SuiteResults& results)
 }
 
 void write_traces_csv(std::ostream& out, const compare::SuiteResults& results) {
-    out << "case_id,engine,t,theta1_over_alpha\n";
+    out << "case_id,engine,t,theta1_over_alpha,assumption\n";
     for (const compare::Trace& tr : results.traces) {
         const std::string prefix = csv_field(tr.case_id) + ',' + csv_field(tr.engine) + ',';
+        const std::string suffix = ',' + csv_field(tr.assumption) + '\n';
         const std::size_t n = std::min(tr.t.size(), tr.theta1_over_alpha.size());
         for (std::size_t i = 0; i < n; ++i)
-            out << prefix << csv_number(tr.t[i]) << ',' << csv_number(tr.theta1_over_alpha[i]) << '\n';
+            out << prefix << trace_number(tr.t[i], kTraceTimeDigits) << ','
+                << trace_number(tr.theta1_over_alpha[i], kTraceValueDigits) << suffix;
     }
 }
 

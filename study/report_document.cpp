@@ -58,13 +58,91 @@ DocBlock introduction(const ReportInput& in) {
         100.0 * kReportThresholdTarget, 100.0 * kReportPeriodTarget, 100.0 * kReportRestitutionTarget));
 }
 
+// The matrix's text of a cell: the worst error (for overturning: agreement; for the rms difference: its share of the
+// peak), then what was not measured or failed.
+std::string matrix_text(const MatrixCell& c) {
+    std::string text;
+    if (c.rows == 0) text = c.failed > 0 ? "failed" : "n/a";
+    else if (c.metric == "overturned")
+        text = c.outside == 0 ? fmt::format("agrees {}/{}", c.rows, c.rows)
+                              : fmt::format("differs {}/{}", c.outside, c.rows);
+    else if (c.metric == "rms_difference")
+        text = fmt::format("{:.2g} % of the peak", 100.0 * std::abs(c.worst_rel_error));
+    else text = percent(c.worst_rel_error);
+    if (c.rows > 0 && c.not_measured > 0) text += fmt::format(" ({} n/a)", c.not_measured);
+    if (c.rows > 0 && c.failed > 0) text += fmt::format(" ({} failed)", c.failed);
+    return text;
+}
+
+void add_matrix(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "At a glance"));
+    const std::vector<MatrixCell> cells = error_matrix(in);
+    const std::vector<std::string> engines = compared_engines(in.results);
+    if (cells.empty() || engines.empty()) {
+        b.push_back(paragraph("No engine was compared (the analytic model only)."));
+        return;
+    }
+    // Metrics with a target first, those without set apart after them.
+    std::vector<std::string> metrics;
+    for (bool with_target : {true, false})
+        for (const std::string& m : metric_order(in.results))
+            if (target_of(m).has_value() == with_target &&
+                std::any_of(cells.begin(), cells.end(), [&](const MatrixCell& c) { return c.metric == m; }))
+                metrics.push_back(m);
+    std::vector<std::string> header = {"engine"};
+    std::size_t apart = 0;
+    for (const std::string& m : metrics) {
+        const std::optional<double> target = target_of(m);
+        if (!target && apart == 0) apart = header.size();
+        header.push_back(target ? fmt::format("{} (target {:g} %)", short_title(m), 100.0 * *target)
+                                : fmt::format("{} (no target)", short_title(m)));
+    }
+    DocBlock t = table(header, 1);
+    t.apart_from = apart;
+    t.css_class = "matrix";
+    for (const std::string& e : engines) {
+        std::vector<DocCell> row = {{engine_display_name(e)}};
+        for (const std::string& m : metrics) {
+            const auto c = std::find_if(cells.begin(), cells.end(),
+                                        [&](const MatrixCell& x) { return x.engine == e && x.metric == m; });
+            if (c == cells.end()) {
+                row.push_back({"-"});
+                continue;
+            }
+            DocCell cell{matrix_text(*c)};
+            if (c->target) cell.verdict = c->pass ? DocCell::Verdict::pass : DocCell::Verdict::fail;
+            if (!c->case_id.empty())
+                cell.note = fmt::format("worst on {}; {} of {} case{} {}", c->case_id, c->outside, c->rows,
+                                        c->rows == 1 ? "" : "s",
+                                        c->target ? "outside the target" : m == "overturned" ? "differ" : "nonzero");
+            row.push_back(std::move(cell));
+        }
+        t.rows.push_back(std::move(row));
+    }
+    b.push_back(t);
+    b.push_back(paragraph(
+        "Each cell: the engine's error of largest magnitude over the cases of that metric (engine / reference - 1; the "
+        "step study left out), passed when every case is measured and within the target, failed otherwise; the "
+        "metrics after the double rule have no target and no verdict. The tables under \"Metrics\" give every case."));
+}
+
 void add_engines(Blocks& b, const ReportInput& in) {
     b.push_back(heading(2, "Engines"));
-    DocBlock engines = table({"engine", "version", "dt [s]", "iterations", "settings"}, 5);
-    for (const compare::EngineRunInfo& e : in.results.engines)
-        engines.rows.push_back({{e.name}, {e.version}, {fmt::format("{:g}", e.settings.dt)},
-                                {e.settings.iterations == 0 ? "default" : std::to_string(e.settings.iterations)},
-                                {settings_text(e.settings)}});
+    // Iterations only where an engine's settings set a count (Bullet's sequential-impulse iterations); the analytic
+    // model, ODE's direct solver and Simbody have none.
+    const bool any_iterations = std::any_of(in.results.engines.begin(), in.results.engines.end(),
+                                            [](const compare::EngineRunInfo& e) { return e.settings.iterations > 0; });
+    std::vector<std::string> header = {"engine", "version", "dt [s]"};
+    if (any_iterations) header.push_back("iterations");
+    header.push_back("settings");
+    DocBlock engines = table(header, header.size());
+    for (const compare::EngineRunInfo& e : in.results.engines) {
+        std::vector<DocCell> row = {{e.name}, {e.version}, {fmt::format("{:g}", e.settings.dt)}};
+        if (any_iterations)
+            row.push_back({e.settings.iterations > 0 ? std::to_string(e.settings.iterations) : "-"});
+        row.push_back({settings_text(e.settings)});
+        engines.rows.push_back(std::move(row));
+    }
     b.push_back(engines);
     b.push_back(paragraph("The step cases of the error-against-step study override dt; everything else runs at the "
                           "settings above."));
@@ -210,20 +288,34 @@ void add_plots(Blocks& b, const PlotResult& plots, bool plots_skipped) {
     if (plots.plots.empty() && plots.note.empty()) b.push_back(paragraph("No data to plot."));
 }
 
+// The cases that ran: those with a row or a failure (a step case of an engine not asked for did not run).
 void add_cases(Blocks& b, const ReportInput& in) {
-    if (in.suite.cases.empty()) return;
-    b.push_back(heading(2, "Cases"));
+    std::set<std::string> ran;
+    for (const compare::MetricRow& r : in.results.rows) ran.insert(r.case_id);
+    for (const compare::CaseFailure& f : in.results.failures) ran.insert(f.case_id);
     DocBlock t = table({"case", "kind", "wall", "what is done"}, 4);
-    for (const compare::SuiteCase& c : in.suite.cases)
+    std::size_t not_run = 0;
+    for (const compare::SuiteCase& c : in.suite.cases) {
+        if (ran.count(c.id) == 0) {
+            ++not_run;
+            continue;
+        }
         t.rows.push_back({{c.id}, {kind_name(c.kind)}, {wall_label(in, c.wall_id)}, {case_detail(in, c)}});
+    }
+    if (t.rows.empty()) return;
+    b.push_back(heading(2, "Cases"));
     b.push_back(t);
+    if (not_run > 0)
+        b.push_back(paragraph(fmt::format("{} more case{} of the suite did not run: the step study of {} not asked "
+                                          "for (--engines).",
+                                          not_run, not_run == 1 ? "" : "s", not_run == 1 ? "an engine" : "engines")));
 }
 
 void add_files(Blocks& b) {
     b.push_back(heading(2, "Files"));
     b.push_back(list({"results.json: everything above, machine-readable (NaN as null)",
                       "metrics.csv: one line per (case, engine, metric)", "failures.csv: one line per failure",
-                      "traces.csv: the time histories (case_id, engine, t, theta1_over_alpha)",
+                      "traces.csv: the time histories (case_id, engine, t, theta1_over_alpha, assumption)",
                       "plots/: each plot as .svg with the .gp script and .dat data that drew it"}));
 }
 
@@ -235,6 +327,8 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
                             in.results.suite.empty() ? in.suite.name : in.results.suite);
     Blocks& b = doc.blocks;
     b.push_back(introduction(in));
+    add_matrix(b, in);
+    b.push_back(contents());
     add_engines(b, in);
     add_summary(b, in);
     add_findings(b, in);

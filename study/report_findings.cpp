@@ -178,8 +178,8 @@ std::vector<std::string> record_peak_findings(const ReportInput& in, const std::
                                          r->case_id));
             for (const compare::MetricRow* w : rows_of(in, engine, "peak_rotation_whole_mechanism"))
                 if (w->case_id == r->case_id && std::isfinite(w->rel_error))
-                    whole.push_back(fmt::format("{:.3g} alpha, {} from the engine's", w->analytic,
-                                                percent(-w->rel_error / (1.0 + w->rel_error))));
+                    whole.push_back(fmt::format("{:.3g} alpha, the engine's {} from it", w->analytic,
+                                                percent(w->rel_error)));
         }
         out.push_back(fmt::format(
             "{} {} rocks much less than the analytic model under the records ({}): on the same wall its impacts keep "

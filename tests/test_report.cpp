@@ -7,6 +7,7 @@
 #include "tests/cli_runner.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/temp_files.hpp"
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -14,6 +15,10 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <algorithm>
+#include <map>
+#include <set>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,7 +27,10 @@
 #include "apps/cli.hpp"
 #include "multibody/engine.hpp"
 #include "study/document_html.hpp"
+#include "study/palette.hpp"
 #include "study/report.hpp"
+#include "study/report_data.hpp"
+#include "study/report_plots.hpp"
 #include "study/report_write.hpp"
 
 namespace {
@@ -37,6 +45,11 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kJsonRoundTrip = 1e-15;
 // CSV numbers are written with 17 significant digits: exact for doubles, up to the last bit.
 constexpr double kCsvRoundTrip = 1e-15;
+// Rounding to 4 significant digits moves a value by at most half a unit in its 4th digit: 5e-4 of it.
+constexpr double kFourDigitRounding = 5e-4;
+// What a plot resolves: half a pixel. The trace plots' data (simplified to 0.25 px, rounded to 4 digits) must keep
+// every sample within it.
+constexpr double kHalfPixel = 0.5;
 // A failure message with HTML and CSV special characters.
 const std::string kFailureMessage = "slid past 0.05 b at t = 1.2 s <x, \"y\"> & more";
 
@@ -83,9 +96,12 @@ vssw::compare::SuiteResults hand_results() {
     vssw::multibody::EngineSettings ode_settings;
     ode_settings.dt = 2e-4;
     ode_settings.knobs["erp"] = 0.2;
+    vssw::multibody::EngineSettings bullet_settings;
+    bullet_settings.dt = 1e-3;
+    bullet_settings.iterations = 10;
     r.engines = {{"analytic", "vssw analytic (DOP853, rtol 1e-10)", {}},
                  {"ode", "ODE 0.16.2 (double precision)", ode_settings},
-                 {"bullet", "Bullet 3.24 (double precision)", {}}};
+                 {"bullet", "Bullet 3.24 (double precision)", bullet_settings}};
     r.rows = {
         row("fig6-vssw", "analytic", "threshold_g", 0.286, 0.286, "g"),
         row("fig6-vssw", "ode", "threshold_g", 0.286, 0.286, "g"),
@@ -107,7 +123,8 @@ vssw::compare::SuiteResults hand_results() {
         row("fig6-vssw/r0.5/dt0.0002/ode", "ode", "restitution", 0.95, 0.95 * (1 - 0.132), ""),
     };
     r.failures = {{"fig6-pw", "bullet", kFailureMessage}};
-    vssw::compare::Trace a{"fig6-vssw/r0.5", "analytic", {}, {}}, o{"fig6-vssw/r0.5", "ode", {}, {}};
+    vssw::compare::Trace a{"fig6-vssw/r0.5", "analytic", {}, {}, vssw::compare::kPaperModel},
+        o{"fig6-vssw/r0.5", "ode", {}, {}, ""};
     for (int i = 0; i <= 50; ++i) {
         const double t = 0.01 * i;
         a.t.push_back(t);
@@ -236,7 +253,9 @@ TEST(ReportFiles, MarkdownHasSummaryLinesAndARowPerCaseWithItsError) {
     EXPECT_TRUE(contains(w.md, "- ODE: 4/5 metrics within target;"));
     EXPECT_TRUE(contains(w.md, "### ODE\n\n- ODE's threshold acceleration is within the 0.5 % target on all 2 cases"));
     EXPECT_TRUE(contains(w.md, "- Bullet: 2/3 metrics within target (1 not measured)"));
-    EXPECT_TRUE(contains(w.md, "| ode | ODE 0.16.2 (double precision) | 0.0002 | default | erp=0.2 |"));
+    // Iterations only where an engine's settings set them (Bullet's 10): '-' for the analytic model and ODE.
+    EXPECT_TRUE(contains(w.md, "| ode | ODE 0.16.2 (double precision) | 0.0002 | - | erp=0.2 |")) << w.md;
+    EXPECT_TRUE(contains(w.md, "| bullet | Bullet 3.24 (double precision) | 0.001 | 10 | defaults |")) << w.md;
     // Threshold: one row per case, reference, then value and error per engine (ODE, Bullet).
     EXPECT_EQ(table_line(w.md, "### threshold acceleration", "fig6-vssw"),
               "| fig6-vssw | 0.286 | 0.286 | 0 % | 0.2858 | -0.07 % |");
@@ -267,6 +286,10 @@ TEST(ReportFiles, JsonRoundTripsWithNaNAsNull) {
     EXPECT_EQ(j["engines"][1]["version"], "ODE 0.16.2 (double precision)");
     EXPECT_DOUBLE_EQ(j["engines"][1]["settings"]["dt"].get<double>(), 2e-4);
     EXPECT_DOUBLE_EQ(j["engines"][1]["settings"]["knobs"]["erp"].get<double>(), 0.2);
+    // No "iterations" where there are none (the analytic model, ODE's direct solver); Bullet's 10.
+    EXPECT_FALSE(j["engines"][0]["settings"].contains("iterations"));
+    EXPECT_FALSE(j["engines"][1]["settings"].contains("iterations"));
+    EXPECT_EQ(j["engines"][2]["settings"]["iterations"], 10);
     ASSERT_EQ(j["rows"].size(), results.rows.size());
     for (std::size_t i = 0; i < results.rows.size(); ++i) {
         const auto& r = results.rows[i];
@@ -321,8 +344,24 @@ TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
 
     const auto traces = lines_of(read(w.dir.path / "traces.csv"));
     EXPECT_EQ(traces.size(), 2u * 51u + 1u);
-    EXPECT_EQ(traces[0], "case_id,engine,t,theta1_over_alpha");
-    EXPECT_EQ(traces[1], "fig6-vssw/r0.5,analytic,0,0.5");
+    EXPECT_EQ(traces[0], "case_id,engine,t,theta1_over_alpha,assumption");
+    EXPECT_EQ(traces[1], "fig6-vssw/r0.5,analytic,0,0.5,paper");
+    EXPECT_EQ(traces[52], "fig6-vssw/r0.5,ode,0,0.5,");
+    EXPECT_EQ(traces[2], "fig6-vssw/r0.5,analytic,0.01,0.4998,paper");  // 0.499775... to 4 digits
+    // Every value is the trace's to kTraceTimeDigits / kTraceValueDigits significant digits.
+    const vssw::compare::Trace& ode = results.traces[1];
+    for (std::size_t i = 0; i < ode.t.size(); ++i) {
+        std::vector<std::string> f;
+        std::istringstream line(traces[52 + i]);
+        for (std::string field; std::getline(line, field, ',');) f.push_back(field);
+        ASSERT_GE(f.size(), 4u) << traces[52 + i];
+        EXPECT_EQ(std::stod(f[2]), std::stod(fmt::format("{:.{}g}", ode.t[i], vssw::study::kTraceTimeDigits)));
+        EXPECT_EQ(std::stod(f[3]),
+                  std::stod(fmt::format("{:.{}g}", ode.theta1_over_alpha[i], vssw::study::kTraceValueDigits)));
+        EXPECT_LE(std::abs(std::stod(f[3]) - ode.theta1_over_alpha[i]),
+                  kFourDigitRounding * std::abs(ode.theta1_over_alpha[i]));
+    }
+
 }
 
 TEST(ReportFiles, HtmlEscapesTextAndShowsTheFailure) {
@@ -379,6 +418,305 @@ TEST(ReportFiles, AFileInPlaceOfTheFolderIsBadInput) {
     EXPECT_THROW(vssw::study::prepare_report_dir(file), vssw::InputError);
     EXPECT_NO_THROW(vssw::study::prepare_report_dir(tmp.path / "new" / "deeper"));
     EXPECT_TRUE(fs::is_directory(tmp.path / "new" / "deeper"));
+}
+
+// --- the report at a glance ---------------------------------------------------------------------------------------
+
+std::vector<std::string> split_commas(const std::string& line) {
+    std::vector<std::string> f;
+    std::istringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) f.push_back(field);
+    if (!line.empty() && line.back() == ',') f.push_back("");
+    return f;
+}
+
+// The matrix table of report.html: its header texts and, per row, (class, text) of each cell.
+struct HtmlTable {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::pair<std::string, std::string>>> rows;
+};
+HtmlTable matrix_of(const std::string& html) {
+    HtmlTable t;
+    const auto start = html.find("<table class=\"matrix\">");
+    if (start == std::string::npos) return t;
+    const std::string table = html.substr(start, html.find("</table>", start) - start);
+    const std::regex th("<th[^>]*>([^<]*)</th>"), tr("<tr>(.*?)</tr>");
+    const std::regex td("<td( class=\"([^\"]*)\")?[^>]*>([^<]*)</td>");
+    for (std::sregex_iterator i(table.begin(), table.end(), th), end; i != end; ++i) t.header.push_back((*i)[1]);
+    for (std::sregex_iterator i(table.begin(), table.end(), tr), end; i != end; ++i) {
+        const std::string row = (*i)[1];
+        std::vector<std::pair<std::string, std::string>> cells;
+        for (std::sregex_iterator j(row.begin(), row.end(), td); j != end; ++j) cells.emplace_back((*j)[2], (*j)[3]);
+        if (!cells.empty()) t.rows.push_back(cells);
+    }
+    return t;
+}
+
+bool has_class(const std::string& classes, const std::string& c) {
+    std::istringstream in(classes);
+    for (std::string x; in >> x;)
+        if (x == c) return true;
+    return false;
+}
+
+TEST(ReportAtAGlance, MatrixCellsAreTheWorstErrorOfMetricsCsvAndPassIffWithinTarget) {
+    const Written w = write_hand_report("matrix", no_plots());
+    // From the CSV files alone: per (engine, metric), the step study and the analytic model left out, the signed
+    // error of largest magnitude, whether any was not measured, and the failures on cases of that metric.
+    struct Expected {
+        double worst = kNaN;
+        bool any_nan = false, any_outside = false, failed = false;
+    };
+    std::map<std::pair<std::string, std::string>, Expected> expected;
+    std::map<std::string, std::set<std::string>> cases_of_metric;
+    const auto metrics = lines_of(read(w.dir.path / "metrics.csv"));
+    for (std::size_t i = 1; i < metrics.size(); ++i) {
+        const std::vector<std::string> f = split_commas(metrics[i]);
+        ASSERT_EQ(f.size(), 8u) << metrics[i];
+        const std::string &case_id = f[0], &engine = f[1], &metric = f[2];
+        if (engine == "analytic" || contains(case_id, "/dt")) continue;
+        cases_of_metric[metric].insert(case_id);
+        Expected& e = expected[{engine, metric}];
+        if (f[7].empty()) {
+            e.any_nan = true;
+            continue;
+        }
+        const double rel = std::stod(f[7]);
+        if (std::isnan(e.worst) || std::abs(rel) > std::abs(e.worst)) e.worst = rel;
+        const Json target = w.json["targets"].value(metric, Json(nullptr));
+        if (target.is_number() && std::abs(rel) > target.get<double>()) e.any_outside = true;
+    }
+    const auto failures = lines_of(read(w.dir.path / "failures.csv"));
+    for (std::size_t i = 1; i < failures.size(); ++i) {
+        const std::vector<std::string> f = split_commas(failures[i]);
+        for (const auto& [metric, cases] : cases_of_metric)
+            if (cases.count(f[0]) > 0) expected[{f[1], metric}].failed = true;
+    }
+    ASSERT_EQ(w.json["matrix"].size(), expected.size()) << w.json["matrix"];
+
+    const HtmlTable html = matrix_of(w.html);
+    ASSERT_EQ(html.rows.size(), 2u);  // ODE, Bullet
+    for (const Json& cell : w.json["matrix"]) {
+        const std::string engine = cell["engine"], metric = cell["metric"];
+        const auto it = expected.find({engine, metric});
+        ASSERT_NE(it, expected.end()) << engine << ' ' << metric;
+        const Expected& e = it->second;
+        if (std::isnan(e.worst)) {
+            EXPECT_TRUE(cell["worst_rel_error"].is_null()) << engine << ' ' << metric;
+        } else {
+            EXPECT_NEAR(cell["worst_rel_error"].get<double>(), e.worst, kCsvRoundTrip) << engine << ' ' << metric;
+        }
+        const bool has_target = w.json["targets"].contains(metric);
+        const bool pass = has_target && !std::isnan(e.worst) && !e.any_nan && !e.any_outside && !e.failed;
+        EXPECT_EQ(cell["pass"].is_null(), !has_target) << engine << ' ' << metric;
+        if (has_target) {
+            EXPECT_EQ(cell["pass"].get<bool>(), pass) << engine << ' ' << metric;
+        }
+
+        // The HTML cell: in the engine's row, under the metric's column; green iff pass, red iff not; set apart
+        // without a verdict when the metric has no target.
+        const std::string title = vssw::study::short_title(metric) + (has_target ? " (target" : " (no target)");
+        const auto col = std::find_if(html.header.begin(), html.header.end(),
+                                      [&](const std::string& h) { return h.rfind(title, 0) == 0; });
+        ASSERT_NE(col, html.header.end()) << title;
+        const auto row = std::find_if(html.rows.begin(), html.rows.end(), [&](const auto& r) {
+            return r[0].second == vssw::study::engine_display_name(engine);
+        });
+        ASSERT_NE(row, html.rows.end()) << engine;
+        const auto& [classes, text] = (*row)[static_cast<std::size_t>(col - html.header.begin())];
+        EXPECT_EQ(has_class(classes, "pass"), has_target && pass) << engine << ' ' << metric << ": " << classes;
+        EXPECT_EQ(has_class(classes, "fail"), has_target && !pass) << engine << ' ' << metric << ": " << classes;
+        EXPECT_EQ(has_class(classes, "apart"), !has_target) << engine << ' ' << metric << ": " << classes;
+        if (has_target && !std::isnan(e.worst)) {
+            EXPECT_EQ(text.rfind(vssw::study::percent(e.worst), 0), 0u) << engine << ' ' << metric << ": " << text;
+        }
+    }
+    // The hand data's verdicts, spelled out: ODE passes threshold, period and the whole-mechanism restitution and
+    // fails Eq. (19)'s; Bullet fails the threshold (it failed on fig6-pw) and the restitution (not measured).
+    EXPECT_TRUE(contains(w.md, "| ODE | +0.10 % \u2713 | -0.02 % \u2713 | **-13.2 % \u2717** | -0.07 % \u2713 |"))
+        << w.md;
+    EXPECT_TRUE(contains(w.md, "| Bullet | **-0.07 % (1 failed) \u2717** |")) << w.md;
+}
+
+TEST(ReportAtAGlance, ContentsLinkEveryHeadingInHtmlAndMarkdown) {
+    const Written w = write_hand_report("contents", no_plots());
+    // The matrix comes before the contents, both before the engines.
+    EXPECT_LT(w.html.find("<h2 id=\"at-a-glance\">At a glance</h2>"), w.html.find("<nav class=\"contents\">"));
+    EXPECT_LT(w.html.find("<nav class=\"contents\">"), w.html.find("<h2 id=\"engines\">"));
+    const std::regex heading("<h([23]) id=\"([^\"]+)\">");
+    int headings = 0;
+    for (std::sregex_iterator i(w.html.begin(), w.html.end(), heading), end; i != end; ++i, ++headings)
+        EXPECT_TRUE(contains(w.html, "<a href=\"#" + (*i)[2].str() + "\">")) << (*i)[2];
+    EXPECT_GT(headings, 10);
+    EXPECT_TRUE(contains(w.md, "- [At a glance](#at-a-glance)\n- [Engines](#engines)\n")) << w.md;
+    EXPECT_TRUE(contains(w.md, "  - [threshold acceleration [g] (target 0.5 %)](#threshold-acceleration-g-target-05-)"))
+        << w.md;
+}
+
+TEST(ReportAtAGlance, CasesThatDidNotRunAreNotListed) {
+    vssw::compare::Suite suite = hand_suite();
+    suite.cases.push_back({"fig6-vssw/r0.5/dt0.0005/bullet", CaseKind::step, "fig6-vssw", 0.5, "", 5e-4, "bullet"});
+    TempDir dir("notrun");
+    vssw::study::ReportMeta meta;
+    vssw::study::write_suite_report(dir.path, suite, hand_results(), meta, no_plots());
+    const std::string md = read(dir.path / "report.md");
+    EXPECT_TRUE(contains(md, "| fig6-vssw/r0.5/dt0.0005/ode | step |")) << md;
+    EXPECT_FALSE(contains(md, "fig6-vssw/r0.5/dt0.0005/bullet")) << md;
+    EXPECT_TRUE(contains(md, "1 more case of the suite did not run")) << md;
+}
+
+TEST(ReportAnalysis, TheWholeMechanismPeakIsQuotedAsEngineOverReferenceMinusOne) {
+    // The engine rocks much less under a record (-55.6 %) and loses more at each impact (-13.2 %): the finding quotes
+    // the analytic model with the whole-mechanism impact, and the engine against it with the report's sign.
+    const vssw::compare::Suite suite = hand_suite();
+    vssw::compare::SuiteResults results = hand_results();
+    results.rows.push_back(row("fig6-vssw/rinaldi-x0.45", "ode", "peak_rotation", 0.27, 0.12, "alpha"));
+    results.rows.push_back(row("fig6-vssw/rinaldi-x0.45", "ode", "peak_rotation_whole_mechanism", 0.125, 0.12,
+                               "alpha", "analytic model with the whole-mechanism impact"));
+    const std::vector<std::string> found = vssw::study::findings({suite, results, {}}, "ode");
+    const auto f = std::find_if(found.begin(), found.end(), [](const std::string& x) { return contains(x, "rocks"); });
+    ASSERT_NE(f, found.end());
+    EXPECT_TRUE(contains(*f, "0.125 alpha, the engine's -4.0 % from it")) << *f;  // 0.12 / 0.125 - 1
+}
+
+// --- the plots ------------------------------------------------------------------------------------------------------
+
+// A record's trace: at rest, then rocking between t0 and t1, then at rest to the end.
+vssw::compare::Trace rocking_trace(const std::string& engine, const std::string& assumption, double amplitude,
+                                   double t0, double t1, double t_end) {
+    vssw::compare::Trace t{"fig6-vssw/rinaldi-x0.45", engine, {}, {}, assumption};
+    for (double x = 0.0; x <= t_end + 1e-9; x += 0.02) {
+        t.t.push_back(x);
+        const double envelope = std::sin(3.14159 * (x - t0) / (t1 - t0));
+        t.theta1_over_alpha.push_back(x > t0 && x < t1 ? amplitude * std::sin(7.0 * (x - t0)) * envelope : 0.0);
+    }
+    return t;
+}
+
+const vssw::study::PlotScript* script_named(const std::vector<vssw::study::PlotScript>& scripts,
+                                            const std::string& name) {
+    for (const auto& s : scripts)
+        if (s.plot.name == name) return &s;
+    return nullptr;
+}
+
+TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
+    const vssw::compare::Suite suite = hand_suite();
+    vssw::compare::SuiteResults results = hand_results();
+    results.traces = {rocking_trace("analytic", vssw::compare::kPaperModel, 0.27, 5.0, 12.0, 45.0),
+                      rocking_trace("analytic", vssw::compare::kWholeMechanismImpact, 0.145, 5.0, 9.0, 45.0),
+                      rocking_trace("ode", "", 0.14, 5.0, 9.5, 45.0)};
+    const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
+    const vssw::study::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
+    ASSERT_NE(s, nullptr);
+    // x: the motion (5 to 12 s) with a margin of a few percent of it, not the 45 s of the record and its tail.
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set xrange \\[([^:]+):([^\\]]+)\\]"))) << s->gp;
+    EXPECT_GT(std::stod(m[1]), 4.5);
+    EXPECT_LT(std::stod(m[1]), 5.1);
+    EXPECT_GT(std::stod(m[2]), 11.9);
+    EXPECT_LT(std::stod(m[2]), 12.5);
+    // The three models in the legend, each in its engine's colour; the legend inside the plot.
+    EXPECT_TRUE(contains(s->gp, "title \"analytic, Eq. (19) impact (reference)\"")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "title \"analytic, whole-mechanism impact\"")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "lc rgb '" + vssw::study::engine_colour("ode") + "' title \"ODE\"")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "set key inside")) << s->gp;
+    EXPECT_FALSE(contains(s->gp, "outside")) << s->gp;
+}
+
+TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
+    const vssw::compare::Suite suite = hand_suite();
+    vssw::compare::SuiteResults results = hand_results();
+    results.traces = {rocking_trace("analytic", vssw::compare::kPaperModel, 0.47, 1.0, 30.0, 45.0),
+                      rocking_trace("analytic", vssw::compare::kWholeMechanismImpact, 0.027, 1.0, 4.0, 45.0),
+                      rocking_trace("ode", "", 0.03, 1.5, 3.5, 45.0)};
+    const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
+    ASSERT_NE(script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45"), nullptr);
+    const vssw::study::PlotScript* zoom = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45_zoom");
+    ASSERT_NE(zoom, nullptr);
+    // Its frame: the small traces' motion (1 to 4 s) and values (within 0.03 alpha, padded).
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(zoom->gp, m, std::regex("set xrange \\[([^:]+):([^\\]]+)\\]")));
+    EXPECT_LT(std::stod(m[2]), 4.5);
+    ASSERT_TRUE(std::regex_search(zoom->gp, m, std::regex("set yrange \\[([^:]+):([^\\]]+)\\]")));
+    EXPECT_LT(std::stod(m[2]), 0.04);
+    EXPECT_GT(std::stod(m[1]), -0.04);
+    EXPECT_FALSE(contains(zoom->gp, "(reference)")) << "the reference is in the first plot: " << zoom->gp;
+    EXPECT_TRUE(contains(zoom->gp, "title \"analytic, whole-mechanism impact\"")) << zoom->gp;
+    // Engines that rock like the reference get none.
+    results.traces[2] = rocking_trace("ode", "", 0.4, 1.0, 30.0, 45.0);
+    EXPECT_EQ(script_named(vssw::study::report_plot_scripts({suite, results, {}}), "trace_fig6-vssw_rinaldi-x0.45_zoom"),
+              nullptr);
+}
+
+// Every sample of a trace inside the plot's window lies within half a pixel of the polyline the plot draws.
+TEST(ReportPlots, TracePlotDataShowWhatEverySampleWould) {
+    const vssw::compare::Suite suite = hand_suite();
+    vssw::compare::SuiteResults results = hand_results();
+    results.traces = {rocking_trace("analytic", vssw::compare::kPaperModel, 0.27, 5.0, 12.0, 45.0),
+                      rocking_trace("ode", "", 0.14, 5.0, 9.5, 45.0)};
+    const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
+    const vssw::study::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
+    ASSERT_NE(s, nullptr);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("svg size (\\d+),(\\d+)")));
+    const double width = std::stod(m[1]), height = std::stod(m[2]);
+    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set xrange \\[([^:]+):([^\\]]+)\\]")));
+    const double t0 = std::stod(m[1]), t1 = std::stod(m[2]);
+    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set yrange \\[([^:]+):([^\\]]+)\\]")));
+    const double y0 = std::stod(m[1]), y1 = std::stod(m[2]);
+    // The .dat's blocks (gnuplot indices), in pixels of the whole canvas (the plot area is smaller: conservative).
+    std::vector<std::vector<std::pair<double, double>>> blocks(1);
+    for (const std::string& line : lines_of(s->dat)) {
+        if (line.empty()) {
+            if (!blocks.back().empty()) blocks.emplace_back();
+            continue;
+        }
+        if (line[0] == '#') continue;
+        std::istringstream in(line);
+        double t = 0.0, v = 0.0;
+        in >> t >> v;
+        blocks.back().emplace_back((t - t0) / (t1 - t0) * width, (v - y0) / (y1 - y0) * height);
+    }
+    if (blocks.back().empty()) blocks.pop_back();
+    ASSERT_EQ(blocks.size(), results.traces.size());
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+        const auto& line = blocks[k];
+        const vssw::compare::Trace& trace = results.traces[k];
+        EXPECT_LT(line.size(), trace.t.size() / 2) << "a long rest is one segment";
+        for (std::size_t i = 0; i < trace.t.size(); ++i) {
+            if (trace.t[i] < t0 || trace.t[i] > t1) continue;
+            const double px = (trace.t[i] - t0) / (t1 - t0) * width;
+            const double py = (trace.theta1_over_alpha[i] - y0) / (y1 - y0) * height;
+            double nearest = std::numeric_limits<double>::infinity();
+            for (std::size_t j = 0; j + 1 < line.size(); ++j) {
+                const auto [ax, ay] = line[j];
+                const auto [bx, by] = line[j + 1];
+                const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+                const double u = len2 > 0.0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+                nearest = std::min(nearest, std::hypot(px - ax - u * dx, py - ay - u * dy));
+            }
+            EXPECT_LE(nearest, kHalfPixel) << "trace " << k << " t = " << trace.t[i];
+        }
+    }
+}
+
+TEST(ReportPlots, OneColourPerEngineInEveryPlot) {
+    const auto scripts = vssw::study::report_plot_scripts({hand_suite(), hand_results(), {}});
+    ASSERT_FALSE(scripts.empty());
+    int checked = 0;
+    for (const auto& s : scripts)
+        for (const std::string& line : lines_of(s.gp))
+            for (const char* engine : {"ode", "bullet"}) {
+                const std::string name = vssw::study::engine_display_name(engine);
+                if (!contains(line, "title \"" + name)) continue;
+                EXPECT_TRUE(contains(line, "lc rgb '" + vssw::study::engine_colour(engine) + "'"))
+                    << s.plot.name << ": " << line;
+                ++checked;
+            }
+    EXPECT_GE(checked, 4);  // the trace, the error plots, the step plots
+    EXPECT_NE(vssw::study::engine_colour("ode"), vssw::study::engine_colour("bullet"));
+    EXPECT_EQ(vssw::study::engine_colour("analytic"), "#000000");
 }
 
 // --- the command --------------------------------------------------------------------------------------------------

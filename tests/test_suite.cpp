@@ -244,8 +244,9 @@ TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
     EXPECT_EQ(find_row(r, "fig6-pw/r0.5", "analytic", "restitution_whole_mechanism"), nullptr);  // VSSW only
     EXPECT_GT(find_row(r, "fig6-pw/r0.5", "analytic", "period")->analytic, 0.0);
 
-    // Free cases keep one decimated analytic trace each, starting at the release (theta1 = 0.5 alpha).
-    ASSERT_EQ(r.traces.size(), 2u);
+    // Free cases keep decimated analytic traces, starting at the release (theta1 = 0.5 alpha): the paper's model on
+    // both walls, and on the VSSW also the whole-mechanism impact's, which loses more at each impact (0.825 < 0.951).
+    ASSERT_EQ(r.traces.size(), 3u);
     for (const Trace& t : r.traces) {
         EXPECT_EQ(t.engine, "analytic");
         ASSERT_FALSE(t.t.empty());
@@ -253,6 +254,21 @@ TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
         EXPECT_EQ(t.t.size(), t.theta1_over_alpha.size());
         EXPECT_NEAR(t.theta1_over_alpha.front(), 0.5, 1e-12);
     }
+    EXPECT_EQ(r.traces[0].case_id, "fig6-vssw/r0.5");
+    EXPECT_EQ(r.traces[0].assumption, kPaperModel);
+    EXPECT_EQ(r.traces[1].case_id, "fig6-vssw/r0.5");
+    EXPECT_EQ(r.traces[1].assumption, kWholeMechanismImpact);
+    EXPECT_EQ(r.traces[2].case_id, "fig6-pw/r0.5");
+    EXPECT_EQ(r.traces[2].assumption, kPaperModel);
+    // After the first impact (a quarter period), the whole mechanism's rebound is the lower one.
+    const double quarter = find_row(r, "fig6-vssw/r0.5", "analytic", "period")->analytic / 4.0;
+    auto largest_after = [&](const Trace& t) {
+        double m = 0.0;
+        for (std::size_t i = 0; i < t.t.size(); ++i)
+            if (t.t[i] > 1.1 * quarter) m = std::max(m, std::abs(t.theta1_over_alpha[i]));
+        return m;
+    };
+    EXPECT_LT(largest_after(r.traces[1]), largest_after(r.traces[0]));
 }
 
 TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
@@ -281,11 +297,23 @@ TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
         // sample of the peak itself, never exceed it).
         const auto t = std::find_if(r.traces.begin(), r.traces.end(), [&](const Trace& x) { return x.case_id == id; });
         ASSERT_NE(t, r.traces.end()) << id;
+        EXPECT_EQ(t->assumption, kPaperModel) << id;
         EXPECT_LE(t->t.size(), kMaxTracePoints);
         double largest = 0.0;
         for (double v : t->theta1_over_alpha) largest = std::max(largest, std::abs(v));
         EXPECT_LE(largest, peak->analytic) << id;
         EXPECT_GT(largest, 0.5 * peak->analytic) << id;
+        // A VSSW's second analytic trace: the whole-mechanism impact's, whose largest value is that row's peak.
+        const auto w = std::find_if(r.traces.begin(), r.traces.end(), [&](const Trace& x) {
+            return x.case_id == id && x.assumption == kWholeMechanismImpact;
+        });
+        const MetricRow* whole = find_row(r, id, "analytic", "peak_rotation_whole_mechanism");
+        ASSERT_EQ(w != r.traces.end(), whole != nullptr) << id;
+        if (whole == nullptr) continue;
+        double largest_whole = 0.0;
+        for (double v : w->theta1_over_alpha) largest_whole = std::max(largest_whole, std::abs(v));
+        EXPECT_LE(largest_whole, whole->analytic) << id;
+        EXPECT_GT(largest_whole, 0.5 * whole->analytic) << id;
     }
 }
 
