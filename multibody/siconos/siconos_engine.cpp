@@ -350,7 +350,7 @@ public:
     EngineSettings default_settings() const override {
         EngineSettings s;
         s.dt = 1e-3;
-        s.iterations = 0;  // the adapter's default sweeps (kDefaultSweeps)
+        s.iterations = kDefaultSweeps;  // Gauss-Seidel sweeps per step, at most
         return s;
     }
     std::vector<SettingDescription> setting_descriptions() const override { return setting_table(); }
