@@ -29,6 +29,9 @@ packages=(
   gnuplot-nox                        # the plots of `vssw report` and `vssw study` (SVG; without it: no plots)
   libopenmpi-dev openmpi-bin         # `mpirun -n P vssw study` (optional at build time; the MPI test needs it)
   parallel                           # GNU parallel: scripts/study_parallel.sh runs a study's shards (and its test)
+  pybind11-dev python3-dev           # the Python module (python/, `import vssw`), built for Debian's /usr/bin/python3
+  python3-numpy python3-pandas       # its traces (NumPy arrays) and study() as a DataFrame (pandas: optional at run time)
+  python3-pytest                     # its tests (the CTest vssw_python)
 )
 # The sanitizer build (test and asan only, so `run` installs none of it): clang, its sanitizer and libFuzzer runtimes
 # (libclang-rt-dev), and llvm for llvm-symbolizer, without which ASan and UBSan print stacks as bare addresses.

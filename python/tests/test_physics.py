@@ -1,0 +1,59 @@
+"""The closed forms and free vibration through the module, against physics the paper states, so that the module is
+checked for what it returns and not only for agreeing with the program."""
+import math
+
+import pytest
+
+import vssw
+
+# Computed closed forms compared across sizes: only rounding differs (a few ulps of each of a dozen operations).
+CLOSED_FORM_RTOL = 1e-12
+# Free vibration's event times and peaks from +theta0 and -theta0: the integrator (rtol 1e-10 by default) follows
+# mirror-image paths with the same steps, so they agree far below its tolerance; 1e-9 leaves room for rounding.
+MIRROR_RTOL = 1e-9
+
+FIG6 = dict(height=4.0, thickness=0.4, hinge=0.7)
+
+
+@pytest.mark.parametrize("scale", [0.01, 0.5, 3.0, 100.0])
+def test_threshold_and_restitution_do_not_depend_on_size(scale):
+    # Eq. (12) and Eq. (19) depend on the angles alone (and on xi): all lengths scaled, the angles stay.
+    base = vssw.wall(**FIG6, xi=0.2)
+    scaled = vssw.wall(height=4.0 * scale, thickness=0.4 * scale, hinge=0.7, xi=0.2)
+    for key in ["threshold_g", "restitution", "alpha1", "alpha2"]:
+        assert scaled[key] == pytest.approx(base[key], rel=CLOSED_FORM_RTOL), key
+    # Lengths scale with the wall, the linearised period (Eq. 22, ~ 1/p, p ~ 1/sqrt(R)) as the square root.
+    assert scaled["R1"] == pytest.approx(base["R1"] * scale, rel=CLOSED_FORM_RTOL)
+    assert scaled["period_half_A"] == pytest.approx(base["period_half_A"] * math.sqrt(scale), rel=CLOSED_FORM_RTOL)
+
+
+def test_parapet_is_housners_block():
+    # Housner (1963): alpha = atan(b/h), e = 1 - 3/2 sin^2 alpha, threshold tan(alpha) g, p^2 = 3 g / (4 R).
+    height, thickness, g = 0.9, 0.11, 9.81
+    parapet = vssw.wall(height=height, thickness=thickness, hinge=0.5, g=g)["parapet"]
+    alpha = math.atan(thickness / height)
+    radius = math.hypot(thickness, height) / 2
+    assert parapet["alpha"] == pytest.approx(alpha, rel=CLOSED_FORM_RTOL)
+    assert parapet["R"] == pytest.approx(radius, rel=CLOSED_FORM_RTOL)
+    assert parapet["restitution"] == pytest.approx(1 - 1.5 * math.sin(alpha) ** 2, rel=CLOSED_FORM_RTOL)
+    assert parapet["threshold_g"] == pytest.approx(math.tan(alpha), rel=CLOSED_FORM_RTOL)
+    assert parapet["p"] == pytest.approx(math.sqrt(3 * g / (4 * radius)), rel=CLOSED_FORM_RTOL)
+
+
+@pytest.mark.parametrize("kinematics", ["paper", "exact"])
+def test_free_vibration_from_minus_theta0_mirrors_plus_theta0(kinematics):
+    plus = vssw.free(**FIG6, theta0=0.6, kinematics=kinematics)
+    minus = vssw.free(**FIG6, theta0=-0.6, kinematics=kinematics)
+    assert len(plus["impacts"]) == len(minus["impacts"]) > 0
+    assert minus["first_impact_time"] == pytest.approx(plus["first_impact_time"], rel=MIRROR_RTOL)
+    assert minus["peaks"] == pytest.approx(plus["peaks"], rel=MIRROR_RTOL)  # |theta|/alpha: the same magnitudes
+    for p, m in zip(plus["impacts"], minus["impacts"]):
+        assert m["t"] == pytest.approx(p["t"], rel=MIRROR_RTOL)
+        assert m["theta_dot_before"] == pytest.approx(-p["theta_dot_before"], rel=MIRROR_RTOL)  # mirrored velocity
+
+
+def test_free_vibration_first_impact_follows_the_impact_law():
+    # theta1' after / before the first impact is the impact law's ratio: Eq. (19) by default, or a given e.
+    for impact, expected in [("eq19", vssw.wall(**FIG6)["restitution"]), (0.6, 0.6)]:
+        first = vssw.free(**FIG6, theta0=0.5, impact=impact)["impacts"][0]
+        assert first["theta_dot_after"] / first["theta_dot_before"] == pytest.approx(expected, rel=CLOSED_FORM_RTOL)

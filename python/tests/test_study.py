@@ -1,0 +1,78 @@
+"""vssw.study: the results of a study file as a pandas DataFrame (or a list of dicts without pandas), the same rows
+as the program's results.csv for the same file."""
+import json
+
+import pandas as pd
+import pytest
+
+import vssw
+from conftest import RECORD
+
+# A small grid: 2 thicknesses x 2 hinges x 2 impact laws, closed forms and a free vibration's measured metrics.
+FREE_STUDY = {
+    "name": "python-module-free",
+    "metrics": ["period", "restitution", "peak_rotation"],
+    "wall": {"height": 4.0, "thickness": [0.2, 0.4], "hinge": [0.5, 0.7]},
+    "assumptions": {"impact": ["eq19", "whole-mechanism"]},
+    "excitation": {"kind": "free", "theta0": 0.5},
+}
+FREE_ROWS = 2 * 2 * 2 * 3  # cases x runs (impact laws) x metrics
+
+
+def program_results(cli, study_file, out):
+    cli.json(["study", study_file, "--out", out, "--threads", "1", "--no-plots"])
+    return read_results(out)
+
+
+def read_results(folder):
+    # round_trip: the 17 digits results.csv writes read back to the same doubles (pandas' default may be 1 ulp off).
+    return pd.read_csv(folder / "results.csv", float_precision="round_trip")
+
+
+def test_a_study_file_gives_the_programs_results_csv(cli, tmp_path):
+    study_file = tmp_path / "free.json"
+    study_file.write_text(json.dumps(FREE_STUDY))
+    program = program_results(cli, study_file, tmp_path / "program")
+    module = vssw.study(study_file, threads=1)
+    assert isinstance(module, pd.DataFrame)
+    assert len(module) == FREE_ROWS
+    pd.testing.assert_frame_equal(module, program)
+    assert (module["status"] == "ok").all()
+    assert module.attrs["summary"]["rows"] == FREE_ROWS
+    assert set(module["impact"]) == {"eq19", "whole-mechanism"}
+
+
+def test_a_dict_is_a_study_and_out_keeps_the_folder(cli, tmp_path):
+    out = tmp_path / "kept"
+    module = vssw.study(FREE_STUDY, out=out, threads=1, no_plots=True)
+    assert (out / "results.csv").is_file() and (out / "study.md").is_file()
+    pd.testing.assert_frame_equal(module, read_results(out))
+    assert module.attrs["summary"]["study"] == FREE_STUDY["name"]
+
+
+def test_a_dict_reads_a_relative_record_from_the_current_directory(monkeypatch):
+    monkeypatch.chdir(RECORD.parent)
+    spec = {"metrics": ["peak_rotation", "overturned"], "wall": {"height": 4.0, "thickness": 0.4, "hinge": 0.7},
+            "excitation": {"kind": "record", "file": RECORD.name, "scale": [0.45, 0.6]}}
+    frame = vssw.study(spec, threads=1)
+    assert len(frame) == 2 * 2
+    assert (frame["status"] == "ok").all()
+    direct = vssw.history(record=RECORD, scale=0.6, height=4.0, thickness=0.4, hinge=0.7)
+    peak = frame[(frame["scale"] == 0.6) & (frame["metric"] == "peak_rotation")]["value"].item()
+    # The study measures the same run as `vssw history` (README "Tests", studies): the same peak to the digit
+    # results.csv prints (17 significant digits: exact).
+    assert peak == direct["max_theta_over_alpha"]
+
+
+def test_without_pandas_the_rows_are_a_list_of_dicts(monkeypatch, tmp_path):
+    monkeypatch.setattr(vssw, "_pandas", lambda: None)
+    rows = vssw.study(FREE_STUDY, out=tmp_path / "s", threads=1, no_plots=True)
+    assert isinstance(rows, list) and len(rows) == FREE_ROWS
+    frame = read_results(tmp_path / "s")
+    assert [r["case_id"] for r in rows] == frame["case_id"].tolist()
+    assert [r["value"] for r in rows] == frame["value"].tolist()  # results.json's numbers, exactly
+
+
+def test_a_bad_study_is_a_value_error_naming_the_key():
+    with pytest.raises(ValueError, match="colour"):
+        vssw.study({**FREE_STUDY, "colour": "red"})
