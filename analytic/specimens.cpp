@@ -1,5 +1,7 @@
 #include "analytic/specimens.hpp"
 
+#include "analytic/data_dir.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -62,7 +64,7 @@ Specimen parse_specimen(const std::string& where, const std::string& line) {
 
 }  // namespace
 
-std::string default_table1_path() { return VSSW_DATA_DIR "/table1.csv"; }
+std::string default_table1_path() { return shipped_data_dir() + "/table1.csv"; }
 
 std::vector<Specimen> read_table1(const std::string& path) {
     std::ifstream in(path);

@@ -16,7 +16,7 @@ struct Specimen {
     std::string note;       // the table's footnote, if any
 };
 
-// The shipped table: VSSW_DATA_DIR "/table1.csv" (the source tree's data/, fixed at build time).
+// The shipped table: shipped_data_dir() + "/table1.csv" (analytic/data_dir.hpp).
 std::string default_table1_path();
 
 // Reads a Table 1 file: the header `number,height_m,thickness_m,hinge_ratio,note`, then one specimen a line, five

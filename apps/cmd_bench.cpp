@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
@@ -37,7 +38,7 @@ struct BenchCommandOptions {
     std::string repeats = std::to_string(kDefaultRepeats);
     bool quick = false, json = false, no_plots = false;
     std::string gnuplot = "gnuplot";
-    std::string data = VSSW_DATA_DIR;
+    std::string data = shipped_data_dir();
 };
 
 // Without --engines: every backend in this build, the analytic model first.
@@ -87,7 +88,7 @@ Command add_bench_command(CLI::App& root) {
     cmd->add_flag("--json", o->json, "print bench.json instead of the table");
     cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
-    cmd->add_option("--data", o->data, "folder of the shipped records (default: the source tree's data/)");
+    cmd->add_option("--data", o->data, "folder of the shipped records (default: $VSSW_DATA_DIR, else <prefix>/share/vssw/data beside an installed vssw, else the source tree's data/)");
     cmd->footer(
         "Problems: threshold (Fig. 6 VSSW, against Eq. 12), fig6-free, t1-free (Table 1 #1, xi 0.5), pw-free (Fig. 6\n"
         "PW) free vibrations from 0.5 alpha (period against the analytic model, exact kinematics; restitution against\n"

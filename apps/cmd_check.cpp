@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "apps/bounds_file.hpp"
 #include "apps/bounds_violated.hpp"
@@ -29,7 +30,7 @@ namespace {
 
 struct CheckOptions {
     std::string bounds;
-    std::string data_dir = VSSW_DATA_DIR;
+    std::string data_dir = shipped_data_dir();
     std::string threads_text = "0";  // --threads as typed, checked by parse_bounded_int
     int threads = 0;
     bool json = false;

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 #include "apps/commands.hpp"
@@ -42,7 +43,7 @@ struct ReportCommandOptions {
     bool no_plots = false;
     std::string bench;  // a finished `vssw bench` folder to include
     std::string gnuplot = "gnuplot";
-    std::string data = VSSW_DATA_DIR;
+    std::string data = shipped_data_dir();
     std::string out;
 };
 
@@ -123,7 +124,7 @@ Command add_report_command(CLI::App& root) {
                     "a finished `vssw bench --out DIR` folder: its cheapest settings and work-precision plots end the "
                     "report (the report does not run the sweep)");
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
-    cmd->add_option("--data", o->data, "folder of the ground-motion records (default: the source tree's data/)");
+    cmd->add_option("--data", o->data, "folder of the ground-motion records (default: $VSSW_DATA_DIR, else <prefix>/share/vssw/data beside an installed vssw, else the source tree's data/)");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
     cmd->footer(
         "Writes into --out: report.md and report.html (the same content; the HTML is self-contained, plots inline),\n"

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/data_dir.hpp"
 #include "apps/commands.hpp"
 #include "apps/report_free.hpp"
 #include "apps/report_history.hpp"
@@ -16,13 +17,13 @@ namespace {
 
 // Release of the free-vibration part: half of alpha1, well inside the range where the paper's kinematics hold.
 constexpr double kSummaryTheta0 = 0.5;
-const char* const kDefaultRecord = VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2";  // Northridge 1994, Rinaldi 228
+const char* const kDefaultRecordFile = "NGA_no_1063_RRS228.AT2";  // Northridge 1994, Rinaldi 228, in the shipped data
 
 }  // namespace
 
 Command add_summary_command(CLI::App& root) {
     struct Options {
-        std::string record = kDefaultRecord;
+        std::string record = shipped_data_dir() + "/" + kDefaultRecordFile;
         bool json = false;
     };
     auto o = std::make_shared<Options>();

@@ -70,8 +70,11 @@ TEST_P(SettingDescriptions, EveryKnobDescribedIsAcceptedAndNoOtherIs) {
         engine_->check_settings(unknown);
         ADD_FAILURE() << "an undescribed setting was accepted";
     } catch (const InputError& e) {
-        for (const SettingDescription& d : described)
-            if (is_knob(d)) EXPECT_NE(std::string(e.what()).find(d.name), std::string::npos) << e.what();
+        for (const SettingDescription& d : described) {
+            if (is_knob(d)) {
+                EXPECT_NE(std::string(e.what()).find(d.name), std::string::npos) << e.what();
+            }
+        }
     }
 }
 
