@@ -5,8 +5,11 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/error.hpp"
 #include "apps/commands.hpp"
 #include "apps/report_free.hpp"
+#include "apps/trajectory_csv.hpp"
+#include "study/atomic_file.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -21,6 +24,7 @@ Command add_free_command(CLI::App& root) {
         WallOptions wall;
         ModelOptions model;
         FreeRequest request;
+        std::string csv;
         bool json = false;
     };
     auto o = std::make_shared<Options>();
@@ -34,6 +38,11 @@ Command add_free_command(CLI::App& root) {
         ->required();
     cmd->add_option("--rtol", o->request.rtol,
                     fmt::format("relative tolerance of the integrator (default {})", o->request.rtol));
+    cmd->add_option("--csv", o->csv,
+                    "write the trajectory to this file, or with '-' to standard output (the summary then goes to the "
+                    "error stream): t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
+    cmd->add_option("--output-dt", o->request.output_dt,
+                    fmt::format("spacing of the CSV samples [s] (default {})", o->request.output_dt));
     cmd->add_flag("--json", o->json, "print JSON instead of tables");
     cmd->footer(
         "Times in s, angular velocities in rad/s, rotations as |theta|/alpha.\n"
@@ -47,14 +56,28 @@ Command add_free_command(CLI::App& root) {
         "for a parapet),\n"
         "energy_balance_error (relative to the largest energy in play), impact_count, first_impact_time (a quarter period), end_time,\n"
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.");
-    return {cmd, [o](std::ostream& out) {
+    return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) {
+                const bool csv_to_stdout = o->csv == "-";
+                if (csv_to_stdout && o->json)
+                    throw InputError("--csv - and --json both write to standard output: give the CSV a file name");
+                o->request.keep_trajectory = !o->csv.empty();
+                // Written to a temporary file renamed onto --csv after the run (a failed run leaves nothing), opened
+                // before it so that an unwritable path fails at once.
+                std::unique_ptr<study::AtomicFile> csv;
+                if (!o->csv.empty() && !csv_to_stdout) csv = std::make_unique<study::AtomicFile>(o->csv);
                 const FreeRun run = run_free(o->wall, o->model, o->request);
+                if (csv) {
+                    write_trajectory_csv(csv->stream(), *run.model, run.result);
+                    csv->commit();
+                }
+                if (csv_to_stdout) write_trajectory_csv(out, *run.model, run.result);
+                std::ostream& summary = csv_to_stdout ? err : out;
                 if (o->json) {
-                    out << to_json(run).dump(2) << '\n';
+                    summary << to_json(run).dump(2) << '\n';
                     return;
                 }
-                print_free_summary(out, run, "Free vibration of the " + describe_wall(o->wall, run.kind));
-                print_free_impacts(out, run, kImpactRowsShown);
+                print_free_summary(summary, run, "Free vibration of the " + describe_wall(o->wall, run.kind));
+                print_free_impacts(summary, run, kImpactRowsShown);
             }};
 }
 

@@ -33,7 +33,12 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
 
     SimulationOptions options;
     options.step.rtol = request.rtol;
-    options.keep_samples = false;  // the report needs events only
+    options.keep_samples = request.keep_trajectory;  // the tables need events only
+    if (request.keep_trajectory) {
+        require(std::isfinite(request.output_dt) && request.output_dt > 0.0, "output interval (--output-dt) [s]",
+                "a positive finite number", request.output_dt);
+        options.output_dt = request.output_dt;
+    }
     options.roller = chosen.roller;
     try {
         validate(options);
@@ -58,8 +63,8 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
                         r, result.t_final, result.impacts.size(), warnings.empty() ? "" : "; " + warnings.front()));
     const ImpactLaw impact = chosen.impact;
     const double restitution = chosen.model->restitution();
-    return {wall, chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings), impact,
-            restitution, chosen.roller};
+    return {wall,   chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings), impact,
+            restitution, chosen.roller, std::move(chosen.model)};
 }
 
 Json to_json(const FreeRun& run) {

@@ -3,6 +3,7 @@
 // and the second part of `vssw summary`.
 #include <cstddef>
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,8 @@ namespace vssw::cli {
 struct FreeRequest {
     double theta0_over_alpha = 0.0;  // r: finite, nonzero; its sign picks the side
     double rtol = SimulationOptions{}.step.rtol;
+    bool keep_trajectory = false;  // --csv: samples kept
+    double output_dt = 1e-3;       // [s] their spacing (--output-dt)
 };
 
 struct FreeRun {
@@ -23,11 +26,12 @@ struct FreeRun {
     WallKind kind;
     std::optional<Kinematics> kinematics;
     double theta0_over_alpha, alpha;
-    SimulationResult result;  // events only (no trajectory samples)
+    SimulationResult result;  // events, and samples when the request keeps the trajectory
     std::vector<std::string> warnings;  // the model's assumptions failing along the run (apps/model_validity.hpp)
     ImpactLaw impact;
     double restitution = 0.0;           // the impact ratio that law gives
     Roller roller = Roller::bilateral;
+    std::shared_ptr<const RockingModel> model;  // for the trajectory's reference units
 
     std::optional<double> stop_time() const;     // the last rest time; none if the wall overturned
     std::optional<double> first_impact() const;  // the time to the first impact: a quarter period

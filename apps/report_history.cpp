@@ -9,6 +9,7 @@
 #include "apps/model_validity.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/table.hpp"
+#include "apps/trajectory_csv.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -122,16 +123,7 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
 }
 
 void write_history_csv(std::ostream& out, const HistoryRun& run) {
-    const RockingModel& model = *run.chosen.model;
-    const double alpha = model.reference_angle();
-    const double v_ref = model.reference_velocity();
-    const double e_ref = model.reference_energy();
-    out << "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g\n";
-    for (const Sample& s : run.result.samples) {
-        const double energy = s.kinetic + s.weight_potential - s.work_overburden;
-        out << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", s.t, s.theta / alpha,
-                           s.theta_dot / v_ref, energy / e_ref, s.dissipated / e_ref, s.a_h / kStandardGravity);
-    }
+    write_trajectory_csv(out, *run.chosen.model, run.result);
 }
 
 }  // namespace vssw::cli

@@ -162,3 +162,42 @@ TEST(CliRecords, BadFormatOptionsAreBadInputNamingTheValue) {
 }
 
 }  // namespace
+
+namespace {
+
+// Energy balance of the integrator at rtol 1e-10 (README "What the analytic core holds": below 1e-9 of V_r over a
+// free vibration) plus the CSV's 10 significant digits; 1e-8 of V_r would show a lost or invented impact loss.
+constexpr double kBalanceInCsv = 1e-8;
+
+TEST(CliFreeCsv, TheTrajectoryKeepsItsEnergyBalanceAndMatchesTheEvents) {
+    const auto r = run_cli(std::vector<std::string>{"free"} + kFig6 +
+                           std::vector<std::string>{"--theta0", "0.5", "--csv", "-", "--output-dt", "0.002"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::istringstream csv(r.out);
+    std::string line;
+    std::getline(csv, line);
+    ASSERT_EQ(line, "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g");
+    std::vector<double> t, theta;
+    double release_energy = NAN, largest_imbalance = 0.0;
+    while (std::getline(csv, line)) {
+        double ti = 0, th = 0, thd = 0, e = 0, ed = 0, ag = 0;
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &ti, &th, &thd, &e, &ed, &ag), 6) << line;
+        if (std::isnan(release_energy)) release_energy = e;
+        largest_imbalance = std::max(largest_imbalance, std::abs(e + ed - release_energy));
+        t.push_back(ti);
+        theta.push_back(th);
+    }
+    EXPECT_LT(largest_imbalance, kBalanceInCsv);  // what is not in the motion was dissipated at the impacts
+    EXPECT_DOUBLE_EQ(theta.front(), 0.5);
+    // The first sign change of theta is the first impact the JSON reports, within one output interval.
+    const auto j = run_cli(std::vector<std::string>{"free"} + kFig6 + std::vector<std::string>{"--theta0", "0.5", "--json"});
+    const double first_impact = Json::parse(j.out)["first_impact_time"].get<double>();
+    std::size_t k = 1;
+    while (k < theta.size() && theta[k] > 0.0) ++k;
+    ASSERT_LT(k, theta.size());
+    EXPECT_LE(t[k - 1], first_impact);
+    EXPECT_GE(t[k], first_impact);
+    EXPECT_TRUE(r.err.find("Free vibration") != std::string::npos) << "the summary goes to the error stream";
+}
+
+}  // namespace

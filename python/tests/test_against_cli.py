@@ -87,6 +87,18 @@ def test_the_trace_is_the_programs_csv(cli, tmp_path):
         np.testing.assert_array_equal(trace[name], table[:, i], err_msg=name)
 
 
+def test_the_free_vibration_trace_is_the_programs_csv(cli, tmp_path):
+    csv = tmp_path / "program.csv"
+    cli.json(["free", *FIG6_FLAGS, "--theta0", "0.6", "--output-dt", "0.005", "--csv", csv])
+    header = csv.read_text().splitlines()[0].split(",")
+    table = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
+    trace = vssw.free(**FIG6, theta0=0.6, output_dt=0.005, trace=True)["trace"]
+    assert list(trace) == header
+    assert len(trace["t"]) > 100, "a free vibration to rest, sampled every 5 ms"
+    for i, name in enumerate(header):
+        np.testing.assert_array_equal(trace[name], table[:, i], err_msg=name)
+
+
 def test_keywords_become_the_programs_options():
     args = vssw._arguments(dict(pulse_period=0.5, thickness=-0.2, json_like=None, force=True, resume=False,
                                 engine=["ode", "bullet"], set={"dt": 1e-4, "slide_limit": 0.1}, theta0=np.float64(0.4),

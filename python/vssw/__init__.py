@@ -168,11 +168,12 @@ def wall(**options):
     return run("wall", **options)
 
 
-def free(**options):
+def free(trace=False, **options):
     """`vssw free`: free vibration released from rest at theta0 (a fraction of alpha). Options: height, thickness,
-    hinge, theta0 (required), model, kinematics, impact, roller, xi, density, g, rtol. Returns the JSON: impacts
-    [{t, theta_dot_before, theta_dot_after}], peaks, peak_times, stop_time, falls, warnings, roller, ..."""
-    return run("free", **options)
+    hinge, theta0 (required), model, kinematics, impact, roller, xi, density, g, rtol, output_dt, csv. Returns the
+    JSON: impacts [{t, theta_dot_before, theta_dot_after}], peaks, peak_times, stop_time, falls, warnings, roller,
+    ...; with trace=True also "trace", as for history()."""
+    return _with_trace("free", trace, options)
 
 
 def _read_trace(path):
@@ -193,15 +194,20 @@ def history(trace=False, **options):
     output_dt, t_end, csv (a file to write the time history to). Returns the JSON; with trace=True also "trace":
     the time history as NumPy arrays keyed by the CSV's columns (t, theta_over_alpha, theta_dot_over_ref,
     E_over_Vr, ED_over_Vr, ag_g), read from csv= when given, else from a temporary file."""
+    return _with_trace("history", trace, options)
+
+
+def _with_trace(command, trace, options):
+    """The command's JSON; with trace, its --csv time history too (from csv= when given, else a temporary file)."""
     if not trace:
-        return run("history", **options)
+        return run(command, **options)
     if options.get("csv"):
-        result = run("history", **options)
+        result = run(command, **options)
         result["trace"] = _read_trace(_os.fspath(options["csv"]))
         return result
     with _tempfile.TemporaryDirectory(prefix="vssw-trace-") as folder:
         path = _os.path.join(folder, "trace.csv")
-        result = run("history", **{**options, "csv": path})
+        result = run(command, **{**options, "csv": path})
         result["trace"] = _read_trace(path)
     return result
 
