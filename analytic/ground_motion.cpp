@@ -95,6 +95,8 @@ std::vector<std::string> lines_of(std::istream& in, const std::string& name) {
     std::string line;
     long long bytes = 0;
     while (std::getline(in, line)) {
+        // A UTF-8 byte-order mark (spreadsheets and Windows editors write one) is not part of the first value.
+        if (lines.empty() && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
         bytes += static_cast<long long>(line.size()) + 1;
         if (bytes > kMaxRecordBytes)
             throw InputError(fmt::format("ground-motion file '{}' has more than the {} bytes allowed (real records "
@@ -298,6 +300,9 @@ GroundMotion parse_two_column(const std::vector<std::string>& lines, const std::
 
 // --- one column at a step dt, and tables with a header row ----------------------------------------------------------
 
+// Whether the line's data (before any '#') holds a comma: its fields are then separated by commas.
+bool has_comma(const std::string& line) { return line.substr(0, line.find('#')).find(',') != std::string::npos; }
+
 // The line's data (before any '#') split into fields: by commas when `by_commas`, else by blanks and tabs.
 std::vector<std::string> fields_of(const std::string& line, bool by_commas) {
     const std::string data = line.substr(0, line.find('#'));
@@ -347,8 +352,15 @@ GroundMotion parse_single_column(const std::vector<std::string>& lines, const st
                                  double dt) {
     std::vector<double> values;
     for (std::size_t i = 0; i < lines.size(); ++i)
-        for (const std::string& field : fields_of(lines[i], lines[i].find(',') != std::string::npos))
+        for (const std::string& field : fields_of(lines[i], has_comma(lines[i]))) {
+            // "0,0123" is a decimal comma, not the values 0 and 123: a whole number written with a leading zero
+            // is what the comma's second half looks like, and no accelerogram writes its values so.
+            if (field.size() > 1 && field[0] == '0' && std::isdigit(static_cast<unsigned char>(field[1])))
+                throw InputError(fmt::format("{}:{}: '{}' after a comma looks like a decimal comma; write the "
+                                             "decimals with a point",
+                                             path, i + 1, field));
             values.push_back(acceleration_of(field, factor, path, i + 1));
+        }
     std::vector<double> times = times_at_step(values.size(), dt);  // before `values` is moved from
     return require_two_samples(std::move(times), std::move(values), path);
 }
@@ -365,7 +377,7 @@ std::size_t column_index(const std::vector<std::string>& header, const std::stri
 // A table whose first data line (line `header_at`, 0-based) names its columns.
 GroundMotion parse_table(const std::vector<std::string>& lines, std::size_t header_at, const std::string& path,
                          double factor, const RecordFormat& format) {
-    const bool by_commas = lines[header_at].find(',') != std::string::npos;
+    const bool by_commas = has_comma(lines[header_at]);
     const std::vector<std::string> header = fields_of(lines[header_at], by_commas);
     const std::size_t header_line = header_at + 1;
     if (format.dt && format.time_column)
@@ -424,7 +436,7 @@ GroundMotion parse_lines(const std::vector<std::string>& lines, const std::strin
     }
     const double factor = to_m_per_s2(units != nullptr ? *units : AccelUnits::g);
     for (std::size_t i = 0; i < lines.size(); ++i) {
-        const std::vector<std::string> fields = fields_of(lines[i], lines[i].find(',') != std::string::npos);
+        const std::vector<std::string> fields = fields_of(lines[i], has_comma(lines[i]));
         if (fields.empty()) continue;
         if (is_header(fields)) return parse_table(lines, i, path, factor, format);
         break;

@@ -34,11 +34,9 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     SimulationOptions options;
     options.step.rtol = request.rtol;
     options.keep_samples = request.keep_trajectory;  // the tables need events only
-    if (request.keep_trajectory) {
-        require(std::isfinite(request.output_dt) && request.output_dt > 0.0, "output interval (--output-dt) [s]",
-                "a positive finite number", request.output_dt);
-        options.output_dt = request.output_dt;
-    }
+    require(std::isfinite(request.output_dt) && request.output_dt > 0.0, "output interval (--output-dt) [s]",
+            "a positive finite number", request.output_dt);
+    if (request.keep_trajectory) options.output_dt = request.output_dt;
     options.roller = chosen.roller;
     try {
         validate(options);

@@ -1,5 +1,6 @@
 #include "apps/report_history.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
@@ -16,6 +17,7 @@ namespace {
 
 // When the largest |theta| was reached: the located turning point of largest |theta|, or the overturning (where the
 // collapse angle is the largest); 0 when the wall never left rest.
+// A run that ends mid-swing (--t-end) may have its largest |theta| at its end, past every located turning point.
 double peak_time(const SimulationResult& res) {
     if (res.overturned) return res.t_overturn;
     double t = 0.0, largest = 0.0;
@@ -24,7 +26,9 @@ double peak_time(const SimulationResult& res) {
             largest = std::abs(p.theta);
             t = p.t;
         }
-    return t;
+    // Beyond the turning points' location error (rtol 1e-10; step ends near a peak may exceed it by rounding).
+    constexpr double kPastEveryPeak = 1e-8;
+    return res.max_abs_theta > largest * (1.0 + kPastEveryPeak) ? res.t_final : t;
 }
 
 }  // namespace
@@ -37,7 +41,9 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
     options.output_dt = request.output_dt.value_or(input.sample_dt);
     require(std::isfinite(options.output_dt) && options.output_dt > 0.0, "output interval (--output-dt) [s]",
             "a positive finite number", options.output_dt);
-    options.t_end = request.t_end.value_or(input.motion.duration() + kDefaultExtraTime);
+    // The longer of the two components, so that a vertical record longer than the horizontal one is not cut.
+    options.t_end =
+        request.t_end.value_or(std::max(input.motion.duration(), input.vertical.duration()) + kDefaultExtraTime);
     require(std::isfinite(options.t_end) && options.t_end > 0.0, "end time (--t-end) [s]", "a positive finite number",
             options.t_end);
     options.keep_samples = request.keep_trajectory;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 
 namespace vssw::study {
@@ -122,7 +123,7 @@ compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name)
 
 std::string suite_file(const std::string& name_or_path) {
     if (name_or_path == "default" || name_or_path == "full")
-        return std::string(VSSW_STUDIES_DIR) + "/validation-" + name_or_path + ".toml";
+        return shipped_studies_dir() + "/validation-" + name_or_path + ".toml";
     return name_or_path;
 }
 

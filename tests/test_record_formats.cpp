@@ -133,3 +133,36 @@ TEST(RecordFormats, AnAt2RecordKeepsItsOwnStep) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(RecordFormatsFromTheField, AByteOrderMarkIsNotPartOfTheFirstValue) {
+    RecordFormat step;
+    step.dt = 0.01;
+    const GroundMotion single = parse_record("\xEF\xBB\xBF" "0.5\n0.25\n0.125\n", "r.txt", &kMetres, step);
+    EXPECT_EQ(single.sample_values(), (std::vector<double>{0.5, 0.25, 0.125}));  // none dropped as a "header"
+    RecordFormat named;
+    named.time_column = "time";
+    named.accel_column = "acc";
+    const GroundMotion table = parse_record("\xEF\xBB\xBF" "time,acc\n0,1\n1,2\n", "r.csv", &kMetres, named);
+    EXPECT_EQ(table.sample_times(), (std::vector<double>{0.0, 1.0}));
+    const GroundMotion two = parse_record("\xEF\xBB\xBF" "0.0 1\n0.5 2\n", "r.txt", &kMetres);
+    EXPECT_EQ(two.sample_values(), (std::vector<double>{1.0, 2.0}));
+}
+
+TEST(RecordFormatsFromTheField, ACommaInACommentDoesNotSplitTheLine) {
+    const GroundMotion m = parse_record("0.0 1 # start, at rest\n0.5 2\n", "r.txt", &kMetres);
+    EXPECT_EQ(m.sample_values(), (std::vector<double>{1.0, 2.0}));
+    RecordFormat step;
+    step.dt = 0.1;
+    const GroundMotion header = parse_record("acc # in m/s2, east\n1\n2\n", "r.txt", &kMetres, step);
+    EXPECT_EQ(header.sample_values(), (std::vector<double>{1.0, 2.0}));
+}
+
+TEST(RecordFormatsFromTheField, ADecimalCommaIsRefusedNotReadAsTwoValues) {
+    RecordFormat step;
+    step.dt = 0.01;
+    EXPECT_TRUE(contains(message_of("0,0123\n0,0456\n", step), "rec.txt:1: '0123' after a comma looks like a decimal"));
+}
+
+}  // namespace

@@ -28,4 +28,11 @@ if out="$(VSSW_DATA_DIR="$stage/nowhere" "$vssw" summary 2>&1)"; then
 fi
 echo "$out" | grep -q "$stage/nowhere" || { echo "install.sh: VSSW_DATA_DIR was not used: $out" >&2; exit 1; }
 "$vssw" check --bounds "$prefix/share/vssw/bounds/ci.toml" >/dev/null
+# Which suite it read: with the installed default suite broken, the check must fail naming the installed file.
+suite="$prefix/share/vssw/studies/validation-default.toml"
+echo 'this line is not TOML' >>"$suite"
+if out="$("$vssw" check --bounds "$prefix/share/vssw/bounds/ci.toml" 2>&1)"; then
+  echo "install.sh: check ran on a broken installed suite (it read another one)" >&2; exit 1
+fi
+echo "$out" | grep -q "$suite" || { echo "install.sh: the installed vssw did not read the installed suite: $out" >&2; exit 1; }
 echo "install.sh: installed vssw ran on its installed data"
