@@ -1,5 +1,6 @@
 // Fuzz harness of the ground-motion record reader (analytic/ground_motion.hpp, parse_record = read_record on text):
-// PEER AT2 in both header styles and two-column text, chosen by content as for a file.
+// PEER AT2 in both header styles and two-column text, chosen by content as for a file; and each input again as
+// accelerations alone at a step and as a table with named columns (RecordFormat).
 //
 // A normal outcome is a record or vssw::InputError (the documented refusal). A finding is anything else: another
 // exception type (reported here, then abort), a crash or sanitizer report, a hang, or a record that breaks the
@@ -51,9 +52,9 @@ void check_record(const vssw::GroundMotion& m) {
     if (m(-1.0) != 0.0 || m(t.back() * 2.0 + 1.0) != 0.0) finding("non-zero outside the record", 0);
 }
 
-void parse(const std::string& text, const vssw::AccelUnits* units) {
+void parse(const std::string& text, const vssw::AccelUnits* units, const vssw::RecordFormat& format = {}) {
     try {
-        check_record(vssw::parse_record(text, "fuzz-input", units));
+        check_record(vssw::parse_record(text, "fuzz-input", units, format));
     } catch (const vssw::InputError&) {
         // The documented refusal of a bad file: a normal outcome.
     } catch (const std::exception& e) {
@@ -71,5 +72,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Explicit units: the override path of the AT2 reader (it skips the header's unit word) and the cm/s2 factor.
     const vssw::AccelUnits cm = vssw::AccelUnits::cm_per_s2;
     parse(text, &cm);
+    // The other formats (RecordFormat): accelerations alone at a step, and a table with named columns, with a step.
+    vssw::RecordFormat step;
+    step.dt = 0.01;
+    parse(text, nullptr, step);
+    vssw::RecordFormat named;
+    named.time_column = "t";
+    named.accel_column = "a";
+    parse(text, nullptr, named);
+    vssw::RecordFormat named_at_step;
+    named_at_step.dt = 0.02;
+    named_at_step.accel_column = "a";
+    parse(text, nullptr, named_at_step);
     return 0;
 }
