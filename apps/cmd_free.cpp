@@ -9,7 +9,6 @@
 #include "apps/commands.hpp"
 #include "apps/report_free.hpp"
 #include "apps/trajectory_csv.hpp"
-#include "study/atomic_file.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -57,21 +56,11 @@ Command add_free_command(CLI::App& root) {
         "energy_balance_error (relative to the largest energy in play), impact_count, first_impact_time (a quarter period), end_time,\n"
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.");
     return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) {
-                const bool csv_to_stdout = o->csv == "-";
-                if (csv_to_stdout && o->json)
-                    throw InputError("--csv - and --json both write to standard output: give the CSV a file name");
-                o->request.keep_trajectory = !o->csv.empty();
-                // Written to a temporary file renamed onto --csv after the run (a failed run leaves nothing), opened
-                // before it so that an unwritable path fails at once.
-                std::unique_ptr<study::AtomicFile> csv;
-                if (!o->csv.empty() && !csv_to_stdout) csv = std::make_unique<study::AtomicFile>(o->csv);
+                TrajectoryCsv csv(o->csv, o->json);
+                o->request.keep_trajectory = csv.wanted();
                 const FreeRun run = run_free(o->wall, o->model, o->request);
-                if (csv) {
-                    write_trajectory_csv(csv->stream(), *run.model, run.result);
-                    csv->commit();
-                }
-                if (csv_to_stdout) write_trajectory_csv(out, *run.model, run.result);
-                std::ostream& summary = csv_to_stdout ? err : out;
+                csv.write(out, *run.model, run.result);
+                std::ostream& summary = csv.summary(out, err);
                 if (o->json) {
                     summary << to_json(run).dump(2) << '\n';
                     return;

@@ -6,9 +6,9 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic/error.hpp"
-#include "study/atomic_file.hpp"
 #include "apps/commands.hpp"
 #include "apps/report_history.hpp"
+#include "apps/trajectory_csv.hpp"
 
 namespace vssw::cli {
 
@@ -54,22 +54,12 @@ Command add_history_command(CLI::App& root) {
         "CSV: theta_dot_over_ref = theta_dot / reference velocity; E = kinetic + weights' potential - work of N,\n"
         "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha); ag_g = a_h / g0.");
     return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) {
-                const bool csv_to_stdout = o->csv == "-";
-                if (csv_to_stdout && o->json)
-                    throw InputError("--csv - and --json both write to standard output: give the CSV a file name");
                 o->request.keep_trajectory = !o->csv.empty();
                 HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
-                // Into a temporary file, renamed onto --csv only after a successful run: a failure leaves an
-                // existing file as it was. Created before the run, so that an unwritable path fails at once.
-                std::unique_ptr<study::AtomicFile> csv;
-                if (!o->csv.empty() && !csv_to_stdout) csv = std::make_unique<study::AtomicFile>(o->csv);
+                TrajectoryCsv csv(o->csv, o->json);  // after the options are checked, before the run
                 simulate_history(run);
-                if (csv) {
-                    write_history_csv(csv->stream(), run);
-                    csv->commit();
-                }
-                if (csv_to_stdout) write_history_csv(out, run);  // after the run: a failed run prints no rows
-                std::ostream& summary = csv_to_stdout ? err : out;
+                csv.write(out, *run.chosen.model, run.result);
+                std::ostream& summary = csv.summary(out, err);
                 if (o->json)
                     summary << to_json(run).dump(2) << '\n';
                 else

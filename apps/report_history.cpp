@@ -10,7 +10,6 @@
 #include "apps/model_validity.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/table.hpp"
-#include "apps/trajectory_csv.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -126,10 +125,6 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
              "largest residual / largest energy in play");
     add_support_rows(table, res);
     table.print(out);
-}
-
-void write_history_csv(std::ostream& out, const HistoryRun& run) {
-    write_trajectory_csv(out, *run.chosen.model, run.result);
 }
 
 }  // namespace vssw::cli

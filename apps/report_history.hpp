@@ -42,7 +42,5 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
 void simulate_history(HistoryRun& run);
 Json to_json(const HistoryRun& run);
 void print_history_summary(std::ostream& out, const HistoryRun& run, const std::string& title);
-// Header line, then one row per sample: t, theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g.
-void write_history_csv(std::ostream& out, const HistoryRun& run);
 
 }  // namespace vssw::cli

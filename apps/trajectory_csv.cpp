@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 
 namespace vssw::cli {
@@ -17,6 +18,20 @@ void write_trajectory_csv(std::ostream& out, const RockingModel& model, const Si
         const double energy = s.kinetic + s.weight_potential - s.work_overburden;
         out << fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", s.t, s.theta / alpha,
                            s.theta_dot / v_ref, energy / e_ref, s.dissipated / e_ref, s.a_h / kStandardGravity);
+    }
+}
+
+TrajectoryCsv::TrajectoryCsv(const std::string& path, bool json) : to_stdout_(path == "-") {
+    if (to_stdout_ && json)
+        throw InputError("--csv - and --json both write to standard output: give the CSV a file name");
+    if (!path.empty() && !to_stdout_) file_ = std::make_unique<study::AtomicFile>(path);
+}
+
+void TrajectoryCsv::write(std::ostream& out, const RockingModel& model, const SimulationResult& result) {
+    if (to_stdout_) write_trajectory_csv(out, model, result);
+    if (file_) {
+        write_trajectory_csv(file_->stream(), model, result);
+        file_->commit();
     }
 }
 

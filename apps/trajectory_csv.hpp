@@ -1,13 +1,35 @@
 #pragma once
-// The trajectory CSV of `vssw history --csv` and `vssw free --csv`: one row per sample, in the model's reference units.
+// The trajectory CSV of `vssw history --csv` and `vssw free --csv`: one row per sample, in the model's reference units,
+// to a file or to standard output.
 #include <iosfwd>
+#include <memory>
+#include <string>
 
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
+#include "study/atomic_file.hpp"
 
 namespace vssw::cli {
 
 // Header "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g", then the samples (10 significant digits).
 void write_trajectory_csv(std::ostream& out, const RockingModel& model, const SimulationResult& result);
+
+// Where --csv sends the trajectory: nowhere (""), standard output ("-": the summary then goes to the error stream),
+// or a file written under a temporary name and renamed onto it after the run (created at once, so that an unwritable
+// path fails before the run; a failed run leaves an existing file as it was and prints no rows).
+class TrajectoryCsv {
+public:
+    // InputError for "-" together with --json (both would go to standard output).
+    TrajectoryCsv(const std::string& path, bool json);
+    bool wanted() const { return to_stdout_ || file_ != nullptr; }
+    // After a successful run.
+    void write(std::ostream& out, const RockingModel& model, const SimulationResult& result);
+    // The stream the command's table or JSON goes to.
+    std::ostream& summary(std::ostream& out, std::ostream& err) const { return to_stdout_ ? err : out; }
+
+private:
+    bool to_stdout_;
+    std::unique_ptr<study::AtomicFile> file_;
+};
 
 }  // namespace vssw::cli

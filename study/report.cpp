@@ -264,7 +264,8 @@ std::vector<MetricTable> metric_tables(const ReportInput& in) {
 std::vector<MatrixCell> error_matrix(const ReportInput& in) {
     std::vector<MatrixCell> cells;
     const std::vector<MetricTable> tables = metric_tables(in);
-    for (std::size_t e = 0; e < compared_engines(in.results).size(); ++e) {
+    const std::size_t engine_count = compared_engines(in.results).size();
+    for (std::size_t e = 0; e < engine_count; ++e) {
         for (const MetricTable& t : tables) {
             MatrixCell c;
             c.engine = t.engines[e];

@@ -43,11 +43,17 @@ std::string wall_label(const ReportInput& in, const std::string& id) {
     return id;
 }
 
+// The cases that ran: those with a row or a failure (a step case of an engine not asked for did not run).
+std::set<std::string> cases_that_ran(const compare::SuiteResults& res) {
+    std::set<std::string> ran;
+    for (const compare::MetricRow& r : res.rows) ran.insert(r.case_id);
+    for (const compare::CaseFailure& f : res.failures) ran.insert(f.case_id);
+    return ran;
+}
+
 DocBlock introduction(const ReportInput& in) {
     const compare::SuiteResults& res = in.results;
-    std::set<std::string> case_ids;
-    for (const compare::MetricRow& r : res.rows) case_ids.insert(r.case_id);
-    for (const compare::CaseFailure& f : res.failures) case_ids.insert(f.case_id);
+    const std::set<std::string> case_ids = cases_that_ran(res);
     return paragraph(fmt::format(
         "Made {} by vssw{} on {} case{} ({} thread{}, {:.1f} s). Every engine is measured against the analytic model "
         "of Sorrentino, Masiani & Griffith (2008) with exact kinematics, every metric by the same code for every "
@@ -288,11 +294,8 @@ void add_plots(Blocks& b, const PlotResult& plots, bool plots_skipped) {
     if (plots.plots.empty() && plots.note.empty()) b.push_back(paragraph("No data to plot."));
 }
 
-// The cases that ran: those with a row or a failure (a step case of an engine not asked for did not run).
 void add_cases(Blocks& b, const ReportInput& in) {
-    std::set<std::string> ran;
-    for (const compare::MetricRow& r : in.results.rows) ran.insert(r.case_id);
-    for (const compare::CaseFailure& f : in.results.failures) ran.insert(f.case_id);
+    const std::set<std::string> ran = cases_that_ran(in.results);
     DocBlock t = table({"case", "kind", "wall", "what is done"}, 4);
     std::size_t not_run = 0;
     for (const compare::SuiteCase& c : in.suite.cases) {

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -40,6 +41,7 @@ using Json = nlohmann::json;
 using vssw::compare::CaseKind;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kPi = 3.141592653589793;
 // results.json is written by nlohmann with the shortest round-tripping representation: values come back exactly;
 // this allows for nothing but the last bit.
 constexpr double kJsonRoundTrip = 1e-15;
@@ -420,6 +422,14 @@ TEST(ReportFiles, AFileInPlaceOfTheFolderIsBadInput) {
     EXPECT_TRUE(fs::is_directory(tmp.path / "new" / "deeper"));
 }
 
+// A gnuplot script's "set xrange [lo:hi]" (axis 'x') or yrange, or none when it sets none.
+std::optional<std::pair<double, double>> gp_range(const std::string& gp, char axis) {
+    std::smatch m;
+    if (!std::regex_search(gp, m, std::regex(std::string("set ") + axis + "range \\[([^:]+):([^\\]]+)\\]")))
+        return std::nullopt;
+    return std::pair{std::stod(m[1]), std::stod(m[2])};
+}
+
 // --- the report at a glance ---------------------------------------------------------------------------------------
 
 std::vector<std::string> split_commas(const std::string& line) {
@@ -587,7 +597,7 @@ vssw::compare::Trace rocking_trace(const std::string& engine, const std::string&
     vssw::compare::Trace t{"fig6-vssw/rinaldi-x0.45", engine, {}, {}, assumption};
     for (double x = 0.0; x <= t_end + 1e-9; x += 0.02) {
         t.t.push_back(x);
-        const double envelope = std::sin(3.14159 * (x - t0) / (t1 - t0));
+        const double envelope = std::sin(kPi * (x - t0) / (t1 - t0));
         t.theta1_over_alpha.push_back(x > t0 && x < t1 ? amplitude * std::sin(7.0 * (x - t0)) * envelope : 0.0);
     }
     return t;
@@ -610,12 +620,12 @@ TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
     const vssw::study::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
     ASSERT_NE(s, nullptr);
     // x: the motion (5 to 12 s) with a margin of a few percent of it, not the 45 s of the record and its tail.
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set xrange \\[([^:]+):([^\\]]+)\\]"))) << s->gp;
-    EXPECT_GT(std::stod(m[1]), 4.5);
-    EXPECT_LT(std::stod(m[1]), 5.1);
-    EXPECT_GT(std::stod(m[2]), 11.9);
-    EXPECT_LT(std::stod(m[2]), 12.5);
+    const auto x = gp_range(s->gp, 'x');
+    ASSERT_TRUE(x) << s->gp;
+    EXPECT_GT(x->first, 4.5);
+    EXPECT_LT(x->first, 5.1);
+    EXPECT_GT(x->second, 11.9);
+    EXPECT_LT(x->second, 12.5);
     // The three models in the legend, each in its engine's colour; the legend inside the plot.
     EXPECT_TRUE(contains(s->gp, "title \"analytic, Eq. (19) impact (reference)\"")) << s->gp;
     EXPECT_TRUE(contains(s->gp, "title \"analytic, whole-mechanism impact\"")) << s->gp;
@@ -635,12 +645,11 @@ TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
     const vssw::study::PlotScript* zoom = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45_zoom");
     ASSERT_NE(zoom, nullptr);
     // Its frame: the small traces' motion (1 to 4 s) and values (within 0.03 alpha, padded).
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(zoom->gp, m, std::regex("set xrange \\[([^:]+):([^\\]]+)\\]")));
-    EXPECT_LT(std::stod(m[2]), 4.5);
-    ASSERT_TRUE(std::regex_search(zoom->gp, m, std::regex("set yrange \\[([^:]+):([^\\]]+)\\]")));
-    EXPECT_LT(std::stod(m[2]), 0.04);
-    EXPECT_GT(std::stod(m[1]), -0.04);
+    const auto x = gp_range(zoom->gp, 'x'), y = gp_range(zoom->gp, 'y');
+    ASSERT_TRUE(x && y) << zoom->gp;
+    EXPECT_LT(x->second, 4.5);
+    EXPECT_LT(y->second, 0.04);
+    EXPECT_GT(y->first, -0.04);
     EXPECT_FALSE(contains(zoom->gp, "(reference)")) << "the reference is in the first plot: " << zoom->gp;
     EXPECT_TRUE(contains(zoom->gp, "title \"analytic, whole-mechanism impact\"")) << zoom->gp;
     // Engines that rock like the reference get none.
@@ -661,10 +670,9 @@ TEST(ReportPlots, TracePlotDataShowWhatEverySampleWould) {
     std::smatch m;
     ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("svg size (\\d+),(\\d+)")));
     const double width = std::stod(m[1]), height = std::stod(m[2]);
-    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set xrange \\[([^:]+):([^\\]]+)\\]")));
-    const double t0 = std::stod(m[1]), t1 = std::stod(m[2]);
-    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set yrange \\[([^:]+):([^\\]]+)\\]")));
-    const double y0 = std::stod(m[1]), y1 = std::stod(m[2]);
+    const auto x = gp_range(s->gp, 'x'), y = gp_range(s->gp, 'y');
+    ASSERT_TRUE(x && y) << s->gp;
+    const double t0 = x->first, t1 = x->second, y0 = y->first, y1 = y->second;
     // The .dat's blocks (gnuplot indices), in pixels of the whole canvas (the plot area is smaller: conservative).
     std::vector<std::vector<std::pair<double, double>>> blocks(1);
     for (const std::string& line : lines_of(s->dat)) {

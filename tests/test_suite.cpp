@@ -265,6 +265,7 @@ TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
     auto largest_after = [&](const Trace& t) {
         double m = 0.0;
         for (std::size_t i = 0; i < t.t.size(); ++i)
+            // 1.1: past the first impact's sample, whatever the traces' decimation.
             if (t.t[i] > 1.1 * quarter) m = std::max(m, std::abs(t.theta1_over_alpha[i]));
         return m;
     };

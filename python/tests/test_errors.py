@@ -92,7 +92,7 @@ def test_help_lists_the_options():
         vssw.help("no-such-command")
 
 
-def test_bounds_error_from_check_carries_the_verdicts(tmp_path):
+def test_bounds_error_from_check_carries_the_verdicts(cli, tmp_path):
     # Fig. 6's threshold (0.2857 g, Eq. 12) held against a stored 0.5 g: `vssw check` exits 1 naming the bound out;
     # the module raises BoundsError with the program's JSON.
     bounds = tmp_path / "wrong-reference.toml"
@@ -104,5 +104,6 @@ def test_bounds_error_from_check_carries_the_verdicts(tmp_path):
     assert raised.value.result["held"] is False
     (verdict,) = raised.value.result["verdicts"]
     assert verdict["case"] == "fig6-vssw" and verdict["held"] is False
-    assert verdict["value"] == pytest.approx(vssw.wall(height=4.0, thickness=0.4, hinge=0.7)["threshold_g"],
-                                             rel=THRESHOLD_BISECTION_RTOL)
+    assert verdict["value"] == pytest.approx(
+        cli.json(["wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"])["threshold_g"],
+        rel=THRESHOLD_BISECTION_RTOL)

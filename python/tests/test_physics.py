@@ -52,8 +52,10 @@ def test_free_vibration_from_minus_theta0_mirrors_plus_theta0(kinematics):
         assert m["theta_dot_before"] == pytest.approx(-p["theta_dot_before"], rel=MIRROR_RTOL)  # mirrored velocity
 
 
-def test_free_vibration_first_impact_follows_the_impact_law():
-    # theta1' after / before the first impact is the impact law's ratio: Eq. (19) by default, or a given e.
-    for impact, expected in [("eq19", vssw.wall(**FIG6)["restitution"]), (0.6, 0.6)]:
+def test_free_vibration_first_impact_follows_the_impact_law(cli):
+    # theta1' after / before the first impact is the impact law's ratio: Eq. (19) by default, or a given e. The
+    # impact law scales the velocity by the ratio directly, so CLOSED_FORM_RTOL (rounding) holds here too.
+    eq19 = cli.json(["wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"])["restitution"]
+    for impact, expected in [("eq19", eq19), (0.6, 0.6)]:
         first = vssw.free(**FIG6, theta0=0.5, impact=impact)["impacts"][0]
         assert first["theta_dot_after"] / first["theta_dot_before"] == pytest.approx(expected, rel=CLOSED_FORM_RTOL)

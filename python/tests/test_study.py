@@ -46,18 +46,21 @@ def test_a_dict_is_a_study_and_out_keeps_the_folder(cli, tmp_path):
     out = tmp_path / "kept"
     module = vssw.study(FREE_STUDY, out=out, threads=1, no_plots=True)
     assert (out / "results.csv").is_file() and (out / "study.md").is_file()
-    pd.testing.assert_frame_equal(module, read_results(out))
+    study_file = tmp_path / "free.json"  # the same study as a file (it names no record), run by the program
+    study_file.write_text(json.dumps(FREE_STUDY))
+    pd.testing.assert_frame_equal(module, program_results(cli, study_file, tmp_path / "program"))
     assert module.attrs["summary"]["study"] == FREE_STUDY["name"]
 
 
-def test_a_dict_reads_a_relative_record_from_the_current_directory(monkeypatch):
+def test_a_dict_reads_a_relative_record_from_the_current_directory(cli, monkeypatch):
     monkeypatch.chdir(RECORD.parent)
     spec = {"metrics": ["peak_rotation", "overturned"], "wall": {"height": 4.0, "thickness": 0.4, "hinge": 0.7},
             "excitation": {"kind": "record", "file": RECORD.name, "scale": [0.45, 0.6]}}
     frame = vssw.study(spec, threads=1)
     assert len(frame) == 2 * 2
     assert (frame["status"] == "ok").all()
-    direct = vssw.history(record=RECORD, scale=0.6, height=4.0, thickness=0.4, hinge=0.7)
+    direct = cli.json(["history", "--record", RECORD, "--scale", "0.6", "--height", "4", "--thickness", "0.4",
+                       "--hinge", "0.7"])
     peak = frame[(frame["scale"] == 0.6) & (frame["metric"] == "peak_rotation")]["value"].item()
     # The study measures the same run as `vssw history` (README "Tests", studies): the same peak to the digit
     # results.csv prints (17 significant digits: exact).

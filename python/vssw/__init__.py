@@ -24,7 +24,6 @@ from vssw.Error and keep the exit code, the program's stderr and, where the comm
 """
 
 import json as _json
-import math as _math
 import numbers as _numbers
 import os as _os
 import tempfile as _tempfile
@@ -75,8 +74,7 @@ def _value_text(name, value):
     if isinstance(value, _numbers.Integral):  # bool is handled by the caller
         return str(int(value))
     if isinstance(value, _numbers.Real):  # NumPy floats too: float() first, so that repr is "0.4", not "np.float64(0.4)"
-        x = float(value)
-        return repr(x) if _math.isfinite(x) else ("nan" if _math.isnan(x) else ("inf" if x > 0 else "-inf"))
+        return repr(float(value))  # "nan", "inf", "-inf" for those: the words the program refuses by name
     raise InputError(f"{name}: a number, a string or a path is expected, got {type(value).__name__} {value!r}",
                      _core.EXIT_BAD_INPUT, "")
 
@@ -119,7 +117,7 @@ def _call(args):
         try:
             result = _json.loads(out)
         except ValueError:
-            result = None
+            pass  # no JSON: the exception below carries the error line
     if code == _core.EXIT_OK:
         if result is None:
             raise Error(f"vssw {args[0]} printed no JSON", code, err)
@@ -151,9 +149,10 @@ def _commands():
 
 def help(command=None):  # noqa: A001 (the module's own help, as `vssw COMMAND --help`)
     """The --help text of a command (every option with its unit and default), or of the program."""
-    if command is not None and command not in _commands():
+    commands = _commands() if command is not None else []
+    if command is not None and command not in commands:
         # `vssw NAME --help` with a name that is no command prints the program's help: refuse it here instead.
-        message = f"'{command}' is not a command; the commands are {', '.join(_commands())}"
+        message = f"'{command}' is not a command; the commands are {', '.join(commands)}"
         raise InputError(message, _core.EXIT_BAD_INPUT, "")
     code, out, err = _core.run(([command] if command else []) + ["--help"])
     if code != _core.EXIT_OK:
