@@ -45,6 +45,13 @@ class Eq11Evaluator {
 public:
     explicit Eq11Evaluator(const VsswGeometry& w);
     Eq11Coefficients operator()(double abs_theta1) const;
+    // The five coefficients times cos^3 A2, their common denominator (no division at all), and C_H, C_V as they are
+    // (they have none): what the equation of motion needs at an integrator stage (rocking_rates_scaled).
+    struct Scaled {
+        double C_A, C_S, C_H, C_V, C_N;
+        double C_H_unscaled, C_V_unscaled;
+    };
+    Scaled scaled(double abs_theta1) const;
 
 private:
     double alpha1_, k_, sin_a2_, cos_a2_, m2_;

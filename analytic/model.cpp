@@ -70,6 +70,13 @@ public:
         const double R1 = w_.R1;
         return {R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
     }
+    RockingRates rates(int side, double q, double theta_dot, double a_h, double a_v) const override {
+        const Eq11Evaluator::Scaled c = eq11_.scaled(q);
+        const double R1 = w_.R1;
+        const ModelTerms t{R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
+        return rocking_rates_scaled(t, R1 * c.C_H_unscaled, R1 * c.C_V_unscaled, side, theta_dot, a_h, a_v, w_.g,
+                                    w_.N);
+    }
     double mass_moment_height(double q) const override {
         return eq6_potential(w_, q, eq3_theta2_linear(w_, q)) / w_.g;
     }
@@ -126,6 +133,30 @@ public:
         t.Y = w_.m1 * R1 * g.sa + w_.m2 * dy2;
         t.L = 2.0 * R1 * g.sa - (2.0 * w_.h2 * s2 + w_.b * c2) * g.dpsi;
         return t;
+    }
+    // terms(q) multiplied through by cos^4 psi: psi', psi'' and the terms have powers of cos psi as denominators.
+    // With D = cos psi psi' = -s cos a and DD = cos^3 psi psi'' = -s (sin a cos^2 psi + cos a sin psi D):
+    RockingRates rates(int side, double q, double theta_dot, double a_h, double a_v) const override {
+        const SinCos a = fast_sincos(w_.alpha1 - q);
+        const double sa = a.sin, ca = a.cos, spsi = w_.s * sa;
+        const double cpsi2 = std::max(1.0 - sq(spsi), 1e-30);  // as in angles()
+        const double cpsi = std::sqrt(cpsi2);
+        const double D = -w_.s * ca, DD = -w_.s * (sa * cpsi2 + ca * spsi * D);
+        const double R1 = w_.R1, R2 = w_.R2;
+        const double dx2 = R1 * ca, ddx2 = R1 * sa;
+        const double dy2_c = 2.0 * R1 * sa * cpsi - R2 * spsi * D;                           // cos psi y2'
+        const double ddy2_c3 = -2.0 * R1 * ca * cpsi2 * cpsi - R2 * (D * D * cpsi2 + spsi * DD);  // cos^3 psi y2''
+        const double s2 = spsi * w_.cos_a2 - cpsi * w_.sin_a2, c2 = cpsi * w_.cos_a2 + spsi * w_.sin_a2;
+        const double cpsi3 = cpsi2 * cpsi, cpsi4 = cpsi2 * cpsi2;
+        const double Y_c = w_.m1 * R1 * sa * cpsi + w_.m2 * dy2_c;  // cos psi Y
+        ModelTerms t{};
+        t.M = cpsi2 * ((w_.m1 * R1 * R1 + w_.I1) * cpsi2 + w_.m2 * (sq(dx2) * cpsi2 + sq(dy2_c)) + w_.I2 * D * D);
+        t.C = w_.m2 * (dx2 * ddx2 * cpsi4 + dy2_c * ddy2_c3) + w_.I2 * D * DD;
+        const double X = (w_.m1 + w_.m2) * R1 * ca;
+        t.X = X * cpsi4;
+        t.Y = Y_c * cpsi3;
+        t.L = cpsi3 * (2.0 * R1 * sa * cpsi - (2.0 * w_.h2 * s2 + w_.b * c2) * D);
+        return rocking_rates_scaled(t, X, Y_c / cpsi, side, theta_dot, a_h, a_v, w_.g, w_.N);
     }
     double mass_moment_height(double q) const override {
         const Angles g = angles(q);
@@ -184,6 +215,17 @@ RockingRates rocking_rates(const ModelTerms& t, int side, double theta_dot, doub
     return {rhs / t.M, ground};
 }
 
+RockingRates rocking_rates_scaled(const ModelTerms& t, double X, double Y, int side, double theta_dot,
+                                  double a_h, double a_v, double g, double N) {
+    const double sign = side;
+    const double rhs = -a_h * t.X - sign * (a_v * t.Y + g * t.Y + N * t.L + t.C * theta_dot * theta_dot);
+    return {rhs / t.M, -a_h * X - sign * a_v * Y};
+}
+
+RockingRates RockingModel::rates(int side, double q, double theta_dot, double a_h, double a_v) const {
+    return rocking_rates(terms(q), side, theta_dot, a_h, a_v, gravity(), overburden());
+}
+
 double RockingModel::acceleration(int side, double theta, double theta_dot, double a_h, double a_v) const {
     return rocking_rates(terms(side * theta), side, theta_dot, a_h, a_v, gravity(), overburden()).acceleration;
 }
@@ -233,6 +275,9 @@ class WithRestitution final : public RockingModel {
 public:
     WithRestitution(std::unique_ptr<RockingModel> model, double e) : model_(std::move(model)), e_(e) {}
     ModelTerms terms(double q) const override { return model_->terms(q); }
+    RockingRates rates(int side, double q, double theta_dot, double a_h, double a_v) const override {
+        return model_->rates(side, q, theta_dot, a_h, a_v);
+    }
     double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
     double load_height(double q) const override { return model_->load_height(q); }
     double restitution() const override { return e_; }
@@ -255,6 +300,9 @@ class WithStopAngle final : public RockingModel {
 public:
     WithStopAngle(std::unique_ptr<RockingModel> model, double stop) : model_(std::move(model)), stop_(stop) {}
     ModelTerms terms(double q) const override { return model_->terms(q); }
+    RockingRates rates(int side, double q, double theta_dot, double a_h, double a_v) const override {
+        return model_->rates(side, q, theta_dot, a_h, a_v);
+    }
     double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
     double load_height(double q) const override { return model_->load_height(q); }
     double restitution() const override { return model_->restitution(); }

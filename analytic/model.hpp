@@ -36,11 +36,20 @@ struct RockingRates {
 };
 RockingRates rocking_rates(const ModelTerms& t, int side, double theta_dot, double a_h, double a_v, double g,
                            double N);
+// The same from the five terms all multiplied by one common non-zero factor (Eq. 10 is homogeneous in them), with X
+// and Y unscaled for the ground's force: the VSSW models' terms share a power of a cosine as denominator, and
+// multiplied through by it they need no division, leaving theta1'' one division at the end instead of two on every
+// stage's chain of dependent operations.
+RockingRates rocking_rates_scaled(const ModelTerms& scaled, double X, double Y, int side, double theta_dot,
+                                  double a_h, double a_v, double g, double N);
 
 class RockingModel {
 public:
     virtual ~RockingModel() = default;
     virtual ModelTerms terms(double q) const = 0;
+    // rocking_rates(terms(q), side, ...) at q = side * theta1 >= 0: what the integrator evaluates at every stage. A
+    // model may override it with an equal (to rounding) but cheaper form.
+    virtual RockingRates rates(int side, double q, double theta_dot, double a_h, double a_v) const;
     // Sum m_i y_Gi(q) (the bodies' weight potential is g times it) and the height of N's point, both for q >= 0.
     virtual double mass_moment_height(double q) const = 0;
     virtual double load_height(double q) const = 0;

@@ -129,7 +129,7 @@ private:
     State derivative(double t, const State& y) const {
         // Most runs have no vertical motion: not evaluated then (two calls per stage otherwise).
         const double a_v = av_.is_zero() ? 0.0 : av_stages_(t);
-        const RockingRates r = rocking_rates(model_.terms(side_ * y[0]), side_, y[1], ah_stages_(t), a_v, g_, N_);
+        const RockingRates r = model_.rates(side_, side_ * y[0], y[1], ah_stages_(t), a_v);
         return {y[1], r.acceleration, r.ground_force * y[1]};
     }
 

@@ -95,6 +95,28 @@ TEST_P(ExactLagrangian, PaperModelIsLagrangianToo) {
     }
 }
 
+TEST_P(ExactLagrangian, StageRatesAreTheEquationOfMotionFromTheTerms) {
+    // rates() is what the integrator evaluates: the terms multiplied through by their common denominator, one
+    // division. It must be rocking_rates(terms()) to rounding, on both sides, up to near the collapse angle, with
+    // both ground motions (a wrong sign or a dropped power of the cosine changes it at the first digit).
+    constexpr double kReformulated = 1e-12;  // the same function evaluated in another order (relative)
+    const VsswGeometry w = make_vssw(4.0, 0.4, GetParam(), 0.2);
+    for (Kinematics k : {Kinematics::paper, Kinematics::exact}) {
+        const auto m = with_restitution(make_vssw_model(w, k), 0.9);  // wrappers must forward rates() too
+        for (double f : {0.0, 0.01, 0.3, 0.7, 0.95, 0.999}) {
+            const double q = f * m->collapse_angle();
+            for (int side : {1, -1}) {
+                const RockingRates want = rocking_rates(m->terms(q), side, 0.3, 2.5, -1.5, w.g, w.N);
+                const RockingRates got = m->rates(side, q, 0.3, 2.5, -1.5);
+                EXPECT_NEAR(got.acceleration, want.acceleration, kReformulated * std::abs(want.acceleration))
+                    << to_string(k) << " q " << q << " side " << side;
+                EXPECT_NEAR(got.ground_force, want.ground_force, kReformulated * std::abs(want.ground_force))
+                    << to_string(k) << " q " << q << " side " << side;
+            }
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(HingeRatios, ExactLagrangian, ::testing::Values(0.46, 0.5, 0.6, 0.7, 0.8));
 
 TEST(Model, PaperAndExactAgreeAsRotationVanishes) {
