@@ -132,7 +132,8 @@ Eq11Evaluator::Scaled Eq11Evaluator::scaled(double abs_theta1) const {
     const double ur_c2 = inertia2_ * cA1;       // cos^2 A2 times operator()'s upper_rotary
     Scaled r{};
     r.C_A = c3 * mass0_ + c * (m2_ * (cA1 * cA1 * c2 + Lc * Lc) + ur_c2 * cA1);
-    r.C_S = ur_c2 * (sA1 * c - k_ * cA1 * s) + m2_ * (sA1 * cA1 * c3 - Lc * c * (2.0 * cA1 * c - s * sA1) - k_ * cA1 * Lc);
+    r.C_S = ur_c2 * (sA1 * c - k_ * cA1 * s) +
+            m2_ * (sA1 * cA1 * c3 - Lc * c * (2.0 * cA1 * c - s * sA1) - k_ * cA1 * Lc);
     r.C_H_unscaled = m12_ * cA1 - m2_cos_ * c;
     r.C_V_unscaled = m12_ * sA1 + m2_cos_ * s;
     r.C_H = c3 * r.C_H_unscaled;

@@ -53,6 +53,11 @@ struct SimulationOptions {
     // Compute the supports' forces along a VSSW run (SupportDemand below): what tells whether the roller would have
     // to pull or a contact slide. Off only where the motion alone is wanted and its cost matters.
     bool monitor_supports = true;
+    // Aim steps at predicted landings (a free flight's symmetry, or the parabola through the state while the ground
+    // moves) and place the impact without a search when they land close: the same impacts to the accuracy goal at a
+    // third less work under a record. false: every impact is found by the search on the continuous extension and a
+    // re-step (the tests' reference for the predictions).
+    bool predict_landings = true;
     Roller roller = Roller::bilateral;  // a parapet has none: ignored
 };
 
@@ -106,6 +111,9 @@ struct SimulationResult {
     // the balance's terms (kinetic, potential, works, dissipated) met during the run, whichever is larger.
     double energy_balance_error = 0.0;
     long steps = 0, rejected_steps = 0;
+    // Events (impacts, overturning) located by the search on the continuous extension and a re-step; the others
+    // were placed where a step aimed at a predicted landing ended (SimulationOptions::predict_landings).
+    long searched_events = 0;
     SupportDemand supports;
 };
 
