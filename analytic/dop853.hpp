@@ -59,7 +59,13 @@ template <std::size_t N, class Rhs>
 class Dop853 {
 public:
     // scale[i] sets the absolute size of component i: errors are measured against rtol * max(scale, |y|).
-    Dop853(Rhs rhs, StepControl control, Vec<N> scale) : f_(rhs), c_(control), scale_(scale) {}
+    Dop853(Rhs rhs, StepControl control, Vec<N> scale)
+        : f_(rhs),
+          c_(control),
+          scale_(scale),
+          // Just below (safety / kMaxGrowth)^8, where safety / err^(1/8) is kMaxGrowth: every error norm under it
+          // gets the largest growth, whatever the rounding of the roots.
+          err_at_max_growth_(std::pow(control.safety / kMaxGrowth, 8) * (1.0 - 1e-9)) {}
 
     // Trial step of size h from (t, y) whose derivative there is dy; returns the weighted error norm (<= 1: accept).
     double step(double t, const Vec<N>& y, const Vec<N>& dy, double h, RkStep<N>& s) const {
@@ -106,10 +112,13 @@ public:
     // Next step size from an error norm (Hairer's controller: growth limited to [1/3, 6]).
     double next_step(double h, double err) const {
         if (fixed_step()) return c_.max_step;
+        // A step far more accurate than asked (every step a record's samples cut short) grows the most: decided by
+        // a comparison, which the processor predicts, so that the next step need not wait for the roots below
+        // (three dependent square roots and a division: a tenth of a record run's time per step, perf).
+        if (err <= err_at_max_growth_) return std::clamp(h * kMaxGrowth, c_.min_step, c_.max_step);
         // err^(-1/8) as three square roots: the same number to rounding, four instructions for std::pow's ~70
         // (callgrind).
-        const double factor =
-            err == 0.0 ? 6.0 : std::clamp(c_.safety / std::sqrt(std::sqrt(std::sqrt(err))), 1.0 / 3.0, 6.0);
+        const double factor = std::clamp(c_.safety / std::sqrt(std::sqrt(std::sqrt(err))), 1.0 / 3.0, kMaxGrowth);
         return std::clamp(h * factor, c_.min_step, c_.max_step);
     }
     bool fixed_step() const { return c_.min_step >= c_.max_step; }
@@ -150,9 +159,11 @@ private:
         (stage<First + static_cast<int>(I)>(s), ...);
     }
 
+    static constexpr double kMaxGrowth = 6.0;
     Rhs f_;
     StepControl c_;
     Vec<N> scale_;
+    double err_at_max_growth_;
 };
 
 }  // namespace vssw
