@@ -5,8 +5,10 @@
 //  - At rest the wall stays put until the tipping moment of the ground acceleration beats the restoring one at
 //    theta1 = 0 (the equation of motion at rest; Eq. (12) for the VSSW). It lifts off towards -sgn(a_h).
 //  - Rocking on side s is integrated with Dormand-Prince 8(5,3), stepping onto the ground motion's breakpoints.
-//  - theta1 reaching 0 is an impact: located on the integrator's own step (secant on the step size), then
-//    theta1'+ = e theta1'-.
+//  - theta1 reaching 0 is an impact: located on the integrator's own step, then theta1'+ = e theta1'-. Most landings
+//    are predicted (a free flight's symmetry; under a moving ground the parabola through theta1, theta1', theta1'')
+//    and the step aimed there; the rest are found on the continuous extension and reached by a re-step.
+//    SimulationOptions::predict_landings.
 //  - After an impact whose next flight would rise less than rest_amplitude * alpha while the ground cannot tip the
 //    wall, the remaining impacts (a geometric series) are summed in closed form: the wall stops at a finite time.
 //  - |theta1| reaching the model's collapse angle is overturning; the run ends there.
