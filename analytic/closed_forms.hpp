@@ -39,8 +39,8 @@ struct Eq11Coefficients {
 Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1);
 
 // The same coefficients for one wall with its constant factors (masses over R1^2, the ratios of the constant
-// angles' functions) worked out once and one division per evaluation: the paper model evaluates Eq. (11) at every
-// integrator stage. eq11_coefficients(w, q) is Eq11Evaluator(w)(q).
+// angles' functions) worked out once and one division per evaluation; scaled() is the form the integrator's stages
+// evaluate (no division at all). eq11_coefficients(w, q) is Eq11Evaluator(w)(q).
 class Eq11Evaluator {
 public:
     explicit Eq11Evaluator(const VsswGeometry& w);

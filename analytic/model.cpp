@@ -111,7 +111,8 @@ public:
         const double cpsi2 = std::max(1.0 - sq(g.spsi), 1e-30);
         g.cpsi = std::sqrt(cpsi2);
         // 1/cos(psi) as cos(psi) / cos^2(psi): the square root and the division run side by side instead of one
-        // after the other (every stage waits on this; the same number to rounding).
+        // after the other (the same number to rounding; the integrator's stages use rates() below, with no division
+        // before the last).
         const double inv_cpsi = g.cpsi * (1.0 / cpsi2);
         g.dpsi = -w_.s * g.ca * inv_cpsi;
         g.ddpsi = -w_.s * (g.sa * g.cpsi + g.ca * g.spsi * g.dpsi) * inv_cpsi * inv_cpsi;

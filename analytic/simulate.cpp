@@ -42,12 +42,14 @@ constexpr double kTaylorSpan = 1e-8;  // [s]
 // second-order predictions agree within this: on Fig. 6 the second-order error was a tenth of their difference, so
 // the aimed step lands within kTaylorSpan. A prediction that misses costs a step, never accuracy.
 constexpr double kFlightPredictionAgreement = 10.0 * kTaylorSpan;  // [s]
-// Under a moving ground a landing is predicted at each step's start from theta1, theta1' and theta1'' (the parabola
-// through them, parabola_landing) and the step cut to end there when the landing falls inside it. A cut step that
+// In a flight the symmetry cannot predict (the ground moves, or the flight did not start from theta1 = 0 with the
+// ground still: a release, a flight after the top left the roller) the landing is predicted at each step's start
+// from theta1, theta1' and theta1'' (the parabola through them, parabola_landing) and the step cut to end there when
+// the landing falls inside it. A cut step that
 // ends within kShortLandingSpan of the landing is carried there by classical Runge-Kutta steps, each aimed by the
 // parabola again, until the gap is within kTaylorSpan (land_short): no search on the continuous extension and no
 // re-step of the whole step (a record run's landings cost 27 right-hand sides each that way, 4 to 8 this way). Their
-// error needs no estimate: over 1e-4 s the 4th-order local error, of order dt^5 |y^(5)| / 120, is below 1e-20 rad
+// error needs no estimate: over 1e-4 s the 4th-order local error, of order dt^5 |y^(5)| / 120, is about 1e-19 rad
 // for the |y^(5)| of a rocking wall (some 1e3 rad/s^5 under a record), as long as no breakpoint of the ground motion
 // lies in the span (a kink of the record's slope would leave an error of order dt^2): such landings are searched.
 constexpr double kShortLandingSpan = 1e-4;  // [s]
@@ -149,10 +151,11 @@ private:
         State operator()(double t, const State& y) const { return sim->derivative(t, y); }
     };
 
+    // Most runs have no vertical motion: not evaluated then (two calls per stage otherwise).
+    double vertical_at_stage(double t) const { return av_.is_zero() ? 0.0 : av_stages_(t); }
+
     State derivative(double t, const State& y) const {
-        // Most runs have no vertical motion: not evaluated then (two calls per stage otherwise).
-        const double a_v = av_.is_zero() ? 0.0 : av_stages_(t);
-        const RockingRates r = model_.rates(side_, side_ * y[0], y[1], ah_stages_(t), a_v);
+        const RockingRates r = model_.rates(side_, side_ * y[0], y[1], ah_stages_(t), vertical_at_stage(t));
         return {y[1], r.acceleration, r.ground_force * y[1]};
     }
 
@@ -249,8 +252,8 @@ private:
     void record_supports(double t, const State& y, double theta_ddot) {
         if (!monitoring()) return;
         // The ground motion read as the stages read it (the record's current line, no search: 3 % of a record run).
-        const double a_v = av_.is_zero() ? 0.0 : av_stages_(t);
-        last_roller_ = supports_.record(t, side_, y[0], y[1], theta_ddot, ah_stages_(t), a_v, out_.supports);
+        last_roller_ = supports_.record(t, side_, y[0], y[1], theta_ddot, ah_stages_(t), vertical_at_stage(t),
+                                        out_.supports);
     }
     // The roller's reaction at time tau inside an accepted step (its continuous extension built).
     double roller_at(const RkStep<3>& step, double tau) const {
@@ -269,7 +272,8 @@ private:
     Event rocking_phase(double& t, State& y);
     void polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const;
     bool may_turn(const RkStep<3>& step) const;
-    std::optional<double> land_short(double t, State y, State dy, double limit, State& landing) const;
+    std::optional<double> land_short(double t, State y, State dy, double limit, State& landing,
+                                     State& landing_dy) const;
 
     const RockingModel& model_;
     const GroundMotion& ah_;
@@ -409,14 +413,17 @@ void Simulator::polish_event(Event ev, double t, const State& y, const State& dy
 
 // From (t, y) within kShortLandingSpan of a landing, with dy = f(t, y): classical Runge-Kutta steps, each aimed at
 // the parabola's landing, until the gap is within kTaylorSpan, then y + dh f(y) as after a cut step. Returns the
-// impact time with its state in `landing`, or nothing when a step would reach `limit` (the ground motion's next
-// breakpoint) or the landing is not reached in kMaxShortLandingSteps: the caller then searches for it.
-std::optional<double> Simulator::land_short(double t, State y, State dy, double limit, State& landing) const {
+// impact time with its state and that state's derivative in `landing` and `landing_dy` (from within kTaylorSpan of
+// it), or nothing when a step would reach `limit` (the ground motion's next breakpoint) or the landing is not reached
+// in kMaxShortLandingSteps: the caller then searches for it.
+std::optional<double> Simulator::land_short(double t, State y, State dy, double limit, State& landing,
+                                            State& landing_dy) const {
     for (int i = 0; i < kMaxShortLandingSteps; ++i) {
         const double d = parabola_landing(side_ * y[0], side_ * y[1], side_ * dy[1]);
         if (!(std::abs(d) < kShortLandingSpan) || t + d >= limit) return std::nullopt;
         if (std::abs(d) < kTaylorSpan) {
             for (std::size_t n = 0; n < 3; ++n) landing[n] = y[n] + d * dy[n];
+            landing_dy = dy;
             return t + d;
         }
         State z{};
@@ -456,7 +463,8 @@ Event Simulator::rocking_phase(double& t, State& y) {
         // Cap the first step to 1.5 times the flight 2|v|/|a| predicted with the restoring acceleration at rest: the
         // real flight is longer (restoring moments fall as |theta1| grows), so the scan's first point (3/8 of the
         // flight) is still in the air, while a short flight usually ends inside this one step. Within a step the
-        // side is fixed and the right-hand side smooth through theta1 = 0, so a step may overshoot the landing.
+        // side is fixed and the right-hand side smooth through theta1 = 0, so a step may overshoot the landing. (When
+        // the parabola predicts the landing, the step is aimed at it instead: the flight itself, kShortLandingSpan.)
         const double a = std::abs(dy[1]);
         if (a > 0.0) h_ = std::min(h_, 3.0 * std::abs(y[1]) / a);
     }
@@ -465,8 +473,8 @@ Event Simulator::rocking_phase(double& t, State& y) {
     // motion is even in theta1' and has no time in it once the ground is still): it lands at 2 t_turn - t_launch.
     // The step that reaches that time is cut to end there, and when it lands within kTaylorSpan the impact is placed
     // by y + dh f(y) instead of by the search on the continuous extension and a re-step (a quarter of a free
-    // vibration's right-hand sides). A prediction only: a step that does not land there goes on as any other. While
-    // the ground moves, the parabola predicts instead (kShortLandingSpan).
+    // vibration's right-hand sides). A prediction only: a step that does not land there goes on as any other. In the
+    // other flights the parabola predicts instead (kShortLandingSpan).
     const double launch = t, launch_speed = std::abs(y[1]);
     bool symmetric = starts_at_zero && y[1] != 0.0 && t >= motion_end_;
     if (!symmetric) flights_ = FlightHistory{};
@@ -519,7 +527,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
         double landing_dh = 0.0;  // the Taylor step to the landing from a step that ended at the aim
         bool landed = false;
         std::optional<double> short_landing;  // the impact time reached by land_short from the aimed step's end
-        State landing{};                      // and the state there
+        State landing{}, landing_dy{};        // and the state there, with its derivative
         if (to_aim) {
             aim = std::numeric_limits<double>::infinity();
             const double slope = side_ * step.y1[1];
@@ -527,20 +535,20 @@ Event Simulator::rocking_phase(double& t, State& y) {
                 landing_dh = -side_ * step.y1[0] / slope;
                 landed = std::abs(landing_dh) < kTaylorSpan;
                 if (!landed && !symmetric && std::abs(landing_dh) < kShortLandingSpan)
-                    short_landing = land_short(t + h, step.y1, step.end_derivative(), breakpoint, landing);
+                    short_landing =
+                        land_short(t + h, step.y1, step.end_derivative(), breakpoint, landing, landing_dy);
             }
             if (landed || short_landing) ev = Event::impact;
         }
         const bool turns = may_turn(step);
-        const bool outputs = opt_.keep_samples && opt_.output_dt > 0.0 && next_output_ <= t + h + 1e-12;
+        // Where the step's motion ends: a landing placed from it (up to kShortLandingSpan past its end; the output
+        // times in between are read off the continuous extension just past the step), else the step's end (a search
+        // below may move it back).
+        double event_time = short_landing ? *short_landing : landed ? t + h + landing_dh : t + h;
+        const bool outputs = opt_.keep_samples && opt_.output_dt > 0.0 && next_output_ <= event_time + 1e-12;
         const bool search = ev != Event::none && !landed && !short_landing;
         if (search || turns || outputs) integrator_.make_dense(step);
-
-        // (Output times between the step's end and a short landing ahead of it, at most kShortLandingSpan later,
-        // are read off the continuous extension just past its end.)
-        double event_time = short_landing ? *short_landing : t + h + landing_dh;
         if (search) {
-            ++out_.searched_events;
             // The first sub-interval of the continuous extension where the event function changes sign.
             double lo = t, hi = t + h;
             double prev = starts_at_zero ? 1.0 : (ev == Event::impact ? side_ * y[0] : collapse_ - side_ * y[0]);
@@ -568,6 +576,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
                                                          t));
                 continue;
             }
+            ++out_.searched_events;
             shrink_bracket([&](double tau) {
                 const double th = step.component_at(tau, 0);
                 return ev == Event::impact ? side_ * th : collapse_ - side_ * th;
@@ -603,6 +612,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
             h += landing_dh;
         } else if (short_landing) {  // likewise
             y = landing;
+            dy = landing_dy;
             h = event_time - t;
         } else if (ev != Event::none) {
             polish_event(ev, t, y, dy, event_time - t, event_step);
@@ -621,10 +631,14 @@ Event Simulator::rocking_phase(double& t, State& y) {
         record_supports(t, y, dy[1]);
         if (monitoring() && roller_before >= 0.0 && last_roller_ < 0.0 &&
             (first_tension || (unilateral() && ev == Event::none))) {
-            // The roller turned tensile inside the step: place the moment on the continuous extension.
+            // The roller turned tensile inside the step: place the moment on the continuous extension. (Past the
+            // step's end, in a landing's last kShortLandingSpan, the landing's time stands for it.)
             if (!step.dense_ready) integrator_.make_dense(step);
             double lo = step.t0, hi = std::min(t, step.t0 + step.h);
-            shrink_bracket([&](double tau) { return roller_at(step, tau); }, lo, hi, opt_.event_time_tol);
+            if (roller_at(step, hi) < 0.0)
+                shrink_bracket([&](double tau) { return roller_at(step, tau); }, lo, hi, opt_.event_time_tol);
+            else
+                hi = t;
             if (first_tension) out_.supports.roller_tension_at = hi;
             if (unilateral() && ev == Event::none) {  // the top leaves the roller there, not at the step's end
                 t = hi;

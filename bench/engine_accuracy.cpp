@@ -75,7 +75,8 @@ int main(int argc, char** argv) {
                     const auto t0 = std::chrono::steady_clock::now();
                     const compare::EngineComparison c = compare::compare_with_analytic(*engine, s, w.scene, 0.5);
                     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                    // The plastic impact of the whole new mechanism (roller included; README "Bullet"), VSSW only.
+                    // The plastic impact of the whole new mechanism (roller included; docs/engines.md "Bullet"), VSSW
+                    // only.
                     const double whole =
                         w.scene.vssw ? c.restitution.engine / restitution_whole_mechanism(*w.scene.vssw) - 1.0 : NAN;
                     std::printf("| %s | %g | %+.2e | %+.2e | %+.2e | %+.2e | %.1f |\n", w.name.c_str(), dt,

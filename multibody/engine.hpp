@@ -52,9 +52,9 @@ struct Excitation {
 };
 
 // Solver iterations a caller may ask of an engine (`vssw compare --iterations`, a study's settings): Bullet's
-// sequential-impulse iterations per step (default 20; 100 changes nothing measured, README "Bullet"), ODE's quickstep
-// iterations (default 20), unused by Simbody and the analytic model. The cost grows linearly with them; 1000, 50 times
-// the default, still ends a compare in minutes rather than days.
+// sequential-impulse iterations per step (default 20; 100 changes nothing measured, docs/engines.md "Bullet"), ODE's
+// quickstep iterations (default 20), unused by Simbody and the analytic model. The cost grows linearly with them; 1000,
+// 50 times the default, still ends a compare in minutes rather than days.
 constexpr int kMaxIterations = 1000;
 
 // Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (README).
@@ -161,7 +161,7 @@ std::vector<std::string> missing_engines();
 std::string engine_display_name(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
 // except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold
-// bisections take minutes (README, "Simbody"); name it to include it.
+// bisections take minutes (docs/engines.md, "Simbody"); name it to include it.
 std::vector<std::string> default_compared_engines();
 
 }  // namespace vssw::multibody

@@ -2,7 +2,7 @@
 // An engine whose library is not re-entrant (ODE: process-wide state, runs_concurrently() false) run beside itself on
 // several cores: a caller's piece of work (a study's task: a threshold search's ten runs, a free vibration) in a forked
 // child of its own, its answer sent back through a pipe. The results are those of the same work in the caller's
-// process; what it costs more is a fork (README, "ODE": threads).
+// process; what it costs more is a fork (docs/engines.md, "ODE": threads).
 //
 // Off with the environment variable VSSW_WORKER_PROCESSES=0 (then such an engine's tasks take turns, as before).
 // Only a pool of more than one thread uses it: with one thread nothing forks.

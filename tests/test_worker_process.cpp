@@ -240,7 +240,7 @@ TEST(WorkerProcess, AFailedTaskHasTheRowsOfTheTaskThatRuns) {
 }
 
 // The validation suite runs ODE in its own process, its tasks taking turns on two threads (no worker processes there:
-// README, "ODE"): its rows, failures and traces are those of one thread.
+// docs/engines.md, "ODE"): its rows, failures and traces are those of one thread.
 TEST(WorkerProcess, OdesSuiteRowsAreTheSameOnOneAndTwoThreads) {
     if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
     ::unsetenv("VSSW_WORKER_PROCESSES");

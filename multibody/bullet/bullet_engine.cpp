@@ -117,7 +117,7 @@ public:
         info.m_splitImpulse = 1;
         // Bullet splits only a penetration deeper than this threshold (penetration is negative): +1e9 splits every
         // one. (It was -1e9, meant as "always" but meaning "never": penetration was pushed out through the velocity
-        // with m_erp, energy in at every landing; measured in the README, "Bullet".)
+        // with m_erp, energy in at every landing; measured in the docs/engines.md, "Bullet".)
         info.m_splitImpulsePenetrationThreshold = 1e9;
         info.m_erp2 = knobs.erp;
 
@@ -221,12 +221,12 @@ public:
     }
     EngineSettings default_settings() const override {
         EngineSettings s;
-        // Measured (README, "Bullet"): at 1, 0.5 and 0.2 ms with 10 iterations every wall of the issue is within the
-        // targets, errors in threshold and period falling with the step; 20 to 200 iterations move the restitution by
-        // 0.13 % at most (Table 1 #1 at xi 0.5). 1 ms is the cheapest of them. The flight off the roller that once
-        // kept the step at 0.2 ms (Table 1 #14, xi 0.5, from 0.8 alpha1: +3.16 % at 1 ms) was N's torque missing from
-        // Bullet's friction rows (simulate()); with N as an impulse it is -0.063 % at 1 ms against the analytic model
-        // with the unilateral roller, ODE's figure.
+        // Measured (docs/engines.md, "Bullet"): at 1, 0.5 and 0.2 ms with 10 iterations every wall of the issue is
+        // within the targets, errors in threshold and period falling with the step; 20 to 200 iterations move the
+        // restitution by 0.13 % at most (Table 1 #1 at xi 0.5). 1 ms is the cheapest of them. The flight off the roller
+        // that once kept the step at 0.2 ms (Table 1 #14, xi 0.5, from 0.8 alpha1: +3.16 % at 1 ms) was N's torque
+        // missing from Bullet's friction rows (simulate()); with N as an impulse it is -0.063 % at 1 ms against the
+        // analytic model with the unilateral roller, ODE's figure.
         s.dt = 1e-3;
         s.iterations = kDefaultIterations;
         return s;
@@ -309,7 +309,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         // reads the force's linear impulse but not its angular one; the normal rows read both). N is the one force
         // here with a torque about a centre of mass, so the hinge slid every step by the spin N's torque gave in it
         // (5.4 mm/s at 1 ms on Table 1 #14 at xi 0.5 off the roller), friction doing work F v_t: a loss first order
-        // in the step (README "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
+        // in the step (docs/engines.md "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
         if (N > 0.0) top_body.applyImpulse(btVector3(0, -N * dt, 0), top_centre() - top_body.getCenterOfMassPosition());
         w.step(dt);
         ++out.steps;

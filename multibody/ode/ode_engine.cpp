@@ -15,7 +15,7 @@
 //    kinematic ground) at the top corner on the pivot's side, holding x <= +b (right corner) or x >= -b (left);
 //    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards; README,
 //    "Bullet"). Only the guide whose corner is further out is given to the solver (Bullet gives both: with one,
-//    its xi 0.5 restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target, README "ODE");
+//    its xi 0.5 restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target, docs/engines.md "ODE");
 //  - N: a force at the centre of the top face, only when xi > 0; ground motion: pseudo-forces -m a_h(t) at the centres
 //    of mass at each step's midpoint, or (moving_supports = 1) the ground and the roller's anchor moving.
 //
@@ -353,11 +353,12 @@ private:
 
     // The roller: a frictionless contact between the upper block and the ground at the top corner on the pivot's
     // side, normal (-side, 0, 0) pointing back into the allowed side. Only the guide whose corner is further out is
-    // given to the solver (README, "Bullet": switching by the sign of theta1 let the free corner drift at rest, both
-    // at once made a redundant loop near theta1 = 0). It is given every step, speculative while its corner is inside
-    // the line: the solver lets the corner reach the line within the step and no further, so the roller engages in
-    // the very step the guides switch sides at an impact (measured on the Fig. 6 VSSW at 0.05 ms: in the impact step
-    // the new guide's corner starts within 1e-10 m of its line and the guide takes its share of the impulse).
+    // given to the solver (docs/engines.md, "Bullet": switching by the sign of theta1 let the free corner drift at
+    // rest, both at once made a redundant loop near theta1 = 0). It is given every step, speculative while its corner
+    // is inside the line: the solver lets the corner reach the line within the step and no further, so the roller
+    // engages in the very step the guides switch sides at an impact (measured on the Fig. 6 VSSW at 0.05 ms: in the
+    // impact step the new guide's corner starts within 1e-10 m of its line and the guide takes its share of the
+    // impulse).
     void add_roller() {
         const double b = sizes_.b, x0 = ground_x();
         const Vec2 right = world_point(upper_, b, sizes_.h_upper), left = world_point(upper_, -b, sizes_.h_upper);
@@ -432,7 +433,7 @@ public:
         // -0.19 % at 1 ms, -0.015 to -0.038 % at 0.2 ms, -0.004 to -0.009 % at 0.05 ms. 1 ms meets every target
         // in `vssw bench` and on the full validation suite (README, "Defaults, by measurement") for a fifth of
         // 0.2 ms's cost. The error grows as dt over the period: a wall much smaller (faster) than Table 1's needs a
-        // smaller step (README, "ODE"). It is also the Bullet adapter's step.
+        // smaller step (docs/engines.md, "ODE"). It is also the Bullet adapter's step.
         s.dt = 1e-3;
         s.iterations = 0;  // the direct solver has none; dWorldQuickStep (quickstep = 1) takes 20 unless set
         return s;
