@@ -7,6 +7,7 @@
 
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
+#include "apps/model_validity.hpp"
 #include "apps/report_history.hpp"
 #include "apps/trajectory_csv.hpp"
 
@@ -20,6 +21,7 @@ Command add_history_command(CLI::App& root) {
         HistoryRequest request;
         std::string csv;
         bool json = false;
+        bool strict = false;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = root.add_subcommand(
@@ -41,6 +43,9 @@ Command add_history_command(CLI::App& root) {
                     "write the trajectory to this file, or with '-' to standard output (the summary then goes to the "
                     "error stream): t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    cmd->add_flag("--strict", o->strict,
+                  "exit 3 when the model's own assumptions fail along the run (its warnings), after writing the "
+                  "outputs (for CI)");
     cmd->footer(
         "Exactly one of --record and --pulse is required. Accelerations given in g use g0 = 9.80665 m/s^2.\n"
         "JSON keys: record (path, null for a pulse), input, scale_factor, pga_g (after scaling), duration [s], model,\n"
@@ -65,6 +70,7 @@ Command add_history_command(CLI::App& root) {
                 else
                     print_history_summary(summary, run,
                                           "Time history of the " + describe_wall(o->wall, run.chosen.kind));
+                if (o->strict) refuse_warnings(run.warnings);
             }};
 }
 

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "apps/simulation_failure.hpp"
+
 
 namespace vssw::cli {
 
@@ -43,6 +45,12 @@ void add_support_rows(Table& table, const SimulationResult& result) {
              "", d.roller_departures > 0 ? fmt::format("{} s in all (unilateral roller)", num(d.time_off_roller)) : "")
         .add("friction needed, base / hinge", fmt::format("{} / {}", num(d.base_friction), num(d.hinge_friction)), "",
              "largest |T|/N");
+}
+
+void refuse_warnings(const std::vector<std::string>& warnings) {
+    if (warnings.empty()) return;
+    throw SimulationFailure(fmt::format("--strict: the model's assumptions failed along the run ({} warning{}): {}",
+                                        warnings.size(), warnings.size() == 1 ? "" : "s", warnings.front()));
 }
 
 }  // namespace vssw::cli

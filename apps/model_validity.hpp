@@ -16,6 +16,9 @@ namespace vssw::cli {
 
 // analytic/validity.hpp's warnings for the model chosen on the command line.
 std::vector<std::string> validity_warnings(const ChosenModel& chosen, const SimulationResult& result);
+// `--strict` (free, history): a run whose own assumptions failed is not an answer to build on. Throws
+// SimulationFailure (exit 3) naming how many warnings there were and the first; called once the outputs are written.
+void refuse_warnings(const std::vector<std::string>& warnings);
 // {law, restitution}: the impact law and the ratio it gives.
 Json impact_json(const ChosenModel& chosen);
 // roller {model, min_reaction, t_min_reaction, tension_at, departures, time_off}, friction_needed {base, hinge},

@@ -138,11 +138,14 @@ std::vector<Case> make_cases() {
                          return s;
                      }});
     c.push_back({"chattering-e0.05", "Fig. 6 VSSW, analytic model with impact ratio 0.05 (Zeno: impacts accumulate) "
-                 "from 0.5 alpha: comes to rest at a finite time, no overturning; engines refuse (no impact-ratio knob)",
+                 "from 0.5 alpha: comes to rest at a finite time, no overturning; engines refuse (their landing's ratio "
+                 "is what their contacts make of it, not a setting)",
                  true,
                  [](const std::string& engine, const EngineSettings& d, bool) {
                      if (engine != "analytic")
-                         throw InputError(engine + " has no impact-ratio knob: its landing is the contact's own");
+                         throw InputError(engine + " has no setting for the whole landing's impact ratio: its "
+                                                   "contacts make it (Siconos's per-contact coefficients included, "
+                                                   "docs/engines.md \"Siconos\")");
                      Setup s = start(fig6_vssw(), sampled(d));
                      s.settings.knobs["restitution"] = 0.05;
                      s.excitation.theta0 = kRelease * s.scene.alpha();

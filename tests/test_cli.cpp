@@ -743,6 +743,31 @@ TEST(CliAssumptions, HistoryOfAHighHingeOverturnsAndWarns) {
     EXPECT_TRUE(eq3) << j["warnings"].dump();
 }
 
+// --strict: a warning turns into exit 3 after the outputs are written; a run without warnings still exits 0.
+TEST(CliAssumptions, StrictRefusesARunWhoseAssumptionsFailed) {
+    const CliResult pulls = run_cli(std::vector<std::string>{"free", "--theta0", "0.8", "--kinematics", "exact",
+                                                             "--json", "--strict"} + t1n7_heavy());
+    EXPECT_EQ(pulls.code, vssw::cli::kExitSimulationFailed);
+    EXPECT_NE(pulls.err.find("--strict"), std::string::npos) << pulls.err;
+    EXPECT_NE(pulls.err.find("roller would have to pull"), std::string::npos) << pulls.err;
+    EXPECT_EQ(Json::parse(pulls.out)["warnings"].size(), 1u);  // the JSON is still written, warning included
+
+    const CliResult overturns = run_cli({"history", "--record", kRinaldi, "--scale", "0.25", "--height", "3",
+                                         "--thickness", "0.143", "--hinge", "0.95", "--strict"});
+    EXPECT_EQ(overturns.code, vssw::cli::kExitSimulationFailed);
+    EXPECT_NE(overturns.err.find("Eq. (3)"), std::string::npos) << overturns.err;
+
+    const CliResult clean =
+        run_cli(std::vector<std::string>{"free", "--theta0", "0.5", "--kinematics", "exact", "--strict"} + kFig6);
+    EXPECT_EQ(clean.code, vssw::cli::kExitOk) << clean.err;
+    // A sine pulse of 0.4 g rocks the Fig. 6 wall to 0.34 alpha1 with no assumption failing (0.5 g overturns it).
+    const CliResult clean_history =
+        run_cli(std::vector<std::string>{"history", "--pulse", "sine", "--amplitude", "0.4", "--pulse-period", "0.5",
+                                         "--kinematics", "exact", "--strict"} +
+                kFig6);
+    EXPECT_EQ(clean_history.code, vssw::cli::kExitOk) << clean_history.err;
+}
+
 TEST(CliAssumptions, CompareCarriesTheAnalyticModelsWarnings) {
     const Json j = run_json(std::vector<std::string>{"compare", "--engine", "analytic", "--theta0", "0.8"} +
                             t1n7_heavy());

@@ -11,6 +11,9 @@ REPO = pathlib.Path(__file__).resolve().parents[2]
 # CTest gives the program's path (python/CMakeLists.txt); by hand, the build folder the README uses.
 VSSW = pathlib.Path(os.environ.get("VSSW_EXECUTABLE", REPO / "build" / "vssw"))
 RECORD = REPO / "data" / "NGA_no_1063_RRS228.AT2"  # Rinaldi, Northridge 1994 (data/SOURCES.md)
+# The Fig. 6 wall of the paper (README "Quick start"): keyword arguments for the module, flags for the program.
+FIG6 = dict(height=4.0, thickness=0.4, hinge=0.7)
+FIG6_FLAGS = ["--height", "4", "--thickness", "0.4", "--hinge", "0.7"]
 
 # Keys whose values are measured, not computed: a run's own wall-clock time.
 TIMING_KEYS = {"wall_time_s"}

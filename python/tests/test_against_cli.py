@@ -7,11 +7,7 @@ import numpy as np
 import pytest
 
 import vssw
-from conftest import RECORD, REPO, without_timing
-
-# The Fig. 6 wall of the paper (README "Quick start").
-FIG6 = dict(height=4.0, thickness=0.4, hinge=0.7)
-FIG6_FLAGS = ["--height", "4", "--thickness", "0.4", "--hinge", "0.7"]
+from conftest import FIG6, FIG6_FLAGS, RECORD, REPO, without_timing
 
 
 @pytest.mark.parametrize(

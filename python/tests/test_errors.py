@@ -5,10 +5,7 @@ import numpy as np
 import pytest
 
 import vssw
-from conftest import REPO
-
-FIG6 = dict(height=4.0, thickness=0.4, hinge=0.7)
-FIG6_FLAGS = ["--height", "4", "--thickness", "0.4", "--hinge", "0.7"]
+from conftest import FIG6, FIG6_FLAGS, REPO
 PREFIX = "vssw: error: "
 # `check` measures the threshold by bisection on simulations to 1e-4 (README "Studies"); twice that as relative room.
 THRESHOLD_BISECTION_RTOL = 2e-4
@@ -78,6 +75,23 @@ def test_a_failed_simulation_is_a_simulation_error_with_the_programs_message(cli
     assert raised.value.code == 3
     assert "vssw: simulation failed: " + str(raised.value) == line
     assert "energy balance" in str(raised.value)
+
+
+def test_strict_turns_a_warning_into_a_simulation_error(cli):
+    # Table 1 #7 (data/table1.csv) at xi 0.5 released from 0.8 alpha1: the exact kinematics need the roller to pull
+    # (one warning). Without strict the JSON carries the warning; with it, the program's exit 3 and its message.
+    kwargs = dict(height=4.88, thickness=0.2, hinge=0.5, xi=0.5, theta0=0.8, kinematics="exact")
+    flags = ["--height", "4.88", "--thickness", "0.2", "--hinge", "0.5", "--xi", "0.5", "--theta0", "0.8",
+             "--kinematics", "exact", "--strict"]
+    assert len(vssw.free(**kwargs)["warnings"]) == 1
+    code, line = cli.error_line(["free", *flags])
+    assert code == 3
+    with pytest.raises(vssw.SimulationError) as raised:
+        vssw.free(**kwargs, strict=True)
+    assert raised.value.code == 3
+    assert "vssw: simulation failed: " + str(raised.value) == line
+    assert str(raised.value).startswith("--strict")
+    assert vssw.free(**FIG6, theta0=0.5, kinematics="exact", strict=True)["warnings"] == []
 
 
 def test_a_value_of_an_unusable_type_is_a_value_error():

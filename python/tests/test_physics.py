@@ -5,6 +5,7 @@ import math
 import pytest
 
 import vssw
+from conftest import FIG6
 
 # Computed closed forms compared across sizes: only rounding differs (a few ulps of each of a dozen operations).
 CLOSED_FORM_RTOL = 1e-12
@@ -12,7 +13,6 @@ CLOSED_FORM_RTOL = 1e-12
 # mirror-image paths with the same steps, so they agree far below its tolerance; 1e-9 leaves room for rounding.
 MIRROR_RTOL = 1e-9
 
-FIG6 = dict(height=4.0, thickness=0.4, hinge=0.7)
 
 
 @pytest.mark.parametrize("scale", [0.01, 0.5, 3.0, 100.0])

@@ -169,7 +169,8 @@ def wall(**options):
 
 def free(trace=False, **options):
     """`vssw free`: free vibration released from rest at theta0 (a fraction of alpha). Options: height, thickness,
-    hinge, theta0 (required), model, kinematics, impact, roller, xi, density, g, rtol, output_dt, csv. Returns the
+    hinge, theta0 (required), model, kinematics, impact, roller, xi, density, g, rtol, output_dt, csv, strict (True:
+    SimulationError when the model's own assumptions fail along the run, i.e. any warning). Returns the
     JSON: impacts [{t, theta_dot_before, theta_dot_after}], peaks, peak_times, stop_time, falls, warnings, roller,
     ...; with trace=True also "trace", as for history()."""
     return _with_trace("free", trace, options)
