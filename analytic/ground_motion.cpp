@@ -351,16 +351,34 @@ GroundMotion require_two_samples(std::vector<double> times, std::vector<double> 
 GroundMotion parse_single_column(const std::vector<std::string>& lines, const std::string& path, double factor,
                                  double dt) {
     std::vector<double> values;
-    for (std::size_t i = 0; i < lines.size(); ++i)
-        for (const std::string& field : fields_of(lines[i], has_comma(lines[i]))) {
-            // "0,0123" is a decimal comma, not the values 0 and 123: a whole number written with a leading zero
-            // is what the comma's second half looks like, and no accelerogram writes its values so.
-            if (field.size() > 1 && field[0] == '0' && std::isdigit(static_cast<unsigned char>(field[1])))
-                throw InputError(fmt::format("{}:{}: '{}' after a comma looks like a decimal comma; write the "
-                                             "decimals with a point",
-                                             path, i + 1, field));
+    auto whole_number = [](const std::string& s, bool signed_) {
+        const std::size_t from = signed_ && !s.empty() && (s[0] == '-' || s[0] == '+') ? 1 : 0;
+        return s.size() > from &&
+               std::all_of(s.begin() + static_cast<std::ptrdiff_t>(from), s.end(),
+                           [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+    };
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const bool by_commas = has_comma(lines[i]);
+        const std::vector<std::string> fields = fields_of(lines[i], by_commas);
+        for (std::size_t j = 0; j < fields.size(); ++j) {
+            const std::string& field = fields[j];
+            if (by_commas && j > 0) {
+                // "0,0123" is a decimal comma, not the values 0 and 123: a whole number written with a leading
+                // zero is what the comma's second half looks like, and no accelerogram writes its values so.
+                if (field.size() > 1 && field[0] == '0' && std::isdigit(static_cast<unsigned char>(field[1])))
+                    throw InputError(fmt::format("{}:{}: '{}' after a comma looks like a decimal comma; write the "
+                                                 "decimals with a point",
+                                                 path, i + 1, field));
+                // "0,5" and "-1,25" likewise: two whole numbers either side of a comma are one decimal, not two
+                // accelerations (whole numbers of a unit are separated by blanks instead).
+                if (whole_number(fields[j - 1], true) && whole_number(field, false))
+                    throw InputError(fmt::format("{}:{}: '{},{}' looks like a decimal comma; write the decimals with "
+                                                 "a point (whole numbers separated by blanks, not commas)",
+                                                 path, i + 1, fields[j - 1], field));
+            }
             values.push_back(acceleration_of(field, factor, path, i + 1));
         }
+    }
     std::vector<double> times = times_at_step(values.size(), dt);  // before `values` is moved from
     return require_two_samples(std::move(times), std::move(values), path);
 }
@@ -385,7 +403,10 @@ GroundMotion parse_table(const std::vector<std::string>& lines, std::size_t head
                                      *format.time_column));
     std::size_t accel = 0;
     if (format.accel_column) accel = column_index(header, *format.accel_column, "acceleration column", path, header_line);
-    else if (header.size() == 2 && !format.dt) accel = 1;
+    else if (header.size() == 2 && !format.dt)  // the column that is not time (the second when none is named)
+        accel = format.time_column
+                    ? 1 - column_index(header, *format.time_column, "time column", path, header_line)
+                    : 1;
     else if (header.size() != 1)
         throw InputError(fmt::format("{}:{}: name the acceleration column (columns: {})", path, header_line,
                                      fmt::join(header, ", ")));

@@ -48,7 +48,7 @@ std::string series_style(const std::string& engine, std::size_t variant);
 std::vector<std::size_t> series_variants(const std::vector<std::string>& engines);
 
 // The SVG size and gnuplot's multiplot layout for `panels` panels and, when there are several, a last panel that
-// holds only the legend. A single panel is a plain plot with its key outside on the right.
+// holds only the legend. A single panel is a plain plot with its key inside.
 struct PanelLayout {
     std::size_t panels = 1, columns = 1, rows = 1;
     int width = 0, height = 0;

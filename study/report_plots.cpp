@@ -117,6 +117,15 @@ std::vector<std::size_t> simplify_polyline(const std::vector<double>& x, const s
         const auto [a, b] = stack.back();
         stack.pop_back();
         if (b <= a + 1) continue;
+        if (!std::isfinite(y[a]) || !std::isfinite(y[b])) {
+            // A non-finite end (a gap) gives no segment to measure from: its neighbour is kept, and the rest measured
+            // from there.
+            const std::size_t next = std::isfinite(y[a]) ? b - 1 : a + 1;
+            keep[next] = true;
+            stack.push_back({a, next});
+            stack.push_back({next, b});
+            continue;
+        }
         const double dx = x[b] - x[a], dy = y[b] - y[a], len = std::hypot(dx, dy);
         double worst = -1.0;
         std::size_t at = a;

@@ -60,7 +60,7 @@ const std::map<std::string, std::string> kKnownDifferences = {
      "plastic: the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which "
      "assumes no impulse at the roller. Measured on the Fig. 6 wall at 1 ms, 10 iterations: 0.820 "
      "(-13.8 % against Eq. (19), -0.6 % against the whole mechanism; -0.02 % at 0.2 ms), unchanged by iterations "
-     "10 to 200 (README \"Bullet\")."},
+     "10 to 200 (docs/engines.md \"Bullet\")."},
     {"ode/VsswRestitution",
      "ODE's LCP resolves the impact with the new pivot, the closing hinge and the roller at once, perfectly plastic: "
      "the plastic impact of the whole new mechanism, (V+' M V-)/(V+' M V+) = 0.8252 on the Fig. 6 wall, whereas "
@@ -78,7 +78,7 @@ const std::map<std::string, std::string> kKnownDifferences = {
      "pivot, hinge corner, roller guide) in one frictional contact problem: the plastic impact of the whole new "
      "mechanism (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured "
      "on the Fig. 6 wall: 0.8242 / 0.8246 at 1 / 0.2 ms, -13.3 % against Eq. (19), -0.12 % / -0.07 % against the "
-     "whole mechanism; no choice of Newton coefficients per contact reaches Eq. (19) (README \"Siconos\")."},
+     "whole mechanism; no choice of Newton coefficients per contact reaches Eq. (19) (docs/engines.md \"Siconos\")."},
     {"simbody-rigid/VsswRestitution",
      "Simbody's SemiExplicitEulerTimeStepper resolves the impact with every proximal contact at once (new pivot, "
      "closing hinge and roller), restitution 0: the plastic impact of the whole new mechanism (0.8252 on the Fig. 6 "

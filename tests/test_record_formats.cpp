@@ -87,6 +87,12 @@ TEST(RecordFormats, ATwoColumnTableNeedsNoNames) {
     const GroundMotion m = parse_record("time,acc\n0,0.1\n0.5,0.2\n1.0,-0.1\n", "r.csv", &kMetres);
     EXPECT_EQ(m.sample_times(), (std::vector<double>{0.0, 0.5, 1.0}));
     EXPECT_EQ(m.sample_values(), (std::vector<double>{0.1, 0.2, -0.1}));
+    // Naming only the time column of two: the other is the acceleration, whichever comes first.
+    RecordFormat time_second;
+    time_second.time_column = "time";
+    const GroundMotion swapped = parse_record("acc,time\n0.1,0\n0.2,0.5\n", "r.csv", &kMetres, time_second);
+    EXPECT_EQ(swapped.sample_times(), (std::vector<double>{0.0, 0.5}));
+    EXPECT_EQ(swapped.sample_values(), (std::vector<double>{0.1, 0.2}));
 }
 
 TEST(RecordFormats, UnitsApplyToEveryFormat) {
@@ -163,6 +169,12 @@ TEST(RecordFormatsFromTheField, ADecimalCommaIsRefusedNotReadAsTwoValues) {
     RecordFormat step;
     step.dt = 0.01;
     EXPECT_TRUE(contains(message_of("0,0123\n0,0456\n", step), "rec.txt:1: '0123' after a comma looks like a decimal"));
+    // Decimals without a leading zero after the comma: read as 0 and 5, or 1 and 25, they were a wrong record.
+    EXPECT_TRUE(contains(message_of("0,5\n0,7\n", step), "rec.txt:1: '0,5' looks like a decimal comma"));
+    EXPECT_TRUE(contains(message_of("0.1 0.2\n-1,25\n", step), "rec.txt:2: '-1,25' looks like a decimal comma"));
+    // Decimals with points and commas between them are read as they are.
+    EXPECT_EQ(parse_record("0.5,0.7\n-1.25,2\n", "r.txt", &kMetres, step).sample_values(),
+              (std::vector<double>{0.5, 0.7, -1.25, 2.0}));
 }
 
 }  // namespace

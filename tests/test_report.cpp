@@ -357,9 +357,9 @@ TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
         std::istringstream line(traces[52 + i]);
         for (std::string field; std::getline(line, field, ',');) f.push_back(field);
         ASSERT_GE(f.size(), 4u) << traces[52 + i];
-        EXPECT_EQ(std::stod(f[2]), std::stod(fmt::format("{:.{}g}", ode.t[i], vssw::study::kTraceTimeDigits)));
-        EXPECT_EQ(std::stod(f[3]),
-                  std::stod(fmt::format("{:.{}g}", ode.theta1_over_alpha[i], vssw::study::kTraceValueDigits)));
+        // Rounding to n significant digits moves a value by at most half a unit in its n-th digit.
+        const double time_rounding = 0.5 * std::pow(10.0, 1 - vssw::study::kTraceTimeDigits);
+        EXPECT_LE(std::abs(std::stod(f[2]) - ode.t[i]), time_rounding * std::abs(ode.t[i]));
         EXPECT_LE(std::abs(std::stod(f[3]) - ode.theta1_over_alpha[i]),
                   kFourDigitRounding * std::abs(ode.theta1_over_alpha[i]));
     }
@@ -608,6 +608,21 @@ const vssw::study::PlotScript* script_named(const std::vector<vssw::study::PlotS
     for (const auto& s : scripts)
         if (s.plot.name == name) return &s;
     return nullptr;
+}
+
+// Douglas-Peucker keeps what a line through fewer points would lose: a straight run collapses to its ends, a corner
+// stays, and a non-finite value (a gap) keeps its neighbours, even at the polyline's ends, where no segment can be
+// measured from it.
+TEST(ReportPlots, SimplifiedTracesKeepCornersAndGaps) {
+    constexpr double kTolerance = 0.1;  // [px]
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    using Indices = std::vector<std::size_t>;
+    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, kTolerance), (Indices{0, 4}));
+    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 1, 0}, kTolerance), (Indices{0, 2, 4}));
+    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {nan, 1, 2, 3, 4}, kTolerance),
+              (Indices{0, 1, 4}));
+    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 3, nan}, kTolerance),
+              (Indices{0, 3, 4}));
 }
 
 TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {

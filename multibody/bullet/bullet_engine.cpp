@@ -51,7 +51,7 @@ struct Knobs {
 
 std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
-        {"dt", "0.001", "s", "the step (README \"Bullet\": every target met at 1, 0.5 and 0.2 ms)"},
+        {"dt", "0.001", "s", "the step (docs/engines.md \"Bullet\": every target met at 1, 0.5 and 0.2 ms)"},
         {"iterations", std::to_string(kDefaultIterations), "",
          "sequential-impulse solver iterations per step (20 to 200 move the restitution by 0.13 % at most)"},
         {"erp", "0.2", "", "error reduction of penetration, used only by split impulse's position pass"},

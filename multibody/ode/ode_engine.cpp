@@ -136,7 +136,7 @@ struct Knobs {
 
 std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
-        {"dt", "0.001", "s", "the step (README \"ODE\": every target met at 1 ms; the error grows as dt over the period)"},
+        {"dt", "0.001", "s", "the step (docs/engines.md \"ODE\": every target met at 1 ms; the error grows as dt over the period)"},
         {"iterations", "none", "",
          "not used by the direct solver (dWorldStep); with quickstep = 1 the SOR iterations (20 unless given)"},
         {"erp", "0.2", "", "error reduction parameter in [0, 1]: the share of a penetration corrected per step"},

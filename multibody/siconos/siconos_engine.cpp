@@ -186,7 +186,7 @@ constexpr int kDefaultSweeps = 1000;
 
 std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
-        {"dt", "0.001", "s", "the time step (README \"Siconos\": thresholds exact, restitution within 2 % at 1 ms)"},
+        {"dt", "0.001", "s", "the time step (docs/engines.md \"Siconos\": thresholds exact, restitution within 2 % at 1 ms)"},
         {"iterations", std::to_string(kDefaultSweeps), "",
          "at most this many Gauss-Seidel sweeps per step; a step whose contact problem is not solved fails the run"},
         {"e_ground", "0", "", "Newton's coefficient of restitution at the base corners, in [0, 1]"},

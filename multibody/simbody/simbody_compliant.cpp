@@ -133,7 +133,7 @@ Knobs read_knobs(const EngineSettings& s) {
     // check the two against each other: tests/test_engines.cpp). Cost and agreement in docs/engines.md "Simbody (3.7)".
     k.contact_subsystem = r.flag("contact_subsystem");
     // interpolate 1 (was 0): a report no longer ends a step, so the integrator is not held to 1 ms steps where the
-    // wall is at rest or in flight, and the samples are CPodes' own interpolant, of the method's order. Cost: README.
+    // wall is at rest or in flight, and the samples are CPodes' own interpolant, of the method's order. Cost: docs/engines.md "Simbody".
     k.interpolate = r.choice("interpolate", 1, 2) == 1;
     k.limits = FailureLimits::read(r);
     require(k.accuracy < 1.0, std::string(kName) + " setting accuracy", "below 1", k.accuracy);
