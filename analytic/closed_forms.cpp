@@ -94,7 +94,15 @@ Eq11Evaluator::Eq11Evaluator(const VsswGeometry& w)
       m12_(w.m1 + 2.0 * w.m2),
       m2_cos_(w.m2 * w.cos_a1 / w.cos_a2),
       n_cos_(w.tan_a2 * w.cos_a1),
-      n_sin_(2.0 * w.cos_a1) {}
+      n_sin_(2.0 * w.cos_a1),
+      mass0_r_(mass0_ * sq(w.R1)),
+      m2_r_(m2_ * sq(w.R1)),
+      inertia2_r_(inertia2_ * sq(w.R1)),
+      m12_r_(m12_ * w.R1),
+      m2_cos_r_(m2_cos_ * w.R1),
+      n_cos_r_(n_cos_ * w.R1),
+      n_sin_r_(n_sin_ * w.R1),
+      two_r_(2.0 * w.R1) {}
 
 Eq11Coefficients Eq11Evaluator::operator()(double abs_theta1) const {
     const double q = abs_theta1;
@@ -120,26 +128,6 @@ Eq11Coefficients Eq11Evaluator::operator()(double abs_theta1) const {
     c.C_V = m12_ * sA1 + m2_cos_ * sA2;
     c.C_N = 2.0 * sA1 + n_cos_ * kq.cos - n_sin_ * kq.sin;
     return c;
-}
-
-Eq11Evaluator::Scaled Eq11Evaluator::scaled(double abs_theta1) const {
-    const double q = abs_theta1;
-    const SinCos kq = fast_sincos(k_ * q), A1 = fast_sincos(alpha1_ - q);
-    const double sA1 = A1.sin, cA1 = A1.cos;
-    const double s = sin_a2_ * kq.cos - cos_a2_ * kq.sin, c = cos_a2_ * kq.cos + sin_a2_ * kq.sin;  // sin, cos A2
-    const double c2 = c * c, c3 = c2 * c;
-    const double Lc = 2.0 * sA1 * c + s * cA1;  // cos A2 times operator()'s L
-    const double ur_c2 = inertia2_ * cA1;       // cos^2 A2 times operator()'s upper_rotary
-    Scaled r{};
-    r.C_A = c3 * mass0_ + c * (m2_ * (cA1 * cA1 * c2 + Lc * Lc) + ur_c2 * cA1);
-    r.C_S = ur_c2 * (sA1 * c - k_ * cA1 * s) +
-            m2_ * (sA1 * cA1 * c3 - Lc * c * (2.0 * cA1 * c - s * sA1) - k_ * cA1 * Lc);
-    r.C_H_unscaled = m12_ * cA1 - m2_cos_ * c;
-    r.C_V_unscaled = m12_ * sA1 + m2_cos_ * s;
-    r.C_H = c3 * r.C_H_unscaled;
-    r.C_V = c3 * r.C_V_unscaled;
-    r.C_N = c3 * (2.0 * sA1 + n_cos_ * kq.cos - n_sin_ * kq.sin);
-    return r;
 }
 
 Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1) { return Eq11Evaluator(w)(abs_theta1); }

@@ -6,6 +6,7 @@
 // paper's [g - y''(t)] (its y'' points down, Fig. 1c) is written g + a_v here.
 #include <optional>
 
+#include "fast_sincos.hpp"
 #include "wall.hpp"
 
 namespace vssw {
@@ -45,11 +46,13 @@ class Eq11Evaluator {
 public:
     explicit Eq11Evaluator(const VsswGeometry& w);
     Eq11Coefficients operator()(double abs_theta1) const;
-    // The five coefficients times cos^3 A2, their common denominator (no division at all), and C_H, C_V as they are
-    // (they have none): what the equation of motion needs at an integrator stage (rocking_rates_scaled).
+    // The terms of Eq. (10) with the wall's R1 in them (ModelTerms' M, C, X, Y, L), M and C multiplied through by
+    // cos^3 A2, the coefficients' common denominator, and the levers X, Y, L as they are (they have none) with the
+    // factor beside them: no division at all, what the equation of motion needs at an integrator stage.
     struct Scaled {
-        double C_A, C_S, C_H, C_V, C_N;
-        double C_H_unscaled, C_V_unscaled;
+        double M, C;     // R1^2 C_A and R1^2 C_S, times cos^3 A2
+        double X, Y, L;  // R1 C_H, R1 C_V and R1 C_N as they are (multiplied by cos3 in Eq. 10)
+        double cos3;     // cos^3 A2
     };
     Scaled scaled(double abs_theta1) const;
 
@@ -60,7 +63,32 @@ private:
     double m12_;       // m1 + 2 m2
     double m2_cos_;    // m2 cos alpha1 / cos alpha2
     double n_cos_, n_sin_;  // C_N's factors of cos(k q) and sin(k q): tan alpha2 cos alpha1 and 2 cos alpha1
+    // The same factors times R1^2 (mass terms) or R1 (levers), for scaled(): no multiplication by R1 left on a stage's
+    // chain of dependent operations.
+    double mass0_r_, m2_r_, inertia2_r_, m12_r_, m2_cos_r_, n_cos_r_, n_sin_r_, two_r_;
 };
+
+// Inline: the integrator's stages call it through PaperVssw::rates, which waits on its result (returned through
+// memory when it was out of line).
+inline Eq11Evaluator::Scaled Eq11Evaluator::scaled(double abs_theta1) const {
+    const double q = abs_theta1;
+    const SinCos kq = fast_sincos(k_ * q), A1 = fast_sincos(alpha1_ - q);
+    const double sA1 = A1.sin, cA1 = A1.cos;
+    const double s = sin_a2_ * kq.cos - cos_a2_ * kq.sin, c = cos_a2_ * kq.cos + sin_a2_ * kq.sin;  // sin, cos A2
+    const double c2 = c * c, c3 = c2 * c;
+    const double Lc = 2.0 * sA1 * c + s * cA1;  // cos A2 times operator()'s L
+    const double ur_c2 = inertia2_r_ * cA1;     // R1^2 cos^2 A2 times operator()'s upper_rotary
+    Scaled r{};
+    const double cA1_2 = cA1 * cA1;
+    r.M = c3 * (mass0_r_ + m2_r_ * cA1_2) + c * (m2_r_ * (Lc * Lc) + inertia2_r_ * cA1_2);
+    r.C = ur_c2 * (sA1 * c - k_ * cA1 * s) +
+          m2_r_ * (sA1 * cA1 * c3 - Lc * c * (2.0 * cA1 * c - s * sA1) - k_ * cA1 * Lc);
+    r.X = m12_r_ * cA1 - m2_cos_r_ * c;
+    r.Y = m12_r_ * sA1 + m2_cos_r_ * s;
+    r.L = two_r_ * sA1 + n_cos_r_ * kq.cos - n_sin_r_ * kq.sin;
+    r.cos3 = c3;
+    return r;
+}
 
 // Eq. (12): threshold horizontal ground acceleration [m/s^2] under a vertical ground acceleration a_v (up positive).
 // Derived, as the paper says, from Eq. (10) at rest: N is a force and does not scale with a_v. As printed, N/g sits

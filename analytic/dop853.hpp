@@ -139,18 +139,25 @@ private:
         if constexpr (weight(Row, J) != 0.0) sum += weight(Row, J) * k[J][n];
     }
     template <int Row, std::size_t... J>
-    static double weighted_sum(const std::array<Vec<N>, dop853::kExtendedStages>& k, std::size_t n,
+    static double weighted_sum(const std::array<Vec<N>, dop853::kExtendedStages>& k, [[maybe_unused]] std::size_t n,
                                std::index_sequence<J...>) {
         double sum = 0.0;
         (add_term<Row, J>(sum, k, n), ...);
         return sum;
     }
     // Stage I: y + h sum_j a[I][j] k_j, evaluated at t + c_I h; stage kStages is the new state itself.
+    // The newest stage's term is added last through one product with h a[I][I-1]: the stage waits on that stage's
+    // right-hand side alone, and the rest of the sum is ready before it.
     template <int I>
     void stage(RkStep<N>& s) const {
         Vec<N> yi = s.y0;
-        for (std::size_t n = 0; n < N; ++n)
-            yi[n] += s.h * weighted_sum<I>(s.k, n, std::make_index_sequence<static_cast<std::size_t>(I)>{});
+        constexpr std::size_t last = static_cast<std::size_t>(I) - 1;
+        static_assert(weight(I, last) != 0.0, "every stage of the tableau uses the one before it");
+        const double h_last = s.h * weight(I, last);
+        for (std::size_t n = 0; n < N; ++n) {
+            const double rest = last == 0 ? 0.0 : weighted_sum<I>(s.k, n, std::make_index_sequence<last>{});
+            yi[n] += s.h * rest + h_last * s.k[last][n];
+        }
         if constexpr (I == dop853::kStages) s.y1 = yi;
         s.k[I] = f_(s.t0 + dop853::c[I] * s.h, yi);
     }

@@ -71,11 +71,12 @@ public:
         return {R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
     }
     RockingRates rates(int side, double q, double theta_dot, double a_h, double a_v) const override {
+        // rocking_rates_scaled's Eq. (10) with the levers' common factor cos^3 A2 taken out of their three terms.
         const Eq11Evaluator::Scaled c = eq11_.scaled(q);
-        const double R1 = w_.R1;
-        const ModelTerms t{R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
-        return rocking_rates_scaled(t, R1 * c.C_H_unscaled, R1 * c.C_V_unscaled, side, theta_dot, a_h, a_v, w_.g,
-                                    w_.N);
+        const double sign = side;
+        const double rhs = -c.cos3 * (a_h * c.X + sign * ((a_v + w_.g) * c.Y + w_.N * c.L)) -
+                           sign * c.C * theta_dot * theta_dot;
+        return {rhs / c.M, -a_h * c.X - sign * a_v * c.Y};
     }
     double mass_moment_height(double q) const override {
         return eq6_potential(w_, q, eq3_theta2_linear(w_, q)) / w_.g;

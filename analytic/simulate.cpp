@@ -155,7 +155,10 @@ private:
     double vertical_at_stage(double t) const { return av_.is_zero() ? 0.0 : av_stages_(t); }
 
     State derivative(double t, const State& y) const {
-        const RockingRates r = model_.rates(side_, side_ * y[0], y[1], ah_stages_(t), vertical_at_stage(t));
+        // q = side theta1 by a branch, not a product: the branch is the same through a flight, the product would sit on
+        // every stage's chain of dependent operations.
+        const double q = side_ > 0 ? y[0] : -y[0];
+        const RockingRates r = model_.rates(side_, q, y[1], ah_stages_(t), vertical_at_stage(t));
         return {y[1], r.acceleration, r.ground_force * y[1]};
     }
 

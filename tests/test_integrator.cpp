@@ -38,7 +38,9 @@ double harmonic_error(double h) {
 }
 
 TEST(Dop853, ConvergesAtEighthOrderWithFixedSteps) {
-    const double e1 = harmonic_error(0.4), e2 = harmonic_error(0.2), e3 = harmonic_error(0.1);
+    // Steps whose error stays far above round-off: at 0.1 it is 3e-15, where the summation order of the stages alone
+    // moved the observed order from 7.45 to 7.23 (the fifth pass); at 0.2 it is 4.7e-13.
+    const double e1 = harmonic_error(0.8), e2 = harmonic_error(0.4), e3 = harmonic_error(0.2);
     EXPECT_NEAR(std::log2(e1 / e2), kExpectedOrder, kOrderSlack);
     EXPECT_NEAR(std::log2(e2 / e3), kExpectedOrder, kOrderSlack);
 }
