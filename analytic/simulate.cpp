@@ -753,6 +753,18 @@ Roller parse_roller(const std::string& text) {
 
 const char* to_string(Roller roller) { return roller == Roller::bilateral ? "bilateral" : "unilateral"; }
 
+LargestRotation largest_rotation(const SimulationResult& r) {
+    if (r.overturned) return {r.max_abs_theta, r.t_overturn};
+    LargestRotation peak{0.0, 0.0};
+    for (const TurningPoint& p : r.peaks)
+        if (std::abs(p.theta) > peak.abs_theta) peak = {std::abs(p.theta), p.t};
+    // A step's end near a turning point can read above it by rounding (the points are located to rtol 1e-10): only
+    // more than that is a swing still rising when the run ended.
+    constexpr double kPastEveryPeak = 1e-8;
+    if (r.max_abs_theta > peak.abs_theta * (1.0 + kPastEveryPeak)) return {r.max_abs_theta, r.t_final};
+    return peak;
+}
+
 void validate(const SimulationOptions& options) {
     require(std::isfinite(options.t_end) && options.t_end > 0.0 && options.t_end <= kMaxEndTime, "end time (s)",
             fmt::format("positive and at most {:g} s", kMaxEndTime), options.t_end);

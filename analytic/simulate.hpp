@@ -120,6 +120,14 @@ struct SimulationResult {
     SupportDemand supports;
 };
 
+// The run's largest |theta1| and when it was reached: the overturning's, else the largest turning point's, else
+// (a run cut off mid-swing past every turning point) the run's end. One rule for every output that reports a peak
+// (`vssw history`'s t_max_theta, the analytic backend's located peak that `vssw compare --record` reads).
+struct LargestRotation {
+    double abs_theta, t;
+};
+LargestRotation largest_rotation(const SimulationResult& result);
+
 // A run needing more integration steps than this is reported as a failure, not left to spin (every phase counts).
 constexpr long kMaxIntegrationSteps = 50'000'000;
 

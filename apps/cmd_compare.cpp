@@ -16,6 +16,7 @@
 #include "apps/compare_response.hpp"
 #include "apps/early_output.hpp"
 #include "apps/ground_motion_options.hpp"
+#include "apps/model_validity.hpp"
 #include "apps/option_values.hpp"
 #include "apps/report_compare.hpp"
 #include "apps/settings_listing.hpp"
@@ -49,6 +50,7 @@ struct CompareOptions {
     bool json = false;
     GroundMotionOptions motion;  // --record or --pulse: a comparison under a ground motion (compare_response.hpp)
     bool theta0_given = false;
+    bool strict = false;  // exit 3 when the analytic reference's own assumptions fail (its warnings)
 };
 
 multibody::EngineSettings settings_of(const multibody::Engine& engine, const CompareOptions& o) {
@@ -94,7 +96,7 @@ void run_compare_response(const CompareOptions& o, std::ostream& out) {
                                          "wall starts from rest");
     (void)load_ground_motion(o.motion);  // the motion's options checked with the messages `vssw history` gives
     (void)choose_model(o.wall, o.model);
-    ResponseCompareRequest request{o.wall, o.model, o.motion, {}, {}, o.json};
+    ResponseCompareRequest request{o.wall, o.model, o.motion, {}, {}, o.json, o.strict};
     for (const std::string& name : parse_engine_list("--engine", o.engines)) {
         const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(name);
         request.engines.push_back(name);
@@ -150,6 +152,12 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
     for (const EngineCompareRun& run : runs)
         if (const std::string w = incomplete(run); !w.empty()) why.push_back(several ? run.engine + ": " + w : w);
     if (!why.empty()) throw SimulationFailure(fmt::format("{}", fmt::join(why, "; ")));
+    if (o.strict)  // one reference for every engine: its warnings are the same in each comparison
+        for (const EngineCompareRun& run : runs)
+            if (run.failure.empty()) {
+                refuse_warnings(run.comparison.analytic_warnings);
+                break;
+            }
 }
 
 }  // namespace
@@ -186,6 +194,8 @@ Command add_compare_command(CLI::App& root) {
                     "engine setting NAME=VALUE, for every engine named (repeatable; each adapter lists its own; one "
                     "that an engine does not know is refused)");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    cmd->add_flag("--strict", o->strict,
+                  "exit 3 when the analytic reference's own assumptions fail (its warnings), after printing (for CI)");
     // Defined after --engine and --json: CLI11 runs the callbacks in this order, so both are read by then.
     cmd->add_flag_callback(
         "--list-settings", [o] { throw EarlyOutput(settings_listing(o->engines, o->json)); },
@@ -208,7 +218,8 @@ Command add_compare_command(CLI::App& root) {
                "wall_time_s}; the table has one block per engine.\n"
                "failures: why a metric is null (e.g. an engine's first-impact ratio outside (0, 1]).\n"
                "analytic_warnings: the analytic model's own assumptions failing along its free vibration (e.g. a roller\n"
-               "that would have to pull): its values are the model's, but the model may not hold there.\n"
+               "that would have to pull): its values are the model's, but the model may not hold there; --strict makes\n"
+               "them exit 3 (after printing).\n"
                "Exit 3 when an engine fails (NaN, sliding, ...) or a metric could not be measured (the output is printed;\n"
                "with one engine, an engine that fails prints nothing).\n"
                "With --record or --pulse (the ground-motion options of `vssw history`): every engine and the analytic model\n"

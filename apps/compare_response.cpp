@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "apps/model_validity.hpp"
 #include "apps/json.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/table.hpp"
@@ -170,6 +171,7 @@ void compare_response(const ResponseCompareRequest& request, std::ostream& out) 
     for (const RunResult& r : runs)
         if (r.status != "ok") failed.push_back(r.engine + ": " + r.status);
     if (!failed.empty()) throw SimulationFailure(fmt::format("{}", fmt::join(failed, "; ")));
+    if (request.strict && !ref.warnings.empty()) refuse_warnings({ref.warnings});
 }
 
 }  // namespace vssw::cli

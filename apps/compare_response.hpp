@@ -20,10 +20,11 @@ struct ResponseCompareRequest {
     std::vector<std::string> engines;                  // checked names, in order
     std::vector<multibody::EngineSettings> settings;   // per engine (the options' dt, iterations, knobs applied)
     bool json = false;
+    bool strict = false;  // exit 3 when the analytic run's own assumptions fail (after printing)
 };
 
-// Prints the comparison (table or JSON). SimulationFailure (exit 3) when any run failed (after printing); InputError
-// on bad input before anything runs.
+// Prints the comparison (table or JSON). SimulationFailure (exit 3) when any run failed, or with `strict` when the
+// analytic run warns (after printing); InputError on bad input before anything runs.
 void compare_response(const ResponseCompareRequest& request, std::ostream& out);
 
 }  // namespace vssw::cli

@@ -16,7 +16,7 @@ namespace vssw::cli {
 
 // analytic/validity.hpp's warnings for the model chosen on the command line.
 std::vector<std::string> validity_warnings(const ChosenModel& chosen, const SimulationResult& result);
-// `--strict` (free, history): a run whose own assumptions failed is not an answer to build on. Throws
+// `--strict` (free, history, compare): a run whose own assumptions failed is not an answer to build on. Throws
 // SimulationFailure (exit 3) naming how many warnings there were and the first; called once the outputs are written.
 void refuse_warnings(const std::vector<std::string>& warnings);
 // {law, restitution}: the impact law and the ratio it gives.

@@ -12,26 +12,6 @@
 #include "apps/table.hpp"
 
 namespace vssw::cli {
-namespace {
-
-// When the largest |theta| was reached: the located turning point of largest |theta|, or the overturning (where the
-// collapse angle is the largest); 0 when the wall never left rest.
-// A run that ends mid-swing (--t-end) may have its largest |theta| at its end, past every located turning point.
-double peak_time(const SimulationResult& res) {
-    if (res.overturned) return res.t_overturn;
-    double t = 0.0, largest = 0.0;
-    for (const TurningPoint& p : res.peaks)
-        if (std::abs(p.theta) > largest) {
-            largest = std::abs(p.theta);
-            t = p.t;
-        }
-    // Beyond the turning points' location error (rtol 1e-10; step ends near a peak may exceed it by rounding).
-    constexpr double kPastEveryPeak = 1e-8;
-    return res.max_abs_theta > largest * (1.0 + kPastEveryPeak) ? res.t_final : t;
-}
-
-}  // namespace
-
 HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, const GroundMotionOptions& motion,
                            const HistoryRequest& request) {
     ChosenModel chosen = choose_model(wall, model);
@@ -73,7 +53,7 @@ Json to_json(const HistoryRun& run) {
     j["alpha"] = run.chosen.model->reference_angle();
     j["max_theta_over_alpha"] = res.max_abs_theta / run.chosen.model->reference_angle();
     j["max_theta"] = res.max_abs_theta;
-    j["t_max_theta"] = peak_time(res);
+    j["t_max_theta"] = largest_rotation(res).t;
     // An overturned run's largest rotation is the collapse angle it reached, not a rocking peak.
     j["peak_is_collapse"] = res.overturned;
     j["overturned"] = res.overturned;
@@ -114,7 +94,7 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
         .add(fmt::format("max |theta|/{}", alpha_name), num(res.max_abs_theta / run.chosen.model->reference_angle()),
              "", res.overturned ? "the collapse angle: overturned, not a rocking peak" : "")
         .add("max |theta|", num(res.max_abs_theta), "rad")
-        .add("at", num(peak_time(res)), "s");
+        .add("at", num(largest_rotation(res).t), "s");
     for (const std::string& w : run.warnings) table.text("warning", w);
     if (res.overturned)
         table.add("overturns at", num(res.t_overturn), "s");

@@ -129,8 +129,9 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     out.warnings = validity_warnings(*model, scene.vssw ? std::optional(knobs.kinematics) : std::nullopt, r);
     out.steps = r.steps;
     LocatedEvents located;
-    for (const TurningPoint& p : r.peaks)
-        if (std::abs(p.theta) > located.max_abs_theta1) located = {std::abs(p.theta), p.t, {}, 0.0, false, {}};
+    const LargestRotation largest = largest_rotation(r);
+    located.max_abs_theta1 = largest.abs_theta;
+    located.t_max_abs_theta1 = largest.t;
     if (r.overturned) {
         located.max_abs_theta1 = model->collapse_angle();
         located.t_max_abs_theta1 = r.t_overturn;

@@ -94,7 +94,9 @@ inline TrajectorySample motion_sample(double t, double theta1, double theta1_dot
 // points and overturning, its energy balance and the supports' demand. Unset for the engines, whose metrics come from
 // their samples alone; a study reads these when present, so that the analytic trajectory can be sampled coarsely.
 struct LocatedEvents {
-    double max_abs_theta1 = 0.0;    // largest |theta1| [rad]: a located turning point, or the collapse angle reached
+    // largest |theta1| [rad]: a located turning point, the run's end when it was cut off mid-swing past every one,
+    // or the collapse angle reached (analytic/simulate.hpp, largest_rotation)
+    double max_abs_theta1 = 0.0;
     double t_max_abs_theta1 = 0.0;  // when [s]
     std::optional<double> t_overturn;  // [s] when the collapse angle was reached
     double energy_balance_error = 0.0;  // the run's, relative to the largest energy in play (analytic/simulate.hpp)

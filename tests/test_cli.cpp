@@ -776,6 +776,28 @@ TEST(CliAssumptions, CompareCarriesTheAnalyticModelsWarnings) {
     EXPECT_NE(j["analytic_warnings"][0].get<std::string>().find("roller"), std::string::npos);
 }
 
+// compare --strict: the reference's warnings exit 3 after the comparison is printed (free vibration and a record);
+// a reference that holds still exits 0.
+TEST(CliAssumptions, CompareStrictRefusesAReferenceWhoseAssumptionsFailed) {
+    const CliResult pulls = run_cli(std::vector<std::string>{"compare", "--engine", "analytic", "--theta0", "0.8",
+                                                             "--json", "--strict"} +
+                                    t1n7_heavy());
+    EXPECT_EQ(pulls.code, vssw::cli::kExitSimulationFailed);
+    EXPECT_NE(pulls.err.find("--strict"), std::string::npos) << pulls.err;
+    EXPECT_NE(pulls.err.find("roller"), std::string::npos) << pulls.err;
+    EXPECT_FALSE(Json::parse(pulls.out)["analytic_warnings"].empty());  // printed first
+
+    const CliResult overturns = run_cli({"compare", "--engine", "analytic", "--record", kRinaldi, "--scale", "0.25",
+                                         "--height", "3", "--thickness", "0.143", "--hinge", "0.95", "--kinematics",
+                                         "paper", "--strict"});
+    EXPECT_EQ(overturns.code, vssw::cli::kExitSimulationFailed);
+    EXPECT_NE(overturns.err.find("Eq. (3)"), std::string::npos) << overturns.err;
+    EXPECT_NE(overturns.out.find("analytic model warns"), std::string::npos) << overturns.out;
+
+    const CliResult clean = run_cli(std::vector<std::string>{"compare", "--engine", "analytic", "--strict"} + kFig6);
+    EXPECT_EQ(clean.code, vssw::cli::kExitOk) << clean.err;
+}
+
 TEST(CliAssumptions, UnilateralRollerIsAChoiceOfTheExactKinematics) {
     const std::vector<std::string> t1n2 =
         specimen_args(2) + std::vector<std::string>{"--xi", "0.5", "--theta0", "0.8", "--kinematics", "exact"};

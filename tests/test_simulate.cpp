@@ -43,6 +43,33 @@ TEST(Simulate, FreeVibrationConservesEnergyBetweenImpactsAndDissipatesAllOfItAtI
     }
 }
 
+// largest_rotation: the one rule for a run's peak (history's t_max_theta, the analytic backend's located peak).
+TEST(Simulate, LargestRotationIsTheLargestTurningPointTheOverturningOrTheEndOfACutSwing) {
+    const auto m = make_vssw_model(fig6_vssw(), Kinematics::paper);
+    const double alpha = m->reference_angle();
+    // Released from rest: the release is the largest turning point (impacts only take energy away).
+    const SimulationResult released = free_vibration(*m, 0.5 * alpha);
+    EXPECT_EQ(largest_rotation(released).t, 0.0);
+    EXPECT_EQ(largest_rotation(released).abs_theta, 0.5 * alpha);
+    // Launched from theta1 = 0 and cut off while still rising: no turning point, the largest rotation is at the end.
+    SimulationOptions cut;
+    cut.t_end = 0.05;
+    const SimulationResult rising = simulate(*m, GroundMotion::none(), GroundMotion::none(), {0.0, 0.2}, cut);
+    ASSERT_TRUE(rising.peaks.empty());
+    ASSERT_GT(rising.max_abs_theta, 0.0);
+    EXPECT_EQ(largest_rotation(rising).t, rising.t_final);
+    EXPECT_EQ(largest_rotation(rising).abs_theta, rising.max_abs_theta);
+    // The same launch run past its turning point: that point, not the end.
+    cut.t_end = 2.0;
+    const SimulationResult turned = simulate(*m, GroundMotion::none(), GroundMotion::none(), {0.0, 0.2}, cut);
+    ASSERT_FALSE(turned.peaks.empty());
+    EXPECT_EQ(largest_rotation(turned).t, turned.peaks.front().t);
+    // Past the collapse angle: the overturning.
+    const SimulationResult fell = free_vibration(*m, 0.99 * m->collapse_angle());
+    ASSERT_TRUE(fell.overturned);
+    EXPECT_EQ(largest_rotation(fell).t, fell.t_overturn);
+}
+
 TEST(Simulate, PeaksEitherSideOfAnImpactGiveTheRestitutionBack) {
     // Between impacts energy is conserved, so the peaks either side of an impact give e back by energy.
     constexpr double kPeakBased = 1e-7;  // peaks located on the dense output at rtol 1e-10
