@@ -157,30 +157,22 @@ std::vector<std::string> metric_order(const compare::SuiteResults& results) {
 
 std::vector<EngineSummary> summarize(const ReportInput& in) {
     const compare::SuiteResults& res = in.results;
+    // The worst errors and counts are the report-at-a-glance matrix's: one source, so the summary line and the
+    // matrix cannot name different cases or counts.
+    const std::vector<MatrixCell> cells = error_matrix(in);
     std::vector<EngineSummary> out;
     for (const std::string& engine : compared_engines(res)) {
         EngineSummary s;
         s.engine = engine;
         for (const compare::CaseFailure& f : res.failures) s.failures += f.engine == engine ? 1 : 0;
-        for (const std::string& metric : metric_order(res)) {
-            MetricExtreme x{metric, 0.0, "", 0, 0};
-            const std::optional<double> target = target_of(metric);
-            for (const compare::MetricRow& r : res.rows) {
-                if (r.engine != engine || r.metric != metric || is_step_case(in, r.case_id)) continue;
-                if (target) {
-                    ++s.with_target;
-                    if (!std::isfinite(r.rel_error)) ++s.not_measured;
-                    else if (within(r.rel_error, *target)) ++s.within;
-                }
-                if (!std::isfinite(r.rel_error)) continue;
-                if (target ? !within(r.rel_error, *target) : r.rel_error != 0.0) ++x.outside;
-                if (x.rows == 0 || std::abs(r.rel_error) > std::abs(x.rel_error)) {
-                    x.rel_error = r.rel_error;
-                    x.case_id = r.case_id;
-                }
-                ++x.rows;
+        for (const MatrixCell& c : cells) {  // metric_order within each engine
+            if (c.engine != engine) continue;
+            if (c.target) {
+                s.with_target += c.rows + c.not_measured;
+                s.not_measured += c.not_measured;
+                s.within += c.rows - c.outside;
             }
-            if (x.rows > 0) s.extremes.push_back(x);
+            if (c.rows > 0) s.extremes.push_back({c.metric, c.worst_rel_error, c.case_id, c.rows, c.outside});
         }
         std::vector<std::string> parts;
         const MetricExtreme* whole = nullptr;

@@ -225,6 +225,29 @@ TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
     EXPECT_TRUE(contains(bullet.line, "; 1 failure")) << bullet.line;
 }
 
+// The summary lines and the report-at-a-glance matrix name the same worst error, case and counts (they were computed
+// twice, from the rows and from the metric tables, and could disagree on ties or repeated rows).
+TEST(ReportAnalysis, SummaryAndMatrixNameTheSameWorstErrors) {
+    const vssw::compare::Suite suite = hand_suite();
+    const vssw::compare::SuiteResults results = hand_results();
+    const vssw::study::ReportInput in{suite, results, {}};
+    const auto cells = vssw::study::error_matrix(in);
+    int compared = 0;
+    for (const vssw::study::EngineSummary& s : vssw::study::summarize(in))
+        for (const vssw::study::MetricExtreme& x : s.extremes) {
+            const auto c = std::find_if(cells.begin(), cells.end(), [&](const vssw::study::MatrixCell& m) {
+                return m.engine == s.engine && m.metric == x.metric;
+            });
+            ASSERT_NE(c, cells.end()) << s.engine << " " << x.metric;
+            EXPECT_EQ(c->worst_rel_error, x.rel_error) << s.engine << " " << x.metric;
+            EXPECT_EQ(c->case_id, x.case_id) << s.engine << " " << x.metric;
+            EXPECT_EQ(c->rows, x.rows);
+            EXPECT_EQ(c->outside, x.outside);
+            ++compared;
+        }
+    EXPECT_GT(compared, 5);
+}
+
 TEST(ReportAnalysis, FindingsSayOnlyWhatTheNumbersShow) {
     const vssw::compare::Suite suite = hand_suite();
     const vssw::compare::SuiteResults results = hand_results();
