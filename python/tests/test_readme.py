@@ -3,7 +3,12 @@ import contextlib
 import io
 import re
 
+import pytest
+
 from conftest import REPO
+
+# The printed threshold against the closed form: rounding of a few operations, and print()'s 17 significant digits.
+PRINTED_CLOSED_FORM_RTOL = 1e-12
 
 
 def python_section():
@@ -29,4 +34,6 @@ def test_the_readme_import_line_works():
     printed = io.StringIO()
     with contextlib.redirect_stdout(printed):
         exec(line, {})  # noqa: S102
-    assert float(printed.getvalue()) > 0  # Eq. (12) of the Fig. 6 wall, in g
+    # Eq. (13) for the Fig. 6 wall (homogeneous blocks, no overburden): 2 tan(alpha1) g, tan(alpha1) = b / h1 with
+    # b = 0.4 / 2 m and h1 = 0.7 x 4 / 2 m, the half-thickness and the hinge's half-height.
+    assert float(printed.getvalue()) == pytest.approx(2 * (0.4 / 2) / (0.7 * 4 / 2), rel=PRINTED_CLOSED_FORM_RTOL)
