@@ -116,7 +116,6 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
     if (o.scale) {
         factor = *o.scale;
         motion = motion.scaled(factor);
-        if (o.vertical_record) vertical = vertical.scaled(factor);
     } else if (o.pga_g) {
         // Checked here too, so that the message shows the value as typed (in g), not converted to m/s^2.
         require(std::isfinite(*o.pga_g) && *o.pga_g > 0.0, "target PGA (--pga)", "a positive finite number in g",
@@ -124,8 +123,9 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
         const double before = motion.pga();
         motion = motion.scaled_to_pga(*o.pga_g * kStandardGravity);
         factor = *o.pga_g * kStandardGravity / before;
-        if (o.vertical_record) vertical = vertical.scaled(factor);
     }
+    // The two components of one record take the same factor (--pga: the horizontal's PGA sets it).
+    if (o.vertical_record) vertical = vertical.scaled(factor);
     return {std::move(motion), std::move(vertical), factor, sample_dt};
 }
 

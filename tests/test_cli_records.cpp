@@ -111,6 +111,14 @@ TEST(CliRecords, AnUpwardVerticalAccelerationRaisesTheThresholdAsGPlusAv) {
     EXPECT_EQ(lifted["lift_offs"], 1);
     EXPECT_EQ(lifted["vertical_record"], up);
     EXPECT_NEAR(lifted["vertical_pga_g"].get<double>(), a_v, kRoundTrip);
+    // --scale and --pga scale both components by the one factor: --pga sets it from the horizontal's peak.
+    const std::string small = dir.write("h4.txt", constant_record(0.1, 1.0));
+    const Json doubled = history_json(std::vector<std::string>{"--record", small, "--vertical-record", up, "--scale",
+                                                               "2"} + step);
+    EXPECT_NEAR(doubled["vertical_pga_g"].get<double>(), 2.0 * a_v, kRoundTrip);
+    const Json tripled = history_json(std::vector<std::string>{"--record", small, "--vertical-record", up, "--pga",
+                                                               "0.3"} + step);
+    EXPECT_NEAR(tripled["vertical_pga_g"].get<double>(), 3.0 * a_v, kRoundTrip);
 }
 
 TEST(CliRecords, ThePeakIsReportedInRadiansWithItsTime) {
