@@ -14,6 +14,7 @@
 
 #include "analytic/ground_motion.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/temp_files.hpp"
 
 namespace {
 
@@ -37,20 +38,14 @@ std::vector<std::string> operator+(std::vector<std::string> a, const std::vector
     return a;
 }
 
-class TempDir {
-public:
-    TempDir() : path_(std::filesystem::temp_directory_path() / fmt::format("vssw-records-{}", ::getpid())) {
-        std::filesystem::create_directories(path_);
-    }
-    ~TempDir() { std::filesystem::remove_all(path_); }
+// A folder of record files for one test (tests/temp_files.hpp's, named after the test: no two share it).
+struct RecordDir {
+    vssw::testing::TempDir dir;
     std::string write(const std::string& name, const std::string& text) const {
-        const std::string file = (path_ / name).string();
+        const std::string file = (dir / name).string();
         std::ofstream(file) << text;
         return file;
     }
-
-private:
-    std::filesystem::path path_;
 };
 
 Json history_json(const std::vector<std::string>& args) {
@@ -73,7 +68,7 @@ std::string constant_record(double value_g, double seconds) {
 }
 
 TEST(CliRecords, TheSameRecordInEveryFormatGivesTheSameResponse) {
-    const TempDir dir;
+    const RecordDir dir;
     const vssw::GroundMotion record = vssw::read_record(kRinaldi);
     std::string column, table = "time,acc\n";
     for (std::size_t i = 0; i < record.sample_values().size(); ++i) {
@@ -95,7 +90,7 @@ TEST(CliRecords, TheSameRecordInEveryFormatGivesTheSameResponse) {
 }
 
 TEST(CliRecords, AnUpwardVerticalAccelerationRaisesTheThresholdAsGPlusAv) {
-    const TempDir dir;
+    const RecordDir dir;
     const double lambda = threshold_g();
     const double a_v = 0.2;  // [g] up: the effective gravity is 1.2 g, the threshold 1.2 lambda
     const std::string above_alone = dir.write("h1.txt", constant_record((1.0 + kMargin) * lambda, 1.0));
@@ -150,7 +145,7 @@ TEST(CliRecords, ThePeakIsReportedInRadiansWithItsTime) {
 }
 
 TEST(CliRecords, BadFormatOptionsAreBadInputNamingTheValue) {
-    const TempDir dir;
+    const RecordDir dir;
     const std::string file = dir.write("r.txt", "0.1\n0.2\n");
     const auto negative = run_cli(std::vector<std::string>{"history"} + kFig6 +
                                   std::vector<std::string>{"--record", file, "--record-dt", "-0.01"});
