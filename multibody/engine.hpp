@@ -77,6 +77,9 @@ struct SettingDescription {
     std::string meaning;  // one line
 };
 
+// dt and iterations are EngineSettings' own fields; every other setting an engine describes is one of its knobs.
+inline bool is_knob(const std::string& setting_name) { return setting_name != "dt" && setting_name != "iterations"; }
+
 struct TrajectorySample {
     double t, theta1, theta1_dot, theta2, top_dy;
     double kinetic, potential;  // [J] for the scene's depth (per unit depth for the analytic model)

@@ -15,7 +15,7 @@ SettingsReader::SettingsReader(std::string engine, const EngineSettings& setting
     : engine_(std::move(engine)), settings_(settings) {
     std::vector<std::string> known;
     for (const SettingDescription& d : described)
-        if (d.name != "dt" && d.name != "iterations") known.push_back(d.name);
+        if (is_knob(d.name)) known.push_back(d.name);
     for (const auto& [name, value] : settings.knobs) {
         if (std::find(known.begin(), known.end(), name) == known.end())
             throw InputError(

@@ -250,10 +250,10 @@ std::vector<Axis> read_settings(const Reader& r, const json& t, const std::strin
     for (const char* first : {"dt", "iterations"})
         if (t.contains(first)) keys.push_back(first);
     for (const auto& item : t.items())
-        if (item.key() != "dt" && item.key() != "iterations") keys.push_back(item.key());
+        if (multibody::is_knob(item.key())) keys.push_back(item.key());
     for (const std::string& k : keys) {
         const std::string key = where + "." + k;
-        if (engine == "analytic" && (k == "dt" || k == "iterations"))
+        if (engine == "analytic" && !multibody::is_knob(k))
             r.fail(key, "the analytic model has no step or iterations to set (its tolerance is rtol; its free "
                         "vibrations are sampled every 1e-4 s, like an engine's, for the metric code)");
         if (engine == "analytic" && contains(kAssumptionKnobs, k))

@@ -30,8 +30,6 @@ std::optional<double> numeric(const std::string& text) {
     return value;
 }
 
-bool is_knob(const SettingDescription& d) { return d.name != "dt" && d.name != "iterations"; }
-
 // The Fig. 6 VSSW released at half its angle, to just past its first impact (0.42 s): flight, landing and rocking
 // back, so that a knob of the flight, of the contacts or of the impact each shows.
 std::vector<double> theta1_of_free_vibration(const Engine& engine, const EngineSettings& settings) {
@@ -59,7 +57,7 @@ TEST_P(SettingDescriptions, EveryKnobDescribedIsAcceptedAndNoOtherIs) {
         SCOPED_TRACE(d.name);
         EXPECT_FALSE(d.meaning.empty());
         EXPECT_FALSE(d.default_value.empty());
-        if (!is_knob(d)) continue;
+        if (!vssw::multibody::is_knob(d.name)) continue;
         EngineSettings s = engine_->default_settings();
         s.knobs[d.name] = numeric(d.default_value).value_or(0.0);
         EXPECT_NO_THROW(engine_->check_settings(s));
@@ -71,7 +69,7 @@ TEST_P(SettingDescriptions, EveryKnobDescribedIsAcceptedAndNoOtherIs) {
         ADD_FAILURE() << "an undescribed setting was accepted";
     } catch (const InputError& e) {
         for (const SettingDescription& d : described) {
-            if (is_knob(d)) {
+            if (vssw::multibody::is_knob(d.name)) {
                 EXPECT_NE(std::string(e.what()).find(d.name), std::string::npos) << e.what();
             }
         }
