@@ -20,31 +20,55 @@
 
 namespace vssw::multibody {
 
-std::vector<std::string> available_engines() {
-    std::vector<std::string> names = {"analytic"};
+namespace {
+
+// Every backend this code knows, in listing order, and whether this build has it: available_engines() and
+// missing_engines() both read this one list.
+struct KnownEngine {
+    const char* name;
+    bool built;
+};
 #ifdef VSSW_HAVE_BULLET
-    names.push_back("bullet");
+constexpr bool kHaveBullet = true;
+#else
+constexpr bool kHaveBullet = false;
 #endif
 #ifdef VSSW_HAVE_ODE
-    names.push_back("ode");
+constexpr bool kHaveOde = true;
+#else
+constexpr bool kHaveOde = false;
 #endif
 #ifdef VSSW_HAVE_SIMBODY
-    names.push_back("simbody");
-    names.push_back("simbody-rigid");
+constexpr bool kHaveSimbody = true;
+#else
+constexpr bool kHaveSimbody = false;
 #endif
 #ifdef VSSW_HAVE_SICONOS
-    names.push_back("siconos");
+constexpr bool kHaveSiconos = true;
+#else
+constexpr bool kHaveSiconos = false;
 #endif
+constexpr KnownEngine kKnownEngines[] = {
+    {"analytic", true},
+    {"bullet", kHaveBullet},
+    {"ode", kHaveOde},
+    {"simbody", kHaveSimbody},
+    {"simbody-rigid", kHaveSimbody},
+    {"siconos", kHaveSiconos},
+};
+
+std::vector<std::string> known_engines(bool built) {
+    std::vector<std::string> names;
+    for (const KnownEngine& e : kKnownEngines)
+        if (e.built == built) names.push_back(e.name);
     return names;
 }
 
-std::vector<std::string> missing_engines() {
-    const std::vector<std::string> available = available_engines();
-    std::vector<std::string> missing;
-    for (const char* name : {"analytic", "bullet", "ode", "simbody", "simbody-rigid", "siconos"})
-        if (std::find(available.begin(), available.end(), name) == available.end()) missing.push_back(name);
-    return missing;
-}
+}  // namespace
+
+std::vector<std::string> available_engines() { return known_engines(true); }
+
+std::vector<std::string> missing_engines() { return known_engines(false); }
 
 std::vector<std::string> default_compared_engines() {
     std::vector<std::string> engines;
