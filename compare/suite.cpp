@@ -62,9 +62,10 @@ MetricRow make_row(const std::string& case_id, const std::string& engine, const 
             reference, unit};
 }
 
+// assumption: the analytic model's (kPaperModel, kWholeMechanismImpact); "" for an engine's trace.
 Trace make_trace(const std::string& case_id, const std::string& engine, const multibody::Trajectory& traj,
-                 double alpha, double t_max) {
-    Trace tr{case_id, engine, {}, {}, engine == kReferenceEngine ? kPaperModel : ""};
+                 double alpha, double t_max, const std::string& assumption) {
+    Trace tr{case_id, engine, {}, {}, assumption};
     std::size_t n = 0;
     while (n < traj.samples.size() && traj.samples[n].t <= t_max) ++n;
     if (n == 0) return tr;
@@ -182,15 +183,15 @@ void compute_reference(const TaskContext& x) {
             ref.free = run_free_vibration(analytic, analytic_reference_settings(), x.wall.scene, free_options(x));
             if (x.keep_traces && x.c.kind == CaseKind::free) {
                 ref.free_trace = make_trace(x.c.id, kReferenceEngine, ref.free.trajectory, x.wall.scene.alpha(),
-                                            kFreeTraceSeconds);
+                                            kFreeTraceSeconds, kPaperModel);
                 // The same release with the whole mechanism's impact: the trace the engines' free rocking is
                 // measured against in restitution_whole_mechanism (a few ms of the analytic model).
                 if (x.wall.scene.vssw) {
                     const FreeVibrationResult whole = run_free_vibration(
                         analytic, whole_mechanism_settings(*x.wall.scene.vssw), x.wall.scene, free_options(x));
                     ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole.trajectory,
-                                                           x.wall.scene.alpha(), kFreeTraceSeconds);
-                    ref.whole_mechanism_trace->assumption = kWholeMechanismImpact;
+                                                           x.wall.scene.alpha(), kFreeTraceSeconds,
+                                                           kWholeMechanismImpact);
                 }
             }
             ref.free.trajectory.samples = {};  // the rows need its metrics only (warnings kept)
@@ -208,8 +209,8 @@ void compute_reference(const TaskContext& x) {
                 ref.whole_mechanism_peak = peak_rotation(whole).value / x.wall.scene.alpha();
                 if (x.keep_traces) {
                     ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole, x.wall.scene.alpha(),
-                                                           std::numeric_limits<double>::infinity());
-                    ref.whole_mechanism_trace->assumption = kWholeMechanismImpact;
+                                                           std::numeric_limits<double>::infinity(),
+                                                           kWholeMechanismImpact);
                 }
             }
             return;
@@ -263,7 +264,7 @@ void free_task(const TaskContext& x, TaskOutput& out) {
     if (!e.restitution_note.empty()) out.failure = e.restitution_note;
     if (x.keep_traces && x.c.kind == CaseKind::free)
         out.traces.push_back(
-            make_trace(x.c.id, x.engine.name(), e.trajectory, x.wall.scene.alpha(), kFreeTraceSeconds));
+            make_trace(x.c.id, x.engine.name(), e.trajectory, x.wall.scene.alpha(), kFreeTraceSeconds, ""));
 }
 
 void history_rows(const TaskContext& x, const multibody::Trajectory& a, const multibody::Trajectory& e,
@@ -304,7 +305,8 @@ void history_task(const TaskContext& x, TaskOutput& out) {
         history_rows(x, a, a, out);
         out.model_warnings = a.warnings;
         whole_mechanism_peak_row(x, a, out);
-        if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, x.wall.scene.alpha(), all));
+        if (x.keep_traces)
+            out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, x.wall.scene.alpha(), all, kPaperModel));
         if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
         return;
     }
@@ -312,7 +314,7 @@ void history_task(const TaskContext& x, TaskOutput& out) {
         x.engine.simulate(x.wall.scene, history_excitation(x), x.engine.default_settings());
     history_rows(x, a, e, out);
     whole_mechanism_peak_row(x, e, out);
-    if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), e, x.wall.scene.alpha(), all));
+    if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), e, x.wall.scene.alpha(), all, ""));
 }
 
 void run_task(const TaskContext& x, TaskOutput& out) {
