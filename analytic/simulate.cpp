@@ -678,6 +678,7 @@ SimulationResult Simulator::run(InitialState init) {
     initial_energy_ = model_.kinetic(y[0], y[1]) + model_.weight_potential(y[0]) - model_.overburden_work(y[0]);
     energy_scale_ = v_ref_;
     out_.max_abs_theta = std::abs(y[0]);
+    out_.initial_abs_theta = std::abs(y[0]);
     // The output grid's size, up to kReservedSamples: the samples fill without reallocation and copying (they were
     // 9 % of `vssw check`'s instructions). Pages of a run that ends early are reserved, never touched.
     if (opt_.keep_samples && opt_.output_dt > 0.0)
@@ -755,7 +756,7 @@ const char* to_string(Roller roller) { return roller == Roller::bilateral ? "bil
 
 LargestRotation largest_rotation(const SimulationResult& r) {
     if (r.overturned) return {r.max_abs_theta, r.t_overturn};
-    LargestRotation peak{0.0, 0.0};
+    LargestRotation peak{r.initial_abs_theta, 0.0};  // the start counts, moving or not
     for (const TurningPoint& p : r.peaks)
         if (std::abs(p.theta) > peak.abs_theta) peak = {std::abs(p.theta), p.t};
     // A step's end near a turning point can read above it by rounding (the points are located to rtol 1e-10): only

@@ -110,6 +110,7 @@ struct SimulationResult {
     double t_final = 0.0;             // where the run ended
     bool at_rest_at_end = false;
     double max_abs_theta = 0.0;
+    double initial_abs_theta = 0.0;  // |theta1| where the run started (a turning point only when started from rest)
     // Largest |balance residual| divided by the largest energy in play: V_r, or the largest sum of the magnitudes of
     // the balance's terms (kinetic, potential, works, dissipated) met during the run, whichever is larger.
     double energy_balance_error = 0.0;
@@ -120,8 +121,8 @@ struct SimulationResult {
     SupportDemand supports;
 };
 
-// The run's largest |theta1| and when it was reached: the overturning's, else the largest turning point's, else
-// (a run cut off mid-swing past every turning point) the run's end. One rule for every output that reports a peak
+// The run's largest |theta1| and when it was reached: the overturning's, else the largest of the start and the
+// turning points, else (a run cut off mid-swing past them all) the run's end. One rule for every output that reports a peak
 // (`vssw history`'s t_max_theta, the analytic backend's located peak that `vssw compare --record` reads).
 struct LargestRotation {
     double abs_theta, t;

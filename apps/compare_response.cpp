@@ -171,7 +171,9 @@ void compare_response(const ResponseCompareRequest& request, std::ostream& out) 
     for (const RunResult& r : runs)
         if (r.status != "ok") failed.push_back(r.engine + ": " + r.status);
     if (!failed.empty()) throw SimulationFailure(fmt::format("{}", fmt::join(failed, "; ")));
-    if (request.strict && !ref.warnings.empty()) refuse_warnings({ref.warnings});
+    // The study rows carry the warnings joined into one text (a warning may hold a "; " itself): no count here.
+    if (request.strict && !ref.warnings.empty())
+        throw SimulationFailure("--strict: the analytic model's assumptions failed along the run: " + ref.warnings);
 }
 
 }  // namespace vssw::cli

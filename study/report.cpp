@@ -157,8 +157,9 @@ std::vector<std::string> metric_order(const compare::SuiteResults& results) {
 
 std::vector<EngineSummary> summarize(const ReportInput& in) {
     const compare::SuiteResults& res = in.results;
-    // The worst errors and counts are the report-at-a-glance matrix's: one source, so the summary line and the
-    // matrix cannot name different cases or counts.
+    // The worst errors, their cases and the metric counts are the report-at-a-glance matrix's: one source, so the
+    // summary line and the matrix cannot disagree on them. (The line's failure count is the suite's own: every failed
+    // task of the engine, step-study cases included.)
     const std::vector<MatrixCell> cells = error_matrix(in);
     std::vector<EngineSummary> out;
     for (const std::string& engine : compared_engines(res)) {

@@ -64,6 +64,12 @@ TEST(Simulate, LargestRotationIsTheLargestTurningPointTheOverturningOrTheEndOfAC
     const SimulationResult turned = simulate(*m, GroundMotion::none(), GroundMotion::none(), {0.0, 0.2}, cut);
     ASSERT_FALSE(turned.peaks.empty());
     EXPECT_EQ(largest_rotation(turned).t, turned.peaks.front().t);
+    // Started moving inwards from 0.5 alpha1: the start is no turning point, but it is the largest rotation (the
+    // little kinetic energy added is less than the first impact takes).
+    cut.t_end = 2.0;
+    const SimulationResult inwards = simulate(*m, GroundMotion::none(), GroundMotion::none(), {0.5 * alpha, -0.05}, cut);
+    EXPECT_EQ(largest_rotation(inwards).t, 0.0);
+    EXPECT_EQ(largest_rotation(inwards).abs_theta, 0.5 * alpha);
     // Past the collapse angle: the overturning.
     const SimulationResult fell = free_vibration(*m, 0.99 * m->collapse_angle());
     ASSERT_TRUE(fell.overturned);
