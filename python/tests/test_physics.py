@@ -52,10 +52,34 @@ def test_free_vibration_from_minus_theta0_mirrors_plus_theta0(kinematics):
         assert m["theta_dot_before"] == pytest.approx(-p["theta_dot_before"], rel=MIRROR_RTOL)  # mirrored velocity
 
 
-def test_free_vibration_first_impact_follows_the_impact_law(cli):
+def eq19_as_printed(height, thickness, hinge):
+    """Eq. (19) transcribed from the paper (its tan(alpha2)/tan(alpha1), not the code's k), for homogeneous blocks:
+    I_G = m R^2 / 3 about each centroid; masses per unit depth and density cancel."""
+    b, h = thickness / 2, height / 2
+    h1 = hinge * h
+    h2 = h - h1
+    a1, a2 = math.atan(b / h1), math.atan(b / h2)
+    R1, R2 = math.hypot(b, h1), math.hypot(b, h2)
+    m1, m2 = 4 * b * h1, 4 * b * h2
+    I1, I2 = m1 * R1**2 / 3, m2 * R2**2 / 3
+    ratio = math.tan(a2) / math.tan(a1)
+    s1, c1 = math.sin(a1), math.cos(a1)
+    common = m1 * R1**2 + I1 - I2 * ratio
+    num = common - 2 * m1 * R1**2 * s1**2 + m2 * R1**2 * (2 + s1 * c1 / math.tan(a2) - s1**2 * (4 + ratio))
+    den = common + m2 * R1**2 * (2 + s1 * c1 * (1 / math.tan(a2) + math.tan(a2)))
+    return num / den
+
+
+def test_restitution_is_eq19_as_printed():
+    # The module's closed form against an independent transcription of the paper's Eq. (19), on three walls.
+    for wall in [FIG6, dict(height=3.0, thickness=0.143, hinge=0.6), dict(height=6.0, thickness=0.25, hinge=0.5)]:
+        assert vssw.wall(**wall)["restitution"] == pytest.approx(eq19_as_printed(**wall), rel=CLOSED_FORM_RTOL), wall
+
+
+def test_free_vibration_first_impact_follows_the_impact_law():
     # theta1' after / before the first impact is the impact law's ratio: Eq. (19) by default, or a given e. The
     # impact law scales the velocity by the ratio directly, so CLOSED_FORM_RTOL (rounding) holds here too.
-    eq19 = cli.json(["wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"])["restitution"]
+    eq19 = eq19_as_printed(**FIG6)
     for impact, expected in [("eq19", eq19), (0.6, 0.6)]:
         first = vssw.free(**FIG6, theta0=0.5, impact=impact)["impacts"][0]
         assert first["theta_dot_after"] / first["theta_dot_before"] == pytest.approx(expected, rel=CLOSED_FORM_RTOL)
