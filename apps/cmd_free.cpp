@@ -45,9 +45,7 @@ Command add_free_command(CLI::App& root) {
     cmd->add_option("--output-dt", o->request.output_dt,
                     fmt::format("spacing of the CSV samples [s] (default {})", o->request.output_dt));
     cmd->add_flag("--json", o->json, "print JSON instead of tables");
-    cmd->add_flag("--strict", o->strict,
-                  "exit 3 when the model's own assumptions fail along the run (its warnings), after writing the "
-                  "outputs (for CI)");
+    add_strict_flag(*cmd, o->strict);
     cmd->footer(
         "Times in s, angular velocities in rad/s, rotations as |theta|/alpha.\n"
         "JSON keys: model, kinematics (null for a parapet), theta0 (r), alpha [rad],\n"

@@ -43,9 +43,7 @@ Command add_history_command(CLI::App& root) {
                     "write the trajectory to this file, or with '-' to standard output (the summary then goes to the "
                     "error stream): t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
-    cmd->add_flag("--strict", o->strict,
-                  "exit 3 when the model's own assumptions fail along the run (its warnings), after writing the "
-                  "outputs (for CI)");
+    add_strict_flag(*cmd, o->strict);
     cmd->footer(
         "Exactly one of --record and --pulse is required. Accelerations given in g use g0 = 9.80665 m/s^2.\n"
         "JSON keys: record (path, null for a pulse), input, scale_factor, pga_g (after scaling), duration [s], model,\n"

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "apps/simulation_failure.hpp"
 
@@ -45,6 +46,12 @@ void add_support_rows(Table& table, const SimulationResult& result) {
              "", d.roller_departures > 0 ? fmt::format("{} s in all (unilateral roller)", num(d.time_off_roller)) : "")
         .add("friction needed, base / hinge", fmt::format("{} / {}", num(d.base_friction), num(d.hinge_friction)), "",
              "largest |T|/N");
+}
+
+void add_strict_flag(CLI::App& cmd, bool& strict) {
+    cmd.add_flag("--strict", strict,
+                 "exit 3 when the model's own assumptions fail along the run (its warnings), after writing the outputs "
+                 "(for CI)");
 }
 
 void refuse_warnings(const std::vector<std::string>& warnings) {

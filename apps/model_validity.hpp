@@ -19,6 +19,8 @@ std::vector<std::string> validity_warnings(const ChosenModel& chosen, const Simu
 // `--strict` (free, history, compare): a run whose own assumptions failed is not an answer to build on. Throws
 // SimulationFailure (exit 3) naming how many warnings there were and the first; called once the outputs are written.
 void refuse_warnings(const std::vector<std::string>& warnings);
+// The --strict flag of `free` and `history` (one help text for both).
+void add_strict_flag(CLI::App& cmd, bool& strict);
 // {law, restitution}: the impact law and the ratio it gives.
 Json impact_json(const ChosenModel& chosen);
 // roller {model, min_reaction, t_min_reaction, tension_at, departures, time_off}, friction_needed {base, hinge},

@@ -117,7 +117,7 @@ public:
         info.m_splitImpulse = 1;
         // Bullet splits only a penetration deeper than this threshold (penetration is negative): +1e9 splits every
         // one. (It was -1e9, meant as "always" but meaning "never": penetration was pushed out through the velocity
-        // with m_erp, energy in at every landing; measured in the docs/engines.md, "Bullet".)
+        // with m_erp, energy in at every landing; measured in docs/engines.md, "Bullet".)
         info.m_splitImpulsePenetrationThreshold = 1e9;
         info.m_erp2 = knobs.erp;
 
