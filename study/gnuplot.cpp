@@ -27,14 +27,16 @@ int run_program(const std::string& program, const std::string& script, const fs:
     const pid_t pid = fork();
     if (pid < 0) return -1;
     if (pid == 0) {
-        if (chdir(dir.c_str()) != 0) _exit(kNotFound - 1);
-        const int in = open("/dev/null", O_RDONLY);
-        if (in >= 0) dup2(in, 0);
+        // The log first: a relative log path names a file from here, not from dir (opened after the chdir, the log
+        // of `--out relative/folder` was never made and gnuplot's warnings reached the user's terminal).
         const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (fd >= 0) {
             dup2(fd, 1);
             dup2(fd, 2);
         }
+        if (chdir(dir.c_str()) != 0) _exit(kNotFound - 1);
+        const int in = open("/dev/null", O_RDONLY);
+        if (in >= 0) dup2(in, 0);
         execlp(program.c_str(), program.c_str(), script.c_str(), static_cast<char*>(nullptr));
         _exit(kNotFound);
     }

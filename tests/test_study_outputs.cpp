@@ -19,6 +19,7 @@
 #include "analytic/error.hpp"
 #include "multibody/engine.hpp"
 #include "study/effects.hpp"
+#include "study/gnuplot.hpp"
 #include "study/grid.hpp"
 #include "study/journal.hpp"
 #include "study/merge.hpp"
@@ -295,6 +296,33 @@ TEST_F(TinyStudy, WithoutGnuplotTheStudyIsWrittenWithAWarning) {
     EXPECT_TRUE(fs::exists(out() / st::kPlotsDir / "tornado_period.gp"));
     EXPECT_FALSE(fs::exists(out() / st::kPlotsDir / "tornado_period.svg"));
     EXPECT_FALSE(fs::exists(out() / st::kPlotsDir / "tornado_period.log"));
+}
+
+// A plot program that fails after writing to its error stream, run on a plots folder named relative to the working
+// folder (as `--out results` names it): what it wrote is in NAME.log beside the script, where the failure note points,
+// and not on the user's terminal. The log was once opened after changing into the folder, so a relative path named a
+// file that could not be made.
+TEST(Gnuplot, AFailedPlotLeavesItsLogBesideItsScriptWhenTheFolderIsRelative) {
+    const vssw::testing::TempDir dir("gnuplot_relative");
+    const fs::path fake = dir / "fake-gnuplot";
+    {
+        std::ofstream f(fake);
+        f << "#!/bin/sh\necho 'fake gnuplot warning' >&2\nexit 1\n";
+    }
+    fs::permissions(fake, fs::perms::owner_all);
+    // Work in dir, so that the folder is "plots" (a path climbing out with "..", as from the build folder to /tmp,
+    // can resolve from inside the folder too and would hide the fault); the working folder is put back after.
+    struct WorkingFolder {
+        fs::path before = fs::current_path();
+        explicit WorkingFolder(const fs::path& to) { fs::current_path(to); }
+        ~WorkingFolder() { fs::current_path(before); }
+    } in_dir(dir.path);
+    const st::PlotResult r =
+        st::draw_plots({{{"section", "p", "a plot", false}, "plot 1\n", "1 2\n"}}, "plots", fake.string());
+    ASSERT_EQ(r.plots.size(), 1u);
+    EXPECT_FALSE(r.plots[0].made);
+    EXPECT_TRUE(contains(r.note, "gnuplot exit 1, see p.log")) << r.note;
+    EXPECT_TRUE(contains(read(dir / "plots" / "p.log"), "fake gnuplot warning"));
 }
 
 TEST_F(TinyStudy, AMergedStudyIsWrittenAsASingleRun) {
