@@ -23,8 +23,6 @@ constexpr double kPi = 3.141592653589793;
 // real timing error, yet far above the rounding of times read from text (~1e-13 relative for 0.02 s over 30 s).
 // It guarantees that the O(1) index guess is off by at most one interval, which operator() corrects.
 constexpr double kUniformSpacingTolerance = 1e-9;
-// Points of the uniform scan used for the PGA of an analytic signal (its breakpoints are evaluated as well).
-constexpr int kPgaScanPoints = 20000;
 // Upper limit for reserving memory from a header's NPTS, so a corrupt header cannot trigger a huge allocation
 // before the values are counted.
 constexpr double kMaxReserve = 1e7;
@@ -389,6 +387,10 @@ std::size_t column_index(const std::vector<std::string>& header, const std::stri
     if (it == header.end())
         throw InputError(fmt::format("{}:{}: {} '{}' is not a column of the header (columns: {})", path, line_no, flag,
                                      name, fmt::join(header, ", ")));
+    if (std::find(it + 1, header.end(), name) != header.end())
+        throw InputError(fmt::format("{}:{}: {} '{}' names more than one column of the header (columns: {}): which is "
+                                     "meant cannot be told",
+                                     path, line_no, flag, name, fmt::join(header, ", ")));
     return static_cast<std::size_t>(it - header.begin());
 }
 
@@ -537,10 +539,12 @@ GroundMotion GroundMotion::sampled(std::vector<double> times, std::vector<double
 }
 
 GroundMotion GroundMotion::analytic(std::function<double(double)> a, double duration, std::vector<double> breakpoints,
-                                    std::string name) {
+                                    AnalyticShape shape, std::string name) {
     if (!a) throw InputError(fmt::format("analytic ground motion '{}' has no function", name));
     require(std::isfinite(duration) && duration > 0.0, fmt::format("duration of ground motion '{}'", name),
             "a positive finite time in s", duration);
+    require(std::isfinite(shape.peak) && shape.peak >= 0.0, fmt::format("peak of ground motion '{}'", name),
+            "a finite acceleration >= 0 m/s^2", shape.peak);
     for (double b : breakpoints)
         require(std::isfinite(b) && b >= 0.0 && b <= duration, fmt::format("breakpoint of ground motion '{}'", name),
                 fmt::format("within [0, {}] s", duration), b);
@@ -551,6 +555,8 @@ GroundMotion GroundMotion::analytic(std::function<double(double)> a, double dura
 
     GroundMotion m;
     m.fn_ = std::move(a);
+    m.next_extremum_ = std::move(shape.next_extremum);
+    m.analytic_peak_ = shape.peak;
     m.duration_ = duration;
     m.breakpoints_ = std::move(breakpoints);
     m.name_ = std::move(name);
@@ -612,15 +618,15 @@ bool GroundMotion::continuous_at(double t) const {
 
 double GroundMotion::pga() const {
     if (is_zero_) return 0.0;
+    if (times_.empty()) return analytic_peak_;
     double peak = 0.0;
-    if (!times_.empty()) {
-        for (double v : values_) peak = std::max(peak, std::abs(v));
-        return peak;
-    }
-    for (int k = 0; k <= kPgaScanPoints; ++k)
-        peak = std::max(peak, std::abs(fn_(duration_ * static_cast<double>(k) / kPgaScanPoints)));
-    for (double b : breakpoints_) peak = std::max(peak, std::abs(fn_(b)));
+    for (double v : values_) peak = std::max(peak, std::abs(v));
     return peak;
+}
+
+double GroundMotion::next_extremum(double t) const {
+    if (is_zero_ || !times_.empty() || !next_extremum_) return std::numeric_limits<double>::infinity();
+    return next_extremum_(t);
 }
 
 GroundMotion GroundMotion::scaled(double factor) const {
@@ -637,6 +643,7 @@ GroundMotion GroundMotion::scaled(double factor) const {
         return m;
     }
     m.fn_ = [f = fn_, factor](double t) { return factor * f(t); };
+    m.analytic_peak_ = std::abs(factor) * analytic_peak_;
     return m;
 }
 
@@ -671,10 +678,33 @@ GroundMotion parse_record(const std::string& text, const std::string& name, cons
 
 // --- synthetic inputs -----------------------------------------------------------------------------------------------
 
+namespace {
+
+constexpr double kNoMore = std::numeric_limits<double>::infinity();
+
+// The extrema of a sinusoid of period T at first + k T/2 (k = 0, 1, ...) before `end`: the first after t.
+std::function<double(double)> sinusoid_extrema(double period, double first, double end) {
+    return [half = 0.5 * period, first, end](double t) {
+        double next = first + std::max(0.0, std::floor((t - first) / half) + 1.0) * half;
+        while (next <= t) next += half;  // rounding of the division
+        return next < end ? next : kNoMore;
+    };
+}
+
+// The first of a few known extrema (ascending) after t.
+std::function<double(double)> listed_extrema(std::vector<double> times) {
+    return [times = std::move(times)](double t) {
+        const auto it = std::upper_bound(times.begin(), times.end(), t);
+        return it == times.end() ? kNoMore : *it;
+    };
+}
+
+}  // namespace
+
 GroundMotion constant_motion(double amplitude, double duration) {
     require_amplitude(amplitude);
     require_time(duration, "constant motion duration");
-    return GroundMotion::analytic([amplitude](double) { return amplitude; }, duration, {},
+    return GroundMotion::analytic([amplitude](double) { return amplitude; }, duration, {}, {std::abs(amplitude), {}},
                                   fmt::format("constant {} m/s^2 for {} s", amplitude, duration));
 }
 
@@ -683,7 +713,8 @@ GroundMotion sine_pulse(double amplitude, double period) {
     require_time(period, "sine pulse period T_p");
     const double omega = 2.0 * kPi / period;
     return GroundMotion::analytic([amplitude, omega](double t) { return amplitude * std::sin(omega * t); }, period,
-                                  {}, fmt::format("sine pulse a_p={} m/s^2 T_p={} s", amplitude, period));
+                                  {}, {std::abs(amplitude), sinusoid_extrema(period, 0.25 * period, period)},
+                                  fmt::format("sine pulse a_p={} m/s^2 T_p={} s", amplitude, period));
 }
 
 GroundMotion cosine_pulse(double amplitude, double period) {
@@ -692,7 +723,8 @@ GroundMotion cosine_pulse(double amplitude, double period) {
     const double omega = 2.0 * kPi / period;
     // Jumps from 0 to a_p at t = 0 and from a_p back to 0 after T_p: both are breakpoints (added by analytic()).
     return GroundMotion::analytic([amplitude, omega](double t) { return amplitude * std::cos(omega * t); }, period,
-                                  {}, fmt::format("cosine pulse a_p={} m/s^2 T_p={} s", amplitude, period));
+                                  {}, {std::abs(amplitude), sinusoid_extrema(period, 0.5 * period, period)},
+                                  fmt::format("cosine pulse a_p={} m/s^2 T_p={} s", amplitude, period));
 }
 
 GroundMotion ricker_wavelet(double amplitude, double period) {
@@ -706,7 +738,11 @@ GroundMotion ricker_wavelet(double amplitude, double period) {
             const double x = pf2 * (t - centre) * (t - centre);
             return amplitude * (1.0 - 2.0 * x) * std::exp(-x);
         },
-        3.0 * period, {}, fmt::format("Ricker wavelet a_p={} m/s^2 T_p={} s", amplitude, period));
+        // Extrema where d/dx [(1 - 2x) e^-x] = 0 (x = 1.5, the side lobes) and at the centre (x = 0, the peak a_p).
+        3.0 * period, {},
+        {std::abs(amplitude), listed_extrema({centre - std::sqrt(1.5) * period / kPi, centre,
+                                              centre + std::sqrt(1.5) * period / kPi})},
+        fmt::format("Ricker wavelet a_p={} m/s^2 T_p={} s", amplitude, period));
 }
 
 GroundMotion harmonic(double amplitude, double period, double duration) {
@@ -714,8 +750,11 @@ GroundMotion harmonic(double amplitude, double period, double duration) {
     require_time(period, "harmonic period T");
     require_time(duration, "harmonic duration");
     const double omega = 2.0 * kPi / period;
+    // Shorter than a quarter period, it ends before its first peak.
+    const double peak =
+        duration >= 0.25 * period ? std::abs(amplitude) : std::abs(amplitude * std::sin(omega * duration));
     return GroundMotion::analytic([amplitude, omega](double t) { return amplitude * std::sin(omega * t); },
-                                  duration, {},
+                                  duration, {}, {peak, sinusoid_extrema(period, 0.25 * period, duration)},
                                   fmt::format("harmonic a_p={} m/s^2 T={} s for {} s", amplitude, period, duration));
 }
 

@@ -23,13 +23,24 @@ AccelUnits parse_units(const std::string& text);
 // Factor that converts a value in `units` to m/s^2, with standard gravity g0 = 9.80665 for "g".
 double to_m_per_s2(AccelUnits units);
 
+// What the maker of an analytic signal knows of its shape, which a scan of the function would only approximate: a fast
+// harmonic sampled on any fixed grid can land on its zeros (a 1 ms period scanned every 0.5 ms reads 1e-11 of its
+// amplitude), so the peak and the extrema are given, not searched for.
+struct AnalyticShape {
+    double peak;  // max |a(t)| over [0, duration] [m/s^2]
+    // The first extremum of a(t) after t, or +infinity when none is left before the end. Empty: a(t) is monotone
+    // between its breakpoints. Between two consecutive extrema or breakpoints a(t) is monotone, so |a| there is
+    // largest at an end: the rest phase looks at those instants and misses no excursion past the threshold.
+    std::function<double(double)> next_extremum;
+};
+
 class GroundMotion {
 public:
     // A sampled record: strictly increasing times (from 0 or later), accelerations in m/s^2.
     static GroundMotion sampled(std::vector<double> times, std::vector<double> accel_m_s2, std::string name);
-    // An analytic signal a(t) on [0, duration], zero outside, with the times where it is not smooth.
+    // An analytic signal a(t) on [0, duration], zero outside, with the times where it is not smooth and its shape.
     static GroundMotion analytic(std::function<double(double)> a, double duration, std::vector<double> breakpoints,
-                                 std::string name);
+                                 AnalyticShape shape, std::string name);
     // No motion at all.
     static GroundMotion none();
 
@@ -49,7 +60,10 @@ public:
     double duration() const { return duration_; }
     const std::vector<double>& breakpoints() const { return breakpoints_; }
     const std::string& name() const { return name_; }
-    double pga() const;  // max |a| in m/s^2 (over the samples, or over a fine scan of an analytic signal)
+    double pga() const;  // max |a| in m/s^2 (over the samples, or an analytic signal's AnalyticShape::peak)
+    // The first extremum of an analytic signal after t (AnalyticShape::next_extremum); +infinity for a record (its
+    // samples are its breakpoints), for no motion and for a signal monotone between its breakpoints.
+    double next_extremum(double t) const;
     bool is_zero() const { return is_zero_; }
 
     GroundMotion scaled(double factor) const;           // a(t) * factor; factor must be finite
@@ -64,6 +78,8 @@ private:
     std::size_t interval_of(double t) const;
 
     std::function<double(double)> fn_;
+    std::function<double(double)> next_extremum_;  // an analytic signal's, when it has extrema inside its pieces
+    double analytic_peak_ = 0.0;                   // an analytic signal's max |a| [m/s^2]
     std::vector<double> times_, values_;
     std::vector<double> breakpoints_;
     double duration_ = 0.0;

@@ -27,6 +27,10 @@ constexpr int kScanPoints = 4;
 // a thousandth of the signal's duration so that a short pulse's time above the threshold is not stepped over.
 constexpr double kRestScanStep = 1e-3;  // [s]
 constexpr double kRestScanFraction = 1e-3;
+// Ulps past a lift-off root found exactly (margin 0) to the first instant the margin is positive.
+constexpr int kRootUlps = 4;
+// [s] how closely the instant a vertical analytic signal cancels gravity is placed (it is only reported).
+constexpr double kWeightlessTimeTol = 1e-12;
 // Runs longer than this, or with more output samples, are refused as bad input rather than left to run for hours.
 constexpr double kMaxEndTime = 1e7;      // [s]
 constexpr double kMaxOutputSamples = 1e8;
@@ -379,12 +383,18 @@ bool Simulator::rest_phase(double& t, State& y) {
             return false;
         }
         double next = std::min({next_breakpoint(scan), opt_.t_end, motion_end_});
-        next = std::min(next, scan + rest_scan_step_);
+        // An analytic signal's extrema too: between them and the breakpoints |a_h| is largest at an end, so no
+        // excursion past the threshold falls between two looks (a 2 ms harmonic looked at every 1 ms saw its zeros).
+        next = std::min({next, scan + rest_scan_step_, ah_.next_extremum(scan), av_.next_extremum(scan)});
         if (tipping_margin(next) > 0.0) {
             // Narrow to the crossing, keeping the right end, where the margin is positive, so the flight starts.
             double lo = scan, hi = next;
             shrink_bracket([&](double x) { return tipping_margin(x); }, lo, hi, opt_.event_time_tol);
-            const double when = tipping_margin(hi) > 0.0 ? hi : next;
+            // The bracket can end on the root itself (margin exactly 0): the flight starts an ulp or two after it,
+            // not at `next` (which was up to a scan step late: 2.4e-6 s on a 2 ms harmonic).
+            double when = hi;
+            for (int ulp = 0; ulp < kRootUlps && tipping_margin(when) <= 0.0; ++ulp) when = std::nextafter(when, next);
+            if (tipping_margin(when) <= 0.0) when = next;
             if (tips_from(when)) return lift(when);
         }
         scan = next;
@@ -783,10 +793,48 @@ void validate(const SimulationOptions& options) {
             options.output_dt);
 }
 
+namespace {
+
+// The first instant in [0, t_end] where g + a_v(t) <= 0. A record is linear between its samples, so its least value
+// is at a sample; an analytic signal's at an extremum or a breakpoint (AnalyticShape).
+std::optional<double> first_weightless(const GroundMotion& vertical, double g, double t_end) {
+    if (vertical.is_zero() || vertical.pga() < g) return std::nullopt;
+    auto weightless = [&](double t) { return g + vertical(t) <= 0.0; };
+    if (!vertical.sample_times().empty()) {
+        const std::vector<double>& ts = vertical.sample_times();
+        const std::vector<double>& as = vertical.sample_values();
+        for (std::size_t i = 0; i < ts.size() && ts[i] <= t_end; ++i) {
+            if (g + as[i] > 0.0) continue;
+            if (i == 0 || ts[i] <= 0.0) return ts[i];
+            // Linear between the samples: where g + a_v reaches 0 on the way down.
+            const double above = g + as[i - 1], below = g + as[i];
+            return ts[i - 1] + (ts[i] - ts[i - 1]) * above / (above - below);
+        }
+        return std::nullopt;
+    }
+    std::vector<double> instants = vertical.breakpoints();
+    const double last = std::min(t_end, vertical.duration());
+    for (double t = vertical.next_extremum(0.0); t <= last; t = vertical.next_extremum(t)) instants.push_back(t);
+    std::sort(instants.begin(), instants.end());
+    for (std::size_t i = 0; i < instants.size() && instants[i] <= t_end; ++i) {
+        if (!weightless(instants[i])) continue;
+        if (i == 0) return instants[i];
+        // Monotone between two looks: the crossing by bisection.
+        double lo = instants[i - 1], hi = instants[i];
+        shrink_bracket([&](double x) { return g + vertical(x); }, lo, hi, kWeightlessTimeTol);
+        return weightless(hi) ? hi : instants[i];
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
 SimulationResult simulate(const RockingModel& model, const GroundMotion& horizontal, const GroundMotion& vertical,
                           InitialState initial, const SimulationOptions& options) {
     Simulator sim(model, horizontal, vertical, options);
-    return sim.run(initial);
+    SimulationResult r = sim.run(initial);
+    r.weightless_at = first_weightless(vertical, model.gravity(), r.t_final);
+    return r;
 }
 
 SimulationResult free_vibration(const RockingModel& model, double theta0, SimulationOptions options) {

@@ -119,6 +119,9 @@ struct SimulationResult {
     // were placed from a step aimed at a predicted landing (SimulationOptions::predict_landings).
     long searched_events = 0;
     SupportDemand supports;
+    // The first time within the run the vertical ground acceleration cancels gravity (g + a_v <= 0): the wall would
+    // leave the ground, at rest or rocking, which the model does not describe. Empty when it never does.
+    std::optional<double> weightless_at;
 };
 
 // The run's largest |theta1| and when it was reached: the overturning's, else the largest of the start and the

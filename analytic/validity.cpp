@@ -22,6 +22,10 @@ std::vector<std::string> validity_warnings(const RockingModel& model, std::optio
                 "the top {:g} % of the thickness off the roller from {:.3g} alpha1 on; use --kinematics exact",
                 result.max_abs_theta / alpha, 100.0 * kEq3DriftFraction, *limit / alpha));
     }
+    if (result.weightless_at)
+        out.push_back(fmt::format("the vertical ground acceleration cancels gravity at t = {:.6g} s (g + a_v <= 0): "
+                                  "the wall would leave the ground there, which the rocking model does not allow",
+                                  *result.weightless_at));
     const SupportDemand& d = result.supports;
     if (!d.computed) return out;
     if (d.roller_tension_at && d.roller_departures == 0)  // a unilateral roller let the top go: modelled, no warning

@@ -40,7 +40,8 @@ GroundMotion ramp_and_hold(double amplitude, double ramp_time, double hold_time)
             const double x = t / ramp_time;
             return amplitude * (x - std::sin(2.0 * kPi * x) / (2.0 * kPi));
         },
-        ramp_time + hold_time, {ramp_time},
+        // x - sin(2 pi x) / (2 pi) rises monotonically from 0 to 1: the hold is the peak.
+        ramp_time + hold_time, {ramp_time}, {std::abs(amplitude), {}},
         fmt::format("ramp to {} m/s^2 over {} s, held {} s", amplitude, ramp_time, hold_time));
 }
 

@@ -32,7 +32,8 @@ constexpr double kRoundoff = 1e-12;
 // Two forms of one linear interpolation ((1 - w) a_i + w a_i+1 in GroundMotion; a_i + slope (x - t_i) in a piece, or
 // a_i + (x - t_i) / dt_i (a_i+1 - a_i) in the test's) each round twice (weight or slope, then the sum): 4 roundoffs.
 constexpr double kInterpolationsApart = 4.0 * kRoundoff;
-// The analytic PGA scan samples 20,000 points; our peaks fall on scan points, so only rounding remains.
+// An analytic signal's PGA is the peak its maker states (AnalyticShape), compared here with the amplitude written in
+// the test: only the rounding of a few operations remains.
 constexpr double kScanTol = 1e-9;
 
 const std::string kDataDir = VSSW_DATA_DIR;
@@ -430,7 +431,8 @@ TEST(GroundMotion, NanTimeIsNotMaskedAsZero) {
 // --- analytic signals and none ------------------------------------------------------------------------------------
 
 TEST(GroundMotion, AnalyticBreakpointsAreSortedDeduplicatedWithEnds) {
-    const GroundMotion m = GroundMotion::analytic([](double t) { return t; }, 2.0, {1.5, 0.5, 1.5, 2.0}, "ramp");
+    const GroundMotion m =
+        GroundMotion::analytic([](double t) { return t; }, 2.0, {1.5, 0.5, 1.5, 2.0}, {2.0, {}}, "ramp");
     EXPECT_EQ(m.breakpoints(), (std::vector<double>{0.0, 0.5, 1.5, 2.0}));
     EXPECT_EQ(m(1.25), 1.25);
     EXPECT_EQ(m(2.0), 2.0);
@@ -443,11 +445,13 @@ TEST(GroundMotion, AnalyticBreakpointsAreSortedDeduplicatedWithEnds) {
 
 TEST(GroundMotion, AnalyticValidatesArguments) {
     const auto one = [](double) { return 1.0; };
-    expect_input_error([] { GroundMotion::analytic(nullptr, 1.0, {}, "f"); }, {"'f'", "no function"});
-    expect_input_error([&] { GroundMotion::analytic(one, 0.0, {}, "f"); }, {"duration", "got 0"});
-    expect_input_error([&] { GroundMotion::analytic(one, NAN, {}, "f"); }, {"duration", "nan"});
-    expect_input_error([&] { GroundMotion::analytic(one, 1.0, {1.5}, "f"); }, {"breakpoint", "1.5"});
-    expect_input_error([&] { GroundMotion::analytic(one, 1.0, {-0.5}, "f"); }, {"breakpoint", "-0.5"});
+    expect_input_error([] { GroundMotion::analytic(nullptr, 1.0, {}, {1.0, {}}, "f"); }, {"'f'", "no function"});
+    expect_input_error([&] { GroundMotion::analytic(one, 0.0, {}, {1.0, {}}, "f"); }, {"duration", "got 0"});
+    expect_input_error([&] { GroundMotion::analytic(one, NAN, {}, {1.0, {}}, "f"); }, {"duration", "nan"});
+    expect_input_error([&] { GroundMotion::analytic(one, 1.0, {1.5}, {1.0, {}}, "f"); }, {"breakpoint", "1.5"});
+    expect_input_error([&] { GroundMotion::analytic(one, 1.0, {-0.5}, {1.0, {}}, "f"); }, {"breakpoint", "-0.5"});
+    expect_input_error([&] { GroundMotion::analytic(one, 1.0, {}, {NAN, {}}, "f"); }, {"peak", "nan"});
+    expect_input_error([&] { GroundMotion::analytic(one, 1.0, {}, {-1.0, {}}, "f"); }, {"peak", "-1"});
 }
 
 TEST(GroundMotion, NoneIsZeroEverywhere) {
@@ -558,6 +562,35 @@ TEST(GroundMotion, RickerWaveletPeaksAtItsCentre) {
     EXPECT_NEAR(m.breakpoints().back(), 3.0 * tp, kRoundoff);
     EXPECT_EQ(m(-0.01), 0.0);
     EXPECT_EQ(m(3.0 * tp + 0.01), 0.0);
+}
+
+// A scan on a fixed grid lands on a fast harmonic's zeros (a 1 ms period every 0.5 ms: 7.7e-12 g of 0.5 g, and
+// --pga 0.5 then scaled it by 6.5e10): the peak is the amplitude, stated, and the extrema are where |a| is it.
+TEST(GroundMotion, AFastHarmonicsPgaIsItsAmplitudeAndItsExtremaAreItsPeaks) {
+    const double ap = 0.5 * 9.80665, period = 1e-3;
+    const GroundMotion h = harmonic(ap, period, 10.0);
+    EXPECT_EQ(h.pga(), ap);
+    EXPECT_EQ(h.scaled_to_pga(2.0 * ap).pga(), 2.0 * ap);
+    double t = 0.0;
+    for (int k = 0; k < 5; ++k) {
+        t = h.next_extremum(t);
+        EXPECT_NEAR(t, (0.25 + 0.5 * k) * period, kRoundoff);
+        EXPECT_NEAR(std::abs(h(t)), ap, kRoundoff * ap * 1e3) << "extremum " << k;  // sin near its peak: flat
+    }
+    // Ended before its first peak: the peak is where it stops, sin(2 pi 0.1) of the amplitude.
+    const GroundMotion short_one = harmonic(1.0, 1.0, 0.1);
+    EXPECT_NEAR(short_one.pga(), std::sin(2.0 * 3.141592653589793 * 0.1), kRoundoff);
+    EXPECT_EQ(short_one.next_extremum(0.0), INFINITY);
+    // The Ricker wavelet's: its side lobes (x = 1.5) and its centre; none after the last.
+    const GroundMotion r = ricker_wavelet(2.0, 1.0);
+    const double lobe = std::sqrt(1.5) / 3.141592653589793;
+    EXPECT_NEAR(r.next_extremum(0.0), 1.5 - lobe, kRoundoff);
+    EXPECT_NEAR(r.next_extremum(1.5 - lobe), 1.5, kRoundoff);
+    EXPECT_NEAR(r.next_extremum(1.5), 1.5 + lobe, kRoundoff);
+    EXPECT_EQ(r.next_extremum(1.5 + lobe), INFINITY);
+    // Records and no motion have none (a record's samples are its breakpoints).
+    EXPECT_EQ(GroundMotion::sampled({0.0, 1.0}, {1.0, -1.0}, "r").next_extremum(0.0), INFINITY);
+    EXPECT_EQ(GroundMotion::none().next_extremum(0.0), INFINITY);
 }
 
 TEST(GroundMotion, HarmonicAndConstantMotion) {

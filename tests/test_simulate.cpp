@@ -2,12 +2,14 @@
 // bisection on simulations, size invariance, the paper's Fig. 6 and Sect. 5 statements, rest and overturning.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
+#include "analytic/validity.hpp"
 #include "tests/table1.hpp"
 
 namespace vssw {
@@ -20,6 +22,8 @@ constexpr double kEnergyBalance = 1e-7;
 constexpr double kEventTimeMatch = 1e-9;   // two runs that must be mirror images: same steps up to round-off
 constexpr double kThresholdBisection = 1e-7;  // relative bracket width the bisection below stops at
 constexpr double kGravityInG = 9.81;
+constexpr double kLiftOffTime = 1e-12;     // [s] the rest phase's bisection (event_time_tol 1e-13) and asin's rounding
+constexpr double kWeightlessTime = 1e-11;  // [s] its bisection (1e-12) and the sine's rounding near the crossing
 
 const std::string kRinaldi = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
 
@@ -260,6 +264,47 @@ TEST(Simulate, PulseAboveTheThresholdRocksTheWallWhichThenComesBackToRest) {
     EXPECT_FALSE(r.overturned);
     EXPECT_TRUE(r.at_rest_at_end);
     EXPECT_LT(r.energy_balance_error, kEnergyBalance);
+}
+
+// At rest the wall lifts at the first instant the ground acceleration passes Eq. (12)'s threshold, however briefly:
+// under a_p sin(w t) with a_p above it, at asin(threshold / a_p) / w. A 2 ms harmonic was once looked at every 1 ms,
+// on its zeros, and never lifted the wall (exit 0, at rest, 0.5 g against a 0.29 g threshold).
+TEST(Simulate, AFastHarmonicAboveTheThresholdLiftsTheWallWhereEq12SaysItShould) {
+    const VsswGeometry w = fig6_vssw();
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    for (double period : {2e-3, 1e-3, 0.5}) {
+        const double ap = 0.5 * kGravityInG, omega = 2.0 * 3.141592653589793 / period;
+        SimulationOptions o;
+        o.t_end = 2.0 * period;  // a second of shaking (the rest phase's fallback scan step 1 ms), two periods run
+        const SimulationResult r = simulate(*m, harmonic(ap, period, 1.0), GroundMotion::none(), {}, o);
+        ASSERT_FALSE(r.lift_offs.empty()) << "period " << period;
+        EXPECT_NEAR(r.lift_offs[0], std::asin(eq12_threshold(w) / ap) / omega, kLiftOffTime) << "period " << period;
+    }
+}
+
+// g + a_v <= 0: the weight points up and the wall would leave the ground, at rest or rocking. Said, with the first
+// instant (linear between a record's samples): here half way down a ramp from 0 to -2 g.
+TEST(Simulate, AVerticalAccelerationThatCancelsGravityIsSaid) {
+    const VsswGeometry w = fig6_vssw();
+    const auto m = make_vssw_model(w, Kinematics::paper);
+    SimulationOptions o;
+    o.t_end = 3.0;
+    const GroundMotion up = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, -2.0 * w.g, 0.0}, "up");
+    const SimulationResult r = simulate(*m, GroundMotion::none(), up, {}, o);
+    ASSERT_TRUE(r.weightless_at.has_value());
+    EXPECT_NEAR(*r.weightless_at, 0.5, kLiftOffTime);
+    const std::vector<std::string> said = validity_warnings(*m, Kinematics::paper, r);
+    EXPECT_TRUE(std::any_of(said.begin(), said.end(),
+                            [](const std::string& s) { return s.find("cancels gravity at t = 0.5 s") != s.npos; }));
+    // Down to -0.9 g only: never weightless, nothing said.
+    const GroundMotion light = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, -0.9 * w.g, 0.0}, "light");
+    EXPECT_FALSE(simulate(*m, GroundMotion::none(), light, {}, o).weightless_at.has_value());
+    // An analytic signal (looked at its extrema, then bisected): 1.5 g sin(2 pi t) first reaches -g at
+    // t = 1/2 + asin(2/3) / (2 pi).
+    const GroundMotion shaking = harmonic(1.5 * w.g, 1.0, 2.0);
+    const SimulationResult h = simulate(*m, GroundMotion::none(), shaking, {}, o);
+    ASSERT_TRUE(h.weightless_at.has_value());
+    EXPECT_NEAR(*h.weightless_at, 0.5 + std::asin(2.0 / 3.0) / (2.0 * 3.141592653589793), kWeightlessTime);
 }
 
 TEST(Simulate, StrongPulseOverturnsTheWall) {
