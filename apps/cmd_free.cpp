@@ -1,6 +1,8 @@
 // `vssw free`: free vibration from rest at theta0 = r * alpha.
 #include <memory>
+#include <optional>
 #include <ostream>
+#include <string>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -24,7 +26,7 @@ Command add_free_command(CLI::App& root) {
         WallOptions wall;
         ModelOptions model;
         FreeRequest request;
-        std::string csv;
+        std::optional<std::string> csv;  // --csv as given (empty is refused)
         bool json = false;
         bool strict = false;
     };

@@ -1,6 +1,9 @@
 // `vssw history`: the response of a wall, from rest, to a recorded or synthetic ground motion.
 #include <memory>
+#include <optional>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -19,7 +22,7 @@ Command add_history_command(CLI::App& root) {
         ModelOptions model;
         GroundMotionOptions motion;
         HistoryRequest request;
-        std::string csv;
+        std::optional<std::string> csv;  // --csv as given (empty is refused)
         bool json = false;
         bool strict = false;
     };
@@ -57,9 +60,12 @@ Command add_history_command(CLI::App& root) {
         "CSV: theta_dot_over_ref = theta_dot / reference velocity; E = kinetic + weights' potential - work of N,\n"
         "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha); ag_g = a_h / g0.");
     return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) {
-                o->request.keep_trajectory = !o->csv.empty();
+                o->request.keep_trajectory = o->csv.has_value();
                 HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
-                TrajectoryCsv csv(o->csv, o->json);  // after the options are checked, before the run
+                std::vector<std::string> inputs;  // the CSV must not replace them
+                for (const auto& file : {o->motion.record, o->motion.vertical_record})
+                    if (file) inputs.push_back(*file);
+                TrajectoryCsv csv(o->csv, o->json, inputs);  // after the options are checked, before the run
                 simulate_history(run);
                 csv.write(out, *run.chosen.model, run.result);
                 std::ostream& summary = csv.summary(out, err);

@@ -41,7 +41,10 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     try {
         validate(options);
     } catch (const InputError& e) {
-        throw InputError(fmt::format("--rtol: {}", e.what()));
+        // validate() names the setting first; say which command-line option it came from (the output interval's
+        // bound was once reported as --rtol's).
+        const std::string what = e.what();
+        throw InputError(fmt::format("{}: {}", what.rfind("output interval", 0) == 0 ? "--output-dt" : "--rtol", what));
     }
     SimulationResult result = run_simulation([&] {
         try {

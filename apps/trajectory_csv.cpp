@@ -1,6 +1,8 @@
 #include "apps/trajectory_csv.hpp"
 
+#include <filesystem>
 #include <ostream>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -21,10 +23,21 @@ void write_trajectory_csv(std::ostream& out, const RockingModel& model, const Si
     }
 }
 
-TrajectoryCsv::TrajectoryCsv(const std::string& path, bool json) : to_stdout_(path == "-") {
+TrajectoryCsv::TrajectoryCsv(const std::optional<std::string>& path, bool json, const std::vector<std::string>& inputs)
+    : to_stdout_(path == "-") {
+    if (!path) return;
+    if (path->empty()) throw InputError("--csv: the path is empty (give a file name, or - for standard output)");
     if (to_stdout_ && json)
         throw InputError("--csv - and --json both write to standard output: give the CSV a file name");
-    if (!path.empty() && !to_stdout_) file_ = std::make_unique<study::AtomicFile>(path);
+    if (to_stdout_) return;
+    for (const std::string& input : inputs) {
+        std::error_code ec;
+        if (std::filesystem::equivalent(*path, input, ec))
+            throw InputError(fmt::format("--csv '{}' is the file '{}' the run reads: writing the trajectory there "
+                                         "would replace it; give the CSV another name",
+                                         *path, input));
+    }
+    file_ = std::make_unique<study::AtomicFile>(*path);
 }
 
 void TrajectoryCsv::write(std::ostream& out, const RockingModel& model, const SimulationResult& result) {

@@ -207,4 +207,42 @@ TEST(CliFreeCsv, TheTrajectoryKeepsItsEnergyBalanceAndMatchesTheEvents) {
     EXPECT_TRUE(r.err.find("Free vibration") != std::string::npos) << "the summary goes to the error stream";
 }
 
+// --csv must not replace what the run reads: the same path as the record (or the vertical one), however it is
+// spelled, is refused before anything is written and the record is left whole. An empty --csv is refused, not ignored.
+// A bad output interval is named as --output-dt (it was once named --rtol).
+TEST(CliRecords, TheCsvIsRefusedWhereItWouldReplaceTheRecordOrWhereItIsEmptyAndTheOptionAtFaultIsNamed) {
+    const RecordDir d{vssw::testing::TempDir()};
+    const std::string text = "0 0.1\n0.01 0.2\n0.02 0\n";
+    const std::string record = d.write("record.txt", text);
+    const std::string spelled_otherwise = (d.dir / "." / "record.txt").string();
+    for (const std::vector<std::string>& extra :
+         {std::vector<std::string>{"--record", record, "--csv", record},
+          std::vector<std::string>{"--record", record, "--csv", spelled_otherwise},
+          std::vector<std::string>{"--record", kRinaldi, "--vertical-record", record, "--csv", record}}) {
+        const auto r = run_cli(std::vector<std::string>{"history"} + kFig6 + extra);
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_NE(r.err.find("the run reads"), std::string::npos) << r.err;
+        EXPECT_EQ(vssw::testing::read_file(record), text);
+    }
+    // An output interval below the samples' bound is named as --output-dt, a tolerance out of range as --rtol.
+    const std::string csv = (d.dir / "free.csv").string();
+    const auto fine = run_cli(std::vector<std::string>{"free"} + kFig6 +
+                              std::vector<std::string>{"--theta0", "0.5", "--output-dt", "1e-9", "--csv", csv});
+    EXPECT_EQ(fine.code, 2);
+    EXPECT_EQ(fine.err.rfind("vssw: error: --output-dt: output interval", 0), 0u) << fine.err;
+    const std::vector<std::string> loose_rtol = {"--theta0", "0.5", "--rtol", "0.5"};
+    const auto loose = run_cli(std::vector<std::string>{"free"} + kFig6 + loose_rtol);
+    EXPECT_EQ(loose.code, 2);
+    EXPECT_EQ(loose.err.rfind("vssw: error: --rtol: relative tolerance", 0), 0u) << loose.err;
+    for (const std::string command : {"history", "free"}) {
+        const std::vector<std::string> what = command == "free"
+                                                  ? std::vector<std::string>{"--theta0", "0.5"}
+                                                  : std::vector<std::string>{"--record", record};
+        const auto r =
+            run_cli(std::vector<std::string>{command} + kFig6 + what + std::vector<std::string>{"--csv", ""});
+        EXPECT_EQ(r.code, 2) << command;
+        EXPECT_NE(r.err.find("--csv: the path is empty"), std::string::npos) << r.err;
+    }
+}
+
 }  // namespace

@@ -123,6 +123,10 @@ TEST(RecordFormats, MalformedFilesAreRefusedNamingWhatIsWrong) {
     three.time_column = "t";
     EXPECT_TRUE(contains(message_of("t,a,b\n0,1,2\n1,2\n", three), "rec.txt:3: 2 field(s), the header has 3"));
     EXPECT_TRUE(contains(message_of("t,a,b\n0,1,2\n0,2,3\n", three), "rec.txt:3: time 0 is not after"));
+    // A named column twice in the header: which one is meant cannot be told (the first was once taken silently).
+    EXPECT_TRUE(contains(message_of("t,a,a\n0,1,5\n1,2,4\n", three),
+                         "rec.txt:1: acceleration column 'a' names more than one column of the header "
+                         "(columns: t, a, a)"));
     RecordFormat both = three;
     both.dt = 0.01;
     EXPECT_TRUE(contains(message_of("t,a,b\n0,1,2\n1,2,3\n", both), "not both"));
