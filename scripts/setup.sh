@@ -105,7 +105,7 @@ case "$mode" in
   run)
     "$here/build/vssw" summary
     echo
-    echo "setup: writing the validation report of the default suite (about 40 s on 2 cores) into $here/report" >&2
+    echo "setup: writing the validation report of the default suite (about 30 s on 2 cores) into $here/report" >&2
     "$here/build/vssw" report --suite default --out "$here/report"
     ;;
   test)
