@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/error.hpp"
 #include "multibody/scene_geometry.hpp"
 
 namespace vssw::multibody {
@@ -42,7 +43,12 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       limits_(limits),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
-      quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))) {}
+      quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))) {
+    if (ex.t_end / dt > kMaxStepsPerRun)
+        throw InputError(fmt::format("{}: dt = {:g} s would take {:.3g} steps for this run's {:g} s, more than the {:g} "
+                                     "allowed: give a larger step",
+                                     engine_, dt, ex.t_end / dt, ex.t_end, kMaxStepsPerRun));
+}
 
 RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const BaseCorners& c) {
     if (!std::isfinite(theta) || !std::isfinite(rate))

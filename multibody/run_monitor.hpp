@@ -31,10 +31,15 @@ struct BaseCorners {
     double right_dx, right_y, left_dx, left_y;
 };
 
+// Steps (or reports) one engine run may take: a step so small that a run would take more is refused as bad input,
+// not left to run for hours (ODE takes about 2 us a step: 1e8 steps are minutes; --dt 1e-9 asked for 3e9 per trial).
+constexpr double kMaxStepsPerRun = 1e8;
+
 class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
 
+    // InputError when ex.t_end / dt exceeds kMaxStepsPerRun, naming dt.
     RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, FailureLimits limits);
 
     // Throws EngineFailure on a failure; otherwise says whether the run goes on.

@@ -57,6 +57,9 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
     std::set<int> ks;
     for (const fs::path& d : dirs) {
         std::error_code ec;
+        if (fs::equivalent(d, out, ec))  // the merged files would replace this shard's own
+            throw InputError(fmt::format("study merge: --out '{}' is the shard folder '{}': merge into another folder",
+                                         out.string(), d.string()));
         if (fs::exists(d / kJournalFile, ec))
             throw InputError(fmt::format("study merge: '{}' holds an unfinished shard ({}): finish it with --resume",
                                          d.string(), kJournalFile));

@@ -39,6 +39,7 @@ const std::vector<std::string> kAssumptionKnobs = {"paper_kinematics", "restitut
                                                    "unilateral_roller"};
 // The smallest release and the most iterations, as vssw compare's (compare/experiments.hpp, multibody/engine.hpp).
 constexpr double kMinTheta0 = compare::kMinRelease;
+constexpr double kMinCollapseStep = 1e-3;  // scale-to-collapse's smallest relative step (read_value, "step")
 using multibody::kMaxIterations;
 // Table 1's numbers are below this; a larger one cannot be a specimen (and would not fit an int).
 constexpr double kMaxSpecimen = 1000.0;
@@ -170,8 +171,11 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
         return x;
     }
     if (k == "step") {
-        const double x = r.number(v, key, "a relative increment in (0, 1]");
-        if (!(x > 0.0 && x <= 1.0)) r.fail(key, fmt::format("must be a relative increment in (0, 1], got {}", v.dump()));
+        // From 0.1 %: the scales grow geometrically up to max_pga (a few hundred runs at most), and the bisection
+        // after them sets the precision (`tolerance`); a step of 1e-9 asked for 2e9 runs and never ended.
+        const double x = r.number(v, key, "a relative increment in [0.001, 1]");
+        if (!(x >= kMinCollapseStep && x <= 1.0))
+            r.fail(key, fmt::format("must be a relative increment in [{}, 1], got {}", kMinCollapseStep, v.dump()));
         return x;
     }
     if (k == "tolerance") {

@@ -145,6 +145,9 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {wall + "[excitation]\nkind = \"pulse\"\nshape = \"harmonic\"\namplitude = 0.3\npulse_period = 1\n",
          "shape harmonic needs 'duration'"},
         {wall + "[excitation]\nkind = \"threshold\"\ntheta0 = 0.5\n", "unknown key 'theta0'"},
+        // a step of 1e-9 asked for 2e9 runs
+        {wall + "[excitation]\nkind = \"scale-to-collapse\"\nfile = \"x\"\nstep = 1e-9\n",
+         "excitation.step: must be a relative increment in [0.001, 1], got 1e-09"},
         {"engines = [\"havok\"]\n" + wall + threshold, "no engine 'havok' in this build"},
         {"engines = [\"analytic\", \"analytic\"]\n" + wall + threshold, "names engine 'analytic' twice"},
         {"[settings.ode]\ndt = 1e-4\n" + wall + threshold, "settings.ode: settings for an engine the study does not run"},
@@ -347,6 +350,16 @@ TEST(StudyRun, MergeRefusesShardsThatAreNotOneStudy) {
     EXPECT_NE(refusal_of({dir / "a1", dir / "a1"}).find("given twice"), std::string::npos);
     EXPECT_NE(refusal_of({dir / "a1", dir / "b2"}).find("another study"), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(dir / "merged" / "results.csv"));
+    // Into one of its own shards: the merged files would replace the shard's (they once did, exit 0).
+    ASSERT_TRUE(std::filesystem::exists(dir / "a1" / "results.csv"));
+    const std::string a1_before = vssw::testing::read_file(dir / "a1" / "results.csv");
+    try {
+        study::merge_studies({dir / "a1", dir / "a2"}, dir / "a2" / ".." / "a1");
+        ADD_FAILURE() << "merged into a shard";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("is the shard folder"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(vssw::testing::read_file(dir / "a1" / "results.csv"), a1_before);
 }
 
 // An interrupted study leaves its journal; --resume runs only the missing tasks (a task cut off mid-write again) and
