@@ -5,6 +5,8 @@
 #include <limits>
 #include <memory>
 #include <ostream>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -83,11 +85,36 @@ struct RunResult {
 
 Json number_or_null(double x) { return finite_or_null(x); }
 
+constexpr const char* kOptionsName = "(vssw compare options)";
+
+// The study machinery names its keys ("study file (vssw compare options): excitation.scale: ..."); the user typed
+// options: name those ("--scale: ...").
+std::string as_option_message(const std::string& message) {
+    static const std::pair<const char*, const char*> kKeys[] = {
+        {"excitation.scale: ", "--scale: "},       {"excitation.pga: ", "--pga: "},
+        {"excitation.amplitude: ", "--amplitude: "}, {"excitation.pulse_period: ", "--pulse-period: "},
+        {"excitation.duration: ", "--duration: "}, {"excitation.file: ", "--record: "},
+        {"excitation.units: ", "--units: "},       {"excitation.shape: ", "--pulse: "},
+    };
+    const std::string prefix = fmt::format("study file {}: ", kOptionsName);
+    if (message.rfind(prefix, 0) != 0) return message;
+    const std::string rest = message.substr(prefix.size());
+    for (const auto& [key, option] : kKeys)
+        if (rest.rfind(key, 0) == 0) return option + rest.substr(std::string(key).size());
+    return rest;
+}
+
 }  // namespace
 
 void compare_response(const ResponseCompareRequest& request, std::ostream& out) {
     const auto start = std::chrono::steady_clock::now();
-    const study::Grid grid(study::study_from_json(study_document(request), "(vssw compare options)", "."));
+    const study::Grid grid = [&] {
+        try {
+            return study::Grid(study::study_from_json(study_document(request), kOptionsName, "."));
+        } catch (const InputError& e) {
+            throw InputError(as_option_message(e.what()));
+        }
+    }();
     const study::CaseSpec c = grid.make_case(grid.case_ids().front());
 
     std::vector<RunResult> runs;

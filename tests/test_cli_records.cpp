@@ -245,4 +245,17 @@ TEST(CliRecords, TheCsvIsRefusedWhereItWouldReplaceTheRecordOrWhereItIsEmptyAndT
     }
 }
 
+// compare under a record or pulse runs through the study machinery, whose messages name its keys: the user typed
+// options, and those are named (it said "study file (vssw compare options): excitation.scale").
+TEST(CliRecords, CompareNamesTheOptionItRefuses) {
+    const std::vector<std::string> compare = {"compare", "--engine", "analytic"};
+    const auto scale = run_cli(compare + kFig6 + std::vector<std::string>{"--record", kRinaldi, "--scale", "0"});
+    EXPECT_EQ(scale.code, 2);
+    EXPECT_EQ(scale.err.rfind("vssw: error: --scale: must be a positive number", 0), 0u) << scale.err;
+    const auto amplitude = run_cli(
+        compare + kFig6 + std::vector<std::string>{"--pulse", "sine", "--amplitude", "-1", "--pulse-period", "1"});
+    EXPECT_EQ(amplitude.code, 2);
+    EXPECT_EQ(amplitude.err.rfind("vssw: error: --amplitude: must be a positive number", 0), 0u) << amplitude.err;
+}
+
 }  // namespace
