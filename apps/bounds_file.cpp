@@ -43,14 +43,17 @@ public:
         if (x < 0.0) throw InputError(fmt::format("{}: '{}' must be >= 0, got {}", where_, key, x));
         return x;
     }
-    std::vector<std::string> texts(const char* key) const {
+    // A non-empty list of names; `what` says what they name in messages ("case ids", "engine names", "verdicts").
+    std::vector<std::string> texts(const char* key, const char* what = "case ids") const {
         const json& v = required(key);
         if (!v.is_array() || v.empty())
-            throw InputError(fmt::format("{}: '{}' must be a non-empty list of case ids, got {}", where_, key, v.dump()));
+            throw InputError(
+                fmt::format("{}: '{}' must be a non-empty list of {}, got {}", where_, key, what, v.dump()));
         std::vector<std::string> out;
         for (const json& x : v) {
             if (!x.is_string() || x.get<std::string>().empty())
-                throw InputError(fmt::format("{}: '{}' holds {}, not a case id", where_, key, x.dump()));
+                throw InputError(
+                    fmt::format("{}: '{}' holds {}, not one of the {} it lists", where_, key, x.dump(), what));
             out.push_back(x.get<std::string>());
         }
         return out;
@@ -133,8 +136,9 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
     for (const json& entry : list_of_tables(doc, "stress", name)) {
         const EntryReader r(entry, fmt::format("bounds file {}: stress bound #{}", name, ++i),
                             {"cases", "engines", "allowed"});
-        compare::StressBound b{r.texts("cases"), r.has("engines") ? r.texts("engines") : std::vector<std::string>{},
-                               r.texts("allowed")};
+        compare::StressBound b{r.texts("cases"),
+                               r.has("engines") ? r.texts("engines", "engine names") : std::vector<std::string>{},
+                               r.texts("allowed", "verdicts")};
         for (const std::string& v : b.allowed)
             if (v != "ok" && v != "refused" && v != "failed")
                 throw InputError(fmt::format("{}: 'allowed' holds '{}', not a verdict (ok, refused, failed)", r.where(), v));

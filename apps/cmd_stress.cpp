@@ -8,6 +8,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
@@ -53,7 +54,9 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     // Check the folder can be written before anything runs (AtomicFile creates its temporary file at once).
     std::vector<std::unique_ptr<study::AtomicFile>> files;
     if (!o.out_dir.empty()) {
-        std::filesystem::create_directories(o.out_dir);
+        std::error_code ec;
+        std::filesystem::create_directories(o.out_dir, ec);
+        if (ec) throw InputError(fmt::format("--out '{}': cannot create the folder: {}", o.out_dir, ec.message()));
         for (const char* name : {"stress.json", "stress.csv", "stress.md"})
             files.push_back(std::make_unique<study::AtomicFile>(std::filesystem::path(o.out_dir) / name));
     }

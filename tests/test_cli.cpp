@@ -595,6 +595,19 @@ TEST(CliHardening, StressRefusesAnUnknownCaseBeforeCreatingItsFolder) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// --out naming a file: said in words (it was the library's 'filesystem error: cannot create directories'). A stress
+// bound's empty 'allowed' names what the list holds (it said 'case ids' for verdicts).
+TEST(CliHardening, StressOutIntoAFileAndAnEmptyVerdictListAreSaidInWords) {
+    const fs::path dir = fresh_folder("stress_out_file");
+    const fs::path file = dir / "a-file";
+    std::ofstream(file) << "kept\n";
+    expect_bad_input({"stress", "--quick", "--engines", "analytic", "--out", file.string()},
+                     {"--out '", "cannot create the folder"});
+    const fs::path bounds = dir / "b.toml";
+    std::ofstream(bounds) << "[[stress]]\ncases = [\"xi-50\"]\nallowed = []\n";
+    expect_bad_input({"check", "--bounds", bounds.string()}, {"'allowed' must be a non-empty list of verdicts"});
+}
+
 TEST(CliHardening, CountsAreNamedAsTypedWithTheirRange) {
     expect_bad_input({"check", "--bounds", "bounds.toml", "--threads", "-1"},
                      {"--threads must be an integer from 0 to 256 (0: the available cores), got -1"});
