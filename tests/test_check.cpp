@@ -19,6 +19,7 @@
 #include "apps/cli.hpp"
 #include "compare/bounds.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/temp_files.hpp"
 
 namespace {
 
@@ -204,12 +205,13 @@ TEST(Bounds, AZeroReferenceBoundsTheValueItself) {
 using vssw::testing::CliResult;
 using vssw::testing::run_cli;
 
+// In a folder of its own (mkdtemp): the tests run in parallel processes, and a fixed /tmp name once let one test
+// overwrite or remove another's bounds file mid-run.
 CliResult run_check(const std::string& bounds_text, const std::string& extension = ".toml") {
-    const std::string path = ::testing::TempDir() + "vssw_check_bounds" + extension;
+    const vssw::testing::TempDir dir("check_bounds");
+    const std::string path = (dir / ("bounds" + extension)).string();
     std::ofstream(path) << bounds_text;
-    const CliResult r = run_cli({"check", "--bounds", path});
-    std::remove(path.c_str());
-    return r;
+    return run_cli({"check", "--bounds", path});
 }
 
 std::string fig6_threshold_bound(double reference, double max_drift) {
