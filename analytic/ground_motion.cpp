@@ -681,6 +681,8 @@ GroundMotion parse_record(const std::string& text, const std::string& name, cons
 namespace {
 
 constexpr double kNoMore = std::numeric_limits<double>::infinity();
+// A harmonic's cycles: 1e6 is 600 s at 0.6 ms (1.7 kHz), beyond any ground motion.
+constexpr double kMaxHarmonicCycles = 1e6;
 
 // The extrema of a sinusoid of period T at first + k T/2 (k = 0, 1, ...) before `end`: the first after t.
 std::function<double(double)> sinusoid_extrema(double period, double first, double end) {
@@ -749,6 +751,11 @@ GroundMotion harmonic(double amplitude, double period, double duration) {
     require_amplitude(amplitude);
     require_time(period, "harmonic period T");
     require_time(duration, "harmonic duration");
+    // At rest the model looks at every extremum (two a cycle): a bound on the cycles keeps a run finite (1e8 cycles of
+    // a 1e-8 s period over 600 s was hours of looks) and each half period far above the times' rounding.
+    require(duration / period <= kMaxHarmonicCycles, "harmonic cycles (duration / period T)",
+            fmt::format("at most {:g}: a longer or faster harmonic than any shaking", kMaxHarmonicCycles),
+            duration / period);
     const double omega = 2.0 * kPi / period;
     // Shorter than a quarter period, it ends before its first peak.
     const double peak =

@@ -30,7 +30,8 @@ struct AnalyticShape {
     double peak;  // max |a(t)| over [0, duration] [m/s^2]
     // The first extremum of a(t) after t, or +infinity when none is left before the end. Empty: a(t) is monotone
     // between its breakpoints. Between two consecutive extrema or breakpoints a(t) is monotone, so |a| there is
-    // largest at an end: the rest phase looks at those instants and misses no excursion past the threshold.
+    // largest at an end: the rest phase looks at those instants and misses no excursion past the threshold (under a
+    // horizontal motion alone or with a vertical record; simulate.cpp, rest_phase).
     std::function<double(double)> next_extremum;
 };
 

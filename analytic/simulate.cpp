@@ -385,11 +385,22 @@ bool Simulator::rest_phase(double& t, State& y) {
         double next = std::min({next_breakpoint(scan), opt_.t_end, motion_end_});
         // An analytic signal's extrema too: between them and the breakpoints |a_h| is largest at an end, so no
         // excursion past the threshold falls between two looks (a 2 ms harmonic looked at every 1 ms saw its zeros).
+        // With a vertical motion that varies too this holds for records (both linear between the union of their
+        // samples, where the margin |a_h| X - (g + a_v) Y is convex), not for an analytic vertical signal, which can
+        // rise with a_h and peak between looks (the command line offers vertical records only).
         next = std::min({next, scan + rest_scan_step_, ah_.next_extremum(scan), av_.next_extremum(scan)});
         if (tipping_margin(next) > 0.0) {
             // Narrow to the crossing, keeping the right end, where the margin is positive, so the flight starts.
             double lo = scan, hi = next;
-            shrink_bracket([&](double x) { return tipping_margin(x); }, lo, hi, opt_.event_time_tol);
+            // A margin of exactly 0 counts as below: the bracket's right end then always lifts, and the search does
+            // not stop on a run of exact zeros (near the threshold they span many ulps: a lift-off 1.01 times above it
+            // started 0.6 ms late).
+            shrink_bracket(
+                [&](double x) {
+                    const double m = tipping_margin(x);
+                    return m > 0.0 ? m : std::min(m, -std::numeric_limits<double>::denorm_min());
+                },
+                lo, hi, opt_.event_time_tol);
             // The bracket can end on the root itself (margin exactly 0): the flight starts an ulp or two after it,
             // not at `next` (which was up to a scan step late: 2.4e-6 s on a 2 ms harmonic).
             double when = hi;
@@ -796,30 +807,25 @@ void validate(const SimulationOptions& options) {
 namespace {
 
 // The first instant in [0, t_end] where g + a_v(t) <= 0. A record is linear between its samples, so its least value
-// is at a sample; an analytic signal's at an extremum or a breakpoint (AnalyticShape).
+// is at a sample; an analytic signal's at an extremum or a breakpoint (AnalyticShape); and the run's end counts too
+// (a run that ends, overturned, between two of those).
 std::optional<double> first_weightless(const GroundMotion& vertical, double g, double t_end) {
     if (vertical.is_zero() || vertical.pga() < g) return std::nullopt;
     auto weightless = [&](double t) { return g + vertical(t) <= 0.0; };
+    std::vector<double> instants;
     if (!vertical.sample_times().empty()) {
-        const std::vector<double>& ts = vertical.sample_times();
-        const std::vector<double>& as = vertical.sample_values();
-        for (std::size_t i = 0; i < ts.size() && ts[i] <= t_end; ++i) {
-            if (g + as[i] > 0.0) continue;
-            if (i == 0 || ts[i] <= 0.0) return ts[i];
-            // Linear between the samples: where g + a_v reaches 0 on the way down.
-            const double above = g + as[i - 1], below = g + as[i];
-            return ts[i - 1] + (ts[i] - ts[i - 1]) * above / (above - below);
-        }
-        return std::nullopt;
+        instants = vertical.sample_times();
+    } else {
+        instants = vertical.breakpoints();
+        const double last = std::min(t_end, vertical.duration());
+        for (double t = vertical.next_extremum(0.0); t <= last; t = vertical.next_extremum(t)) instants.push_back(t);
     }
-    std::vector<double> instants = vertical.breakpoints();
-    const double last = std::min(t_end, vertical.duration());
-    for (double t = vertical.next_extremum(0.0); t <= last; t = vertical.next_extremum(t)) instants.push_back(t);
+    instants.push_back(t_end);
     std::sort(instants.begin(), instants.end());
     for (std::size_t i = 0; i < instants.size() && instants[i] <= t_end; ++i) {
         if (!weightless(instants[i])) continue;
         if (i == 0) return instants[i];
-        // Monotone between two looks: the crossing by bisection.
+        // Monotone between two looks (linear between a record's samples): the crossing by bisection.
         double lo = instants[i - 1], hi = instants[i];
         shrink_bracket([&](double x) { return g + vertical(x); }, lo, hi, kWeightlessTimeTol);
         return weightless(hi) ? hi : instants[i];

@@ -100,8 +100,8 @@ Command add_stress_command(CLI::App& root) {
         ->delimiter(',');
     cmd->add_option("--cases", o->cases, "only these cases, comma-separated (no step search)")->delimiter(',');
     cmd->add_option("--time-limit", o->time_limit,
-                    fmt::format("seconds per case and backend, up to {} (default {} quick, {} full)", kMaxTimeLimit,
-                                kQuickTimeLimit, kFullTimeLimit));
+                    fmt::format("seconds per case and backend, up to {} (default, and 0: {} quick, {} full)",
+                                kMaxTimeLimit, kQuickTimeLimit, kFullTimeLimit));
     cmd->add_option("--threads", o->threads_text,
                     fmt::format("cases at once, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--json", o->json, "print JSON instead of the verdict table");

@@ -46,6 +46,11 @@ nlohmann::json study_document(const ResponseCompareRequest& r) {
                           {"roller", r.model.roller}};
 
     const GroundMotionOptions& m = r.motion;
+    // Checked here, as typed: a pulse's scale goes into its amplitude below, and the study machinery's message would
+    // then name the amplitude.
+    if (m.scale)
+        require(std::isfinite(*m.scale) && *m.scale > 0.0, "--scale (vssw compare)", "a positive finite factor",
+                *m.scale);
     nlohmann::json ex;
     if (m.record) {
         ex = {{"kind", "record"}, {"file", *m.record}};

@@ -40,6 +40,7 @@ const std::vector<std::string> kAssumptionKnobs = {"paper_kinematics", "restitut
 // The smallest release and the most iterations, as vssw compare's (compare/experiments.hpp, multibody/engine.hpp).
 constexpr double kMinTheta0 = compare::kMinRelease;
 constexpr double kMinCollapseStep = 1e-3;  // scale-to-collapse's smallest relative step (read_value, "step")
+constexpr double kMinCollapseTolerance = 1e-12;  // and its smallest relative bisection width ("tolerance")
 using multibody::kMaxIterations;
 // Table 1's numbers are below this; a larger one cannot be a specimen (and would not fit an int).
 constexpr double kMaxSpecimen = 1000.0;
@@ -171,16 +172,20 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
         return x;
     }
     if (k == "step") {
-        // From 0.1 %: the scales grow geometrically up to max_pga (a few hundred runs at most), and the bisection
-        // after them sets the precision (`tolerance`); a step of 1e-9 asked for 2e9 runs and never ended.
+        // From 0.1 %: the scales grow geometrically up to max_pga (ln(20) / ln(1.001) = 3,000 runs at most under the
+        // default max_pga), and the bisection after them sets the precision (`tolerance`); a step of 1e-9 asked for
+        // 2e9 runs and never ended.
         const double x = r.number(v, key, "a relative increment in [0.001, 1]");
         if (!(x >= kMinCollapseStep && x <= 1.0))
             r.fail(key, fmt::format("must be a relative increment in [{}, 1], got {}", kMinCollapseStep, v.dump()));
         return x;
     }
     if (k == "tolerance") {
-        const double x = r.number(v, key, "a relative width in (0, 0.1]");
-        if (!(x > 0.0 && x <= 0.1)) r.fail(key, fmt::format("must be a relative width in (0, 0.1], got {}", v.dump()));
+        // From 1e-12: below ~1e-16 the bisection's mid-point rounds onto an end and the width never falls (1e-17 ran
+        // without end).
+        const double x = r.number(v, key, "a relative width in [1e-12, 0.1]");
+        if (!(x >= kMinCollapseTolerance && x <= 0.1))
+            r.fail(key, fmt::format("must be a relative width in [{:g}, 0.1], got {}", kMinCollapseTolerance, v.dump()));
         return x;
     }
     return r.positive(v, key, "a positive number");

@@ -251,7 +251,14 @@ TEST(CliRecords, CompareNamesTheOptionItRefuses) {
     const std::vector<std::string> compare = {"compare", "--engine", "analytic"};
     const auto scale = run_cli(compare + kFig6 + std::vector<std::string>{"--record", kRinaldi, "--scale", "0"});
     EXPECT_EQ(scale.code, 2);
-    EXPECT_EQ(scale.err.rfind("vssw: error: --scale: must be a positive number", 0), 0u) << scale.err;
+    EXPECT_EQ(scale.err.rfind("vssw: error: --scale (vssw compare) must be a positive finite factor, got 0", 0), 0u)
+        << scale.err;
+    // A pulse's scale goes into its amplitude: a bad one is still named as --scale.
+    const auto pulse_scale = run_cli(compare + kFig6 +
+                                     std::vector<std::string>{"--pulse", "sine", "--amplitude", "0.3",
+                                                              "--pulse-period", "1", "--scale", "-1"});
+    EXPECT_EQ(pulse_scale.code, 2);
+    EXPECT_EQ(pulse_scale.err.rfind("vssw: error: --scale (vssw compare)", 0), 0u) << pulse_scale.err;
     const auto amplitude = run_cli(
         compare + kFig6 + std::vector<std::string>{"--pulse", "sine", "--amplitude", "-1", "--pulse-period", "1"});
     EXPECT_EQ(amplitude.code, 2);

@@ -24,6 +24,9 @@ constexpr double kThresholdBisection = 1e-7;  // relative bracket width the bise
 constexpr double kGravityInG = 9.81;
 constexpr double kLiftOffTime = 1e-12;     // [s] the rest phase's bisection (event_time_tol 1e-13) and asin's rounding
 constexpr double kWeightlessTime = 1e-11;  // [s] its bisection (1e-12) and the sine's rounding near the crossing
+// [s] near the threshold the computed margin is 0 (or of either sign) over ~1e-9 s around the root: sin's slope there
+// is small (cos(asin(1/1.0001)) = 0.014) and the margin is a difference of nearly equal terms.
+constexpr double kNearThresholdLiftOff = 1e-8;
 
 const std::string kRinaldi = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
 
@@ -269,7 +272,7 @@ TEST(Simulate, PulseAboveTheThresholdRocksTheWallWhichThenComesBackToRest) {
 // At rest the wall lifts at the first instant the ground acceleration passes Eq. (12)'s threshold, however briefly:
 // under a_p sin(w t) with a_p above it, at asin(threshold / a_p) / w. A 2 ms harmonic was once looked at every 1 ms,
 // on its zeros, and never lifted the wall (exit 0, at rest, 0.5 g against a 0.29 g threshold).
-TEST(Simulate, AFastHarmonicAboveTheThresholdLiftsTheWallWhereEq12SaysItShould) {
+TEST(Simulate, TheWallLiftsWhereEq12SaysUnderAFastHarmonicAndJustAboveTheThreshold) {
     const VsswGeometry w = fig6_vssw();
     const auto m = make_vssw_model(w, Kinematics::paper);
     for (double period : {2e-3, 1e-3, 0.5}) {
@@ -279,6 +282,16 @@ TEST(Simulate, AFastHarmonicAboveTheThresholdLiftsTheWallWhereEq12SaysItShould) 
         const SimulationResult r = simulate(*m, harmonic(ap, period, 1.0), GroundMotion::none(), {}, o);
         ASSERT_FALSE(r.lift_offs.empty()) << "period " << period;
         EXPECT_NEAR(r.lift_offs[0], std::asin(eq12_threshold(w) / ap) / omega, kLiftOffTime) << "period " << period;
+    }
+    // Just above the threshold the margin is exactly 0 over many ulps around its root: the search once stopped on
+    // such a zero and the wall lifted at the next look, 0.6 ms late at 1.01 times the threshold.
+    for (double ratio : {1.01, 1.001, 1.0001}) {
+        const double period = 0.05, omega = 2.0 * 3.141592653589793 / period, ap = ratio * eq12_threshold(w);
+        SimulationOptions o;
+        o.t_end = period;
+        const SimulationResult r = simulate(*m, sine_pulse(ap, period), GroundMotion::none(), {}, o);
+        ASSERT_FALSE(r.lift_offs.empty()) << ratio;
+        EXPECT_NEAR(r.lift_offs[0], std::asin(1.0 / ratio) / omega, kNearThresholdLiftOff) << ratio;
     }
 }
 
@@ -292,10 +305,16 @@ TEST(Simulate, AVerticalAccelerationThatCancelsGravityIsSaid) {
     const GroundMotion up = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, -2.0 * w.g, 0.0}, "up");
     const SimulationResult r = simulate(*m, GroundMotion::none(), up, {}, o);
     ASSERT_TRUE(r.weightless_at.has_value());
-    EXPECT_NEAR(*r.weightless_at, 0.5, kLiftOffTime);
+    EXPECT_NEAR(*r.weightless_at, 0.5, kWeightlessTime);
     const std::vector<std::string> said = validity_warnings(*m, Kinematics::paper, r);
     EXPECT_TRUE(std::any_of(said.begin(), said.end(),
                             [](const std::string& s) { return s.find("cancels gravity at t = 0.5 s") != s.npos; }));
+    // Cut off before the sample below -g: the run's end is a look too (0.9 s, past the crossing at 0.5 s).
+    o.t_end = 0.9;
+    const SimulationResult cut = simulate(*m, GroundMotion::none(), up, {}, o);
+    ASSERT_TRUE(cut.weightless_at.has_value());
+    EXPECT_NEAR(*cut.weightless_at, 0.5, kWeightlessTime);
+    o.t_end = 3.0;
     // Down to -0.9 g only: never weightless, nothing said.
     const GroundMotion light = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, -0.9 * w.g, 0.0}, "light");
     EXPECT_FALSE(simulate(*m, GroundMotion::none(), light, {}, o).weightless_at.has_value());

@@ -148,6 +148,9 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         // a step of 1e-9 asked for 2e9 runs
         {wall + "[excitation]\nkind = \"scale-to-collapse\"\nfile = \"x\"\nstep = 1e-9\n",
          "excitation.step: must be a relative increment in [0.001, 1], got 1e-09"},
+        // a tolerance of 1e-17 never ended: its bisection's mid-point rounds onto an end
+        {wall + "[excitation]\nkind = \"scale-to-collapse\"\nfile = \"x\"\ntolerance = 1e-17\n",
+         "excitation.tolerance: must be a relative width in [1e-12, 0.1], got 1e-17"},
         {"engines = [\"havok\"]\n" + wall + threshold, "no engine 'havok' in this build"},
         {"engines = [\"analytic\", \"analytic\"]\n" + wall + threshold, "names engine 'analytic' twice"},
         {"[settings.ode]\ndt = 1e-4\n" + wall + threshold, "settings.ode: settings for an engine the study does not run"},

@@ -238,7 +238,7 @@ public:
         EngineSettings s;
         // Compliant: the reporting interval (the integrator picks its own steps). 2 ms (was 1 ms): each report costs
         // Simbody a realization of the interpolated state through accelerations inside stepTo, so halving the reports
-        // cut the Fig. 6 VSSW's free vibration from 80 to 70 ms per simulated second, while every wall of
+        // cut the Fig. 6 VSSW's free vibration from 78 to 65 ms per simulated second, while every wall of
         // vssw_engine_accuracy stays as far inside the targets as at 1 ms (period within 1.1e-4, restitution within
         // 0.39 % of the whole mechanism's; docs/engines.md "Simbody (3.7)"). Rigid: the step; constraint_tol's
         // comment: the restitution is converged from 0.5 ms down.
