@@ -112,6 +112,16 @@ TEST(RecordFormats, MalformedFilesAreRefusedNamingWhatIsWrong) {
     RecordFormat bad_step;
     bad_step.dt = -0.01;
     EXPECT_TRUE(contains(message_of("0.1\n0.2\n", bad_step), "record step"));
+    // Two numbers a line, the first rising like a time, read with a step: a table of time and acceleration, refused
+    // (its times were read as accelerations); two accelerations a line that do not rise so are read in order.
+    std::string table, pairs;
+    for (int i = 0; i < 12; ++i) {
+        table += fmt::format("{} {}\n", 0.02 * i, i % 3 == 0 ? 0.1 : -0.05);
+        pairs += fmt::format("{} {}\n", i % 2 == 0 ? 0.1 : -0.1, 0.05 * i);
+    }
+    EXPECT_TRUE(contains(message_of(table, step), "the first rises line after line, as a time column does"));
+    const AccelUnits g = AccelUnits::g;
+    EXPECT_EQ(parse_record(pairs, "pairs.txt", &g, step).sample_values().size(), 24u);
     RecordFormat named;
     named.accel_column = "acc";
     EXPECT_TRUE(contains(message_of("t,a\n0,1\n1,2\n", named), "'acc' is not a column of the header (columns: t, a)"));
