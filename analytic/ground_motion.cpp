@@ -388,8 +388,8 @@ GroundMotion parse_single_column(const std::vector<std::string>& lines, const st
         if (fields.empty()) continue;
         ++data_lines;
         two_per_line = two_per_line && fields.size() == 2;
-        double first = 0.0;
-        first_rises = first_rises && parse_number(fields[0], first) && first > previous_first;
+        const double first = values[values.size() - fields.size()];  // read above (times a positive unit factor)
+        first_rises = first_rises && first > previous_first;
         previous_first = first;
     }
     if (two_per_line && first_rises && data_lines >= kMinTimeColumnLines)

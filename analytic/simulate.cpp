@@ -27,8 +27,6 @@ constexpr int kScanPoints = 4;
 // a thousandth of the signal's duration so that a short pulse's time above the threshold is not stepped over.
 constexpr double kRestScanStep = 1e-3;  // [s]
 constexpr double kRestScanFraction = 1e-3;
-// Ulps past a lift-off root found exactly (margin 0) to the first instant the margin is positive.
-constexpr int kRootUlps = 4;
 // [s] how closely the instant a vertical analytic signal cancels gravity is placed (it is only reported).
 constexpr double kWeightlessTimeTol = 1e-12;
 // Runs longer than this, or with more output samples, are refused as bad input rather than left to run for hours.
@@ -401,12 +399,8 @@ bool Simulator::rest_phase(double& t, State& y) {
                     return m > 0.0 ? m : std::min(m, -std::numeric_limits<double>::denorm_min());
                 },
                 lo, hi, opt_.event_time_tol);
-            // The bracket can end on the root itself (margin exactly 0): the flight starts an ulp or two after it,
-            // not at `next` (which was up to a scan step late: 2.4e-6 s on a 2 ms harmonic).
-            double when = hi;
-            for (int ulp = 0; ulp < kRootUlps && tipping_margin(when) <= 0.0; ++ulp) when = std::nextafter(when, next);
-            if (tipping_margin(when) <= 0.0) when = next;
-            if (tips_from(when)) return lift(when);
+            // hi only ever moves to where the margin is positive: the first instant found that lifts.
+            if (tips_from(hi)) return lift(hi);
         }
         scan = next;
     }

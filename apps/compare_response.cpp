@@ -95,11 +95,12 @@ constexpr const char* kOptionsName = "(vssw compare options)";
 // The study machinery names its keys ("study file (vssw compare options): excitation.scale: ..."); the user typed
 // options: name those ("--scale: ...").
 std::string as_option_message(const std::string& message) {
+    // (--scale is checked as typed in study_document, before the machinery sees it.)
     static const std::pair<const char*, const char*> kKeys[] = {
-        {"excitation.scale: ", "--scale: "},       {"excitation.pga: ", "--pga: "},
-        {"excitation.amplitude: ", "--amplitude: "}, {"excitation.pulse_period: ", "--pulse-period: "},
-        {"excitation.duration: ", "--duration: "}, {"excitation.file: ", "--record: "},
-        {"excitation.units: ", "--units: "},       {"excitation.shape: ", "--pulse: "},
+        {"excitation.pga: ", "--pga: "},           {"excitation.amplitude: ", "--amplitude: "},
+        {"excitation.pulse_period: ", "--pulse-period: "}, {"excitation.duration: ", "--duration: "},
+        {"excitation.file: ", "--record: "},       {"excitation.units: ", "--units: "},
+        {"excitation.shape: ", "--pulse: "},
     };
     const std::string prefix = fmt::format("study file {}: ", kOptionsName);
     if (message.rfind(prefix, 0) != 0) return message;
