@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "apps/simulation_failure.hpp"
 #include "apps/version_text.hpp"
 #include "study/text.hpp"
+#include "multibody/run_budget.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -61,6 +63,7 @@ std::string parse_error_message(const CLI::ParseError& e, const CLI::App& app, c
 }
 
 int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    multibody::RunBudget::set(std::nullopt);  // the default unless this command's --run-budget says otherwise
     CLI::App app{
         "vssw: the rocking of a vertical spanning strip wall (VSSW) and of a parapet wall, after Sorrentino, "
         "Masiani & Griffith (2008)",

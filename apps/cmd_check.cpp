@@ -20,6 +20,7 @@
 #include "apps/option_values.hpp"
 #include "apps/stress_bounds.hpp"
 #include "apps/json.hpp"
+#include "apps/run_budget_option.hpp"
 #include "compare/bounds.hpp"
 #include "compare/suite.hpp"
 #include "study/suite_file.hpp"
@@ -194,6 +195,7 @@ Command add_check_command(CLI::App& root) {
     cmd->add_option("--threads", o->threads_text,
                     fmt::format("threads, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    add_run_budget_option(*cmd);
     cmd->footer(
         "Runs only the cases and engines the file names (the analytic model always). An engine bound holds when the "
         "engine's relative error against the analytic model (engine / analytic - 1) lies in [min, max]; an analytic "

@@ -22,6 +22,7 @@
 #include "apps/settings_listing.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/wall_options.hpp"
+#include "apps/run_budget_option.hpp"
 #include "compare/experiments.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
@@ -190,6 +191,7 @@ Command add_compare_command(CLI::App& root) {
                     "engine setting NAME=VALUE, for every engine named (repeatable; each adapter lists its own; one "
                     "that an engine does not know is refused)");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
+    add_run_budget_option(*cmd);
     cmd->add_flag("--strict", o->strict,
                   "exit 3 when the analytic reference's own assumptions fail (its warnings), after printing (for CI)");
     // Defined after --engine and --json: CLI11 runs the callbacks in this order, so both are read by then.
@@ -197,7 +199,7 @@ Command add_compare_command(CLI::App& root) {
         "--list-settings", [o] { throw EarlyOutput(settings_listing(o->engines, o->json)); },
         "print every setting of the --engine backends (all compiled in when none is named) with its default, unit "
         "and meaning, then exit (JSON with --json: [{engine, version, settings [{name, flag, default, unit, "
-        "meaning}]}])");
+        "min, max, meaning}]}]; min and max null when unbounded)");
     // A function, so that the backends are built for the listing only when the help is printed.
     cmd->footer([]() -> std::string {
         return std::string(

@@ -21,6 +21,7 @@
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
 #include "apps/progress.hpp"
+#include "apps/run_budget_option.hpp"
 #include "compare/suite.hpp"
 #include "multibody/engine.hpp"
 #include "study/bench_files.hpp"
@@ -120,6 +121,7 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--threads", o->threads_text,
                     fmt::format("worker threads, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
+    add_run_budget_option(*cmd);
     cmd->add_option("--bench", o->bench,
                     "a finished `vssw bench --out DIR` folder: its cheapest settings and work-precision plots end the "
                     "report (the report does not run the sweep)");

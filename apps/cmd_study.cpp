@@ -24,6 +24,7 @@
 #include "apps/progress.hpp"
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
+#include "apps/run_budget_option.hpp"
 #include "study/grid.hpp"
 #include "study/merge.hpp"
 #include "study/metric_catalog.hpp"
@@ -250,6 +251,7 @@ Command add_study_command(CLI::App& root) {
     cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_flag("--json", o->json, "print a JSON summary instead of a table");
+    add_run_budget_option(*cmd);
     cmd->footer(
         "Writes into --out: results.csv (case_id, engine, the parameters as columns named as in the file, metric,\n"
         "value, unit, status 'ok' or 'failed: reason', warnings), results.json (the same rows, the study as read, the\n"

@@ -1,6 +1,7 @@
 #include "apps/settings_listing.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include <fmt/format.h>
@@ -19,18 +20,30 @@ std::string flag_of(const std::string& name) {
     return "--set " + name + "=";
 }
 
+// The range column: a knob's documented range without its unit (the unit has its own column); dt and iterations have
+// rules of their own (a step the run can resolve, README "Bad input"; --iterations 1 to 1000).
+std::string range_of(const multibody::SettingDescription& s) {
+    if (!multibody::is_knob(s.name)) return "-";
+    if (std::isinf(s.lo) && std::isinf(s.hi)) return "any";
+    return fmt::format("[{:g}, {:g}]", s.lo, s.hi);
+}
+
+// A range's end in JSON: null when unbounded.
+Json end_of(double v) { return std::isinf(v) ? Json(nullptr) : Json(v); }
+
 std::string text_of(const multibody::Engine& engine) {
     const std::vector<multibody::SettingDescription> settings = engine.setting_descriptions();
-    std::size_t flag_width = 0, default_width = 0, unit_width = 0;
+    std::size_t flag_width = 0, default_width = 0, unit_width = 0, range_width = 0;
     for (const auto& s : settings) {
         flag_width = std::max(flag_width, flag_of(s.name).size());
         default_width = std::max(default_width, s.default_value.size());
         unit_width = std::max(unit_width, s.unit.size());
+        range_width = std::max(range_width, range_of(s).size());
     }
     std::string text = fmt::format("{} ({}): {}\n", engine.display_name(), engine.name(), engine.version());
     for (const auto& s : settings)
-        text += fmt::format("  {:<{}}  {:<{}}  {:<{}}  {}\n", flag_of(s.name), flag_width, s.default_value,
-                            default_width, s.unit, unit_width, s.meaning);
+        text += fmt::format("  {:<{}}  {:<{}}  {:<{}}  {:<{}}  {}\n", flag_of(s.name), flag_width, s.default_value,
+                            default_width, s.unit, unit_width, range_of(s), range_width, s.meaning);
     return text;
 }
 
@@ -39,7 +52,7 @@ Json json_of(const multibody::Engine& engine) {
     for (const auto& s : engine.setting_descriptions())
         settings.push_back(
             {{"name", s.name}, {"flag", flag_of(s.name)}, {"default", s.default_value}, {"unit", s.unit},
-             {"meaning", s.meaning}});
+             {"min", end_of(s.lo)}, {"max", end_of(s.hi)}, {"meaning", s.meaning}});
     return {{"engine", engine.name()}, {"version", engine.version()}, {"settings", settings}};
 }
 
@@ -57,7 +70,8 @@ std::string settings_listing(const std::vector<std::string>& engines, bool json)
     }
     if (json) return all.dump(2) + "\n";
     return text +
-           "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its meaning.\n"
+           "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its range (both\n"
+           "ends included; a value outside it is refused), its meaning.\n"
            "Each default and why it was chosen: README, \"Engines\".\n";
 }
 

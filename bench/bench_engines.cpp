@@ -14,7 +14,7 @@ namespace {
 constexpr double kSimulated = 2.0;  // [s] of free vibration per iteration
 
 void run(benchmark::State& state, const std::string& engine_name, const multibody::WallScene& scene) {
-    const auto engine = multibody::make_engine(engine_name);
+    const auto engine = multibody::make_engine_in_process(engine_name);
     multibody::EngineSettings settings = engine->default_settings();
     settings.sample_dt = 1e-3;  // a trajectory a metric would use
     multibody::Excitation ex;

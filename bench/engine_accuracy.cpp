@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        const auto engine = multibody::make_engine(argv[1]);
+        const auto engine = multibody::make_engine_in_process(argv[1]);
         std::vector<double> steps;
         for (int i = 2; i < argc; ++i) {
             char* end = nullptr;

@@ -266,7 +266,9 @@ std::vector<BenchPoint> run_bench(const BenchOptions& options, const std::functi
     std::vector<BenchPoint> points;
     for (const Problem& problem : problems) {
         for (const std::string& engine_name : options.engines) {
-            const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(engine_name);
+            // In this process: a point's cost is this process's CPU time (a child's would not be counted). The sweep's
+            // settings are the program's own, never the user's, so no setting of the user's reaches the library here.
+            const std::unique_ptr<multibody::Engine> engine = multibody::make_engine_in_process(engine_name);
             const bool analytic = engine->name() == "analytic";
             for (const BenchSetting& setting : bench_sweep(*engine, options.quick)) {
                 std::map<std::string, double> values;

@@ -36,11 +36,11 @@ std::vector<SettingDescription> setting_table() {
         {"dt", fmt::format("{:g}", kDefaultOutputDt), "s",
          "the sampling interval of the trajectory (the integrator's steps are its own)"},
         {"iterations", "none", "", "not used"},
-        {kPaperKinematics, "0", "0/1", "1: the paper's linearised kinematics (Eq. 3); 0: the exact ones (Eq. 2)"},
+        {kPaperKinematics, "0", "0/1", "1: the paper's linearised kinematics (Eq. 3); 0: the exact ones (Eq. 2)", 0.0, 1.0},
         {kRtol, fmt::format("{:g}", kDefaultRtol), "", "DOP853's relative tolerance (impact times within 1e-8 s)"},
-        {kRestitution, "Eq. (19)", "", "when given: this impact ratio in [0, 1] instead of Eq. (19) / Housner's"},
-        {kWholeMechanism, "0", "0/1", "1: the whole mechanism's plastic impact (the roller's impulse kept)"},
-        {kUnilateralRoller, "0", "0/1", "1: a roller that can only push (exact kinematics)"},
+        {kRestitution, "Eq. (19)", "", "when given: this impact ratio in [0, 1] instead of Eq. (19) / Housner's", 0.0, 1.0},
+        {kWholeMechanism, "0", "0/1", "1: the whole mechanism's plastic impact (the roller's impulse kept)", 0.0, 1.0},
+        {kUnilateralRoller, "0", "0/1", "1: a roller that can only push (exact kinematics)", 0.0, 1.0},
     };
 }
 

@@ -75,7 +75,16 @@ struct SettingDescription {
     std::string default_value;
     std::string unit;     // "s", "m", "m/s", "Pa", ...; "" when dimensionless; "0/1" for a switch; "choice" for 0, 1, ...
     std::string meaning;  // one line
+    // The documented range of a knob, both ends included: a value outside it is refused (InputError naming it) before
+    // the engine library sees it (SettingsReader). Each range holds every value the settings were measured at with a
+    // wide margin and stops where the library aborts, hangs or gives nothing a wall could mean (issue 27: an ODE
+    // margin of 1e308 aborted the process). Unbounded by default; dt and iterations are checked on their own.
+    double lo = -std::numeric_limits<double>::infinity();
+    double hi = std::numeric_limits<double>::infinity();
 };
+
+// "[0, 1]", "[1e-06, 1] m", "any" for an unbounded one: how a range is printed.
+std::string range_text(const SettingDescription& d);
 
 // dt and iterations are EngineSettings' own fields; every other setting an engine describes is one of its knobs.
 inline bool is_knob(const std::string& setting_name) { return setting_name != "dt" && setting_name != "iterations"; }
@@ -143,13 +152,9 @@ public:
     virtual void check_settings(const EngineSettings& settings) const = 0;
     // Whether simulate() may run on several threads at once (each call with its own scene). false for a library
     // with process-wide state that is not re-entrant (ODE): callers running cases in parallel run that engine's work
-    // one task at a time (compare/suite.hpp) or, a study on several threads, in worker processes (below;
-    // study/runner.cpp).
+    // one task at a time (compare/suite.hpp, study/runner.cpp). make_engine()'s isolated engines are each run in a
+    // process of its own and say true.
     virtual bool runs_concurrently() const { return true; }
-    // Whether simulate() may run in a child forked from a multi-threaded process (worker_process.hpp): it takes no
-    // lock another thread could hold at the fork, and nothing of its process-wide state is needed back in the parent.
-    // A study's pool then runs an engine whose runs_concurrently() is false in worker processes, beside itself.
-    virtual bool runs_in_worker_process() const { return false; }
     // Wall time per simulated second at the default settings [s/s], measured (README, "Speed"): callers order their
     // tasks longest first by it (compare/task_pool.hpp); only the order depends on it.
     virtual double cost_per_simulated_second() const = 0;
@@ -157,8 +162,12 @@ public:
 
 // Backends compiled into this build ("analytic" always; "bullet", ... when found at configure time).
 std::vector<std::string> available_engines();
-// Throws InputError naming the engine and the available ones.
+// Throws InputError naming the engine and the available ones. Every engine library's runs are isolated: each in a
+// child process with a CPU budget (isolated_engine.hpp), so that a library that aborts, crashes or hangs fails one run.
 std::unique_ptr<Engine> make_engine(const std::string& name);
+// The adapter itself, its runs in the caller's process: for callers that time a run's CPU inside the process (the
+// work-precision sweep, the benchmarks) or isolate runs themselves (vssw stress). A library's abort ends the caller.
+std::unique_ptr<Engine> make_engine_in_process(const std::string& name);
 // The backends this project has adapters for that this build left out (not found at configure time), in the order of
 // available_engines(); empty when every one is compiled in.
 std::vector<std::string> missing_engines();

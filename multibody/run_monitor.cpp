@@ -8,6 +8,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/scene_geometry.hpp"
+#include "multibody/step_resolution.hpp"
 
 namespace vssw::multibody {
 
@@ -18,10 +19,16 @@ FailureLimits FailureLimits::read(const SettingsReader& r) {
 
 std::vector<SettingDescription> FailureLimits::described_after(std::vector<SettingDescription> adapter_settings) {
     const FailureLimits defaults;
+    // These are this program's own checks, never given to an engine library: any positive limit is safe. From
+    // 1e-12 b (far below the contacts' jitter: every run fails at once, which the tests use to make a run fail) to
+    // 10 b (past it the wall has left its base and nothing is left to watch).
+    constexpr double kLowest = 1e-12, kHighest = 10.0;
     adapter_settings.push_back({"slide_limit", fmt::format("{:g}", defaults.slide), "b",
-                                "the run fails when the pivot corner has slid this far (in half-thicknesses b)"});
+                                "the run fails when the pivot corner has slid this far (in half-thicknesses b)",
+                                kLowest, kHighest});
     adapter_settings.push_back({"penetration_limit", fmt::format("{:g}", defaults.penetration), "b",
-                                "the run fails when a corner sinks this far below the ground (in b)"});
+                                "the run fails when a corner sinks this far below the ground (in b)", kLowest,
+                                kHighest});
     return adapter_settings;
 }
 
@@ -48,6 +55,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
         throw InputError(fmt::format("{}: dt = {:g} s would take {:.3g} steps for this run's {:g} s, more than the {:g} "
                                      "allowed: give a larger step",
                                      engine_, dt, ex.t_end / dt, ex.t_end, kMaxStepsPerRun));
+    require_step_resolves(engine_, scene, ex, dt);
 }
 
 RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const BaseCorners& c) {

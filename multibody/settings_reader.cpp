@@ -21,7 +21,17 @@ SettingsReader::SettingsReader(std::string engine, const EngineSettings& setting
             throw InputError(
                 fmt::format("unknown {} setting '{}' (known: {})", engine_, name, fmt::join(known, ", ")));
         require(!std::isnan(value), label(name), "a number", value);
+        const auto d = std::find_if(described.begin(), described.end(),
+                                    [&](const SettingDescription& x) { return x.name == name; });
+        require(value >= d->lo && value <= d->hi, label(name),
+                fmt::format("within its documented range {} (vssw compare --list-settings)", range_text(*d)), value);
     }
+}
+
+std::string range_text(const SettingDescription& d) {
+    if (std::isinf(d.lo) && std::isinf(d.hi)) return "any";
+    const std::string unit = d.unit == "0/1" || d.unit == "choice" || d.unit.empty() ? "" : " " + d.unit;
+    return fmt::format("[{:g}, {:g}]{}", d.lo, d.hi, unit);
 }
 
 double SettingsReader::value(const std::string& name, double fallback) const {

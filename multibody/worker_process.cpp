@@ -1,5 +1,9 @@
 #include "multibody/worker_process.hpp"
 
+#include <sys/resource.h>
+
+#include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
@@ -37,11 +41,39 @@ std::string answer(const std::function<void(std::string&)>& work) {
     }
 }
 
+// In the child, before the work: its CPU time limited (the soft limit sends SIGXCPU, the hard one a second later
+// SIGKILL), and no core file written when the library aborts (a core of a process with every engine loaded is
+// hundreds of MB, left in the user's folder).
+void limit_child(double cpu_seconds) {
+    const rlimit no_core{0, 0};
+    (void)::setrlimit(RLIMIT_CORE, &no_core);
+    if (cpu_seconds <= 0.0) return;
+    const auto soft = static_cast<rlim_t>(std::ceil(cpu_seconds));
+    const rlimit cpu{soft, soft + 1};
+    (void)::setrlimit(RLIMIT_CPU, &cpu);
+}
+
 }  // namespace
 
 std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who) {
+    return run_in_worker_process(work, who, WorkerLimits{});
+}
+
+std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who,
+                                       const WorkerLimits& limits) {
     std::string_view out;  // in place, where it was received (a task's rows: no copy)
-    const ChildResult child = run_in_child([&] { return answer(work); }, 0.0, out);
+    const ChildResult child = run_in_child(
+        [&] {
+            limit_child(limits.cpu_seconds);
+            return answer(work);
+        },
+        limits.wall_seconds, out);
+    const bool over_cpu = limits.cpu_seconds > 0.0 && child.end == ChildEnd::crashed && child.signal == SIGXCPU;
+    if (over_cpu) throw EngineFailure(fmt::format("{}: the run passed its budget of {}", who, limits.budget));
+    if (child.end == ChildEnd::timed_out)
+        throw EngineFailure(fmt::format("{}: the run was stopped after {:.0f} s of wall time without an answer (its "
+                                        "budget is {})",
+                                        who, child.time_s, limits.budget));
     if (child.end != ChildEnd::completed)  // answer() catches everything: a signal or an exit of the library's own
         throw EngineFailure(fmt::format("{}: its worker process {}", who, describe_end(child)));
     const char tag = out.empty() ? '\0' : out[0];
@@ -58,18 +90,6 @@ std::string_view run_in_worker_process(const std::function<void(std::string&)>& 
         default:
             throw EngineFailure(fmt::format("{}: its worker process ended without an answer", who));
     }
-}
-
-bool worker_processes_enabled() {
-    const char* v = std::getenv("VSSW_WORKER_PROCESSES");
-    if (!v || std::string(v).empty() || std::string(v) == "1") return true;
-    if (std::string(v) == "0") return false;
-    throw InputError(fmt::format("VSSW_WORKER_PROCESSES must be 0 (off) or 1 (on), got '{}'", v));
-}
-
-bool runs_in_worker_processes(const Engine& engine, int threads) {
-    if (threads <= 1 || engine.runs_concurrently() || !engine.runs_in_worker_process()) return false;
-    return worker_processes_enabled();
 }
 
 }  // namespace vssw::multibody

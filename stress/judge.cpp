@@ -103,7 +103,7 @@ CaseResult judge(const Case& c, const std::string& engine_name, bool quick) {
     Setup s;
     std::unique_ptr<multibody::Engine> engine;
     try {
-        engine = multibody::make_engine(engine_name);
+        engine = multibody::make_engine_in_process(engine_name);  // judge() runs in a child of stress/run.cpp
         s = c.setup(engine_name, engine->default_settings(), quick);
         engine->check_settings(s.settings);
     } catch (const std::exception& e) {  // InputError, or a ground motion's own argument check

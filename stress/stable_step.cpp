@@ -33,7 +33,7 @@ struct Probe {
 Probe probe(const std::string& engine, const std::string& wall, double dt, double time_limit_s) {
     const ChildResult child = multibody::run_in_child(
         [&] {
-            const auto e = multibody::make_engine(engine);
+            const auto e = multibody::make_engine_in_process(engine);  // already in a child
             multibody::EngineSettings s = e->default_settings();
             s.dt = dt;
             compare::FreeVibrationOptions o;

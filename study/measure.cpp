@@ -1,5 +1,7 @@
 #include "study/measure.hpp"
 
+#include "multibody/step_resolution.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,6 +16,7 @@
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/scene_geometry.hpp"
+#include "multibody/step_resolution.hpp"
 #include "study/metric_catalog.hpp"
 
 namespace vssw::study {
@@ -236,6 +239,14 @@ std::size_t threshold_metric(const Grid& grid) {
 
 }  // namespace
 
+void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
+    if (run.engine == "analytic") return;  // its dt is the sampling only: its integrator steps on its own
+    multibody::Excitation ex;
+    ex.horizontal = case_motion(grid, c, c.scale);
+    ex.t_end = ex.horizontal.duration() + kResponseTail;
+    multibody::require_step_resolves(run.engine, c.scene, ex, run.settings.dt);
+}
+
 Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,
                               const multibody::Engine& engine) {
     const std::size_t m = threshold_metric(grid);
@@ -367,17 +378,6 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     std::string joined;
     for (const std::string& w : warnings) joined += (joined.empty() ? "" : "; ") + one_line(w);
     for (Measurement& m : out) m.warnings = joined;
-    return out;
-}
-
-std::vector<Measurement> failed_task(const Grid& grid, const CaseSpec& c, std::size_t run_index, bool threshold,
-                                     const std::string& reason) {
-    if (threshold) return {{threshold_metric(grid), kNaN, failed(reason), {}}};
-    const PartSpec& part = grid.spec().parts[c.part];
-    const RunSpec& run = grid.runs().at(run_index);
-    std::vector<Measurement> out;
-    for (std::size_t m = 0; m < grid.spec().metrics.size(); ++m)
-        if (reports(part, run, grid.spec().metrics[m])) out.push_back({m, kNaN, failed(reason), {}});
     return out;
 }
 

@@ -46,13 +46,13 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
 // task of its own, once per wall and run, and gives it to every case of that wall (study/runner.cpp).
 Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,
                               const multibody::Engine& engine);
-// The rows of a task that could not run at all (its worker process died inside the engine's library: a crash, not a
-// failure the run reported), each "failed: <reason>": the rows measure() or, for a threshold task, measure_threshold()
-// would have given. The study goes on.
-std::vector<Measurement> failed_task(const Grid& grid, const CaseSpec& c, std::size_t run_index, bool threshold,
-                                     const std::string& reason);
 // Whether the case's part measures threshold_g.
 bool measures_threshold(const Grid& grid, const CaseSpec& c);
+
+// Throws InputError, naming the step and the time scales, when an engine run's step cannot resolve the case's wall
+// or its ground motion (multibody/step_resolution.hpp): `vssw compare` under a record or pulse refuses such a step
+// before it runs anything (in a study the run fails with the same message: a failed row).
+void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run);
 
 // A rough cost of the run [s] (its threshold apart), and of a threshold task, for ordering tasks longest first
 // (compare/task_pool.hpp).

@@ -23,7 +23,6 @@
 #include "study/clock.hpp"
 #include "study/measure.hpp"
 #include "study/mpi.hpp"
-#include "study/worker_task.hpp"
 
 namespace vssw::study {
 namespace fs = std::filesystem;
@@ -202,29 +201,13 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         result.meta.threads = 1;
         result.meta.processes = options.mpi->size();
     } else {
-        // An engine that is not re-entrant (ODE) has its tasks run in worker processes when several threads run, a
-        // fork per task (a threshold search's ten runs in one child; only the task's rows come back), beside each
-        // other (multibody/worker_process.hpp); otherwise its tasks take turns (the pool's exclusive groups).
-        std::vector<bool> in_child, exclusive;
-        const int threads = compare::pool_threads(options.threads, pool.size());
-        for (const auto& e : engines) {
-            in_child.push_back(multibody::runs_in_worker_processes(*e, threads));
-            exclusive.push_back(!e->runs_concurrently() && !in_child.back());
-        }
-        // A worker that dies (a crash inside the engine's library) fails its task's rows; the study goes on. (In the
-        // caller's process such a crash would end the study: that is what the worker process is also for.)
-        const auto failed_rows = [&](std::size_t i, const std::string& reason) {
-            const Task& t = tasks[i];
-            const CaseSpec c = grid.make_case(std::abs(t.case_id));
-            return journal_text(t.case_id, t.run, failed_task(grid, c, t.run, t.case_id < 0, reason));
-        };
+        // Each engine library's run is a child process of its own (multibody/isolated_engine.hpp): a library that
+        // crashes or passes its budget fails that run's rows, and every engine's tasks run side by side. An engine
+        // whose runs cannot share a process takes turns (the pool's exclusive groups).
+        std::vector<bool> exclusive;
+        for (const auto& e : engines) exclusive.push_back(!e->runs_concurrently());
         result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
-            const std::size_t e = tasks[i].engine;
-            journal->append_text(in_child[e] ? run_task_in_worker([&] { return run_task(i); }, engines[e]->name(),
-                                                                  [&](const std::string& why) {
-                                                                      return failed_rows(i, why);
-                                                                  })
-                                             : run_task(i));
+            journal->append_text(run_task(i));
             note_progress(tasks[i].case_id < 0
                               ? fmt::format("threshold of case {} {}", -tasks[i].case_id, grid.runs()[tasks[i].run].engine)
                               : fmt::format("case {} {}", tasks[i].case_id, grid.runs()[tasks[i].run].engine));

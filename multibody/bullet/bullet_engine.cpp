@@ -49,13 +49,14 @@ struct Knobs {
     bool moving_supports;      // move the ground instead of applying pseudo-forces
 };
 
+// Ranges (SettingDescription::lo/hi): erp is a fraction of the penetration corrected per step, [0, 1].
 std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
         {"dt", "0.001", "s", "the step (docs/engines.md \"Bullet\": every target met at 1, 0.5 and 0.2 ms)"},
         {"iterations", std::to_string(kDefaultIterations), "",
          "sequential-impulse solver iterations per step (20 to 200 move the restitution by 0.13 % at most)"},
-        {"erp", "0.2", "", "error reduction of penetration, used only by split impulse's position pass"},
-        {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces"},
+        {"erp", "0.2", "", "error reduction of penetration, used only by split impulse's position pass", 0.0, 1.0},
+        {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces", 0.0, 1.0},
     });
 }
 

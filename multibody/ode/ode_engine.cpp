@@ -134,19 +134,27 @@ struct Knobs {
     bool plane_joints;
 };
 
+// The largest contact gap (margin, surface_layer) a setting may give, 1 m: five times the Fig. 6 wall's half
+// thickness, a thousand times the default margin. A margin of 1e300 m made ODE's collision normalise a vector of
+// infinities and abort the process (assertion in dxNormalize4, issue 27).
+constexpr double kMaxContactGap = 1.0;
+
+// Ranges (SettingDescription::lo/hi): erp and cfm are fractions in ODE's own terms (ODE's manual: erp in [0, 1]; a
+// cfm of 1 already makes a contact softer than the wall's weight can hold); the gaps as kMaxContactGap says; a
+// correcting velocity below 1 um/s leaves a penetration uncorrected for the whole run.
 std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
         {"dt", "0.001", "s", "the step (docs/engines.md \"ODE\": every target met at 1 ms; the error grows as dt over the period)"},
         {"iterations", "none", "",
          "not used by the direct solver (dWorldStep); with quickstep = 1 the SOR iterations (20 unless given)"},
-        {"erp", "0.2", "", "error reduction parameter in [0, 1]: the share of a penetration corrected per step"},
-        {"cfm", "1e-10", "", "constraint force mixing: the contacts' softness (0 is rigid)"},
-        {"surface_layer", "0", "m", "penetration allowed before erp acts"},
-        {"max_correcting_vel", "inf", "m/s", "cap on the velocity erp may give (inf: no cap)"},
-        {"margin", "0.001", "m", "gap within which a corner and a face are given to the solver as a speculative contact"},
-        {"quickstep", "0", "0/1", "1: dWorldQuickStep (SOR, --iterations) instead of dWorldStep (Dantzig LCP)"},
-        {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces"},
-        {"plane_joints", "0", "0/1", "1: hold each block in the plane with a Plane2D joint (nothing needs it)"},
+        {"erp", "0.2", "", "error reduction parameter in [0, 1]: the share of a penetration corrected per step", 0.0, 1.0},
+        {"cfm", "1e-10", "", "constraint force mixing: the contacts' softness (0 is rigid)", 0.0, 1.0},
+        {"surface_layer", "0", "m", "penetration allowed before erp acts", 0.0, kMaxContactGap},
+        {"max_correcting_vel", "inf", "m/s", "cap on the velocity erp may give (inf: no cap)", 1e-6, INFINITY},
+        {"margin", "0.001", "m", "gap within which a corner and a face are given to the solver as a speculative contact", 0.0, kMaxContactGap},
+        {"quickstep", "0", "0/1", "1: dWorldQuickStep (SOR, --iterations) instead of dWorldStep (Dantzig LCP)", 0.0, 1.0},
+        {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces", 0.0, 1.0},
+        {"plane_joints", "0", "0/1", "1: hold each block in the plane with a Plane2D joint (nothing needs it)", 0.0, 1.0},
     });
 }
 
@@ -442,11 +450,10 @@ public:
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
     // ODE's library state is process-wide (ensure_ode(): the initialisation, the message handler and its count,
-    // per-thread collision data): one run at a time in a process.
+    // per-thread collision data): one run at a time in a process. make_engine() runs each run in a child of its own
+    // (isolated_engine.hpp), where its only process-wide state, the message count and the random seed, is set per
+    // run: the run is the same as in this process, and runs go side by side.
     bool runs_concurrently() const override { return false; }
-    // A run takes no lock of ours, and its only process-wide state is the message count and the random seed, both
-    // set per run: in a forked child each run is the same as in this process (multibody/worker_process.hpp).
-    bool runs_in_worker_process() const override { return true; }
 };
 
 Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

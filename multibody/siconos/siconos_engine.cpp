@@ -184,18 +184,21 @@ struct Knobs {
 // acceleration below its threshold, tens through an impact; 1000 is far past either and still bounds a step's cost.
 constexpr int kDefaultSweeps = 1000;
 
+// Ranges (SettingDescription::lo/hi): the coefficients and weights are Moreau-Jean's own intervals; the solver's
+// tolerance from 1e-16 (double precision's rounding: no residual goes lower; a test asks for 1e-14 to make a contact
+// problem unsolvable) to 0.1 (a residual of a tenth leaves the contact forces unknown).
 std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
         {"dt", "0.001", "s", "the time step (docs/engines.md \"Siconos\": thresholds exact, restitution within 2 % at 1 ms)"},
         {"iterations", std::to_string(kDefaultSweeps), "",
          "at most this many Gauss-Seidel sweeps per step; a step whose contact problem is not solved fails the run"},
-        {"e_ground", "0", "", "Newton's coefficient of restitution at the base corners, in [0, 1]"},
-        {"e_hinge", "0", "", "Newton's coefficient at the hinge (upper block's bottom corners), in [0, 1]"},
-        {"e_roller", "0", "", "Newton's coefficient at the roller's guides, in [0, 1]"},
-        {"theta", "0.5", "", "Moreau-Jean's theta-method weight on the smooth forces, in [0.5, 1]"},
-        {"gamma", "0.5", "", "a contact joins a step when its gap predicted gamma steps ahead is closed, in [0, 1]"},
-        {"tolerance", "1e-06", "", "the contact solver's relative residual, in (0, 1)"},
-        {"nonlinear", "0", "0/1", "1: iterate each step's Newton loop on the contact geometry; 0: linearise once"},
+        {"e_ground", "0", "", "Newton's coefficient of restitution at the base corners, in [0, 1]", 0.0, 1.0},
+        {"e_hinge", "0", "", "Newton's coefficient at the hinge (upper block's bottom corners), in [0, 1]", 0.0, 1.0},
+        {"e_roller", "0", "", "Newton's coefficient at the roller's guides, in [0, 1]", 0.0, 1.0},
+        {"theta", "0.5", "", "Moreau-Jean's theta-method weight on the smooth forces, in [0.5, 1]", 0.5, 1.0},
+        {"gamma", "0.5", "", "a contact joins a step when its gap predicted gamma steps ahead is closed, in [0, 1]", 0.0, 1.0},
+        {"tolerance", "1e-06", "", "the contact solver's relative residual, in (0, 1)", 1e-16, 0.1},
+        {"nonlinear", "0", "0/1", "1: iterate each step's Newton loop on the contact geometry; 0: linearise once", 0.0, 1.0},
     });
 }
 

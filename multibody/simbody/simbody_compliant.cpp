@@ -77,20 +77,26 @@ struct Knobs {
 
 }  // namespace
 
+// Ranges (SettingDescription::lo/hi), each holding the values measured below with decades to spare: stiffness 1e6 to
+// 1e18 Pa (at 1e6 a corner of the Fig. 6 wall sinks centimetres; 1e18 is a thousand times the default, past which the
+// contact's time scale falls below CPodes' smallest steps); radius 1 um to 1 cm (the spheres roll by r theta: at 1 cm
+// the threshold is already off by 0.64 %); dissipation up to 1e5 s/m (a hundred times the plastic default);
+// transition velocity 1e-6 to 0.1 m/s (at 1e-300 the friction law's slope mu N / vt was infinite and CPodes stepped
+// forever, issue 27; 0.1 m/s is the wall's own speed: no stick); accuracy 1e-10 to 0.1.
 std::vector<SettingDescription> compliant_setting_descriptions() {
     return FailureLimits::described_after({
         {"dt", "0.002", "s", "the reporting interval (the integrator picks its own steps)"},
         {"iterations", "none", "", "not used"},
-        {"stiffness", "1e+15", "Pa", "Hunt-Crossley contact stiffness of the corner spheres"},
-        {"radius", "0.0001", "m", "radius of the corner spheres"},
-        {"dissipation", "1000", "s/m", "Hunt-Crossley dissipation (1000: a plastic contact at the wall's speeds)"},
-        {"transition_velocity", "0.0001", "m/s", "friction's stick/slip transition (creep) velocity"},
-        {"accuracy", "3e-06", "", "the integrator's accuracy (relative error per step), below 1"},
-        {"integrator", "1", "choice", "0 Runge-Kutta-Merson, 1 CPodes (BDF, for stiff contact)"},
+        {"stiffness", "1e+15", "Pa", "Hunt-Crossley contact stiffness of the corner spheres", 1e6, 1e18},
+        {"radius", "0.0001", "m", "radius of the corner spheres", 1e-6, 1e-2},
+        {"dissipation", "1000", "s/m", "Hunt-Crossley dissipation (1000: a plastic contact at the wall's speeds)", 0.0, 1e5},
+        {"transition_velocity", "0.0001", "m/s", "friction's stick/slip transition (creep) velocity", 1e-6, 0.1},
+        {"accuracy", "3e-06", "", "the integrator's accuracy (relative error per step), below 1", 1e-10, 0.1},
+        {"integrator", "1", "choice", "0 Runge-Kutta-Merson, 1 CPodes (BDF, for stiff contact)", 0.0, 1.0},
         {"contact_subsystem", "0", "0/1",
-         "1: Simbody's CompliantContactSubsystem and contact tracking; 0: the same law on the corner pairs directly"},
-        {"interpolate", "1", "0/1", "1: samples interpolated between the integrator's steps; 0: each sample a step end"},
-        {"moving_supports", "0", "0/1", "refused when 1: this route drives the wall by pseudo-forces only"},
+         "1: Simbody's CompliantContactSubsystem and contact tracking; 0: the same law on the corner pairs directly", 0.0, 1.0},
+        {"interpolate", "1", "0/1", "1: samples interpolated between the integrator's steps; 0: each sample a step end", 0.0, 1.0},
+        {"moving_supports", "0", "0/1", "refused when 1: this route drives the wall by pseudo-forces only", 0.0, 1.0},
     });
 }
 

@@ -92,18 +92,21 @@ struct Knobs {
     FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
 };
 
+// Ranges (SettingDescription::lo/hi): constraint tolerance 1 nm to 1 mm (a thousand times the default either way);
+// transition velocity 1e-6 to 0.1 m/s and capture velocity 1e-7 to 0.1 m/s (below them the stepper's friction and
+// impact tests meet rounding; at 0.1 m/s every closing of the wall's corners would be a capture, none an impact).
 std::vector<SettingDescription> rigid_setting_table() {
     return FailureLimits::described_after({
         {"dt", "0.0005", "s", "the step (the restitution is converged from 0.5 ms down)"},
         {"iterations", "none", "", "not used"},
-        {"constraint_tol", "1e-06", "m", "a contact within this gap is proximal: given to the impulse solver for the step"},
-        {"transition_velocity", "0.001", "m/s", "friction's stick/slip transition speed"},
-        {"capture_velocity", "0.0002", "m/s", "closing speeds below it are not impacts"},
-        {"projection", "1", "choice", "position correction after each step: 0 bilateral, 1 unilateral, 2 none"},
-        {"restitution", "2", "choice", "the stepper's restitution model: 0 Poisson, 1 Newton, 2 none"},
-        {"solver", "0", "choice", "the impulse solver: 0 PLUS, 1 PGS"},
-        {"both_guides", "0", "0/1", "1: offer both roller guides to the stepper at every step"},
-        {"moving_supports", "0", "0/1", "refused when 1: the stepper ignores prescribed motion"},
+        {"constraint_tol", "1e-06", "m", "a contact within this gap is proximal: given to the impulse solver for the step", 1e-9, 1e-3},
+        {"transition_velocity", "0.001", "m/s", "friction's stick/slip transition speed", 1e-6, 0.1},
+        {"capture_velocity", "0.0002", "m/s", "closing speeds below it are not impacts", 1e-7, 0.1},
+        {"projection", "1", "choice", "position correction after each step: 0 bilateral, 1 unilateral, 2 none", 0.0, 2.0},
+        {"restitution", "2", "choice", "the stepper's restitution model: 0 Poisson, 1 Newton, 2 none", 0.0, 2.0},
+        {"solver", "0", "choice", "the impulse solver: 0 PLUS, 1 PGS", 0.0, 1.0},
+        {"both_guides", "0", "0/1", "1: offer both roller guides to the stepper at every step", 0.0, 1.0},
+        {"moving_supports", "0", "0/1", "refused when 1: the stepper ignores prescribed motion", 0.0, 1.0},
     });
 }
 

@@ -1,0 +1,145 @@
+#include "multibody/isolated_engine.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "multibody/run_budget.hpp"
+#include "multibody/worker_process.hpp"
+
+namespace vssw::multibody {
+namespace {
+
+// A child that uses no CPU for this many times its CPU budget is waiting on something that will not come (a lock
+// held at the fork by a thread the child does not have): it is killed. Generous, so that a loaded machine (the sweep
+// ran at load 12 on 2 cores) never stops a run that is merely slow.
+constexpr double kWallSecondsPerBudgetSecond = 20.0;
+
+static_assert(std::is_trivially_copyable_v<TrajectorySample>, "samples are sent as bytes");
+
+template <class T>
+void put(std::string& out, const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+void put_text(std::string& out, const std::string& s) {
+    put(out, static_cast<std::uint64_t>(s.size()));
+    out += s;
+}
+
+class Reader {
+public:
+    explicit Reader(std::string_view bytes) : rest_(bytes) {}
+    template <class T>
+    T get() {
+        T v;
+        std::memcpy(&v, take(sizeof v).data(), sizeof v);
+        return v;
+    }
+    std::string_view take(std::size_t n) {
+        if (n > rest_.size()) throw EngineFailure("an engine run's answer from its child process is cut short");
+        const std::string_view part = rest_.substr(0, n);
+        rest_.remove_prefix(n);
+        return part;
+    }
+    std::string text() { return std::string(take(static_cast<std::size_t>(get<std::uint64_t>()))); }
+
+private:
+    std::string_view rest_;
+};
+
+class IsolatedEngine final : public Engine {
+public:
+    explicit IsolatedEngine(std::unique_ptr<Engine> inner) : inner_(std::move(inner)) {}
+    std::string name() const override { return inner_->name(); }
+    std::string version() const override { return inner_->version(); }
+    std::string display_name() const override { return inner_->display_name(); }
+    EngineSettings default_settings() const override { return inner_->default_settings(); }
+    std::vector<SettingDescription> setting_descriptions() const override { return inner_->setting_descriptions(); }
+    void check_settings(const EngineSettings& settings) const override { inner_->check_settings(settings); }
+    // Each run in its own process: two never share the library's process-wide state.
+    bool runs_concurrently() const override { return true; }
+    double cost_per_simulated_second() const override { return inner_->cost_per_simulated_second(); }
+
+    Trajectory simulate(const WallScene& scene, const Excitation& excitation,
+                        const EngineSettings& settings) const override {
+        // Settings are checked here, in this process, so that bad input is an InputError before any fork.
+        inner_->check_settings(settings);
+        WorkerLimits limits;
+        limits.cpu_seconds = RunBudget::seconds(excitation.t_end, settings.dt);
+        limits.wall_seconds = kWallSecondsPerBudgetSecond * limits.cpu_seconds;
+        limits.budget = RunBudget::describe(excitation.t_end, settings.dt);
+        const std::string_view bytes = run_in_worker_process(
+            [&](std::string& out) { append_trajectory(inner_->simulate(scene, excitation, settings), out); },
+            inner_->name(), limits);
+        return read_trajectory(bytes);
+    }
+
+private:
+    std::unique_ptr<Engine> inner_;
+};
+
+}  // namespace
+
+std::unique_ptr<Engine> isolated(std::unique_ptr<Engine> inner) {
+    return std::make_unique<IsolatedEngine>(std::move(inner));
+}
+
+void append_trajectory(const Trajectory& t, std::string& out) {
+    put(out, static_cast<std::uint64_t>(t.samples.size()));
+    out.append(reinterpret_cast<const char*>(t.samples.data()), t.samples.size() * sizeof(TrajectorySample));
+    put(out, t.overturned);
+    put(out, t.at_rest_at_end);
+    put(out, t.steps);
+    put(out, static_cast<std::uint64_t>(t.warnings.size()));
+    for (const std::string& w : t.warnings) put_text(out, w);
+    put(out, t.located.has_value());
+    if (t.located) {
+        const LocatedEvents& e = *t.located;
+        put(out, e.max_abs_theta1);
+        put(out, e.t_max_abs_theta1);
+        put(out, e.t_overturn.has_value());
+        put(out, e.t_overturn.value_or(0.0));
+        put(out, e.energy_balance_error);
+        put(out, e.supports_computed);
+        put(out, e.roller_tension_at.has_value());
+        put(out, e.roller_tension_at.value_or(0.0));
+    }
+}
+
+Trajectory read_trajectory(std::string_view bytes) {
+    Reader r(bytes);
+    Trajectory t;
+    const auto n = r.get<std::uint64_t>();
+    if (n > bytes.size() / sizeof(TrajectorySample))
+        throw EngineFailure("an engine run's answer from its child process is cut short");
+    t.samples.resize(static_cast<std::size_t>(n));
+    const std::string_view raw = r.take(t.samples.size() * sizeof(TrajectorySample));
+    if (!raw.empty()) std::memcpy(t.samples.data(), raw.data(), raw.size());
+    t.overturned = r.get<bool>();
+    t.at_rest_at_end = r.get<bool>();
+    t.steps = r.get<long>();
+    const auto warnings = r.get<std::uint64_t>();
+    for (std::uint64_t i = 0; i < warnings; ++i) t.warnings.push_back(r.text());
+    if (r.get<bool>()) {
+        LocatedEvents e;
+        e.max_abs_theta1 = r.get<double>();
+        e.t_max_abs_theta1 = r.get<double>();
+        const bool has_overturn = r.get<bool>();
+        const double t_overturn = r.get<double>();
+        if (has_overturn) e.t_overturn = t_overturn;
+        e.energy_balance_error = r.get<double>();
+        e.supports_computed = r.get<bool>();
+        const bool has_tension = r.get<bool>();
+        const double tension_at = r.get<double>();
+        if (has_tension) e.roller_tension_at = tension_at;
+        t.located = e;
+    }
+    return t;
+}
+
+}  // namespace vssw::multibody
