@@ -15,6 +15,7 @@
 #include "study/csv.hpp"
 #include "study/plot_panels.hpp"  // series_style
 #include "study/report_data.hpp"  // settings_json
+#include "study/text.hpp"
 
 namespace vssw::study {
 namespace {
@@ -157,7 +158,7 @@ std::string cheapest_markdown(const BenchData& d) {
 std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
     std::vector<PlotScript> scripts;
     for (const auto& [problem, metric] : problem_metrics(d.points)) {
-        const std::string name = "wp_" + problem + "_" + metric;
+        const std::string name = file_stem("wp_" + problem + "_" + metric);
         std::ostringstream dat, gp;
         std::vector<std::string> series;
         std::size_t block = 0;
@@ -168,10 +169,10 @@ std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
                 if (p.problem == problem && p.metric == metric && p.engine == engine && plottable(p)) line.push_back(&p);
             if (line.empty()) continue;  // gnuplot refuses a block of nothing
             std::sort(line.begin(), line.end(), [](auto* a, auto* b) { return a->cpu.median < b->cpu.median; });
-            dat << "# " << engine << ": cpu_s error setting\n";
+            dat << "# " << gp_comment(engine) << ": cpu_s error setting\n";
             for (const BenchPoint* p : line)
                 dat << gp_number(p->cpu.median, true) << ' ' << gp_number(p->error, true) << ' '
-                    << gp_string(p->setting) << '\n';
+                    << gp_data_string(p->setting) << '\n';
             dat << "\n\n";
             series.push_back(fmt::format("'{}.dat' index {} using 1:2 with linespoints {} title {}", name, block++,
                                          series_style(engine, 0), gp_string(engine)));

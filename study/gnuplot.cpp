@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <system_error>
@@ -59,13 +60,44 @@ bool write_text(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
+namespace {
+bool is_control(char c) { return static_cast<unsigned char>(c) < 0x20 || c == '\x7f'; }
+}  // namespace
+
 std::string gp_string(const std::string& text) {
+    std::string s = "'";
+    for (char c : text) {
+        if (is_control(c)) s += ' ';
+        else if (c == '\'') s += "''";
+        else s += c;
+    }
+    return s + '\'';
+}
+
+std::string gp_comment(const std::string& text) {
+    std::string s = text;
+    for (char& c : s)
+        if (is_control(c)) c = ' ';
+    if (!s.empty() && s.back() == '\\') s += ' ';
+    return s;
+}
+
+std::string gp_data_string(const std::string& text) {
     std::string s = "\"";
     for (char c : text) {
-        if (c == '"' || c == '\\') s += '\\';
-        s += c;
+        if (is_control(c)) s += ' ';
+        else if (c == '"') s += '\'';
+        else if (c == '\\') s += '/';
+        else s += c;
     }
     return s + '"';
+}
+
+bool gp_safe_name(const std::string& name) {
+    if (name.empty() || name[0] == '.' || name[0] == '-') return false;
+    return std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_';
+    });
 }
 
 std::string gp_number(double v, bool positive_only) {
@@ -75,14 +107,14 @@ std::string gp_number(double v, bool positive_only) {
 
 std::string gp_preamble(const std::string& drawn_by, const std::string& name, int width, int height) {
     return fmt::format(
-        "# Drawn by `{3}`; re-draw with: gnuplot {0}.gp\n"
+        "# Drawn by `{2}`; re-draw with: gnuplot {3}\n"
         "set encoding utf8\n"
-        "set terminal svg size {1},{2} noenhanced font 'sans,11' background rgb 'white'\n"
-        "set output '{0}.svg'\n"
+        "set terminal svg size {0},{1} noenhanced font 'sans,11' background rgb 'white'\n"
+        "set output {4}\n"
         "set datafile missing '?'\n"
         "set grid lc rgb '#dddddd'\n"
         "set key inside top right opaque box lc rgb '#cccccc' samplen 2 spacing 1.1\n",
-        name, width, height, drawn_by);
+        width, height, gp_comment(drawn_by), gp_comment(name + ".gp"), gp_string(name + ".svg"));
 }
 
 PlotResult draw_plots(const std::vector<PlotScript>& scripts, const fs::path& plots_dir, const std::string& program) {
@@ -101,6 +133,11 @@ PlotResult draw_plots(const std::vector<PlotScript>& scripts, const fs::path& pl
     std::vector<std::string> failed;
     for (const PlotScript& s : scripts) {
         Plot plot = s.plot;
+        if (!gp_safe_name(plot.name)) {
+            // Not a file stem: it would be written into the script unquoted; file_stem makes one (study/text.hpp).
+            failed.push_back(fmt::format("'{}' (not a plain file name)", gp_comment(plot.name)));
+            continue;
+        }
         const fs::path svg = plots_dir / (plot.name + ".svg"), log = plots_dir / (plot.name + ".log");
         if (!write_text(plots_dir / (plot.name + ".gp"), s.gp) ||
             !write_text(plots_dir / (plot.name + ".dat"), s.dat)) {

@@ -39,8 +39,21 @@ PlotResult draw_plots(const std::vector<PlotScript>& scripts, const std::filesys
 // legend inside the plot (top right, on white, framed).
 // `drawn_by` names the command in the script's first comment ("vssw report").
 std::string gp_preamble(const std::string& drawn_by, const std::string& name, int width, int height);
-// A gnuplot string literal (double quotes, its quotes and backslashes escaped).
+// Any text (a record's file name, a suite's wall name, a study's name) as a gnuplot string literal that shows it as it
+// is and never runs: single-quoted, where gnuplot substitutes neither `command` nor @macro (in double quotes it runs
+// the backquoted command in a shell), its ' doubled, and every control character (newline, CR, tab, DEL, ...) a
+// space, since a newline would end the command and start another ("!cmd" runs a shell).
 std::string gp_string(const std::string& text);
+// Text for a comment line ("# TEXT") of a script or a data file: control characters as spaces, so that it stays one
+// line, and a space after a final backslash, which would continue a script's comment over the next command.
+std::string gp_comment(const std::string& text);
+// A label column in a data file, for people reading it (gnuplot takes the labels from the script, gp_string): double
+// quotes, inside which gnuplot reads a \" or \\ its own way, so quotes become ' and backslashes '/', and control
+// characters spaces; always one column.
+std::string gp_data_string(const std::string& text);
+// Whether a plot's name is a plain file stem ([A-Za-z0-9._-], not starting with '.' or '-'): the names are written
+// into scripts unquoted (`plot 'NAME.dat'`) and used as file names, so draw_plots refuses any other.
+bool gp_safe_name(const std::string& name);
 // A number for a data file; '?' (declared missing) for NaN, infinity and, on log axes, what is not positive.
 std::string gp_number(double v, bool positive_only = false);
 

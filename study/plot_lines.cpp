@@ -20,10 +20,12 @@ bool panel_has_value(const LineFigure& f, std::size_t p) {
 }
 
 std::string data_of(const LineFigure& f) {
-    std::string dat = fmt::format("# {}\n# x y marked   (one block per panel and line, in that order)\n", f.title);
+    std::string dat = fmt::format("# {}\n# x y marked   (one block per panel and line, in that order)\n",
+                                  gp_comment(f.title));
     for (std::size_t p = 0; p < f.y.size(); ++p)
         for (std::size_t l = 0; l < f.lines.size(); ++l) {
-            dat += fmt::format("# panel {}: {}; line {}: {}\n", p + 1, f.panel_titles[p], l + 1, f.lines[l].first);
+            dat += fmt::format("# panel {}: {}; line {}: {}\n", p + 1, gp_comment(f.panel_titles[p]), l + 1,
+                               gp_comment(f.lines[l].first));
             for (std::size_t i = 0; i < f.x.size(); ++i)
                 dat += fmt::format("{} {} {}\n", gp_number(f.x[i]), gp_number(f.y[p][l][i]), f.marked[p][l][i] ? 1 : 0);
             dat += "\n\n";

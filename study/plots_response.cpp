@@ -190,7 +190,7 @@ PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const O
                                                         : "");
     s.dat = "# pulse_period amplitude peak_capped overturned   (one block per series)\n";
     for (std::size_t l = 0; l < panels; ++l) {
-        s.dat += fmt::format("# {}\n", d.series[l].label);
+        s.dat += fmt::format("# {}\n", gp_comment(d.series[l].label));
         for (std::size_t k = 0; k < points; ++k) {
             double shown = std::nan("");
             bool overturned = false;

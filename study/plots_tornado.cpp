@@ -32,22 +32,26 @@ PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Eff
                        : fmt::format("{}: change with each assumption (bar: smallest to largest; dot: median)", m.name);
     s.dat = fmt::format("# {}\n# y label lo median hi pairs   (changes as fractions; binary metric: shares of pairs, "
                         "lo = -(1 -> 0), hi = +(0 -> 1), median = net)\n",
-                        m.name);
+                        gp_comment(m.name));
     const std::size_t n = bars.size();
     for (std::size_t i = 0; i < n; ++i) {
         const Effect& e = *bars[i];
-        s.dat += fmt::format("{} {} {} {} {} {}\n", n - 1 - i, gp_string(bar_label(e)), gp_number(e.lo),
+        s.dat += fmt::format("{} {} {} {} {} {}\n", n - 1 - i, gp_data_string(bar_label(e)), gp_number(e.lo),
                              gp_number(e.median), gp_number(e.hi), e.pairs);
     }
+    // The bars' labels from the script, quoted by gp_string: a data file's strings are read another way (gnuplot.hpp).
+    std::string tics;
+    for (std::size_t i = 0; i < n; ++i)
+        tics += fmt::format("{}{} {}", i == 0 ? "set ytics (" : ", \\\n    ", gp_string(bar_label(*bars[i])), n - 1 - i);
     const int height = kFramePixels + kBarPixels * static_cast<int>(n);
     s.gp = gp_preamble("vssw study", s.plot.name, kTornadoWidth, height) +
-           fmt::format("set title {}\nset xlabel {}\nset yrange [-0.6:{}]\nset ytics nomirror\nunset key\n"
+           fmt::format("set title {}\nset xlabel {}\nset yrange [-0.6:{}]\nset ytics nomirror\n{})\nunset key\n"
                        "set arrow from 0, graph 0 to 0, graph 1 nohead lc rgb '#555555'\n"
                        "set xrange [*<0:0<*]\nset offsets graph 0.05, graph 0.05, 0, 0\n",
                        gp_string(s.plot.title),
                        gp_string(m.binary ? "share of paired runs [%]" : "relative change of " + m.name + " [%]"),
-                       static_cast<double>(n) - 0.4) +
-           fmt::format("plot '{0}.dat' using (50*($3+$5)):1:(100*$3):(100*$5):($1-{1}):($1+{1}):ytic(2) with "
+                       static_cast<double>(n) - 0.4, tics) +
+           fmt::format("plot '{0}.dat' using (50*($3+$5)):1:(100*$3):(100*$5):($1-{1}):($1+{1}) with "
                        "boxxyerror fs solid 0.45 noborder lc rgb '#1f77b4', \\\n"
                        "     '{0}.dat' using (100*$4):1 with points pt 7 ps 1.4 lc rgb 'black'\n",
                        s.plot.name, kBarHalfHeight);

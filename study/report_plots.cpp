@@ -165,8 +165,8 @@ PlotScript trace_script(const std::string& id, const std::string& name, const st
     std::string plot_cmd;
     int index = 0;
     for (const compare::Trace* t : traces) {
-        s.dat += fmt::format("# {} {}{}\n# t theta1_over_alpha\n", id, t->engine,
-                             t->assumption.empty() ? "" : " " + t->assumption);
+        s.dat += fmt::format("# {} {}{}\n# t theta1_over_alpha\n", gp_comment(id), gp_comment(t->engine),
+                             t->assumption.empty() ? "" : " " + gp_comment(t->assumption));
         // The samples inside the window and one either side (the line runs to the edge).
         const std::size_t n = std::min(t->t.size(), t->theta1_over_alpha.size());
         std::vector<double> px, py;
@@ -262,24 +262,29 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
                       : fmt::format("Relative error of the {} per case and engine", metric_title(table.metric)),
                   false};
         s.dat = "# index case_id";
-        for (const std::string& e : table.engines) s.dat += ' ' + e;
+        for (const std::string& e : table.engines) s.dat += ' ' + gp_comment(e);
         s.dat += "   (relative error in %)\n";
         for (std::size_t i = 0; i < table.rows.size(); ++i) {
             const MetricTableRow& row = table.rows[i];
-            s.dat += fmt::format("{} {}", i, gp_string(row.case_id));
+            s.dat += fmt::format("{} {}", i, gp_data_string(row.case_id));
             for (const MetricCell& c : row.cells) s.dat += ' ' + gp_number(c.present ? 100.0 * c.rel_error : NAN);
             s.dat += '\n';
         }
         const int width = std::max(kPlotWidth, 260 + kPixelsPerCase * static_cast<int>(table.rows.size()));
-        std::string cmd = fmt::format("plot '{}.dat' using 1:({}):xtic(2) notitle with points ps 0", s.plot.name,
-                                      "NaN");
+        // The case ids as tics from the script, quoted by gp_string: a data file's strings are read another way
+        // (gnuplot.hpp).
+        std::string tics;
+        for (std::size_t i = 0; i < table.rows.size(); ++i)
+            tics += fmt::format("{}{} {}", i == 0 ? "set xtics (" : ", \\\n    ", gp_string(table.rows[i].case_id), i);
+        if (!tics.empty()) tics += ")\n";
+        std::string cmd;
         // A distinct point type per engine, slightly offset along x so that equal values stay visible.
         const double spread = 0.12;
         for (std::size_t e = 0; e < table.engines.size(); ++e) {
             const double offset =
                 spread * (static_cast<double>(e) - 0.5 * static_cast<double>(table.engines.size() - 1));
-            cmd += fmt::format(", \\\n     '{}.dat' using ($1+({:g})):{} with points pt {} ps 1.3 lc rgb '{}' title {}",
-                               s.plot.name, offset, e + 3, 5 + 2 * static_cast<int>(e),
+            cmd += fmt::format("{}'{}.dat' using ($1+({:g})):{} with points pt {} ps 1.3 lc rgb '{}' title {}",
+                               e == 0 ? "plot " : ", \\\n     ", s.plot.name, offset, e + 3, 5 + 2 * static_cast<int>(e),
                                engine_colour(table.engines[e]), gp_string(engine_display_name(table.engines[e])));
         }
         if (table.target)
@@ -288,8 +293,8 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
                                100.0 * *table.target);
         s.gp = gp_preamble("vssw report", s.plot.name, width, kPlotHeight + 80) +
                fmt::format("set title {}\nset ylabel 'relative error [%] (engine / reference - 1)'\n"
-                           "set xrange [-0.6:{}]\nset xtics rotate by -35 left\nset bmargin 9\n",
-                           gp_string(s.plot.title), static_cast<double>(table.rows.size()) - 0.4) +
+                           "set xrange [-0.6:{}]\nset xtics rotate by -35 left\n{}set bmargin 9\n",
+                           gp_string(s.plot.title), static_cast<double>(table.rows.size()) - 0.4, tics) +
                cmd + "\n";
         scripts.push_back(std::move(s));
     }
@@ -320,7 +325,8 @@ std::vector<PlotScript> step_scripts(const ReportInput& in) {
         const std::vector<std::size_t> variants = series_variants(engines);
         for (const StepSeries* drawn_series : drawn) {
             const StepSeries& series = *drawn_series;
-            s.dat += fmt::format("# {} {} {}\n# dt_ms abs_rel_error_percent\n", series.engine, series.base_case, metric);
+            s.dat += fmt::format("# {} {} {}\n# dt_ms abs_rel_error_percent\n", gp_comment(series.engine),
+                                 gp_comment(series.base_case), gp_comment(metric));
             for (std::size_t i = 0; i < series.dt.size(); ++i)
                 s.dat += gp_number(1e3 * series.dt[i], true) + ' ' +
                          gp_number(100.0 * std::abs(series.rel_error[i]), true) + '\n';

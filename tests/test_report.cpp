@@ -6,6 +6,7 @@
 
 #include "tests/cli_runner.hpp"
 #include "tests/engine_available.hpp"
+#include "tests/hostile_names.hpp"
 #include "tests/temp_files.hpp"
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -303,7 +304,8 @@ TEST(ReportFiles, MarkdownHasSummaryLinesAndARowPerCaseWithItsError) {
     // Step study, failures (message in a table cell), no plots.
     EXPECT_TRUE(contains(w.md, "| ODE | fig6-vssw/r0.5 | period | 0.2 ms: -0.02 %, 0.5 ms: -0.06 %, 1 ms: -0.12 % | 1.00 |"))
         << w.md;
-    EXPECT_TRUE(contains(w.md, "| fig6-pw | bullet | **" + kFailureMessage + "** |"));
+    // Markdown shows the message's '<' as text, backslash-escaped.
+    EXPECT_TRUE(contains(w.md, "| fig6-pw | bullet | **slid past 0.05 b at t = 1.2 s \\<x, \"y\"> & more** |")) << w.md;
     EXPECT_TRUE(contains(w.md, "Plots were not made (--no-plots)."));
 }
 
@@ -427,6 +429,51 @@ TEST(ReportFiles, PlotsAreDrawnAndInlinedAsSvg) {
     EXPECT_FALSE(contains(w.html, "<?xml")) << "the SVG's prolog is not inlined";
     EXPECT_EQ(w.json["plots"]["made"], true);
     EXPECT_TRUE(contains(w.html, "slid past 0.05 b at t = 1.2 s &lt;x,"));
+}
+
+// A suite file shared with wall and record names made to run commands (`report --suite FILE`): the report's plots are
+// drawn with the names shown as they are, nothing runs, and the pages show the markup as text.
+TEST(ReportFiles, HostileSuiteNamesAreShownAndNeverRun) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const std::string wall = vssw::testing::kHostileName + "-v";
+    const auto hostile = [&](std::string& text) {
+        for (const auto& [from, to] : {std::pair<std::string, std::string>{"fig6-vssw", wall},
+                                       {"fig6-pw", vssw::testing::kHostileName + "-p"},
+                                       {"rinaldi-x0.17", vssw::testing::kHostileName + "-r"}})
+            for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+                text.replace(at, from.size(), to);
+    };
+    vssw::compare::Suite suite = hand_suite();
+    suite.name = vssw::testing::kHostileName;
+    for (auto& w : suite.walls) hostile(w.id), w.label = vssw::testing::kHostileName;
+    for (auto& r : suite.records) hostile(r.id), r.label = vssw::testing::kHostileName;
+    for (auto& c : suite.cases) hostile(c.id), hostile(c.wall_id), hostile(c.record_id);
+    vssw::compare::SuiteResults results = hand_results();
+    for (auto& r : results.rows) hostile(r.case_id);
+    for (auto& f : results.failures) hostile(f.case_id);
+    for (auto& t : results.traces) hostile(t.case_id);
+
+    TempDir dir("report_hostile");
+    vssw::study::ReportMeta meta;
+    meta.date = "2025-01-01T00:00:00Z";
+    meta.commit = "abc1234";
+    const vssw::study::ReportFiles files =
+        vssw::study::write_suite_report(dir.path, suite, results, meta, vssw::study::ReportOptions{});
+    EXPECT_TRUE(vssw::testing::markers_made(dir.path).empty()) << vssw::testing::markers_made(dir.path).front();
+    EXPECT_TRUE(files.plots_made);
+    EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
+    const fs::path plots = dir.path / "plots";
+    const std::string trace = "trace_" + vssw::study::file_stem(wall + "/r0.5") + ".svg";
+    for (const auto& [svg, text] : {std::pair<std::string, std::string>{trace, wall + "/r0.5: theta1 / alpha"},
+                                    {"error_threshold_g.svg", wall},  // a case's tic
+                                    {"step_period.svg", "ODE " + wall + "/r0.5"}}) {  // a line's key
+        ASSERT_TRUE(fs::exists(plots / svg)) << svg;
+        EXPECT_TRUE(contains(read(plots / svg), vssw::testing::svg_text(text))) << svg;
+    }
+    const std::string html = read(files.html), md = read(files.markdown);
+    EXPECT_FALSE(contains(html, "<script"));
+    EXPECT_TRUE(contains(html, "&lt;script&gt;alert(1)&lt;/script&gt;"));
+    EXPECT_FALSE(contains(md, " <script")) << "Markdown shows a backslash-escaped '<' as text";
 }
 
 TEST(ReportFiles, WithoutGnuplotTheReportIsStillWritten) {
@@ -592,7 +639,7 @@ TEST(ReportAtAGlance, ContentsLinkEveryHeadingInHtmlAndMarkdown) {
         EXPECT_TRUE(contains(w.html, "<a href=\"#" + (*i)[2].str() + "\">")) << (*i)[2];
     EXPECT_GT(headings, 10);
     EXPECT_TRUE(contains(w.md, "- [At a glance](#at-a-glance)\n- [Engines](#engines)\n")) << w.md;
-    EXPECT_TRUE(contains(w.md, "  - [threshold acceleration [g] (target 0.5 %)](#threshold-acceleration-g-target-05-)"))
+    EXPECT_TRUE(contains(w.md, "  - [threshold acceleration \\[g\\] (target 0.5 %)](#threshold-acceleration-g-target-05-)"))
         << w.md;
 }
 
@@ -675,9 +722,9 @@ TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
     EXPECT_GT(x->second, 11.9);
     EXPECT_LT(x->second, 12.5);
     // The three models in the legend, each in its engine's colour; the legend inside the plot.
-    EXPECT_TRUE(contains(s->gp, "title \"analytic, Eq. (19) impact (reference)\"")) << s->gp;
-    EXPECT_TRUE(contains(s->gp, "title \"analytic, whole-mechanism impact\"")) << s->gp;
-    EXPECT_TRUE(contains(s->gp, "lc rgb '" + vssw::study::engine_colour("ode") + "' title \"ODE\"")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "title 'analytic, Eq. (19) impact (reference)'")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "title 'analytic, whole-mechanism impact'")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "lc rgb '" + vssw::study::engine_colour("ode") + "' title 'ODE'")) << s->gp;
     EXPECT_TRUE(contains(s->gp, "set key inside")) << s->gp;
     EXPECT_FALSE(contains(s->gp, "outside")) << s->gp;
 }
@@ -699,7 +746,7 @@ TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
     EXPECT_LT(y->second, 0.04);
     EXPECT_GT(y->first, -0.04);
     EXPECT_FALSE(contains(zoom->gp, "(reference)")) << "the reference is in the first plot: " << zoom->gp;
-    EXPECT_TRUE(contains(zoom->gp, "title \"analytic, whole-mechanism impact\"")) << zoom->gp;
+    EXPECT_TRUE(contains(zoom->gp, "title 'analytic, whole-mechanism impact'")) << zoom->gp;
     // Engines that rock like the reference get none.
     results.traces[2] = rocking_trace("ode", "", 0.4, 1.0, 30.0, 45.0);
     EXPECT_EQ(script_named(vssw::study::report_plot_scripts({suite, results, {}}), "trace_fig6-vssw_rinaldi-x0.45_zoom"),
@@ -765,7 +812,7 @@ TEST(ReportPlots, OneColourPerEngineInEveryPlot) {
         for (const std::string& line : lines_of(s.gp))
             for (const char* engine : {"ode", "bullet"}) {
                 const std::string name = vssw::study::engine_display_name(engine);
-                if (!contains(line, "title \"" + name)) continue;
+                if (!contains(line, "title '" + name)) continue;
                 EXPECT_TRUE(contains(line, "lc rgb '" + vssw::study::engine_colour(engine) + "'"))
                     << s.plot.name << ": " << line;
                 ++checked;

@@ -29,6 +29,8 @@
 #include "study/spec.hpp"
 #include "study/study_data.hpp"
 #include "study/study_prose.hpp"
+#include "study/text.hpp"
+#include "tests/hostile_names.hpp"
 #include "tests/temp_files.hpp"
 
 namespace {
@@ -427,6 +429,75 @@ TEST(StudyOutputs, OverturningMapHoldsEveryPulseWithItsVerdict) {
     // The whole-mechanism impact stands at 0.6 g x 1 s with a peak of 0.6.
     EXPECT_EQ(lines[7], (std::vector<std::string>{"1", "0.6", "0.6", "0"}));
     EXPECT_TRUE(fs::exists(dir.path / "out" / st::kPlotsDir / "overturning_map.svg"));
+}
+
+// Text reaches gnuplot only as quoted data: whatever it holds, it is shown as it is and never runs.
+TEST(Gnuplot, TextIsQuotedAsDataThatNeverRuns) {
+    EXPECT_EQ(st::gp_string("it's `a` @m $(b)"), "'it''s `a` @m $(b)'");
+    EXPECT_EQ(st::gp_string("line\nnext\r\tend\x7f"), "'line next  end '");
+    EXPECT_EQ(st::gp_comment("a\n!cmd \\"), "a !cmd \\ ") << "one line, not continued by a final backslash";
+    EXPECT_EQ(st::gp_data_string("a \"b\" c\\d\ne"), "\"a 'b' c/d e\"") << "one column of a data file";
+    EXPECT_TRUE(st::gp_safe_name("trace_fig6-vssw_r0.5"));
+    for (const char* bad : {"", ".hidden", "-x", "a b", "a'b", "a/b", "a\nb"}) EXPECT_FALSE(st::gp_safe_name(bad)) << bad;
+
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    TempDir dir("gnuplot_hostile");
+    const std::string& text = vssw::testing::kHostileName;
+    st::PlotScript s;
+    s.plot = {"section", "hostile", text, false};
+    s.dat = "# " + st::gp_comment(text) + "\n0 " + st::gp_data_string(text) + " 1\n1 " + st::gp_data_string(text) +
+            " 2\n";
+    s.gp = st::gp_preamble("vssw test", "hostile", 640, 480) + "set title " + st::gp_string("title " + text) +
+           "\nset xlabel " + st::gp_string("x " + text) + "\nset xtics (" + st::gp_string("tic " + text) +
+           " 0)\n# " + st::gp_comment(text + "\\") + "\nplot 'hostile.dat' using 1:3 with lines title " +
+           st::gp_string("key " + text) + "\n";
+    const st::PlotResult r = st::draw_plots({s}, dir.path / "plots", "gnuplot");
+    EXPECT_TRUE(vssw::testing::markers_made(dir.path).empty()) << vssw::testing::markers_made(dir.path).front();
+    ASSERT_TRUE(r.all_made) << r.note;
+    const std::string svg = read(dir.path / "plots" / "hostile.svg");
+    for (const char* what : {"title ", "x ", "tic ", "key "})
+        EXPECT_TRUE(contains(svg, vssw::testing::svg_text(what + text))) << what;
+
+    // A plot whose name is not a plain file stem is refused, not written into a script.
+    s.plot.name = "a'b";
+    const st::PlotResult refused = st::draw_plots({s}, dir.path / "plots", "gnuplot");
+    EXPECT_FALSE(refused.all_made);
+    EXPECT_TRUE(contains(refused.note, "not a plain file name")) << refused.note;
+    EXPECT_FALSE(fs::exists(dir.path / "plots" / "a'b.gp"));
+}
+
+// A study shared with a record file named to run commands, and such a name and description: its plots are drawn with
+// the names shown as they are, nothing runs, and its pages show the markup as text.
+TEST(StudyOutputs, HostileNamesAreShownAndNeverRun) {
+    TempDir dir("study_hostile");
+    const fs::path record = dir.path / vssw::testing::kHostileFileName;
+    fs::copy_file(VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2", record);
+    const st::Grid grid(spec_of(dir.path, "name = " + vssw::testing::toml_string(vssw::testing::kHostileName) +
+                                              "\ndescription = " + vssw::testing::toml_string(vssw::testing::kHostileName) +
+                                              "\nmetrics = [\"peak_rotation\", \"overturned\"]\nengines = [\"analytic\"]\n"
+                                              "[wall]\nalpha = [0.05, 0.1]\nR = 1\nhinge = 0.6\n"
+                                              "[excitation]\nkind = \"record\"\nfile = " +
+                                              vssw::testing::toml_string(record.string()) + "\npga = 0.3\n"));
+    write_study(dir.path / "out", grid, [](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
+        return metric == "overturned" ? 0.0 : 0.1 / c.alpha;
+    });
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const st::OutputFiles files = st::write_study_outputs(dir.path / "out", {});
+    EXPECT_TRUE(vssw::testing::markers_made(dir.path).empty()) << vssw::testing::markers_made(dir.path).front();
+    EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
+    const fs::path plots = dir.path / "out" / st::kPlotsDir;
+    const std::string stem = st::file_stem(fs::path(vssw::testing::kHostileFileName).stem().string());
+    const fs::path svg = plots / ("rocking_" + stem + ".svg");
+    ASSERT_TRUE(fs::exists(svg)) << svg;
+    // The title names the record by its file's name.
+    EXPECT_TRUE(contains(read(svg), vssw::testing::svg_text("file " + vssw::testing::kHostileFileName))) << read(svg);
+    const std::string html = read(dir.path / "out" / st::kStudyHtml), md = read(dir.path / "out" / st::kStudyMarkdown);
+    EXPECT_FALSE(contains(html, "<script"));
+    EXPECT_TRUE(contains(html, "&lt;script&gt;alert(1)&lt;/script&gt;"));
+    // Markdown shows a backslash-escaped '<' as text.
+    EXPECT_FALSE(contains(md, " <script")) << md;
+    EXPECT_TRUE(contains(md, "\\<script>alert(1)\\</script>"));
+    for (const std::string& text : {html, md}) EXPECT_TRUE(contains(text, "M\xC3\xBCller \xCE\xB5 \xE5\x9C\xB0\xE9\x9C\x87"));
 }
 
 TEST(StudyOutputs, AFolderWithoutAManifestIsBadInputNamingIt) {
