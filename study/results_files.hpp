@@ -5,8 +5,9 @@
 //                  warnings (the analytic model's own assumptions failing along the run, "; "-joined)
 //                  in case, run, metric order (the file's, never the threads'); value empty when there is none;
 //                  status "ok" or "failed: <reason>"
-//   manifest.json  the study as read, its identity, the shard, the engines' versions, the commit, the wall time:
-//                  what `vssw study merge` and `--resume` check, and what results.json starts with
+//   manifest.json  the study as read, its identity, the shard, the engines' versions, the commit, the wall time,
+//                  results.csv's rows and hash ("results"): what `vssw study merge` and `--resume` check, and what
+//                  results.json starts with
 //   results.json   the manifest's keys and the rows of results.csv as objects (numbers as numbers, empty as null)
 // Each is written to a temporary file and renamed into place (study/atomic_file.hpp).
 #include <filesystem>

@@ -1,8 +1,9 @@
 #pragma once
 // Running a study: the shard's tasks (case x run) that are not done yet, longest first, on threads in this process
 // (compare/task_pool.hpp) or handed out to MPI processes (study/mpi.hpp); every finished task's rows go to the journal
-// at once (study/journal.hpp). At the end the rows are sorted into results.csv and the manifest is written; the
-// journal is removed. Rows and their order depend on the study file and the shard only.
+// at once (study/journal.hpp). At the end the rows are sorted into results.csv and the manifest is written (into
+// StudyRunOptions::results_dir); the journal is removed, or left to go with the folder the results replace. Rows and
+// their order depend on the study file and the shard only.
 #include <filesystem>
 #include <functional>
 #include <string>
