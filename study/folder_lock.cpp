@@ -48,8 +48,9 @@ FolderLock::FolderLock(const std::filesystem::path& dir) {
                 throw InputError(fmt::format("--out '{}' is in use by another vssw study ({}): wait for it to end, or "
                                              "give another --out",
                                              dir.string(), pid.empty() ? "a process" : "process " + pid));
-            throw InputError(fmt::format("--out '{}': cannot lock '{}': {}", dir.string(), path.string(),
-                                         std::strerror(err)));
+            // A file system without locks (ENOLCK, EOPNOTSUPP on some network mounts): the study runs as it did
+            // before there were locks, rather than not at all.
+            return;
         }
         struct stat held {}, named {};
         if (::fstat(fd, &held) == 0 && ::stat(path.c_str(), &named) == 0 && held.st_dev == named.st_dev &&

@@ -12,7 +12,8 @@ constexpr const char* kLockFile = ".vssw-lock";
 class FolderLock {
 public:
     FolderLock() = default;
-    // Locks DIR/.vssw-lock (made if missing); InputError naming the process that holds it.
+    // Locks DIR/.vssw-lock (made if missing); InputError naming the process that holds it. Where the file system has
+    // no locks, holds none.
     explicit FolderLock(const std::filesystem::path& dir);
     ~FolderLock();
     FolderLock(FolderLock&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
