@@ -22,6 +22,7 @@
 #include "multibody/engine.hpp"
 #include "study/bench_files.hpp"
 #include "study/clock.hpp"
+#include "study/folder_swap.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT
 
 namespace vssw::cli {
@@ -112,12 +113,10 @@ Command add_bench_command(CLI::App& root) {
                                                  options.record_path));
                 for (const std::string& name : options.engines)
                     (void)compare::bench_sweep(*multibody::make_engine(name), options.quick);  // settings checked
-                // An unwritable --out fails before the sweep, not after it.
-                std::error_code ec;
-                std::filesystem::create_directories(o->out, ec);
-                if (ec || !std::filesystem::is_directory(o->out))
-                    throw InputError(fmt::format("--out: cannot create the folder {}{}", o->out,
-                                                 ec ? ": " + ec.message() : ""));
+                // An unwritable --out fails before the sweep, not after it; nothing is made in it until the files
+                // are complete (a staging folder then replaces it whole: study/folder_swap.hpp).
+                study::check_out_folder(o->out, study::OutKind::bench);
+                study::check_inputs_not_outputs(o->out, study::OutKind::bench, {{"the record", options.record_path}});
 
                 study::BenchMeta meta{study::utc_now(), VSSW_GIT_COMMIT, load_average(), options.repeats, o->quick,
                                       options.engines, options.problems};
@@ -133,8 +132,11 @@ Command add_bench_command(CLI::App& root) {
                     throw SimulationFailure(e.what());
                 }
                 const study::BenchData data = study::bench_data(meta, std::move(points));
+                study::StagedFolder staged(o->out, study::OutKind::bench);
+                staged.create();
                 const study::PlotResult plots =
-                    study::write_bench(data, o->out, o->no_plots ? std::string() : o->gnuplot);
+                    study::write_bench(data, staged.path(), o->no_plots ? std::string() : o->gnuplot);
+                staged.commit();
                 if (!o->no_plots && !plots.note.empty()) err << "vssw: warning: " << plots.note << '\n';
                 if (o->json) {
                     out << study::bench_json(data).dump(2) << '\n';

@@ -26,6 +26,7 @@
 #include "multibody/engine.hpp"
 #include "study/bench_files.hpp"
 #include "study/clock.hpp"
+#include "study/folder_swap.hpp"
 #include "study/report_write.hpp"
 #include "study/suite_file.hpp"
 
@@ -81,27 +82,15 @@ void require_records_readable(const compare::Suite& suite) {
     for (const compare::SuiteRecord& r : suite.records) (void)read_record(r.path);
 }
 
-// The --out folder, removed again when the run fails before the report is written, if this run created it and it is
-// still empty (std::filesystem::remove does not remove a folder with anything in it: nothing of the user's is lost).
-class FolderGuard {
-public:
-    explicit FolderGuard(std::filesystem::path dir) : dir_(std::move(dir)) {
-        std::error_code ec;
-        created_ = !std::filesystem::exists(dir_, ec);
-    }
-    ~FolderGuard() {
-        if (!created_ || kept_) return;
-        std::error_code ec;
-        std::filesystem::remove(dir_, ec);
-    }
-    FolderGuard(const FolderGuard&) = delete;
-    FolderGuard& operator=(const FolderGuard&) = delete;
-    void keep() { kept_ = true; }
-
-private:
-    std::filesystem::path dir_;
-    bool created_ = false, kept_ = false;
-};
+// The files the report reads that could live where it writes: a suite file, and the records it names.
+std::vector<std::pair<std::string, std::filesystem::path>> report_inputs(const std::string& suite_arg,
+                                                                         const compare::Suite& suite) {
+    std::vector<std::pair<std::string, std::filesystem::path>> inputs;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(suite_arg, ec)) inputs.emplace_back("the suite file", suite_arg);
+    for (const compare::SuiteRecord& r : suite.records) inputs.emplace_back("the record", r.path);
+    return inputs;
+}
 
 }  // namespace
 
@@ -154,9 +143,11 @@ Command add_report_command(CLI::App& root) {
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
                 require_records_readable(suite);
                 const std::filesystem::path dir = o->out;
-                // After every other check, before the suite runs; removed again if the run fails (FolderGuard).
-                FolderGuard folder(dir);
-                study::prepare_report_dir(dir);
+                // After every other check, before the suite runs. Nothing is made in --out until the report is
+                // complete: it is written into a staging folder that then replaces --out whole (a failed run leaves
+                // --out as it was, or leaves none).
+                study::check_out_folder(dir, study::OutKind::report);
+                study::check_inputs_not_outputs(dir, study::OutKind::report, report_inputs(o->suite, suite));
 
                 Progress progress(err);
                 compare::RunOptions run;
@@ -181,8 +172,12 @@ Command add_report_command(CLI::App& root) {
                 options.plots = !o->no_plots;
                 options.plot.gnuplot = o->gnuplot;
                 options.bench_dir = o->bench;
-                const study::ReportFiles files = study::write_suite_report(dir, suite, results, meta, options);
-                folder.keep();
+                study::StagedFolder staged(dir, study::OutKind::report);
+                staged.create();
+                study::ReportFiles files = study::write_suite_report(staged.path(), suite, results, meta, options);
+                staged.commit();
+                for (std::filesystem::path* p : {&files.dir, &files.markdown, &files.html, &files.json})
+                    *p = staged.final_path(*p);
                 for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
 
                 out << fmt::format("vssw report: suite {}, {} case{}, {} engine{} besides the analytic model, "

@@ -22,6 +22,7 @@
 #include "multibody/engine.hpp"
 #include "stress/run.hpp"
 #include "study/atomic_file.hpp"
+#include "study/folder_swap.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -51,15 +52,9 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     report.engines = o.engines.empty() ? multibody::available_engines() : parse_engine_list("--engines", o.engines);
     const int threads = parse_threads(o.threads_text);
     for (const std::string& name : o.cases) (void)stress::require_case(name);  // before --out is created
-    // Check the folder can be written before anything runs (AtomicFile creates its temporary file at once).
-    std::vector<std::unique_ptr<study::AtomicFile>> files;
-    if (!o.out_dir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(o.out_dir, ec);
-        if (ec) throw InputError(fmt::format("--out '{}': cannot create the folder: {}", o.out_dir, ec.message()));
-        for (const char* name : {"stress.json", "stress.csv", "stress.md"})
-            files.push_back(std::make_unique<study::AtomicFile>(std::filesystem::path(o.out_dir) / name));
-    }
+    // Check the folder can be written before anything runs; the files go into a staging folder that replaces it
+    // whole once they are complete (study/folder_swap.hpp).
+    if (!o.out_dir.empty()) study::check_out_folder(o.out_dir, study::OutKind::stress);
     const auto start = std::chrono::steady_clock::now();
     stress::RunOptions run;
     run.engines = report.engines;
@@ -72,11 +67,13 @@ void run_stress(const StressOptions& o, std::ostream& out) {
         report.stable_steps = stress::find_stable_steps(report.engines, report.time_limit_s, threads);
     report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Json doc = stress_json(report);
-    if (!files.empty()) {
-        files[0]->stream() << doc.dump(2) << '\n';
-        write_stress_csv(files[1]->stream(), report);
-        write_stress_md(files[2]->stream(), report);
-        for (auto& f : files) f->commit();
+    if (!o.out_dir.empty()) {
+        study::StagedFolder staged(o.out_dir, study::OutKind::stress);
+        staged.create();
+        study::write_file(staged.path() / "stress.json", [&](std::ostream& f) { f << doc.dump(2) << '\n'; });
+        study::write_file(staged.path() / "stress.csv", [&](std::ostream& f) { write_stress_csv(f, report); });
+        study::write_file(staged.path() / "stress.md", [&](std::ostream& f) { write_stress_md(f, report); });
+        staged.commit();
     }
     if (o.json) out << doc.dump(2) << '\n';
     else write_stress_table(out, report);

@@ -11,6 +11,8 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
@@ -25,6 +27,8 @@
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/run_budget_option.hpp"
+#include "study/folder_lock.hpp"
+#include "study/folder_swap.hpp"
 #include "study/grid.hpp"
 #include "study/merge.hpp"
 #include "study/metric_catalog.hpp"
@@ -92,13 +96,36 @@ void print_outputs(std::ostream& out, const std::string& dir, const study::Outpu
     for (const auto& f : files.written) out << "  " << f.string() << '\n';
 }
 
+// The files a study reads that live where it writes: the study file, and every record the grid names.
+std::vector<std::pair<std::string, std::filesystem::path>> study_inputs(const std::string& file,
+                                                                        const study::Grid& grid) {
+    std::vector<std::pair<std::string, std::filesystem::path>> inputs = {{"the study file", file}};
+    for (const study::PartSpec& part : grid.spec().parts)
+        for (const study::Axis& a : part.excitation)
+            if (a.key == "file")
+                for (const study::Level& level : a.levels)
+                    if (const auto* name = std::get_if<std::string>(&level))
+                        inputs.emplace_back("the record", grid.record_path(*name));
+    return inputs;
+}
+
+// The paths of files written into the staging folder, as they are named once it has replaced --out.
+study::OutputFiles as_committed(study::OutputFiles files, const study::StagedFolder& staged) {
+    for (auto& f : files.written) f = staged.final_path(f);
+    return files;
+}
+
 void run_merge(const StudyOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<std::filesystem::path> dirs(o.merge_dirs.begin(), o.merge_dirs.end());
-    const study::MergeResult merged = study::merge_studies(dirs, o.out);
+    study::check_out_folder(o.out, study::OutKind::study);
+    study::StagedFolder staged(o.out, study::OutKind::study);
+    staged.create();
+    const study::MergeResult merged = study::merge_studies(dirs, o.out, staged.path());
     study::OutputOptions options;
     options.plots = !o.no_plots;
     options.gnuplot = o.gnuplot;
-    const study::OutputFiles files = study::write_study_outputs(o.out, options);
+    const study::OutputFiles files = as_committed(study::write_study_outputs(staged.path(), options), staged);
+    staged.commit();
     for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
     if (o.json) {
         Json files_json = Json::array();
@@ -127,6 +154,7 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
 
     std::optional<study::Grid> grid;
     study::StudyRunOptions run;
+    study::FolderLock lock;  // rank 0's, held until the study's folder is replaced
     std::string refusal;
     try {
         if (o.file.empty()) throw InputError("a study file is required (vssw study FILE --out DIR)");
@@ -145,7 +173,10 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
         grid.emplace(spec);
         // A shard may be empty (more shards than cases): it writes empty results, which merge as such.
         if (grid->case_ids().empty()) throw InputError(fmt::format("study file {}: the grid has no case to run", o.file));
-        if (leader) study::prepare_study_dir(*grid, o.out, run);
+        if (leader) {
+            study::check_inputs_not_outputs(o.out, study::OutKind::study, study_inputs(o.file, *grid));
+            lock = study::prepare_study_dir(*grid, o.out, run);
+        }
     } catch (const InputError& e) {
         refusal = e.what();
     }
@@ -166,6 +197,14 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
     if (leader && progress.on())
         run.progress = [&progress](long done, long total, const std::string& what) { progress.show(done, total, what); };
     run.mpi = mpi ? &*mpi : nullptr;
+    // The results are written into a staging folder that replaces --out whole once everything is written; until
+    // then --out keeps the journal (a run killed before the swap is resumed from it) and any older results as they
+    // were (study/folder_swap.hpp).
+    std::optional<study::StagedFolder> staged;
+    if (leader) {
+        staged.emplace(o.out, study::OutKind::study);
+        run.results_dir = staged->path();
+    }
     study::StudyRunResult result;
     try {
         result = study::run_study(*grid, o.out, run);
@@ -179,7 +218,8 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
     study::OutputOptions options;
     options.plots = !o.no_plots;
     options.gnuplot = o.gnuplot;
-    const study::OutputFiles files = study::write_study_outputs(o.out, options);
+    const study::OutputFiles files = as_committed(study::write_study_outputs(staged->path(), options), *staged);
+    staged->commit();
     for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
 
     const study::StudySpec& spec = grid->spec();

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "apps/cli.hpp"
+#include "apps/signal_cleanup.hpp"
 
 namespace {
 
@@ -22,5 +23,6 @@ constexpr int kTrimThreshold = 512 << 20;  // [bytes] free memory kept for the n
 int main(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
     mallopt(M_TRIM_THRESHOLD, kTrimThreshold);
+    vssw::cli::install_signal_cleanup();  // the program's alone: the Python module keeps Python's handlers
     return vssw::cli::run(argc, argv, std::cout, std::cerr);
 }

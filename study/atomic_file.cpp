@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "study/temp_registry.hpp"
 
 namespace vssw::study {
 namespace fs = std::filesystem;
@@ -27,8 +28,12 @@ AtomicFile::AtomicFile(fs::path target) : target_(std::move(target)) {
     std::error_code ec;
     if (fs::is_directory(target_, ec))
         throw InputError(fmt::format("cannot write the output file '{}': it is a folder", target_.string()));
+    register_temp(temp_);  // before it exists: SIGINT/SIGTERM remove it (apps/signal_cleanup.hpp)
     out_.open(temp_, std::ios::binary | std::ios::trunc);
-    if (!out_) throw InputError(fmt::format("cannot write the output file '{}'", target_.string()));
+    if (!out_) {
+        unregister_temp(temp_);
+        throw InputError(fmt::format("cannot write the output file '{}'", target_.string()));
+    }
 }
 
 AtomicFile::~AtomicFile() {
@@ -36,6 +41,7 @@ AtomicFile::~AtomicFile() {
     out_.close();
     std::error_code ec;
     fs::remove(temp_, ec);  // nothing to report from a destructor: the target is untouched either way
+    unregister_temp(temp_);
 }
 
 void AtomicFile::commit() {
@@ -47,6 +53,7 @@ void AtomicFile::commit() {
     if (ec)
         throw InputError(fmt::format("cannot write the output file '{}': {}", target_.string(), ec.message()));
     committed_ = true;
+    unregister_temp(temp_);
 }
 
 void write_file(const fs::path& target, const std::function<void(std::ostream&)>& write) {

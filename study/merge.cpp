@@ -14,6 +14,7 @@
 #include "study/atomic_file.hpp"
 #include "study/csv.hpp"
 #include "study/outputs.hpp"
+#include "study/results_files.hpp"
 #include "study/runner.hpp"
 
 namespace vssw::study {
@@ -28,11 +29,19 @@ struct ShardReader {
     std::ifstream in;
     std::vector<std::string> header, next;  // `next`: the first row not yet taken (empty at the end)
     long case_id = -1;
+    long rows = 0;  // rows read so far
+    // The current case's rows by what identifies them (every column but the value and what describes it): a row
+    // given twice is refused.
+    std::set<std::vector<std::string>> case_keys;
+    std::vector<std::size_t> key_columns;
 
     explicit ShardReader(const fs::path& p) : path(p), in(p, std::ios::binary) {
         if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
         if (!read_csv_record(in, header) || header.empty() || header.front() != "case_id")
             throw InputError(fmt::format("'{}' is not a study's results.csv", path.string()));
+        for (std::size_t i = 0; i < header.size(); ++i)
+            if (header[i] != "value" && header[i] != "unit" && header[i] != "status" && header[i] != "warnings")
+                key_columns.push_back(i);
         advance();
     }
     void advance() {
@@ -46,12 +55,21 @@ struct ShardReader {
         case_id = std::strtol(next[0].c_str(), &end, 10);
         if (next[0].empty() || *end != '\0')
             throw InputError(fmt::format("'{}': case_id '{}' is not a number", path.string(), next[0]));
+        ++rows;
+        std::vector<std::string> key;
+        for (const std::size_t i : key_columns) key.push_back(next[i]);
+        if (!case_keys.empty() && key.front() != case_keys.begin()->front()) case_keys.clear();
+        if (!case_keys.insert(std::move(key)).second)
+            throw InputError(fmt::format("study merge: '{}' repeats a row at line {} (case {}): a damaged shard; run "
+                                         "it again",
+                                         path.string(), rows + 1, next[0]));
     }
 };
 
 }  // namespace
 
-MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out) {
+MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out, const fs::path& write_to) {
+    const fs::path dest = write_to.empty() ? out : write_to;
     if (dirs.empty()) throw InputError("study merge: name the shards' folders");
     std::vector<Json> manifests;
     std::set<int> ks;
@@ -78,6 +96,23 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
             throw InputError(fmt::format("study merge: '{}' was run by other engine versions than '{}' ({} against {})",
                                          d.string(), dirs.front().string(), m["engines"].dump(),
                                          first["engines"].dump()));
+        // The file the shard's run wrote: its rows (each once), then byte for byte (a manifest of an older vssw
+        // records no "results": its rows are still checked for repeats, below).
+        if (m.contains("results")) {
+            ShardReader reader(d / kResultsCsv);
+            while (reader.case_id >= 0) reader.advance();
+            const long rows = m["results"].value("rows", -1L);
+            if (reader.rows != rows)
+                throw InputError(fmt::format("study merge: '{}' holds {} rows, its manifest.json records {}: a "
+                                             "damaged shard; run it again",
+                                             reader.path.string(), reader.rows, rows));
+            const std::string recorded = m["results"].value("fnv1a64", "");
+            const std::string now = file_fnv1a(d / kResultsCsv);
+            if (now != recorded)
+                throw InputError(fmt::format("study merge: '{}' is not the results.csv its manifest records (FNV-1a "
+                                             "{}, recorded {}): it was changed after the run; run the shard again",
+                                             (d / kResultsCsv).string(), now, recorded));
+        }
         if (!ks.insert(m["shard"]["k"].get<int>()).second)
             throw InputError(fmt::format("study merge: shard {} is given twice ('{}')", m["shard"]["k"].get<int>(),
                                          d.string()));
@@ -98,7 +133,7 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
                                      cases_of["total"].get<long>()));
 
     std::error_code ec;
-    fs::create_directories(out, ec);
+    fs::create_directories(dest, ec);
     if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", out.string(), ec.message()));
 
     // results.csv: the shards' case blocks in case order (each shard's file is in case order already).
@@ -115,7 +150,7 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
         std::find(readers.front()->header.begin(), readers.front()->header.end(), "status") -
         readers.front()->header.begin());
     {
-        AtomicFile csv(out / kResultsCsv);
+        AtomicFile csv(dest / kResultsCsv);
         const std::vector<std::string>& header = readers.front()->header;
         for (std::size_t i = 0; i < header.size(); ++i) csv.stream() << (i ? "," : "") << csv_field(header[i]);
         csv.stream() << '\n';
@@ -160,8 +195,9 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
     merged["tasks"] = {{"run", run}, {"resumed", resumed}};
     merged["cases"]["run"] = cases;
     merged["wall_time_s"] = longest;
+    merged["results"] = {{"rows", result.rows}, {"fnv1a64", file_fnv1a(dest / kResultsCsv)}};
     {
-        AtomicFile manifest(out / kManifestFile);
+        AtomicFile manifest(dest / kManifestFile);
         manifest.stream() << merged.dump(2) << '\n';
         manifest.commit();
     }

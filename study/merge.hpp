@@ -13,6 +13,10 @@ struct MergeResult {
     long rows = 0, failed_rows = 0;
 };
 
-MergeResult merge_studies(const std::vector<std::filesystem::path>& dirs, const std::filesystem::path& out);
+// Each shard's results.csv must be the file its manifest records (its rows and a hash of its bytes: a file cut short,
+// given a row twice or edited is refused, naming the shard and the counts); a row given twice is refused in any case.
+// The files are written into `write_to` (empty: `out`), e.g. the staging folder that replaces `out` whole.
+MergeResult merge_studies(const std::vector<std::filesystem::path>& dirs, const std::filesystem::path& out,
+                          const std::filesystem::path& write_to = {});
 
 }  // namespace vssw::study

@@ -1,6 +1,7 @@
 #include "study/results_files.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <ostream>
@@ -92,6 +93,7 @@ Json manifest_json(const Grid& grid, const StudyMeta& meta) {
     j["runs"] = runs;
     j["skipped_runs"] = grid.skipped_runs();
     j["tasks"] = {{"run", meta.tasks_run}, {"resumed", meta.tasks_resumed}};
+    if (meta.result_rows >= 0) j["results"] = {{"rows", meta.result_rows}, {"fnv1a64", meta.results_hash}};
     j["wall_time_s"] = meta.wall_time_s;
     j["threads"] = meta.threads;
     j["processes"] = meta.processes;
@@ -123,6 +125,21 @@ ResultsTable read_results_csv(const std::filesystem::path& path) {
         throw InputError(fmt::format("{}: {}", path.string(), e.what()));
     }
     return t;
+}
+
+std::string file_fnv1a(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+    std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64's offset basis and prime, as grid.cpp's identity
+    char buf[1 << 16];
+    while (in) {
+        in.read(buf, sizeof buf);
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            h ^= static_cast<unsigned char>(buf[i]);
+            h *= 1099511628211ull;
+        }
+    }
+    return fmt::format("{:016x}", h);
 }
 
 void write_results_json(std::ostream& out, const Json& manifest, const std::filesystem::path& csv) {

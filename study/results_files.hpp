@@ -5,8 +5,9 @@
 //                  warnings (the analytic model's own assumptions failing along the run, "; "-joined)
 //                  in case, run, metric order (the file's, never the threads'); value empty when there is none;
 //                  status "ok" or "failed: <reason>"
-//   manifest.json  the study as read, its identity, the shard, the engines' versions, the commit, the wall time:
-//                  what `vssw study merge` and `--resume` check, and what results.json starts with
+//   manifest.json  the study as read, its identity, the shard, the engines' versions, the commit, the wall time,
+//                  results.csv's rows and hash ("results"): what `vssw study merge` and `--resume` check, and what
+//                  results.json starts with
 //   results.json   the manifest's keys and the rows of results.csv as objects (numbers as numbers, empty as null)
 // Each is written to a temporary file and renamed into place (study/atomic_file.hpp).
 #include <filesystem>
@@ -37,6 +38,10 @@ struct StudyMeta {
     int threads = 1;    // worker threads per process
     int processes = 1;  // MPI processes (1 without MPI)
     long tasks_run = 0, tasks_resumed = 0;  // this run's tasks, and those a --resume found done
+    // results.csv as written: its rows and the FNV-1a 64 of its bytes (manifest "results"), so that `study merge`
+    // can tell a shard's file cut short, given a row twice or edited. rows < 0: not recorded.
+    long result_rows = -1;
+    std::string results_hash;
 };
 
 // The header line's fields: case_id, engine, the grid's columns, metric, value, unit, status.
@@ -54,6 +59,9 @@ struct ResultsTable {
     std::size_t column(const std::string& name) const;
 };
 ResultsTable read_results_csv(const std::filesystem::path& path);
+
+// FNV-1a 64 of a file's bytes, as 16 hex digits (InputError naming the file when it cannot be read).
+std::string file_fnv1a(const std::filesystem::path& path);
 
 // results.json from the manifest and results.csv (streamed row by row).
 void write_results_json(std::ostream& out, const nlohmann::ordered_json& manifest, const std::filesystem::path& csv);

@@ -21,6 +21,7 @@
 #include "multibody/worker_process.hpp"
 #include "study/atomic_file.hpp"
 #include "study/clock.hpp"
+#include "study/folder_swap.hpp"
 #include "study/measure.hpp"
 #include "study/mpi.hpp"
 
@@ -82,10 +83,15 @@ std::vector<ResultRow> with_thresholds(const Grid& grid, Shard shard, std::vecto
 
 }  // namespace
 
-void prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
+FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(fmt::format("--out '{}' is not a folder", dir.string()));
+    check_out_folder(dir, OutKind::study);
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", dir.string(), ec.message()));
+    // Before the journal is looked at: a run still going there is named, not read half-written.
+    FolderLock lock(dir);
     const bool journal = fs::exists(dir / kJournalFile, ec);
     const std::string this_study =
         fmt::format("{} {}/{}", grid.identity(), options.shard.k, options.shard.n);
@@ -100,9 +106,8 @@ void prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyRunOpti
                                      "--out",
                                      dir.string(), kJournalFile));
     }
-    fs::create_directories(dir, ec);
-    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", dir.string(), ec.message()));
     AtomicFile probe(dir / ".vssw-write-test");  // InputError naming the folder when nothing can be written there
+    return lock;
 }
 
 StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
@@ -215,6 +220,15 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     }
     result.meta.tasks_run = total;
     if (!writer) return result;
+    // results.csv and manifest.json go into the staging folder that replaces DIR whole (the journal stays in DIR
+    // until then: a run killed before the swap is resumed from it), or into DIR itself.
+    const fs::path results_dir = options.results_dir.empty() ? dir : options.results_dir;
+    {
+        std::error_code ec;
+        fs::create_directories(results_dir, ec);
+        if (ec)
+            throw InputError(fmt::format("cannot create the folder '{}': {}", results_dir.string(), ec.message()));
+    }
 
     // Sorted into results.csv; the journal goes once the results are in place.
     if (journal) {
@@ -230,9 +244,11 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         });
         for (const ResultRow& r : rows) result.failed_rows += r.status == "ok" ? 0 : 1;
         result.rows = static_cast<long>(rows.size());
-        AtomicFile csv(dir / kResultsCsv);
+        AtomicFile csv(results_dir / kResultsCsv);
         write_results_csv(csv.stream(), grid, rows);
         csv.commit();
+        result.meta.result_rows = result.rows;
+        result.meta.results_hash = file_fnv1a(results_dir / kResultsCsv);
     }
     if (finished_already) {
         // The results stand: their rows are counted as they are (a --strict resume judges them too).
@@ -240,17 +256,25 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
         const std::size_t status = t.column("status");
         result.rows = static_cast<long>(t.rows.size());
         for (const auto& row : t.rows) result.failed_rows += row[status] == "ok" ? 0 : 1;
+        if (results_dir != dir)
+            for (const char* name : {kResultsCsv, kManifestFile}) {
+                std::error_code ec;
+                fs::copy_file(dir / name, results_dir / name, fs::copy_options::overwrite_existing, ec);
+                if (ec)
+                    throw InputError(fmt::format("cannot copy '{}' into the new results: {}", (dir / name).string(),
+                                                 ec.message()));
+            }
     }
     result.meta.commit = options.commit;
     result.meta.date = utc_now();
     result.meta.shard = options.shard;
     result.meta.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (journal) {
-        AtomicFile manifest(dir / kManifestFile);
+        AtomicFile manifest(results_dir / kManifestFile);
         manifest.stream() << manifest_json(grid, result.meta).dump(2) << '\n';
         manifest.commit();
         std::error_code ec;
-        fs::remove(journal_path, ec);
+        if (results_dir == dir) fs::remove(journal_path, ec);
     }
     return result;
 }

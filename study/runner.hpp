@@ -1,12 +1,14 @@
 #pragma once
 // Running a study: the shard's tasks (case x run) that are not done yet, longest first, on threads in this process
 // (compare/task_pool.hpp) or handed out to MPI processes (study/mpi.hpp); every finished task's rows go to the journal
-// at once (study/journal.hpp). At the end the rows are sorted into results.csv and the manifest is written; the
-// journal is removed. Rows and their order depend on the study file and the shard only.
+// at once (study/journal.hpp). At the end the rows are sorted into results.csv and the manifest is written (into
+// StudyRunOptions::results_dir); the journal is removed, or left to go with the folder the results replace. Rows and
+// their order depend on the study file and the shard only.
 #include <filesystem>
 #include <functional>
 #include <string>
 
+#include "study/folder_lock.hpp"
 #include "study/grid.hpp"
 #include "study/journal.hpp"
 #include "study/results_files.hpp"
@@ -22,6 +24,10 @@ struct StudyRunOptions {
     const class MpiSession* mpi = nullptr;
     // Called after each task (serialised): tasks done (this run), tasks to do (this run), what.
     std::function<void(long done, long total, const std::string& what)> progress;
+    // Where results.csv and manifest.json are written: empty for DIR itself (the journal then removed at the end);
+    // the program gives the staging folder that then replaces DIR whole (study/folder_swap.hpp), and DIR's journal
+    // goes with the old folder.
+    std::filesystem::path results_dir;
 };
 
 struct StudyRunResult {
@@ -31,9 +37,11 @@ struct StudyRunResult {
 };
 
 // Checks DIR before anything runs (InputError): it must be a folder this process can write (it is created if
-// missing); without --resume it must hold no journal of an unfinished study (resume it or choose another folder);
-// with --resume it must hold this study's journal, or results of this study already complete.
-void prepare_study_dir(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
+// missing) and that check_out_folder accepts (study/folder_swap.hpp); no other vssw run may be working in it (the
+// lock returned, to be held while the study runs); without --resume it must hold no journal of an unfinished study
+// (resume it or choose another folder); with --resume it must hold this study's journal, or results of this study
+// already complete.
+FolderLock prepare_study_dir(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
 
 // Runs the study into DIR (results.csv, manifest.json). InputError on bad input (nothing runs); a failing task is rows
 // with their reasons.

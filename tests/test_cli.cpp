@@ -602,7 +602,7 @@ TEST(CliHardening, StressOutIntoAFileAndAnEmptyVerdictListAreSaidInWords) {
     const fs::path file = dir / "a-file";
     std::ofstream(file) << "kept\n";
     expect_bad_input({"stress", "--quick", "--engines", "analytic", "--out", file.string()},
-                     {"--out '", "cannot create the folder"});
+                     {"--out '", "is not a folder"});
     const fs::path bounds = dir / "b.toml";
     std::ofstream(bounds) << "[[stress]]\ncases = [\"xi-50\"]\nallowed = []\n";
     expect_bad_input({"check", "--bounds", bounds.string()}, {"'allowed' must be a non-empty list of verdicts"});

@@ -2,12 +2,15 @@
 // physics of what a run measures (the threshold against Eq. 12 and its size invariance, free vibrations and records
 // against the model run directly; the closed forms in test_shipped_studies.cpp), and the
 // machinery: threads, shards and merge give the same rows; an interrupted study resumes; a failing run is a row.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -363,6 +366,77 @@ TEST(StudyRun, MergeRefusesShardsThatAreNotOneStudy) {
         EXPECT_NE(std::string(e.what()).find("is the shard folder"), std::string::npos) << e.what();
     }
     EXPECT_EQ(vssw::testing::read_file(dir / "a1" / "results.csv"), a1_before);
+}
+
+// A damaged shard is refused, naming it and the counts: cut short, a row given twice, a value edited (each merged
+// with exit 0 once). Its manifest records the rows and a hash of results.csv.
+TEST(StudyRun, MergeRefusesDamagedShards) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kSmallStudy));
+    run_into(grid, dir / "a1", 1, {1, 2});
+    run_into(grid, dir / "a2", 1, {2, 2});
+    const std::string whole = vssw::testing::read_file(dir / "a2" / "results.csv");
+    const auto lines = [](const std::string& text) {
+        std::vector<std::string> out;
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);) out.push_back(line + "\n");
+        return out;
+    };
+    const std::vector<std::string> rows = lines(whole);
+    ASSERT_GT(rows.size(), 4u);
+    const long n = static_cast<long>(rows.size()) - 1;
+    const auto damaged = [&](const std::string& text) {
+        std::ofstream(dir / "a2" / "results.csv", std::ios::binary | std::ios::trunc) << text;
+        try {
+            study::merge_studies({dir / "a1", dir / "a2"}, dir / "merged");
+            return std::string();
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+    };
+    const std::string shard = (dir / "a2" / "results.csv").string();
+    std::string cut;
+    for (std::size_t i = 0; i + 1 < rows.size(); ++i) cut += rows[i];  // the last row lost
+    std::string e = damaged(cut);
+    EXPECT_NE(e.find(shard + "' holds " + std::to_string(n - 1) + " rows, its manifest.json records " +
+                     std::to_string(n)),
+              std::string::npos)
+        << e;
+    std::string twice = whole;
+    twice.insert(twice.find(rows[2]), rows[2]);
+    e = damaged(twice);
+    EXPECT_NE(e.find(shard + "' repeats a row at line 4"), std::string::npos) << e;
+    std::string edited = whole;
+    const std::size_t at = edited.find(",ok,");
+    ASSERT_NE(at, std::string::npos);
+    const std::size_t unit = edited.rfind(',', at - 1);      // ...,metric,value,unit,ok,...
+    const std::size_t digit = edited.rfind(',', unit - 1) + 1;  // the value's first digit
+    edited[digit] = edited[digit] == '1' ? '2' : '1';
+    e = damaged(edited);
+    EXPECT_NE(e.find(shard + "' is not the results.csv its manifest records"), std::string::npos) << e;
+    EXPECT_FALSE(std::filesystem::exists(dir / "merged" / "manifest.json"));
+    EXPECT_EQ(damaged(whole), "") << "the shard as written merges";
+}
+
+// One process at a time in a study folder: a second run or a --resume while the first holds the folder is refused,
+// naming the first (two --resume runs once interleaved their appends and corrupted the journal for good).
+TEST(StudyRun, ASecondRunInAFolderInUseIsRefusedNamingTheFirst) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kSmallStudy));
+    study::StudyRunOptions o;
+    const study::FolderLock held = study::prepare_study_dir(grid, dir / "s", o);
+    study::StudyRunOptions resume;
+    resume.resume = true;
+    for (const study::StudyRunOptions& second : {o, resume}) {
+        try {
+            (void)study::prepare_study_dir(grid, dir / "s", second);
+            ADD_FAILURE() << "a second run was let in";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("in use by another vssw study (process " + std::to_string(getpid())),
+                      std::string::npos)
+                << e.what();
+        }
+    }
 }
 
 // An interrupted study leaves its journal; --resume runs only the missing tasks (a task cut off mid-write again) and

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -215,3 +216,83 @@ TEST(StudyCli, StrictJudgesAFinishedStudyOnResumeToo) {
 }
 
 }  // namespace
+
+// Results folders (study/folder_swap.hpp) ---------------------------------------------------------------------------
+
+namespace {
+
+std::string record_text() {
+    std::string text;
+    for (int i = 0; i < 1000; ++i) text += std::to_string(i * 0.01) + "," + std::to_string(0.5 * std::sin(i * 0.05)) + "\n";
+    return text;
+}
+
+}  // namespace
+
+// A study whose record or study file is one of the files it writes in --out is refused before anything is written,
+// naming the file (both were replaced by the results, exit 0).
+TEST(StudyCli, AStudyDoesNotOverwriteItsOwnInputs) {
+    const TempDir dir;
+    const std::string record = record_text();
+    write_file(dir / "results.csv", record);
+    const std::string study = "name = \"c\"\nmetrics = [\"peak_rotation\"]\n[wall]\nheight = 4.0\nthickness = 0.4\n"
+                              "hinge = [0.6, 0.7]\n[excitation]\nkind = \"record\"\nfile = \"results.csv\"\n";
+    const std::string file = write_file(dir / "s.toml", study).string();
+    auto r = run_cli({"study", file, "--out", dir.path.string(), "--no-plots"});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("the record '" + (dir / "results.csv").string() + "' is the file"), std::string::npos) << r.err;
+    EXPECT_EQ(vssw::testing::read_file(dir / "results.csv"), record);
+    EXPECT_FALSE(std::filesystem::exists(dir / "manifest.json"));
+
+    // The study file named results.json, --out spelled another way.
+    const std::string json = R"({"name": "j", "metrics": ["period"], "wall": {"height": 4, "thickness": 0.4,
+        "hinge": 0.7}, "excitation": {"kind": "free", "theta0": 0.5}})";
+    std::filesystem::create_directories(dir / "j");
+    const std::string jfile = write_file(dir / "j" / "results.json", json).string();
+    r = run_cli({"study", jfile, "--out", (dir / "j" / ".." / "j" / ".").string(), "--no-plots"});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("the study file '" + jfile + "' is the file"), std::string::npos) << r.err;
+    EXPECT_EQ(vssw::testing::read_file(jfile), json);
+}
+
+// A study and a report in one folder would replace each other's results.json: each is refused, naming what the
+// folder holds.
+TEST(StudyCli, AStudyAndAReportRefuseEachOthersFolder) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string();
+    const std::string study = (dir / "study").string(), report = (dir / "report").string();
+    ASSERT_EQ(run_cli({"study", file, "--out", study, "--no-plots"}).code, 0);
+    ASSERT_EQ(run_cli({"report", "--engines", "analytic", "--cases", "fig6-vssw", "--no-plots", "--out", report}).code,
+              0);
+    const std::string study_json = vssw::testing::read_file(dir / "study" / "results.json");
+    auto r = run_cli({"report", "--engines", "analytic", "--cases", "fig6-vssw", "--no-plots", "--out", study});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--out '" + study + "' holds a study's results"), std::string::npos) << r.err;
+    EXPECT_EQ(vssw::testing::read_file(dir / "study" / "results.json"), study_json);
+    r = run_cli({"study", file, "--out", report, "--no-plots"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--out '" + report + "' holds a report"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "report" / "manifest.json"));
+}
+
+// The folder is replaced whole: a second study leaves none of the first's files, and the files that are not vssw's
+// (a user's notes, study_slurm.sh's shards/) are carried over.
+TEST(StudyCli, ASecondStudyReplacesTheFolderWholeAndKeepsTheUsersFiles) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string(), out = (dir / "out").string();
+    ASSERT_EQ(run_cli({"study", file, "--out", out, "--no-plots"}).code, 0);
+    write_file(dir / "out" / "notes.txt", "mine\n");
+    std::filesystem::create_directories(dir / "out" / "shards" / "1-of-2");
+    write_file(dir / "out" / "shards" / "1-of-2" / "log.txt", "a log\n");
+    write_file(dir / "out" / "plots" / "stale.svg", "an old plot\n");
+    const std::string other = write_file(dir / "o.toml", std::string(kStudy) + "\n[settings.analytic]\nrtol = 1e-9\n")
+                                  .string();
+    const auto r = run_cli({"study", other, "--out", out, "--no-plots"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(vssw::testing::read_file(dir / "out" / "notes.txt"), "mine\n");
+    EXPECT_EQ(vssw::testing::read_file(dir / "out" / "shards" / "1-of-2" / "log.txt"), "a log\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "out" / "plots")) << "the old run's plots/ went with the old folder";
+    for (const auto& e : std::filesystem::directory_iterator(dir.path))
+        EXPECT_EQ(e.path().filename().string().find(".vssw-tmp-"), std::string::npos) << e.path();
+    EXPECT_NE(r.out.find("  " + out + "/results.json"), std::string::npos) << "named where it is now: " << r.out;
+}
