@@ -2,7 +2,7 @@
 # One entry point for a fresh Debian machine (run as root):
 #   bash scripts/setup.sh run    install what is missing, build into build/, run the main job (vssw summary, then
 #                                the validation report of the default suite into report/)
-#   bash scripts/setup.sh test   install what is missing, build into build/, run the whole test suite; then the two
+#   bash scripts/setup.sh test   install what is missing, build into build/, run the whole test suite; then the three
 #                                parsers' fuzz harnesses built with libFuzzer, ASan and UBSan (clang) into
 #                                build-asan/ and fuzzed (what CI runs: .ci/run)
 #   bash scripts/setup.sh build  install and build only
@@ -76,12 +76,12 @@ sanitizer_build_and_test() {
   sanitizer_options
   ctest --test-dir "$here/build-asan" --output-on-failure -j "$jobs" -E "$asan_excluded"
 }
-# In CI: only the two fuzz harnesses (the parsers compiled into them with libFuzzer's coverage, ASan and UBSan; a
+# In CI: only the three fuzz harnesses (the parsers compiled into them with libFuzzer's coverage, ASan and UBSan; a
 # few files) and their tests. The whole suite under the sanitizers doubles the build and takes CI past its budget
 # (measured: 16 min for `test` with it, README "Sanitizers"); it is the `asan` mode.
 sanitizer_fuzz() {
   sanitizer_configure
-  cmake --build "$here/build-asan" -j "$jobs" --target fuzz_ground_motion fuzz_bounds_file
+  cmake --build "$here/build-asan" -j "$jobs" --target fuzz_ground_motion fuzz_bounds_file fuzz_study_file
   sanitizer_options
   ctest --test-dir "$here/build-asan" --output-on-failure -j "$jobs" -L fuzz
 }
