@@ -85,6 +85,20 @@ PanelSplit plot_split(const StudyData& d, const std::vector<std::string>& drawn,
     return split_panels(d, candidates, kMaxPanels);
 }
 
+// A record's part of a plot's name: its file's stem as a file stem, numbered (-1, -2, ...) when two of the study's
+// records reduce to the same one (a/r.AT2 and b/r.AT2, or r`x`.AT2 and r-x-.AT2): one plot must not replace another.
+std::string record_label(const ColumnLevels& c, std::uint32_t level) {
+    const auto stem_of = [&](std::uint32_t l) { return file_stem(std::filesystem::path(c.texts[l]).stem().string()); };
+    const std::string stem = stem_of(level);
+    for (std::uint32_t l = 0; l < c.texts.size(); ++l)
+        if (l != level && stem_of(l) == stem) {
+            // Numbered by the record's place in the study file (level ids count an empty level first).
+            const auto at = std::find(c.order.begin(), c.order.end(), level);
+            return fmt::format("{}-{}", stem, at - c.order.begin() + 1);
+        }
+    return stem;
+}
+
 // "rocking_NGA_no_1063_RRS228_pga0.3": the plot's split levels in its name (a record by its file's stem).
 std::string split_name(const StudyData& d, const std::string& prefix, const PanelSplit& split,
                        const std::vector<std::uint32_t>& combo) {
@@ -92,7 +106,7 @@ std::string split_name(const StudyData& d, const std::string& prefix, const Pane
     for (std::size_t i = 0; i < split.split.size(); ++i) {
         const ColumnLevels& c = d.columns[split.split[i]];
         const std::string& text = c.texts[combo[i]];
-        name += "_" + (c.key == "file" ? std::filesystem::path(text).stem().string() : c.key + text);
+        name += "_" + (c.key == "file" ? record_label(c, combo[i]) : c.key + text);
     }
     return file_stem(name);
 }

@@ -511,3 +511,32 @@ TEST(StudyOutputs, AFolderWithoutAManifestIsBadInputNamingIt) {
 }
 
 }  // namespace
+
+namespace {
+
+// Two records whose files reduce to one stem (a/r.AT2 and b/r.AT2) get a rocking plot each: one must not replace the
+// other's files in plots/.
+TEST(StudyOutputs, RecordsOfTheSameFileNameGetAPlotEach) {
+    TempDir dir("study_same_stem");
+    for (const char* sub : {"a", "b"}) {
+        fs::create_directories(dir.path / sub);
+        fs::copy_file(VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2", dir.path / sub / "r.AT2");
+    }
+    const st::Grid grid(spec_of(dir.path, "metrics = [\"peak_rotation\", \"overturned\"]\nengines = [\"analytic\"]\n"
+                                          "[wall]\nalpha = [0.05, 0.1]\nR = 1\nhinge = 0.6\n"
+                                          "[excitation]\nkind = \"record\"\nfile = [\"a/r.AT2\", \"b/r.AT2\"]\n"
+                                          "pga = 0.3\n"));
+    write_study(dir.path / "out", grid, [](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
+        return metric == "overturned" ? 0.0 : (c.file.front() == 'a' ? 0.1 : 0.2) / c.alpha;
+    });
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    (void)st::write_study_outputs(dir.path / "out", {});
+    std::vector<std::string> rocking;
+    for (const auto& e : fs::directory_iterator(dir.path / "out" / st::kPlotsDir))
+        if (e.path().extension() == ".svg" && e.path().stem().string().rfind("rocking_", 0) == 0)
+            rocking.push_back(e.path().stem().string());
+    std::sort(rocking.begin(), rocking.end());
+    EXPECT_EQ(rocking, (std::vector<std::string>{"rocking_r-1", "rocking_r-2"}));
+}
+
+}  // namespace
