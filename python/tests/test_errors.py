@@ -121,3 +121,18 @@ def test_bounds_error_from_check_carries_the_verdicts(cli, tmp_path):
     assert verdict["value"] == pytest.approx(
         cli.json(["wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"])["threshold_g"],
         rel=THRESHOLD_BISECTION_RTOL)
+
+
+def test_a_setting_that_crashed_the_interpreter_is_an_input_error():
+    # An ODE margin of 1e308 once aborted inside ODE and took the Python process with it (issue 27): every knob is
+    # now checked against its documented range before the library sees it.
+    with pytest.raises(ValueError, match="margin.*documented range.*1e\\+308"):
+        vssw.compare(engine="ode", **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5, set={"margin": 1e308})
+
+
+def test_an_engine_run_past_its_budget_is_a_simulation_error_and_python_goes_on():
+    # Each engine run is a child process with a CPU budget: Simbody at its tightest accuracy needs more than a second
+    # for the threshold search's runs, so a budget of one second stops it, naming the budget.
+    with pytest.raises(vssw.SimulationError, match="budget of 1 s of CPU time"):
+        vssw.compare(engine="simbody", **FIG6, run_budget=1, set={"accuracy": 1e-10})
+    assert vssw.wall(**FIG6)["threshold_g"] > 0  # the interpreter is still here and the module works

@@ -216,7 +216,8 @@ def compare(**options):
     """`vssw compare`: engine (a name, a list of names or "all"; required) against the analytic model, on the wall
     of height, thickness, hinge (and xi, density, g, model, kinematics, impact, roller): threshold, period (theta0),
     restitution; or, with record= or pulse=, the response from rest. Engine options: dt, iterations, set (a dict
-    {knob: value} or a list of "knob=value"). Returns the JSON (one engine: {engine, threshold {analytic, engine,
+    {knob: value} or a list of "knob=value"), run_budget (CPU seconds one engine run may take; each runs in a child
+    process, so an engine library that crashes or passes its budget raises SimulationError, never ends Python). Returns the JSON (one engine: {engine, threshold {analytic, engine,
     rel_error, ...}, period, restitution, ...}; several: {comparisons, engine_failures, wall_time_s}). A metric that
     could not be measured raises SimulationError with the JSON as its `result`."""
     return run("compare", **options)
@@ -255,7 +256,7 @@ def study(file, out=None, **options):
     """`vssw study`: `file` is a study file (.toml or .json, README "Studies") or a dict of its keys (a relative
     record `file` in it is read from the current directory). Writes the study folder into `out` (plots and prose
     included); without `out`, into a temporary folder removed afterwards, with no plots. Other options: threads,
-    shard ("K/N"), resume, force, strict, no_plots, gnuplot. Returns results.csv as a pandas DataFrame (its
+    shard ("K/N"), resume, force, strict, no_plots, gnuplot, run_budget. Returns results.csv as a pandas DataFrame (its
     `attrs["summary"]` the command's JSON summary) when pandas imports, else the rows of results.json as a list of
     dicts (the same columns; empty values None)."""
     _reserved(options, ["json"])
