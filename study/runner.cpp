@@ -88,8 +88,20 @@ FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyR
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(fmt::format("--out '{}' is not a folder", dir.string()));
     check_out_folder(dir, OutKind::study);
+    // A refused study leaves no folder behind: one made here is removed again (empty) when it is refused below.
+    const bool existed = fs::exists(dir, ec);
+    if (options.resume && !existed)
+        throw InputError(fmt::format("--resume: '{}' does not exist: there is no study there to resume", dir.string()));
     fs::create_directories(dir, ec);
     if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", dir.string(), ec.message()));
+    struct RemoveIfRefused {
+        const fs::path& dir;
+        bool keep = false;
+        ~RemoveIfRefused() {
+            std::error_code ignored;
+            if (!keep) fs::remove_all(dir, ignored);
+        }
+    } made{dir, existed};
     // Before the journal is looked at: a run still going there is named, not read half-written.
     FolderLock lock(dir);
     const bool journal = fs::exists(dir / kJournalFile, ec);
@@ -107,6 +119,7 @@ FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyR
                                      dir.string(), kJournalFile));
     }
     AtomicFile probe(dir / ".vssw-write-test");  // InputError naming the folder when nothing can be written there
+    made.keep = true;
     return lock;
 }
 

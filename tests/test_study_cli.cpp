@@ -296,3 +296,17 @@ TEST(StudyCli, ASecondStudyReplacesTheFolderWholeAndKeepsTheUsersFiles) {
         EXPECT_EQ(e.path().filename().string().find(".vssw-tmp-"), std::string::npos) << e.path();
     EXPECT_NE(r.out.find("  " + out + "/results.json"), std::string::npos) << "named where it is now: " << r.out;
 }
+
+namespace {
+
+// A refused study leaves no folder behind: --resume of a folder that is not there used to create it (empty) first.
+TEST(StudyCli, AResumeOfAFolderThatIsNotThereIsRefusedAndMakesNone) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string(), out = (dir / "out").string();
+    const auto r = run_cli({"study", file, "--out", out, "--resume", "--no-plots"});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+}  // namespace
