@@ -117,6 +117,29 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             identity_text += "\n" + read_bytes(default_table1_path());
         }
 
+    // The grid's size first, before anything is read or built. Case ids are ints: a larger grid is a typo, not a study
+    // (vssw study's --force bound is far below). Each product is checked before it is formed: unchecked, six lists
+    // whose product is 2^64 + 418 wrapped to a grid of 418 cases that ran under --force.
+    constexpr std::size_t kMaxCases = static_cast<std::size_t>(std::numeric_limits<int>::max());
+    const auto too_many = [&] {
+        return InputError(fmt::format("{} {}: a grid of more than {} cases (case ids are ints), even with --force",
+                                      kWhat, spec_.path, kMaxCases));
+    };
+    product_size_ = 0;
+    for (const PartSpec& part : spec_.parts) {
+        PartGrid g;
+        for (const Axis& a : part.wall) g.axes.push_back(&a);
+        for (const Axis& a : part.excitation) g.axes.push_back(&a);
+        for (const Axis* a : g.axes) {
+            if (a->levels.size() > kMaxCases / g.size) throw too_many();
+            g.size *= a->levels.size();
+        }
+        if (g.size > kMaxCases - product_size_) throw too_many();
+        g.first = product_size_ + 1;
+        product_size_ += g.size;
+        parts_.push_back(std::move(g));
+    }
+
     // Records: read once, up front, so that a missing or malformed file is refused before anything runs.
     for (const PartSpec& part : spec_.parts) {
         const Axis* files = part.excitation_axis("file");
@@ -209,20 +232,6 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
 
     // Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
     // repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
-    product_size_ = 0;
-    for (const PartSpec& part : spec_.parts) {
-        PartGrid g;
-        for (const Axis& a : part.wall) g.axes.push_back(&a);
-        for (const Axis& a : part.excitation) g.axes.push_back(&a);
-        for (const Axis* a : g.axes) g.size *= a->levels.size();
-        // Case ids are ints; a grid this large is a typo, not a study (vssw study's --force bound is far below).
-        if (g.size > static_cast<std::size_t>(std::numeric_limits<int>::max()) - product_size_)
-            throw InputError(fmt::format("{} {}: a grid of more than {} cases", kWhat, spec_.path,
-                                         std::numeric_limits<int>::max()));
-        g.first = product_size_ + 1;
-        product_size_ += g.size;
-        parts_.push_back(std::move(g));
-    }
     for (std::size_t pi = 0; pi < parts_.size(); ++pi) {
         const PartSpec& part = spec_.parts[pi];
         const auto axis_index = [&](const char* key) -> std::optional<std::size_t> {
