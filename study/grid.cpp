@@ -385,7 +385,25 @@ CaseSpec Grid::make_case(int id) const {
     c.tolerance = num("tolerance", 0.0);
     c.max_pga_g = num("max_pga", 0.0);
     c.step = num("step", 0.0);
+    if (part.kind == ExcitationKind::pulse) {
+        // Built here, as every case is built before anything runs: a pulse the library refuses (a harmonic of more
+        // than 1e6 cycles, as `vssw history` refuses it) is bad input, not a study whose every row fails.
+        try {
+            (void)pulse_motion(c);
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path,
+                                         part.where.empty() ? "" : part.where + ", ", id, described, e.what()));
+        }
+    }
     return c;
+}
+
+GroundMotion pulse_motion(const CaseSpec& c) {
+    const double a = c.amplitude_g * kStandardGravity;
+    if (c.shape == "sine") return sine_pulse(a, c.pulse_period);
+    if (c.shape == "cosine") return cosine_pulse(a, c.pulse_period);
+    if (c.shape == "ricker") return ricker_wavelet(a, c.pulse_period);
+    return harmonic(a, c.pulse_period, c.duration);
 }
 
 bool Grid::run_applies(const RunSpec& run, const CaseSpec& c) const {

@@ -214,4 +214,22 @@ TEST(StudyCli, StrictJudgesAFinishedStudyOnResumeToo) {
     EXPECT_NE(again.out.find("1 failed"), std::string::npos) << again.out;
 }
 
+// A harmonic of 2e7 cycles is refused by `vssw history`; in a study it made the folder and exited 0 with every row
+// "failed: harmonic cycles ...". Refused as bad input before any folder, naming the case.
+TEST(StudyCli, AHarmonicOfTooManyCyclesIsRefusedBeforeAnyFolder) {
+    const TempDir dir;
+    const std::string out = (dir / "out").string();
+    const std::string file = write_file(dir / "h.toml", "metrics = [\"peak_rotation\"]\n[wall]\nheight = 4\n"
+                                                        "thickness = 0.4\nhinge = 0.7\n[excitation]\nkind = \"pulse\"\n"
+                                                        "shape = \"harmonic\"\namplitude = 0.3\npulse_period = 0.5\n"
+                                                        "duration = [10.0, 1e7]\n")
+                                 .string();
+    const auto r = run_cli({"study", file, "--out", out, "--no-plots"});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("case 2 ("), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("harmonic cycles (duration / period T) must be at most 1e+06"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("got 20000000"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 }  // namespace
