@@ -581,6 +581,19 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
     for (const std::string& metric : s.metrics)
         if (metric_info(metric).analytic_only && !analytic)
             r.fail("metrics", fmt::format("'{}' is the analytic model's: add \"analytic\" to engines", metric));
+    // An impact ratio of 0 stops the wall at its first return to upright. `vssw free` lists that impact from the
+    // model's events, but a study measures impacts from the samples, as crossings of upright (the same code for every
+    // engine), and finds none: every row failed "no impact within the run". Refused, saying why.
+    const Axis& impact = s.assumptions[1];
+    const bool stops = analytic && std::find(impact.levels.begin(), impact.levels.end(), Level{0.0}) != impact.levels.end();
+    for (const PartSpec& part : s.parts)
+        for (const std::string& metric : part.metrics)
+            if (stops && metric_info(metric).source == MetricSource::free)
+                r.fail("assumptions.impact",
+                       fmt::format("0 stops the wall at its first return to upright, where a study finds no impact "
+                                   "to measure '{}' from (impacts are crossings of upright); use vssw free --impact 0 "
+                                   "for that run, or a ratio above 0",
+                                   metric));
     return s;
 }
 

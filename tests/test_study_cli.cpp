@@ -232,4 +232,27 @@ TEST(StudyCli, AHarmonicOfTooManyCyclesIsRefusedBeforeAnyFolder) {
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// impact = 0 gave rows "failed: no impact within the run" while `vssw free --impact 0` lists one impact: a study
+// measures impacts as crossings of upright, and a wall that stops there makes none. Refused saying so. impact = 1 gave
+// "a theta1_dot ratio of 1, outside (0, 1]": the ratio measured is just above 1, and now says so.
+TEST(StudyCli, ImpactRatiosAtTheEndsOfTheirRangeAreExplained) {
+    const TempDir dir;
+    const std::string study = "metrics = [\"period\", \"restitution\"]\n[wall]\nheight = 4\nthickness = 0.4\n"
+                              "hinge = 0.7\n[excitation]\nkind = \"free\"\ntheta0 = 0.5\n[assumptions]\nimpact = ";
+    const std::string zero = write_file(dir / "zero.toml", study + "[0.5, 0.0]\n").string();
+    const auto refused = run_cli({"study", zero, "--out", (dir / "zero").string(), "--no-plots"});
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_NE(refused.err.find("assumptions.impact: 0 stops the wall at its first return to upright"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "zero"));
+
+    const std::string one = write_file(dir / "one.toml", study + "1.0\n").string();
+    const auto r = run_cli({"study", one, "--out", (dir / "one").string(), "--no-plots"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string csv = vssw::testing::read_file(dir / "one" / "results.csv");
+    EXPECT_NE(csv.find(", above 1, outside (0, 1]: the wall gained energy"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("ratio of 1, outside"), std::string::npos) << csv;
+}
+
 }  // namespace
