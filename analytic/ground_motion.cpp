@@ -47,6 +47,19 @@ std::string trim(const std::string& s) {
     return s.substr(first, s.find_last_not_of(blanks) - first + 1);
 }
 
+// What a message may quote of a file's text: at most this many characters. A message names the file and the line; a
+// short excerpt helps find a typo in a record, while a whole line of any file passed as a record (/etc/passwd, a
+// process's environment) does not belong in an error message.
+constexpr std::size_t kMaxExcerpt = 40;
+
+// `text` for a message: printable ASCII kept, anything else shown as '?', cut to kMaxExcerpt characters ("...").
+std::string excerpt(const std::string& text) {
+    std::string out;
+    for (const char c : text.substr(0, kMaxExcerpt))
+        out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    return text.size() > kMaxExcerpt ? out + "..." : out;
+}
+
 // Splits on any of `separators`, dropping empty fields (so runs of blanks count as one separator).
 std::vector<std::string> split(const std::string& s, const char* separators) {
     std::vector<std::string> out;
@@ -179,10 +192,10 @@ At2Counts parse_at2_counts(const std::string& line, const std::string& path) {
     const std::string u = upper(line);
     const auto npts_at = u.find("NPTS");
     if (npts_at == std::string::npos)
-        throw InputError(fmt::format("{}:4: header line 4 has no NPTS: '{}'", path, trim(line)));
+        throw InputError(fmt::format("{}:4: header line 4 has no NPTS: '{}'", path, excerpt(trim(line))));
     const auto dt_at = u.find("DT");
     if (dt_at == std::string::npos)
-        throw InputError(fmt::format("{}:4: header line 4 has no DT: '{}'", path, trim(line)));
+        throw InputError(fmt::format("{}:4: header line 4 has no DT: '{}'", path, excerpt(trim(line))));
 
     std::string npts_text = value_after_label(u, "NPTS");
     std::string dt_text = value_after_label(u, "DT");
@@ -191,22 +204,24 @@ At2Counts parse_at2_counts(const std::string& line, const std::string& path) {
         const auto leading = split(u.substr(0, std::min(npts_at, dt_at)), " \t,");
         if (leading.size() != 2)
             throw InputError(fmt::format("{}:4: expected NPTS and DT values in header line 4, got '{}'", path,
-                                         trim(line)));
+                                         excerpt(trim(line))));
         if (npts_text.empty()) npts_text = npts_at < dt_at ? leading[0] : leading[1];
         if (dt_text.empty()) dt_text = npts_at < dt_at ? leading[1] : leading[0];
     }
 
     At2Counts c{};
     if (!parse_number(npts_text, c.npts))
-        throw InputError(fmt::format("{}:4: NPTS is not a number: '{}'", path, npts_text));
+        throw InputError(fmt::format("{}:4: NPTS is not a number: '{}'", path, excerpt(npts_text)));
     if (!parse_number(dt_text, c.dt))
-        throw InputError(fmt::format("{}:4: DT is not a number: '{}'", path, dt_text));
+        throw InputError(fmt::format("{}:4: DT is not a number: '{}'", path, excerpt(dt_text)));
     if (!(std::isfinite(c.npts) && c.npts > 0.0 && c.npts == std::floor(c.npts)))
-        throw InputError(fmt::format("{}:4: NPTS must be a positive whole number, got {}", path, npts_text));
+        throw InputError(fmt::format("{}:4: NPTS must be a positive whole number, got {}", path, excerpt(npts_text)));
     if (c.npts < 2.0)
-        throw InputError(fmt::format("{}:4: NPTS must be at least 2 to define a record, got {}", path, npts_text));
+        throw InputError(fmt::format("{}:4: NPTS must be at least 2 to define a record, got {}", path, excerpt(npts_text)));
     if (!(std::isfinite(c.dt) && c.dt > 0.0))
-        throw InputError(fmt::format("{}:4: DT must be a positive finite number, got {}", path, dt_text));
+        throw InputError(fmt::format("{}:4: DT must be a positive finite number, got {}", path, excerpt(dt_text)));
+    if (c.dt < kMinSampleStep)
+        throw InputError(fmt::format("{}:4: DT must be at least {:g} s, got {}", path, kMinSampleStep, excerpt(dt_text)));
     return c;
 }
 
@@ -221,7 +236,7 @@ GroundMotion parse_at2(const std::vector<std::string>& lines, const std::string&
     // nonsense, so refuse it even when the units are overridden.
     const std::string line3 = upper(lines[2]);
     if (line3.find("VELOCITY") != std::string::npos || line3.find("DISPLACEMENT") != std::string::npos)
-        throw InputError(fmt::format("{}:3: not an acceleration history: '{}'", path, trim(lines[2])));
+        throw InputError(fmt::format("{}:3: not an acceleration history: '{}'", path, excerpt(trim(lines[2]))));
 
     AccelUnits units = AccelUnits::g;
     if (units_override != nullptr) {
@@ -230,7 +245,7 @@ GroundMotion parse_at2(const std::vector<std::string>& lines, const std::string&
         throw InputError(fmt::format(
             "{}:3: cannot read the acceleration units from line 3 '{}' (expected e.g. 'UNITS OF G', 'CM/S/S', "
             "'GAL' or 'M/S/S'); give the units explicitly",
-            path, trim(lines[2])));
+            path, excerpt(trim(lines[2]))));
     }
     const double factor = to_m_per_s2(units);
     const At2Counts counts = parse_at2_counts(lines[3], path);
@@ -242,9 +257,9 @@ GroundMotion parse_at2(const std::vector<std::string>& lines, const std::string&
         for (const std::string& token : split(lines[i], " \t\r")) {
             double v = 0.0;
             if (!parse_number(token, v))
-                throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, token));
+                throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, excerpt(token)));
             if (!std::isfinite(v) || !std::isfinite(v * factor))
-                throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, token));
+                throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, excerpt(token)));
             values.push_back(v * factor);
         }
     }
@@ -275,20 +290,20 @@ GroundMotion parse_two_column(const std::vector<std::string>& lines, const std::
         if (fields.empty()) continue;  // blank or comment-only line
         if (fields.size() != 2)
             throw InputError(fmt::format("{}:{}: expected 2 numbers (time, acceleration), got {} field(s): '{}'",
-                                         path, line_no, fields.size(), trim(data)));
+                                         path, line_no, fields.size(), excerpt(trim(data))));
         double t = 0.0, a = 0.0;
         for (int k = 0; k < 2; ++k) {
             double& v = k == 0 ? t : a;
             if (!parse_number(fields[k], v))
-                throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, fields[k]));
+                throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, excerpt(fields[k])));
             if (!std::isfinite(v) || (k == 1 && !std::isfinite(v * factor)))
-                throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, fields[k]));
+                throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, excerpt(fields[k])));
         }
         if (times.empty() && t < 0.0)
-            throw InputError(fmt::format("{}:{}: the first time must be >= 0, got {}", path, line_no, fields[0]));
+            throw InputError(fmt::format("{}:{}: the first time must be >= 0, got {}", path, line_no, excerpt(fields[0])));
         if (!times.empty() && !(t > times.back()))
             throw InputError(fmt::format("{}:{}: time {} is not after the previous time {} (line {})", path,
-                                         line_no, fields[0], times.back(), previous_line));
+                                         line_no, excerpt(fields[0]), times.back(), previous_line));
         times.push_back(t);
         values.push_back(a * factor);
         previous_line = line_no;
@@ -309,7 +324,7 @@ std::vector<std::string> fields_of(const std::string& line, bool by_commas) {
     const std::string data = line.substr(0, line.find('#'));
     if (!by_commas) return split(data, " \t\r");
     std::vector<std::string> fields;
-    if (trim(data).empty()) return fields;
+    if (excerpt(trim(data)).empty()) return fields;
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = data.find(',', start);
@@ -330,9 +345,9 @@ bool is_header(const std::vector<std::string>& fields) {
 // A finite acceleration in m/s^2 from field `text` of line `line_no`, or InputError.
 double acceleration_of(const std::string& text, double factor, const std::string& path, std::size_t line_no) {
     double a = 0.0;
-    if (!parse_number(text, a)) throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, text));
+    if (!parse_number(text, a)) throw InputError(fmt::format("{}:{}: non-numeric value '{}'", path, line_no, excerpt(text)));
     if (!std::isfinite(a) || !std::isfinite(a * factor))
-        throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, text));
+        throw InputError(fmt::format("{}:{}: value '{}' is not finite", path, line_no, excerpt(text)));
     return a * factor;
 }
 
@@ -375,13 +390,13 @@ GroundMotion parse_single_column(const std::vector<std::string>& lines, const st
                 if (field.size() > 1 && field[0] == '0' && std::isdigit(static_cast<unsigned char>(field[1])))
                     throw InputError(fmt::format("{}:{}: '{}' after a comma looks like a decimal comma; write the "
                                                  "decimals with a point",
-                                                 path, i + 1, field));
+                                                 path, i + 1, excerpt(field)));
                 // "0,5" and "-1,25" likewise: two whole numbers either side of a comma are one decimal, not two
                 // accelerations (whole numbers of a unit are separated by blanks instead).
                 if (whole_number(fields[j - 1], true) && whole_number(field, false))
                     throw InputError(fmt::format("{}:{}: '{},{}' looks like a decimal comma; write the decimals with "
                                                  "a point (whole numbers separated by blanks, not commas)",
-                                                 path, i + 1, fields[j - 1], field));
+                                                 path, i + 1, excerpt(fields[j - 1]), excerpt(field)));
             }
             values.push_back(acceleration_of(field, factor, path, i + 1));
         }
@@ -406,11 +421,11 @@ std::size_t column_index(const std::vector<std::string>& header, const std::stri
     const auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end())
         throw InputError(fmt::format("{}:{}: {} '{}' is not a column of the header (columns: {})", path, line_no, flag,
-                                     name, fmt::join(header, ", ")));
+                                     name, excerpt(fmt::format("{}", fmt::join(header, ", ")))));
     if (std::find(it + 1, header.end(), name) != header.end())
         throw InputError(fmt::format("{}:{}: {} '{}' names more than one column of the header (columns: {}): which is "
                                      "meant cannot be told",
-                                     path, line_no, flag, name, fmt::join(header, ", ")));
+                                     path, line_no, flag, name, excerpt(fmt::format("{}", fmt::join(header, ", ")))));
     return static_cast<std::size_t>(it - header.begin());
 }
 
@@ -420,6 +435,22 @@ GroundMotion parse_table(const std::vector<std::string>& lines, std::size_t head
     const bool by_commas = has_comma(lines[header_at]);
     const std::vector<std::string> header = fields_of(lines[header_at], by_commas);
     const std::size_t header_line = header_at + 1;
+    // A row of names is a record's header only when a row of numbers follows it. Otherwise the file is no record, and
+    // its text stays out of the message (a file such as /etc/passwd had its first line quoted as "columns").
+    const bool numbers_follow = [&] {
+        for (std::size_t i = header_at + 1; i < lines.size(); ++i) {
+            const std::vector<std::string> fields = fields_of(lines[i], by_commas);
+            if (fields.empty()) continue;
+            double x = 0.0;
+            return std::all_of(fields.begin(), fields.end(), [&](const std::string& f) { return parse_number(f, x); });
+        }
+        return false;
+    }();
+    if (!numbers_follow)
+        throw InputError(fmt::format("{}:{}: not a ground-motion record: a line of text with no line of numbers after "
+                                     "it (a record is a PEER AT2 file, lines of time and acceleration, accelerations "
+                                     "with --record-dt, or a table whose header row names its columns)",
+                                     path, header_line));
     if (format.dt && format.time_column)
         throw InputError(fmt::format("{}: give either the record's step or its time column '{}', not both", path,
                                      *format.time_column));
@@ -431,16 +462,16 @@ GroundMotion parse_table(const std::vector<std::string>& lines, std::size_t head
                     : 1;
     else if (header.size() != 1)
         throw InputError(fmt::format("{}:{}: name the acceleration column (columns: {})", path, header_line,
-                                     fmt::join(header, ", ")));
+                                     excerpt(fmt::format("{}", fmt::join(header, ", ")))));
     std::optional<std::size_t> time;
     if (format.time_column) time = column_index(header, *format.time_column, "time column", path, header_line);
     else if (!format.dt && header.size() == 2) time = 1 - accel;
     else if (!format.dt)
         throw InputError(fmt::format("{}:{}: name the time column or give the record's step (columns: {})", path,
-                                     header_line, fmt::join(header, ", ")));
+                                     header_line, excerpt(fmt::format("{}", fmt::join(header, ", ")))));
     if (time && *time == accel)
         throw InputError(fmt::format("{}: the time column and the acceleration column are both '{}'", path,
-                                     header[accel]));
+                                     excerpt(header[accel])));
     std::vector<double> times, values;
     for (std::size_t i = header_at + 1; i < lines.size(); ++i) {
         const std::vector<std::string> fields = fields_of(lines[i], by_commas);
@@ -452,12 +483,12 @@ GroundMotion parse_table(const std::vector<std::string>& lines, std::size_t head
         if (!time) continue;
         double t = 0.0;
         if (!parse_number(fields[*time], t) || !std::isfinite(t))
-            throw InputError(fmt::format("{}:{}: time '{}' is not a finite number", path, i + 1, fields[*time]));
+            throw InputError(fmt::format("{}:{}: time '{}' is not a finite number", path, i + 1, excerpt(fields[*time])));
         if (times.empty() && t < 0.0)
-            throw InputError(fmt::format("{}:{}: the first time must be >= 0, got {}", path, i + 1, fields[*time]));
+            throw InputError(fmt::format("{}:{}: the first time must be >= 0, got {}", path, i + 1, excerpt(fields[*time])));
         if (!times.empty() && !(t > times.back()))
             throw InputError(fmt::format("{}:{}: time {} is not after the previous time {}", path, i + 1,
-                                         fields[*time], times.back()));
+                                         excerpt(fields[*time]), times.back()));
         times.push_back(t);
     }
     if (!time) times = times_at_step(values.size(), *format.dt);
@@ -468,8 +499,8 @@ GroundMotion parse_table(const std::vector<std::string>& lines, std::size_t head
 GroundMotion parse_lines(const std::vector<std::string>& lines, const std::string& path, const AccelUnits* units,
                          const RecordFormat& format) {
     if (format.dt)
-        require(std::isfinite(*format.dt) && *format.dt > 0.0, fmt::format("{}: record step", path),
-                "a positive finite time in s", *format.dt);
+        require(std::isfinite(*format.dt) && *format.dt >= kMinSampleStep, fmt::format("{}: record step", path),
+                fmt::format("a finite time of at least {:g} s", kMinSampleStep), *format.dt);
     if (lines.size() >= 4 && upper(lines[3]).find("NPTS") != std::string::npos) {
         if (!format.is_default())
             throw InputError(fmt::format("{} is a PEER AT2 record, whose header gives its step: the record's step "
@@ -538,6 +569,9 @@ GroundMotion GroundMotion::sampled(std::vector<double> times, std::vector<double
         if (i > 0 && !(times[i] > times[i - 1]))
             throw InputError(fmt::format("record '{}': times must increase strictly, but sample {} is at {} after {}",
                                          name, i, times[i], times[i - 1]));
+        if (i > 0 && times[i] - times[i - 1] < kMinSampleStep)
+            throw InputError(fmt::format("record '{}': samples {} and {} are {:g} s apart, less than {:g} s", name,
+                                         i - 1, i, times[i] - times[i - 1], kMinSampleStep));
     }
     if (times.front() < 0.0)
         throw InputError(fmt::format("record '{}': times must start at 0 or later, got {}", name, times.front()));

@@ -95,6 +95,10 @@ private:
 // largest real accelerograms are a few MB (a PEER AT2 file of 60,000 samples is ~0.6 MB; 10 minutes at 200 Hz in two
 // columns is ~3 MB); 64 MiB is ten times more than any, and small enough to hold in memory at once.
 constexpr long long kMaxRecordBytes = 64LL * 1024 * 1024;
+// The smallest time between two samples of a record [s]: a nanosecond is a million times faster than any
+// accelerometer's sampling, and far above the steps whose slopes overflow (DT 1e-310 ran into "theta1'' must be a
+// finite number, got -nan", naming neither the file nor the step).
+constexpr double kMinSampleStep = 1e-9;
 // PEER AT2, both header styles: line 4 is either "1991    0.0100    NPTS, DT" (older) or
 // "NPTS=  1991, DT=   .0100 SEC" (NGA-West2). Units are read from line 3 ("... IN UNITS OF G"); `units_override`
 // replaces them. Throws InputError (naming the file and the line) on a missing file, an empty or truncated file, a

@@ -31,7 +31,6 @@ constexpr double kRestScanFraction = 1e-3;
 constexpr double kWeightlessTimeTol = 1e-12;
 // Runs longer than this, or with more output samples, are refused as bad input rather than left to run for hours.
 constexpr double kMaxEndTime = 1e7;      // [s]
-constexpr double kMaxOutputSamples = 1e8;
 // Samples reserved at the start of a run (2^21, 144 MiB of address space): a longer run's vector grows as it fills.
 constexpr double kReservedSamples = 2097152.0;
 constexpr int kMaxNewtonIterations = 8;

@@ -132,6 +132,10 @@ struct LargestRotation {
 };
 LargestRotation largest_rotation(const SimulationResult& result);
 
+// Output samples a run may keep at most (SimulationOptions::output_dt): more is refused as bad input rather than left to
+// run for hours.
+constexpr double kMaxOutputSamples = 1e8;
+
 // A run needing more integration steps than this is reported as a failure, not left to spin (every phase counts).
 constexpr long kMaxIntegrationSteps = 50'000'000;
 

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic/error.hpp"
+#include "apps/argument_words.hpp"
 #include "apps/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/early_output.hpp"
@@ -88,6 +89,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
     app.add_flag_callback(
         "--version", [] { throw EarlyOutput(version_text()); },
         "print the version, the commit and each backend's library version, then exit");
+    check_argument_words(app, argc, argv);  // before CLI11 reads "-height" as the help
     try {
         app.parse(argc, argv);
     } catch (const EarlyOutput& e) {
@@ -102,7 +104,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         return fail(err, "error", parse_error_message(e, app, commands, command) + " (see '" + help + "')", kExitBadInput);
     }
     if (const Command* command = chosen_command(commands)) {
-        require_finite_numbers(*command->app);  // also an option the command ignores: NaN is never a valid input
+        require_option_values(*command->app);  // also an option the command ignores: NaN is never a valid input
         if (command->run_with_err) command->run_with_err(out, err);
         else command->run(out);
         return kExitOk;

@@ -49,12 +49,8 @@ std::vector<std::string> bench_engines(const std::vector<std::string>& asked) {
 
 std::vector<std::string> bench_problems(const std::vector<std::string>& asked, bool quick) {
     if (asked.empty()) return compare::default_bench_problems(quick);
-    std::vector<std::string> problems;
-    for (const std::string& name : asked) {
-        compare::check_bench_problem(name);
-        if (std::find(problems.begin(), problems.end(), name) == problems.end()) problems.push_back(name);
-    }
-    return problems;
+    for (const std::string& name : asked) compare::check_bench_problem(name);
+    return asked;  // each named once (list_items)
 }
 
 std::string load_average() {
@@ -71,16 +67,14 @@ Command add_bench_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "bench", "Work-precision: CPU time against error per backend and setting; files and plots into a folder");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
-    cmd->add_option("--engines", o->engines,
+    add_list_option(*cmd, "--engines", o->engines,
                     fmt::format("backends, comma-separated ('all': {}; default: every one in this build: {})",
                                 fmt::join(multibody::default_compared_engines(), ", "),
-                                fmt::join(multibody::available_engines(), ", ")))
-        ->delimiter(',');
-    cmd->add_option("--problems", o->problems,
+                                fmt::join(multibody::available_engines(), ", ")));
+    add_list_option(*cmd, "--problems", o->problems,
                     fmt::format("reference problems, comma-separated (default: all: {}; --quick: {})",
                                 fmt::join(compare::bench_problem_names(), ", "),
-                                fmt::join(compare::default_bench_problems(true), ", ")))
-        ->delimiter(',');
+                                fmt::join(compare::default_bench_problems(true), ", ")));
     cmd->add_option("--repeats", o->repeats,
                     fmt::format("runs per point, the CPU time their median, 1 to {} (default {})", kMaxRepeats,
                                 kDefaultRepeats));

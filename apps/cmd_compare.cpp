@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,7 @@ multibody::EngineSettings settings_of(const multibody::Engine& engine, const Com
     if (o.iterations) {
         s.iterations = parse_bounded_int("--iterations", *o.iterations, 1, kMaxIterations);
     }
+    std::set<std::string> given;
     for (const std::string& kv : o.knobs) {
         const auto eq = kv.find('=');
         if (eq == std::string::npos || eq == 0)
@@ -70,6 +72,9 @@ multibody::EngineSettings settings_of(const multibody::Engine& engine, const Com
         const double v = std::strtod(value.c_str(), &end);
         if (value.empty() || *end != '\0' || !std::isfinite(v))
             throw InputError(fmt::format("--set {}: '{}' is not a finite number", kv.substr(0, eq), value));
+        // Given twice, the last value won without a word (other options repeated are refused by CLI11).
+        if (!given.insert(kv.substr(0, eq)).second)
+            throw InputError(fmt::format("--set names '{}' more than once: give each setting once", kv.substr(0, eq)));
         s.knobs[kv.substr(0, eq)] = v;
     }
     engine.check_settings(s);  // an unknown knob is refused before any engine runs, naming the engine
@@ -163,11 +168,10 @@ Command add_compare_command(CLI::App& root) {
     auto o = std::make_shared<CompareOptions>();
     CLI::App* cmd = root.add_subcommand(
         "compare", "Engines against the analytic model (exact kinematics): threshold, period, restitution");
-    cmd->add_option("--engine", o->engines,
+    add_list_option(*cmd, "--engine", o->engines,
                     fmt::format("backends to compare, comma-separated, or all ({}) (available: {}) (required)",
                                 fmt::join(multibody::default_compared_engines(), ", "),
                                 fmt::join(multibody::available_engines(), ", ")))
-        ->delimiter(',')
         ->required();
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);

@@ -50,7 +50,7 @@ struct ReportCommandOptions {
 };
 
 // Without --engines: multibody::default_compared_engines() (all but the analytic model, which always runs as the
-// reference, and simbody-rigid). A name given twice runs once, "analytic" is the reference anyway.
+// reference, and simbody-rigid). "analytic" is the reference anyway; a name given twice is refused (list_items).
 std::vector<std::string> checked_engines(const std::vector<std::string>& asked) {
     if (asked.empty()) return multibody::default_compared_engines();
     const std::vector<std::string> available = multibody::available_engines();
@@ -59,8 +59,7 @@ std::vector<std::string> checked_engines(const std::vector<std::string>& asked) 
         if (std::find(available.begin(), available.end(), name) == available.end())
             throw InputError(fmt::format("--engines: no engine '{}' in this build (available: {})", name,
                                          fmt::join(available, ", ")));
-        if (name != "analytic" && std::find(engines.begin(), engines.end(), name) == engines.end())
-            engines.push_back(name);
+        if (name != "analytic") engines.push_back(name);
     }
     return engines;
 }
@@ -101,12 +100,10 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--suite", o->suite,
                     "default (about 30 s on 2 cores with Bullet, ODE, Simbody and Siconos), full (233 cases), or a "
                     "suite file (a study file whose parts name their walls: studies/validation-default.toml is one)");
-    cmd->add_option("--engines", o->engines,
+    add_list_option(*cmd, "--engines", o->engines,
                     fmt::format("engines to compare, comma-separated (default: {}; simbody-rigid on request)",
-                                fmt::join(multibody::default_compared_engines(), ", ")))
-        ->delimiter(',');
-    cmd->add_option("--cases", o->cases, "only these case ids, comma-separated (e.g. fig6-vssw,fig6-vssw/r0.5)")
-        ->delimiter(',');
+                                fmt::join(multibody::default_compared_engines(), ", ")));
+    add_list_option(*cmd, "--cases", o->cases, "only these case ids, comma-separated (e.g. fig6-vssw,fig6-vssw/r0.5)");
     cmd->add_option("--threads", o->threads_text,
                     fmt::format("worker threads, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--no-plots", o->no_plots, "write no plots (no gnuplot run)");

@@ -93,9 +93,8 @@ Command add_stress_command(CLI::App& root) {
         "stress", "Hard cases on every backend, each in a child process with a time limit: ok, refused or failed");
     cmd->add_option("--out", o->out_dir, "folder for stress.json, stress.csv and stress.md (created if missing)");
     cmd->add_flag("--quick", o->quick, "the quick set (CI): fewer cases, shorter runs, no step search");
-    cmd->add_option("--engines", o->engines, "backends, comma-separated (default: every one compiled in)")
-        ->delimiter(',');
-    cmd->add_option("--cases", o->cases, "only these cases, comma-separated (no step search)")->delimiter(',');
+    add_list_option(*cmd, "--engines", o->engines, "backends, comma-separated (default: every one compiled in)");
+    add_list_option(*cmd, "--cases", o->cases, "only these cases, comma-separated (no step search)");
     cmd->add_option("--time-limit", o->time_limit,
                     fmt::format("seconds per case and backend, up to {} (default, and 0: {} quick, {} full)",
                                 kMaxTimeLimit, kQuickTimeLimit, kFullTimeLimit));

@@ -1,13 +1,14 @@
 #pragma once
 // Checks of option values that CLI11 would report without naming the value as typed, or not at all.
 #include <string>
+#include <vector>
 
 #include "multibody/engine.hpp"
-#include <vector>
 
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 
 namespace vssw::cli {
 
@@ -30,9 +31,23 @@ int parse_threads(const std::string& text);
 // (also through "all"): InputError naming every unknown and every repeated name otherwise.
 std::vector<std::string> parse_engine_list(const std::string& option, const std::vector<std::string>& names);
 
-// Every floating-point option given to `cmd` must be finite, also one the command accepts and ignores (--hinge for a
-// parapet): InputError "<option> must be a finite number, got nan" otherwise. Ranges are checked where the values are
-// used.
-void require_finite_numbers(const CLI::App& cmd);
+// The items of a comma-separated list option as given (`--engine ode,bullet`, or the option repeated), split: each
+// must be non-empty and named once, else InputError naming the option and the item ("--engine has an empty item in
+// 'ode,,bullet'"). One rule for every list option of every command.
+std::vector<std::string> list_items(const std::string& option, const std::vector<std::string>& given);
+
+// A comma-separated list option bound to `target` through list_items. Not CLI11's delimiter: it drops empty items
+// without a word ("ode," ran ODE alone) and cannot see a repeated one.
+CLI::Option* add_list_option(CLI::App& cmd, const std::string& name, std::vector<std::string>& target,
+                             const std::string& help);
+
+// Every value given to `cmd`'s options (and to its chosen subcommand's) is checked as typed: none may be empty
+// (CLI11 reads an empty number as 0, or leaves the default: "--xi ''" gave xi 0), and every floating-point one must be
+// finite, also one the command accepts and ignores (--hinge for a parapet). InputError "<option> must be a number, got
+// an empty value", "<option> must be a finite number, got nan" otherwise. Ranges are checked where the values are used.
+void require_option_values(const CLI::App& cmd);
+// The message for an empty value of `option`: "<option> must be a number, got an empty value" (a number option), else
+// "<option> needs a value, got an empty one".
+std::string empty_value_message(const CLI::Option& option);
 
 }  // namespace vssw::cli

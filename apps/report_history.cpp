@@ -25,6 +25,13 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
         request.t_end.value_or(std::max(input.motion.duration(), input.vertical.duration()) + kDefaultExtraTime);
     require(std::isfinite(options.t_end) && options.t_end > 0.0, "end time (--t-end) [s]", "a positive finite number",
             options.t_end);
+    // The default output interval is the record's: say so, rather than refuse an --output-dt nobody gave.
+    if (!request.output_dt && request.keep_trajectory && options.t_end / options.output_dt > kMaxOutputSamples)
+        throw InputError(fmt::format("the output interval defaults to the ground motion's sample step, {:g} s, which "
+                                     "gives more than {:g} samples over the run's {:g} s: give --output-dt of at "
+                                     "least {:g} s",
+                                     options.output_dt, kMaxOutputSamples, options.t_end,
+                                     options.t_end / kMaxOutputSamples));
     options.keep_samples = request.keep_trajectory;
     options.stop_at_rest = true;
     options.roller = chosen.roller;

@@ -168,9 +168,9 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
         if (first.resolved && first.ratio > 0.0 && first.ratio <= 1.0) out.restitution = first.ratio;
         else if (first.resolved)
             out.restitution_note = fmt::format(
-                "{}: first impact at t = {:.4g} s gives a theta1_dot ratio of {:.4g}, outside (0, 1]: the wall {} "
+                "{}: first impact at t = {:.4g} s gives a theta1_dot ratio of {:.10g}, {}, outside (0, 1]: the wall {} "
                 "(not a restitution of the rocking model)",
-                engine.name(), first.t, first.ratio,
+                engine.name(), first.t, first.ratio, first.ratio <= 0.0 ? "at or below 0" : "above 1",
                 first.ratio <= 0.0 ? "did not rock onto its other corner" : "gained energy at the impact");
     }
     out.half_cycles = half_cycles(out.impacts);

@@ -223,10 +223,16 @@ const CaseReference& reference_of(const TaskContext& x) {
     return x.ref;
 }
 
+// The settings the engine runs the case at: the case's own (a suite file's), else the engine's defaults.
+EngineSettings case_settings(const SuiteCase& c, const multibody::Engine& engine) {
+    const auto it = c.settings.find(engine.name());
+    return it != c.settings.end() ? it->second : engine.default_settings();
+}
+
 void threshold_task(const TaskContext& x, TaskOutput& out) {
     const std::string name = x.engine.name();
     const double a = reference_of(x).threshold_g;
-    const double e = x.reference ? a : find_threshold(x.engine, x.engine.default_settings(), x.wall.scene).value_g;
+    const double e = x.reference ? a : find_threshold(x.engine, case_settings(x.c, x.engine), x.wall.scene).value_g;
     out.rows.push_back(make_row(x.c.id, name, "threshold_g", a, e, "analytic model", "g"));
 }
 
@@ -254,7 +260,7 @@ void free_task(const TaskContext& x, TaskOutput& out) {
         if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
         return;
     }
-    EngineSettings settings = x.engine.default_settings();
+    EngineSettings settings = case_settings(x.c, x.engine);
     if (x.c.dt) settings.dt = *x.c.dt;
     // Both sides run for the same time (free_vibration_with_analytic's rule), the analytic one shared.
     const FreeVibrationResult e = run_free_vibration(x.engine, settings, x.wall.scene, free_options(x));
@@ -311,7 +317,7 @@ void history_task(const TaskContext& x, TaskOutput& out) {
         return;
     }
     const multibody::Trajectory e =
-        x.engine.simulate(x.wall.scene, history_excitation(x), x.engine.default_settings());
+        x.engine.simulate(x.wall.scene, history_excitation(x), case_settings(x.c, x.engine));
     history_rows(x, a, e, out);
     whole_mechanism_peak_row(x, e, out);
     if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), e, x.wall.scene.alpha(), all, ""));
@@ -396,6 +402,7 @@ Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids)
     }
     Suite out;
     out.name = suite.name;  // the cases keep their ids and meaning: results name the suite they come from
+    out.engine_settings = suite.engine_settings;
     std::set<std::string> walls, records;
     for (const SuiteCase& c : suite.cases) {
         if (!wanted.count(c.id)) continue;
@@ -450,7 +457,9 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     SuiteResults results;
     results.suite = suite.name;
     for (const multibody::Engine* e : engines)
-        results.engines.push_back({e->name(), e->version(), e->default_settings()});
+        results.engines.push_back({e->name(), e->version(),
+                                   suite.engine_settings.count(e->name()) ? suite.engine_settings.at(e->name())
+                                                                          : e->default_settings()});
 
     // Walls and records up front: a bad suite is an InputError before anything runs.
     std::vector<const SuiteWall*> case_walls;
@@ -480,7 +489,8 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
             const std::string name = engines[ei]->name();
             if (!c.engine.empty() && c.engine != name) continue;
             double cost = seconds * engines[ei]->cost_per_simulated_second();
-            if (c.dt && *c.dt > 0.0) cost *= engines[ei]->default_settings().dt / *c.dt;
+            const double dt = c.dt ? *c.dt : case_settings(c, *engines[ei]).dt;
+            if (dt > 0.0) cost *= engines[ei]->default_settings().dt / dt;
             tasks.push_back({ci, ei, cost});
             references[ci].users.fetch_add(1);
         }

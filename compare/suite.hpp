@@ -56,6 +56,9 @@ struct SuiteCase {
     std::string record_id;          // history
     std::optional<double> dt;       // step: the engine step (otherwise the engine's default)
     std::string engine;             // step: the one engine it runs for (no analytic row); empty: every engine
+    // The settings an engine runs this case at, where a suite file sets them ([settings] and [part.settings]); an
+    // engine not named here runs at its default_settings(). A step case's dt overrides its engine's step.
+    std::map<std::string, multibody::EngineSettings> settings;
 };
 
 struct Suite {
@@ -65,6 +68,9 @@ struct Suite {
     std::vector<SuiteCase> cases;
     // Steps of the step study per engine (the dt values of its `step` cases), for the plots' x axis.
     std::map<std::string, std::vector<double>> step_study;
+    // The suite-wide settings of an engine (a suite file's top-level [settings]), reported as the engine's settings;
+    // without, its default_settings(). Each case carries the settings it runs at (SuiteCase::settings).
+    std::map<std::string, multibody::EngineSettings> engine_settings;
 
     const SuiteWall& wall(const std::string& id) const;      // throws InputError on an unknown id
     const SuiteRecord& record(const std::string& id) const;  // throws InputError on an unknown id
@@ -144,7 +150,9 @@ struct TaskTime {
 
 struct EngineRunInfo {
     std::string name, version;
-    multibody::EngineSettings settings;  // as used (the engine's defaults unless a step case overrides dt)
+    // As used: the suite's engine_settings, else the engine's defaults (a case's own settings and a step case's dt
+    // are the case's: Suite, SuiteCase::settings).
+    multibody::EngineSettings settings;
 };
 
 struct SuiteResults {

@@ -23,6 +23,12 @@ py::str text(const std::string& bytes) {
 }
 
 py::tuple run(const std::vector<std::string>& args) {
+    // A C argument ends at its first NUL: "4\0junk" would be read as 4. Refused as the program refuses bad input.
+    for (const std::string& arg : args)
+        if (arg.find('\0') != std::string::npos)
+            return py::make_tuple(vssw::cli::kExitBadInput, py::str(""),
+                                  text("vssw: error: an argument holds a NUL character: '" +
+                                       arg.substr(0, arg.find('\0')) + "\\0...'\n"));
     std::vector<const char*> argv;
     argv.reserve(args.size() + 2);
     argv.push_back("vssw");

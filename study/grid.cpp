@@ -117,6 +117,29 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             identity_text += "\n" + read_bytes(default_table1_path());
         }
 
+    // The grid's size first, before anything is read or built. Case ids are ints: a larger grid is a typo, not a study
+    // (vssw study's --force bound is far below). Each product is checked before it is formed: unchecked, six lists
+    // whose product is 2^64 + 418 wrapped to a grid of 418 cases that ran under --force.
+    constexpr std::size_t kMaxCases = static_cast<std::size_t>(std::numeric_limits<int>::max());
+    const auto too_many = [&] {
+        return InputError(fmt::format("{} {}: a grid of more than {} cases (case ids are ints), even with --force",
+                                      kWhat, spec_.path, kMaxCases));
+    };
+    product_size_ = 0;
+    for (const PartSpec& part : spec_.parts) {
+        PartGrid g;
+        for (const Axis& a : part.wall) g.axes.push_back(&a);
+        for (const Axis& a : part.excitation) g.axes.push_back(&a);
+        for (const Axis* a : g.axes) {
+            if (a->levels.size() > kMaxCases / g.size) throw too_many();
+            g.size *= a->levels.size();
+        }
+        if (g.size > kMaxCases - product_size_) throw too_many();
+        g.first = product_size_ + 1;
+        product_size_ += g.size;
+        parts_.push_back(std::move(g));
+    }
+
     // Records: read once, up front, so that a missing or malformed file is refused before anything runs.
     for (const PartSpec& part : spec_.parts) {
         const Axis* files = part.excitation_axis("file");
@@ -209,20 +232,6 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
 
     // Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
     // repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
-    product_size_ = 0;
-    for (const PartSpec& part : spec_.parts) {
-        PartGrid g;
-        for (const Axis& a : part.wall) g.axes.push_back(&a);
-        for (const Axis& a : part.excitation) g.axes.push_back(&a);
-        for (const Axis* a : g.axes) g.size *= a->levels.size();
-        // Case ids are ints; a grid this large is a typo, not a study (vssw study's --force bound is far below).
-        if (g.size > static_cast<std::size_t>(std::numeric_limits<int>::max()) - product_size_)
-            throw InputError(fmt::format("{} {}: a grid of more than {} cases", kWhat, spec_.path,
-                                         std::numeric_limits<int>::max()));
-        g.first = product_size_ + 1;
-        product_size_ += g.size;
-        parts_.push_back(std::move(g));
-    }
     for (std::size_t pi = 0; pi < parts_.size(); ++pi) {
         const PartSpec& part = spec_.parts[pi];
         const auto axis_index = [&](const char* key) -> std::optional<std::size_t> {
@@ -376,7 +385,25 @@ CaseSpec Grid::make_case(int id) const {
     c.tolerance = num("tolerance", 0.0);
     c.max_pga_g = num("max_pga", 0.0);
     c.step = num("step", 0.0);
+    if (part.kind == ExcitationKind::pulse) {
+        // Built here, as every case is built before anything runs: a pulse the library refuses (a harmonic of more
+        // than 1e6 cycles, as `vssw history` refuses it) is bad input, not a study whose every row fails.
+        try {
+            (void)pulse_motion(c);
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path,
+                                         part.where.empty() ? "" : part.where + ", ", id, described, e.what()));
+        }
+    }
     return c;
+}
+
+GroundMotion pulse_motion(const CaseSpec& c) {
+    const double a = c.amplitude_g * kStandardGravity;
+    if (c.shape == "sine") return sine_pulse(a, c.pulse_period);
+    if (c.shape == "cosine") return cosine_pulse(a, c.pulse_period);
+    if (c.shape == "ricker") return ricker_wavelet(a, c.pulse_period);
+    return harmonic(a, c.pulse_period, c.duration);
 }
 
 bool Grid::run_applies(const RunSpec& run, const CaseSpec& c) const {

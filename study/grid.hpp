@@ -62,6 +62,10 @@ struct CaseSpec {
     std::size_t wall_index = 0;
 };
 
+// The ground motion of a pulse case (its shape, amplitude in g, period and duration), as `vssw history` builds it:
+// InputError where the library refuses it.
+GroundMotion pulse_motion(const CaseSpec& c);
+
 class Grid {
 public:
     // Builds every case's wall and every run's settings, checking them (InputError naming the file, the case's

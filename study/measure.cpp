@@ -164,13 +164,7 @@ Response response_of(const Trajectory& t, const multibody::WallScene& scene) {
 
 GroundMotion case_motion(const Grid& grid, const CaseSpec& c, double scale) {
     switch (grid.spec().parts[c.part].kind) {
-        case ExcitationKind::pulse: {
-            const double a = c.amplitude_g * kStandardGravity;
-            if (c.shape == "sine") return sine_pulse(a, c.pulse_period);
-            if (c.shape == "cosine") return cosine_pulse(a, c.pulse_period);
-            if (c.shape == "ricker") return ricker_wavelet(a, c.pulse_period);
-            return harmonic(a, c.pulse_period, c.duration);
-        }
+        case ExcitationKind::pulse: return pulse_motion(c);
         case ExcitationKind::record:
         case ExcitationKind::scale_to_collapse: return grid.record(c).scaled(scale);
         default: return GroundMotion::none();

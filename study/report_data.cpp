@@ -39,6 +39,12 @@ Json suite_json(const ReportInput& in) {
         if (c.kind == compare::CaseKind::free || c.kind == compare::CaseKind::step) j["r"] = c.r;
         if (c.kind == compare::CaseKind::history) j["record"] = c.record_id;
         j["dt"] = c.dt ? finite_or_null(*c.dt) : Json(nullptr);
+        // A suite file's settings for the case ([settings], [part.settings]); other engines run at their defaults.
+        if (!c.settings.empty()) {
+            Json settings = Json::object();
+            for (const auto& [engine, s] : c.settings) settings[engine] = settings_json(s);
+            j["settings"] = settings;
+        }
         cases.push_back(j);
     }
     return {{"name", in.results.suite.empty() ? suite.name : in.results.suite},

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -42,8 +43,24 @@ constexpr double kMinTheta0 = compare::kMinRelease;
 constexpr double kMinCollapseStep = 1e-3;  // scale-to-collapse's smallest relative step (read_value, "step")
 constexpr double kMinCollapseTolerance = 1e-12;  // and its smallest relative bisection width ("tolerance")
 using multibody::kMaxIterations;
+// The most values one list may hold: ten times the tasks a study runs without --force, on one key alone. A longer list
+// is a generated file gone wrong, refused before each value is checked.
+constexpr std::size_t kMaxLevels = 100000;
 // Table 1's numbers are below this; a larger one cannot be a specimen (and would not fit an int).
 constexpr double kMaxSpecimen = 1000.0;
+
+// The position of the first value that repeats an earlier one, if any. Sorted, not pairwise: a list of 400,000 values
+// took minutes pairwise. 0.0 and -0.0 are equal (neither sorts before the other, and == holds).
+std::optional<std::size_t> first_repeat(const std::vector<Level>& levels) {
+    std::vector<std::size_t> order(levels.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return levels[a] < levels[b]; });
+    std::optional<std::size_t> first;
+    for (std::size_t k = 1; k < order.size(); ++k)
+        if (levels[order[k]] == levels[order[k - 1]] && (!first || order[k] < *first)) first = order[k];
+    return first;
+}
 
 bool contains(const std::vector<std::string>& list, const std::string& x) {
     return std::find(list.begin(), list.end(), x) != list.end();
@@ -74,21 +91,23 @@ public:
                 fail(where, fmt::format("unknown key '{}' (known: {})", item.key(), fmt::join(known, ", ")));
     }
 
-    // A scalar or a non-empty list of scalars, each checked by `check` (which returns the level or calls fail).
+    // A scalar or a non-empty list of at most kMaxLevels scalars, each checked by `check` (which returns the level or
+    // calls fail), each listed once.
     template <class Check>
     Axis axis(const json& value, const std::string& key, Check check) const {
         Axis a{key.substr(key.rfind('.') + 1), {}};
         if (value.is_array()) {
             if (value.empty()) fail(key, "an empty list: give at least one value");
+            if (value.size() > kMaxLevels)
+                fail(key, fmt::format("a list of {} values, more than {} (the grid would be far beyond any study)",
+                                      value.size(), kMaxLevels));
             for (const json& v : value) a.levels.push_back(check(v));
         } else {
             a.levels.push_back(check(value));
         }
-        for (std::size_t i = 0; i < a.levels.size(); ++i)
-            for (std::size_t j = 0; j < i; ++j)
-                if (a.levels[i] == a.levels[j])
-                    fail(key, fmt::format("lists {} twice (each value once: the grid would repeat cases)",
-                                          to_text(a.levels[i])));
+        if (const std::optional<std::size_t> twice = first_repeat(a.levels))
+            fail(key, fmt::format("lists {} twice (each value once: the grid would repeat cases)",
+                                  to_text(a.levels[*twice])));
         return a;
     }
 
@@ -562,6 +581,19 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
     for (const std::string& metric : s.metrics)
         if (metric_info(metric).analytic_only && !analytic)
             r.fail("metrics", fmt::format("'{}' is the analytic model's: add \"analytic\" to engines", metric));
+    // An impact ratio of 0 stops the wall at its first return to upright. `vssw free` lists that impact from the
+    // model's events, but a study measures impacts from the samples, as crossings of upright (the same code for every
+    // engine), and finds none: every row failed "no impact within the run". Refused, saying why.
+    const Axis& impact = s.assumptions[1];
+    const bool stops = analytic && std::find(impact.levels.begin(), impact.levels.end(), Level{0.0}) != impact.levels.end();
+    for (const PartSpec& part : s.parts)
+        for (const std::string& metric : part.metrics)
+            if (stops && metric_info(metric).source == MetricSource::free)
+                r.fail("assumptions.impact",
+                       fmt::format("0 stops the wall at its first return to upright, where a study finds no impact "
+                                   "to measure '{}' from (impacts are crossings of upright); use vssw free --impact 0 "
+                                   "for that run, or a ratio above 0",
+                                   metric));
     return s;
 }
 

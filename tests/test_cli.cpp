@@ -959,8 +959,9 @@ TEST(CliCompare, BadEngineListsAreRefusedNamingTheEngines) {
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic,havok,warp"},
                      {"no engine 'havok', 'warp' in this build", "available: analytic"});
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic,analytic"},
-                     {"'analytic' named more than once"});
-    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", ""}, {"no engine ''"});
+                     {"--engine names 'analytic' more than once"});
+    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", ""},
+                     {"--engine must list names, got an empty value"});
     if (!engine_available("ode")) return;
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "all,ode"}, {"'ode' named more than once"});
     // A setting one of the engines does not know is refused before any runs: nothing on stdout, the engine named.
@@ -1004,4 +1005,110 @@ TEST(CliCompare, AnEngineThatFailsIsReportedBesideTheOthers) {
     const CliResult alone = run_cli(sliding + std::vector<std::string>{"--engine", "ode"});
     EXPECT_EQ(alone.code, vssw::cli::kExitSimulationFailed);
     EXPECT_EQ(alone.out, "");
+}
+
+// --- words and values as typed (a bad-input sweep: each was accepted, or refused naming the wrong thing) ----------
+
+namespace {
+
+// An empty value must be refused naming the option: CLI11 reads an empty number as 0 ("height ... got 0", "--xi ''"
+// ran with xi 0) or leaves the default ("--dt ''").
+struct EmptyValue {
+    const char* option;
+    std::vector<std::string> args;  // the command line before the option
+};
+
+std::vector<EmptyValue> empty_values() {
+    const std::vector<std::string> pulse = {"history", "--pulse", "harmonic", "--amplitude", "0.3", "--pulse-period",
+                                            "0.5", "--duration", "2", "--height", "4", "--thickness", "0.4", "--hinge",
+                                            "0.7"};
+    const std::vector<std::string> record = {"history", "--record", kRinaldi, "--height", "4", "--thickness", "0.4",
+                                             "--hinge", "0.7"};
+    return {{"--height", {"wall", "--thickness", "0.4", "--hinge", "0.7"}},
+            {"--thickness", {"wall", "--height", "4", "--hinge", "0.7"}},
+            {"--hinge", {"wall", "--height", "4", "--thickness", "0.4"}},
+            {"--xi", with_fig6({"wall"})},
+            {"--density", with_fig6({"wall"})},
+            {"--g", with_fig6({"wall"})},
+            {"--theta0", with_fig6({"free"})},
+            {"--rtol", with_fig6({"free", "--theta0", "0.5"})},
+            {"--output-dt", pulse},
+            {"--t-end", pulse},
+            {"--amplitude", {"history", "--pulse", "sine", "--pulse-period", "0.5", "--height", "4", "--thickness",
+                             "0.4", "--hinge", "0.7"}},
+            {"--pulse-period", {"history", "--pulse", "sine", "--amplitude", "0.3", "--height", "4", "--thickness",
+                                "0.4", "--hinge", "0.7"}},
+            {"--duration", {"history", "--pulse", "harmonic", "--amplitude", "0.3", "--pulse-period", "0.5",
+                            "--height", "4", "--thickness", "0.4", "--hinge", "0.7"}},
+            {"--scale", record},
+            {"--pga", record},
+            {"--record-dt", record},
+            {"--dt", kCompareFig6 + std::vector<std::string>{"--engine", "analytic"}},
+            {"--time-limit", {"stress", "--quick", "--engines", "analytic"}}};
+}
+
+}  // namespace
+
+TEST(CliWords, AnEmptyNumberIsRefusedNamingTheOption) {
+    for (const EmptyValue& e : empty_values()) {
+        SCOPED_TRACE(e.option);
+        const std::string expected = std::string(e.option) + " must be a number, got an empty value";
+        expect_bad_input(e.args + std::vector<std::string>{e.option, ""}, {expected});
+        // "--height=" took the next word as its value ("Could not convert: --height = --thickness").
+        expect_bad_input(e.args + std::vector<std::string>{std::string(e.option) + "=", "--json"}, {expected});
+    }
+    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--iterations", ""},
+                     {"--iterations", "empty"});
+    expect_bad_input({"report", "--out", "unused", "--threads", ""}, {"--threads", "empty"});
+}
+
+// "--engine ode," ran ODE alone, ",," was skipped, "--engine ," said "--height is required", and report, stress and
+// bench ran a name given twice once: every list option now refuses an empty or a repeated item the same way.
+TEST(CliWords, ListOptionsRefuseEmptyAndRepeatedItems) {
+    const std::vector<std::string> compare = kCompareFig6;
+    expect_bad_input(compare + std::vector<std::string>{"--engine", "analytic,"},
+                     {"--engine has an empty item in 'analytic,'"});
+    expect_bad_input(compare + std::vector<std::string>{"--engine", "analytic,,analytic"},
+                     {"--engine has an empty item in 'analytic,,analytic'"});
+    expect_bad_input(compare + std::vector<std::string>{"--engine", ","}, {"--engine has an empty item in ','"});
+    expect_bad_input(compare + std::vector<std::string>{"--engine", ""}, {"--engine", "empty"});
+    expect_bad_input(compare + std::vector<std::string>{"--engine", "analytic", "--engine", "analytic"},
+                     {"--engine names 'analytic' more than once"});
+    expect_bad_input({"report", "--out", "unused", "--engines", "analytic,analytic"},
+                     {"--engines names 'analytic' more than once"});
+    expect_bad_input({"report", "--out", "unused", "--engines", "analytic,"}, {"--engines has an empty item"});
+    expect_bad_input({"report", "--out", "unused", "--cases", "fig6-vssw,fig6-vssw"},
+                     {"--cases names 'fig6-vssw' more than once"});
+    expect_bad_input({"report", "--out", "unused", "--cases", "fig6-vssw,"}, {"--cases has an empty item"});
+    expect_bad_input({"stress", "--cases", "xi-50,xi-50"}, {"--cases names 'xi-50' more than once"});
+    expect_bad_input({"stress", "--engines", "analytic,", "--quick"}, {"--engines has an empty item"});
+    expect_bad_input({"bench", "--out", "unused", "--problems", "record,record"},
+                     {"--problems names 'record' more than once"});
+}
+
+TEST(CliWords, ASettingGivenTwiceIsRefused) {
+    // The last value won without a word (knobs {erp: 0.3}).
+    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--set", "rtol=1e-8", "--set",
+                                                             "rtol=1e-9"},
+                     {"--set names 'rtol' more than once"});
+}
+
+TEST(CliWords, ASingleDashWordIsAnUnknownOptionNotTheHelp) {
+    // "-height 4" was read as -h: the help, exit 0.
+    const CliResult r = expect_bad_input({"wall", "-height", "4", "--thickness", "0.4", "--hinge", "0.7"},
+                                         {"unknown option -height; did you mean --height?"});
+    EXPECT_EQ(r.out, "");
+    expect_bad_input(with_fig6({"wall", "-foo"}), {"unknown option -foo", "options start with --"});
+    expect_bad_input({"study", "merge", "-out", "x", "a"}, {"unknown option -out; did you mean --out?"});
+    // Numbers and "-" stay values.
+    EXPECT_EQ(run_cli(with_fig6({"wall", "--xi", "-0"})).code, 0);
+    EXPECT_EQ(run_cli({"wall", "-h"}).code, 0);
+}
+
+TEST(CliWords, AnOptionWithoutItsValueDoesNotTakeTheNextOption) {
+    const CliResult r = expect_bad_input({"wall", "--height", "--thickness=0.4", "--hinge", "0.7"},
+                                         {"--height needs a value, got none (the next word, --thickness=0.4, is an "
+                                          "option)"});
+    EXPECT_EQ(r.err.find("Could not convert"), std::string::npos) << r.err;
+    expect_bad_input(with_fig6({"history", "--record", "--json"}), {"--record needs a value"});
 }

@@ -1,6 +1,7 @@
 // `vssw history` with the record formats people have (apps/ground_motion_options.hpp): the same record in another
 // format gives the same response; the vertical component moves the lift-off as Eq. (12) with g + a_v says; the peak
 // is reported in radians with its time; `--csv -` writes the trajectory to standard output.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -241,7 +242,7 @@ TEST(CliRecords, TheCsvIsRefusedWhereItWouldReplaceTheRecordOrWhereItIsEmptyAndT
         const auto r =
             run_cli(std::vector<std::string>{command} + kFig6 + what + std::vector<std::string>{"--csv", ""});
         EXPECT_EQ(r.code, 2) << command;
-        EXPECT_NE(r.err.find("--csv: the path is empty"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("--csv needs a value, got an empty one"), std::string::npos) << r.err;
     }
 }
 
@@ -263,6 +264,67 @@ TEST(CliRecords, CompareNamesTheOptionItRefuses) {
         compare + kFig6 + std::vector<std::string>{"--pulse", "sine", "--amplitude", "-1", "--pulse-period", "1"});
     EXPECT_EQ(amplitude.code, 2);
     EXPECT_EQ(amplitude.err.rfind("vssw: error: --amplitude: must be a positive number", 0), 0u) << amplitude.err;
+}
+
+// Found by a bad-input sweep: the messages of records that cannot be run.
+namespace {
+
+std::string history_error(const std::vector<std::string>& args) {
+    const auto r = run_cli(std::vector<std::string>{"history"} + kFig6 + args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    return r.err;
+}
+
+}  // namespace
+
+// A step of 1e-310 s (an AT2 DT, --record-dt, or times that close) ran into "theta1'' must be a finite number, got
+// -nan", naming neither the file nor the step.
+TEST(CliRecords, AStepTooSmallIsRefusedNamingTheFileAndTheStep) {
+    const RecordDir dir;
+    const std::string at2 = dir.write("tiny.AT2", "PEER\nX\nACCELERATION TIME HISTORY IN UNITS OF G\n"
+                                                  "3    1e-310    NPTS, DT\n0.1 0.2 0.3\n");
+    std::string err = history_error({"--record", at2});
+    EXPECT_NE(err.find(at2 + ":4: DT must be at least 1e-09 s, got 1E-310"), std::string::npos) << err;
+    const std::string values = dir.write("values.txt", "0.1\n0.2\n0.3\n");
+    err = history_error({"--record", values, "--record-dt", "1e-310", "--scale", "100"});
+    EXPECT_NE(err.find(values + ": record step must be a finite time of at least 1e-09 s, got 1e-310"),
+              std::string::npos)
+        << err;
+    const std::string close = dir.write("close.txt", "0 0.1\n1e-300 0.2\n2e-300 0.3\n");
+    err = history_error({"--record", close, "--csv", (dir.dir / "x.csv").string()});
+    EXPECT_NE(err.find("samples 0 and 1 are 1e-300 s apart, less than 1e-09 s"), std::string::npos) << err;
+    EXPECT_EQ(err.find("nan"), std::string::npos) << err;
+}
+
+// The output interval defaults to the record's step: a record sampled every nanosecond was refused for an
+// --output-dt the user never gave.
+TEST(CliRecords, TheDefaultOutputIntervalIsSaidToComeFromTheRecord) {
+    const RecordDir dir;
+    const std::string fast = dir.write("fast.txt", "0 0.1\n1e-9 0.2\n2e-9 0.3\n");
+    const std::string err = history_error({"--record", fast, "--csv", (dir.dir / "x.csv").string()});
+    EXPECT_NE(err.find("the output interval defaults to the ground motion's sample step, 1e-09 s"), std::string::npos)
+        << err;
+    EXPECT_NE(err.find("give --output-dt of at least 1e-07 s"), std::string::npos) << err;
+}
+
+// Any file given as a record had its first line quoted in the message (the environment of /proc/self/environ, a line
+// of /etc/passwd). A file that is no record is named with its line, nothing of it quoted; a record's own text is
+// quoted at most 40 printable characters.
+TEST(CliRecords, AFileThatIsNoRecordIsNotQuoted) {
+    const RecordDir dir;
+    const std::string secret = dir.write("secret.txt", "user:SECRET-VALUE:0:0:/home/user:/bin/sh\nmore:text\n");
+    std::string err = history_error({"--record", secret});
+    EXPECT_NE(err.find(secret + ":1: not a ground-motion record"), std::string::npos) << err;
+    EXPECT_EQ(err.find("SECRET"), std::string::npos) << err;
+    const std::string long_token = dir.write("long.txt", "0 0.1\n0.01 " + std::string(200, 'x') + "\x01\n");
+    err = history_error({"--record", long_token});
+    EXPECT_NE(err.find(long_token + ":2: non-numeric value '" + std::string(40, 'x') + "...'"), std::string::npos)
+        << err;
+    EXPECT_EQ(err.find(std::string(41, 'x')), std::string::npos) << err;
+    const std::string control = dir.write("control.txt", "0 0.1\n0.01 a\x01" "b\n");
+    err = history_error({"--record", control});
+    EXPECT_NE(err.find(":2: non-numeric value 'a?b'"), std::string::npos) << err;
 }
 
 }  // namespace

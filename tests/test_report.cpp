@@ -80,14 +80,14 @@ vssw::compare::Suite hand_suite() {
     s.name = "default";
     s.walls = {{"fig6-vssw", "Fig. 6 VSSW 4 x 0.4 m, h1/h 0.7", {}}, {"fig6-pw", "Fig. 6 PW 4 x 0.4 m", {}}};
     s.records = {{"rinaldi-x0.17", "Northridge 1994, Rinaldi 228, x 0.17", "data/NGA_no_1063_RRS228.AT2", 0.17}};
-    s.cases = {{"fig6-vssw", CaseKind::threshold, "fig6-vssw", 0.0, "", {}, ""},
-               {"fig6-vssw/r0.5", CaseKind::free, "fig6-vssw", 0.5, "", {}, ""},
-               {"fig6-pw", CaseKind::threshold, "fig6-pw", 0.0, "", {}, ""},
-               {"fig6-pw/rinaldi-x0.17", CaseKind::history, "fig6-pw", 0.0, "rinaldi-x0.17", {}, ""}};
+    s.cases = {{"fig6-vssw", CaseKind::threshold, "fig6-vssw", 0.0, "", {}, "", {}},
+               {"fig6-vssw/r0.5", CaseKind::free, "fig6-vssw", 0.5, "", {}, "", {}},
+               {"fig6-pw", CaseKind::threshold, "fig6-pw", 0.0, "", {}, "", {}},
+               {"fig6-pw/rinaldi-x0.17", CaseKind::history, "fig6-pw", 0.0, "rinaldi-x0.17", {}, "", {}}};
     for (double dt : {1e-3, 5e-4, 2e-4}) {
         std::ostringstream id;
         id << "fig6-vssw/r0.5/dt" << dt << "/ode";
-        s.cases.push_back({id.str(), CaseKind::step, "fig6-vssw", 0.5, "", dt, "ode"});
+        s.cases.push_back({id.str(), CaseKind::step, "fig6-vssw", 0.5, "", dt, "ode", {}});
         s.step_study["ode"].push_back(dt);
     }
     return s;
@@ -645,7 +645,7 @@ TEST(ReportAtAGlance, ContentsLinkEveryHeadingInHtmlAndMarkdown) {
 
 TEST(ReportAtAGlance, CasesThatDidNotRunAreNotListed) {
     vssw::compare::Suite suite = hand_suite();
-    suite.cases.push_back({"fig6-vssw/r0.5/dt0.0005/bullet", CaseKind::step, "fig6-vssw", 0.5, "", 5e-4, "bullet"});
+    suite.cases.push_back({"fig6-vssw/r0.5/dt0.0005/bullet", CaseKind::step, "fig6-vssw", 0.5, "", 5e-4, "bullet", {}});
     TempDir dir("notrun");
     vssw::study::ReportMeta meta;
     vssw::study::write_suite_report(dir.path, suite, hand_results(), meta, no_plots());
@@ -920,3 +920,70 @@ TEST(ReportCommand, MissingDataFolderOrUnreadableRecordCreatesNothing) {
 }
 
 }  // namespace
+
+// `report --suite FILE` ran every engine at its defaults whatever the suite's [settings] and [part.settings] said
+// (results.json said dt 0.001 for a suite asking 2e-4), while `study` on the same file honoured them.
+namespace {
+
+std::string suite_with(const std::string& top, const std::string& part) {
+    return "name = \"s\"\nengines = [\"analytic\", \"ode\"]\n" + top +
+           "[[part]]\nwall_name = \"w\"\n[part.wall]\nheight = 4.0\nthickness = 0.4\nhinge = 0.7\n"
+           "[part.excitation]\nkind = \"free\"\ntheta0 = 0.5\n" + part;
+}
+
+// The report of one free case run by ODE under `suite`: its results.json.
+Json report_of(const TempDir& tmp, const std::string& name, const std::string& suite) {
+    const fs::path file = tmp.path / (name + ".toml");
+    std::ofstream(file) << suite;
+    const CliResult r = run_cli({"report", "--suite", file.string(), "--engines", "ode", "--no-plots", "--out",
+                                 (tmp.path / name).string()});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return Json::parse(read(tmp.path / name / "results.json"));
+}
+
+double ode_period(const Json& j) {
+    for (const Json& x : j["rows"])
+        if (x["engine"] == "ode" && x["metric"] == "period") return x["engine_value"].get<double>();
+    return std::nan("");
+}
+
+}  // namespace
+
+TEST(ReportCommand, ASuitesSettingsReachTheEngine) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    TempDir tmp("suite_settings");
+    const Json plain = report_of(tmp, "plain", suite_with("", ""));
+    const Json top = report_of(tmp, "top", suite_with("[settings.ode]\ndt = 2e-4\n", ""));
+    const Json part = report_of(tmp, "part", suite_with("", "[part.settings.ode]\ndt = 2e-4\n"));
+    EXPECT_EQ(top["engines"][1]["name"], "ode");
+    EXPECT_EQ(top["engines"][1]["settings"]["dt"], 2e-4);
+    EXPECT_EQ(top["suite"]["cases"][0]["settings"]["ode"]["dt"], 2e-4);
+    EXPECT_EQ(part["suite"]["cases"][0]["settings"]["ode"]["dt"], 2e-4);
+    EXPECT_FALSE(plain["suite"]["cases"][0].contains("settings"));
+    // The step reaches the run: the period moves with it, the same whichever table gives it.
+    EXPECT_NE(ode_period(top), ode_period(plain));
+    EXPECT_EQ(ode_period(top), ode_period(part));
+}
+
+TEST(ReportCommand, SuiteSettingsTheReportCannotHonourAreRefused) {
+    TempDir tmp("suite_refused");
+    const auto refused = [&](const std::string& name, const std::string& suite, const std::string& expected) {
+        const fs::path file = tmp.path / (name + ".toml");
+        std::ofstream(file) << suite;
+        const fs::path out = tmp.path / name;
+        const CliResult r = run_cli({"report", "--suite", file.string(), "--engines", "analytic", "--out", out.string()});
+        EXPECT_EQ(r.code, vssw::cli::kExitBadInput) << name;
+        EXPECT_EQ(count_lines(r.err), 1) << r.err;
+        EXPECT_TRUE(contains(r.err, expected)) << name << ": " << r.err;
+        EXPECT_FALSE(fs::exists(out)) << name;
+    };
+    refused("analytic", suite_with("[settings.analytic]\nrtol = 1e-8\n", ""), "settings.analytic");
+    refused("assumption", suite_with("[assumptions]\nimpact = \"whole-mechanism\"\n", ""),
+            "assumptions.impact: the report's reference is the analytic model with impact eq19");
+    if (!vssw::testing::engine_available("ode")) return;
+    refused("knob", suite_with("", "[part.settings.ode]\nerp = [0.1, 0.2]\n"), "the settings of ode vary (erp)");
+    const std::string threshold = "name = \"s\"\nengines = [\"analytic\", \"ode\"]\n[[part]]\nwall_name = \"w\"\n"
+                                  "[part.wall]\nheight = 4.0\nthickness = 0.4\nhinge = 0.7\n[part.excitation]\n"
+                                  "kind = \"threshold\"\n[part.settings.ode]\ndt = [1e-3, 5e-4]\n";
+    refused("steps", threshold, "the settings of ode vary (dt)");
+}

@@ -7,12 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
 #include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
@@ -692,3 +695,46 @@ TEST(StudyRun, AThresholdIsATaskOfItsWallGivenToEveryCaseOfIt) {
 }
 
 }  // namespace
+
+// Found by a bad-input sweep ------------------------------------------------------------------------------------------
+
+namespace {
+
+// A TOML list of n distinct numbers from `first` in steps of `step`.
+std::string number_list(std::size_t n, double first, double step) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < n; ++i) text += fmt::format("{}{}", i ? ", " : "", first + static_cast<double>(i) * step);
+    return text + "]";
+}
+
+}  // namespace
+
+// Six lists whose product is 2^64 + 418: the unchecked product wrapped to a grid of 418 cases, which ran under --force.
+TEST(StudyGrid, AGridWhoseSizeOverflowsIsRefusedBeforeAnythingIsBuilt) {
+    const TempDir dir;
+    const std::string toml = "metrics = [\"threshold_closed_form_g\"]\nengines = [\"analytic\"]\n[wall]\n"
+                             "height = " + number_list(7621, 4.0, 1e-4) + "\nthickness = " +
+                             number_list(5821, 0.4, 1e-5) + "\nhinge = " + number_list(1669, 0.5, 1e-4) +
+                             "\nxi = " + number_list(853, 0.0, 1e-3) + "\ndensity = " + number_list(673, 1800.0, 1.0) +
+                             "\ng = " + number_list(434, 9.81, 1e-3) +
+                             "\n[excitation]\nkind = \"closed-form\"\ntheta0 = 0.5\n";
+    const std::string message = refusal(dir, toml);
+    EXPECT_NE(message.find("a grid of more than 2147483647 cases"), std::string::npos) << message;
+}
+
+// Duplicates were looked for pairwise: 400,000 values ran past 150 s. A list longer than the limit is refused at once;
+// a long one within it is read in well under a second.
+TEST(StudyFile, LongListsAreCheckedWithoutQuadraticTime) {
+    const TempDir dir;
+    const std::string rest = "\nthickness = 0.4\nhinge = 0.6\n[excitation]\nkind = \"threshold\"\n";
+    const std::string too_long = refusal(dir, "[wall]\nheight = " + number_list(100001, 1.0, 1e-6) + rest);
+    EXPECT_NE(too_long.find("wall.height: a list of 100001 values, more than 100000"), std::string::npos) << too_long;
+
+    std::string values = number_list(100000, 1.0, 1.0);
+    values.replace(values.rfind(", ") + 2, std::string::npos, "51]");  // the last repeats the 51st
+    const auto start = std::chrono::steady_clock::now();
+    const std::string repeated = refusal(dir, "[wall]\nheight = " + values + rest);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_NE(repeated.find("wall.height: lists 51 twice"), std::string::npos) << repeated;
+    EXPECT_LT(seconds, 5.0);  // pairwise: 5e9 comparisons, about 15 s (65,536 values took 6.5 s)
+}

@@ -215,6 +215,47 @@ TEST(StudyCli, StrictJudgesAFinishedStudyOnResumeToo) {
     EXPECT_NE(again.out.find("1 failed"), std::string::npos) << again.out;
 }
 
+// A harmonic of 2e7 cycles is refused by `vssw history`; in a study it made the folder and exited 0 with every row
+// "failed: harmonic cycles ...". Refused as bad input before any folder, naming the case.
+TEST(StudyCli, AHarmonicOfTooManyCyclesIsRefusedBeforeAnyFolder) {
+    const TempDir dir;
+    const std::string out = (dir / "out").string();
+    const std::string file = write_file(dir / "h.toml", "metrics = [\"peak_rotation\"]\n[wall]\nheight = 4\n"
+                                                        "thickness = 0.4\nhinge = 0.7\n[excitation]\nkind = \"pulse\"\n"
+                                                        "shape = \"harmonic\"\namplitude = 0.3\npulse_period = 0.5\n"
+                                                        "duration = [10.0, 1e7]\n")
+                                 .string();
+    const auto r = run_cli({"study", file, "--out", out, "--no-plots"});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("case 2 ("), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("harmonic cycles (duration / period T) must be at most 1e+06"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("got 20000000"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// impact = 0 gave rows "failed: no impact within the run" while `vssw free --impact 0` lists one impact: a study
+// measures impacts as crossings of upright, and a wall that stops there makes none. Refused saying so. impact = 1 gave
+// "a theta1_dot ratio of 1, outside (0, 1]": the ratio measured is just above 1, and now says so.
+TEST(StudyCli, ImpactRatiosAtTheEndsOfTheirRangeAreExplained) {
+    const TempDir dir;
+    const std::string study = "metrics = [\"period\", \"restitution\"]\n[wall]\nheight = 4\nthickness = 0.4\n"
+                              "hinge = 0.7\n[excitation]\nkind = \"free\"\ntheta0 = 0.5\n[assumptions]\nimpact = ";
+    const std::string zero = write_file(dir / "zero.toml", study + "[0.5, 0.0]\n").string();
+    const auto refused = run_cli({"study", zero, "--out", (dir / "zero").string(), "--no-plots"});
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_NE(refused.err.find("assumptions.impact: 0 stops the wall at its first return to upright"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "zero"));
+
+    const std::string one = write_file(dir / "one.toml", study + "1.0\n").string();
+    const auto r = run_cli({"study", one, "--out", (dir / "one").string(), "--no-plots"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string csv = vssw::testing::read_file(dir / "one" / "results.csv");
+    EXPECT_NE(csv.find(", above 1, outside (0, 1]: the wall gained energy"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("ratio of 1, outside"), std::string::npos) << csv;
+}
+
 }  // namespace
 
 // Results folders (study/folder_swap.hpp) ---------------------------------------------------------------------------

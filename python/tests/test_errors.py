@@ -136,3 +136,45 @@ def test_an_engine_run_past_its_budget_is_a_simulation_error_and_python_goes_on(
     with pytest.raises(vssw.SimulationError, match="budget of 1 s of CPU time"):
         vssw.compare(engine="simbody", **FIG6, run_budget=1, set={"accuracy": 1e-10})
     assert vssw.wall(**FIG6)["threshold_g"] > 0  # the interpreter is still here and the module works
+
+
+# Found by a bad-input sweep: each of these was accepted, or refused with a message naming the wrong thing.
+
+def test_a_nul_character_is_refused_not_cut_off():
+    # "4\x00junk" reached the program as "4" (a C argument ends at its NUL): the wall for height 4 came back.
+    with pytest.raises(vssw.InputError, match="height.*NUL"):
+        vssw.wall(height="4\x00junk", thickness=0.4, hinge=0.7)
+    with pytest.raises(vssw.InputError, match="NUL"):
+        vssw.run("wall\x00", **FIG6)
+
+
+@pytest.mark.parametrize("empty", ["", b""])
+def test_an_empty_value_is_refused_naming_the_parameter(empty):
+    # height="" gave "Could not convert: --height = --thickness=0.4": the next option taken as the value.
+    with pytest.raises(vssw.InputError, match="^height: ") as raised:
+        vssw.wall(height=empty, thickness=0.4, hinge=0.7)
+    assert "--thickness" not in str(raised.value)
+
+
+def test_true_for_an_option_that_needs_a_value_names_it(cli):
+    # height=True is the bare --height, which took the next option as its value.
+    code, line = cli.error_line(["wall", "--height", "--thickness=0.4", "--hinge=0.7"])
+    assert code == 2 and "--height needs a value" in line
+    with pytest.raises(vssw.InputError, match="--height needs a value") as raised:
+        vssw.wall(height=True, thickness=0.4, hinge=0.7)
+    assert "Could not convert" not in str(raised.value)
+
+
+def test_a_bool_inside_a_list_or_dict_is_refused():
+    with pytest.raises(vssw.InputError, match="set.*erp.*True is not a value"):
+        vssw.compare(engine="analytic", **FIG6, set={"erp": True})
+    with pytest.raises(vssw.InputError, match="engine.*False is not a value"):
+        vssw.compare(engine=["analytic", False], **FIG6)
+
+
+def test_help_is_returned_not_raised():
+    # help=True and run("--help") raised vssw.Error with exit code 0.
+    text = vssw.wall(help=True)
+    assert "--height" in text and "--thickness" in text
+    assert text == vssw.help("wall")
+    assert "Subcommands" in vssw.run("--help") or "wall" in vssw.run("--help")

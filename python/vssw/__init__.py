@@ -66,12 +66,30 @@ _EXCEPTIONS = {_core.EXIT_BAD_INPUT: InputError, _core.EXIT_SIMULATION_FAILED: S
 _PREFIXES = ("vssw: error: ", "vssw: simulation failed: ", "vssw: check failed: ")
 
 
+def _bad_value(name, why):
+    return InputError(f"{name}: {why}", _core.EXIT_BAD_INPUT, "")
+
+
+def _text(name, text):
+    """A string as one argument. Refused: an empty one (the program would read an empty number as 0) and one with a
+    NUL character (the C argument would end there: "4\x00junk" was read as 4)."""
+    if isinstance(text, bytes):
+        raise _bad_value(name, f"a number, a string or a path is expected, got bytes {text!r}")
+    if text == "":
+        raise _bad_value(name, "an empty value; give a value, or None to leave the option out")
+    if "\x00" in text:
+        raise _bad_value(name, f"a value with a NUL character: {text!r}")
+    return text
+
+
 def _value_text(name, value):
     """One option value as the program reads it: floats in full precision (repr round-trips), NaN and infinities
     as the words the program refuses by name."""
     if isinstance(value, (str, _os.PathLike)):
-        return _os.fspath(value)
-    if isinstance(value, _numbers.Integral):  # bool is handled by the caller
+        return _text(name, _os.fspath(value))
+    if isinstance(value, bool):  # a bare flag is True at the top level only (_arguments); here it would become 1
+        raise _bad_value(name, f"{value} is not a value (True and False turn a flag on and off)")
+    if isinstance(value, _numbers.Integral):
         return str(int(value))
     if isinstance(value, _numbers.Real):  # NumPy floats too: float() first, so that repr is "0.4", not "np.float64(0.4)"
         return repr(float(value))  # "nan", "inf", "-inf" for those: the words the program refuses by name
@@ -89,11 +107,13 @@ def _arguments(options):
         if value is True:
             args.append(flag)
         elif isinstance(value, dict):
-            args += [f"{flag}={key}={_value_text(name, v)}" for key, v in value.items()]
+            args += [f"{flag}={_text(name, str(key))}={_value_text(f'{name}[{key!r}]', v)}" for key, v in value.items()]
         elif isinstance(value, (list, tuple)):
             args += [f"{flag}={_value_text(name, v)}" for v in value]
         else:
-            # --name=value, one argument: a value starting with '-' (a negative number) stays a value.
+            # --name=value, one argument: a value starting with '-' (a negative number) stays a value, and no value
+            # can be taken for the next option. (True for an option that needs a value gives the bare --name, which
+            # the program refuses by name: "--height needs a value".)
             args.append(f"{flag}={_value_text(name, value)}")
     return args
 
@@ -109,8 +129,17 @@ def _message(stderr):
     return line
 
 
+_HELP = ("--help", "-h")
+
+
 def _call(args):
-    """Runs `vssw ARGS --json` in this process; returns the parsed JSON or raises the exit code's exception."""
+    """Runs `vssw ARGS --json` in this process; returns the parsed JSON or raises the exit code's exception. With
+    --help (help=True) the help text is returned instead: it is the answer asked for, not an error."""
+    if any(a in _HELP for a in args):
+        code, out, err = _core.run([str(a) for a in args])
+        if code == _core.EXIT_OK:
+            return out
+        raise _EXCEPTIONS.get(code, Error)(_message(err), code, err)
     code, out, err = _core.run([str(a) for a in args] + ["--json"])
     result = None
     if out.strip():
@@ -135,9 +164,11 @@ def _reserved(options, names):
 def run(command, *positional, **options):
     """Any vssw command with --json, e.g. run("check", bounds="bounds/ci.toml") or
     run("study", "merge", "s1", "s2", out="s"). Positional arguments are passed as they are, before the options.
-    Returns the parsed JSON."""
+    Returns the parsed JSON; run("--help") and help=True return the help text."""
     _reserved(options, ["json"])
-    return _call([command, *[_os.fspath(p) for p in positional], *_arguments(options)])
+    words = [_text("command", _os.fspath(command))]
+    words += [_text(f"positional argument {i + 1}", _os.fspath(p)) for i, p in enumerate(positional)]
+    return _call([*words, *_arguments(options)])
 
 
 def _commands():

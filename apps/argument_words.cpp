@@ -1,0 +1,73 @@
+#include "apps/argument_words.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "analytic/error.hpp"
+#include "apps/option_values.hpp"
+
+namespace vssw::cli {
+namespace {
+
+// "-0.2", "-inf", "-1e-3": a value, not an option.
+bool is_number(const std::string& word) {
+    char* end = nullptr;
+    (void)std::strtod(word.c_str(), &end);
+    return !word.empty() && end == word.c_str() + word.size();
+}
+
+// A word CLI11 would read as one or more options: "-x...", "--name", not "-" (standard output for --csv) or a number.
+bool looks_like_option(const std::string& word) { return word.size() > 1 && word[0] == '-' && !is_number(word); }
+
+const CLI::App* subcommand_named(const CLI::App& app, const std::string& name) {
+    const auto found = app.get_subcommands([&](const CLI::App* sub) { return sub->get_name() == name; });
+    return found.empty() ? nullptr : found.front();
+}
+
+bool takes_value(const CLI::Option& option) {
+    return option.get_items_expected_max() > 0 &&
+           std::min(option.get_type_size_min(), option.get_items_expected_min()) > 0;
+}
+
+}  // namespace
+
+void check_argument_words(const CLI::App& app, int argc, const char* const* argv) {
+    const CLI::App* cmd = &app;
+    int i = 1;
+    // The command (and `study merge`): the first words, when they name one.
+    while (i < argc) {
+        const CLI::App* sub = subcommand_named(*cmd, argv[i]);
+        if (sub == nullptr) break;
+        cmd = sub;
+        ++i;
+    }
+    const std::string help = cmd == &app ? "vssw --help" : "vssw " + cmd->get_name() + " --help";
+    for (; i < argc; ++i) {
+        const std::string word = argv[i];
+        if (word == "--") break;  // what follows are positional arguments
+        if (!looks_like_option(word)) continue;
+        if (word[1] != '-') {
+            if (word.size() == 2) continue;  // -h
+            const std::string long_name = "-" + word;
+            if (cmd->get_option_no_throw(long_name) != nullptr)
+                throw InputError(fmt::format("unknown option {}; did you mean {}?", word, long_name));
+            throw InputError(fmt::format("unknown option {} (options start with --; see '{}')", word, help));
+        }
+        const std::size_t equals = word.find('=');
+        const CLI::Option* option = cmd->get_option_no_throw(word.substr(0, equals));
+        if (option == nullptr || !takes_value(*option)) continue;  // unknown ones: CLI11 names them
+        if (equals != std::string::npos) {
+            if (equals + 1 == word.size()) throw InputError(empty_value_message(*option));
+            continue;
+        }
+        if (i + 1 < argc && looks_like_option(argv[i + 1]))
+            throw InputError(fmt::format("{} needs a value, got none (the next word, {}, is an option)",
+                                         option->get_name(), argv[i + 1]));
+    }
+}
+
+}  // namespace vssw::cli
