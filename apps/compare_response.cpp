@@ -123,7 +123,8 @@ void compare_response(const ResponseCompareRequest& request, std::ostream& out) 
     }();
     const study::CaseSpec c = grid.make_case(grid.case_ids().front());
     // A step too coarse for the wall or the motion is bad input here, before any run (in a study: a failed row).
-    for (const study::RunSpec& run : grid.runs()) study::require_run_resolves(grid, c, run);
+    for (const study::RunSpec& run : grid.runs())
+        study::require_run_resolves(grid, c, run, *multibody::make_engine(run.engine));
 
     std::vector<RunResult> runs;
     for (std::size_t r = 0; r < grid.runs().size(); ++r) {

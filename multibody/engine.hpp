@@ -155,6 +155,9 @@ public:
     // one task at a time (compare/suite.hpp, study/runner.cpp). make_engine()'s isolated engines are each run in a
     // process of its own and say true.
     virtual bool runs_concurrently() const { return true; }
+    // Whether settings.dt is only the trajectory's sampling (the analytic model, Simbody's compliant route: their
+    // integrators pick their own steps and see the ground motion between samples) rather than the engine's step.
+    virtual bool dt_is_a_reporting_interval() const { return false; }
     // Wall time per simulated second at the default settings [s/s], measured (README, "Speed"): callers order their
     // tasks longest first by it (compare/task_pool.hpp); only the order depends on it.
     virtual double cost_per_simulated_second() const = 0;

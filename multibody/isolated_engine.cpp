@@ -63,6 +63,7 @@ public:
     void check_settings(const EngineSettings& settings) const override { inner_->check_settings(settings); }
     // Each run in its own process: two never share the library's process-wide state.
     bool runs_concurrently() const override { return true; }
+    bool dt_is_a_reporting_interval() const override { return inner_->dt_is_a_reporting_interval(); }
     double cost_per_simulated_second() const override { return inner_->cost_per_simulated_second(); }
 
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,

@@ -37,7 +37,7 @@ long sample_every(const EngineSettings& settings, double dt) {
 }
 
 RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt,
-                       FailureLimits limits)
+                       FailureLimits limits, bool dt_steps_the_motion)
     : engine_(std::move(engine)),
       b_(block_sizes(scene).b),
       friction_(scene.friction),
@@ -55,7 +55,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
         throw InputError(fmt::format("{}: dt = {:g} s would take {:.3g} steps for this run's {:g} s, more than the {:g} "
                                      "allowed: give a larger step",
                                      engine_, dt, ex.t_end / dt, ex.t_end, kMaxStepsPerRun));
-    require_step_resolves(engine_, scene, ex, dt);
+    require_step_resolves(engine_, scene, ex, dt, dt_steps_the_motion);
 }
 
 RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const BaseCorners& c) {

@@ -40,8 +40,10 @@ class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
 
-    // InputError when ex.t_end / dt exceeds kMaxStepsPerRun, naming dt.
-    RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, FailureLimits limits);
+    // InputError when ex.t_end / dt exceeds kMaxStepsPerRun, or dt cannot resolve the run (step_resolution.hpp),
+    // naming dt. dt_steps_the_motion false: dt is a reporting interval (the integrator picks its own steps).
+    RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, FailureLimits limits,
+               bool dt_steps_the_motion = true);
 
     // Throws EngineFailure on a failure; otherwise says whether the run goes on.
     Verdict check(double t, double theta1, double theta1_dot, const BaseCorners& corners);

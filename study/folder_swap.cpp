@@ -2,6 +2,7 @@
 
 #include <stdio.h>  // renameat2, RENAME_EXCHANGE (glibc 2.28)
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -90,6 +91,47 @@ void carry(const fs::path& from, const fs::path& to) {
     else fs::copy_file(from, to);
 }
 
+// The first folder below `target` on another file system than target's own (a mount point inside --out), or empty.
+// The swap carries the old folder's files over and removes the old folder: across a mount point that would copy a
+// whole file system's files and then delete them from it.
+fs::path mount_point_inside(const fs::path& target) {
+    struct stat top {};
+    if (::stat(target.c_str(), &top) != 0) return {};
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(target, fs::directory_options::skip_permission_denied, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (!it->is_directory(ec) || it->is_symlink(ec)) continue;
+        struct stat st {};
+        if (::lstat(it->path().c_str(), &st) == 0 && st.st_dev != top.st_dev) return it->path();
+    }
+    return {};
+}
+
+// Whether `inner` is `outer` or lies inside it (both resolved).
+bool within(const fs::path& inner, const fs::path& outer) {
+    const auto mismatch = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+    return mismatch.first == outer.end();
+}
+
+// Staging folders beside `target` (".NAME.vssw-tmp-PID") left by a run killed outright (SIGKILL, a power cut): their
+// process is gone, so nothing will finish or remove them. A folder whose process id belongs to a live process is kept
+// (that process may be a vssw writing it, or the id was reused: either way not ours to remove).
+void remove_stale_staging(const fs::path& target) {
+    const std::string prefix = "." + target.filename().string() + ".vssw-tmp-";
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(target.parent_path(), ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind(prefix, 0) != 0) continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+        const long pid = std::stol(digits);
+        if (pid == static_cast<long>(::getpid())) continue;
+        if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        std::error_code ignored;
+        fs::remove_all(e.path(), ignored);
+    }
+}
+
 }  // namespace
 
 void check_out_folder(const fs::path& dir, OutKind kind) {
@@ -123,7 +165,20 @@ void check_out_folder(const fs::path& dir, OutKind kind) {
                                          dir.string()));
         if (::access(target.c_str(), W_OK | X_OK) != 0)
             throw InputError(fmt::format("--out '{}' cannot be written: {}", dir.string(), std::strerror(errno)));
+        if (const fs::path mount = mount_point_inside(target); !mount.empty())
+            throw InputError(fmt::format("--out '{}' holds a mount point ('{}'): vssw replaces its results folder as a "
+                                         "whole and would carry that file system's files over; give --out a folder "
+                                         "without one",
+                                         dir.string(), mount.string()));
+        std::error_code cwd_ec;
+        const fs::path cwd = resolve(fs::current_path(cwd_ec));
+        if (!cwd_ec && within(cwd, target))
+            throw InputError(fmt::format("--out '{}' holds the current folder ('{}'): vssw replaces its results folder "
+                                         "as a whole, which would leave this shell in a removed folder; give --out a "
+                                         "folder beside or below it",
+                                         dir.string(), cwd.string()));
     }
+    remove_stale_staging(target);
     // The staging folder: made and removed now, so that a read-only or full place fails before the run. Where the
     // folder's parent does not exist yet, in the nearest one that does (the rest is made at the end).
     fs::path parent = target.parent_path();

@@ -233,12 +233,13 @@ std::size_t threshold_metric(const Grid& grid) {
 
 }  // namespace
 
-void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
-    if (run.engine == "analytic") return;  // its dt is the sampling only: its integrator steps on its own
+void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine) {
+    if (engine.name() == "analytic") return;  // its dt is the sampling only, and it has no wall rule to meet
     multibody::Excitation ex;
     ex.horizontal = case_motion(grid, c, c.scale);
     ex.t_end = ex.horizontal.duration() + kResponseTail;
-    multibody::require_step_resolves(run.engine, c.scene, ex, run.settings.dt);
+    multibody::require_step_resolves(engine.display_name(), c.scene, ex, run.settings.dt,
+                                     !engine.dt_is_a_reporting_interval());
 }
 
 Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,

@@ -52,7 +52,7 @@ bool measures_threshold(const Grid& grid, const CaseSpec& c);
 // Throws InputError, naming the step and the time scales, when an engine run's step cannot resolve the case's wall
 // or its ground motion (multibody/step_resolution.hpp): `vssw compare` under a record or pulse refuses such a step
 // before it runs anything (in a study the run fails with the same message: a failed row).
-void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run);
+void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine);
 
 // A rough cost of the run [s] (its threshold apart), and of a threshold task, for ordering tasks longest first
 // (compare/task_pool.hpp).

@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
@@ -302,6 +303,33 @@ TEST(StepResolution, AStepCoarserThanThePulseOrTheWallIsRefusedNamingBoth) {
     constexpr double kRounding = 1e-12;  // a closed form against the model's energy: rounding only
     EXPECT_NEAR(multibody::wall_time_scale(WallScene::of(p)),
                 p.alpha / std::sqrt(3.0 * p.g * (1.0 - std::cos(p.alpha)) / (2.0 * R)), kRounding);
+}
+
+// A record's time scale is its content's, not its sampling's: a 1 Hz sine sampled every 0.5 ms (a shake table's
+// 2 kHz) and every 10 ms has the same, a quarter period (to the end effects of counting 19 sign changes in 10
+// cycles: 10 / 38 s against 0.25 s), so ODE's 1 ms step passes on both and a 0.2 s step on neither.
+TEST(StepResolution, ARecordsTimeScaleIsItsContentsNotItsSampling) {
+    constexpr double kPi = 3.14159265358979323846;
+    constexpr double kEndEffects = 0.06;  // one sign change of 19 missing at the record's ends
+    const auto sine_record = [&](double dt) {
+        std::vector<double> t, a;
+        for (int i = 0; i * dt <= 10.0 + 1e-12; ++i) {
+            t.push_back(i * dt);
+            a.push_back(std::sin(2.0 * kPi * (i * dt + 0.1)));  // a phase: no sample lands on a zero
+        }
+        return GroundMotion::sampled(t, a, "sine");
+    };
+    for (const double dt : {5e-4, 1e-2}) {
+        SCOPED_TRACE(dt);
+        Excitation ex;
+        ex.horizontal = sine_record(dt);
+        ex.t_end = 12.0;
+        EXPECT_NEAR(multibody::excitation_time_scale(ex.horizontal), 0.25, 0.25 * kEndEffects);
+        EXPECT_NO_THROW(multibody::require_step_resolves("ode", fig6(), ex, 1e-3));
+        EXPECT_THROW(multibody::require_step_resolves("ode", fig6(), ex, 0.2), InputError);
+        // A reporting interval (Simbody's compliant route) is held to the wall's rule alone.
+        EXPECT_NO_THROW(multibody::require_step_resolves("simbody", fig6(), ex, 0.03, false));
+    }
 }
 
 TEST(StepResolution, EveryEngineRefusesAStepLongerThanTheRunNeeds) {

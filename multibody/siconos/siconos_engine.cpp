@@ -197,7 +197,7 @@ std::vector<SettingDescription> setting_table() {
         {"e_roller", "0", "", "Newton's coefficient at the roller's guides, in [0, 1]", 0.0, 1.0},
         {"theta", "0.5", "", "Moreau-Jean's theta-method weight on the smooth forces, in [0.5, 1]", 0.5, 1.0},
         {"gamma", "0.5", "", "a contact joins a step when its gap predicted gamma steps ahead is closed, in [0, 1]", 0.0, 1.0},
-        {"tolerance", "1e-06", "", "the contact solver's relative residual, in (0, 1)", 1e-16, 0.1},
+        {"tolerance", "1e-06", "", "the contact solver's relative residual", 1e-16, 0.1},
         {"nonlinear", "0", "0/1", "1: iterate each step's Newton loop on the contact geometry; 0: linearise once", 0.0, 1.0},
     });
 }

@@ -230,6 +230,7 @@ public:
     // README "Speed": the compliant route (CPodes, reports every 2 ms) 65 ms, the rigid route at 0.5 ms 189 ms per
     // simulated second.
     double cost_per_simulated_second() const override { return compliant_ ? 65e-3 : 189e-3; }
+    bool dt_is_a_reporting_interval() const override { return compliant_; }  // CPodes picks its steps
     std::string version() const override {
         int major = 0, minor = 0, build = 0;
         SimTK_version_simbody(&major, &minor, &build);
