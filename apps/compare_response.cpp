@@ -53,6 +53,13 @@ nlohmann::json study_document(const ResponseCompareRequest& r) {
                 *m.scale);
     nlohmann::json ex;
     if (m.record) {
+        // The run goes through the study machinery, whose records carry their own times (AT2 headers, two columns,
+        // a CSV with a time column): a file that needs --record-dt or named columns was read as two columns and
+        // refused with a message about its numbers. Said as it is instead.
+        if (!m.format.is_default())
+            throw InputError("--record-dt, --time-column and --accel-column are read by history and free, not yet by "
+                             "compare: give compare a record with its times (an AT2 file, two columns, or a CSV whose "
+                             "first two columns are time and acceleration)");
         ex = {{"kind", "record"}, {"file", *m.record}};
         if (m.units) ex["units"] = *m.units;
         if (m.scale) ex["scale"] = *m.scale;

@@ -187,6 +187,18 @@ TEST(CompareResponse, ARecordAndAReleaseAreRefusedTogether) {
     EXPECT_NE(both.err.find("either --record or --pulse"), std::string::npos) << both.err;
 }
 
+// compare reads a record the way a study does (with its times): --record-dt is refused saying so, not read as a
+// two-column file and refused for its numbers (it said "expected 2 numbers (time, acceleration)").
+TEST(CompareResponse, ARecordFormatOptionIsRefusedSayingWhy) {
+    const TempDir dir;
+    const std::string record = write_file(dir / "acc.txt", "0.01\n0.02\n-0.01\n0.0\n").string();
+    const auto r = run_cli({"compare", "--engine", "analytic", "--record", record, "--record-dt", "0.001", "--pga",
+                            "0.3", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--record-dt"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("not yet by compare"), std::string::npos) << r.err;
+}
+
 // More shards than cases: a shard with no case writes empty results, and the shards still merge into the study.
 TEST(StudyCli, AnEmptyShardIsEmptyResultsNotAnError) {
     const TempDir dir;
