@@ -30,6 +30,7 @@
 #include "study/folder_lock.hpp"
 #include "study/folder_swap.hpp"
 #include "study/grid.hpp"
+#include "study/measure.hpp"
 #include "study/merge.hpp"
 #include "study/metric_catalog.hpp"
 #include "study/mpi.hpp"
@@ -183,6 +184,8 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
         grid.emplace(spec);
         // A shard may be empty (more shards than cases): it writes empty results, which merge as such.
         if (grid->case_ids().empty()) throw InputError(fmt::format("study file {}: the grid has no case to run", o.file));
+        // An engine step too coarse for a case's wall or ground motion: refused here, before any folder is made.
+        study::require_runs_resolve(*grid, grid->shard_case_ids(run.shard.k, run.shard.n));
         if (leader) {
             study::check_inputs_not_outputs(o.out, study::OutKind::study, study_inputs(o.file, *grid));
             lock = study::prepare_study_dir(*grid, o.out, run);

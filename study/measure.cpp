@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include <fmt/format.h>
@@ -240,6 +241,27 @@ void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& ru
     ex.t_end = ex.horizontal.duration() + kResponseTail;
     multibody::require_step_resolves(engine.display_name(), c.scene, ex, run.settings.dt,
                                      !engine.dt_is_a_reporting_interval());
+}
+
+void require_runs_resolve(const Grid& grid, const std::vector<int>& case_ids) {
+    std::vector<std::unique_ptr<multibody::Engine>> engines;
+    for (const RunSpec& run : grid.runs()) engines.push_back(multibody::make_engine(run.engine));
+    for (const int id : case_ids) {
+        const CaseSpec c = grid.make_case(id);
+        for (std::size_t r = 0; r < grid.runs().size(); ++r) {
+            const RunSpec& run = grid.runs()[r];
+            if (run.part != c.part || run.engine == "analytic") continue;
+            const ExcitationKind kind = grid.spec().parts[c.part].kind;
+            if (kind != ExcitationKind::pulse && kind != ExcitationKind::record &&
+                kind != ExcitationKind::scale_to_collapse)
+                continue;  // free vibration and thresholds: the engine's own check names the step when it runs
+            try {
+                require_run_resolves(grid, c, run, *engines[r]);
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("case {} ({} {}): {}", id, run.engine, run.settings_text, e.what()));
+            }
+        }
+    }
 }
 
 Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,

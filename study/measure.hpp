@@ -51,8 +51,11 @@ bool measures_threshold(const Grid& grid, const CaseSpec& c);
 
 // Throws InputError, naming the step and the time scales, when an engine run's step cannot resolve the case's wall
 // or its ground motion (multibody/step_resolution.hpp): `vssw compare` under a record or pulse refuses such a step
-// before it runs anything (in a study the run fails with the same message: a failed row).
+// before it runs anything, and so does `vssw study` (require_runs_resolve).
 void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine);
+// require_run_resolves for every run of each of these cases (a study's, before anything runs): InputError naming the
+// first case and run whose step cannot resolve it.
+void require_runs_resolve(const Grid& grid, const std::vector<int>& case_ids);
 
 // A rough cost of the run [s] (its threshold apart), and of a threshold task, for ordering tasks longest first
 // (compare/task_pool.hpp).

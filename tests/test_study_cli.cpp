@@ -8,6 +8,7 @@
 #include <string>
 
 #include "tests/cli_runner.hpp"
+#include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
 
 namespace {
@@ -363,3 +364,35 @@ TEST(StudyCli, AResumeOfAFolderThatIsNotThereIsRefusedAndMakesNone) {
 }
 
 }  // namespace
+
+namespace {
+
+// A step too coarse for a case's ground motion is refused before any folder is made, naming the case and the run
+// (it gave rows "ok" with a peak of 0, exit 0).
+TEST(StudyCli, AStepTooCoarseForACaseIsRefusedBeforeAnything) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE is not built";
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", R"(
+metrics = ["peak_rotation"]
+engines = ["analytic", "ode"]
+[wall]
+height = 4
+thickness = 0.4
+hinge = 0.7
+[excitation]
+kind = "pulse"
+shape = "sine"
+amplitude = 0.5
+pulse_period = 0.5
+[settings.ode]
+dt = [0.001, 1000.0]
+)").string();
+    const auto r = run_cli({"study", file, "--out", (dir / "out").string(), "--no-plots"});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("case 1 (ode dt=1000)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("for the ground motion"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+}  // namespace
+
