@@ -97,6 +97,7 @@ Json manifest_json(const Grid& grid, const StudyMeta& meta) {
     j["wall_time_s"] = meta.wall_time_s;
     j["threads"] = meta.threads;
     j["processes"] = meta.processes;
+    j["run_budget_s"] = meta.run_budget_s ? nlohmann::ordered_json(*meta.run_budget_s) : nlohmann::ordered_json(nullptr);
     return j;
 }
 

@@ -12,6 +12,7 @@
 // Each is written to a temporary file and renamed into place (study/atomic_file.hpp).
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct StudyMeta {
     double wall_time_s = 0.0;
     int threads = 1;    // worker threads per process
     int processes = 1;  // MPI processes (1 without MPI)
+    // --run-budget as given (seconds of CPU per engine run); none: the default, 30 s + 1 ms per step (a row failed
+    // for its budget depends on it; multibody/run_budget.hpp)
+    std::optional<double> run_budget_s;
     long tasks_run = 0, tasks_resumed = 0;  // this run's tasks, and those a --resume found done
     // results.csv as written: its rows and the FNV-1a 64 of its bytes (manifest "results"), so that `study merge`
     // can tell a shard's file cut short, given a row twice or edited. rows < 0: not recorded.

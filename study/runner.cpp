@@ -18,7 +18,7 @@
 #include "analytic/error.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/worker_process.hpp"
+#include "multibody/run_budget.hpp"
 #include "study/atomic_file.hpp"
 #include "study/clock.hpp"
 #include "study/folder_swap.hpp"
@@ -279,6 +279,7 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
             }
     }
     result.meta.commit = options.commit;
+    result.meta.run_budget_s = multibody::RunBudget::given();
     result.meta.date = utc_now();
     result.meta.shard = options.shard;
     result.meta.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -396,3 +396,19 @@ dt = [0.001, 1000.0]
 
 }  // namespace
 
+
+namespace {
+
+// A row failed for its budget depends on --run-budget: the manifest says which was given (null: the default).
+TEST(StudyCli, TheManifestRecordsTheRunBudget) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string();
+    ASSERT_EQ(run_cli({"study", file, "--out", (dir / "given").string(), "--no-plots", "--run-budget", "50"}).code, 0);
+    ASSERT_EQ(run_cli({"study", file, "--out", (dir / "default").string(), "--no-plots"}).code, 0);
+    const auto given = nlohmann::json::parse(vssw::testing::read_file(dir / "given" / "manifest.json"));
+    const auto by_default = nlohmann::json::parse(vssw::testing::read_file(dir / "default" / "manifest.json"));
+    EXPECT_EQ(given["run_budget_s"], 50.0);
+    EXPECT_TRUE(by_default["run_budget_s"].is_null());
+}
+
+}  // namespace
