@@ -1,7 +1,7 @@
 #pragma once
 // Experiments run through any Engine (the analytic model included, as multibody::AnalyticEngine), measured with
 // compare/metrics.hpp only: the threshold acceleration by bisection on simulations, the free vibration from rest, and
-// the comparison of an engine with the analytic model on threshold, period and restitution (DESIGN.md, "Metrics").
+// the comparison of an engine with the analytic model on threshold, period and restitution (README, "Engines").
 #include <optional>
 #include <string>
 #include <vector>

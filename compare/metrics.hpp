@@ -1,6 +1,6 @@
 #pragma once
-// Metrics of a sampled trajectory, one code path for every backend (DESIGN.md, "Metrics, defined once for every
-// backend"): the analytic integrator and each engine are measured by these functions only, from the samples of a
+// Metrics of a sampled trajectory, one code path for every backend (README, "Engines": the metrics are defined once for
+// every backend): the analytic integrator and each engine are measured by these functions only, from the samples of a
 // multibody::Trajectory, never from a backend's own event list.
 //
 // Impacts are where theta1 changes sign; turning points (peaks) are where theta1_dot changes sign away from

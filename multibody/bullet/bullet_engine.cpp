@@ -108,9 +108,9 @@ public:
         const double g = scene.gravity();
         world_.setGravity(btVector3(0, -g, 0));
         btContactSolverInfo& info = world_.getSolverInfo();
-        // Settings from ../shared/DESIGN.md, each measured on a rocking block: no restitution below any velocity, no
-        // warm start (a rocking contact jumps from corner to corner), no slop, split impulse so that position
-        // correction adds no energy.
+        // Settings from docs/engines.md ("The libraries as Debian ships them"), each measured on a rocking block: no
+        // restitution below any velocity, no warm start (a rocking contact jumps from corner to corner), no slop,
+        // split impulse so that position correction adds no energy.
         info.m_numIterations = knobs.iterations;
         info.m_restitutionVelocityThreshold = 0;
         info.m_warmstartingFactor = 0;

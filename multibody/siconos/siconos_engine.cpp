@@ -15,9 +15,10 @@
 //  - N: a force (0, -N) at the centre of the top face, its moment taken at the step's start pose (as the other
 //    adapters apply it); ground motion: pseudo-forces -m a_h(t) at the centres of mass, a_h at the step's midpoint.
 //
-// Impacts: Newton's law at each contact, e = 0 by default (the plastic landing of every other adapter), so a landing
-// is the plastic impact of the whole new mechanism (pivot, hinge, roller; DESIGN.md "Established by measurement").
-// Settings e_ground, e_hinge and e_roller set the coefficient per kind of contact (docs/engines.md, "Siconos").
+// Impacts: Newton's law at each contact, e = 0 by default (the plastic landing of every other adapter), so a landing is
+// the plastic impact of the whole new mechanism (pivot, hinge, roller; README "The validation report", --impact
+// whole-mechanism). Settings e_ground, e_hinge and e_roller set the coefficient per kind of contact (docs/engines.md,
+// "Siconos").
 //
 // Time stepping: Moreau-Jean (theta-method on the smooth part, impulses over the step; a contact joins the step's
 // problem when its gap predicted half a step ahead closes). The one-step problem is a 2-D frictional contact problem
