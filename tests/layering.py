@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""The code's layering as a check (issue 28 asks for one before its redesign): each folder includes only the folders
+below it, and each engine library's headers stay inside that engine's adapter folder.
+
+    analytic  <-  multibody  <-  compare  <-  study, stress  <-  apps  <-  python
+    (bench and tests may include any folder of the program)
+
+Exit 0 when every `#include "folder/..."` and every engine header include keeps to that; otherwise 1, one line per
+include that does not (file:line, what it includes, what the folder may include). Update LAYERS together with the
+layout when the folders change.
+usage: layering.py SOURCE_DIR
+"""
+import pathlib
+import re
+import sys
+
+# What each folder may include besides itself.
+PROGRAM = {"analytic", "multibody", "compare", "study", "stress", "apps"}
+LAYERS = {
+    "analytic": set(),
+    "multibody": {"analytic"},
+    "compare": {"analytic", "multibody"},
+    "study": {"analytic", "multibody", "compare"},
+    "stress": {"analytic", "multibody", "compare"},
+    "apps": {"analytic", "multibody", "compare", "study", "stress"},
+    "python": {"apps"},
+    "bench": PROGRAM,
+    "tests": PROGRAM | {"tests"},
+}
+# An engine library's headers (by the start of the included name) and the one folder that may include them.
+ENGINE_HEADERS = {
+    "multibody/bullet": re.compile(r"(btBullet|Bullet|LinearMath|BulletCollision|BulletDynamics)"),
+    "multibody/ode": re.compile(r"ode/"),
+    "multibody/simbody": re.compile(r"(Simbody|SimTK|simbody/)"),
+    "multibody/siconos": re.compile(r"(Siconos|siconos|TimeStepping|TimeDiscretisation|SolverOptions|SimulationGraphs|"
+                                    r"SimpleMatrix|NonSmoothDynamicalSystem|NewtonImpact|MoreauJeanOSI|LagrangianLinearTIDS|"
+                                    r"FrictionContact|NumericsMatrix)"),
+}
+QUOTED = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
+ANGLED = re.compile(r"^\s*#\s*include\s+<([^>]+)>")
+
+
+def main(source):
+    root = pathlib.Path(source)
+    problems = []
+    checked = 0
+    for folder, allowed in LAYERS.items():
+        for path in sorted((root / folder).rglob("*")):
+            relative = path.relative_to(root).as_posix()
+            if path.suffix not in (".cpp", ".hpp", ".h") or not path.is_file() or "layering_fixture" in relative:
+                continue  # the fixture is a tree of its own (tests/layering_fixture: two includes out of place)
+            for number, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+                quoted = QUOTED.match(line)
+                if quoted:
+                    checked += 1
+                    target = quoted.group(1)
+                    if target != folder and target not in allowed and target in LAYERS:
+                        may = f"only {', '.join(sorted(allowed))}" if allowed else "no other folder"
+                        problems.append(f"{relative}:{number}: includes {target}/, but {folder}/ may include {may}")
+                angled = ANGLED.match(line)
+                if angled:
+                    for home, pattern in ENGINE_HEADERS.items():
+                        if pattern.match(angled.group(1)) and not relative.startswith(home + "/"):
+                            checked += 1
+                            problems.append(f"{relative}:{number}: includes <{angled.group(1)}>, an engine library's "
+                                            f"header, outside {home}/")
+    for p in problems:
+        print(p)
+    print(f"layering: {checked} includes checked, {len(problems)} out of place")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    sys.exit(main(sys.argv[1]))
