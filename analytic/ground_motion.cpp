@@ -324,7 +324,7 @@ std::vector<std::string> fields_of(const std::string& line, bool by_commas) {
     const std::string data = line.substr(0, line.find('#'));
     if (!by_commas) return split(data, " \t\r");
     std::vector<std::string> fields;
-    if (excerpt(trim(data)).empty()) return fields;
+    if (trim(data).empty()) return fields;
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = data.find(',', start);

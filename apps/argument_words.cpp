@@ -38,14 +38,16 @@ bool takes_value(const CLI::Option& option) {
 void check_argument_words(const CLI::App& app, int argc, const char* const* argv) {
     const CLI::App* cmd = &app;
     int i = 1;
-    // The command (and `study merge`): the first words, when they name one.
+    // The command (and `study merge`): the first words, when they name one; the help names them all.
+    std::string command = "vssw";
     while (i < argc) {
         const CLI::App* sub = subcommand_named(*cmd, argv[i]);
         if (sub == nullptr) break;
         cmd = sub;
+        command += " " + sub->get_name();
         ++i;
     }
-    const std::string help = cmd == &app ? "vssw --help" : "vssw " + cmd->get_name() + " --help";
+    const std::string help = command + " --help";
     for (; i < argc; ++i) {
         const std::string word = argv[i];
         if (word == "--") break;  // what follows are positional arguments

@@ -18,8 +18,8 @@
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/version_text.hpp"
-#include "study/text.hpp"
 #include "multibody/run_budget.hpp"
+#include "study/text.hpp"
 
 namespace vssw::cli {
 namespace {

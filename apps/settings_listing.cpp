@@ -23,9 +23,7 @@ std::string flag_of(const std::string& name) {
 // The range column: a knob's documented range without its unit (the unit has its own column); dt and iterations have
 // rules of their own (a step the run can resolve, README "Bad input"; --iterations 1 to 1000).
 std::string range_of(const multibody::SettingDescription& s) {
-    if (!multibody::is_knob(s.name)) return "-";
-    if (std::isinf(s.lo) && std::isinf(s.hi)) return "any";
-    return fmt::format("[{:g}, {:g}]", s.lo, s.hi);
+    return multibody::is_knob(s.name) ? multibody::range_bounds_text(s) : "-";
 }
 
 // A range's end in JSON: null when unbounded.

@@ -83,7 +83,9 @@ struct SettingDescription {
     double hi = std::numeric_limits<double>::infinity();
 };
 
-// "[0, 1]", "[1e-06, 1] m", "any" for an unbounded one: how a range is printed.
+// "[0, 1]", "[1e-06, 1]", "any" for an unbounded one: a range's ends (--list-settings prints the unit beside them).
+std::string range_bounds_text(const SettingDescription& d);
+// The same with the unit: "[1e-06, 1] m" (for messages).
 std::string range_text(const SettingDescription& d);
 
 // dt and iterations are EngineSettings' own fields; every other setting an engine describes is one of its knobs.

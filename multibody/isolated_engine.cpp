@@ -68,8 +68,8 @@ public:
 
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                         const EngineSettings& settings) const override {
-        // Settings are checked here, in this process, so that bad input is an InputError before any fork.
-        inner_->check_settings(settings);
+        // A bad setting comes back from the child as the InputError the adapter throws (callers check settings before
+        // they run anything: check_settings above).
         WorkerLimits limits;
         limits.cpu_seconds = RunBudget::seconds(excitation.t_end, settings.dt);
         limits.wall_seconds = kWallSecondsPerBudgetSecond * limits.cpu_seconds;

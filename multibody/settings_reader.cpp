@@ -28,10 +28,14 @@ SettingsReader::SettingsReader(std::string engine, const EngineSettings& setting
     }
 }
 
-std::string range_text(const SettingDescription& d) {
+std::string range_bounds_text(const SettingDescription& d) {
     if (std::isinf(d.lo) && std::isinf(d.hi)) return "any";
-    const std::string unit = d.unit == "0/1" || d.unit == "choice" || d.unit.empty() ? "" : " " + d.unit;
-    return fmt::format("[{:g}, {:g}]{}", d.lo, d.hi, unit);
+    return fmt::format("[{:g}, {:g}]", d.lo, d.hi);
+}
+
+std::string range_text(const SettingDescription& d) {
+    const bool unitless = d.unit == "0/1" || d.unit == "choice" || d.unit.empty();
+    return range_bounds_text(d) + (unitless ? "" : " " + d.unit);
 }
 
 double SettingsReader::value(const std::string& name, double fallback) const {

@@ -55,10 +55,6 @@ void limit_child(double cpu_seconds) {
 
 }  // namespace
 
-std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who) {
-    return run_in_worker_process(work, who, WorkerLimits{});
-}
-
 std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who,
                                        const WorkerLimits& limits) {
     std::string_view out;  // in place, where it was received (a task's rows: no copy)

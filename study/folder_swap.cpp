@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "study/folder_lock.hpp"
 #include "study/temp_registry.hpp"
 
 namespace vssw::study {
@@ -58,7 +59,7 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 
 // vssw's own hidden files, whatever the command: the study's lock, an old write probe, temporary files and folders.
 bool vssw_hidden(const std::string& name) {
-    return name == ".vssw-lock" || name == ".vssw-write-test" || name.find(".vssw-tmp-") != std::string::npos;
+    return name == kLockFile || name == ".vssw-write-test" || name.find(".vssw-tmp-") != std::string::npos;
 }
 
 // --out resolved: absolute, symlinks followed (the staging folder goes beside the real folder, and a symlink named
@@ -290,7 +291,9 @@ void StagedFolder::commit() {
         std::error_code back;
         fs::rename(aside, target_, back);
         register_temp(staging_);
-        throw InputError(fmt::format("--out '{}': cannot move the new results in: {}", dir_.string(), ec.message()));
+        // When the old folder cannot go back either, say where it is: it is the user's earlier results.
+        throw InputError(fmt::format("--out '{}': cannot move the new results in: {}{}", dir_.string(), ec.message(),
+                                     back ? fmt::format(" (the earlier results are in '{}')", aside.string()) : ""));
     }
     committed_ = true;
     const TempRegistration registered(aside);

@@ -58,10 +58,9 @@ bool write_text(const fs::path& path, const std::string& text) {
     }
 }
 
-}  // namespace
-
-namespace {
+// Newline, CR, tab, the other C0 codes and DEL: what gnuplot text and comments turn into spaces.
 bool is_control(char c) { return static_cast<unsigned char>(c) < 0x20 || c == '\x7f'; }
+
 }  // namespace
 
 std::string gp_string(const std::string& text) {

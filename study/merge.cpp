@@ -134,7 +134,7 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
 
     std::error_code ec;
     fs::create_directories(dest, ec);
-    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", out.string(), ec.message()));
+    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", dest.string(), ec.message()));
 
     // results.csv: the shards' case blocks in case order (each shard's file is in case order already).
     std::vector<std::unique_ptr<ShardReader>> readers;

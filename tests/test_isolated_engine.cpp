@@ -8,7 +8,6 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -175,20 +174,17 @@ TEST(IsolatedEngine, ErrorsComeBackAsTheirOwnType) {
 TEST(IsolatedEngine, ARunThatNeverEndsFailsAtItsBudgetNamingIt) {
     // The smallest budget a user may give (the kernel counts whole seconds); the run spins on the CPU.
     multibody::RunBudget::set(multibody::RunBudget::kMinSeconds);
-    const auto start = std::chrono::steady_clock::now();
     const std::string why = failure_of(How::spins);
-    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     multibody::RunBudget::set(std::nullopt);
-    EXPECT_NE(why.find("budget of 1 s of CPU time (--run-budget)"), std::string::npos) << why;
-    // Ended by the budget, not by the wall-clock safety net (20 times the budget).
-    EXPECT_LT(took, 20.0 * multibody::RunBudget::kMinSeconds) << why;
+    // "passed its budget": ended by the kernel's CPU limit; the wall-clock safety net says "stopped after".
+    EXPECT_NE(why.find("passed its budget of 1 s of CPU time (--run-budget)"), std::string::npos) << why;
 }
 
 TEST(RunBudget, TheDefaultGrowsWithTheStepsAndAGivenOneIsChecked) {
     multibody::RunBudget::set(std::nullopt);
-    const double steps = 2.0 / 1e-3;
-    EXPECT_DOUBLE_EQ(multibody::RunBudget::seconds(2.0, 1e-3),
-                     multibody::RunBudget::kBaseSeconds + multibody::RunBudget::kSecondsPerStep * steps);
+    // 30 s + 1 ms for each of a 2 s run's 2,000 steps at 1 ms (the README's figure); twice the steps, 2 s more.
+    EXPECT_DOUBLE_EQ(multibody::RunBudget::seconds(2.0, 1e-3), 32.0);
+    EXPECT_DOUBLE_EQ(multibody::RunBudget::seconds(4.0, 1e-3), 34.0);
     EXPECT_NE(multibody::RunBudget::describe(2.0, 1e-3).find("--run-budget"), std::string::npos);
     for (const double bad : {0.0, 0.5, -1.0, 2e6, std::numeric_limits<double>::infinity()})
         EXPECT_THROW(multibody::RunBudget::set(bad), InputError) << bad;
@@ -241,7 +237,7 @@ TEST(IsolatedEngine, ResultsAreThoseOfTheRunInThisProcess) {
 }
 
 // Every knob of every engine outside its documented range is refused as bad input naming the value, before the
-// library sees it; both ends of each range are accepted.
+// library sees it (the defaults, inside, are accepted: SettingDescriptions.EveryKnobDescribedIsAcceptedAndNoOtherIs).
 TEST(SettingRanges, AKnobOutsideItsRangeIsRefusedNamingIt) {
     for (const std::string& name : multibody::available_engines()) {
         const auto engine = multibody::make_engine(name);

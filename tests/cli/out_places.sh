@@ -3,7 +3,7 @@
 # leave the shell in a removed folder), a folder holding a mount point (the swap would carry that file system's files
 # over and delete them from it); study merge into a folder holding an unfinished study (it destroyed the journal);
 # a staging folder left by a run killed outright is removed by the next run into that --out.
-# The mount-point case needs root (a tmpfs); elsewhere it alone is skipped, with the reason.
+# The mount-point case, last, needs root (a tmpfs); elsewhere the script skips (exit 77) after the others passed.
 # usage: out_places.sh VSSW SOURCE_DIR WORK_DIR
 set -euo pipefail
 vssw="$1" src="$2" work="$3"
@@ -45,8 +45,8 @@ echo "study merge into an unfinished study: refused, the journal kept"
 mkdir -p m/mnt
 "$vssw" study "$study" --out m --no-plots >/dev/null
 if ! mount -t tmpfs -o size=1m tmpfs m/mnt 2>/dev/null; then
-  echo "SKIP (this case only): cannot mount a tmpfs here (not root): the mount-point case needs one"
-  exit 0
+  echo "SKIP (the other cases passed): cannot mount a tmpfs here (not root): the mount-point case needs one"
+  exit 77
 fi
 echo data > m/mnt/f
 rc=0; "$vssw" study "$study" --out m --no-plots >/dev/null 2>err.txt || rc=$?
