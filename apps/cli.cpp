@@ -11,7 +11,7 @@
 
 #include "analytic/error.hpp"
 #include "apps/argument_words.hpp"
-#include "apps/bounds_violated.hpp"
+#include "validation/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/early_output.hpp"
 #include "apps/option_values.hpp"
@@ -19,7 +19,7 @@
 #include "apps/simulation_failure.hpp"
 #include "apps/version_text.hpp"
 #include "multibody/run_budget.hpp"
-#include "study/text.hpp"
+#include "io/text.hpp"
 
 namespace vssw::cli {
 namespace {

@@ -1,6 +1,6 @@
 // `vssw bench`: work-precision. Each backend swept over the settings that trade cost for accuracy on the reference
-// problems (compare/work_precision.hpp), CPU time against error; the files and plots written into a folder
-// (study/bench_files.hpp), the cheapest settings within the targets printed.
+// problems (validation/work_precision.hpp), CPU time against error; the files and plots written into a folder
+// (validation/bench_files.hpp), the cheapest settings within the targets printed.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -18,11 +18,11 @@
 #include "apps/option_values.hpp"
 #include "apps/simulation_failure.hpp"
 #include "compare/targets.hpp"
-#include "compare/work_precision.hpp"
+#include "validation/work_precision.hpp"
 #include "multibody/engine.hpp"
-#include "study/bench_files.hpp"
-#include "study/clock.hpp"
-#include "study/folder_swap.hpp"
+#include "validation/bench_files.hpp"
+#include "io/clock.hpp"
+#include "io/folder_swap.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT
 
 namespace vssw::cli {
@@ -108,7 +108,7 @@ Command add_bench_command(CLI::App& root) {
                 for (const std::string& name : options.engines)
                     (void)compare::bench_sweep(*multibody::make_engine(name), options.quick);  // settings checked
                 // An unwritable --out fails before the sweep, not after it; nothing is made in it until the files
-                // are complete (a staging folder then replaces it whole: study/folder_swap.hpp).
+                // are complete (a staging folder then replaces it whole: io/folder_swap.hpp).
                 study::check_out_folder(o->out, study::OutKind::bench);
                 study::check_inputs_not_outputs(o->out, study::OutKind::bench, {{"the record", options.record_path}});
 

@@ -14,16 +14,16 @@
 
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
-#include "apps/bounds_file.hpp"
-#include "apps/bounds_violated.hpp"
+#include "validation/bounds_file.hpp"
+#include "validation/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
-#include "apps/stress_bounds.hpp"
+#include "validation/stress_bounds.hpp"
 #include "apps/json.hpp"
 #include "apps/run_budget_option.hpp"
-#include "compare/bounds.hpp"
-#include "compare/suite.hpp"
-#include "study/suite_file.hpp"
+#include "validation/bounds.hpp"
+#include "validation/suite.hpp"
+#include "validation/suite_file.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::cli {

@@ -19,7 +19,7 @@
 #include "apps/ground_motion_options.hpp"
 #include "apps/model_validity.hpp"
 #include "apps/option_values.hpp"
-#include "apps/report_compare.hpp"
+#include "apps/compare_output.hpp"
 #include "apps/settings_listing.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/wall_options.hpp"

@@ -10,7 +10,7 @@
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
 #include "apps/model_validity.hpp"
-#include "apps/report_free.hpp"
+#include "apps/free_output.hpp"
 #include "apps/trajectory_csv.hpp"
 
 namespace vssw::cli {

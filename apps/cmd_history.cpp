@@ -11,7 +11,7 @@
 #include "analytic/error.hpp"
 #include "apps/commands.hpp"
 #include "apps/model_validity.hpp"
-#include "apps/report_history.hpp"
+#include "apps/history_output.hpp"
 #include "apps/trajectory_csv.hpp"
 
 namespace vssw::cli {

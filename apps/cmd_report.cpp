@@ -1,4 +1,4 @@
-// `vssw report`: the validation suite (compare/suite.hpp) run for the analytic model and every engine, written as a
+// `vssw report`: the validation suite (validation/suite.hpp) run for the analytic model and every engine, written as a
 // report (Markdown, HTML with inline plots), machine-readable results (JSON, CSV) and gnuplot plots in one folder.
 #include <unistd.h>
 
@@ -22,13 +22,13 @@
 #include "apps/option_values.hpp"
 #include "apps/progress.hpp"
 #include "apps/run_budget_option.hpp"
-#include "compare/suite.hpp"
+#include "validation/suite.hpp"
 #include "multibody/engine.hpp"
-#include "study/bench_files.hpp"
-#include "study/clock.hpp"
-#include "study/folder_swap.hpp"
-#include "study/report_write.hpp"
-#include "study/suite_file.hpp"
+#include "validation/bench_files.hpp"
+#include "io/clock.hpp"
+#include "io/folder_swap.hpp"
+#include "validation/report_write.hpp"
+#include "validation/suite_file.hpp"
 
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (apps/CMakeLists.txt)
 

@@ -21,8 +21,8 @@
 #include "apps/stress_output.hpp"
 #include "multibody/engine.hpp"
 #include "stress/run.hpp"
-#include "study/atomic_file.hpp"
-#include "study/folder_swap.hpp"
+#include "io/atomic_file.hpp"
+#include "io/folder_swap.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -53,7 +53,7 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     const int threads = parse_threads(o.threads_text);
     for (const std::string& name : o.cases) (void)stress::require_case(name);  // before --out is created
     // Check the folder can be written before anything runs; the files go into a staging folder that replaces it
-    // whole once they are complete (study/folder_swap.hpp).
+    // whole once they are complete (io/folder_swap.hpp).
     if (!o.out_dir.empty()) study::check_out_folder(o.out_dir, study::OutKind::stress);
     const auto start = std::chrono::steady_clock::now();
     stress::RunOptions run;

@@ -27,8 +27,8 @@
 #include "apps/quiet_exit.hpp"
 #include "apps/run_budget_option.hpp"
 #include "apps/simulation_failure.hpp"
-#include "study/folder_lock.hpp"
-#include "study/folder_swap.hpp"
+#include "io/folder_lock.hpp"
+#include "io/folder_swap.hpp"
 #include "study/grid.hpp"
 #include "study/measure.hpp"
 #include "study/merge.hpp"
@@ -212,7 +212,7 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
     run.mpi = mpi ? &*mpi : nullptr;
     // The results are written into a staging folder that replaces --out whole once everything is written; until
     // then --out keeps the journal (a run killed before the swap is resumed from it) and any older results as they
-    // were (study/folder_swap.hpp).
+    // were (io/folder_swap.hpp).
     std::optional<study::StagedFolder> staged;
     if (leader) {
         staged.emplace(o.out, study::OutKind::study);

@@ -8,9 +8,9 @@
 
 #include "analytic/data_dir.hpp"
 #include "apps/commands.hpp"
-#include "apps/report_free.hpp"
-#include "apps/report_history.hpp"
-#include "apps/report_wall.hpp"
+#include "apps/free_output.hpp"
+#include "apps/history_output.hpp"
+#include "apps/wall_output.hpp"
 
 namespace vssw::cli {
 namespace {

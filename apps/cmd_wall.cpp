@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/commands.hpp"
-#include "apps/report_wall.hpp"
+#include "apps/wall_output.hpp"
 
 namespace vssw::cli {
 

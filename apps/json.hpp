@@ -1,6 +1,6 @@
 #pragma once
-// The commands write JSON as the study library does (study/json.hpp): ordered keys, absent quantities as null.
-#include "study/json.hpp"
+// The commands write JSON as the study library does (io/json.hpp): ordered keys, absent quantities as null.
+#include "io/json.hpp"
 
 namespace vssw::cli {
 

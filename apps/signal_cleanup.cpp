@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <thread>
 
-#include "study/temp_registry.hpp"
+#include "io/temp_registry.hpp"
 
 namespace vssw::cli {
 namespace {

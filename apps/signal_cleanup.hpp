@@ -1,6 +1,6 @@
 #pragma once
 // SIGINT, SIGTERM and SIGHUP end the program as before (the default action, so the exit status is still 128 + the
-// signal), after the temporary files and staging folders it has open are removed (study/temp_registry.hpp): an
+// signal), after the temporary files and staging folders it has open are removed (io/temp_registry.hpp): an
 // interrupted run leaves no hidden ".NAME.vssw-tmp-..." behind, and the files and folders it would have replaced
 // stay as they were.
 //

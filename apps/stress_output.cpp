@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "stress/case.hpp"
-#include "study/csv.hpp"
+#include "io/csv.hpp"
 
 namespace vssw::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "study/text.hpp"
+#include "io/text.hpp"
 
 namespace vssw::cli {
 

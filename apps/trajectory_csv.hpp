@@ -9,7 +9,7 @@
 
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
-#include "study/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace vssw::cli {
 

@@ -11,9 +11,9 @@
 
 #include <fmt/format.h>
 
-#include "compare/suite.hpp"
+#include "validation/suite.hpp"
 #include "multibody/engine.hpp"
-#include "study/suite_file.hpp"
+#include "validation/suite_file.hpp"
 
 int main(int argc, char** argv) {
     using namespace vssw;

@@ -154,7 +154,7 @@ public:
     virtual void check_settings(const EngineSettings& settings) const = 0;
     // Whether simulate() may run on several threads at once (each call with its own scene). false for a library
     // with process-wide state that is not re-entrant (ODE): callers running cases in parallel run that engine's work
-    // one task at a time (compare/suite.hpp, study/runner.cpp). make_engine()'s isolated engines are each run in a
+    // one task at a time (validation/suite.hpp, study/runner.cpp). make_engine()'s isolated engines are each run in a
     // process of its own and say true.
     virtual bool runs_concurrently() const { return true; }
     // Whether settings.dt is only the trajectory's sampling (the analytic model, Simbody's compliant route: their

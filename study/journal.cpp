@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "study/csv.hpp"
+#include "io/csv.hpp"
 
 namespace vssw::study {
 namespace {

@@ -3,7 +3,7 @@
 // ends, whatever order the threads or processes finish in. It is what makes a study resumable (`--resume`: the
 // finished tasks are not run again) and what keeps memory flat (rows go to disk, not into a growing vector). When the
 // study ends, its rows are sorted into results.csv and the journal is removed (with the old folder, when the results
-// are written into a staging folder that replaces the study's folder: study/folder_swap.hpp).
+// are written into a staging folder that replaces the study's folder: io/folder_swap.hpp).
 //
 // Format: a first line "#vssw-study-journal,<identity>,<k>/<n>" (the study's identity and shard), then per task its
 // rows "case_id,run,metric,value,status,warnings" (run and metric are indices into the grid's runs and the study's metrics;

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "study/text.hpp"
+#include "io/text.hpp"
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"

@@ -11,8 +11,8 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "study/atomic_file.hpp"
-#include "study/csv.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv.hpp"
 #include "study/outputs.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"

@@ -6,9 +6,9 @@
 
 #include "analytic/error.hpp"
 #include "study/agreement.hpp"
-#include "study/atomic_file.hpp"
-#include "study/document_html.hpp"
-#include "study/document_markdown.hpp"
+#include "io/atomic_file.hpp"
+#include "io/document_html.hpp"
+#include "io/document_markdown.hpp"
 #include "study/effects.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "study/gnuplot.hpp"
+#include "io/gnuplot.hpp"
 
 namespace vssw::study {
 

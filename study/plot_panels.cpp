@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "study/effects.hpp"
-#include "study/gnuplot.hpp"
-#include "study/palette.hpp"
+#include "io/gnuplot.hpp"
+#include "io/palette.hpp"
 
 namespace vssw::study {
 namespace {
@@ -19,10 +19,6 @@ constexpr int kPanelWidth = 380, kPanelHeight = 270, kTitleHeight = 40;
 constexpr int kSingleWidth = 860, kSingleHeight = 440;
 // Panels per row: four of 380 px fill a 1520 px page, about what a report's width allows.
 constexpr std::size_t kMaxColumns = 4;
-
-// Dash types and point types the variants of one engine's series cycle through (gnuplot's numbers).
-constexpr int kAnalyticDashes[] = {1, 2, 4, 5}, kEngineDashes[] = {2, 4, 5, 3};
-constexpr int kPoints[] = {7, 5, 9, 11, 13};
 
 }  // namespace
 
@@ -53,14 +49,6 @@ std::vector<std::vector<std::uint32_t>> combinations(const StudyData& d, const s
         out = std::move(next);
     }
     return out;
-}
-
-bool at_levels(const StudyRow& row, const std::vector<std::size_t>& columns, const std::vector<std::uint32_t>& levels) {
-    for (std::size_t i = 0; i < columns.size(); ++i) {
-        const std::uint32_t l = row.levels[columns[i]];
-        if (l != kEmptyLevel && l != levels[i]) return false;
-    }
-    return true;
 }
 
 std::size_t level_position(const ColumnLevels& column, std::uint32_t level) {
@@ -112,22 +100,6 @@ double summarise(const std::vector<double>& values, bool share) {
     double ones = 0.0;
     for (double v : values) ones += v;
     return ones / static_cast<double>(values.size());
-}
-
-std::string series_style(const std::string& engine, std::size_t variant) {
-    const bool analytic = engine == "analytic";
-    const int dash = analytic ? kAnalyticDashes[variant % std::size(kAnalyticDashes)]
-                              : kEngineDashes[variant % std::size(kEngineDashes)];
-    return fmt::format("lc rgb '{}' lw {} dt {} pt {} ps 0.7", engine_colour(engine), analytic ? 2 : 1.5, dash,
-                       kPoints[variant % std::size(kPoints)]);
-}
-
-std::vector<std::size_t> series_variants(const std::vector<std::string>& engines) {
-    std::vector<std::size_t> variants;
-    for (std::size_t i = 0; i < engines.size(); ++i)
-        variants.push_back(static_cast<std::size_t>(
-            std::count(engines.begin(), engines.begin() + static_cast<std::ptrdiff_t>(i), engines[i])));
-    return variants;
 }
 
 PanelLayout panel_layout(std::size_t panels) {

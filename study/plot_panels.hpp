@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "study/study_data.hpp"
+#include "io/palette.hpp"  // series_style, series_variants: every plot panel draws with them
 
 namespace vssw::study {
 
@@ -26,7 +27,6 @@ PanelSplit split_panels(const StudyData& d, const std::vector<std::size_t>& cand
 // Every combination of the columns' levels (one empty combination for no columns), the last column varying fastest.
 std::vector<std::vector<std::uint32_t>> combinations(const StudyData& d, const std::vector<std::size_t>& columns);
 // Whether the row is at these levels of these columns (a column that does not apply to it: at every level).
-bool at_levels(const StudyRow& row, const std::vector<std::size_t>& columns, const std::vector<std::uint32_t>& levels);
 // The positions in combinations(d, columns) of every combination the row is at (several when a column does not apply to
 // it).
 std::vector<std::size_t> combination_indices(const StudyData& d, const StudyRow& row,
@@ -40,12 +40,6 @@ std::string levels_title(const StudyData& d, const std::vector<std::size_t>& col
 std::string summary_note(const StudyData& d, const std::vector<std::size_t>& rest, bool share);
 // What one point shows of several values: their median, or for a 0/1 metric the share of ones; NaN for none.
 double summarise(const std::vector<double>& values, bool share);
-
-// The line and point style of a series: its engine's colour (study/palette.hpp), solid for the analytic model, dashed
-// for an engine; `variant` (0, 1, ...: the series' place among those of the same engine) changes the dash and point.
-std::string series_style(const std::string& engine, std::size_t variant);
-// The variant of each series of these engines (one name per series): 0 for an engine's first, 1 for its second ...
-std::vector<std::size_t> series_variants(const std::vector<std::string>& engines);
 
 // The SVG size and gnuplot's multiplot layout for `panels` panels and, when there are several, a last panel that
 // holds only the legend. A single panel is a plain plot with its key inside.

@@ -14,7 +14,7 @@
 #include "study/plot_lines.hpp"
 #include "study/plot_panels.hpp"
 #include "study/study_plots.hpp"
-#include "study/text.hpp"
+#include "io/text.hpp"
 
 namespace vssw::study {
 namespace {

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "study/study_plots.hpp"
-#include "study/text.hpp"
+#include "io/text.hpp"
 
 namespace vssw::study {
 namespace {

@@ -9,7 +9,7 @@
 #include "study/plot_panels.hpp"
 #include "study/spec.hpp"
 #include "study/study_plots.hpp"
-#include "study/text.hpp"
+#include "io/text.hpp"
 
 namespace vssw::study {
 namespace {

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "study/csv.hpp"
+#include "io/csv.hpp"
 #include "study/metric_catalog.hpp"
 
 namespace vssw::study {

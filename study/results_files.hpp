@@ -9,7 +9,7 @@
 //                  results.csv's rows and hash ("results"): what `vssw study merge` and `--resume` check, and what
 //                  results.json starts with
 //   results.json   the manifest's keys and the rows of results.csv as objects (numbers as numbers, empty as null)
-// Each is written to a temporary file and renamed into place (study/atomic_file.hpp).
+// Each is written to a temporary file and renamed into place (io/atomic_file.hpp).
 #include <filesystem>
 #include <iosfwd>
 #include <optional>

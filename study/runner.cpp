@@ -19,9 +19,9 @@
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/run_budget.hpp"
-#include "study/atomic_file.hpp"
-#include "study/clock.hpp"
-#include "study/folder_swap.hpp"
+#include "io/atomic_file.hpp"
+#include "io/clock.hpp"
+#include "io/folder_swap.hpp"
 #include "study/measure.hpp"
 #include "study/mpi.hpp"
 

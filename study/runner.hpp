@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "study/folder_lock.hpp"
+#include "io/folder_lock.hpp"
 #include "study/grid.hpp"
 #include "study/journal.hpp"
 #include "study/results_files.hpp"
@@ -25,7 +25,7 @@ struct StudyRunOptions {
     // Called after each task (serialised): tasks done (this run), tasks to do (this run), what.
     std::function<void(long done, long total, const std::string& what)> progress;
     // Where results.csv and manifest.json are written: empty for DIR itself (the journal then removed at the end);
-    // the program gives the staging folder that then replaces DIR whole (study/folder_swap.hpp), and DIR's journal
+    // the program gives the staging folder that then replaces DIR whole (io/folder_swap.hpp), and DIR's journal
     // goes with the old folder.
     std::filesystem::path results_dir;
 };
@@ -37,7 +37,7 @@ struct StudyRunResult {
 };
 
 // Checks DIR before anything runs (InputError): it must be a folder this process can write (it is created if
-// missing) and that check_out_folder accepts (study/folder_swap.hpp); no other vssw run may be working in it (the
+// missing) and that check_out_folder accepts (io/folder_swap.hpp); no other vssw run may be working in it (the
 // lock returned, to be held while the study runs); without --resume it must hold no journal of an unfinished study
 // (resume it or choose another folder); with --resume it must hold this study's journal, or results of this study
 // already complete.

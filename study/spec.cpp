@@ -10,7 +10,7 @@
 
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
-#include "study/config_file.hpp"
+#include "io/config_file.hpp"
 #include "study/metric_catalog.hpp"
 #include "compare/experiments.hpp"
 #include "multibody/engine.hpp"

@@ -17,7 +17,7 @@
 // optional metrics and [part.settings.ENGINE], sharing the study's engines and assumptions; its cases follow the
 // previous part's. A part can name its walls and records (wall_name, wall_label, record_name, record_label: templates
 // such as "t1-{specimen:02}-xi{xi}") and leave out the releases from which the analytic model falls
-// (skip_falling_releases): what a validation suite needs (studies/validation-default.toml; study/suite_file.hpp).
+// (skip_falling_releases): what a validation suite needs (studies/validation-default.toml; validation/suite_file.hpp).
 //
 // Everything is checked here or when the grid is built, before any case runs: an unknown key, a value of the wrong
 // type, an empty list, an engine not built, a metric the excitation cannot measure, a record that does not read:

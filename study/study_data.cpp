@@ -11,11 +11,12 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "study/csv.hpp"
+#include "io/csv.hpp"
 #include "study/outputs.hpp"
 #include "study/runner.hpp"
 #include "study/spec.hpp"
-#include "study/text.hpp"
+#include "io/text.hpp"
+#include "multibody/engine.hpp"
 
 namespace vssw::study {
 namespace fs = std::filesystem;
@@ -222,7 +223,7 @@ bool StudyData::in_series(const StudyRow& row, const Series& s, const std::vecto
 }
 
 std::string StudyData::series_label(const Series& s, const std::vector<std::size_t>& ignored) const {
-    std::string label = engine_display_name(s.engine);
+    std::string label = multibody::engine_display_name(s.engine);
     for (std::size_t i = 0; i < kAssumptionKeys.size() && s.analytic(); ++i) {
         const std::size_t c = assumption_columns[i];
         if (c == std::string::npos || !columns[c].varied) continue;

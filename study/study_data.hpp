@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "study/json.hpp"
+#include "io/json.hpp"
 
 namespace vssw::study {
 

@@ -10,7 +10,7 @@
 
 #include "study/spec.hpp"
 #include "study/study_prose.hpp"
-#include "study/text.hpp"
+#include "io/text.hpp"
 
 namespace vssw::study {
 

@@ -1,10 +1,10 @@
 #pragma once
-// The content of study.md and study.html (study/document.hpp): what the study is, what varied and what ran, the
+// The content of study.md and study.html (io/document.hpp): what the study is, what varied and what ran, the
 // counts, the largest sensitivities first, the engines against each analytic assumption set, the plots, the run.
 #include "study/agreement.hpp"
-#include "study/document.hpp"
+#include "io/document.hpp"
 #include "study/effects.hpp"
-#include "study/gnuplot.hpp"
+#include "io/gnuplot.hpp"
 #include "study/study_data.hpp"
 #include "study/study_plots.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The plots of a study (DIR/plots/, drawn by study/gnuplot.hpp), from its results alone (study/study_data.hpp); only
+// The plots of a study (DIR/plots/, drawn by io/gnuplot.hpp), from its results alone (study/study_data.hpp); only
 // what the study varies is plotted, and the number of plots is bounded however large the study:
 //   value_<metric>_vs_<parameter>  the metric against each varied parameter, one line per series (an engine with its
 //                                  settings; the analytic model per assumption set); a panel per combination of the
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "study/effects.hpp"
-#include "study/gnuplot.hpp"
+#include "io/gnuplot.hpp"
 #include "study/study_data.hpp"
 
 namespace vssw::study {

@@ -48,7 +48,7 @@ inline std::string toml_string(const std::string& text) {
     return s + '"';
 }
 
-// The text as gnuplot's SVG holds it: control characters as spaces (study/gnuplot.hpp), then '&' and '<' as XML
+// The text as gnuplot's SVG holds it: control characters as spaces (io/gnuplot.hpp), then '&' and '<' as XML
 // escapes them (gnuplot leaves '>' and the quotes as they are).
 inline std::string svg_text(const std::string& text) {
     std::string s;

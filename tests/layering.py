@@ -2,7 +2,8 @@
 """The code's layering as a check (issue 28 asks for one before its redesign): each folder includes only the folders
 below it, and each engine library's headers stay inside that engine's adapter folder.
 
-    analytic  <-  multibody  <-  compare  <-  study, stress  <-  apps  <-  python
+    analytic  <-  io
+    analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  apps  <-  python
     (bench and tests may include any folder of the program)
 
 Exit 0 when every `#include "folder/..."` and every engine header include keeps to that; otherwise 1, one line per
@@ -15,14 +16,16 @@ import re
 import sys
 
 # What each folder may include besides itself.
-PROGRAM = {"analytic", "multibody", "compare", "study", "stress", "apps"}
+PROGRAM = {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "apps"}
 LAYERS = {
     "analytic": set(),
+    "io": {"analytic"},
     "multibody": {"analytic"},
     "compare": {"analytic", "multibody"},
-    "study": {"analytic", "multibody", "compare"},
-    "stress": {"analytic", "multibody", "compare"},
-    "apps": {"analytic", "multibody", "compare", "study", "stress"},
+    "study": {"analytic", "io", "multibody", "compare"},
+    "stress": {"analytic", "io", "multibody", "compare"},
+    "validation": {"analytic", "io", "multibody", "compare", "study", "stress"},
+    "apps": {"analytic", "io", "multibody", "compare", "study", "stress", "validation"},
     "python": {"apps"},
     "bench": PROGRAM,
     "tests": PROGRAM | {"tests"},

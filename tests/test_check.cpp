@@ -15,9 +15,9 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
-#include "apps/bounds_file.hpp"
+#include "validation/bounds_file.hpp"
 #include "apps/cli.hpp"
-#include "compare/bounds.hpp"
+#include "validation/bounds.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/temp_files.hpp"
 

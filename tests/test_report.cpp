@@ -28,12 +28,12 @@
 #include "analytic/error.hpp"
 #include "apps/cli.hpp"
 #include "multibody/engine.hpp"
-#include "study/document_html.hpp"
-#include "study/palette.hpp"
-#include "study/report.hpp"
-#include "study/report_data.hpp"
-#include "study/report_plots.hpp"
-#include "study/report_write.hpp"
+#include "io/document_html.hpp"
+#include "io/palette.hpp"
+#include "validation/report.hpp"
+#include "validation/report_data.hpp"
+#include "validation/report_plots.hpp"
+#include "validation/report_write.hpp"
 
 namespace {
 
@@ -610,7 +610,7 @@ TEST(ReportAtAGlance, MatrixCellsAreTheWorstErrorOfMetricsCsvAndPassIffWithinTar
                                       [&](const std::string& h) { return h.rfind(title, 0) == 0; });
         ASSERT_NE(col, html.header.end()) << title;
         const auto row = std::find_if(html.rows.begin(), html.rows.end(), [&](const auto& r) {
-            return r[0].second == vssw::study::engine_display_name(engine);
+            return r[0].second == vssw::multibody::engine_display_name(engine);
         });
         ASSERT_NE(row, html.rows.end()) << engine;
         const auto& [classes, text] = (*row)[static_cast<std::size_t>(col - html.header.begin())];
@@ -811,7 +811,7 @@ TEST(ReportPlots, OneColourPerEngineInEveryPlot) {
     for (const auto& s : scripts)
         for (const std::string& line : lines_of(s.gp))
             for (const char* engine : {"ode", "bullet"}) {
-                const std::string name = vssw::study::engine_display_name(engine);
+                const std::string name = vssw::multibody::engine_display_name(engine);
                 if (!contains(line, "title '" + name)) continue;
                 EXPECT_TRUE(contains(line, "lc rgb '" + vssw::study::engine_colour(engine) + "'"))
                     << s.plot.name << ": " << line;

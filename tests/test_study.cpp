@@ -25,7 +25,7 @@
 #include "multibody/engine.hpp"
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
-#include "study/suite_file.hpp"
+#include "validation/suite_file.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
 

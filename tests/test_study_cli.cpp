@@ -271,7 +271,7 @@ TEST(StudyCli, ImpactRatiosAtTheEndsOfTheirRangeAreExplained) {
 
 }  // namespace
 
-// Results folders (study/folder_swap.hpp) ---------------------------------------------------------------------------
+// Results folders (io/folder_swap.hpp) ---------------------------------------------------------------------------
 
 namespace {
 

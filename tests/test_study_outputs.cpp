@@ -19,7 +19,7 @@
 #include "analytic/error.hpp"
 #include "multibody/engine.hpp"
 #include "study/effects.hpp"
-#include "study/gnuplot.hpp"
+#include "io/gnuplot.hpp"
 #include "study/grid.hpp"
 #include "study/journal.hpp"
 #include "study/merge.hpp"
@@ -29,7 +29,7 @@
 #include "study/spec.hpp"
 #include "study/study_data.hpp"
 #include "study/study_prose.hpp"
-#include "study/text.hpp"
+#include "io/text.hpp"
 #include "tests/hostile_names.hpp"
 #include "tests/temp_files.hpp"
 
@@ -38,7 +38,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace st = vssw::study;
 
-// The .dat files hold numbers with 10 significant digits (study/gnuplot.cpp, gp_number).
+// The .dat files hold numbers with 10 significant digits (io/gnuplot.cpp, gp_number).
 constexpr double kDatDigits = 1e-9;
 // Effects computed from hand-written doubles: the division and the median's mean of two middle values cost a few ulps.
 constexpr double kEffectRoundOff = 1e-12;

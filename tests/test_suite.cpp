@@ -1,4 +1,4 @@
-// The validation suite's runner (compare/suite.hpp): what the shipped suites hold, case selection, and run_suite's
+// The validation suite's runner (validation/suite.hpp): what the shipped suites hold, case selection, and run_suite's
 // behaviour (analytic reference rows, determinism across threads, failures kept per case, engines that must not run
 // concurrently). Physics is checked where the suite states it: thresholds against Eq. (12) / Eq. (17), restitution
 // against Eq. (19) and the whole mechanism's plastic impact, records scaled to rock the analytic wall without
@@ -17,8 +17,8 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
-#include "compare/suite.hpp"
-#include "study/suite_file.hpp"
+#include "validation/suite.hpp"
+#include "validation/suite_file.hpp"
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"

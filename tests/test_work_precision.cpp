@@ -1,4 +1,4 @@
-// Work-precision (compare/work_precision.hpp, study/bench_files.hpp, `vssw bench`): the order fitted from a sweep on
+// Work-precision (validation/work_precision.hpp, validation/bench_files.hpp, `vssw bench`): the order fitted from a sweep on
 // integrators of known order, the Pareto front and the cheapest settings on hand-made points, and the command's
 // files from a quick sweep.
 #include <gtest/gtest.h>
@@ -16,9 +16,9 @@
 
 #include "cli_runner.hpp"
 #include "compare/targets.hpp"
-#include "compare/work_precision.hpp"
-#include "study/bench_files.hpp"
-#include "study/csv.hpp"
+#include "validation/work_precision.hpp"
+#include "validation/bench_files.hpp"
+#include "io/csv.hpp"
 #include "temp_files.hpp"
 
 namespace vssw {

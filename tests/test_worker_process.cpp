@@ -15,11 +15,11 @@
 
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
-#include "compare/suite.hpp"
+#include "validation/suite.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/worker_process.hpp"
 #include "study/measure.hpp"
-#include "study/suite_file.hpp"
+#include "validation/suite_file.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
 

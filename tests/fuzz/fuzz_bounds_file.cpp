@@ -1,4 +1,4 @@
-// Fuzz harness of the bounds-file reader of `vssw check` (apps/bounds_file.hpp, parse_bounds = read_bounds_file on
+// Fuzz harness of the bounds-file reader of `vssw check` (validation/bounds_file.hpp, parse_bounds = read_bounds_file on
 // text): every input is read as TOML and as JSON.
 //
 // A normal outcome is a set of bounds or vssw::InputError, the only error the reader documents for bad files
@@ -16,7 +16,7 @@
 #include <typeinfo>
 
 #include "analytic/error.hpp"
-#include "apps/bounds_file.hpp"
+#include "validation/bounds_file.hpp"
 
 namespace {
 

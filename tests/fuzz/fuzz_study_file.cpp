@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "analytic/error.hpp"
-#include "study/config_file.hpp"
+#include "io/config_file.hpp"
 #include "study/metric_catalog.hpp"
 #include "study/spec.hpp"
 

@@ -1,0 +1,117 @@
+#include "apps/history_output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "apps/model_validity.hpp"
+#include "apps/simulation_failure.hpp"
+#include "apps/table.hpp"
+
+namespace vssw::cli {
+HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, const GroundMotionOptions& motion,
+                           const HistoryRequest& request) {
+    ChosenModel chosen = choose_model(wall, model);
+    LoadedMotion input = load_ground_motion(motion);
+    SimulationOptions options;
+    options.output_dt = request.output_dt.value_or(input.sample_dt);
+    require(std::isfinite(options.output_dt) && options.output_dt > 0.0, "output interval (--output-dt) [s]",
+            "a positive finite number", options.output_dt);
+    // The longer of the two components, so that a vertical record longer than the horizontal one is not cut.
+    options.t_end =
+        request.t_end.value_or(std::max(input.motion.duration(), input.vertical.duration()) + kDefaultExtraTime);
+    require(std::isfinite(options.t_end) && options.t_end > 0.0, "end time (--t-end) [s]", "a positive finite number",
+            options.t_end);
+    // The default output interval is the record's: say so, rather than refuse an --output-dt nobody gave.
+    if (!request.output_dt && request.keep_trajectory && options.t_end / options.output_dt > kMaxOutputSamples)
+        throw InputError(fmt::format("the output interval defaults to the ground motion's sample step, {:g} s, which "
+                                     "gives more than {:g} samples over the run's {:g} s: give --output-dt of at "
+                                     "least {:g} s",
+                                     options.output_dt, kMaxOutputSamples, options.t_end,
+                                     options.t_end / kMaxOutputSamples));
+    options.keep_samples = request.keep_trajectory;
+    options.stop_at_rest = true;
+    options.roller = chosen.roller;
+    return {wall, motion.record, motion.vertical_record, std::move(input), std::move(chosen), options, {}, {}};
+}
+
+void simulate_history(HistoryRun& run) {
+    run.result = run_simulation([&] {
+        return simulate(*run.chosen.model, run.input.motion, run.input.vertical, InitialState{}, run.options);
+    });
+    run.warnings = validity_warnings(run.chosen, run.result);
+}
+
+Json to_json(const HistoryRun& run) {
+    const SimulationResult& res = run.result;
+    Json j;
+    j["record"] = run.record ? Json(*run.record) : Json(nullptr);
+    j["input"] = run.input.motion.name();
+    j["scale_factor"] = run.input.scale_factor;
+    j["pga_g"] = run.input.motion.pga() / kStandardGravity;
+    j["duration"] = run.input.motion.duration();
+    j["model"] = to_string(run.chosen.kind);
+    j["kinematics"] = run.chosen.kinematics ? Json(to_string(*run.chosen.kinematics)) : Json(nullptr);
+    j["vertical_record"] = run.vertical_record ? Json(*run.vertical_record) : Json(nullptr);
+    j["vertical_pga_g"] = run.vertical_record ? Json(run.input.vertical.pga() / kStandardGravity) : Json(nullptr);
+    j["alpha"] = run.chosen.model->reference_angle();
+    j["max_theta_over_alpha"] = res.max_abs_theta / run.chosen.model->reference_angle();
+    j["max_theta"] = res.max_abs_theta;
+    j["t_max_theta"] = largest_rotation(res).t;
+    // An overturned run's largest rotation is the collapse angle it reached, not a rocking peak.
+    j["peak_is_collapse"] = res.overturned;
+    j["overturned"] = res.overturned;
+    j["t_overturn"] = res.overturned ? Json(res.t_overturn) : Json(nullptr);
+    j["impacts"] = res.impacts.size();
+    j["energy_balance_error"] = res.energy_balance_error;
+    j["lift_offs"] = res.lift_offs.size();
+    j["end_time"] = res.t_final;
+    j["at_rest_at_end"] = res.at_rest_at_end;
+    j["t_end"] = run.options.t_end;
+    j["output_dt"] = run.options.output_dt;
+    j["impact"] = impact_json(run.chosen);
+    j["warnings"] = run.warnings;
+    add_support_json(j, res, run.chosen.roller);
+    j["wall"] = wall_inputs_json(run.wall, run.chosen.kind);
+    return j;
+}
+
+void print_history_summary(std::ostream& out, const HistoryRun& run, const std::string& title) {
+    const SimulationResult& res = run.result;
+    const char* alpha_name = reference_angle_name(run.chosen.kind);
+    Table table(title);
+    table.text("ground motion", run.record ? *run.record : run.input.motion.name())
+        .add("peak ground acceleration", num(run.input.motion.pga() / kStandardGravity), "g",
+             run.input.scale_factor == 1.0 ? "unscaled" : fmt::format("scaled by {}", num(run.input.scale_factor)));
+    if (run.vertical_record)
+        table.text("vertical component", *run.vertical_record)
+            .add("its peak acceleration", num(run.input.vertical.pga() / kStandardGravity), "g");
+    table
+        .add("duration", num(run.input.motion.duration()), "s")
+        .text("model", run.chosen.kinematics ? fmt::format("{}, {} kinematics", to_string(run.chosen.kind),
+                                                           to_string(*run.chosen.kinematics))
+                                             : to_string(run.chosen.kind))
+        .text("impact law",
+              fmt::format("{} (restitution {})", to_string(run.chosen.impact), num(run.chosen.model->restitution())))
+        .add("lift-offs", std::to_string(res.lift_offs.size()))
+        .add("impacts", std::to_string(res.impacts.size()))
+        .add(fmt::format("max |theta|/{}", alpha_name), num(res.max_abs_theta / run.chosen.model->reference_angle()),
+             "", res.overturned ? "the collapse angle: overturned, not a rocking peak" : "")
+        .add("max |theta|", num(res.max_abs_theta), "rad")
+        .add("at", num(largest_rotation(res).t), "s");
+    for (const std::string& w : run.warnings) table.text("warning", w);
+    if (res.overturned)
+        table.add("overturns at", num(res.t_overturn), "s");
+    else
+        table.add("overturns", "no");
+    table.add("run ended at", num(res.t_final), "s", res.at_rest_at_end ? "at rest" : "")
+        .add("energy balance error", fmt::format("{:.2e}", res.energy_balance_error), "",
+             "largest residual / largest energy in play");
+    add_support_rows(table, res);
+    table.print(out);
+}
+
+}  // namespace vssw::cli

@@ -1,0 +1,11 @@
+#pragma once
+// A document (io/document.hpp) as GitHub-flavoured Markdown: tables, plots as image links to plots/*.svg.
+#include <iosfwd>
+
+#include "io/document.hpp"
+
+namespace vssw::study {
+
+void write_markdown(std::ostream& out, const Document& doc);
+
+}  // namespace vssw::study

@@ -1,0 +1,63 @@
+#pragma once
+// Plots drawn by gnuplot to SVG, each beside the .gp script and .dat data that made it (so that `cd plots && gnuplot
+// NAME.gp` re-draws it). Scripts and data are written through AtomicFile; gnuplot runs once per script in the plots
+// folder; a plot whose SVG is missing or empty afterwards counts as failed and its SVG is removed. When gnuplot cannot
+// be run at all the scripts and data are still written and the result says why, for a warning: a missing gnuplot never
+// fails a report or a study.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/document.hpp"
+
+namespace vssw::study {
+
+struct Plot {
+    std::string section;  // the heading it appears under in a document ("Error against step size")
+    std::string name;     // file stem in plots/: "trace_fig6-vssw_r0.5"
+    std::string title;    // for people
+    bool made = false;    // the .svg exists
+};
+
+struct PlotScript {
+    Plot plot;
+    std::string gp, dat;  // the contents of NAME.gp and NAME.dat
+};
+
+struct PlotResult {
+    std::vector<Plot> plots;
+    bool all_made = false;
+    std::string note;  // empty when every plot was made; else what went wrong (for the document and a warning)
+};
+
+// Writes every script and its data into plots_dir (created) and runs `program` (looked up in PATH unless it holds a
+// '/') on each.
+PlotResult draw_plots(const std::vector<PlotScript>& scripts, const std::filesystem::path& plots_dir,
+                      const std::string& program);
+
+// The start of every script: SVG terminal of this size, output NAME.svg, '?' as missing data, a light grid, the
+// legend inside the plot (top right, on white, framed).
+// `drawn_by` names the command in the script's first comment ("vssw report").
+std::string gp_preamble(const std::string& drawn_by, const std::string& name, int width, int height);
+// Any text (a record's file name, a suite's wall name, a study's name) as a gnuplot string literal that shows it as it
+// is and never runs: single-quoted, where gnuplot substitutes neither `command` nor @macro (in double quotes it runs
+// the backquoted command in a shell), its ' doubled, and every control character (newline, CR, tab, DEL, ...) a
+// space, since a newline would end the command and start another ("!cmd" runs a shell).
+std::string gp_string(const std::string& text);
+// Text for a comment line ("# TEXT") of a script or a data file: control characters as spaces, so that it stays one
+// line, and a space after a final backslash, which would continue a script's comment over the next command.
+std::string gp_comment(const std::string& text);
+// A label column in a data file, for people reading it (gnuplot takes the labels from the script, gp_string): double
+// quotes, inside which gnuplot reads a \" or \\ its own way, so quotes become ' and backslashes '/', and control
+// characters spaces; always one column.
+std::string gp_data_string(const std::string& text);
+// Whether a plot's name is a plain file stem ([A-Za-z0-9._-], not starting with '.' or '-'): the names are written
+// into scripts unquoted (`plot 'NAME.dat'`) and used as file names, so draw_plots refuses any other.
+bool gp_safe_name(const std::string& name);
+// A number for a data file; '?' (declared missing) for NaN, infinity and, on log axes, what is not positive.
+std::string gp_number(double v, bool positive_only = false);
+
+// The plots that were made, grouped under a level-3 heading per section in the order sections first appear.
+std::vector<DocBlock> plot_blocks(const PlotResult& plots);
+
+}  // namespace vssw::study

@@ -1,0 +1,59 @@
+#include "io/palette.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <iterator>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace vssw::study {
+namespace {
+
+struct EngineColour {
+    std::string_view engine, colour;
+};
+// Okabe-Ito, assigned once: black for the reference, the strongest hues for the four default engines.
+constexpr EngineColour kEngineColours[] = {
+    {"analytic", "#000000"},       // black
+    {"bullet", "#0072B2"},         // blue
+    {"ode", "#D55E00"},            // vermillion
+    {"simbody", "#009E73"},        // bluish green
+    {"siconos", "#CC79A7"},        // reddish purple
+    {"simbody-rigid", "#56B4E9"},  // sky blue
+};
+// The palette's colours left for other names (its yellow, #F0E442, reads badly on white and is not used).
+constexpr std::string_view kSpare[] = {"#E69F00", "#999999"};
+
+// Dash types and point types the variants of one engine's series cycle through (gnuplot's numbers).
+constexpr int kAnalyticDashes[] = {1, 2, 4, 5}, kEngineDashes[] = {2, 4, 5, 3};
+constexpr int kPoints[] = {7, 5, 9, 11, 13};
+
+}  // namespace
+
+std::string engine_colour(const std::string& engine) {
+    for (const EngineColour& e : kEngineColours)
+        if (e.engine == engine) return std::string(e.colour);
+    std::size_t h = 0;  // a stable choice for a name: the same in every plot and every run
+    for (char c : engine) h = h * 31 + static_cast<unsigned char>(c);
+    return std::string(kSpare[h % (sizeof kSpare / sizeof kSpare[0])]);
+}
+
+std::string series_style(const std::string& engine, std::size_t variant) {
+    const bool analytic = engine == "analytic";
+    const int dash = analytic ? kAnalyticDashes[variant % std::size(kAnalyticDashes)]
+                              : kEngineDashes[variant % std::size(kEngineDashes)];
+    return fmt::format("lc rgb '{}' lw {} dt {} pt {} ps 0.7", engine_colour(engine), analytic ? 2 : 1.5, dash,
+                       kPoints[variant % std::size(kPoints)]);
+}
+
+std::vector<std::size_t> series_variants(const std::vector<std::string>& engines) {
+    std::vector<std::size_t> variants;
+    for (std::size_t i = 0; i < engines.size(); ++i)
+        variants.push_back(static_cast<std::size_t>(
+            std::count(engines.begin(), engines.begin() + static_cast<std::ptrdiff_t>(i), engines[i])));
+    return variants;
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,353 @@
+#include "validation/report.hpp"
+#include "multibody/engine.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include <fmt/format.h>
+
+namespace vssw::study {
+namespace {
+
+// Metrics in the order the report shows them; others follow by name.
+const std::vector<std::string> kKnownMetrics = {
+    "threshold_g", "period",     "restitution",    "restitution_whole_mechanism", "peak_rotation",
+    "peak_time",   "overturned", "rms_difference", "peak_rotation_whole_mechanism"};
+
+// A step-study series needs this many points with a nonzero error before its order is fitted (two points always fit
+// a line; three can disagree with one).
+constexpr std::size_t kMinPointsForOrder = 3;
+
+// The free-vibration case a step case belongs to: its id without the "/dt<dt>/<engine>" end.
+std::string step_base(const std::string& id) {
+    const auto pos = id.rfind("/dt");
+    return pos == std::string::npos ? id : id.substr(0, pos);
+}
+
+}  // namespace
+
+bool is_step_case(const ReportInput& in, const std::string& id) { return case_kind(in, id) == compare::CaseKind::step; }
+
+std::string short_title(const std::string& metric) {
+    if (metric == "threshold_g") return "threshold";
+    if (metric == "restitution") return "restitution (vs Eq. 19/Housner)";
+    if (metric == "restitution_whole_mechanism") return "restitution (vs whole mechanism)";
+    if (metric == "peak_rotation") return "peak rotation";
+    if (metric == "peak_rotation_whole_mechanism") return "peak rotation (vs the whole-mechanism impact)";
+    if (metric == "peak_time") return "peak time";
+    if (metric == "rms_difference") return "rms difference";
+    return metric;
+}
+
+bool within(double rel_error, double target) { return std::isfinite(rel_error) && std::abs(rel_error) <= target; }
+
+std::optional<double> target_of(const std::string& metric) {
+    if (metric == "threshold_g") return kReportThresholdTarget;
+    if (metric == "period") return kReportPeriodTarget;
+    if (metric == "restitution" || metric == "restitution_whole_mechanism") return kReportRestitutionTarget;
+    return std::nullopt;
+}
+
+std::string metric_title(const std::string& metric) {
+    if (metric == "threshold_g") return "threshold acceleration";
+    if (metric == "period") return "period";
+    if (metric == "restitution") return "restitution (first impact)";
+    if (metric == "restitution_whole_mechanism") return "restitution against the whole-mechanism impact";
+    if (metric == "peak_rotation") return "peak rotation";
+    if (metric == "peak_rotation_whole_mechanism") return "peak rotation against the whole-mechanism impact";
+    if (metric == "peak_time") return "time of the peak rotation";
+    if (metric == "overturned") return "overturning";
+    if (metric == "rms_difference") return "rms difference of the time histories";
+    return metric;
+}
+
+std::string metric_description(const std::string& metric) {
+    if (metric == "threshold_g")
+        return "The smallest constant ground acceleration (in g, ramped in over 0.2 s, then held) that rotates the "
+               "wall by 1 % of alpha off rest, found by bisection to 1e-4 for every backend alike, the analytic "
+               "model's too (its closed form is Eq. (12), Eq. (17) for the parapet): an error of 0 means the same "
+               "bisection bracket, i.e. within 1e-4.";
+    if (metric == "period")
+        return "Four times the time from release at rest at theta1 = r alpha to the first impact (theta1 "
+               "interpolated linearly across zero), against the analytic model with exact kinematics.";
+    if (metric == "restitution")
+        return "theta1' after over before the first impact, each extrapolated to the crossing from samples outside "
+               "2 steps either side; the reference is the analytic model's impact map: Eq. (19) for the VSSW, "
+               "Housner's e for the parapet.";
+    if (metric == "restitution_whole_mechanism")
+        return "The same measured ratio against the plastic impact with every constraint of the new mechanism acting "
+               "at once, the roller included (1 - 2b^2 [m1 + m2 (2 + k)^2] / M(0); not in the paper, see the "
+               "README): what an engine that resolves all closing contacts and the roller together should give.";
+    if (metric == "peak_rotation")
+        return "The largest |theta1| / alpha under a ground-motion record, from rest.";
+    if (metric == "peak_rotation_whole_mechanism")
+        return "The same peak rotation of a VSSW against the analytic model run with the whole mechanism's plastic "
+               "impact in place of Eq. (19) (the impact the engines make in free vibration): how much of a difference "
+               "in peaks the impact law accounts for.";
+    if (metric == "peak_time") return "When the largest |theta1| is reached under a ground-motion record.";
+    if (metric == "overturned")
+        return "Whether the wall overturns under a ground-motion record; the error column says whether the engine "
+               "agrees with the analytic model.";
+    if (metric == "rms_difference")
+        return "The root mean square over the record of the difference between the engine's and the analytic "
+               "model's theta1 / alpha. The reference column is the analytic peak rotation (in alpha), the engine "
+               "column the rms difference (in alpha), the error column their ratio.";
+    return "";
+}
+
+const char* kind_name(compare::CaseKind kind) {
+    switch (kind) {
+        case compare::CaseKind::threshold: return "threshold";
+        case compare::CaseKind::free: return "free";
+        case compare::CaseKind::history: return "history";
+        case compare::CaseKind::step: return "step";
+    }
+    return "unknown";
+}
+
+compare::CaseKind case_kind(const ReportInput& in, const std::string& case_id) {
+    for (const compare::SuiteCase& c : in.suite.cases)
+        if (c.id == case_id) return c.kind;
+    // From the id's shape: "<wall>", "<wall>/r<r>", "<wall>/<record>", "<wall>/r<r>/dt<dt>/<engine>".
+    const auto slash = case_id.find('/');
+    if (slash == std::string::npos) return compare::CaseKind::threshold;
+    if (case_id.find("/dt", slash) != std::string::npos) return compare::CaseKind::step;
+    const std::string rest = case_id.substr(slash + 1);
+    if (rest.size() > 1 && rest[0] == 'r' && (std::isdigit(static_cast<unsigned char>(rest[1])) || rest[1] == '.'))
+        return compare::CaseKind::free;
+    return compare::CaseKind::history;
+}
+
+double case_step(const ReportInput& in, const std::string& case_id) {
+    for (const compare::SuiteCase& c : in.suite.cases)
+        if (c.id == case_id && c.dt) return *c.dt;
+    const auto pos = case_id.rfind("/dt");
+    if (pos == std::string::npos) return std::nan("");
+    // "<wall>/r<r>/dt<dt>/<engine>": the number runs to the next '/' or the end.
+    const std::string text = case_id.substr(pos + 3);
+    char* end = nullptr;
+    const double dt = std::strtod(text.c_str(), &end);
+    return (end != text.c_str() && (*end == '\0' || *end == '/')) ? dt : std::nan("");
+}
+
+std::vector<std::string> compared_engines(const compare::SuiteResults& results) {
+    std::vector<std::string> names;
+    auto add = [&](const std::string& name) {
+        if (name != "analytic" && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    };
+    for (const compare::EngineRunInfo& e : results.engines) add(e.name);
+    for (const compare::MetricRow& r : results.rows) add(r.engine);
+    for (const compare::CaseFailure& f : results.failures) add(f.engine);
+    return names;
+}
+
+std::vector<std::string> metric_order(const compare::SuiteResults& results) {
+    std::set<std::string> seen;
+    for (const compare::MetricRow& r : results.rows) seen.insert(r.metric);
+    std::vector<std::string> order;
+    for (const std::string& m : kKnownMetrics)
+        if (seen.erase(m) > 0) order.push_back(m);
+    order.insert(order.end(), seen.begin(), seen.end());
+    return order;
+}
+
+std::vector<EngineSummary> summarize(const ReportInput& in) {
+    const compare::SuiteResults& res = in.results;
+    // The worst errors, their cases and the metric counts are the report-at-a-glance matrix's: one source, so the
+    // summary line and the matrix cannot disagree on them. (The line's failure count is the suite's own: every failed
+    // task of the engine, step-study cases included.)
+    const std::vector<MatrixCell> cells = error_matrix(in);
+    std::vector<EngineSummary> out;
+    for (const std::string& engine : compared_engines(res)) {
+        EngineSummary s;
+        s.engine = engine;
+        for (const compare::CaseFailure& f : res.failures) s.failures += f.engine == engine ? 1 : 0;
+        for (const MatrixCell& c : cells) {  // metric_order within each engine
+            if (c.engine != engine) continue;
+            if (c.target) {
+                s.with_target += c.rows + c.not_measured;
+                s.not_measured += c.not_measured;
+                s.within += c.rows - c.outside;
+            }
+            if (c.rows > 0) s.extremes.push_back({c.metric, c.worst_rel_error, c.case_id, c.rows, c.outside});
+        }
+        std::vector<std::string> parts;
+        const MetricExtreme* whole = nullptr;
+        for (const MetricExtreme& x : s.extremes)
+            if (x.metric == "restitution_whole_mechanism") whole = &x;
+        for (const MetricExtreme& x : s.extremes) {
+            if (x.metric == "restitution_whole_mechanism") {
+                if (std::none_of(s.extremes.begin(), s.extremes.end(),
+                                 [](const MetricExtreme& y) { return y.metric == "restitution"; }))
+                    parts.push_back(fmt::format("restitution {} (vs whole mechanism)", percent(x.rel_error)));
+                continue;
+            }
+            if (x.metric == "restitution") {
+                std::string text = fmt::format("restitution {} (vs Eq. 19/Housner)", percent(x.rel_error));
+                if (whole != nullptr) text += fmt::format(" / {} (vs whole mechanism)", percent(whole->rel_error));
+                parts.push_back(text);
+                continue;
+            }
+            if (x.metric == "overturned") {
+                parts.push_back(x.outside == 0 ? fmt::format("overturning agrees on {}/{}", x.rows, x.rows)
+                                               : fmt::format("overturning differs on {}/{}", x.outside, x.rows));
+                continue;
+            }
+            if (x.metric == "rms_difference") {
+                parts.push_back(fmt::format("rms difference {:.2g} % of the peak (no target)",
+                                            100.0 * std::abs(x.rel_error)));
+                continue;
+            }
+            parts.push_back(fmt::format("{} {}{}", short_title(x.metric), percent(x.rel_error),
+                                        target_of(x.metric) ? "" : " (no target)"));
+        }
+        s.line = fmt::format("{}: {}/{} metrics within target", multibody::engine_display_name(engine), s.within, s.with_target);
+        if (s.not_measured > 0) s.line += fmt::format(" ({} not measured)", s.not_measured);
+        if (!parts.empty()) s.line += "; max |error| " + fmt::format("{}", fmt::join(parts, ", "));
+        s.line += fmt::format("; {} failure{}", s.failures, s.failures == 1 ? "" : "s");
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+std::vector<MetricTable> metric_tables(const ReportInput& in) {
+    const compare::SuiteResults& res = in.results;
+    const std::vector<std::string> engines = compared_engines(res);
+    std::vector<MetricTable> tables;
+    for (const std::string& metric : metric_order(res)) {
+        MetricTable t;
+        t.metric = metric;
+        t.target = target_of(metric);
+        t.engines = engines;
+        std::map<std::string, std::size_t> index;  // case id -> row
+        for (const compare::MetricRow& r : res.rows) {
+            if (r.metric != metric || is_step_case(in, r.case_id)) continue;
+            if (t.unit.empty()) t.unit = r.unit;
+            auto [it, inserted] = index.try_emplace(r.case_id, t.rows.size());
+            if (inserted) {
+                t.rows.push_back({r.case_id, r.analytic, r.reference, std::vector<MetricCell>(engines.size())});
+            }
+            MetricTableRow& row = t.rows[it->second];
+            if (r.engine == "analytic") {  // the analytic model's own row: its value is the reference
+                row.reference = r.analytic;
+                continue;
+            }
+            const auto e = std::find(engines.begin(), engines.end(), r.engine);
+            MetricCell& cell = row.cells[static_cast<std::size_t>(e - engines.begin())];
+            cell.present = true;
+            cell.value = r.engine_value;
+            cell.rel_error = r.rel_error;
+            if (row.reference_name.empty()) row.reference_name = r.reference;
+        }
+        for (const compare::CaseFailure& f : res.failures) {
+            const auto it = index.find(f.case_id);
+            if (it == index.end()) continue;
+            const auto e = std::find(engines.begin(), engines.end(), f.engine);
+            if (e != engines.end()) t.rows[it->second].cells[static_cast<std::size_t>(e - engines.begin())].failed = true;
+        }
+        if (!t.rows.empty()) tables.push_back(std::move(t));
+    }
+    return tables;
+}
+
+std::vector<MatrixCell> error_matrix(const ReportInput& in) {
+    std::vector<MatrixCell> cells;
+    const std::vector<MetricTable> tables = metric_tables(in);
+    const std::size_t engine_count = compared_engines(in.results).size();
+    for (std::size_t e = 0; e < engine_count; ++e) {
+        for (const MetricTable& t : tables) {
+            MatrixCell c;
+            c.engine = t.engines[e];
+            c.metric = t.metric;
+            c.target = t.target;
+            for (const MetricTableRow& r : t.rows) {
+                const MetricCell& m = r.cells[e];
+                if (!m.present) {
+                    c.failed += m.failed ? 1 : 0;
+                    continue;
+                }
+                if (!std::isfinite(m.rel_error)) {
+                    ++c.not_measured;
+                    continue;
+                }
+                if (c.rows == 0 || std::abs(m.rel_error) > std::abs(c.worst_rel_error)) {
+                    c.worst_rel_error = m.rel_error;
+                    c.case_id = r.case_id;
+                }
+                ++c.rows;
+                if (t.target ? !within(m.rel_error, *t.target) : m.rel_error != 0.0) ++c.outside;
+            }
+            if (c.rows + c.not_measured + c.failed == 0) continue;
+            c.pass = t.target && c.rows > 0 && c.outside == 0 && c.not_measured == 0 && c.failed == 0;
+            cells.push_back(std::move(c));
+        }
+    }
+    return cells;
+}
+
+std::vector<StepSeries> step_series(const ReportInput& in) {
+    std::vector<StepSeries> series;
+    for (const compare::MetricRow& r : in.results.rows) {
+        if (r.engine == "analytic" || !is_step_case(in, r.case_id)) continue;
+        const double dt = case_step(in, r.case_id);
+        if (!std::isfinite(dt)) continue;
+        const std::string base = step_base(r.case_id);
+        auto it = std::find_if(series.begin(), series.end(), [&](const StepSeries& s) {
+            return s.engine == r.engine && s.base_case == base && s.metric == r.metric;
+        });
+        if (it == series.end()) {
+            series.push_back({r.engine, base, r.metric, {}, {}, 0.0});
+            it = series.end() - 1;
+        }
+        it->dt.push_back(dt);
+        it->rel_error.push_back(r.rel_error);
+    }
+    for (StepSeries& s : series) {
+        std::vector<std::size_t> order(s.dt.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.dt[a] < s.dt[b]; });
+        std::vector<double> dt, err;
+        for (std::size_t i : order) {
+            dt.push_back(s.dt[i]);
+            err.push_back(s.rel_error[i]);
+        }
+        s.dt = dt;
+        s.rel_error = err;
+        // log|e| = p log dt + c, least squares over the points with a finite nonzero error.
+        double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+        for (std::size_t i = 0; i < dt.size(); ++i) {
+            if (!std::isfinite(err[i]) || err[i] == 0.0 || dt[i] <= 0.0) continue;
+            const double x = std::log(dt[i]), y = std::log(std::abs(err[i]));
+            n += 1;
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+        }
+        const double den = n * sxx - sx * sx;
+        const bool fit = n >= static_cast<double>(kMinPointsForOrder) && den > 0.0;
+        s.order = fit ? (n * sxy - sx * sy) / den : std::nan("");
+        s.r_squared = std::nan("");
+        if (fit) {  // the share of the variance of log|error| the line explains
+            double syy = 0.0;
+            for (std::size_t i = 0; i < dt.size(); ++i)
+                if (std::isfinite(err[i]) && err[i] != 0.0 && dt[i] > 0.0) {
+                    const double y = std::log(std::abs(err[i]));
+                    syy += y * y;
+                }
+            const double var_y = n * syy - sy * sy;
+            s.r_squared = var_y > 0.0 ? (n * sxy - sx * sy) * (n * sxy - sx * sy) / (den * var_y) : 1.0;
+        }
+    }
+    std::stable_sort(series.begin(), series.end(), [](const StepSeries& a, const StepSeries& b) {
+        return std::tie(a.engine, a.base_case, a.metric) < std::tie(b.engine, b.base_case, b.metric);
+    });
+    return series;
+}
+
+}  // namespace vssw::study

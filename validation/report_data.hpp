@@ -1,0 +1,48 @@
+#pragma once
+// The machine-readable half of `vssw report`: results.json (everything) and the CSV files. Layout and keys are
+// documented in `vssw report --help` and the README; keys may be added, none renamed.
+//
+// results.json:
+//   vssw {commit, report_format}, date, suite {name, walls [{id, label, kind}], records [{id, label, path, scale}],
+//   cases [{id, kind, wall, r, record, dt}]}, engines [{name, version, settings {dt, iterations, knobs}}] (iterations
+//   only where the engine's settings set a count: not the analytic model's, ODE's direct solver's, Simbody's ...),
+//   targets {metric: relative error}, rows [{case_id, engine, metric, unit, reference, analytic, engine_value,
+//   rel_error, target, within_target}], failures [{case_id, engine, message}], summary [{engine, line, within,
+//   with_target, not_measured, failures, max_error {metric: {rel_error, case_id}}}], findings [text],
+//   step_study [{engine, case_id, metric, dt [], rel_error [], order}], traces [{case_id, engine, assumption,
+//   samples}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],
+//   plots {made, note}, wall_time_s, threads. Every NaN is null.
+// metrics.csv:  case_id,engine,metric,unit,reference,analytic,engine_value,rel_error   (one line per row)
+// failures.csv: case_id,engine,message
+// traces.csv:   case_id,engine,t,theta1_over_alpha,assumption   (every trace, one line per sample; t to
+//               kTraceTimeDigits and theta1/alpha to kTraceValueDigits significant digits; assumption: the analytic
+//               model's, compare::Trace)
+#include <iosfwd>
+#include <string>
+
+#include "io/csv.hpp"
+#include "io/json.hpp"
+#include "validation/report.hpp"
+
+namespace vssw::study {
+
+// Bumped when a key changes meaning (never for an added key).
+constexpr int kReportFormat = 1;
+
+// traces.csv's significant digits (and the trace plots' data). t: 6 keep 0.1 ms up to 100 s, finer than any trace's
+// sampling (1 ms and up). theta1 / alpha: 4 round a value by at most 5e-4 of itself, which is at most 5e-4 of the
+// plot's y range (the range spans every value and zero): 0.2 px of a 420 px plot, below what a plot shows.
+constexpr int kTraceTimeDigits = 6;
+constexpr int kTraceValueDigits = 4;
+// A number with this many significant digits ("" when not finite).
+std::string trace_number(double value, int digits);
+
+Json results_json(const ReportInput& in);
+// An engine's settings as results.json and bench.json write them: {dt, iterations, knobs {name: value}}, iterations
+// only when the settings set a count (> 0; 0 is an engine without iterations or its own choice).
+Json settings_json(const multibody::EngineSettings& s);
+void write_metrics_csv(std::ostream& out, const compare::SuiteResults& results);
+void write_failures_csv(std::ostream& out, const compare::SuiteResults& results);
+void write_traces_csv(std::ostream& out, const compare::SuiteResults& results);
+
+}  // namespace vssw::study

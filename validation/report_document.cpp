@@ -1,0 +1,349 @@
+#include "validation/report_document.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "io/text.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::study {
+namespace {
+
+using Blocks = std::vector<DocBlock>;
+
+std::string settings_text(const multibody::EngineSettings& s) {
+    std::vector<std::string> knobs;
+    for (const auto& [k, v] : s.knobs) knobs.push_back(fmt::format("{}={:g}", k, v));
+    return knobs.empty() ? "defaults" : fmt::format("{}", fmt::join(knobs, ", "));
+}
+
+std::string case_detail(const ReportInput& in, const compare::SuiteCase& c) {
+    switch (c.kind) {
+        case compare::CaseKind::threshold: return "constant ground acceleration, bisection";
+        case compare::CaseKind::free: return fmt::format("free vibration from theta1 = {:g} alpha", c.r);
+        case compare::CaseKind::step:
+            return fmt::format("free vibration from theta1 = {:g} alpha at engine step {:g} ms{}", c.r,
+                               c.dt ? *c.dt * 1e3 : NAN, c.engine.empty() ? "" : ", " + c.engine + " only");
+        case compare::CaseKind::history:
+            for (const compare::SuiteRecord& r : in.suite.records)
+                if (r.id == c.record_id) return r.label;
+            return c.record_id;
+    }
+    return "";
+}
+
+// A value for people, "n/a" when it was not measured.
+std::string value_text(double v) { return std::isfinite(v) ? num(v) : "n/a"; }
+
+std::string wall_label(const ReportInput& in, const std::string& id) {
+    for (const compare::SuiteWall& w : in.suite.walls)
+        if (w.id == id) return w.label;
+    return id;
+}
+
+// The cases that ran: those with a row or a failure (a step case of an engine not asked for did not run).
+std::set<std::string> cases_that_ran(const compare::SuiteResults& res) {
+    std::set<std::string> ran;
+    for (const compare::MetricRow& r : res.rows) ran.insert(r.case_id);
+    for (const compare::CaseFailure& f : res.failures) ran.insert(f.case_id);
+    return ran;
+}
+
+DocBlock introduction(const ReportInput& in) {
+    const compare::SuiteResults& res = in.results;
+    const std::set<std::string> case_ids = cases_that_ran(res);
+    return paragraph(fmt::format(
+        "Made {} by vssw{} on {} case{} ({} thread{}, {:.1f} s). Every engine is measured against the analytic model "
+        "of Sorrentino, Masiani & Griffith (2008) with exact kinematics, every metric by the same code for every "
+        "backend; relative error = engine / reference - 1. Targets: threshold {:g} %, period {:g} %, restitution "
+        "{:g} %.",
+        in.meta.date, in.meta.commit.empty() ? "" : " " + in.meta.commit, case_ids.size(),
+        case_ids.size() == 1 ? "" : "s", res.threads, res.threads == 1 ? "" : "s", res.wall_time_s,
+        100.0 * kReportThresholdTarget, 100.0 * kReportPeriodTarget, 100.0 * kReportRestitutionTarget));
+}
+
+// The matrix's text of a cell: the worst error (for overturning: agreement; for the rms difference: its share of the
+// peak), then what was not measured or failed.
+std::string matrix_text(const MatrixCell& c) {
+    std::string text;
+    if (c.rows == 0) text = c.failed > 0 ? "failed" : "n/a";
+    else if (c.metric == "overturned")
+        text = c.outside == 0 ? fmt::format("agrees {}/{}", c.rows, c.rows)
+                              : fmt::format("differs {}/{}", c.outside, c.rows);
+    else if (c.metric == "rms_difference")
+        text = fmt::format("{:.2g} % of the peak", 100.0 * std::abs(c.worst_rel_error));
+    else text = percent(c.worst_rel_error);
+    if (c.rows > 0 && c.not_measured > 0) text += fmt::format(" ({} n/a)", c.not_measured);
+    if (c.rows > 0 && c.failed > 0) text += fmt::format(" ({} failed)", c.failed);
+    return text;
+}
+
+void add_matrix(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "At a glance"));
+    const std::vector<MatrixCell> cells = error_matrix(in);
+    const std::vector<std::string> engines = compared_engines(in.results);
+    if (cells.empty() || engines.empty()) {
+        b.push_back(paragraph("No engine was compared (the analytic model only)."));
+        return;
+    }
+    // Metrics with a target first, those without set apart after them.
+    std::vector<std::string> metrics;
+    for (bool with_target : {true, false})
+        for (const std::string& m : metric_order(in.results))
+            if (target_of(m).has_value() == with_target &&
+                std::any_of(cells.begin(), cells.end(), [&](const MatrixCell& c) { return c.metric == m; }))
+                metrics.push_back(m);
+    std::vector<std::string> header = {"engine"};
+    std::size_t apart = 0;
+    for (const std::string& m : metrics) {
+        const std::optional<double> target = target_of(m);
+        if (!target && apart == 0) apart = header.size();
+        header.push_back(target ? fmt::format("{} (target {:g} %)", short_title(m), 100.0 * *target)
+                                : fmt::format("{} (no target)", short_title(m)));
+    }
+    DocBlock t = table(header, 1);
+    t.apart_from = apart;
+    t.css_class = "matrix";
+    for (const std::string& e : engines) {
+        std::vector<DocCell> row = {{multibody::engine_display_name(e)}};
+        for (const std::string& m : metrics) {
+            const auto c = std::find_if(cells.begin(), cells.end(),
+                                        [&](const MatrixCell& x) { return x.engine == e && x.metric == m; });
+            if (c == cells.end()) {
+                row.push_back({"-"});
+                continue;
+            }
+            DocCell cell{matrix_text(*c)};
+            if (c->target) cell.verdict = c->pass ? DocCell::Verdict::pass : DocCell::Verdict::fail;
+            if (!c->case_id.empty())
+                cell.note = fmt::format("worst on {}; {} of {} case{} {}", c->case_id, c->outside, c->rows,
+                                        c->rows == 1 ? "" : "s",
+                                        c->target ? "outside the target" : m == "overturned" ? "differ" : "nonzero");
+            row.push_back(std::move(cell));
+        }
+        t.rows.push_back(std::move(row));
+    }
+    b.push_back(t);
+    b.push_back(paragraph(
+        "Each cell: the engine's error of largest magnitude over the cases of that metric (engine / reference - 1; the "
+        "step study left out), passed when every case is measured and within the target, failed otherwise; the "
+        "metrics after the double rule have no target and no verdict. The tables under \"Metrics\" give every case."));
+}
+
+void add_engines(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "Engines"));
+    // Iterations only where an engine's settings set a count (Bullet's sequential-impulse iterations); the analytic
+    // model, ODE's direct solver and Simbody have none.
+    const bool any_iterations = std::any_of(in.results.engines.begin(), in.results.engines.end(),
+                                            [](const compare::EngineRunInfo& e) { return e.settings.iterations > 0; });
+    std::vector<std::string> header = {"engine", "version", "dt [s]"};
+    if (any_iterations) header.push_back("iterations");
+    header.push_back("settings");
+    DocBlock engines = table(header, header.size());
+    for (const compare::EngineRunInfo& e : in.results.engines) {
+        std::vector<DocCell> row = {{e.name}, {e.version}, {fmt::format("{:g}", e.settings.dt)}};
+        if (any_iterations)
+            row.push_back({e.settings.iterations > 0 ? std::to_string(e.settings.iterations) : "-"});
+        row.push_back({settings_text(e.settings)});
+        engines.rows.push_back(std::move(row));
+    }
+    b.push_back(engines);
+    b.push_back(paragraph("The step cases of the error-against-step study override dt; everything else runs at the "
+                          "settings above."));
+}
+
+void add_summary(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "Summary"));
+    std::vector<std::string> lines;
+    for (const EngineSummary& s : summarize(in)) lines.push_back(s.line);
+    if (lines.empty()) lines.push_back("No engine was compared (the analytic model only).");
+    b.push_back(list(lines));
+    b.push_back(paragraph("Counted over the cases with a target, the step study left out (it varies the step on "
+                          "purpose); max |error| is the signed error of largest magnitude per metric."));
+}
+
+void add_findings(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "Findings"));
+    bool any_finding = false;
+    for (const std::string& engine : compared_engines(in.results)) {
+        const std::vector<std::string> found = findings(in, engine);
+        if (found.empty()) continue;
+        b.push_back(heading(3, multibody::engine_display_name(engine)));
+        b.push_back(list(found));
+        any_finding = true;
+    }
+    if (!any_finding) b.push_back(paragraph("Nothing to say: no engine results."));
+}
+
+void add_failures(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "Failures"));
+    if (in.results.failures.empty()) {
+        b.push_back(paragraph("None: every engine finished every case."));
+        return;
+    }
+    DocBlock t = table({"case", "engine", "message"}, 3);
+    for (const compare::CaseFailure& f : in.results.failures)
+        t.rows.push_back({{f.case_id}, {f.engine}, {f.message, true}});
+    b.push_back(t);
+    b.push_back(paragraph("A failed case has no value for that engine where it failed (a failed run: none at all; "
+                          "an impact ratio outside (0, 1]: no restitution); the rest of the report is unaffected."));
+}
+
+void add_model_warnings(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "Where the analytic model warns"));
+    if (in.results.model_warnings.empty()) {
+        b.push_back(paragraph("Nowhere: along every analytic run the roller pushed, no contact pulled, the friction "
+                              "needed stayed within that of masonry joints, and Eq. (3) was not used past its "
+                              "validity."));
+        return;
+    }
+    DocBlock t = table({"case", "warning"}, 2);
+    for (const compare::ModelWarning& w : in.results.model_warnings) t.rows.push_back({{w.case_id}, {w.message, true}});
+    b.push_back(t);
+    b.push_back(paragraph("The analytic values of these cases are the model's own, but one of its assumptions fails "
+                          "along the run: an engine that differs there may be right."));
+}
+
+// What the metric is and what it is measured against; empty when there is nothing to say.
+std::string metric_explanation(const MetricTable& mt) {
+    std::set<std::string> references;
+    for (const MetricTableRow& r : mt.rows)
+        if (!r.reference_name.empty()) references.insert(r.reference_name);
+    std::string text = metric_description(mt.metric);
+    if (!references.empty())
+        text += fmt::format("{}Reference: {}.", text.empty() ? "" : " ", fmt::join(references, "; "));
+    if (mt.metric == "period" || mt.metric == "restitution")
+        text += " Each engine's error is against the analytic model sampled at that engine's own sampling "
+                "interval, so that both sides carry the same sampling error; the reference column shows the "
+                "analytic model at its own (0.1 ms), which can differ from those in the last digits.";
+    if (mt.target) text += " Errors in bold are outside the target.";
+    return text;
+}
+
+// A case's row: the reference, then each engine's value and error (overturning as yes/no and agrees/differs).
+std::vector<DocCell> metric_row(const MetricTable& mt, const MetricTableRow& r) {
+    const bool yes_no_metric = mt.metric == "overturned";
+    std::vector<DocCell> row = {{r.case_id}, {yes_no_metric ? yes_no(r.reference != 0.0) : value_text(r.reference)}};
+    for (const MetricCell& c : r.cells) {
+        if (c.failed && !c.present) {
+            row.push_back({"failed", true});
+            row.push_back({"failed", true});
+        } else if (!c.present) {
+            row.push_back({"-"});
+            row.push_back({"-"});
+        } else if (yes_no_metric) {
+            row.push_back({yes_no(c.value != 0.0)});
+            row.push_back({c.rel_error == 0.0 ? "agrees" : "differs", c.rel_error != 0.0});
+        } else {
+            const bool outside = mt.target && !(std::isfinite(c.rel_error) && std::abs(c.rel_error) <= *mt.target);
+            row.push_back({value_text(c.value)});
+            row.push_back({percent(c.rel_error), outside});
+        }
+    }
+    return row;
+}
+
+void add_metric_tables(Blocks& b, const ReportInput& in) {
+    b.push_back(heading(2, "Metrics"));
+    for (const MetricTable& mt : metric_tables(in)) {
+        b.push_back(heading(3, fmt::format("{}{}{}", metric_title(mt.metric),
+                                           mt.unit.empty() ? "" : " [" + mt.unit + "]",
+                                           mt.target ? fmt::format(" (target {:g} %)", 100.0 * *mt.target)
+                                                     : " (no target)")));
+        if (const std::string text = metric_explanation(mt); !text.empty()) b.push_back(paragraph(text));
+        std::vector<std::string> header = {"case", "reference"};
+        for (const std::string& e : mt.engines) {
+            header.push_back(multibody::engine_display_name(e));
+            header.push_back(multibody::engine_display_name(e) + " error");
+        }
+        DocBlock t = table(header, 1);
+        for (const MetricTableRow& r : mt.rows) t.rows.push_back(metric_row(mt, r));
+        b.push_back(t);
+    }
+}
+
+void add_step_study(Blocks& b, const ReportInput& in) {
+    const std::vector<StepSeries> steps = step_series(in);
+    if (steps.empty()) return;
+    b.push_back(heading(2, "Error against step size"));
+    b.push_back(paragraph("Free vibrations re-run at several engine steps; the order is the least-squares slope of "
+                          "log |error| against log dt (1 for a first-order integrator; near 0 when the error does not "
+                          "come from the step)."));
+    DocBlock t = table({"engine", "case", "metric", "relative error at dt", "fitted order"}, 4);
+    for (const StepSeries& s : steps) {
+        std::vector<std::string> points;
+        for (std::size_t i = 0; i < s.dt.size(); ++i)
+            points.push_back(fmt::format("{:g} ms: {}", s.dt[i] * 1e3, percent(s.rel_error[i])));
+        t.rows.push_back({{multibody::engine_display_name(s.engine)}, {s.base_case}, {metric_title(s.metric)},
+                          {fmt::format("{}", fmt::join(points, ", "))},
+                          {std::isfinite(s.order) ? fmt::format("{:.2f}", s.order) : "-"}});
+    }
+    b.push_back(t);
+}
+
+void add_plots(Blocks& b, const PlotResult& plots, bool plots_skipped) {
+    b.push_back(heading(2, "Plots"));
+    if (plots_skipped) {
+        b.push_back(paragraph("Plots were not made (--no-plots)."));
+        return;
+    }
+    if (!plots.note.empty()) b.push_back(paragraph("Plots: " + plots.note + "."));
+    for (DocBlock& block : plot_blocks(plots)) b.push_back(std::move(block));
+    if (plots.plots.empty() && plots.note.empty()) b.push_back(paragraph("No data to plot."));
+}
+
+void add_cases(Blocks& b, const ReportInput& in) {
+    const std::set<std::string> ran = cases_that_ran(in.results);
+    DocBlock t = table({"case", "kind", "wall", "what is done"}, 4);
+    std::size_t not_run = 0;
+    for (const compare::SuiteCase& c : in.suite.cases) {
+        if (ran.count(c.id) == 0) {
+            ++not_run;
+            continue;
+        }
+        t.rows.push_back({{c.id}, {kind_name(c.kind)}, {wall_label(in, c.wall_id)}, {case_detail(in, c)}});
+    }
+    if (t.rows.empty()) return;
+    b.push_back(heading(2, "Cases"));
+    b.push_back(t);
+    if (not_run > 0)
+        b.push_back(paragraph(fmt::format("{} more case{} of the suite did not run: the step study of {} not asked "
+                                          "for (--engines).",
+                                          not_run, not_run == 1 ? "" : "s", not_run == 1 ? "an engine" : "engines")));
+}
+
+void add_files(Blocks& b) {
+    b.push_back(heading(2, "Files"));
+    b.push_back(list({"results.json: everything above, machine-readable (NaN as null)",
+                      "metrics.csv: one line per (case, engine, metric)", "failures.csv: one line per failure",
+                      "traces.csv: the time histories (case_id, engine, t, theta1_over_alpha, assumption)",
+                      "plots/: each plot as .svg with the .gp script and .dat data that drew it"}));
+}
+
+}  // namespace
+
+Document build_document(const ReportInput& in, const PlotResult& plots, bool plots_skipped) {
+    Document doc;
+    doc.title = fmt::format("vssw validation report: suite '{}'",
+                            in.results.suite.empty() ? in.suite.name : in.results.suite);
+    Blocks& b = doc.blocks;
+    b.push_back(introduction(in));
+    add_matrix(b, in);
+    b.push_back(contents());
+    add_engines(b, in);
+    add_summary(b, in);
+    add_findings(b, in);
+    add_failures(b, in);
+    add_model_warnings(b, in);
+    add_metric_tables(b, in);
+    add_step_study(b, in);
+    add_plots(b, plots, plots_skipped);
+    add_cases(b, in);
+    add_files(b);
+    return doc;
+}
+
+}  // namespace vssw::study

@@ -1,0 +1,266 @@
+// The findings of `vssw report` in plain words (validation/report.hpp): per engine, each metric against its target, the
+// restitution gap the whole-mechanism impact explains, the records a wall rocks much less under, the restitution gaps
+// nothing explains, the error against the step, the failures. Each sentence is built from the numbers and says only
+// what they show.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "validation/report.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::study {
+namespace {
+
+// Fitted orders below this magnitude: the error does not depend on the step (it is not discretisation error). A first
+// order method gives ~1, so 0.3 separates "no trend" from "falling" with room for noisy points.
+constexpr double kFlatOrder = 0.3;
+// A fitted order is quoted as "roughly dt^p" only when the line explains this share of the variance of log|error|;
+// below it the points scatter (e.g. an error that changes sign between steps) and the report says so.
+constexpr double kRegularFit = 0.9;
+// Errors whose magnitudes stay within this factor of each other over the steps studied "hardly change with the
+// step": a first-order error would change by the ratio of the steps (5 to 10 over the suite's step studies).
+constexpr double kFlatSpread = 1.5;
+
+using Rows = std::vector<const compare::MetricRow*>;
+// A case's restitution against Eq. (19) and against the whole-mechanism impact.
+using RestitutionPair = std::pair<const compare::MetricRow*, const compare::MetricRow*>;
+
+std::string possessive(const std::string& engine) { return multibody::engine_display_name(engine) + "'s"; }
+
+// "the one case" or "all 4 cases".
+std::string all_of(std::size_t n, const std::string& noun) {
+    return n == 1 ? "the one " + noun : fmt::format("all {} {}s", n, noun);
+}
+
+std::string step_ms(double dt) { return fmt::format("{:g} ms", dt * 1e3); }
+
+// The engine's measured rows of a metric, the step study left out.
+Rows rows_of(const ReportInput& in, const std::string& engine, const std::string& metric) {
+    Rows rows;
+    for (const compare::MetricRow& r : in.results.rows)
+        if (r.engine == engine && r.metric == metric && !is_step_case(in, r.case_id) && std::isfinite(r.rel_error))
+            rows.push_back(&r);
+    return rows;
+}
+
+const compare::MetricRow* largest_error(const Rows& rows) {
+    return *std::max_element(rows.begin(), rows.end(), [](const compare::MetricRow* a, const compare::MetricRow* b) {
+        return std::abs(a->rel_error) < std::abs(b->rel_error);
+    });
+}
+
+std::string overturning_finding(const std::string& who, const Rows& rows) {
+    std::vector<std::string> differ;
+    for (const compare::MetricRow* r : rows)
+        if (r->rel_error != 0.0)
+            differ.push_back(fmt::format("{} ({})", r->case_id,
+                                         r->engine_value != 0.0
+                                             ? "the engine's wall overturns, the analytic model's does not"
+                                             : "the analytic model's wall overturns, the engine's does not"));
+    return differ.empty() ? fmt::format("{} verdict on overturning agrees with the analytic model's on {}.", who,
+                                        all_of(rows.size(), "history case"))
+                          : fmt::format("{} verdict on overturning differs from the analytic model's on {} of {}: {}.",
+                                        who, differ.size(), rows.size(), fmt::join(differ, "; "));
+}
+
+std::string peak_time_finding(const std::string& who, const Rows& rows) {
+    const compare::MetricRow* latest =
+        *std::max_element(rows.begin(), rows.end(), [](const compare::MetricRow* a, const compare::MetricRow* b) {
+            return std::abs(a->engine_value - a->analytic) < std::abs(b->engine_value - b->analytic);
+        });
+    return fmt::format("{} peak rotation comes up to {:.3g} s from the analytic model's ({}); no target is set on it.",
+                       who, std::abs(latest->engine_value - latest->analytic), latest->case_id);
+}
+
+// One metric of one engine: against its target, or how far it is where the project sets none.
+std::string metric_finding(const std::string& who, const std::string& metric, const Rows& rows) {
+    if (metric == "overturned") return overturning_finding(who, rows);
+    if (metric == "peak_time") return peak_time_finding(who, rows);
+    const compare::MetricRow* worst = largest_error(rows);
+    if (metric == "rms_difference")
+        return fmt::format("{} time histories differ from the analytic model's by an rms of up to {:.2g} % of the "
+                           "analytic peak rotation ({}); no target is set on it.",
+                           who, 100.0 * std::abs(worst->rel_error), worst->case_id);
+    const std::string title = metric == "restitution_whole_mechanism"
+                                  ? "restitution against the whole-mechanism plastic impact"
+                                  : metric_title(metric);
+    const std::optional<double> target = target_of(metric);
+    if (!target)
+        return fmt::format("{} {} differs from the analytic model's by up to {} ({}, {} case{}); the project sets no "
+                           "target on it.",
+                           who, title, percent(worst->rel_error), worst->case_id, rows.size(),
+                           rows.size() == 1 ? "" : "s");
+    const auto outside = static_cast<std::size_t>(std::count_if(
+        rows.begin(), rows.end(), [&](const compare::MetricRow* r) { return !within(r->rel_error, *target); }));
+    if (outside == 0)
+        return fmt::format("{} {} is within the {:g} % target on {} (largest error {} on {}).", who, title,
+                           100.0 * *target, all_of(rows.size(), "case"), percent(worst->rel_error), worst->case_id);
+    return fmt::format("{} {} is outside the {:g} % target on {} of {} case{} (largest error {} on {}).", who, title,
+                       100.0 * *target, outside, rows.size(), rows.size() == 1 ? "" : "s", percent(worst->rel_error),
+                       worst->case_id);
+}
+
+// The VSSW restitutions outside the target against Eq. (19): those within it against the whole-mechanism impact
+// (explained: the roller's impulse) and the others.
+struct RestitutionGaps {
+    std::vector<RestitutionPair> explained, unexplained;
+};
+
+RestitutionGaps restitution_gaps(const ReportInput& in, const std::string& engine) {
+    std::vector<RestitutionPair> pairs;
+    for (const compare::MetricRow* w : rows_of(in, engine, "restitution_whole_mechanism"))
+        for (const compare::MetricRow* e : rows_of(in, engine, "restitution"))
+            if (e->case_id == w->case_id) pairs.emplace_back(e, w);
+    RestitutionGaps gaps;
+    for (const auto& p : pairs) {
+        if (within(p.first->rel_error, kReportRestitutionTarget)) continue;
+        (within(p.second->rel_error, kReportRestitutionTarget) ? gaps.explained : gaps.unexplained).push_back(p);
+    }
+    return gaps;
+}
+
+// Is the gap to Eq. (19) the roller's impulse? Said only where the numbers say so (explained is not empty).
+std::string explained_restitution_finding(const std::string& who, const std::vector<RestitutionPair>& explained) {
+    double lo = explained[0].first->rel_error, hi = lo, whole = 0.0;
+    const compare::MetricRow* example = explained[0].first;
+    for (const auto& p : explained) {
+        lo = std::min(lo, p.first->rel_error);
+        hi = std::max(hi, p.first->rel_error);
+        whole = std::max(whole, std::abs(p.second->rel_error));
+        if (p.first->case_id.rfind("fig6-vssw", 0) == 0) example = p.first;
+    }
+    const std::string range = explained.size() == 1 ? percent(lo) : fmt::format("{} to {}", percent(lo), percent(hi));
+    return fmt::format(
+        "{} restitution is {} from the analytic model's impact (Eq. 19) on {} VSSW case{} (e.g. {} on {}), yet within "
+        "{:.2g} % of the whole-mechanism plastic impact on {}: its impact acts with every constraint of the new "
+        "mechanism, the roller included, and the roller's impulse, which Eq. (19) leaves out, accounts for the gap.",
+        who, range, explained.size(), explained.size() == 1 ? "" : "s", percent(example->rel_error),
+        example->case_id, 100.0 * whole, explained.size() == 1 ? "it" : "each of them");
+}
+
+std::string unexplained_restitution_finding(const std::string& who, const RestitutionPair& p) {
+    return fmt::format(
+        "{} restitution on {} is {} from Eq. (19) and {} from the whole-mechanism plastic impact: {}, but outside the "
+        "{:g} % target against both.",
+        who, p.first->case_id, percent(p.first->rel_error), percent(p.second->rel_error),
+        std::abs(p.second->rel_error) < std::abs(p.first->rel_error) ? "nearer the whole-mechanism value"
+                                                                      : "nearer Eq. (19)",
+        100.0 * kReportRestitutionTarget);
+}
+
+// Under the records: a wall that rocks much less than the analytic model, on which the engine's impacts keep less
+// energy than Eq. (19) in free vibration. Said only when both numbers are there.
+std::vector<std::string> record_peak_findings(const ReportInput& in, const std::string& engine) {
+    const std::string who = possessive(engine);
+    std::map<std::string, Rows> low_peaks;  // by wall id
+    for (const compare::MetricRow* r : rows_of(in, engine, "peak_rotation"))
+        if (std::isfinite(r->rel_error) && r->rel_error < -kReportMuchLowerPeak)
+            low_peaks[r->case_id.substr(0, r->case_id.find('/'))].push_back(r);
+    std::vector<std::string> out;
+    for (const auto& [wall_id, peaks] : low_peaks) {
+        double sum = 0.0;
+        int n = 0;
+        for (const compare::MetricRow* e : rows_of(in, engine, "restitution"))
+            if (e->case_id.rfind(wall_id + "/r", 0) == 0 && e->case_id.find("/dt") == std::string::npos &&
+                std::isfinite(e->rel_error)) {
+                sum += e->rel_error;
+                ++n;
+            }
+        if (n == 0 || sum / n > -kReportRestitutionTarget) continue;
+        std::vector<std::string> listed, whole;
+        for (const compare::MetricRow* r : peaks) {
+            listed.push_back(fmt::format("{:.3g} alpha against {:.3g} on {}", r->engine_value, r->analytic,
+                                         r->case_id));
+            for (const compare::MetricRow* w : rows_of(in, engine, "peak_rotation_whole_mechanism"))
+                if (w->case_id == r->case_id && std::isfinite(w->rel_error))
+                    whole.push_back(fmt::format("{:.3g} alpha, the engine's {} from it", w->analytic,
+                                                percent(w->rel_error)));
+        }
+        out.push_back(fmt::format(
+            "{} {} rocks much less than the analytic model under the records ({}): on the same wall its impacts keep "
+            "less energy than Eq. (19) (first-impact restitution {} on average over its free vibrations){}.",
+            who, wall_id, fmt::join(listed, "; "), percent(sum / n),
+            whole.empty() ? ""
+                          : fmt::format(", and the analytic model with the whole-mechanism impact in place of Eq. (19) "
+                                        "rocks as little ({})",
+                                        fmt::join(whole, "; "))));
+    }
+    return out;
+}
+
+// How one engine's error on one case and metric moves with the step.
+std::string step_finding(const std::string& engine, const StepSeries& s) {
+    std::vector<std::string> points;  // largest step first, as the error is expected to fall
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    for (std::size_t i = s.dt.size(); i-- > 0;) {
+        points.push_back(fmt::format("{}: {}", step_ms(s.dt[i]), percent(s.rel_error[i])));
+        if (std::isfinite(s.rel_error[i]) && s.rel_error[i] != 0.0) {
+            lo = std::min(lo, std::abs(s.rel_error[i]));
+            hi = std::max(hi, std::abs(s.rel_error[i]));
+        }
+    }
+    const std::string span = fmt::format("{}", fmt::join(points, ", "));
+    const std::string what = fmt::format("{} {} error on {}", possessive(engine), short_title(s.metric), s.base_case);
+    // Simbody's default route integrates with error control: its dt is the reporting interval, not a step.
+    const std::string step = engine == "simbody" ? "reporting interval (its integrator picks its own steps)" : "step";
+    const bool regular = s.r_squared >= kRegularFit;
+    if (hi <= kFlatSpread * lo)
+        return fmt::format("{} hardly changes with the {} ({}): it is not discretisation error.", what, step, span);
+    if (s.order >= kFlatOrder && regular)
+        return fmt::format("{} falls with the {}, roughly as dt^{:.1f} ({}).", what, step, s.order, span);
+    if (s.order >= kFlatOrder)
+        return fmt::format("{} falls with the {} overall but not regularly ({}; fitted order {:.1f}, r^2 {:.2f}).",
+                           what, step, span, s.order, s.r_squared);
+    if (s.order <= -kFlatOrder && regular)
+        return fmt::format("{} grows as the {} falls ({}; fitted order {:.1f}).", what, step, span, s.order);
+    return fmt::format("{} changes with the {} without a trend ({}).", what, step, span);
+}
+
+// Empty when the engine finished every case.
+std::string failure_finding(const ReportInput& in, const std::string& engine) {
+    std::set<std::string> all_cases;
+    for (const compare::MetricRow& r : in.results.rows) all_cases.insert(r.case_id);
+    for (const compare::CaseFailure& f : in.results.failures) all_cases.insert(f.case_id);
+    std::vector<std::string> failed;
+    for (const compare::CaseFailure& f : in.results.failures)
+        if (f.engine == engine) failed.push_back(fmt::format("{} ({})", f.case_id, f.message));
+    if (failed.empty()) return "";
+    return fmt::format("{} failed on {} of {} cases: {}.", multibody::engine_display_name(engine), failed.size(),
+                       all_cases.size(), fmt::join(failed, "; "));
+}
+
+std::vector<std::string> engine_findings(const ReportInput& in, const std::string& engine) {
+    const std::string who = possessive(engine);
+    std::vector<std::string> out;
+    for (const std::string& metric : metric_order(in.results)) {
+        const Rows rows = rows_of(in, engine, metric);
+        if (!rows.empty()) out.push_back(metric_finding(who, metric, rows));
+    }
+    const RestitutionGaps gaps = restitution_gaps(in, engine);
+    if (!gaps.explained.empty()) out.push_back(explained_restitution_finding(who, gaps.explained));
+    for (std::string& s : record_peak_findings(in, engine)) out.push_back(std::move(s));
+    for (const RestitutionPair& p : gaps.unexplained) out.push_back(unexplained_restitution_finding(who, p));
+    for (const StepSeries& s : step_series(in))
+        if (s.engine == engine && std::isfinite(s.order)) out.push_back(step_finding(engine, s));
+    if (std::string failed = failure_finding(in, engine); !failed.empty()) out.push_back(std::move(failed));
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::string> findings(const ReportInput& in, const std::string& only_engine) {
+    std::vector<std::string> out;
+    for (const std::string& engine : compared_engines(in.results)) {
+        if (!only_engine.empty() && engine != only_engine) continue;
+        for (std::string& s : engine_findings(in, engine)) out.push_back(std::move(s));
+    }
+    return out;
+}
+
+}  // namespace vssw::study

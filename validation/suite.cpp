@@ -1,0 +1,550 @@
+#include "validation/suite.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <ctime>
+#include <limits>
+#include <memory>
+#include <atomic>
+#include <mutex>
+#include <set>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
+#include "analytic/simulate.hpp"
+#include "compare/experiments.hpp"
+#include "compare/task_pool.hpp"
+#include "multibody/analytic_engine.hpp"
+
+namespace vssw::compare {
+namespace {
+
+using multibody::AnalyticEngine;
+using multibody::EngineFailure;
+using multibody::Excitation;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kReferenceEngine = "analytic";
+
+// A history runs on past the record's end until the wall is at rest (stop_at_rest), at most this long [s]: the
+// Fig. 6 walls' free rocking from the shipped suites' record scales dies out within a few seconds.
+constexpr double kHistoryTail = 5.0;
+
+// Traces: at most this many points per trace (plots), a free vibration's first seconds only.
+constexpr std::size_t kMaxTracePoints = 2000;
+constexpr double kFreeTraceSeconds = 10.0;
+
+// Running ----------------------------------------------------------------------------------------------------------
+
+// CPU time of the calling thread [s] (POSIX): a task runs on one thread from start to end.
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+struct TaskOutput {
+    double cpu_s = 0.0;
+    std::vector<MetricRow> rows;
+    std::vector<Trace> traces;
+    std::optional<std::string> failure;
+    std::vector<std::string> model_warnings;  // the reference task's analytic run only (no repeats per engine)
+};
+
+MetricRow make_row(const std::string& case_id, const std::string& engine, const char* metric, double analytic,
+                   double engine_value, const char* reference, const char* unit) {
+    return {case_id, engine, metric, analytic, engine_value, compare_metric(analytic, engine_value).rel_error,
+            reference, unit};
+}
+
+// assumption: the analytic model's (kPaperModel, kWholeMechanismImpact); "" for an engine's trace.
+Trace make_trace(const std::string& case_id, const std::string& engine, const multibody::Trajectory& traj,
+                 double alpha, double t_max, const std::string& assumption) {
+    Trace tr{case_id, engine, {}, {}, assumption};
+    std::size_t n = 0;
+    while (n < traj.samples.size() && traj.samples[n].t <= t_max) ++n;
+    if (n == 0) return tr;
+    const std::size_t stride = std::max<std::size_t>(1, (n + kMaxTracePoints - 2) / (kMaxTracePoints - 1));
+    auto add = [&](std::size_t i) {
+        tr.t.push_back(traj.samples[i].t);
+        tr.theta1_over_alpha.push_back(traj.samples[i].theta1 / alpha);
+    };
+    for (std::size_t i = 0; i < n; i += stride) add(i);
+    if ((n - 1) % stride != 0) add(n - 1);
+    return tr;
+}
+
+struct PeakRotation {
+    double value = kNaN, t = kNaN;  // max |theta1| [rad] and when
+};
+PeakRotation peak_rotation(const multibody::Trajectory& traj) {
+    PeakRotation p;
+    for (const auto& s : traj.samples)
+        if (!(std::abs(s.theta1) <= p.value)) p = {std::abs(s.theta1), s.t};  // the first sample replaces NaN
+    return p;
+}
+
+// theta1 of `traj` at time t, linear between samples, held beyond its ends. `cursor` advances monotonically.
+double theta_at(const multibody::Trajectory& traj, double t, std::size_t& cursor) {
+    const auto& s = traj.samples;
+    if (t <= s.front().t) return s.front().theta1;
+    while (cursor + 1 < s.size() && s[cursor + 1].t < t) ++cursor;
+    if (cursor + 1 >= s.size()) return s.back().theta1;
+    const double t0 = s[cursor].t, t1 = s[cursor + 1].t;
+    const double w = t1 > t0 ? (t - t0) / (t1 - t0) : 1.0;
+    return s[cursor].theta1 + w * (s[cursor + 1].theta1 - s[cursor].theta1);
+}
+
+// RMS over the reference run's duration of theta1_other - theta1_reference [rad] (trapezoidal in time, the other
+// trajectory interpolated onto the reference's samples).
+double rms_difference(const multibody::Trajectory& reference, const multibody::Trajectory& other) {
+    const auto& r = reference.samples;
+    if (r.size() < 2 || other.samples.empty()) return kNaN;
+    const double duration = r.back().t - r.front().t;
+    if (!(duration > 0.0)) return kNaN;
+    std::size_t cursor = 0;
+    double integral = 0.0;
+    double prev = theta_at(other, r.front().t, cursor) - r.front().theta1;
+    for (std::size_t i = 1; i < r.size(); ++i) {
+        const double d = theta_at(other, r[i].t, cursor) - r[i].theta1;
+        integral += 0.5 * (prev * prev + d * d) * (r[i].t - r[i - 1].t);
+        prev = d;
+    }
+    return std::sqrt(integral / duration);
+}
+
+// The analytic model's side of a case, computed once by whichever of the case's tasks (the reference's or an
+// engine's) comes first and shared by the others: its reference value does not depend on the engine
+// (analytic_reference_settings does not depend on the engine), and before this each engine's task ran it again
+// (a threshold bisection, a free vibration, two record runs per engine). The history trajectory is released by the
+// last task that reads it.
+struct CaseReference {
+    std::once_flag once;
+    double free_t_end = 0.0;  // free, step: the run's end (free_vibration_duration), set before the tasks run
+    double threshold_g = kNaN;                  // threshold
+    FreeVibrationResult free;                   // free, step: the analytic run, its trajectory dropped
+    std::optional<Trace> free_trace;            // free: the analytic trace when traces are kept
+    std::optional<Trace> whole_mechanism_trace;  // free, history (VSSW): the whole-mechanism impact's, likewise
+    multibody::Trajectory history;              // history: the analytic run (engines' RMS difference)
+    double whole_mechanism_peak = kNaN;         // history, VSSW: peak with the whole mechanism's impact [alpha]
+    std::atomic<int> users{0};                  // tasks of the case still to read `history`
+};
+
+struct TaskContext {
+    const SuiteCase& c;
+    const SuiteWall& wall;
+    const multibody::Engine& engine;
+    bool reference;  // the analytic model's own rows
+    const GroundMotion* record;
+    bool keep_traces;
+    CaseReference& ref;
+};
+
+FreeVibrationOptions free_options(const TaskContext& x) {
+    FreeVibrationOptions options;
+    options.r = x.c.r;
+    options.t_end = x.ref.free_t_end;  // what t_end 0 would compute, computed once
+    return options;
+}
+
+Excitation history_excitation(const TaskContext& x) {
+    Excitation ex;
+    ex.horizontal = *x.record;
+    ex.theta0 = 0.0;
+    ex.t_end = x.record->duration() + kHistoryTail;
+    ex.stop_at_rest = true;
+    ex.motion_only = true;  // the peak and the trace are read from theta1 alone
+    return ex;
+}
+
+// The analytic model's settings with the whole mechanism's plastic impact in place of Eq. (19) (the analytic backend's
+// setting `restitution`).
+EngineSettings whole_mechanism_settings(const VsswGeometry& wall) {
+    EngineSettings s = analytic_reference_settings();
+    s.knobs["restitution"] = restitution_whole_mechanism(wall);
+    return s;
+}
+
+// The analytic model's runs of the case (CaseReference), once.
+void compute_reference(const TaskContext& x) {
+    const AnalyticEngine analytic;
+    CaseReference& ref = x.ref;
+    switch (x.c.kind) {
+        case CaseKind::threshold:
+            ref.threshold_g = find_threshold(analytic, analytic_reference_settings(), x.wall.scene).value_g;
+            return;
+        case CaseKind::free:
+        case CaseKind::step: {
+            ref.free = run_free_vibration(analytic, analytic_reference_settings(), x.wall.scene, free_options(x));
+            if (x.keep_traces && x.c.kind == CaseKind::free) {
+                ref.free_trace = make_trace(x.c.id, kReferenceEngine, ref.free.trajectory, x.wall.scene.alpha(),
+                                            kFreeTraceSeconds, kPaperModel);
+                // The same release with the whole mechanism's impact: the trace the engines' free rocking is
+                // measured against in restitution_whole_mechanism (a few ms of the analytic model).
+                if (x.wall.scene.vssw) {
+                    const FreeVibrationResult whole = run_free_vibration(
+                        analytic, whole_mechanism_settings(*x.wall.scene.vssw), x.wall.scene, free_options(x));
+                    ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole.trajectory,
+                                                           x.wall.scene.alpha(), kFreeTraceSeconds,
+                                                           kWholeMechanismImpact);
+                }
+            }
+            ref.free.trajectory.samples = {};  // the rows need its metrics only (warnings kept)
+            return;
+        }
+        case CaseKind::history: {
+            const Excitation ex = history_excitation(x);
+            ref.history = analytic.simulate(x.wall.scene, ex, analytic_reference_settings());
+            // A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in
+            // place of Eq. (19) (the impact the engines make: README "Engines"): does the impact law account for a
+            // difference in peaks?
+            if (x.wall.scene.vssw) {
+                const multibody::Trajectory whole =
+                    analytic.simulate(x.wall.scene, ex, whole_mechanism_settings(*x.wall.scene.vssw));
+                ref.whole_mechanism_peak = peak_rotation(whole).value / x.wall.scene.alpha();
+                if (x.keep_traces) {
+                    ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole, x.wall.scene.alpha(),
+                                                           std::numeric_limits<double>::infinity(),
+                                                           kWholeMechanismImpact);
+                }
+            }
+            return;
+        }
+    }
+}
+
+const CaseReference& reference_of(const TaskContext& x) {
+    std::call_once(x.ref.once, [&] { compute_reference(x); });  // an exception leaves it for the next task to try
+    return x.ref;
+}
+
+// The settings the engine runs the case at: the case's own (a suite file's), else the engine's defaults.
+EngineSettings case_settings(const SuiteCase& c, const multibody::Engine& engine) {
+    const auto it = c.settings.find(engine.name());
+    return it != c.settings.end() ? it->second : engine.default_settings();
+}
+
+void threshold_task(const TaskContext& x, TaskOutput& out) {
+    const std::string name = x.engine.name();
+    const double a = reference_of(x).threshold_g;
+    const double e = x.reference ? a : find_threshold(x.engine, case_settings(x.c, x.engine), x.wall.scene).value_g;
+    out.rows.push_back(make_row(x.c.id, name, "threshold_g", a, e, "analytic model", "g"));
+}
+
+void free_rows(const TaskContext& x, const FreeVibrationResult& a, const FreeVibrationResult& e, TaskOutput& out) {
+    const std::string name = x.engine.name();
+    out.rows.push_back(make_row(x.c.id, name, "period", a.period.value_or(kNaN), e.period.value_or(kNaN),
+                                "analytic model", "s"));
+    out.rows.push_back(make_row(x.c.id, name, "restitution", a.restitution.value_or(kNaN),
+                                e.restitution.value_or(kNaN), "analytic model", ""));
+    if (x.wall.scene.vssw) {
+        const double whole = restitution_whole_mechanism(*x.wall.scene.vssw);
+        // The analytic model's own row holds the closed form on both sides (its impact law is Eq. 19's).
+        out.rows.push_back(make_row(x.c.id, name, "restitution_whole_mechanism", whole,
+                                    x.reference ? whole : e.restitution.value_or(kNaN),
+                                    "whole-mechanism plastic impact (roller acting)", ""));
+    }
+}
+
+void free_task(const TaskContext& x, TaskOutput& out) {
+    const CaseReference& ref = reference_of(x);
+    if (x.reference) {
+        free_rows(x, ref.free, ref.free, out);
+        out.model_warnings = ref.free.trajectory.warnings;
+        if (ref.free_trace) out.traces.push_back(*ref.free_trace);
+        if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
+        return;
+    }
+    EngineSettings settings = case_settings(x.c, x.engine);
+    if (x.c.dt) settings.dt = *x.c.dt;
+    // Both sides run for the same time (free_vibration_with_analytic's rule), the analytic one shared.
+    const FreeVibrationResult e = run_free_vibration(x.engine, settings, x.wall.scene, free_options(x));
+    free_rows(x, ref.free, e, out);
+    // A first-impact ratio outside (0, 1] is a failure of the engine's run, not a restitution: the row is NaN and
+    // the report lists why.
+    if (!e.restitution_note.empty()) out.failure = e.restitution_note;
+    if (x.keep_traces && x.c.kind == CaseKind::free)
+        out.traces.push_back(
+            make_trace(x.c.id, x.engine.name(), e.trajectory, x.wall.scene.alpha(), kFreeTraceSeconds, ""));
+}
+
+void history_rows(const TaskContext& x, const multibody::Trajectory& a, const multibody::Trajectory& e,
+                  TaskOutput& out) {
+    const std::string name = x.engine.name();
+    const double alpha = x.wall.scene.alpha();
+    const PeakRotation pa = peak_rotation(a), pe = peak_rotation(e);
+    const double peak_a = pa.value / alpha;
+    out.rows.push_back(
+        make_row(x.c.id, name, "peak_rotation", peak_a, pe.value / alpha, "analytic model", "alpha"));
+    out.rows.push_back(make_row(x.c.id, name, "peak_time", pa.t, pe.t, "analytic model", "s"));
+    const double over_a = a.overturned ? 1.0 : 0.0, over_e = e.overturned ? 1.0 : 0.0;
+    out.rows.push_back({x.c.id, name, "overturned", over_a, over_e, over_e - over_a, "analytic model", ""});
+    const double rms = x.reference ? 0.0 : rms_difference(a, e) / alpha;
+    out.rows.push_back({x.c.id, name, "rms_difference", peak_a, rms, rms / peak_a, "analytic model", "alpha"});
+}
+
+void whole_mechanism_peak_row(const TaskContext& x, const multibody::Trajectory& e, TaskOutput& out) {
+    if (!x.wall.scene.vssw) return;
+    const double peak_w = x.ref.whole_mechanism_peak;
+    const double peak_e = x.reference ? peak_w : peak_rotation(e).value / x.wall.scene.alpha();
+    out.rows.push_back(make_row(x.c.id, x.engine.name(), "peak_rotation_whole_mechanism", peak_w, peak_e,
+                                "analytic model with the whole-mechanism impact", "alpha"));
+}
+
+void history_task(const TaskContext& x, TaskOutput& out) {
+    CaseReference& ref = x.ref;
+    // The last task of the case to read the analytic trajectory releases it, however this one ends.
+    struct Release {
+        CaseReference& r;
+        ~Release() {
+            if (r.users.fetch_sub(1) == 1) r.history = {};
+        }
+    } release{ref};
+    const multibody::Trajectory& a = reference_of(x).history;
+    const double all = std::numeric_limits<double>::infinity();
+    if (x.reference) {
+        history_rows(x, a, a, out);
+        out.model_warnings = a.warnings;
+        whole_mechanism_peak_row(x, a, out);
+        if (x.keep_traces)
+            out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, x.wall.scene.alpha(), all, kPaperModel));
+        if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
+        return;
+    }
+    const multibody::Trajectory e =
+        x.engine.simulate(x.wall.scene, history_excitation(x), case_settings(x.c, x.engine));
+    history_rows(x, a, e, out);
+    whole_mechanism_peak_row(x, e, out);
+    if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), e, x.wall.scene.alpha(), all, ""));
+}
+
+void run_task(const TaskContext& x, TaskOutput& out) {
+    switch (x.c.kind) {
+        case CaseKind::threshold: threshold_task(x, out); return;
+        case CaseKind::free:
+        case CaseKind::step: free_task(x, out); return;
+        case CaseKind::history: history_task(x, out); return;
+    }
+}
+
+struct Task {
+    std::size_t case_index, engine_index;
+    double cost;  // estimated [s], for the queue's order only
+};
+
+// Simulated seconds a task's engine runs, at its default step (the threshold: ~10 trials, those below the threshold
+// run the whole hold, those above stop once the wall lifts: about half of it on average). free_t_end: the case's
+// free vibration end (CaseReference).
+double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMotion* record, double free_t_end) {
+    switch (c.kind) {
+        case CaseKind::threshold: {
+            const ThresholdOptions o;
+            return 10.0 * (o.ramp_time + 0.5 * threshold_hold_time(w.scene, o));
+        }
+        case CaseKind::free:
+        case CaseKind::step: return free_t_end;
+        case CaseKind::history: return record ? record->duration() + kHistoryTail : 0.0;
+    }
+    return 0.0;
+}
+
+}  // namespace
+
+std::vector<std::string> metrics_of(CaseKind kind, bool vssw) {
+    switch (kind) {
+        case CaseKind::threshold:
+            return {"threshold_g"};
+        case CaseKind::free:
+        case CaseKind::step:
+            if (vssw) return {"period", "restitution", "restitution_whole_mechanism"};
+            return {"period", "restitution"};
+        case CaseKind::history:
+            if (vssw) return {"peak_rotation", "peak_time", "overturned", "rms_difference",
+                              "peak_rotation_whole_mechanism"};
+            return {"peak_rotation", "peak_time", "overturned", "rms_difference"};
+    }
+    return {};
+}
+
+const char* to_string(CaseKind kind) {
+    switch (kind) {
+        case CaseKind::threshold: return "threshold";
+        case CaseKind::free: return "free";
+        case CaseKind::history: return "history";
+        case CaseKind::step: return "step";
+    }
+    return "unknown";
+}
+
+const SuiteWall& Suite::wall(const std::string& id) const {
+    for (const SuiteWall& w : walls)
+        if (w.id == id) return w;
+    throw InputError(fmt::format("suite '{}' has no wall '{}'", name, id));
+}
+
+const SuiteRecord& Suite::record(const std::string& id) const {
+    for (const SuiteRecord& r : records)
+        if (r.id == id) return r;
+    throw InputError(fmt::format("suite '{}' has no record '{}'", name, id));
+}
+
+Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids) {
+    std::set<std::string> wanted;
+    for (const std::string& id : case_ids) {
+        if (std::none_of(suite.cases.begin(), suite.cases.end(), [&](const SuiteCase& c) { return c.id == id; }))
+            throw InputError(fmt::format("suite '{}' has no case '{}'", suite.name, id));
+        wanted.insert(id);
+    }
+    Suite out;
+    out.name = suite.name;  // the cases keep their ids and meaning: results name the suite they come from
+    out.engine_settings = suite.engine_settings;
+    std::set<std::string> walls, records;
+    for (const SuiteCase& c : suite.cases) {
+        if (!wanted.count(c.id)) continue;
+        out.cases.push_back(c);
+        walls.insert(c.wall_id);
+        if (c.kind == CaseKind::history) records.insert(c.record_id);
+        if (c.kind == CaseKind::step && c.dt) {
+            std::vector<double>& dts = out.step_study[c.engine];
+            if (std::find(dts.begin(), dts.end(), *c.dt) == dts.end()) dts.push_back(*c.dt);
+        }
+    }
+    for (const SuiteWall& w : suite.walls)
+        if (walls.count(w.id)) out.walls.push_back(w);
+    for (const SuiteRecord& r : suite.records)
+        if (records.count(r.id)) out.records.push_back(r);
+    // Every named wall and record must be in the suite (a hand-made suite may lack one).
+    for (const std::string& w : walls) (void)suite.wall(w);
+    for (const std::string& r : records) (void)suite.record(r);
+    return out;
+}
+
+SuiteResults run_suite(const Suite& suite, const std::vector<std::string>& engines, const RunOptions& options) {
+    // The analytic model first (the reference rows), then each named engine once, in the order given.
+    std::vector<std::unique_ptr<multibody::Engine>> owned;
+    owned.push_back(multibody::make_engine(kReferenceEngine));
+    for (const std::string& name : engines) {
+        if (name == kReferenceEngine) continue;
+        if (std::any_of(owned.begin(), owned.end(), [&](const auto& e) { return e->name() == name; })) continue;
+        owned.push_back(multibody::make_engine(name));  // InputError naming the available ones
+    }
+    std::vector<const multibody::Engine*> list;
+    for (const auto& e : owned) list.push_back(e.get());
+    return run_suite_with_engines(suite, list, options);
+}
+
+SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const multibody::Engine*>& given,
+                                    const RunOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    require(options.threads >= 0, "threads", ">= 0 (0: the available cores)", options.threads);
+
+    const AnalyticEngine reference_engine;
+    std::vector<const multibody::Engine*> engines = {&reference_engine};
+    for (const multibody::Engine* e : given) {
+        if (e == nullptr) throw InputError("run_suite: a null engine");
+        const std::string name = e->name();
+        if (name == kReferenceEngine) continue;
+        if (std::any_of(engines.begin(), engines.end(), [&](const auto* x) { return x->name() == name; }))
+            throw InputError(fmt::format("run_suite: engine '{}' given twice", name));
+        engines.push_back(e);
+    }
+
+    SuiteResults results;
+    results.suite = suite.name;
+    for (const multibody::Engine* e : engines)
+        results.engines.push_back({e->name(), e->version(),
+                                   suite.engine_settings.count(e->name()) ? suite.engine_settings.at(e->name())
+                                                                          : e->default_settings()});
+
+    // Walls and records up front: a bad suite is an InputError before anything runs.
+    std::vector<const SuiteWall*> case_walls;
+    std::map<std::string, GroundMotion> records;
+    for (const SuiteCase& c : suite.cases) {
+        case_walls.push_back(&suite.wall(c.wall_id));
+        if (c.kind == CaseKind::history && !records.count(c.record_id)) {
+            const SuiteRecord& r = suite.record(c.record_id);
+            records.emplace(r.id, read_record(r.path).scaled(r.scale));
+        }
+        if (c.kind == CaseKind::step && !c.dt)
+            throw InputError(fmt::format("step case '{}' has no step dt", c.id));
+    }
+
+    // Tasks in (case, engine) order: their outputs are assembled in this order whatever the threads did.
+    std::vector<Task> tasks;
+    std::vector<CaseReference> references(suite.cases.size());
+    for (std::size_t ci = 0; ci < suite.cases.size(); ++ci) {
+        const SuiteCase& c = suite.cases[ci];
+        const SuiteWall& w = *case_walls[ci];
+        const GroundMotion* record = c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr;
+        if (c.kind == CaseKind::free || c.kind == CaseKind::step)
+            references[ci].free_t_end =
+                free_vibration_duration(w.scene, c.r * w.scene.alpha(), FreeVibrationOptions{}.impacts);
+        const double seconds = simulated_seconds(c, w, record, references[ci].free_t_end);
+        for (std::size_t ei = 0; ei < engines.size(); ++ei) {
+            const std::string name = engines[ei]->name();
+            if (!c.engine.empty() && c.engine != name) continue;
+            double cost = seconds * engines[ei]->cost_per_simulated_second();
+            const double dt = c.dt ? *c.dt : case_settings(c, *engines[ei]).dt;
+            if (dt > 0.0) cost *= engines[ei]->default_settings().dt / dt;
+            tasks.push_back({ci, ei, cost});
+            references[ci].users.fetch_add(1);
+        }
+    }
+    std::vector<TaskOutput> outputs(tasks.size());
+
+    std::vector<PoolTask> pool_tasks;
+    for (const Task& t : tasks) pool_tasks.push_back({t.cost, t.engine_index});
+    // An engine that is not re-entrant (ODE) has its tasks take turns (the pool's exclusive groups), beside other
+    // engines' ones. Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost
+    // the suite more than they gain: a fork per simulation of this large process, for ODE's small share of the suite
+    // at its 1 ms step (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s
+    // without, README "Speed").
+    std::vector<bool> exclusive;
+    for (const multibody::Engine* e : engines) exclusive.push_back(!e->runs_concurrently());
+
+    std::mutex progress_mutex;
+    int done = 0;
+    const int total = static_cast<int>(tasks.size());
+    results.threads = run_pool(pool_tasks, exclusive, options.threads, [&](std::size_t ti) {
+        const Task& task = tasks[ti];
+        const SuiteCase& c = suite.cases[task.case_index];
+        const multibody::Engine& engine = *engines[task.engine_index];
+        const double cpu_start = thread_cpu_seconds();
+        try {
+            const TaskContext x{c, *case_walls[task.case_index], engine, task.engine_index == 0,
+                                c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr, options.keep_traces,
+                                references[task.case_index]};
+            run_task(x, outputs[ti]);
+        } catch (const EngineFailure& e) {
+            outputs[ti] = TaskOutput{};
+            outputs[ti].failure = e.what();
+        }
+        outputs[ti].cpu_s = thread_cpu_seconds() - cpu_start;
+        if (options.progress) {
+            const std::lock_guard<std::mutex> lock(progress_mutex);
+            ++done;
+            options.progress(done, total,
+                             fmt::format("{} {}{}", c.id, engine.name(), outputs[ti].failure ? " (failed)" : ""));
+        }
+    });
+
+    for (std::size_t ti = 0; ti < tasks.size(); ++ti) {
+        TaskOutput& o = outputs[ti];
+        const std::string& case_id = suite.cases[tasks[ti].case_index].id;
+        results.task_times.push_back({case_id, suite.cases[tasks[ti].case_index].kind,
+                                      engines[tasks[ti].engine_index]->name(), o.cpu_s});
+        if (o.failure) results.failures.push_back({case_id, engines[tasks[ti].engine_index]->name(), *o.failure});
+        for (std::string& w : o.model_warnings) results.model_warnings.push_back({case_id, std::move(w)});
+        for (MetricRow& r : o.rows) results.rows.push_back(std::move(r));
+        for (Trace& t : o.traces) results.traces.push_back(std::move(t));
+    }
+    results.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return results;
+}
+
+}  // namespace vssw::compare

@@ -1,0 +1,212 @@
+#include "validation/suite_file.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "analytic/data_dir.hpp"
+#include "analytic/error.hpp"
+#include "multibody/engine.hpp"
+
+namespace vssw::study {
+namespace {
+
+std::string fmt_number(double x) { return fmt::format("{}", x); }
+
+// The scene's numbers, to tell whether two parts name the same wall alike.
+std::string scene_key(const multibody::WallScene& s) {
+    if (s.vssw) return fmt::format("vssw {} {} {} {} {} {}", s.vssw->b, s.vssw->h1, s.vssw->h2, s.vssw->xi, s.vssw->density, s.vssw->g);
+    return fmt::format("parapet {} {} {} {} {}", s.parapet->b, s.parapet->h, s.parapet->xi, s.parapet->density, s.parapet->g);
+}
+
+// The report's reference is the analytic model with the exact kinematics, Eq. (19)'s impact and the bilateral roller
+// (compare::analytic_reference_settings): a suite file that asks for another one is refused, not ignored.
+void require_reference_assumptions(const StudySpec& spec) {
+    if (!spec.as_read.contains("assumptions")) return;
+    const nlohmann::json& given = spec.as_read["assumptions"];
+    const std::map<std::string, std::string> reference = {
+        {"kinematics", "exact"}, {"impact", "eq19"}, {"roller", "bilateral"}};
+    for (const Axis& a : spec.assumptions) {
+        if (!given.contains(a.key)) continue;
+        const std::string& ref = reference.at(a.key);
+        if (a.levels.size() != 1 || to_text(a.levels.front()) != ref)
+            throw InputError(fmt::format("suite file {}: assumptions.{}: the report's reference is the analytic model "
+                                         "with {} {} (the engines are measured against it); a suite cannot change it",
+                                         spec.path, a.key, a.key, ref));
+    }
+}
+
+// The settings of one engine's single run in a part (its [settings] and [part.settings], one level each); a part
+// whose engine settings vary is a step study (dt of a free part) or refused: the report runs each engine at one
+// setting a case and would otherwise run it at its defaults without a word.
+std::optional<multibody::EngineSettings> single_settings(const Grid& grid, std::size_t pi, const EngineSpec& e,
+                                                         bool step_study,
+                                                         const std::function<InputError(const std::string&)>& fail) {
+    if (e.settings.empty()) return std::nullopt;
+    if (e.name == "analytic")
+        throw fail("settings of analytic: the report's reference, the analytic model, runs at its own settings; a "
+                   "suite cannot change them");
+    for (const Axis& a : e.settings)
+        if (a.varied() && !(a.key == "dt" && step_study))
+            throw fail(fmt::format("the settings of {} vary ({}): a suite runs each engine at one setting a case "
+                                   "(a varied dt of a free part is a step study)",
+                                   e.name, a.key));
+    for (const RunSpec& run : grid.runs())
+        if (run.part == pi && run.engine == e.name) return run.settings;
+    return std::nullopt;
+}
+
+}  // namespace
+
+compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name) {
+    const StudySpec& spec = grid.spec();
+    const auto fail = [&](const PartSpec& part, const std::string& why) {
+        return InputError(fmt::format("suite file {}: {}: {}", spec.path, part.where.empty() ? "the study" : part.where, why));
+    };
+    compare::Suite suite;
+    suite.name = suite_name;
+    require_reference_assumptions(spec);
+    for (const EngineSpec& e : spec.engines) {
+        if (e.settings.empty()) continue;
+        // The analytic model is the reference (above); its settings are the report's own.
+        if (e.name == "analytic")
+            throw InputError(fmt::format("suite file {}: settings.analytic: the report's reference, the analytic model, "
+                                         "runs at its own settings; a suite cannot change them",
+                                         spec.path));
+        if (std::any_of(e.settings.begin(), e.settings.end(), [](const Axis& a) { return a.varied(); })) continue;
+        // As the grid applies them (Grid: dt, iterations, the knobs by name); a part may add its own per case.
+        multibody::EngineSettings s = multibody::make_engine(e.name)->default_settings();
+        for (const Axis& a : e.settings) {
+            const double v = std::get<double>(a.levels.front());
+            if (a.key == "dt") s.dt = v;
+            else if (a.key == "iterations") s.iterations = static_cast<int>(v);
+            else s.knobs[a.key] = v;
+        }
+        suite.engine_settings[e.name] = s;
+    }
+    std::map<std::string, std::string> wall_scenes;  // id -> scene_key
+    const auto add_wall = [&](const PartSpec& part, const CaseSpec& c) {
+        const std::string id = grid.wall_name(c);
+        const std::string key = scene_key(c.scene);
+        const auto it = wall_scenes.find(id);
+        if (it != wall_scenes.end()) {
+            if (it->second != key) throw fail(part, fmt::format("the wall name '{}' is given to two different walls", id));
+            return id;
+        }
+        wall_scenes.emplace(id, key);
+        const std::string label = grid.wall_label(c);
+        suite.walls.push_back({id, label.empty() ? id : label, c.scene});
+        return id;
+    };
+    std::set<std::string> ids;
+    const auto add_case = [&](const PartSpec& part, compare::SuiteCase sc) {
+        if (!ids.insert(sc.id).second) throw fail(part, fmt::format("the case id '{}' comes twice", sc.id));
+        suite.cases.push_back(std::move(sc));
+    };
+
+    for (std::size_t pi = 0; pi < spec.parts.size(); ++pi) {
+        const PartSpec& part = spec.parts[pi];
+        if (part.names.wall_name.empty()) throw fail(part, "a suite's part names its walls (wall_name)");
+        std::vector<CaseSpec> cases;
+        for (const int id : grid.case_ids()) {
+            CaseSpec c = grid.make_case(id);
+            if (c.part == pi) cases.push_back(std::move(c));
+        }
+        // Engines whose step varies in this part: a step study.
+        std::vector<std::string> stepped;
+        for (const EngineSpec& e : part.engines)
+            for (const Axis& a : e.settings)
+                if (a.key == "dt" && a.varied()) stepped.push_back(e.name);
+        // The other engines' settings in this part, one set each (single_settings refuses more).
+        std::map<std::string, multibody::EngineSettings> settings;
+        const auto part_fail = [&](const std::string& why) { return fail(part, why); };
+        const bool free = part.kind == ExcitationKind::free;
+        for (const EngineSpec& e : part.engines) {
+            const auto s = single_settings(grid, pi, e, free, part_fail);  // checked for a step study's engine too
+            if (s && std::find(stepped.begin(), stepped.end(), e.name) == stepped.end()) settings[e.name] = *s;
+        }
+        switch (part.kind) {
+            case ExcitationKind::threshold:
+                for (const CaseSpec& c : cases) {
+                    const std::string w = add_wall(part, c);
+                    add_case(part, {w, compare::CaseKind::threshold, w, 0.0, "", {}, "", settings});
+                }
+                break;
+            case ExcitationKind::free:
+                if (stepped.empty()) {
+                    for (const CaseSpec& c : cases) {
+                        const std::string w = add_wall(part, c);
+                        add_case(part, {fmt::format("{}/r{}", w, fmt_number(c.theta0)), compare::CaseKind::free, w,
+                                        c.theta0, "", {}, "", settings});
+                    }
+                    break;
+                }
+                for (const std::string& engine : stepped)
+                    for (const CaseSpec& c : cases) {
+                        const std::string w = add_wall(part, c);
+                        for (const RunSpec& run : grid.runs()) {
+                            if (run.part != pi || run.engine != engine) continue;
+                            const double dt = run.settings.dt;
+                            add_case(part, {fmt::format("{}/r{}/dt{}/{}", w, fmt_number(c.theta0), fmt_number(dt), engine),
+                                            compare::CaseKind::step, w, c.theta0, "", dt, engine,
+                                            {{engine, run.settings}}});
+                            std::vector<double>& dts = suite.step_study[engine];
+                            if (std::find(dts.begin(), dts.end(), dt) == dts.end()) dts.push_back(dt);
+                        }
+                    }
+                break;
+            case ExcitationKind::record:
+                if (part.names.record_name.empty()) throw fail(part, "a suite's record part names its records (record_name)");
+                // The report reads a suite's records in the units their files say (validation/suite.cpp): refuse others.
+                if (part.excitation_axis("units"))
+                    throw fail(part, "a suite's records are read in the units their files give: no 'units'");
+                for (const CaseSpec& c : cases) {
+                    const std::string w = add_wall(part, c);
+                    const std::string r = grid.record_name(c);
+                    const auto same = std::find_if(suite.records.begin(), suite.records.end(),
+                                                   [&](const compare::SuiteRecord& x) { return x.id == r; });
+                    if (same != suite.records.end() &&
+                        (same->path != grid.record_path(c.file) || same->scale != c.scale))
+                        throw fail(part, fmt::format("the record name '{}' is given to two different records", r));
+                    if (same == suite.records.end()) {
+                        const std::string label = grid.record_label(c);
+                        suite.records.push_back({r, label.empty() ? r : label, grid.record_path(c.file), c.scale});
+                    }
+                    add_case(part, {fmt::format("{}/{}", w, r), compare::CaseKind::history, w, 0.0, r, {}, "", settings});
+                }
+                break;
+            default:
+                throw fail(part, fmt::format("a suite runs thresholds, free vibrations, step studies and records, not "
+                                             "kind {}",
+                                             to_string(part.kind)));
+        }
+    }
+    return suite;
+}
+
+std::string suite_file(const std::string& name_or_path) {
+    if (name_or_path == "default" || name_or_path == "full")
+        return shipped_studies_dir() + "/validation-" + name_or_path + ".toml";
+    return name_or_path;
+}
+
+compare::Suite read_suite(const std::string& name_or_path, const std::string& data_dir) {
+    const std::string file = suite_file(name_or_path);
+    std::error_code ec;
+    if (file == name_or_path && !std::filesystem::is_regular_file(file, ec))
+        throw InputError(fmt::format("unknown suite '{}' (valid: default, full, or a suite file)", name_or_path));
+    const Grid grid(read_study_file(file));
+    const bool shipped = file != name_or_path;
+    compare::Suite suite = suite_from_study(grid, shipped ? name_or_path : grid.spec().name);
+    if (!data_dir.empty())
+        for (compare::SuiteRecord& r : suite.records)
+            r.path = data_dir + "/" + std::filesystem::path(r.path).filename().string();
+    return suite;
+}
+
+}  // namespace vssw::study
