@@ -40,6 +40,8 @@ case "$mode" in test|asan) packages+=(clang libclang-rt-dev llvm) ;; esac
 # The test that renders report.html in a real browser (tests/cli/report_browser.sh, skipped without it): headless
 # Chromium, test only (/usr/lib/chromium is 350 MB installed; `run` and `build` do not need it).
 case "$mode" in test) packages+=(chromium) ;; esac
+# The code-shape check (tests/code_shape.py) finds each function's extent with Universal Ctags; test only.
+case "$mode" in test) packages+=(universal-ctags) ;; esac
 
 missing=()
 for p in "${packages[@]}"; do

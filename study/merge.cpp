@@ -66,56 +66,57 @@ struct ShardReader {
     }
 };
 
-}  // namespace
+// Refuses a shard folder that cannot take part: it is --out itself, unfinished, of another study, split or engine
+// versions than the first, or its results.csv is not the one its manifest records.
+void check_shard(const fs::path& d, const Json& m, const Json& first, const fs::path& first_dir, const fs::path& out) {
+    std::error_code ec;
+    if (fs::equivalent(d, out, ec))  // the merged files would replace this shard's own
+        throw InputError(fmt::format("study merge: --out '{}' is the shard folder '{}': merge into another folder",
+                                     out.string(), d.string()));
+    if (m.at("study").at("identity") != first.at("study").at("identity"))
+        throw InputError(fmt::format("study merge: '{}' holds another study ({}) than '{}' ({})", d.string(),
+                                     m["study"]["name"].get<std::string>(), first_dir.string(),
+                                     first["study"]["name"].get<std::string>()));
+    if (m.at("shard").at("n") != first.at("shard").at("n"))
+        throw InputError(fmt::format("study merge: '{}' is shard {}/{}, '{}' of a split into {}", d.string(),
+                                     m["shard"]["k"].get<int>(), m["shard"]["n"].get<int>(), first_dir.string(),
+                                     first["shard"]["n"].get<int>()));
+    if (m.at("engines") != first.at("engines"))
+        throw InputError(fmt::format("study merge: '{}' was run by other engine versions than '{}' ({} against {})",
+                                     d.string(), first_dir.string(), m["engines"].dump(), first["engines"].dump()));
+    // The file the shard's run wrote: its rows (each once), then byte for byte (a manifest of an older vssw records
+    // no "results": its rows are still checked for repeats while merging).
+    if (!m.contains("results")) return;
+    ShardReader reader(d / kResultsCsv);
+    while (reader.case_id >= 0) reader.advance();
+    const long rows = m["results"].value("rows", -1L);
+    if (reader.rows != rows)
+        throw InputError(fmt::format("study merge: '{}' holds {} rows, its manifest.json records {}: a damaged shard; "
+                                     "run it again",
+                                     reader.path.string(), reader.rows, rows));
+    const std::string recorded = m["results"].value("fnv1a64", "");
+    const std::string now = file_fnv1a(d / kResultsCsv);
+    if (now != recorded)
+        throw InputError(fmt::format("study merge: '{}' is not the results.csv its manifest records (FNV-1a {}, "
+                                     "recorded {}): it was changed after the run; run the shard again",
+                                     (d / kResultsCsv).string(), now, recorded));
+}
 
-MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out, const fs::path& write_to) {
-    const fs::path dest = write_to.empty() ? out : write_to;
+// The shards' manifests, each shard checked, every shard of the split given once and all the study's cases held.
+std::vector<Json> read_shards(const std::vector<fs::path>& dirs, const fs::path& out) {
     if (dirs.empty()) throw InputError("study merge: name the shards' folders");
     std::vector<Json> manifests;
     std::set<int> ks;
     for (const fs::path& d : dirs) {
         std::error_code ec;
-        if (fs::equivalent(d, out, ec))  // the merged files would replace this shard's own
-            throw InputError(fmt::format("study merge: --out '{}' is the shard folder '{}': merge into another folder",
-                                         out.string(), d.string()));
         if (fs::exists(d / kJournalFile, ec))
             throw InputError(fmt::format("study merge: '{}' holds an unfinished shard ({}): finish it with --resume",
                                          d.string(), kJournalFile));
         manifests.push_back(read_manifest(d));
-        const Json& m = manifests.back();
-        const Json& first = manifests.front();
-        if (m.at("study").at("identity") != first.at("study").at("identity"))
-            throw InputError(fmt::format("study merge: '{}' holds another study ({}) than '{}' ({})", d.string(),
-                                         m["study"]["name"].get<std::string>(), dirs.front().string(),
-                                         first["study"]["name"].get<std::string>()));
-        if (m.at("shard").at("n") != first.at("shard").at("n"))
-            throw InputError(fmt::format("study merge: '{}' is shard {}/{}, '{}' of a split into {}", d.string(),
-                                         m["shard"]["k"].get<int>(), m["shard"]["n"].get<int>(),
-                                         dirs.front().string(), first["shard"]["n"].get<int>()));
-        if (m.at("engines") != first.at("engines"))
-            throw InputError(fmt::format("study merge: '{}' was run by other engine versions than '{}' ({} against {})",
-                                         d.string(), dirs.front().string(), m["engines"].dump(),
-                                         first["engines"].dump()));
-        // The file the shard's run wrote: its rows (each once), then byte for byte (a manifest of an older vssw
-        // records no "results": its rows are still checked for repeats, below).
-        if (m.contains("results")) {
-            ShardReader reader(d / kResultsCsv);
-            while (reader.case_id >= 0) reader.advance();
-            const long rows = m["results"].value("rows", -1L);
-            if (reader.rows != rows)
-                throw InputError(fmt::format("study merge: '{}' holds {} rows, its manifest.json records {}: a "
-                                             "damaged shard; run it again",
-                                             reader.path.string(), reader.rows, rows));
-            const std::string recorded = m["results"].value("fnv1a64", "");
-            const std::string now = file_fnv1a(d / kResultsCsv);
-            if (now != recorded)
-                throw InputError(fmt::format("study merge: '{}' is not the results.csv its manifest records (FNV-1a "
-                                             "{}, recorded {}): it was changed after the run; run the shard again",
-                                             (d / kResultsCsv).string(), now, recorded));
-        }
-        if (!ks.insert(m["shard"]["k"].get<int>()).second)
-            throw InputError(fmt::format("study merge: shard {} is given twice ('{}')", m["shard"]["k"].get<int>(),
-                                         d.string()));
+        check_shard(d, manifests.back(), manifests.front(), dirs.front(), out);
+        const int k = manifests.back()["shard"]["k"].get<int>();
+        if (!ks.insert(k).second)
+            throw InputError(fmt::format("study merge: shard {} is given twice ('{}')", k, d.string()));
     }
     const int n = manifests.front()["shard"]["n"].get<int>();
     std::vector<int> missing;
@@ -124,19 +125,18 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
     if (!missing.empty())
         throw InputError(fmt::format("study merge: shard{} {} of {} missing", missing.size() == 1 ? "" : "s",
                                      fmt::join(missing, ", "), n));
-
     long shard_cases = 0;
     for (const Json& m : manifests) shard_cases += m["cases"]["run"].get<long>();
     const Json& cases_of = manifests.front()["cases"];
     if (cases_of.contains("total") && shard_cases != cases_of["total"].get<long>())
         throw InputError(fmt::format("study merge: the shards hold {} cases, the study {}", shard_cases,
                                      cases_of["total"].get<long>()));
+    return manifests;
+}
 
-    std::error_code ec;
-    fs::create_directories(dest, ec);
-    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", dest.string(), ec.message()));
-
-    // results.csv: the shards' case blocks in case order (each shard's file is in case order already).
+// results.csv: the shards' case blocks in case order (each shard's file is in case order already); counts the rows
+// and the failed ones into `result`.
+void write_merged_results(const std::vector<fs::path>& dirs, const fs::path& file, MergeResult& result) {
     std::vector<std::unique_ptr<ShardReader>> readers;
     for (const fs::path& d : dirs) {
         readers.push_back(std::make_unique<ShardReader>(d / kResultsCsv));
@@ -144,39 +144,36 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
             throw InputError(fmt::format("study merge: '{}' has other columns than '{}'", readers.back()->path.string(),
                                          readers.front()->path.string()));
     }
-    MergeResult result;
-    result.shards = n;
-    const std::size_t status = static_cast<std::size_t>(
-        std::find(readers.front()->header.begin(), readers.front()->header.end(), "status") -
-        readers.front()->header.begin());
-    {
-        AtomicFile csv(dest / kResultsCsv);
-        const std::vector<std::string>& header = readers.front()->header;
-        for (std::size_t i = 0; i < header.size(); ++i) csv.stream() << (i ? "," : "") << csv_field(header[i]);
-        csv.stream() << '\n';
-        for (;;) {
-            ShardReader* pick = nullptr;
-            for (const auto& r : readers)
-                if (r->case_id >= 0 && (!pick || r->case_id < pick->case_id)) pick = r.get();
-            if (!pick) break;
-            const long id = pick->case_id;
-            for (const auto& r : readers)
-                if (r.get() != pick && r->case_id == id)
-                    throw InputError(fmt::format("study merge: case {} is in two shards", id));
-            while (pick->case_id == id) {
-                for (std::size_t i = 0; i < pick->next.size(); ++i)
-                    csv.stream() << (i ? "," : "") << csv_field(pick->next[i]);
-                csv.stream() << '\n';
-                ++result.rows;
-                if (status < pick->next.size() && pick->next[status] != "ok") ++result.failed_rows;
-                pick->advance();
-            }
+    const std::vector<std::string>& header = readers.front()->header;
+    const std::size_t status =
+        static_cast<std::size_t>(std::find(header.begin(), header.end(), "status") - header.begin());
+    AtomicFile csv(file);
+    for (std::size_t i = 0; i < header.size(); ++i) csv.stream() << (i ? "," : "") << csv_field(header[i]);
+    csv.stream() << '\n';
+    for (;;) {
+        ShardReader* pick = nullptr;
+        for (const auto& r : readers)
+            if (r->case_id >= 0 && (!pick || r->case_id < pick->case_id)) pick = r.get();
+        if (!pick) break;
+        const long id = pick->case_id;
+        for (const auto& r : readers)
+            if (r.get() != pick && r->case_id == id)
+                throw InputError(fmt::format("study merge: case {} is in two shards", id));
+        while (pick->case_id == id) {
+            for (std::size_t i = 0; i < pick->next.size(); ++i)
+                csv.stream() << (i ? "," : "") << csv_field(pick->next[i]);
+            csv.stream() << '\n';
+            ++result.rows;
+            if (status < pick->next.size() && pick->next[status] != "ok") ++result.failed_rows;
+            pick->advance();
         }
-        csv.commit();
     }
+    csv.commit();
+}
 
-    // The manifest of the whole study: the shards' run times side by side, the longest as the study's (shards run in
-    // parallel), the tasks summed.
+// The manifest of the whole study: the shards' run times side by side, the longest as the study's (shards run in
+// parallel), the tasks summed.
+void write_merged_manifest(const std::vector<Json>& manifests, const fs::path& dest, const MergeResult& result) {
     Json merged = manifests.front();
     merged["shard"] = {{"k", 1}, {"n", 1}};
     Json shards = Json::array();
@@ -196,11 +193,23 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
     merged["cases"]["run"] = cases;
     merged["wall_time_s"] = longest;
     merged["results"] = {{"rows", result.rows}, {"fnv1a64", file_fnv1a(dest / kResultsCsv)}};
-    {
-        AtomicFile manifest(dest / kManifestFile);
-        manifest.stream() << merged.dump(2) << '\n';
-        manifest.commit();
-    }
+    AtomicFile manifest(dest / kManifestFile);
+    manifest.stream() << merged.dump(2) << '\n';
+    manifest.commit();
+}
+
+}  // namespace
+
+MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out, const fs::path& write_to) {
+    const fs::path dest = write_to.empty() ? out : write_to;
+    const std::vector<Json> manifests = read_shards(dirs, out);
+    std::error_code ec;
+    fs::create_directories(dest, ec);
+    if (ec) throw InputError(fmt::format("cannot create the output folder '{}': {}", dest.string(), ec.message()));
+    MergeResult result;
+    result.shards = manifests.front()["shard"]["n"].get<int>();
+    write_merged_results(dirs, dest / kResultsCsv, result);
+    write_merged_manifest(manifests, dest, result);
     return result;
 }
 

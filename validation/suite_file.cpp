@@ -61,25 +61,18 @@ std::optional<multibody::EngineSettings> single_settings(const Grid& grid, std::
     return std::nullopt;
 }
 
-}  // namespace
-
-compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name) {
-    const StudySpec& spec = grid.spec();
-    const auto fail = [&](const PartSpec& part, const std::string& why) {
-        return InputError(fmt::format("suite file {}: {}: {}", spec.path, part.where.empty() ? "the study" : part.where, why));
-    };
-    compare::Suite suite;
-    suite.name = suite_name;
-    require_reference_assumptions(spec);
+// The engines' settings a suite gives once for all its parts ([settings.<engine>], one level each), as the grid
+// applies them (Grid: dt, iterations, the knobs by name); a part may add its own per case.
+std::map<std::string, multibody::EngineSettings> suite_engine_settings(const StudySpec& spec) {
+    std::map<std::string, multibody::EngineSettings> out;
     for (const EngineSpec& e : spec.engines) {
         if (e.settings.empty()) continue;
-        // The analytic model is the reference (above); its settings are the report's own.
+        // The analytic model is the reference (require_reference_assumptions); its settings are the report's own.
         if (e.name == "analytic")
             throw InputError(fmt::format("suite file {}: settings.analytic: the report's reference, the analytic model, "
                                          "runs at its own settings; a suite cannot change them",
                                          spec.path));
         if (std::any_of(e.settings.begin(), e.settings.end(), [](const Axis& a) { return a.varied(); })) continue;
-        // As the grid applies them (Grid: dt, iterations, the knobs by name); a part may add its own per case.
         multibody::EngineSettings s = multibody::make_engine(e.name)->default_settings();
         for (const Axis& a : e.settings) {
             const double v = std::get<double>(a.levels.front());
@@ -87,34 +80,26 @@ compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name)
             else if (a.key == "iterations") s.iterations = static_cast<int>(v);
             else s.knobs[a.key] = v;
         }
-        suite.engine_settings[e.name] = s;
+        out[e.name] = s;
     }
-    std::map<std::string, std::string> wall_scenes;  // id -> scene_key
-    const auto add_wall = [&](const PartSpec& part, const CaseSpec& c) {
-        const std::string id = grid.wall_name(c);
-        const std::string key = scene_key(c.scene);
-        const auto it = wall_scenes.find(id);
-        if (it != wall_scenes.end()) {
-            if (it->second != key) throw fail(part, fmt::format("the wall name '{}' is given to two different walls", id));
-            return id;
-        }
-        wall_scenes.emplace(id, key);
-        const std::string label = grid.wall_label(c);
-        suite.walls.push_back({id, label.empty() ? id : label, c.scene});
-        return id;
-    };
-    std::set<std::string> ids;
-    const auto add_case = [&](const PartSpec& part, compare::SuiteCase sc) {
-        if (!ids.insert(sc.id).second) throw fail(part, fmt::format("the case id '{}' comes twice", sc.id));
-        suite.cases.push_back(std::move(sc));
-    };
+    return out;
+}
 
-    for (std::size_t pi = 0; pi < spec.parts.size(); ++pi) {
-        const PartSpec& part = spec.parts[pi];
+// A suite built part by part from a study grid: walls and records named once each, case ids unique.
+class SuiteBuilder {
+public:
+    SuiteBuilder(const Grid& grid, const std::string& name) : grid_(grid), spec_(grid.spec()) {
+        suite_.name = name;
+        require_reference_assumptions(spec_);
+        suite_.engine_settings = suite_engine_settings(spec_);
+    }
+
+    void add_part(std::size_t pi) {
+        const PartSpec& part = spec_.parts[pi];
         if (part.names.wall_name.empty()) throw fail(part, "a suite's part names its walls (wall_name)");
         std::vector<CaseSpec> cases;
-        for (const int id : grid.case_ids()) {
-            CaseSpec c = grid.make_case(id);
+        for (const int id : grid_.case_ids()) {
+            CaseSpec c = grid_.make_case(id);
             if (c.part == pi) cases.push_back(std::move(c));
         }
         // Engines whose step varies in this part: a step study.
@@ -127,7 +112,7 @@ compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name)
         const auto part_fail = [&](const std::string& why) { return fail(part, why); };
         const bool free = part.kind == ExcitationKind::free;
         for (const EngineSpec& e : part.engines) {
-            const auto s = single_settings(grid, pi, e, free, part_fail);  // checked for a step study's engine too
+            const auto s = single_settings(grid_, pi, e, free, part_fail);  // checked for a step study's engine too
             if (s && std::find(stepped.begin(), stepped.end(), e.name) == stepped.end()) settings[e.name] = *s;
         }
         switch (part.kind) {
@@ -144,49 +129,100 @@ compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name)
                         add_case(part, {fmt::format("{}/r{}", w, fmt_number(c.theta0)), compare::CaseKind::free, w,
                                         c.theta0, "", {}, "", settings});
                     }
-                    break;
-                }
-                for (const std::string& engine : stepped)
-                    for (const CaseSpec& c : cases) {
-                        const std::string w = add_wall(part, c);
-                        for (const RunSpec& run : grid.runs()) {
-                            if (run.part != pi || run.engine != engine) continue;
-                            const double dt = run.settings.dt;
-                            add_case(part, {fmt::format("{}/r{}/dt{}/{}", w, fmt_number(c.theta0), fmt_number(dt), engine),
-                                            compare::CaseKind::step, w, c.theta0, "", dt, engine,
-                                            {{engine, run.settings}}});
-                            std::vector<double>& dts = suite.step_study[engine];
-                            if (std::find(dts.begin(), dts.end(), dt) == dts.end()) dts.push_back(dt);
-                        }
-                    }
-                break;
-            case ExcitationKind::record:
-                if (part.names.record_name.empty()) throw fail(part, "a suite's record part names its records (record_name)");
-                // The report reads a suite's records in the units their files say (validation/suite.cpp): refuse others.
-                if (part.excitation_axis("units"))
-                    throw fail(part, "a suite's records are read in the units their files give: no 'units'");
-                for (const CaseSpec& c : cases) {
-                    const std::string w = add_wall(part, c);
-                    const std::string r = grid.record_name(c);
-                    const auto same = std::find_if(suite.records.begin(), suite.records.end(),
-                                                   [&](const compare::SuiteRecord& x) { return x.id == r; });
-                    if (same != suite.records.end() &&
-                        (same->path != grid.record_path(c.file) || same->scale != c.scale))
-                        throw fail(part, fmt::format("the record name '{}' is given to two different records", r));
-                    if (same == suite.records.end()) {
-                        const std::string label = grid.record_label(c);
-                        suite.records.push_back({r, label.empty() ? r : label, grid.record_path(c.file), c.scale});
-                    }
-                    add_case(part, {fmt::format("{}/{}", w, r), compare::CaseKind::history, w, 0.0, r, {}, "", settings});
+                } else {
+                    add_step_cases(pi, cases, stepped);
                 }
                 break;
+            case ExcitationKind::record: add_record_cases(part, cases, settings); break;
             default:
                 throw fail(part, fmt::format("a suite runs thresholds, free vibrations, step studies and records, not "
                                              "kind {}",
                                              to_string(part.kind)));
         }
     }
-    return suite;
+
+    compare::Suite take() { return std::move(suite_); }
+
+private:
+    InputError fail(const PartSpec& part, const std::string& why) const {
+        return InputError(
+            fmt::format("suite file {}: {}: {}", spec_.path, part.where.empty() ? "the study" : part.where, why));
+    }
+
+    // The wall's id, adding the wall the first time it is named; one name given to two walls is refused.
+    std::string add_wall(const PartSpec& part, const CaseSpec& c) {
+        const std::string id = grid_.wall_name(c);
+        const std::string key = scene_key(c.scene);
+        const auto it = wall_scenes_.find(id);
+        if (it != wall_scenes_.end()) {
+            if (it->second != key)
+                throw fail(part, fmt::format("the wall name '{}' is given to two different walls", id));
+            return id;
+        }
+        wall_scenes_.emplace(id, key);
+        const std::string label = grid_.wall_label(c);
+        suite_.walls.push_back({id, label.empty() ? id : label, c.scene});
+        return id;
+    }
+
+    void add_case(const PartSpec& part, compare::SuiteCase sc) {
+        if (!ids_.insert(sc.id).second) throw fail(part, fmt::format("the case id '{}' comes twice", sc.id));
+        suite_.cases.push_back(std::move(sc));
+    }
+
+    // A free part whose engines' dt varies: one case per engine, release and step.
+    void add_step_cases(std::size_t pi, const std::vector<CaseSpec>& cases, const std::vector<std::string>& stepped) {
+        const PartSpec& part = spec_.parts[pi];
+        for (const std::string& engine : stepped)
+            for (const CaseSpec& c : cases) {
+                const std::string w = add_wall(part, c);
+                for (const RunSpec& run : grid_.runs()) {
+                    if (run.part != pi || run.engine != engine) continue;
+                    const double dt = run.settings.dt;
+                    add_case(part, {fmt::format("{}/r{}/dt{}/{}", w, fmt_number(c.theta0), fmt_number(dt), engine),
+                                    compare::CaseKind::step, w, c.theta0, "", dt, engine, {{engine, run.settings}}});
+                    std::vector<double>& dts = suite_.step_study[engine];
+                    if (std::find(dts.begin(), dts.end(), dt) == dts.end()) dts.push_back(dt);
+                }
+            }
+    }
+
+    // A record part: one case per wall and record, each record named once.
+    void add_record_cases(const PartSpec& part, const std::vector<CaseSpec>& cases,
+                          const std::map<std::string, multibody::EngineSettings>& settings) {
+        if (part.names.record_name.empty())
+            throw fail(part, "a suite's record part names its records (record_name)");
+        // The report reads a suite's records in the units their files say (validation/suite.cpp): refuse others.
+        if (part.excitation_axis("units"))
+            throw fail(part, "a suite's records are read in the units their files give: no 'units'");
+        for (const CaseSpec& c : cases) {
+            const std::string w = add_wall(part, c);
+            const std::string r = grid_.record_name(c);
+            const auto same = std::find_if(suite_.records.begin(), suite_.records.end(),
+                                           [&](const compare::SuiteRecord& x) { return x.id == r; });
+            if (same != suite_.records.end() && (same->path != grid_.record_path(c.file) || same->scale != c.scale))
+                throw fail(part, fmt::format("the record name '{}' is given to two different records", r));
+            if (same == suite_.records.end()) {
+                const std::string label = grid_.record_label(c);
+                suite_.records.push_back({r, label.empty() ? r : label, grid_.record_path(c.file), c.scale});
+            }
+            add_case(part, {fmt::format("{}/{}", w, r), compare::CaseKind::history, w, 0.0, r, {}, "", settings});
+        }
+    }
+
+    const Grid& grid_;
+    const StudySpec& spec_;
+    compare::Suite suite_;
+    std::map<std::string, std::string> wall_scenes_;  // id -> scene_key
+    std::set<std::string> ids_;
+};
+
+}  // namespace
+
+compare::Suite suite_from_study(const Grid& grid, const std::string& suite_name) {
+    SuiteBuilder builder(grid, suite_name);
+    for (std::size_t pi = 0; pi < grid.spec().parts.size(); ++pi) builder.add_part(pi);
+    return builder.take();
 }
 
 std::string suite_file(const std::string& name_or_path) {
