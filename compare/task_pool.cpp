@@ -7,13 +7,8 @@
 #include <thread>
 
 #include "analytic/error.hpp"
-#include "multibody/engine.hpp"
 
 namespace vssw::compare {
-
-double cost_per_simulated_second(const std::string& engine) {
-    return multibody::make_engine(engine)->cost_per_simulated_second();
-}
 
 int pool_threads(int threads, std::size_t tasks) {
     require(threads >= 0, "threads", ">= 0 (0: the available cores)", threads);

@@ -1,11 +1,10 @@
 #pragma once
 // Runs independent tasks on a pool of threads, longest first, with one rule for engines whose library is not
 // re-entrant: tasks of an exclusive group (an engine whose runs_concurrently() is false, e.g. ODE) never run at the same
-// time as each other, while other groups' tasks run beside them. The validation suite (suite.hpp) and studies
-// (study/runner.hpp) run their simulations through it.
+// time as each other, while other groups' tasks run beside them. The validation suite and studies run their
+// simulations through it by way of compare/case_runner.hpp (its cost model gives the tasks' costs).
 #include <cstddef>
 #include <functional>
-#include <string>
 #include <vector>
 
 namespace vssw::compare {
@@ -14,10 +13,6 @@ struct PoolTask {
     double cost = 0.0;      // estimated [s]: only the order depends on it (longest first; ties keep their order)
     std::size_t group = 0;  // the engine, for the exclusive rule
 };
-
-// A backend's estimated cost per simulated second at its default step [s/s] (multibody::Engine's own figure), for
-// ordering tasks longest first: only the order depends on it.
-double cost_per_simulated_second(const std::string& engine);
 
 // The number of threads run_pool uses for `tasks` tasks: min(threads, tasks), at least 1 (threads 0: the available
 // cores). A caller that runs a non-re-entrant engine in worker processes (study/runner.cpp) asks this first: with

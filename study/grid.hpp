@@ -23,6 +23,7 @@
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
 #include "analytic/specimens.hpp"
+#include "compare/experiments.hpp"
 #include "multibody/engine.hpp"
 #include "study/spec.hpp"
 
@@ -57,6 +58,10 @@ struct CaseSpec {
     std::string shape;              // pulse
     double amplitude_g = 0.0, pulse_period = 0.0, duration = 0.0;  // pulse [g], [s], harmonic [s]
     double tolerance = 0.0, max_pga_g = 0.0, step = 0.0;  // scale-to-collapse; 0: the defaults (measure.cpp)
+    // pulse, record, scale-to-collapse: how long a run goes on after the motion ends [s] (earlier at rest or
+    // overturning): a study's answer, compare::kResponseTail; the validation suite's is kSuiteResponseTail
+    // (compare/experiments.hpp says why two).
+    double response_tail = compare::kResponseTail;
     // The wall's position among its part's wall axes alone (cases that differ only in their excitation share it):
     // with the part and the run, the key of a threshold task (study/runner.cpp: one per wall and run in a shard).
     std::size_t wall_index = 0;

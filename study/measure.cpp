@@ -15,7 +15,7 @@
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 #include "compare/experiments.hpp"
-#include "compare/task_pool.hpp"
+#include "compare/case_runner.hpp"
 #include "multibody/scene_geometry.hpp"
 #include "multibody/step_resolution.hpp"
 #include "study/metric_catalog.hpp"
@@ -177,7 +177,7 @@ Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, co
     multibody::Excitation ex;
     ex.horizontal = motion;
     ex.theta0 = 0.0;
-    ex.t_end = motion.duration() + kResponseTail;
+    ex.t_end = motion.duration() + c.response_tail;
     ex.stop_at_rest = true;
     ex.motion_only = true;  // the response metrics are read from theta1 alone
     multibody::EngineSettings settings = run.settings;
@@ -238,7 +238,7 @@ void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& ru
     if (engine.name() == "analytic") return;  // its dt is the sampling only, and it has no wall rule to meet
     multibody::Excitation ex;
     ex.horizontal = case_motion(grid, c, c.scale);
-    ex.t_end = ex.horizontal.duration() + kResponseTail;
+    ex.t_end = ex.horizontal.duration() + c.response_tail;
     multibody::require_step_resolves(engine.display_name(), c.scene, ex, run.settings.dt,
                                      !engine.dt_is_a_reporting_interval());
 }
@@ -398,34 +398,29 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     return out;
 }
 
-double threshold_cost(const RunSpec& run) {
-    // ~10 trials (bracketed around the closed form): those below the threshold run the whole hold (a few seconds),
-    // those above stop once the wall lifts.
-    return 10.0 * 2.5 * compare::cost_per_simulated_second(run.engine);
-}
-
-double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run) {
-    // Simulated seconds, roughly: a threshold search is ~10 trials of a few seconds; a free vibration a few seconds;
-    // a pulse or a record its duration and the tail; a collapse search ~35 such runs.
+double simulated_seconds(const Grid& grid, const CaseSpec& c) {
+    // Roughly: a free vibration a few seconds; a pulse or a record its duration and the tail; a collapse search ~35
+    // such runs.
+    constexpr double kFreeSeconds = 5.0;
+    constexpr double kCollapseRuns = 35.0;
     const PartSpec& part = grid.spec().parts[c.part];
+    const auto motion_seconds = [&] {
+        return part.kind == ExcitationKind::pulse ? 3.0 * c.pulse_period + c.duration + c.response_tail
+                                                  : compare::response_seconds(grid.record(c), c.response_tail);
+    };
     double seconds = 0.0;
     for (const std::string& metric : part.metrics) {
         switch (metric_info(metric).source) {
             case MetricSource::closed_form: break;
-            case MetricSource::threshold: break;  // a task of its own (threshold_cost)
-            case MetricSource::free: seconds += 5.0; break;
+            case MetricSource::threshold: break;  // a task of its own (compare::threshold_seconds)
+            case MetricSource::free: seconds += kFreeSeconds; break;
             case MetricSource::response:
-                seconds += part.kind == ExcitationKind::free ? 5.0
-                           : part.kind == ExcitationKind::pulse ? 3.0 * c.pulse_period + c.duration + kResponseTail
-                                                                : grid.record(c).duration() + kResponseTail;
+                seconds += part.kind == ExcitationKind::free ? kFreeSeconds : motion_seconds();
                 break;
-            case MetricSource::collapse: seconds += 35.0 * (grid.record(c).duration() + kResponseTail); break;
+            case MetricSource::collapse: seconds += kCollapseRuns * motion_seconds(); break;
         }
     }
-    double cost = seconds * compare::cost_per_simulated_second(run.engine);
-    if (run.engine != "analytic" && run.settings.dt > 0.0)
-        cost *= multibody::make_engine(run.engine)->default_settings().dt / run.settings.dt;
-    return cost;
+    return seconds;
 }
 
 }  // namespace vssw::study

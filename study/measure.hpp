@@ -6,7 +6,7 @@
 //  - threshold_g: find_threshold on the case's wall (measure_threshold: a task of its own per wall and run);
 //  - free: run_free_vibration released at theta0 alpha (the analytic model sampled every 1e-4 s, as vssw compare
 //    measures it, so that its period and restitution are measured like an engine's);
-//  - pulse, record: a run from rest until the motion's end + kResponseTail, or rest, or overturning;
+//  - pulse, record: a run from rest until the motion's end + the case's response_tail, or rest, or overturning;
 //  - scale-to-collapse: such runs on a rising scale (see collapse_scale in measure.cpp).
 // Peaks, overturning, the energy balance and the roller's tension come from the analytic model's located events
 // (multibody::LocatedEvents) when it is the backend, from the samples otherwise.
@@ -24,8 +24,8 @@
 
 namespace vssw::study {
 
-// After a pulse or a record the run goes on this long (compare/experiments.hpp), as `vssw history`'s does by default:
-// both give the same peaks.
+// After a pulse or a record a study's run goes on this long (CaseSpec::response_tail; compare/experiments.hpp), as
+// `vssw history`'s does by default: both give the same peaks.
 using compare::kResponseTail;
 
 struct Measurement {
@@ -57,9 +57,8 @@ void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& ru
 // first case and run whose step cannot resolve it.
 void require_runs_resolve(const Grid& grid, const std::vector<int>& case_ids);
 
-// A rough cost of the run [s] (its threshold apart), and of a threshold task, for ordering tasks longest first
-// (compare/task_pool.hpp).
-double estimated_cost(const Grid& grid, const CaseSpec& c, const RunSpec& run);
-double threshold_cost(const RunSpec& run);
+// Roughly the seconds the run simulates (its threshold apart, a task of its own: compare::threshold_seconds), for
+// the cost model that orders tasks longest first (compare/case_runner.hpp).
+double simulated_seconds(const Grid& grid, const CaseSpec& c);
 
 }  // namespace vssw::study

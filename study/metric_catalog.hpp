@@ -1,29 +1,19 @@
 #pragma once
-// Every metric a study can ask for: its name (a results.csv `metric`), unit, what produces it, and whether only the
-// analytic model has it. One table read by the study file's checks, the runner, the writers and `vssw study --help`.
+// The metrics a study can ask for: the entries of the project's one metric table (compare/metric_catalog.hpp) that a
+// study measures, with its name (a results.csv `metric`), unit, what produces it, and whether only the analytic model
+// has it. Read by the study file's checks, the runner, the writers and `vssw study --help`.
 #include <string>
 #include <vector>
 
+#include "compare/metric_catalog.hpp"
 #include "study/spec.hpp"
 
 namespace vssw::study {
 
-enum class MetricSource {
-    closed_form,  // a formula of the paper (or Housner's) on the case's wall: no simulation
-    threshold,    // find_threshold (compare/experiments.hpp): bisection on simulated constant accelerations
-    free,         // a free vibration from theta0 (kind = free)
-    response,     // the case's run: a free vibration, a pulse or a record from rest
-    collapse,     // the smallest scale of a record that overturns the wall (kind = scale-to-collapse)
-};
+using compare::MetricInfo;
+using compare::MetricSource;
 
-struct MetricInfo {
-    const char* name;
-    const char* unit;        // "g", "s", "alpha" (theta1 / alpha1, or theta / alpha of a parapet), "" (a ratio)
-    MetricSource source;
-    bool analytic_only;      // rows only for the analytic model (its own checks and closed forms)
-    const char* description; // one line for --help, study.md and results.json
-};
-
+// In the order `vssw study --help` lists them.
 const std::vector<MetricInfo>& metric_catalog();
 // InputError naming the metric and listing the known ones.
 const MetricInfo& metric_info(const std::string& name);

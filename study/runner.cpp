@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "compare/case_runner.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/run_budget.hpp"
@@ -44,11 +45,15 @@ std::string recorded_study(const fs::path& manifest) {
 
 // A case's run, or the threshold of a wall for a run. A threshold task carries the first case of its wall in the
 // shard, and is journaled under that case id negated (its rows are copied to every case of the wall at the end).
+// Its engine and cost are the matching compare::CaseTask's (the same index in StudyTasks).
 struct Task {
     int case_id;  // < 0: the threshold task of the wall of case -case_id
     std::size_t run;
-    double cost;
-    std::size_t engine;  // index into the study's engine objects (the pool's group)
+};
+
+struct StudyTasks {
+    std::vector<Task> tasks;
+    std::vector<compare::CaseTask> plan;  // per task: case_index is the task's own index, engine and cost
 };
 
 // The wall a case belongs to, for a run: one threshold per key.
@@ -123,171 +128,217 @@ FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyR
     return lock;
 }
 
-StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    require(options.shard.n >= 1 && options.shard.k >= 1 && options.shard.k <= options.shard.n, "shard",
-            "k/n with 1 <= k <= n", options.shard.k);
-    const bool writer = options.mpi == nullptr || options.mpi->rank() == 0;
+namespace {
 
-    // Engines: one object each, shared by every task (simulate() is const; ODE's runs are kept apart by the pool or
-    // by worker processes, below).
-    std::vector<std::unique_ptr<multibody::Engine>> engines;
-    StudyRunResult result;
-    result.writer = writer;
-    for (const EngineSpec& e : grid.spec().engines) {
-        engines.push_back(multibody::make_engine(e.name));
-        result.meta.engines.push_back({e.name, engines.back()->version()});
-    }
-    const auto engine_index = [&](const std::string& name) {
-        for (std::size_t i = 0; i < engines.size(); ++i)
-            if (engines[i]->name() == name) return i;
+// One engine object per study engine, shared by every task (simulate() is const; ODE's runs are kept apart by the
+// pool or by worker processes, run_tasks).
+struct StudyEngines {
+    std::vector<std::unique_ptr<multibody::Engine>> owned;
+    std::vector<const multibody::Engine*> list;
+
+    std::size_t index(const std::string& name) const {
+        for (std::size_t i = 0; i < list.size(); ++i)
+            if (list[i]->name() == name) return i;
         throw InputError(fmt::format("study: no engine '{}'", name));
-    };
+    }
+};
 
-    // The journal: a new one, or the one to resume (its finished tasks are skipped). Under MPI only rank 0 reads and
-    // writes it, and tells the others which tasks are done, so that every process holds the same list of tasks (rank
-    // 0 hands them out by their place in it). A failure here on rank 0 ends every process rather than leave the
-    // others waiting.
-    std::set<TaskKey> done;
-    std::unique_ptr<Journal> journal;
-    bool finished_already = false;  // --resume of a study whose results are complete: its files stand
+StudyEngines open_engines(const Grid& grid, StudyMeta& meta) {
+    StudyEngines engines;
+    for (const EngineSpec& e : grid.spec().engines) {
+        engines.owned.push_back(multibody::make_engine(e.name));
+        engines.list.push_back(engines.owned.back().get());
+        meta.engines.push_back({e.name, engines.owned.back()->version()});
+    }
+    return engines;
+}
+
+struct JournalState {
+    std::set<TaskKey> done;            // tasks a resumed journal holds already
+    std::unique_ptr<Journal> journal;  // rank 0 only; none when the results are complete already
+    bool finished_already = false;     // --resume of a study whose results are complete: its files stand
+};
+
+// The journal: a new one, or the one to resume (its finished tasks are skipped). Under MPI only rank 0 reads and
+// writes it, and tells the others which tasks are done, so that every process holds the same list of tasks (rank 0
+// hands them out by their place in it). A failure here on rank 0 ends every process rather than leave the others
+// waiting.
+JournalState open_journal(const Grid& grid, const fs::path& dir, const StudyRunOptions& options, bool writer) {
+    JournalState state;
     const fs::path journal_path = dir / kJournalFile;
     try {
         if (writer) {
             std::error_code ec;
             if (options.resume && fs::exists(journal_path, ec))
-                journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard, done);
+                state.journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard, state.done);
             else if (!options.resume || !fs::exists(dir / kResultsCsv, ec))
-                journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard);
+                state.journal = std::make_unique<Journal>(journal_path, grid.identity(), options.shard);
             else
-                finished_already = true;
+                state.finished_already = true;
         }
-        if (options.mpi) options.mpi->share_done(done, finished_already);
+        if (options.mpi) options.mpi->share_done(state.done, state.finished_already);
     } catch (const std::exception& e) {
         if (options.mpi) options.mpi->abort(e.what());
         throw;
     }
+    return state;
+}
 
-    std::vector<Task> tasks;
+// The shard's tasks not done yet, in case order, with their costs (compare/case_runner.hpp's model); those done are
+// counted in meta.tasks_resumed.
+StudyTasks plan_tasks(const Grid& grid, Shard shard, const StudyEngines& engines, const JournalState& journal,
+                      StudyMeta& meta) {
+    StudyTasks out;
+    const auto add = [&](int case_id, std::size_t r, double seconds) {
+        const RunSpec& run = grid.runs()[r];
+        const std::size_t engine = engines.index(run.engine);
+        out.plan.push_back({out.tasks.size(), engine, compare::task_cost(*engines.list[engine], seconds,
+                                                                         run.settings.dt)});
+        out.tasks.push_back({case_id, r});
+    };
     std::map<WallRun, int> wall_case;  // the first case of each wall in the shard: its threshold task's id
-    for (const int id : grid.shard_case_ids(options.shard.k, options.shard.n)) {
+    for (const int id : grid.shard_case_ids(shard.k, shard.n)) {
         const CaseSpec c = grid.make_case(id);
         for (std::size_t r = 0; r < grid.runs().size(); ++r) {
-            const RunSpec& run = grid.runs()[r];
-            if (!grid.run_applies(run, c)) continue;
+            if (!grid.run_applies(grid.runs()[r], c)) continue;
             if (measures_threshold(grid, c) && wall_case.emplace(WallRun{c.part, c.wall_index, r}, id).second) {
-                if (done.count({-id, r})) ++result.meta.tasks_resumed;
-                else tasks.push_back({-id, r, threshold_cost(run), engine_index(run.engine)});
+                if (journal.done.count({-id, r})) ++meta.tasks_resumed;
+                else add(-id, r, compare::threshold_seconds(c.scene));
             }
-            if (done.count({id, r})) {
-                ++result.meta.tasks_resumed;
-                continue;
-            }
-            tasks.push_back({id, r, estimated_cost(grid, c, run), engine_index(run.engine)});
+            if (journal.done.count({id, r})) ++meta.tasks_resumed;
+            else add(id, r, simulated_seconds(grid, c));
         }
     }
-    if (finished_already) {
-        result.meta.tasks_resumed = static_cast<long>(tasks.size());
-        tasks.clear();
+    if (journal.finished_already) {
+        meta.tasks_resumed = static_cast<long>(out.tasks.size());
+        out = {};
     }
+    return out;
+}
 
-    std::mutex progress_mutex;
-    long finished = 0;
-    const long total = static_cast<long>(tasks.size());
+// Runs every task, each finished one's rows appended to the journal at once: handed out to the MPI processes, or on
+// this process's threads. Sets the threads and processes in meta.
+void run_tasks(const Grid& grid, const StudyEngines& engines, const StudyTasks& planned, Journal* journal,
+               const StudyRunOptions& options, StudyMeta& meta) {
     const auto run_task = [&](std::size_t i) {
-        const Task& t = tasks[i];
+        const Task& t = planned.tasks[i];
+        const multibody::Engine& engine = *engines.list[planned.plan[i].engine];
         if (t.case_id < 0) {
             const CaseSpec c = grid.make_case(-t.case_id);
-            return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, *engines[t.engine])});
+            return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, engine)});
         }
         const CaseSpec c = grid.make_case(t.case_id);
-        return journal_text(t.case_id, t.run, measure(grid, c, t.run, *engines[t.engine]));
+        return journal_text(t.case_id, t.run, measure(grid, c, t.run, engine));
     };
-    const auto note_progress = [&](const std::string& what) {
-        if (!options.progress) return;
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        options.progress(++finished, total, what);
-    };
-
-    std::vector<compare::PoolTask> pool;
-    for (const Task& t : tasks) pool.push_back({t.cost, t.engine});
     if (options.mpi) {
+        std::mutex progress_mutex;
+        long finished = 0;
+        const long total = static_cast<long>(planned.tasks.size());
+        std::vector<compare::PoolTask> pool;
+        for (const compare::CaseTask& t : planned.plan) pool.push_back({t.cost, t.engine});
         run_tasks_mpi(*options.mpi, pool, run_task, [&](const std::string& text) {
             journal->append_text(text);
-            note_progress("task");
+            if (!options.progress) return;
+            const std::lock_guard<std::mutex> lock(progress_mutex);
+            options.progress(++finished, total, "task");
         });
-        result.meta.threads = 1;
-        result.meta.processes = options.mpi->size();
-    } else {
-        // Each engine library's run is a child process of its own (multibody/isolated_engine.hpp): a library that
-        // crashes or passes its budget fails that run's rows, and every engine's tasks run side by side. An engine
-        // whose runs cannot share a process takes turns (the pool's exclusive groups).
-        std::vector<bool> exclusive;
-        for (const auto& e : engines) exclusive.push_back(!e->runs_concurrently());
-        result.meta.threads = compare::run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
-            journal->append_text(run_task(i));
-            note_progress(tasks[i].case_id < 0
-                              ? fmt::format("threshold of case {} {}", -tasks[i].case_id, grid.runs()[tasks[i].run].engine)
-                              : fmt::format("case {} {}", tasks[i].case_id, grid.runs()[tasks[i].run].engine));
-        });
+        meta.threads = 1;
+        meta.processes = options.mpi->size();
+        return;
     }
-    result.meta.tasks_run = total;
-    if (!writer) return result;
+    // Each engine library's run is a child process of its own (multibody/isolated_engine.hpp): a library that
+    // crashes or passes its budget fails that run's rows, and every engine's tasks run side by side. An engine whose
+    // runs cannot share a process takes turns (run_cases).
+    compare::CaseRunOptions run_options;
+    run_options.threads = options.threads;
+    run_options.progress = options.progress;
+    meta.threads = compare::run_cases(planned.plan, engines.list, run_options, [&](std::size_t i) {
+        journal->append_text(run_task(i));
+        const Task& t = planned.tasks[i];
+        const std::string& engine = grid.runs()[t.run].engine;
+        return t.case_id < 0 ? fmt::format("threshold of case {} {}", -t.case_id, engine)
+                             : fmt::format("case {} {}", t.case_id, engine);
+    });
+}
+
+// The journal's rows, checked against the study, the thresholds given to every case of their wall, sorted into
+// results.csv in `results_dir`; counts the rows into `result`.
+void write_results(const Grid& grid, const fs::path& journal_path, const fs::path& results_dir,
+                   const StudyRunOptions& options, StudyRunResult& result) {
+    std::vector<ResultRow> rows = read_journal(journal_path);
+    for (const ResultRow& row : rows)
+        if (row.run >= grid.runs().size() || row.metric >= grid.spec().metrics.size())
+            throw InputError(fmt::format("journal {}: a row of run {} and metric {}, which the study does not have",
+                                         journal_path.string(), row.run, row.metric));
+    rows = with_thresholds(grid, options.shard, std::move(rows));
+    std::stable_sort(rows.begin(), rows.end(), [](const ResultRow& a, const ResultRow& b) {
+        return std::tie(a.case_id, a.run, a.metric) < std::tie(b.case_id, b.run, b.metric);
+    });
+    for (const ResultRow& r : rows) result.failed_rows += r.status == "ok" ? 0 : 1;
+    result.rows = static_cast<long>(rows.size());
+    AtomicFile csv(results_dir / kResultsCsv);
+    write_results_csv(csv.stream(), grid, rows);
+    csv.commit();
+    result.meta.result_rows = result.rows;
+    result.meta.results_hash = file_fnv1a(results_dir / kResultsCsv);
+}
+
+// A resumed study whose results were complete: their rows are counted as they are (a --strict resume judges them
+// too), and its files are copied into the new results folder when that is not DIR.
+void keep_finished_results(const fs::path& dir, const fs::path& results_dir, StudyRunResult& result) {
+    const ResultsTable t = read_results_csv(dir / kResultsCsv);
+    const std::size_t status = t.column("status");
+    result.rows = static_cast<long>(t.rows.size());
+    for (const auto& row : t.rows) result.failed_rows += row[status] == "ok" ? 0 : 1;
+    if (results_dir == dir) return;
+    for (const char* name : {kResultsCsv, kManifestFile}) {
+        std::error_code ec;
+        fs::copy_file(dir / name, results_dir / name, fs::copy_options::overwrite_existing, ec);
+        if (ec)
+            throw InputError(
+                fmt::format("cannot copy '{}' into the new results: {}", (dir / name).string(), ec.message()));
+    }
+}
+
+}  // namespace
+
+StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    require(options.shard.n >= 1 && options.shard.k >= 1 && options.shard.k <= options.shard.n, "shard",
+            "k/n with 1 <= k <= n", options.shard.k);
+    StudyRunResult result;
+    result.writer = options.mpi == nullptr || options.mpi->rank() == 0;
+
+    const StudyEngines engines = open_engines(grid, result.meta);
+    JournalState journal = open_journal(grid, dir, options, result.writer);
+    const StudyTasks planned = plan_tasks(grid, options.shard, engines, journal, result.meta);
+    run_tasks(grid, engines, planned, journal.journal.get(), options, result.meta);
+    result.meta.tasks_run = static_cast<long>(planned.tasks.size());
+    if (!result.writer) return result;
+
     // results.csv and manifest.json go into the staging folder that replaces DIR whole (the journal stays in DIR
     // until then: a run killed before the swap is resumed from it), or into DIR itself.
     const fs::path results_dir = options.results_dir.empty() ? dir : options.results_dir;
-    {
-        std::error_code ec;
-        fs::create_directories(results_dir, ec);
-        if (ec)
-            throw InputError(fmt::format("cannot create the folder '{}': {}", results_dir.string(), ec.message()));
+    std::error_code ec;
+    fs::create_directories(results_dir, ec);
+    if (ec) throw InputError(fmt::format("cannot create the folder '{}': {}", results_dir.string(), ec.message()));
+    const fs::path journal_path = dir / kJournalFile;
+    if (journal.journal) {
+        journal.journal->close();
+        write_results(grid, journal_path, results_dir, options, result);
     }
+    if (journal.finished_already) keep_finished_results(dir, results_dir, result);
 
-    // Sorted into results.csv; the journal goes once the results are in place.
-    if (journal) {
-        journal->close();
-        std::vector<ResultRow> rows = read_journal(journal_path);
-        for (const ResultRow& row : rows)
-            if (row.run >= grid.runs().size() || row.metric >= grid.spec().metrics.size())
-                throw InputError(fmt::format("journal {}: a row of run {} and metric {}, which the study does not have",
-                                             journal_path.string(), row.run, row.metric));
-        rows = with_thresholds(grid, options.shard, std::move(rows));
-        std::stable_sort(rows.begin(), rows.end(), [](const ResultRow& a, const ResultRow& b) {
-            return std::tie(a.case_id, a.run, a.metric) < std::tie(b.case_id, b.run, b.metric);
-        });
-        for (const ResultRow& r : rows) result.failed_rows += r.status == "ok" ? 0 : 1;
-        result.rows = static_cast<long>(rows.size());
-        AtomicFile csv(results_dir / kResultsCsv);
-        write_results_csv(csv.stream(), grid, rows);
-        csv.commit();
-        result.meta.result_rows = result.rows;
-        result.meta.results_hash = file_fnv1a(results_dir / kResultsCsv);
-    }
-    if (finished_already) {
-        // The results stand: their rows are counted as they are (a --strict resume judges them too).
-        const ResultsTable t = read_results_csv(dir / kResultsCsv);
-        const std::size_t status = t.column("status");
-        result.rows = static_cast<long>(t.rows.size());
-        for (const auto& row : t.rows) result.failed_rows += row[status] == "ok" ? 0 : 1;
-        if (results_dir != dir)
-            for (const char* name : {kResultsCsv, kManifestFile}) {
-                std::error_code ec;
-                fs::copy_file(dir / name, results_dir / name, fs::copy_options::overwrite_existing, ec);
-                if (ec)
-                    throw InputError(fmt::format("cannot copy '{}' into the new results: {}", (dir / name).string(),
-                                                 ec.message()));
-            }
-    }
     result.meta.commit = options.commit;
     result.meta.run_budget_s = multibody::RunBudget::given();
     result.meta.date = utc_now();
     result.meta.shard = options.shard;
     result.meta.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (journal) {
+    if (journal.journal) {
+        // The manifest last; the journal goes once the results are in place.
         AtomicFile manifest(results_dir / kManifestFile);
         manifest.stream() << manifest_json(grid, result.meta).dump(2) << '\n';
         manifest.commit();
-        std::error_code ec;
         if (results_dir == dir) fs::remove(journal_path, ec);
     }
     return result;

@@ -1,4 +1,5 @@
 #include "validation/report.hpp"
+#include "compare/metric_catalog.hpp"
 #include "multibody/engine.hpp"
 
 #include <algorithm>
@@ -14,11 +15,6 @@
 namespace vssw::study {
 namespace {
 
-// Metrics in the order the report shows them; others follow by name.
-const std::vector<std::string> kKnownMetrics = {
-    "threshold_g", "period",     "restitution",    "restitution_whole_mechanism", "peak_rotation",
-    "peak_time",   "overturned", "rms_difference", "peak_rotation_whole_mechanism"};
-
 // A step-study series needs this many points with a nonzero error before its order is fitted (two points always fit
 // a line; three can disagree with one).
 constexpr std::size_t kMinPointsForOrder = 3;
@@ -33,71 +29,29 @@ std::string step_base(const std::string& id) {
 
 bool is_step_case(const ReportInput& in, const std::string& id) { return case_kind(in, id) == compare::CaseKind::step; }
 
+// Titles, descriptions and targets: the suite's view in the one metric table (compare/metric_catalog.hpp); a metric
+// not in it (a results file from another version) shows its name.
 std::string short_title(const std::string& metric) {
-    if (metric == "threshold_g") return "threshold";
-    if (metric == "restitution") return "restitution (vs Eq. 19/Housner)";
-    if (metric == "restitution_whole_mechanism") return "restitution (vs whole mechanism)";
-    if (metric == "peak_rotation") return "peak rotation";
-    if (metric == "peak_rotation_whole_mechanism") return "peak rotation (vs the whole-mechanism impact)";
-    if (metric == "peak_time") return "peak time";
-    if (metric == "rms_difference") return "rms difference";
-    return metric;
+    const compare::MetricInfo* m = compare::find_metric(metric);
+    return m && m->short_title ? m->short_title : metric;
 }
 
 bool within(double rel_error, double target) { return std::isfinite(rel_error) && std::abs(rel_error) <= target; }
 
 std::optional<double> target_of(const std::string& metric) {
-    if (metric == "threshold_g") return kReportThresholdTarget;
-    if (metric == "period") return kReportPeriodTarget;
-    if (metric == "restitution" || metric == "restitution_whole_mechanism") return kReportRestitutionTarget;
+    const compare::MetricInfo* m = compare::find_metric(metric);
+    if (m && m->target > 0.0) return m->target;
     return std::nullopt;
 }
 
 std::string metric_title(const std::string& metric) {
-    if (metric == "threshold_g") return "threshold acceleration";
-    if (metric == "period") return "period";
-    if (metric == "restitution") return "restitution (first impact)";
-    if (metric == "restitution_whole_mechanism") return "restitution against the whole-mechanism impact";
-    if (metric == "peak_rotation") return "peak rotation";
-    if (metric == "peak_rotation_whole_mechanism") return "peak rotation against the whole-mechanism impact";
-    if (metric == "peak_time") return "time of the peak rotation";
-    if (metric == "overturned") return "overturning";
-    if (metric == "rms_difference") return "rms difference of the time histories";
-    return metric;
+    const compare::MetricInfo* m = compare::find_metric(metric);
+    return m && m->title ? m->title : metric;
 }
 
 std::string metric_description(const std::string& metric) {
-    if (metric == "threshold_g")
-        return "The smallest constant ground acceleration (in g, ramped in over 0.2 s, then held) that rotates the "
-               "wall by 1 % of alpha off rest, found by bisection to 1e-4 for every backend alike, the analytic "
-               "model's too (its closed form is Eq. (12), Eq. (17) for the parapet): an error of 0 means the same "
-               "bisection bracket, i.e. within 1e-4.";
-    if (metric == "period")
-        return "Four times the time from release at rest at theta1 = r alpha to the first impact (theta1 "
-               "interpolated linearly across zero), against the analytic model with exact kinematics.";
-    if (metric == "restitution")
-        return "theta1' after over before the first impact, each extrapolated to the crossing from samples outside "
-               "2 steps either side; the reference is the analytic model's impact map: Eq. (19) for the VSSW, "
-               "Housner's e for the parapet.";
-    if (metric == "restitution_whole_mechanism")
-        return "The same measured ratio against the plastic impact with every constraint of the new mechanism acting "
-               "at once, the roller included (1 - 2b^2 [m1 + m2 (2 + k)^2] / M(0); not in the paper, see the "
-               "README): what an engine that resolves all closing contacts and the roller together should give.";
-    if (metric == "peak_rotation")
-        return "The largest |theta1| / alpha under a ground-motion record, from rest.";
-    if (metric == "peak_rotation_whole_mechanism")
-        return "The same peak rotation of a VSSW against the analytic model run with the whole mechanism's plastic "
-               "impact in place of Eq. (19) (the impact the engines make in free vibration): how much of a difference "
-               "in peaks the impact law accounts for.";
-    if (metric == "peak_time") return "When the largest |theta1| is reached under a ground-motion record.";
-    if (metric == "overturned")
-        return "Whether the wall overturns under a ground-motion record; the error column says whether the engine "
-               "agrees with the analytic model.";
-    if (metric == "rms_difference")
-        return "The root mean square over the record of the difference between the engine's and the analytic "
-               "model's theta1 / alpha. The reference column is the analytic peak rotation (in alpha), the engine "
-               "column the rms difference (in alpha), the error column their ratio.";
-    return "";
+    const compare::MetricInfo* m = compare::find_metric(metric);
+    return m && m->report_description ? m->report_description : "";
 }
 
 const char* kind_name(compare::CaseKind kind) {
@@ -150,8 +104,8 @@ std::vector<std::string> metric_order(const compare::SuiteResults& results) {
     std::set<std::string> seen;
     for (const compare::MetricRow& r : results.rows) seen.insert(r.metric);
     std::vector<std::string> order;
-    for (const std::string& m : kKnownMetrics)
-        if (seen.erase(m) > 0) order.push_back(m);
+    for (const compare::MetricInfo* m : compare::suite_metrics())
+        if (seen.erase(m->name) > 0) order.push_back(m->name);
     order.insert(order.end(), seen.begin(), seen.end());
     return order;
 }

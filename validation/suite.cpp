@@ -10,6 +10,7 @@
 #include <atomic>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
@@ -17,8 +18,9 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
+#include "compare/case_runner.hpp"
 #include "compare/experiments.hpp"
-#include "compare/task_pool.hpp"
+#include "compare/metric_catalog.hpp"
 #include "multibody/analytic_engine.hpp"
 
 namespace vssw::compare {
@@ -30,10 +32,6 @@ using multibody::Excitation;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kReferenceEngine = "analytic";
-
-// A history runs on past the record's end until the wall is at rest (stop_at_rest), at most this long [s]: the
-// Fig. 6 walls' free rocking from the shipped suites' record scales dies out within a few seconds.
-constexpr double kHistoryTail = 5.0;
 
 // Traces: at most this many points per trace (plots), a free vibration's first seconds only.
 constexpr std::size_t kMaxTracePoints = 2000;
@@ -56,10 +54,22 @@ struct TaskOutput {
     std::vector<std::string> model_warnings;  // the reference task's analytic run only (no repeats per engine)
 };
 
+// The metric's unit from the one metric table (compare/metric_catalog.hpp).
+const char* unit_of(const char* metric) {
+    const MetricInfo* m = find_metric(metric);
+    if (m == nullptr) throw std::logic_error(std::string("suite metric '") + metric + "' is not in the catalogue");
+    return m->unit;
+}
+
+// rel_error: the relative error of engine_value against analytic, unless given (overturned, rms_difference).
 MetricRow make_row(const std::string& case_id, const std::string& engine, const char* metric, double analytic,
-                   double engine_value, const char* reference, const char* unit) {
+                   double engine_value, const char* reference) {
     return {case_id, engine, metric, analytic, engine_value, compare_metric(analytic, engine_value).rel_error,
-            reference, unit};
+            reference, unit_of(metric)};
+}
+MetricRow make_row(const std::string& case_id, const std::string& engine, const char* metric, double analytic,
+                   double engine_value, double rel_error, const char* reference) {
+    return {case_id, engine, metric, analytic, engine_value, rel_error, reference, unit_of(metric)};
 }
 
 // assumption: the analytic model's (kPaperModel, kWholeMechanismImpact); "" for an engine's trace.
@@ -156,7 +166,7 @@ Excitation history_excitation(const TaskContext& x) {
     Excitation ex;
     ex.horizontal = *x.record;
     ex.theta0 = 0.0;
-    ex.t_end = x.record->duration() + kHistoryTail;
+    ex.t_end = x.record->duration() + x.c.response_tail;
     ex.stop_at_rest = true;
     ex.motion_only = true;  // the peak and the trace are read from theta1 alone
     return ex;
@@ -233,21 +243,21 @@ void threshold_task(const TaskContext& x, TaskOutput& out) {
     const std::string name = x.engine.name();
     const double a = reference_of(x).threshold_g;
     const double e = x.reference ? a : find_threshold(x.engine, case_settings(x.c, x.engine), x.wall.scene).value_g;
-    out.rows.push_back(make_row(x.c.id, name, "threshold_g", a, e, "analytic model", "g"));
+    out.rows.push_back(make_row(x.c.id, name, "threshold_g", a, e, "analytic model"));
 }
 
 void free_rows(const TaskContext& x, const FreeVibrationResult& a, const FreeVibrationResult& e, TaskOutput& out) {
     const std::string name = x.engine.name();
     out.rows.push_back(make_row(x.c.id, name, "period", a.period.value_or(kNaN), e.period.value_or(kNaN),
-                                "analytic model", "s"));
+                                "analytic model"));
     out.rows.push_back(make_row(x.c.id, name, "restitution", a.restitution.value_or(kNaN),
-                                e.restitution.value_or(kNaN), "analytic model", ""));
+                                e.restitution.value_or(kNaN), "analytic model"));
     if (x.wall.scene.vssw) {
         const double whole = restitution_whole_mechanism(*x.wall.scene.vssw);
         // The analytic model's own row holds the closed form on both sides (its impact law is Eq. 19's).
         out.rows.push_back(make_row(x.c.id, name, "restitution_whole_mechanism", whole,
                                     x.reference ? whole : e.restitution.value_or(kNaN),
-                                    "whole-mechanism plastic impact (roller acting)", ""));
+                                    "whole-mechanism plastic impact (roller acting)"));
     }
 }
 
@@ -280,12 +290,12 @@ void history_rows(const TaskContext& x, const multibody::Trajectory& a, const mu
     const PeakRotation pa = peak_rotation(a), pe = peak_rotation(e);
     const double peak_a = pa.value / alpha;
     out.rows.push_back(
-        make_row(x.c.id, name, "peak_rotation", peak_a, pe.value / alpha, "analytic model", "alpha"));
-    out.rows.push_back(make_row(x.c.id, name, "peak_time", pa.t, pe.t, "analytic model", "s"));
+        make_row(x.c.id, name, "peak_rotation", peak_a, pe.value / alpha, "analytic model"));
+    out.rows.push_back(make_row(x.c.id, name, "peak_time", pa.t, pe.t, "analytic model"));
     const double over_a = a.overturned ? 1.0 : 0.0, over_e = e.overturned ? 1.0 : 0.0;
-    out.rows.push_back({x.c.id, name, "overturned", over_a, over_e, over_e - over_a, "analytic model", ""});
+    out.rows.push_back(make_row(x.c.id, name, "overturned", over_a, over_e, over_e - over_a, "analytic model"));
     const double rms = x.reference ? 0.0 : rms_difference(a, e) / alpha;
-    out.rows.push_back({x.c.id, name, "rms_difference", peak_a, rms, rms / peak_a, "analytic model", "alpha"});
+    out.rows.push_back(make_row(x.c.id, name, "rms_difference", peak_a, rms, rms / peak_a, "analytic model"));
 }
 
 void whole_mechanism_peak_row(const TaskContext& x, const multibody::Trajectory& e, TaskOutput& out) {
@@ -293,7 +303,7 @@ void whole_mechanism_peak_row(const TaskContext& x, const multibody::Trajectory&
     const double peak_w = x.ref.whole_mechanism_peak;
     const double peak_e = x.reference ? peak_w : peak_rotation(e).value / x.wall.scene.alpha();
     out.rows.push_back(make_row(x.c.id, x.engine.name(), "peak_rotation_whole_mechanism", peak_w, peak_e,
-                                "analytic model with the whole-mechanism impact", "alpha"));
+                                "analytic model with the whole-mechanism impact"));
 }
 
 void history_task(const TaskContext& x, TaskOutput& out) {
@@ -332,23 +342,14 @@ void run_task(const TaskContext& x, TaskOutput& out) {
     }
 }
 
-struct Task {
-    std::size_t case_index, engine_index;
-    double cost;  // estimated [s], for the queue's order only
-};
-
-// Simulated seconds a task's engine runs, at its default step (the threshold: ~10 trials, those below the threshold
-// run the whole hold, those above stop once the wall lifts: about half of it on average). free_t_end: the case's
-// free vibration end (CaseReference).
+// Simulated seconds a task's engine runs (compare/case_runner.hpp's cost model). free_t_end: the case's free
+// vibration end (CaseReference).
 double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMotion* record, double free_t_end) {
     switch (c.kind) {
-        case CaseKind::threshold: {
-            const ThresholdOptions o;
-            return 10.0 * (o.ramp_time + 0.5 * threshold_hold_time(w.scene, o));
-        }
+        case CaseKind::threshold: return threshold_seconds(w.scene);
         case CaseKind::free:
         case CaseKind::step: return free_t_end;
-        case CaseKind::history: return record ? record->duration() + kHistoryTail : 0.0;
+        case CaseKind::history: return record ? response_seconds(*record, c.response_tail) : 0.0;
     }
     return 0.0;
 }
@@ -356,19 +357,13 @@ double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMot
 }  // namespace
 
 std::vector<std::string> metrics_of(CaseKind kind, bool vssw) {
-    switch (kind) {
-        case CaseKind::threshold:
-            return {"threshold_g"};
-        case CaseKind::free:
-        case CaseKind::step:
-            if (vssw) return {"period", "restitution", "restitution_whole_mechanism"};
-            return {"period", "restitution"};
-        case CaseKind::history:
-            if (vssw) return {"peak_rotation", "peak_time", "overturned", "rms_difference",
-                              "peak_rotation_whole_mechanism"};
-            return {"peak_rotation", "peak_time", "overturned", "rms_difference"};
-    }
-    return {};
+    const SuiteMeasure measure = kind == CaseKind::threshold ? SuiteMeasure::threshold
+                                 : kind == CaseKind::history ? SuiteMeasure::history
+                                                             : SuiteMeasure::free;
+    std::vector<std::string> out;
+    for (const MetricInfo* m : suite_metrics())
+        if (m->suite == measure && (vssw || !m->vssw_only)) out.push_back(m->name);
+    return out;
 }
 
 const char* to_string(CaseKind kind) {
@@ -438,13 +433,12 @@ SuiteResults run_suite(const Suite& suite, const std::vector<std::string>& engin
     return run_suite_with_engines(suite, list, options);
 }
 
-SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const multibody::Engine*>& given,
-                                    const RunOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    require(options.threads >= 0, "threads", ">= 0 (0: the available cores)", options.threads);
+namespace {
 
-    const AnalyticEngine reference_engine;
-    std::vector<const multibody::Engine*> engines = {&reference_engine};
+// The engines of a run: the analytic model first (the reference rows), then each given engine once.
+std::vector<const multibody::Engine*> suite_engines(const AnalyticEngine& reference,
+                                                    const std::vector<const multibody::Engine*>& given) {
+    std::vector<const multibody::Engine*> engines = {&reference};
     for (const multibody::Engine* e : given) {
         if (e == nullptr) throw InputError("run_suite: a null engine");
         const std::string name = e->name();
@@ -453,7 +447,79 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
             throw InputError(fmt::format("run_suite: engine '{}' given twice", name));
         engines.push_back(e);
     }
+    return engines;
+}
 
+// The walls of the cases and the records they run, read up front: a bad suite is an InputError before anything runs.
+struct SuiteInputs {
+    std::vector<const SuiteWall*> case_walls;  // per case
+    std::map<std::string, GroundMotion> records;
+
+    const GroundMotion* record_of(const SuiteCase& c) const {
+        return c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr;
+    }
+};
+
+SuiteInputs read_inputs(const Suite& suite) {
+    SuiteInputs in;
+    for (const SuiteCase& c : suite.cases) {
+        in.case_walls.push_back(&suite.wall(c.wall_id));
+        if (c.kind == CaseKind::history && !in.records.count(c.record_id)) {
+            const SuiteRecord& r = suite.record(c.record_id);
+            in.records.emplace(r.id, read_record(r.path).scaled(r.scale));
+        }
+        if (c.kind == CaseKind::step && !c.dt) throw InputError(fmt::format("step case '{}' has no step dt", c.id));
+    }
+    return in;
+}
+
+// Tasks in (case, engine) order: their outputs are assembled in this order whatever the threads did. Each task is
+// counted as a user of its case's shared analytic side (`references`, one per case).
+std::vector<CaseTask> plan_tasks(const Suite& suite, const SuiteInputs& in,
+                                 const std::vector<const multibody::Engine*>& engines,
+                                 std::vector<CaseReference>& references) {
+    std::vector<CaseTask> tasks;
+    for (std::size_t ci = 0; ci < suite.cases.size(); ++ci) {
+        const SuiteCase& c = suite.cases[ci];
+        const SuiteWall& w = *in.case_walls[ci];
+        if (c.kind == CaseKind::free || c.kind == CaseKind::step)
+            references[ci].free_t_end =
+                free_vibration_duration(w.scene, c.r * w.scene.alpha(), FreeVibrationOptions{}.impacts);
+        const double seconds = simulated_seconds(c, w, in.record_of(c), references[ci].free_t_end);
+        for (std::size_t ei = 0; ei < engines.size(); ++ei) {
+            if (!c.engine.empty() && c.engine != engines[ei]->name()) continue;
+            const double dt = c.dt ? *c.dt : case_settings(c, *engines[ei]).dt;
+            tasks.push_back({ci, ei, task_cost(*engines[ei], seconds, dt)});
+            references[ci].users.fetch_add(1);
+        }
+    }
+    return tasks;
+}
+
+// The tasks' outputs into the results, in task order.
+void collect(const Suite& suite, const std::vector<const multibody::Engine*>& engines,
+             const std::vector<CaseTask>& tasks, std::vector<TaskOutput>& outputs, SuiteResults& results) {
+    for (std::size_t ti = 0; ti < tasks.size(); ++ti) {
+        TaskOutput& o = outputs[ti];
+        const SuiteCase& c = suite.cases[tasks[ti].case_index];
+        const std::string engine = engines[tasks[ti].engine]->name();
+        results.task_times.push_back({c.id, c.kind, engine, o.cpu_s});
+        if (o.failure) results.failures.push_back({c.id, engine, *o.failure});
+        for (std::string& w : o.model_warnings) results.model_warnings.push_back({c.id, std::move(w)});
+        for (MetricRow& r : o.rows) results.rows.push_back(std::move(r));
+        for (Trace& t : o.traces) results.traces.push_back(std::move(t));
+    }
+}
+
+}  // namespace
+
+SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const multibody::Engine*>& given,
+                                    const RunOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    require(options.threads >= 0, "threads", ">= 0 (0: the available cores)", options.threads);
+
+    const AnalyticEngine reference_engine;
+    const std::vector<const multibody::Engine*> engines = suite_engines(reference_engine, given);
     SuiteResults results;
     results.suite = suite.name;
     for (const multibody::Engine* e : engines)
@@ -461,88 +527,39 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
                                    suite.engine_settings.count(e->name()) ? suite.engine_settings.at(e->name())
                                                                           : e->default_settings()});
 
-    // Walls and records up front: a bad suite is an InputError before anything runs.
-    std::vector<const SuiteWall*> case_walls;
-    std::map<std::string, GroundMotion> records;
-    for (const SuiteCase& c : suite.cases) {
-        case_walls.push_back(&suite.wall(c.wall_id));
-        if (c.kind == CaseKind::history && !records.count(c.record_id)) {
-            const SuiteRecord& r = suite.record(c.record_id);
-            records.emplace(r.id, read_record(r.path).scaled(r.scale));
-        }
-        if (c.kind == CaseKind::step && !c.dt)
-            throw InputError(fmt::format("step case '{}' has no step dt", c.id));
-    }
-
-    // Tasks in (case, engine) order: their outputs are assembled in this order whatever the threads did.
-    std::vector<Task> tasks;
+    const SuiteInputs in = read_inputs(suite);
     std::vector<CaseReference> references(suite.cases.size());
-    for (std::size_t ci = 0; ci < suite.cases.size(); ++ci) {
-        const SuiteCase& c = suite.cases[ci];
-        const SuiteWall& w = *case_walls[ci];
-        const GroundMotion* record = c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr;
-        if (c.kind == CaseKind::free || c.kind == CaseKind::step)
-            references[ci].free_t_end =
-                free_vibration_duration(w.scene, c.r * w.scene.alpha(), FreeVibrationOptions{}.impacts);
-        const double seconds = simulated_seconds(c, w, record, references[ci].free_t_end);
-        for (std::size_t ei = 0; ei < engines.size(); ++ei) {
-            const std::string name = engines[ei]->name();
-            if (!c.engine.empty() && c.engine != name) continue;
-            double cost = seconds * engines[ei]->cost_per_simulated_second();
-            const double dt = c.dt ? *c.dt : case_settings(c, *engines[ei]).dt;
-            if (dt > 0.0) cost *= engines[ei]->default_settings().dt / dt;
-            tasks.push_back({ci, ei, cost});
-            references[ci].users.fetch_add(1);
-        }
-    }
+    const std::vector<CaseTask> tasks = plan_tasks(suite, in, engines, references);
     std::vector<TaskOutput> outputs(tasks.size());
 
-    std::vector<PoolTask> pool_tasks;
-    for (const Task& t : tasks) pool_tasks.push_back({t.cost, t.engine_index});
-    // An engine that is not re-entrant (ODE) has its tasks take turns (the pool's exclusive groups), beside other
-    // engines' ones. Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost
-    // the suite more than they gain: a fork per simulation of this large process, for ODE's small share of the suite
-    // at its 1 ms step (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s
-    // without, README "Speed").
-    std::vector<bool> exclusive;
-    for (const multibody::Engine* e : engines) exclusive.push_back(!e->runs_concurrently());
-
-    std::mutex progress_mutex;
-    int done = 0;
-    const int total = static_cast<int>(tasks.size());
-    results.threads = run_pool(pool_tasks, exclusive, options.threads, [&](std::size_t ti) {
-        const Task& task = tasks[ti];
+    // Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost the suite more
+    // than they gain: a fork per simulation of this large process, for ODE's small share of the suite at its 1 ms
+    // step (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s without, README
+    // "Speed"). ODE's tasks take turns instead (run_cases).
+    CaseRunOptions run_options;
+    run_options.threads = options.threads;
+    if (options.progress)
+        run_options.progress = [&](long done, long total, const std::string& what) {
+            options.progress(static_cast<int>(done), static_cast<int>(total), what);
+        };
+    results.threads = run_cases(tasks, engines, run_options, [&](std::size_t ti) {
+        const CaseTask& task = tasks[ti];
         const SuiteCase& c = suite.cases[task.case_index];
-        const multibody::Engine& engine = *engines[task.engine_index];
+        const multibody::Engine& engine = *engines[task.engine];
         const double cpu_start = thread_cpu_seconds();
         try {
-            const TaskContext x{c, *case_walls[task.case_index], engine, task.engine_index == 0,
-                                c.kind == CaseKind::history ? &records.at(c.record_id) : nullptr, options.keep_traces,
-                                references[task.case_index]};
+            const TaskContext x{c, *in.case_walls[task.case_index], engine, task.engine == 0, in.record_of(c),
+                                options.keep_traces, references[task.case_index]};
             run_task(x, outputs[ti]);
         } catch (const EngineFailure& e) {
             outputs[ti] = TaskOutput{};
             outputs[ti].failure = e.what();
         }
         outputs[ti].cpu_s = thread_cpu_seconds() - cpu_start;
-        if (options.progress) {
-            const std::lock_guard<std::mutex> lock(progress_mutex);
-            ++done;
-            options.progress(done, total,
-                             fmt::format("{} {}{}", c.id, engine.name(), outputs[ti].failure ? " (failed)" : ""));
-        }
+        return fmt::format("{} {}{}", c.id, engine.name(), outputs[ti].failure ? " (failed)" : "");
     });
 
-    for (std::size_t ti = 0; ti < tasks.size(); ++ti) {
-        TaskOutput& o = outputs[ti];
-        const std::string& case_id = suite.cases[tasks[ti].case_index].id;
-        results.task_times.push_back({case_id, suite.cases[tasks[ti].case_index].kind,
-                                      engines[tasks[ti].engine_index]->name(), o.cpu_s});
-        if (o.failure) results.failures.push_back({case_id, engines[tasks[ti].engine_index]->name(), *o.failure});
-        for (std::string& w : o.model_warnings) results.model_warnings.push_back({case_id, std::move(w)});
-        for (MetricRow& r : o.rows) results.rows.push_back(std::move(r));
-        for (Trace& t : o.traces) results.traces.push_back(std::move(t));
-    }
+    collect(suite, engines, tasks, outputs, results);
     results.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return results;
 }

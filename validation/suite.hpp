@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "analytic/ground_motion.hpp"
+#include "compare/experiments.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::compare {
@@ -38,7 +39,8 @@ enum class CaseKind {
     step,       // free vibration at a given engine step dt (error against step size): period, restitution
 };
 const char* to_string(CaseKind kind);
-// The metrics run_suite measures for a case of this kind (restitution_whole_mechanism only on a VSSW).
+// The metrics run_suite measures for a case of this kind (restitution_whole_mechanism only on a VSSW), as the one
+// metric table says (compare/metric_catalog.hpp), in its order.
 std::vector<std::string> metrics_of(CaseKind kind, bool vssw);
 
 struct SuiteRecord {
@@ -59,6 +61,9 @@ struct SuiteCase {
     // The settings an engine runs this case at, where a suite file sets them ([settings] and [part.settings]); an
     // engine not named here runs at its default_settings(). A step case's dt overrides its engine's step.
     std::map<std::string, multibody::EngineSettings> settings;
+    // history: how long the run goes on after the record [s] (it stops earlier at rest or overturning): the suite's
+    // answer, kSuiteResponseTail; a study's is kResponseTail (compare/experiments.hpp says why two).
+    double response_tail = kSuiteResponseTail;
 };
 
 struct Suite {
