@@ -15,6 +15,7 @@
 #include "analytic/error.hpp"
 #include "analytic/specimens.hpp"
 #include "analytic/wall.hpp"
+#include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/scene_geometry.hpp"
 
@@ -96,7 +97,7 @@ std::string read_bytes(const std::string& path) {
 bool falls_from(const multibody::WallScene& scene, double theta0) {
     SimulationOptions options;
     options.keep_samples = false;
-    return free_vibration(*multibody::analytic_model(scene, Kinematics::exact), theta0 * scene.alpha(), options)
+    return free_vibration(*analytic_model(scene, Kinematics::exact), theta0 * scene.alpha(), options)
         .overturned;
 }
 
@@ -203,12 +204,7 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
                                 "on it); not run");
                             continue;
                         }
-                        if (run.kinematics == Kinematics::paper) run.settings.knobs["paper_kinematics"] = 1.0;
-                        if (run.impact.kind == ImpactLaw::Kind::whole_mechanism)
-                            run.settings.knobs["whole_mechanism_impact"] = 1.0;
-                        if (run.impact.kind == ImpactLaw::Kind::ratio)
-                            run.settings.knobs["restitution"] = run.impact.ratio;
-                        if (run.roller == Roller::unilateral) run.settings.knobs["unilateral_roller"] = 1.0;
+                        multibody::set_assumptions(run.settings, {run.kinematics, run.impact, run.roller});
                     }
                     try {
                         engine->check_settings(run.settings);
