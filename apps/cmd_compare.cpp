@@ -25,6 +25,7 @@
 #include "apps/wall_options.hpp"
 #include "apps/run_budget_option.hpp"
 #include "compare/experiments.hpp"
+#include "study/response_comparison.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 
@@ -96,19 +97,59 @@ CompareReference reference_of(const CompareOptions& o, const ChosenModel& chosen
             o.theta0, whole};
 }
 
+// The ground motion of a comparison, from its options as `vssw history` reads them, with a study's rules besides
+// (a record with its own times and one that shakes, a pulse of positive amplitude), each message naming the option.
+study::ResponseMotion response_motion(const GroundMotionOptions& m, LoadedMotion loaded) {
+    require(!m.scale || (std::isfinite(*m.scale) && *m.scale > 0.0), "--scale (vssw compare)",
+            "a positive finite factor", m.scale.value_or(0.0));
+    study::ResponseMotion r;
+    r.scale = m.scale;
+    r.pga_g = m.pga_g;
+    if (m.record) {
+        // compare has taken records with their own times only, as a study does (AT2 headers, two columns, a CSV with
+        // a time column). The record read above could now be one of values at --record-dt or of named columns; taking
+        // those widens what compare accepts, a change of its own.
+        if (!m.format.is_default())
+            throw InputError("--record-dt, --time-column and --accel-column are read by history and free, not yet by "
+                             "compare: give compare a record with its times (an AT2 file, two columns, or a CSV whose "
+                             "first two columns are time and acceleration)");
+        try {
+            study::require_shakes(loaded.unscaled, *m.record);
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("--record: {}", e.what()));
+        }
+        r.file = *m.record;
+        r.record = std::move(loaded.unscaled);
+        return r;
+    }
+    // `vssw history` takes a negative amplitude as a pulse the other way; a study's amplitude is positive (--pga
+    // replaces it).
+    if (!m.pga_g && !(*m.amplitude_g > 0.0))
+        throw InputError(fmt::format("--amplitude: must be a positive number, got {}", *m.amplitude_g));
+    r.shape = *m.pulse;
+    r.amplitude_g = *m.amplitude_g;
+    r.pulse_period = *m.pulse_period;
+    r.duration = m.duration.value_or(0.0);
+    return r;
+}
+
 // Under a ground motion: the engines and the analytic model from rest, peak against peak (a one-case study).
 void run_compare_response(const CompareOptions& o, std::ostream& out) {
     if (o.theta0_given) throw InputError("--theta0 is a release for the free vibration; with --record or --pulse the "
                                          "wall starts from rest");
-    (void)load_ground_motion(o.motion);  // the motion's options checked with the messages `vssw history` gives
-    (void)choose_model(o.wall, o.model);
-    ResponseCompareRequest request{o.wall, o.model, o.motion, {}, {}, o.json, o.strict};
-    for (const std::string& name : parse_engine_list("--engine", o.engines)) {
-        const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(name);
-        request.engines.push_back(name);
-        request.settings.push_back(settings_of(*engine, o));
-    }
-    compare_response(request, out);
+    LoadedMotion loaded = load_ground_motion(o.motion);
+    const ChosenModel chosen = choose_model(o.wall, o.model);
+    std::vector<study::ResponseEngine> engines;
+    for (const std::string& name : parse_engine_list("--engine", o.engines))
+        engines.push_back({name, settings_of(*multibody::make_engine(name), o)});
+    const study::ResponseMotion motion = response_motion(o.motion, std::move(loaded));
+    // The reference's assumptions as given: a parapet ignores its kinematics and roller.
+    const multibody::AnalyticAssumptions reference{parse_kinematics(o.model.kinematics), chosen.impact,
+                                                   parse_roller(o.model.roller)};
+    const auto start = std::chrono::steady_clock::now();
+    const study::ResponseComparison result =
+        study::compare_response(multibody::WallScene(chosen.wall), reference, motion, engines);
+    print_response_comparison(result, o.model, seconds_since(start), o.json, o.strict, out);
 }
 
 void run_compare(const CompareOptions& o, std::ostream& out) {
@@ -119,9 +160,7 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
     // Every input is checked before the first engine runs: the wall and the reference's model, the engines and each
     // one's settings, the release.
     const ChosenModel chosen = choose_model(o.wall, o.model);
-    const multibody::WallScene scene = chosen.kind == WallKind::vssw
-                                           ? multibody::WallScene::of(vssw_geometry(o.wall))
-                                           : multibody::WallScene::of(parapet_geometry(o.wall));
+    const multibody::WallScene scene(chosen.wall);
     compare::ComparisonOptions options;
     options.reference =
         multibody::analytic_settings(chosen.kinematics.value_or(Kinematics::exact), chosen.impact, chosen.roller);

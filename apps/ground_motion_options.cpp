@@ -112,6 +112,7 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
         sample_dt = *o.pulse_period / kPulseSamplesPerPeriod;
     }
 
+    GroundMotion unscaled = motion;
     double factor = 1.0;
     if (o.scale) {
         factor = *o.scale;
@@ -126,7 +127,7 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
     }
     // The two components of one record take the same factor (--pga: the horizontal's PGA sets it).
     if (o.vertical_record) vertical = vertical.scaled(factor);
-    return {std::move(motion), std::move(vertical), factor, sample_dt};
+    return {std::move(motion), std::move(unscaled), std::move(vertical), factor, sample_dt};
 }
 
 }  // namespace vssw::cli

@@ -31,6 +31,7 @@ void add_ground_motion_options(CLI::App& cmd, GroundMotionOptions& options, bool
 
 struct LoadedMotion {
     GroundMotion motion;  // after scaling, in m/s^2
+    GroundMotion unscaled;  // as read or built, before --scale or --pga (vssw compare scales it as a study does)
     GroundMotion vertical = GroundMotion::none();  // --vertical-record, scaled by the same factor; none without it
     double scale_factor;  // what multiplied the input (1 when not scaled)
     double sample_dt;     // the record's mean sample spacing, or T_p / 100 for a pulse [s]

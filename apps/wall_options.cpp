@@ -72,14 +72,16 @@ ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
     const Kinematics kinematics = parse_kinematics(options.kinematics);  // checked even when a parapet ignores it
     const ImpactLaw impact = parse_impact_law(options.impact);
     const Roller roller = parse_roller(options.roller);
-    if (kind == WallKind::parapet)
-        return {kind, std::nullopt, with_impact_law(make_parapet_model(parapet_geometry(wall)), impact),
-                impact, Roller::bilateral};
+    if (kind == WallKind::parapet) {
+        const ParapetGeometry p = parapet_geometry(wall);
+        return {kind, Wall::of(p), std::nullopt, with_impact_law(make_parapet_model(p), impact), impact,
+                Roller::bilateral};
+    }
     const VsswGeometry w = vssw_geometry(wall);
     if (roller == Roller::unilateral && kinematics != Kinematics::exact)
         throw InputError("--roller unilateral needs --kinematics exact: the paper's Eq. (3) does not keep the top "
                          "corner on the roller's line, so the top can neither leave the roller nor land back on it");
-    return {kind, kinematics, with_impact_law(make_vssw_model(w, kinematics), impact), impact, roller};
+    return {kind, Wall::of(w), kinematics, with_impact_law(make_vssw_model(w, kinematics), impact), impact, roller};
 }
 
 Json wall_inputs_json(const WallOptions& o, WallKind kind) {

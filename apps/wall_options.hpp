@@ -10,6 +10,7 @@
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
+#include "analytic/wall_scene.hpp"
 #include "apps/json.hpp"
 
 namespace CLI {
@@ -62,6 +63,7 @@ ParapetGeometry parapet_geometry(const WallOptions& options);
 // A model chosen on the command line, with what the reports say about it.
 struct ChosenModel {
     WallKind kind;
+    Wall wall;                             // as built from the options
     std::optional<Kinematics> kinematics;  // none for a parapet (Housner's block has one exact kinematics)
     std::unique_ptr<RockingModel> model;   // with the chosen impact law
     ImpactLaw impact;

@@ -10,6 +10,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
+#include "analytic/wall_scene.hpp"
 #include "multibody/analytic_engine.hpp"
 
 namespace vssw::compare {
@@ -53,7 +54,7 @@ double threshold_hold_time(const WallScene& scene, const ThresholdOptions& o) {
     require(o.hold_margin >= 1.0 && std::isfinite(o.hold_margin), "hold margin", ">= 1", o.hold_margin);
     if (o.hold_time > 0.0) return o.hold_time;
 
-    const auto model = multibody::analytic_model(scene, Kinematics::exact);
+    const auto model = analytic_model(scene, Kinematics::exact);
     const double alpha = model->reference_angle();
     const double a_c = model->rest_threshold(0.0);
     const ModelTerms rest = model->terms(0.0);
@@ -82,7 +83,7 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
     const double hold = threshold_hold_time(scene, o);
     const double g = scene.gravity();
     const double lift = o.lift_angle * scene.alpha();
-    const double estimate_g = multibody::analytic_model(scene, Kinematics::exact)->rest_threshold(0.0) / g;
+    const double estimate_g = analytic_model(scene, Kinematics::exact)->rest_threshold(0.0) / g;
     const double cap_g = o.max_over_estimate * estimate_g;
 
     EngineSettings trial_settings = settings;
@@ -136,7 +137,7 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
 
 double free_vibration_duration(const WallScene& scene, double theta0, int impacts) {
     require(impacts >= 1, "impacts to show", ">= 1", impacts);
-    const auto model = multibody::analytic_model(scene, Kinematics::exact);
+    const auto model = analytic_model(scene, Kinematics::exact);
     SimulationOptions opt;
     opt.keep_samples = false;
     const SimulationResult r = free_vibration(*model, theta0, opt);

@@ -6,6 +6,7 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
+#include "analytic/wall_scene.hpp"
 #include "multibody/analytic_engine.hpp"
 
 namespace vssw::compare {
@@ -205,7 +206,7 @@ std::vector<AmplitudeRestitution> amplitude_restitution(const RockingModel& mode
 std::vector<AmplitudeRestitution> amplitude_restitution(const multibody::WallScene& scene,
                                                         const std::vector<ImpactMetric>& list,
                                                         const std::vector<Peak>& turning) {
-    const auto model = multibody::analytic_model(scene, Kinematics::exact);
+    const auto model = analytic_model(scene, Kinematics::exact);
     return amplitude_restitution(*model, scene.vssw ? &*scene.vssw : nullptr, list, turning);
 }
 

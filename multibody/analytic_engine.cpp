@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -16,19 +17,13 @@
 namespace vssw::multibody {
 namespace {
 
-constexpr const char* kPaperKinematics = "paper_kinematics";
 constexpr const char* kRtol = "rtol";
-constexpr const char* kRestitution = "restitution";  // when given: this impact ratio in [0, 1] instead of Eq. (19)
-constexpr const char* kWholeMechanism = "whole_mechanism_impact";  // 1: the whole mechanism's plastic impact
-constexpr const char* kUnilateralRoller = "unilateral_roller";  // 1: a roller that can only push (exact kinematics)
 constexpr double kDefaultRtol = 1e-10;
 constexpr double kDefaultOutputDt = 1e-4;  // [s] the engines' default step (EngineSettings::dt)
 
 struct Knobs {
-    Kinematics kinematics = Kinematics::exact;
     double rtol = kDefaultRtol;
-    ImpactLaw impact;  // Eq. (19) / Housner's unless a setting says otherwise
-    Roller roller = Roller::bilateral;
+    AnalyticAssumptions assumptions;
 };
 
 std::vector<SettingDescription> setting_table() {
@@ -36,30 +31,18 @@ std::vector<SettingDescription> setting_table() {
         {"dt", fmt::format("{:g}", kDefaultOutputDt), "s",
          "the sampling interval of the trajectory (the integrator's steps are its own)"},
         {"iterations", "none", "", "not used"},
-        {kPaperKinematics, "0", "0/1", "1: the paper's linearised kinematics (Eq. 3); 0: the exact ones (Eq. 2)", 0.0, 1.0},
+        {kPaperKinematicsKnob, "0", "0/1", "1: the paper's linearised kinematics (Eq. 3); 0: the exact ones (Eq. 2)", 0.0, 1.0},
         {kRtol, fmt::format("{:g}", kDefaultRtol), "", "DOP853's relative tolerance (impact times within 1e-8 s)"},
-        {kRestitution, "Eq. (19)", "", "when given: this impact ratio in [0, 1] instead of Eq. (19) / Housner's", 0.0, 1.0},
-        {kWholeMechanism, "0", "0/1", "1: the whole mechanism's plastic impact (the roller's impulse kept)", 0.0, 1.0},
-        {kUnilateralRoller, "0", "0/1", "1: a roller that can only push (exact kinematics)", 0.0, 1.0},
+        {kRestitutionKnob, "Eq. (19)", "", "when given: this impact ratio in [0, 1] instead of Eq. (19) / Housner's", 0.0, 1.0},
+        {kWholeMechanismKnob, "0", "0/1", "1: the whole mechanism's plastic impact (the roller's impulse kept)", 0.0, 1.0},
+        {kUnilateralRollerKnob, "0", "0/1", "1: a roller that can only push (exact kinematics)", 0.0, 1.0},
     };
 }
 
 Knobs read_knobs(const EngineSettings& settings) {
-    const SettingsReader r("analytic", settings, setting_table());
     Knobs k;
-    k.kinematics = r.flag(kPaperKinematics) ? Kinematics::paper : Kinematics::exact;
-    k.rtol = r.number(kRtol, kDefaultRtol);  // its range is checked by simulate()
-    const bool ratio_given = settings.knobs.count(kRestitution) > 0;  // given means used: 0 is a plastic impact
-    if (ratio_given && r.flag(kWholeMechanism))
-        throw InputError("analytic settings restitution and whole_mechanism_impact are two impact laws: give one");
-    if (ratio_given) {
-        const double e = r.non_negative(kRestitution, 0.0);
-        require(e <= 1.0, "analytic setting restitution", "a number in [0, 1]", e);
-        k.impact = {ImpactLaw::Kind::ratio, e};
-    } else if (r.flag(kWholeMechanism)) {
-        k.impact = {ImpactLaw::Kind::whole_mechanism, 0.0};
-    }
-    if (r.flag(kUnilateralRoller)) k.roller = Roller::unilateral;  // the simulator refuses it with paper kinematics
+    k.assumptions = read_assumptions(settings);  // first, as the unknown knobs are refused there
+    k.rtol = SettingsReader("analytic", settings, setting_table()).number(kRtol, kDefaultRtol);  // range: simulate()
     return k;
 }
 
@@ -76,7 +59,7 @@ double upper_rotation(const WallScene& scene, Kinematics kinematics, double thet
 EngineSettings AnalyticEngine::default_settings() const {
     EngineSettings s;
     s.dt = kDefaultOutputDt;
-    s.knobs = {{kPaperKinematics, 0.0}, {kRtol, kDefaultRtol}};
+    s.knobs = {{kPaperKinematicsKnob, 0.0}, {kRtol, kDefaultRtol}};
     return s;
 }
 
@@ -92,7 +75,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
                                     const EngineSettings& settings) const {
     const Knobs knobs = read_knobs(settings);
     std::unique_ptr<RockingModel> model =
-        with_impact_law(analytic_model(scene, knobs.kinematics), knobs.impact);
+        with_impact_law(analytic_model(scene, knobs.assumptions.kinematics), knobs.assumptions.impact);
     // A stop angle (a threshold trial) ends the run there, as it ends an engine's (RunMonitor): the trial's question is
     // answered, and the rest of its hold, with the wall flying towards its collapse, is not integrated (with the
     // unilateral roller such a flight may fail the energy ceiling it has no need to meet).
@@ -107,7 +90,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     options.stop_at_rest = excitation.stop_at_rest;
     options.output_dt = output_dt;
     options.step.rtol = knobs.rtol;
-    options.roller = knobs.roller;
+    options.roller = knobs.assumptions.roller;
     // A threshold trial (a stop angle) needs only whether the wall lifted: the supports' forces are not computed.
     options.monitor_supports = !(excitation.stop_angle > 0.0);
     options.sample_energies = !excitation.motion_only;
@@ -126,7 +109,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     Trajectory out;
     out.overturned = r.overturned && !stopped;
     out.at_rest_at_end = r.at_rest_at_end;
-    out.warnings = validity_warnings(*model, scene.vssw ? std::optional(knobs.kinematics) : std::nullopt, r);
+    out.warnings = validity_warnings(*model, scene.vssw ? std::optional(knobs.assumptions.kinematics) : std::nullopt, r);
     out.steps = r.steps;
     LocatedEvents located;
     const LargestRotation largest = largest_rotation(r);
@@ -152,7 +135,7 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
         t.t = s.t;
         t.theta1 = s.theta;
         t.theta1_dot = s.theta_dot;
-        t.theta2 = upper_rotation(scene, knobs.kinematics, s.theta);
+        t.theta2 = upper_rotation(scene, knobs.assumptions.kinematics, s.theta);
         t.top_dy = model->load_height(std::abs(s.theta)) - top_at_rest;
         t.kinetic = s.kinetic;
         t.potential = s.weight_potential - s.work_overburden;
@@ -168,18 +151,45 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
         const double side = !out.samples.empty() && out.samples.back().theta1 < 0.0 ? -1.0 : 1.0;
         t.t = r.t_overturn;
         t.theta1 = side * excitation.stop_angle;
-        if (!excitation.motion_only) t.theta2 = upper_rotation(scene, knobs.kinematics, t.theta1);
+        if (!excitation.motion_only) t.theta2 = upper_rotation(scene, knobs.assumptions.kinematics, t.theta1);
         out.samples.push_back(t);
     }
     return out;
 }
 
+void set_assumptions(EngineSettings& settings, const AnalyticAssumptions& a) {
+    std::map<std::string, double>& knobs = settings.knobs;
+    knobs[kPaperKinematicsKnob] = a.kinematics == Kinematics::paper ? 1.0 : 0.0;
+    // Present only when they hold: a restitution given is used, 0 included.
+    knobs.erase(kRestitutionKnob);
+    knobs.erase(kWholeMechanismKnob);
+    knobs.erase(kUnilateralRollerKnob);
+    if (a.impact.kind == ImpactLaw::Kind::ratio) knobs[kRestitutionKnob] = a.impact.ratio;
+    if (a.impact.kind == ImpactLaw::Kind::whole_mechanism) knobs[kWholeMechanismKnob] = 1.0;
+    if (a.roller == Roller::unilateral) knobs[kUnilateralRollerKnob] = 1.0;
+}
+
+AnalyticAssumptions read_assumptions(const EngineSettings& settings) {
+    const SettingsReader r("analytic", settings, setting_table());
+    AnalyticAssumptions a;
+    a.kinematics = r.flag(kPaperKinematicsKnob) ? Kinematics::paper : Kinematics::exact;
+    const bool ratio_given = settings.knobs.count(kRestitutionKnob) > 0;  // given means used: 0 is a plastic impact
+    if (ratio_given && r.flag(kWholeMechanismKnob))
+        throw InputError("analytic settings restitution and whole_mechanism_impact are two impact laws: give one");
+    if (ratio_given) {
+        const double e = r.non_negative(kRestitutionKnob, 0.0);
+        require(e <= 1.0, "analytic setting restitution", "a number in [0, 1]", e);
+        a.impact = {ImpactLaw::Kind::ratio, e};
+    } else if (r.flag(kWholeMechanismKnob)) {
+        a.impact = {ImpactLaw::Kind::whole_mechanism, 0.0};
+    }
+    if (r.flag(kUnilateralRollerKnob)) a.roller = Roller::unilateral;  // the simulator refuses it with paper kinematics
+    return a;
+}
+
 EngineSettings analytic_settings(Kinematics kinematics, const ImpactLaw& impact, Roller roller) {
     EngineSettings s = AnalyticEngine().default_settings();
-    s.knobs[kPaperKinematics] = kinematics == Kinematics::paper ? 1.0 : 0.0;
-    if (impact.kind == ImpactLaw::Kind::ratio) s.knobs[kRestitution] = impact.ratio;
-    if (impact.kind == ImpactLaw::Kind::whole_mechanism) s.knobs[kWholeMechanism] = 1.0;
-    if (roller == Roller::unilateral) s.knobs[kUnilateralRoller] = 1.0;
+    set_assumptions(s, {kinematics, impact, roller});
     return s;
 }
 

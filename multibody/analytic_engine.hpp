@@ -16,11 +16,12 @@
 // bad input stays InputError.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "analytic/model.hpp"
-#include "analytic/simulate.hpp"  // Roller
+#include "analytic/simulate.hpp"      // Roller
+#include "analytic/wall_scene.hpp"    // analytic_model
 #include "multibody/engine.hpp"
-#include "multibody/scene_geometry.hpp"  // analytic_model
 
 namespace vssw::multibody {
 
@@ -37,9 +38,34 @@ public:
     void check_settings(const EngineSettings& settings) const override;
 };
 
+// The analytic model's assumptions, which the backend takes as knobs: the one encoder (set_assumptions) and decoder
+// (read_assumptions) of them, and the one list of their knobs' names, for every caller that runs the model through the
+// Engine interface (vssw compare's reference, a study's analytic runs).
+struct AnalyticAssumptions {
+    Kinematics kinematics = Kinematics::exact;
+    ImpactLaw impact;  // Eq. (19) / Housner's
+    Roller roller = Roller::bilateral;
+};
+// The knobs that stand for them (a study gives these in [assumptions], not as settings). In the header, so that a
+// reader of study files needs no engine to know them.
+inline constexpr const char* kPaperKinematicsKnob = "paper_kinematics";  // 1: Eq. (3); 0: Eq. (2)
+inline constexpr const char* kRestitutionKnob = "restitution";  // when given: this impact ratio in [0, 1]
+inline constexpr const char* kWholeMechanismKnob = "whole_mechanism_impact";  // 1: the whole mechanism's plastic impact
+inline constexpr const char* kUnilateralRollerKnob = "unilateral_roller";  // 1: a roller that can only push
+inline const std::vector<std::string>& assumption_knobs() {
+    static const std::vector<std::string> names = {kPaperKinematicsKnob, kRestitutionKnob, kWholeMechanismKnob,
+                                                   kUnilateralRollerKnob};
+    return names;
+}
+// Writes the knobs that stand for `assumptions` into `settings`, replacing any it held.
+void set_assumptions(EngineSettings& settings, const AnalyticAssumptions& assumptions);
+// The assumptions the knobs stand for (the defaults where none is given); InputError on a value out of range or on
+// two impact laws at once.
+AnalyticAssumptions read_assumptions(const EngineSettings& settings);
+
 // The settings that run the model chosen by name (vssw compare's --kinematics, --impact, --roller for its
-// reference): default_settings() with paper_kinematics, restitution or whole_mechanism_impact, and unilateral_roller
-// set to match. The defaults (exact, Eq. 19, bilateral) give default_settings() itself.
+// reference): default_settings() with the assumptions' knobs set. The defaults (exact, Eq. 19, bilateral) give
+// default_settings() itself.
 EngineSettings analytic_settings(Kinematics kinematics, const ImpactLaw& impact, Roller roller);
 
 }  // namespace vssw::multibody

@@ -19,22 +19,20 @@
 
 #include "analytic/ground_motion.hpp"
 #include "analytic/wall.hpp"
+#include "analytic/wall_scene.hpp"
 
 namespace vssw::multibody {
 
-// The wall: exactly one of the two descriptions.
-struct WallScene {
-    std::optional<VsswGeometry> vssw;
-    std::optional<ParapetGeometry> parapet;
+// The wall an engine builds: the analytic description (analytic/wall_scene.hpp: exactly one of a VSSW and a parapet)
+// and the friction of the contacts, which only the engines have (the analytic model assumes no sliding).
+struct WallScene : Wall {
     // Coulomb friction at the ground and at the hinge: high enough that nothing slides (sliding is reported).
     double friction = 2.0;
 
-    static WallScene of(const VsswGeometry& w) { return {w, std::nullopt}; }
-    static WallScene of(const ParapetGeometry& p) { return {std::nullopt, p}; }
-    bool is_vssw() const { return vssw.has_value(); }
-    double alpha() const { return vssw ? vssw->alpha1 : parapet->alpha; }  // reference angle alpha1 or alpha
-    double gravity() const { return vssw ? vssw->g : parapet->g; }
-    double overburden() const { return vssw ? vssw->N : parapet->N; }  // N [N/m]
+    static WallScene of(const VsswGeometry& w) { return WallScene(Wall::of(w)); }
+    static WallScene of(const ParapetGeometry& p) { return WallScene(Wall::of(p)); }
+    WallScene() = default;
+    explicit WallScene(const Wall& wall) : Wall(wall) {}
 };
 
 // How the run starts and what shakes it.

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "analytic/closed_forms.hpp"
-#include "analytic/error.hpp"
 #include "analytic/model.hpp"
 
 namespace vssw::multibody {
@@ -16,17 +15,6 @@ void turn(double angle, double x, double y, double& out_x, double& out_y) {
 }
 
 }  // namespace
-
-void require_one_description(const WallScene& scene) {
-    if (scene.vssw.has_value() == scene.parapet.has_value())
-        throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
-}
-
-std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics) {
-    require_one_description(scene);
-    if (scene.vssw) return make_vssw_model(*scene.vssw, kinematics);
-    return make_parapet_model(*scene.parapet);
-}
 
 bool left_guide_binds(double right_corner_x, double left_corner_x, double ground_x, double b) {
     const double right_out = right_corner_x - ground_x - b, left_out = -b - (left_corner_x - ground_x);

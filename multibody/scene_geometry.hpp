@@ -5,16 +5,14 @@
 #include <memory>
 
 #include "analytic/model.hpp"
+#include "analytic/wall_scene.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::multibody {
 
-// Throws InputError unless exactly one description (VSSW or parapet) is set: every backend's first check.
-void require_one_description(const WallScene& scene);
-
-// The rocking model of a scene: make_vssw_model(*scene.vssw, k) or make_parapet_model(*scene.parapet) (the parapet
-// has one kinematics; k is ignored). Throws InputError unless exactly one description is set.
-std::unique_ptr<RockingModel> analytic_model(const WallScene& scene, Kinematics kinematics);
+// The wall's description and its analytic model are analytic/wall_scene.hpp's (require_one_description,
+// analytic_model); the name stays reachable as multibody::analytic_model for the callers that spell it so.
+using vssw::analytic_model;
 
 struct BlockPose {
     double x, y;   // centre [m]

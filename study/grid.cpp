@@ -15,6 +15,7 @@
 #include "analytic/error.hpp"
 #include "analytic/specimens.hpp"
 #include "analytic/wall.hpp"
+#include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/scene_geometry.hpp"
 
@@ -96,7 +97,7 @@ std::string read_bytes(const std::string& path) {
 bool falls_from(const multibody::WallScene& scene, double theta0) {
     SimulationOptions options;
     options.keep_samples = false;
-    return free_vibration(*multibody::analytic_model(scene, Kinematics::exact), theta0 * scene.alpha(), options)
+    return free_vibration(*analytic_model(scene, Kinematics::exact), theta0 * scene.alpha(), options)
         .overturned;
 }
 
@@ -104,9 +105,28 @@ bool falls_from(const multibody::WallScene& scene, double theta0) {
 
 Grid::Grid(const StudySpec& spec) : spec_(spec) {
     std::string identity_text = spec.as_read.dump();
-    const auto where = [&](const PartSpec& part, const std::string& key) {
-        return fmt::format("{} {}: {}{}", kWhat, spec_.path, part.where.empty() ? "" : part.where + ".", key);
-    };
+    read_specimens(identity_text);
+    size_parts();
+    read_records(identity_text);
+    build_runs();
+    identity_ = fnv1a(identity_text);
+    list_cases();
+    list_columns();
+}
+
+Grid::Grid(StudySpec spec, const CaseSpec& one, std::vector<RunSpec> runs, const GroundMotion& record)
+    : spec_(std::move(spec)), product_size_(1), case_ids_{1}, runs_(std::move(runs)), one_case_(one) {
+    parts_.emplace_back();
+    if (!one.record_key.empty()) records_.emplace(one.record_key, record);
+    one_case_->id = 1;
+    one_case_->part = 0;
+}
+
+std::string Grid::where(const PartSpec& part, const std::string& key) const {
+    return fmt::format("{} {}: {}{}", kWhat, spec_.path, part.where.empty() ? "" : part.where + ".", key);
+}
+
+void Grid::read_specimens(std::string& identity_text) {
     for (const PartSpec& part : spec_.parts)
         if (part.wall_axis("specimen") && table1_.empty()) {
             try {
@@ -116,10 +136,12 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             }
             identity_text += "\n" + read_bytes(default_table1_path());
         }
+}
 
-    // The grid's size first, before anything is read or built. Case ids are ints: a larger grid is a typo, not a study
-    // (vssw study's --force bound is far below). Each product is checked before it is formed: unchecked, six lists
-    // whose product is 2^64 + 418 wrapped to a grid of 418 cases that ran under --force.
+// The grid's size first, before anything is read or built. Case ids are ints: a larger grid is a typo, not a study
+// (vssw study's --force bound is far below). Each product is checked before it is formed: unchecked, six lists whose
+// product is 2^64 + 418 wrapped to a grid of 418 cases that ran under --force.
+void Grid::size_parts() {
     constexpr std::size_t kMaxCases = static_cast<std::size_t>(std::numeric_limits<int>::max());
     const auto too_many = [&] {
         return InputError(fmt::format("{} {}: a grid of more than {} cases (case ids are ints), even with --force",
@@ -139,8 +161,10 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
         product_size_ += g.size;
         parts_.push_back(std::move(g));
     }
+}
 
-    // Records: read once, up front, so that a missing or malformed file is refused before anything runs.
+// Records: read once, up front, so that a missing or malformed file is refused before anything runs.
+void Grid::read_records(std::string& identity_text) {
     for (const PartSpec& part : spec_.parts) {
         const Axis* files = part.excitation_axis("file");
         if (!files) continue;
@@ -155,8 +179,7 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             if (records_.count(key)) continue;
             try {
                 GroundMotion r = read_record(record_path(as_word(f)), units ? &*units : nullptr);
-                // A record that is zero everywhere cannot be scaled to a PGA, nor shake anything.
-                if (!(r.pga() > 0.0)) throw InputError(fmt::format("'{}' is zero everywhere", as_word(f)));
+                require_shakes(r, as_word(f));
                 records_.emplace(key, std::move(r));
             } catch (const InputError& e) {
                 throw InputError(fmt::format("{}: {}", where(part, "excitation.file"), e.what()));
@@ -165,9 +188,11 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             identity_text += "\n" + read_bytes(record_path(as_word(f)));
         }
     }
+}
 
-    // Runs, per part: the analytic model under each combination of assumptions and settings, each engine under each
-    // of its settings' combinations (a closed-form part runs the analytic model only).
+// Runs, per part: the analytic model under each combination of assumptions and settings, each engine under each of
+// its settings' combinations (a closed-form part runs the analytic model only).
+void Grid::build_runs() {
     for (std::size_t pi = 0; pi < spec_.parts.size(); ++pi) {
         const PartSpec& part = spec_.parts[pi];
         for (const EngineSpec& e : part.engines) {
@@ -180,7 +205,6 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
                     RunSpec run;
                     run.part = pi;
                     run.engine = e.name;
-                    run.assumptions = assumptions;
                     run.settings = engine->default_settings();
                     run.settings_text = settings_text(e.settings, settings);
                     for (std::size_t i = 0; i < e.settings.size(); ++i) {
@@ -190,34 +214,15 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
                         else if (key == "iterations") run.settings.iterations = static_cast<int>(v);
                         else run.settings.knobs[key] = v;
                     }
-                    if (e.name == "analytic") {
-                        run.kinematics = parse_kinematics(as_word(assumptions[0]));
-                        run.impact = std::holds_alternative<double>(assumptions[1])
-                                         ? ImpactLaw{ImpactLaw::Kind::ratio, as_number(assumptions[1])}
-                                         : parse_impact_law(as_word(assumptions[1]));
-                        run.roller = parse_roller(as_word(assumptions[2]));
-                        if (run.roller == Roller::unilateral && run.kinematics == Kinematics::paper) {
-                            skipped_runs_.push_back(
-                                "the paper's kinematics with the unilateral roller: not a model (Eq. 3 does not keep "
-                                "the top corner on the roller's line, so it can neither leave the roller nor land back "
-                                "on it); not run");
-                            continue;
-                        }
-                        if (run.kinematics == Kinematics::paper) run.settings.knobs["paper_kinematics"] = 1.0;
-                        if (run.impact.kind == ImpactLaw::Kind::whole_mechanism)
-                            run.settings.knobs["whole_mechanism_impact"] = 1.0;
-                        if (run.impact.kind == ImpactLaw::Kind::ratio)
-                            run.settings.knobs["restitution"] = run.impact.ratio;
-                        if (run.roller == Roller::unilateral) run.settings.knobs["unilateral_roller"] = 1.0;
-                    }
+                    run.assumptions = assumptions;
+                    if (e.name == "analytic" && !apply_assumptions(run, assumptions_of(assumptions), skipped_runs_))
+                        continue;
                     try {
                         engine->check_settings(run.settings);
                     } catch (const InputError& err) {
-                        throw InputError(fmt::format("{}: {}", where(part, "settings of " + e.name +
-                                                                               (run.settings_text.empty()
-                                                                                    ? ""
-                                                                                    : " (" + run.settings_text + ")")),
-                                                     err.what()));
+                        const std::string settings_key =
+                            "settings of " + e.name + (run.settings_text.empty() ? "" : " (" + run.settings_text + ")");
+                        throw InputError(fmt::format("{}: {}", where(part, settings_key), err.what()));
                     }
                     runs_.push_back(std::move(run));
                 }
@@ -227,11 +232,11 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
     skipped_runs_.erase(std::unique(skipped_runs_.begin(), skipped_runs_.end()), skipped_runs_.end());
     if (runs_.empty())
         throw InputError(fmt::format("{} {}: no run left: {}", kWhat, spec_.path, fmt::join(skipped_runs_, "; ")));
+}
 
-    identity_ = fnv1a(identity_text);
-
-    // Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
-    // repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
+// Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
+// repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
+void Grid::list_cases() {
     for (std::size_t pi = 0; pi < parts_.size(); ++pi) {
         const PartSpec& part = spec_.parts[pi];
         const auto axis_index = [&](const char* key) -> std::optional<std::size_t> {
@@ -257,7 +262,9 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
             case_ids_.push_back(c.id);
         }
     }
+}
 
+void Grid::list_columns() {
     columns_ = kBaseColumns;
     const auto used = [&](const std::string& k) {
         for (const PartSpec& part : spec_.parts)
@@ -281,121 +288,197 @@ const Grid::PartGrid& Grid::part_of(int id, std::size_t& index) const {
     throw InputError(fmt::format("study {}: no case {} (1 to {})", spec_.name, id, product_size_));
 }
 
+// A case's levels by key, and how messages name them ("height 4, hinge 0.7").
+struct Grid::CaseLevels {
+    std::map<std::string, Level> level;
+    std::string described;
+
+    bool has(const char* k) const { return level.count(k) > 0; }
+    double num(const char* k, double fallback) const {
+        const auto it = level.find(k);
+        return it == level.end() ? fallback : as_number(it->second);
+    }
+    const std::string& word(const char* k) const { return as_word(level.at(k)); }
+};
+
 CaseSpec Grid::make_case(int id) const {
     if (id < 1 || static_cast<std::size_t>(id) > product_size_)
         throw InputError(fmt::format("study {}: no case {} (1 to {})", spec_.name, id, product_size_));
+    if (one_case_) return *one_case_;
     CaseSpec c;
     c.id = id;
-    const PartGrid& g = part_of(id, c.part);
+    const CaseLevels l = case_levels(c);
     const PartSpec& part = spec_.parts[c.part];
-    const std::vector<const Axis*>& axes = g.axes;
-    const std::vector<std::size_t> d = digits(static_cast<std::size_t>(id) - g.first, axes);
-    std::map<std::string, Level> level;
-    std::string described;
-    for (std::size_t i = 0; i < axes.size(); ++i) {
-        c.levels.push_back(axes[i]->levels[d[i]]);
-        level[axes[i]->key] = c.levels.back();
-        described += fmt::format("{}{} {}", described.empty() ? "" : ", ", axes[i]->key, to_text(c.levels.back()));
-    }
-    std::size_t wall_index = 0;
-    for (std::size_t i = 0; i < part.wall.size(); ++i) wall_index = wall_index * part.wall[i].levels.size() + d[i];
-    c.wall_index = wall_index;
-    const auto num = [&](const char* k, double fallback) {
-        const auto it = level.find(k);
-        return it == level.end() ? fallback : as_number(it->second);
+    const auto refused = [&](const std::string& why) {
+        return InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path,
+                                      part.where.empty() ? "" : part.where + ", ", id, l.described, why));
     };
-    const auto has = [&](const char* k) { return level.count(k) > 0; };
-
-    c.model = has("model") ? as_word(level["model"]) : "vssw";
-    c.xi = num("xi", 0.0);
-    c.density = num("density", kDefaultDensity);
-    c.g = num("g", kDefaultGravity);
     try {
-        double height = 0.0, thickness = 0.0;
-        std::optional<double> hinge;
-        if (has("hinge")) {
-            const Level& h = level["hinge"];
-            hinge = std::holds_alternative<double>(h) ? as_number(h) : eq15_optimal_hinge_ratio(c.xi);
-        }
-        if (has("height")) {
-            height = num("height", 0.0);
-            thickness = num("thickness", 0.0);
-        } else if (has("specimen")) {
-            // Table 1 (data/table1.csv): its height and thickness, and its hinge unless the file gives one.
-            const Specimen& s = table1_specimen(table1_, static_cast<int>(num("specimen", 0.0)));
-            height = s.height;
-            thickness = s.thickness;
-            if (!hinge) hinge = s.hinge_ratio;
-        } else if (has("alpha")) {
-            // The whole wall's slenderness and half-diagonal: b = R sin(alpha), h = R cos(alpha).
-            height = 2.0 * num("R", 0.0) * std::cos(num("alpha", 0.0));
-            thickness = 2.0 * num("R", 0.0) * std::sin(num("alpha", 0.0));
-        }
-        if (c.model == "parapet") {
-            c.scene = multibody::WallScene::of(make_parapet(height, thickness, c.xi, c.density, c.g));
-        } else if (has("alpha1")) {
-            c.scene = multibody::WallScene::of(
-                make_vssw_from_angles(num("alpha1", 0.0), num("alpha2", 0.0), num("R1", 0.0), c.xi, c.density, c.g));
-        } else {
-            if (!hinge) throw InputError("a VSSW needs a hinge ratio");
-            c.scene = multibody::WallScene::of(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g));
-        }
+        build_wall(c, l);
     } catch (const InputError& e) {
-        throw InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path, part.where.empty() ? "" : part.where + ", ", id, described, e.what()));
+        throw refused(e.what());
     }
-    if (c.scene.vssw) {
-        const VsswGeometry& w = *c.scene.vssw;
-        c.height = 2.0 * w.h();
-        c.thickness = 2.0 * w.b;
-        c.hinge = w.hinge_ratio();
-        c.alpha = std::atan(w.b / w.h());
-        c.R = std::hypot(w.b, w.h());
-    } else {
-        const ParapetGeometry& p = *c.scene.parapet;
-        c.height = 2.0 * p.h;
-        c.thickness = 2.0 * p.b;
-        c.hinge = kNaN;
-        c.alpha = p.alpha;
-        c.R = p.R;
-    }
-
-    c.theta0 = num("theta0", 0.0);
+    describe_wall(c);
+    c.theta0 = l.num("theta0", 0.0);
     if (c.theta0 > 0.0) {
         const double collapse = multibody::collapse_angle(c.scene);
         if (!(c.theta0 * c.scene.alpha() < collapse))
-            throw InputError(fmt::format("{} {}: {}case {} ({}): theta0 {} alpha is at or beyond the wall's collapse "
-                                         "angle ({:.4g} alpha)",
-                                         kWhat, spec_.path, part.where.empty() ? "" : part.where + ", ", id,
-                                         described, c.theta0, collapse / c.scene.alpha()));
+            throw refused(fmt::format("theta0 {} alpha is at or beyond the wall's collapse angle ({:.4g} alpha)",
+                                      c.theta0, collapse / c.scene.alpha()));
     }
-    if (has("file")) {
-        c.file = as_word(level["file"]);
-        c.record_key = record_key(c.file, part.excitation_axis("units")
-                                              ? as_word(part.excitation_axis("units")->levels.front())
-                                              : "");
-        const GroundMotion& r = record(c);
-        if (has("pga")) c.scale = num("pga", 0.0) * kStandardGravity / r.pga();
-        else c.scale = num("scale", 1.0);
-        c.pga_g = c.scale * r.pga() / kStandardGravity;
-    }
-    if (has("shape")) c.shape = as_word(level["shape"]);
-    c.amplitude_g = num("amplitude", 0.0);
-    c.pulse_period = num("pulse_period", 0.0);
-    c.duration = num("duration", 0.0);
-    c.tolerance = num("tolerance", 0.0);
-    c.max_pga_g = num("max_pga", 0.0);
-    c.step = num("step", 0.0);
+    set_excitation(c, l);
     if (part.kind == ExcitationKind::pulse) {
         // Built here, as every case is built before anything runs: a pulse the library refuses (a harmonic of more
         // than 1e6 cycles, as `vssw history` refuses it) is bad input, not a study whose every row fails.
         try {
             (void)pulse_motion(c);
         } catch (const InputError& e) {
-            throw InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path,
-                                         part.where.empty() ? "" : part.where + ", ", id, described, e.what()));
+            throw refused(e.what());
         }
     }
     return c;
+}
+
+// The case's part, its levels (digit i of its position in the mixed radix of the axes' sizes) and its wall's position.
+Grid::CaseLevels Grid::case_levels(CaseSpec& c) const {
+    const PartGrid& g = part_of(c.id, c.part);
+    const PartSpec& part = spec_.parts[c.part];
+    const std::vector<const Axis*>& axes = g.axes;
+    const std::vector<std::size_t> d = digits(static_cast<std::size_t>(c.id) - g.first, axes);
+    CaseLevels l;
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+        c.levels.push_back(axes[i]->levels[d[i]]);
+        l.level[axes[i]->key] = c.levels.back();
+        l.described += fmt::format("{}{} {}", l.described.empty() ? "" : ", ", axes[i]->key, to_text(c.levels.back()));
+    }
+    std::size_t wall_index = 0;
+    for (std::size_t i = 0; i < part.wall.size(); ++i) wall_index = wall_index * part.wall[i].levels.size() + d[i];
+    c.wall_index = wall_index;
+    return l;
+}
+
+// The wall from the levels: its geometry given one way (height and thickness, a specimen, alpha and R, or alpha1,
+// alpha2 and R1), its hinge the number given, Eq. 15's at the case's xi, or the specimen's.
+void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
+    c.model = l.has("model") ? l.word("model") : "vssw";
+    c.xi = l.num("xi", 0.0);
+    c.density = l.num("density", kDefaultDensity);
+    c.g = l.num("g", kDefaultGravity);
+    double height = 0.0, thickness = 0.0;
+    std::optional<double> hinge;
+    if (l.has("hinge")) {
+        const Level& h = l.level.at("hinge");
+        hinge = std::holds_alternative<double>(h) ? as_number(h) : eq15_optimal_hinge_ratio(c.xi);
+    }
+    if (l.has("height")) {
+        height = l.num("height", 0.0);
+        thickness = l.num("thickness", 0.0);
+    } else if (l.has("specimen")) {
+        // Table 1 (data/table1.csv): its height and thickness, and its hinge unless the file gives one.
+        const Specimen& s = table1_specimen(table1_, static_cast<int>(l.num("specimen", 0.0)));
+        height = s.height;
+        thickness = s.thickness;
+        if (!hinge) hinge = s.hinge_ratio;
+    } else if (l.has("alpha")) {
+        // The whole wall's slenderness and half-diagonal: b = R sin(alpha), h = R cos(alpha).
+        height = 2.0 * l.num("R", 0.0) * std::cos(l.num("alpha", 0.0));
+        thickness = 2.0 * l.num("R", 0.0) * std::sin(l.num("alpha", 0.0));
+    }
+    if (c.model == "parapet") {
+        c.scene = multibody::WallScene::of(make_parapet(height, thickness, c.xi, c.density, c.g));
+    } else if (l.has("alpha1")) {
+        c.scene = multibody::WallScene::of(make_vssw_from_angles(l.num("alpha1", 0.0), l.num("alpha2", 0.0),
+                                                                 l.num("R1", 0.0), c.xi, c.density, c.g));
+    } else {
+        if (!hinge) throw InputError("a VSSW needs a hinge ratio");
+        c.scene = multibody::WallScene::of(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g));
+    }
+}
+
+// The record (scaled by the factor given or to the PGA given) or the pulse, and scale-to-collapse's search bounds.
+void Grid::set_excitation(CaseSpec& c, const CaseLevels& l) const {
+    const PartSpec& part = spec_.parts[c.part];
+    if (l.has("file")) {
+        c.file = l.word("file");
+        c.record_key = record_key(c.file, part.excitation_axis("units")
+                                              ? as_word(part.excitation_axis("units")->levels.front())
+                                              : "");
+        const std::optional<double> pga = l.has("pga") ? std::optional(l.num("pga", 0.0)) : std::nullopt;
+        scale_record(c, record(c), pga, l.num("scale", 1.0));
+    }
+    if (l.has("shape")) c.shape = l.word("shape");
+    c.amplitude_g = l.num("amplitude", 0.0);
+    c.pulse_period = l.num("pulse_period", 0.0);
+    c.duration = l.num("duration", 0.0);
+    c.tolerance = l.num("tolerance", 0.0);
+    c.max_pga_g = l.num("max_pga", 0.0);
+    c.step = l.num("step", 0.0);
+}
+
+void describe_wall(CaseSpec& c) {
+    if (c.scene.vssw) {
+        const VsswGeometry& w = *c.scene.vssw;
+        c.model = "vssw";
+        c.height = 2.0 * w.h();
+        c.thickness = 2.0 * w.b;
+        c.hinge = w.hinge_ratio();
+        c.xi = w.xi;
+        c.density = w.density;
+        c.g = w.g;
+        c.alpha = std::atan(w.b / w.h());
+        c.R = std::hypot(w.b, w.h());
+    } else {
+        const ParapetGeometry& p = *c.scene.parapet;
+        c.model = "parapet";
+        c.height = 2.0 * p.h;
+        c.thickness = 2.0 * p.b;
+        c.hinge = kNaN;
+        c.xi = p.xi;
+        c.density = p.density;
+        c.g = p.g;
+        c.alpha = p.alpha;
+        c.R = p.R;
+    }
+}
+
+void scale_record(CaseSpec& c, const GroundMotion& record, std::optional<double> pga_g, double scale) {
+    c.scale = pga_g ? *pga_g * kStandardGravity / record.pga() : scale;
+    c.pga_g = c.scale * record.pga() / kStandardGravity;
+}
+
+void require_shakes(const GroundMotion& record, const std::string& file) {
+    // A record that is zero everywhere cannot be scaled to a PGA, nor shake anything.
+    if (!(record.pga() > 0.0)) throw InputError(fmt::format("'{}' is zero everywhere", file));
+}
+
+multibody::AnalyticAssumptions assumptions_of(const std::vector<Level>& levels) {
+    multibody::AnalyticAssumptions a;
+    a.kinematics = parse_kinematics(as_word(levels[0]));
+    a.impact = std::holds_alternative<double>(levels[1]) ? ImpactLaw{ImpactLaw::Kind::ratio, as_number(levels[1])}
+                                                         : parse_impact_law(as_word(levels[1]));
+    a.roller = parse_roller(as_word(levels[2]));
+    return a;
+}
+
+std::vector<Level> assumption_levels(const multibody::AnalyticAssumptions& a) {
+    const Level impact =
+        a.impact.kind == ImpactLaw::Kind::ratio ? Level(a.impact.ratio) : Level(to_string(a.impact));
+    return {std::string(to_string(a.kinematics)), impact, std::string(to_string(a.roller))};
+}
+
+bool apply_assumptions(RunSpec& run, const multibody::AnalyticAssumptions& a,
+                       std::vector<std::string>& skipped) {
+    run.kinematics = a.kinematics;
+    run.impact = a.impact;
+    run.roller = a.roller;
+    if (run.roller == Roller::unilateral && run.kinematics == Kinematics::paper) {
+        skipped.push_back("the paper's kinematics with the unilateral roller: not a model (Eq. 3 does not keep the top "
+                          "corner on the roller's line, so it can neither leave the roller nor land back on it); not "
+                          "run");
+        return false;
+    }
+    multibody::set_assumptions(run.settings, a);
+    return true;
 }
 
 GroundMotion pulse_motion(const CaseSpec& c) {

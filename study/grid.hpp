@@ -24,6 +24,7 @@
 #include "analytic/simulate.hpp"
 #include "analytic/specimens.hpp"
 #include "compare/experiments.hpp"
+#include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "study/spec.hpp"
 
@@ -71,11 +72,28 @@ struct CaseSpec {
 // InputError where the library refuses it.
 GroundMotion pulse_motion(const CaseSpec& c);
 
+// The steps of building a case that a case built outside a study file (vssw compare under a ground motion) shares:
+// the wall's columns from its scene (model, height, thickness, hinge, xi, density, g, alpha, R); a record's scale
+// (the factor given, or the one that brings it to pga_g) and its PGA after scaling; InputError naming the file when
+// a record is zero everywhere; an analytic run's assumptions set in its RunSpec and its settings, false (and why in
+// `skipped`) when they are not a model; the assumptions of a run's levels (kinematics, impact, roller) and back.
+void describe_wall(CaseSpec& c);
+void scale_record(CaseSpec& c, const GroundMotion& record, std::optional<double> pga_g, double scale);
+void require_shakes(const GroundMotion& record, const std::string& file);
+bool apply_assumptions(RunSpec& run, const multibody::AnalyticAssumptions& assumptions,
+                       std::vector<std::string>& skipped);
+multibody::AnalyticAssumptions assumptions_of(const std::vector<Level>& levels);
+std::vector<Level> assumption_levels(const multibody::AnalyticAssumptions& assumptions);
+
 class Grid {
 public:
     // Builds every case's wall and every run's settings, checking them (InputError naming the file, the case's
     // levels and the bad value), and reads every record once (a missing or malformed one: InputError).
     explicit Grid(const StudySpec& spec);
+    // A grid of one case built and checked by the caller (vssw compare under a record or a pulse): `spec` holds one
+    // part, of that excitation's kind, with no axes; `runs` are run as given; `record` is the case's record as read
+    // (unscaled), found by the case's record_key (none for a pulse). make_case(1) gives the case back.
+    Grid(StudySpec spec, const CaseSpec& one, std::vector<RunSpec> runs, const GroundMotion& record);
     // Not copied: its parts' axes point into its own study.
     Grid(const Grid&) = delete;
     Grid& operator=(const Grid&) = delete;
@@ -117,8 +135,21 @@ private:
         std::vector<const Axis*> axes;  // wall axes, then excitation axes
         std::size_t size = 1, first = 1;  // its product's size and its first case id
     };
+    struct CaseLevels;
     std::string render(const std::string& tmpl, const CaseSpec& c, const char* key) const;
     const PartGrid& part_of(int id, std::size_t& index) const;
+    std::string where(const PartSpec& part, const std::string& key) const;  // "study file s.toml: part[2].key"
+    // The constructor's steps, in order.
+    void read_specimens(std::string& identity_text);
+    void size_parts();
+    void read_records(std::string& identity_text);
+    void build_runs();
+    void list_cases();
+    void list_columns();
+    // make_case's steps.
+    CaseLevels case_levels(CaseSpec& c) const;
+    void build_wall(CaseSpec& c, const CaseLevels& levels) const;
+    void set_excitation(CaseSpec& c, const CaseLevels& levels) const;
 
     StudySpec spec_;
     std::vector<PartGrid> parts_;
@@ -132,6 +163,7 @@ private:
                                                                   // parapet's analytic runs use
     std::vector<std::string> columns_;
     std::string identity_;
+    std::optional<CaseSpec> one_case_;  // a grid of one case built by the caller
 };
 
 }  // namespace vssw::study

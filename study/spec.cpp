@@ -13,6 +13,7 @@
 #include "io/config_file.hpp"
 #include "study/metric_catalog.hpp"
 #include "compare/experiments.hpp"
+#include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::study {
@@ -34,10 +35,6 @@ const std::vector<std::string> kTopKeys = {"name",        "description", "metric
 const std::vector<std::string> kPartKeys = {"wall",        "excitation", "metrics",     "settings",
                                             "wall_name",   "wall_label", "record_name", "record_label",
                                             "skip_falling_releases"};
-// The analytic backend's knobs that stand for assumptions: the file gives them in [assumptions], where they vary
-// and have columns of their own.
-const std::vector<std::string> kAssumptionKnobs = {"paper_kinematics", "restitution", "whole_mechanism_impact",
-                                                   "unilateral_roller"};
 // The smallest release and the most iterations, as vssw compare's (compare/experiments.hpp, multibody/engine.hpp).
 constexpr double kMinTheta0 = compare::kMinRelease;
 constexpr double kMinCollapseStep = 1e-3;  // scale-to-collapse's smallest relative step (read_value, "step")
@@ -284,7 +281,9 @@ std::vector<Axis> read_settings(const Reader& r, const json& t, const std::strin
         if (engine == "analytic" && !multibody::is_knob(k))
             r.fail(key, "the analytic model has no step or iterations to set (its tolerance is rtol; its free "
                         "vibrations are sampled every 1e-4 s, like an engine's, for the metric code)");
-        if (engine == "analytic" && contains(kAssumptionKnobs, k))
+        // The knobs that stand for the analytic model's assumptions: the file gives those in [assumptions], where
+        // they vary and have columns of their own.
+        if (engine == "analytic" && contains(multibody::assumption_knobs(), k))
             r.fail(key, "the analytic model's assumptions go in [assumptions] (kinematics, impact, roller), where they "
                         "can vary and have columns of their own");
         axes.push_back(r.axis(t.at(k), key, [&](const json& v) -> Level {

@@ -103,7 +103,7 @@ protected:
 };
 
 std::unique_ptr<RockingModel> analytic_reference(const WallScene& scene) {
-    return multibody::analytic_model(scene, Kinematics::exact);
+    return vssw::analytic_model(scene, Kinematics::exact);
 }
 
 std::string fmt_scene(const WallScene& scene, double r) {
@@ -448,7 +448,7 @@ TEST(AnalyticBackend, StopAngleEndsTheRunThere) {
         const WallScene scene = WallScene::of(make_vssw(table1(14), 0.5));
         const multibody::AnalyticEngine analytic;
         const auto settings = multibody::analytic_settings(Kinematics::exact, {}, roller);
-        const double threshold = multibody::analytic_model(scene, Kinematics::exact)->rest_threshold(0.0);
+        const double threshold = vssw::analytic_model(scene, Kinematics::exact)->rest_threshold(0.0);
         multibody::Excitation ex;
         ex.horizontal = compare::ramp_and_hold(kAboveThreshold * threshold, 0.1, 3.0);
         ex.t_end = 3.1;

@@ -297,7 +297,7 @@ TEST(Experiments, TheHoldLetsTheSmallestDetectableExcessLiftTheWall) {
     const ThresholdOptions o;
     for (const WallScene& scene : {WallScene::of(test_vssw()), WallScene::of(test_parapet())}) {
         const double hold = threshold_hold_time(scene, o);
-        const auto model = multibody::analytic_model(scene, Kinematics::exact);
+        const auto model = vssw::analytic_model(scene, Kinematics::exact);
         auto lifts = [&](double excess) {
             Excitation ex;
             ex.horizontal = ramp_and_hold(model->rest_threshold(0.0) * (1.0 + excess), o.ramp_time, hold);
@@ -413,7 +413,7 @@ TEST(Experiments, FreeVibrationMeasuresWhatTheIntegratorReports) {
     const EngineSettings settings = engine.default_settings();
     for (const WallScene& scene : {WallScene::of(test_vssw()), WallScene::of(test_parapet())}) {
         SCOPED_TRACE(scene.is_vssw() ? "vssw" : "parapet");
-        const auto model = multibody::analytic_model(scene, Kinematics::exact);
+        const auto model = vssw::analytic_model(scene, Kinematics::exact);
         const FreeVibrationResult f = run_free_vibration(engine, settings, scene);
         const SimulationResult reference = vssw::free_vibration(*model, f.theta0);
         ASSERT_GE(f.impacts.size(), 8u);

@@ -1,0 +1,34 @@
+#pragma once
+// A wall as every layer above the analytic core passes it around: exactly one of the paper's two descriptions, a VSSW
+// (two blocks with a top roller) or a parapet (one block), and the analytic model built from it. The engines' scene
+// (multibody/engine.hpp) is this wall with its contacts' friction; studies, comparisons and the CLI hold it as built
+// once, so that a wall is checked where it is made and never rebuilt from its numbers.
+#include <memory>
+#include <optional>
+
+#include "analytic/model.hpp"
+#include "analytic/wall.hpp"
+
+namespace vssw {
+
+// Exactly one of the two descriptions (require_one_description).
+struct Wall {
+    std::optional<VsswGeometry> vssw;
+    std::optional<ParapetGeometry> parapet;
+
+    static Wall of(const VsswGeometry& w) { return {w, std::nullopt}; }
+    static Wall of(const ParapetGeometry& p) { return {std::nullopt, p}; }
+    bool is_vssw() const { return vssw.has_value(); }
+    double alpha() const { return vssw ? vssw->alpha1 : parapet->alpha; }  // reference angle alpha1 or alpha
+    double gravity() const { return vssw ? vssw->g : parapet->g; }
+    double overburden() const { return vssw ? vssw->N : parapet->N; }  // N [N/m]
+};
+
+// Throws InputError unless exactly one description (VSSW or parapet) is set: every backend's first check.
+void require_one_description(const Wall& wall);
+
+// The rocking model of a wall: make_vssw_model(*wall.vssw, k) or make_parapet_model(*wall.parapet) (the parapet has
+// one kinematics; k is ignored). Throws InputError unless exactly one description is set.
+std::unique_ptr<RockingModel> analytic_model(const Wall& wall, Kinematics kinematics);
+
+}  // namespace vssw
