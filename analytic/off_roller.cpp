@@ -99,7 +99,7 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
         return out;
     };
     while (t < s_.t_end) {
-        if (++steps > kMaxIntegrationSteps)
+        if (++steps > s_.max_steps)
             throw std::runtime_error("integration exceeded the step limit (top off the roller)");
         const double stop = std::min(s_.next_breakpoint(t), s_.t_end);
         const double h = std::min(h_try, stop - t);

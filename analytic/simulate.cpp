@@ -313,6 +313,7 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
     setup.t_end = opt_.t_end;
     setup.collapse_angle = collapse_;
     setup.event_time_tol = opt_.event_time_tol;
+    setup.max_steps = kMaxIntegrationSteps;
     setup.next_breakpoint = [this](double x) { return next_breakpoint(x); };
     // Samples of the flight carry its own (two-DOF) energies; none asked for, the flight builds no dense output.
     if (opt_.keep_samples && opt_.output_dt > 0.0)
