@@ -13,6 +13,7 @@
 //  - After an impact whose next flight would rise less than rest_amplitude * alpha while the ground cannot tip the
 //    wall, the remaining impacts (a geometric series) are summed in closed form: the wall stops at a finite time.
 //  - |theta1| reaching the model's collapse angle is overturning; the run ends there.
+// These events are one table of guards with their resets (simulate.cpp), located by one routine (bracket.hpp).
 // Energy bookkeeping: kinetic + weights' potential - work(N) - work(ground) + dissipated stays at its initial value;
 // its largest relative drift (over V_r) is reported.
 #include <optional>
