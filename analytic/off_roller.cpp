@@ -1,10 +1,10 @@
 #include "off_roller.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -15,7 +15,20 @@ namespace {
 
 using State = Vec<5>;  // theta1, theta2, theta1', theta2', work of the ground
 enum class Mode { free, far_guide };
+// The flight's events as a table of guards g(t, y) (bracket.hpp), each falling through zero at its event, and the
+// reset each one calls (Flight::reset):
+//   event           guard g(t, y)                      reset
+//   base impact     side theta1                        on the far guide: the one-DOF model's impact (the caller's);
+//                                                      in free flight: not modelled, a failure
+//   collapse        collapse angle - side theta1       the run ends
+//   roller landing  the roller corner's gap            plastic landing onto the one-DOF mechanism: the flight ends
+//   far landing     the far corner's gap               plastic landing onto the far guide
+//   far release     the far guide's push               free flight
+// The turning points of theta1 (theta1' crossing zero either way) are recorded on the way.
 enum class Event { none, roller_landing, far_landing, far_release, base_impact, collapse };
+// Free flight can land on either guide; on the far guide it can only be released from it.
+constexpr Event kFreeEvents[] = {Event::base_impact, Event::collapse, Event::roller_landing, Event::far_landing};
+constexpr Event kFarGuideEvents[] = {Event::base_impact, Event::collapse, Event::far_release};
 
 // The first step of a flight: the motion has just changed mechanism; the controller takes over from there.
 constexpr double kFirstFlightStep = 1e-4;  // [s]
@@ -53,8 +66,8 @@ private:
         return wall_.constrained_motion(q_of(y), qdot_of(y), (*s_.horizontal)(t), (*s_.vertical)(t), Guide::far)
             .roller;
     }
-    // The event functions: positive before the event.
-    double event_value(Event ev, double t, const State& y) const {
+    // The guards of the table above: positive before the event.
+    double guard(Event ev, double t, const State& y) const {
         switch (ev) {
             case Event::roller_landing: return wall_.gap(q_of(y), Guide::roller);
             case Event::far_landing: return wall_.gap(q_of(y), Guide::far);
@@ -72,6 +85,10 @@ private:
         y[1] = q(1);
         y[3] = wall_.mechanism_tangent(q, Guide::far)(1) * y[2];
     }
+    bool take_step(double t, const State& y, const State& dy, double& h_try, RkStep<5>& step) const;
+    std::optional<std::pair<Event, Root>> first_event(double t, const State& y, RkStep<5>& step) const;
+    void record_turning_points(double t, const State& y, RkStep<5>& step, double until, OffRollerEnd& out) const;
+    std::optional<OffRollerEnd::How> reset(Event ev, double t, State& y, double since, OffRollerEnd& out);
 
     TwoBlockWall wall_;
     const OffRollerSetup& s_;
@@ -99,95 +116,114 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
         return out;
     };
     while (t < s_.t_end) {
-        if (++steps > kMaxIntegrationSteps)
+        if (++steps > s_.max_steps)
             throw std::runtime_error("integration exceeded the step limit (top off the roller)");
-        const double stop = std::min(s_.next_breakpoint(t), s_.t_end);
-        const double h = std::min(h_try, stop - t);
-        const double err = integrator_.step(t, y, dy, h, step);
-        bool finite = std::isfinite(err);
-        for (double v : step.y1) finite = finite && std::isfinite(v);
-        if (!finite || err > 1.0) {
-            h_try = finite ? integrator_.next_step(h, err) : 0.25 * h;
-            if (h_try <= s_.step.min_step)
-                throw std::runtime_error(fmt::format("step size underflow at t = {} s with the top off the roller", t));
-            continue;
-        }
-        h_try = integrator_.next_step(h, err);
-        // The events this step crosses, each placed on the continuous extension; the earliest wins.
-        // Free flight can land on either guide; on the far guide it can only be released from it.
-        const std::array<Event, 4> candidates =
-            mode_ == Mode::free
-                ? std::array<Event, 4>{Event::base_impact, Event::collapse, Event::roller_landing, Event::far_landing}
-                : std::array<Event, 4>{Event::base_impact, Event::collapse, Event::far_release, Event::none};
-        Event first = Event::none;
-        double first_time = t + h;
-        for (Event ev : candidates) {
-            if (ev == Event::none || event_value(ev, t + h, step.y1) > 0.0) continue;
-            if (event_value(ev, t, y) <= 0.0) continue;  // already there at the start: not crossed in this step
-            integrator_.make_dense(step);
-            double lo = t, hi = t + h;
-            shrink_bracket([&](double tau) { return event_value(ev, tau, step.at(tau)); }, lo, hi,
-                           s_.event_time_tol);
-            if (hi <= first_time) {
-                first = ev;
-                first_time = hi;
-            }
-        }
+        if (!take_step(t, y, dy, h_try, step)) continue;
+        const auto first = first_event(t, y, step);
+        const double first_time = first ? first->second.t : t + step.h;
         if (s_.emit) {
             integrator_.make_dense(step);
             s_.emit(t, first_time, [&](double tau) { return step.at(tau); });
         }
-        // Turning points of theta1 inside the step (before the event).
-        if ((y[2] > 0.0) != (step.y1[2] > 0.0) && y[2] != 0.0) {
-            integrator_.make_dense(step);
-            double lo = t, hi = t + h;
-            shrink_bracket([&](double tau) { return step.component_at(tau, 2); }, lo, hi, s_.event_time_tol);
-            if (hi <= first_time) out.peaks.push_back({hi, step.component_at(hi, 0)});
-        }
-        if (first == Event::none) {
-            t += h;
-            y = step.y1;
-            project(y);
-        } else {
+        record_turning_points(t, y, step, first_time, out);
+        if (first) {
             t = first_time;
             y = step.at(first_time);
+        } else {
+            t += step.h;
+            y = step.y1;
+            project(y);
         }
         out.max_abs_theta = std::max(out.max_abs_theta, std::abs(y[0]));
         if (s_.check_energy) s_.check_energy(t, y, out.dissipated);
-        switch (first) {
-            case Event::none: break;
-            case Event::collapse: return finish(OffRollerEnd::How::collapse);
-            case Event::base_impact:
-                if (mode_ == Mode::free)
-                    throw std::runtime_error(fmt::format(
-                        "at t = {} s theta1 reached 0 with the top off both guides (off the roller since t = {} s): "
-                        "a base impact of the two-DOF wall, which the model does not describe",
-                        t, start.t));
-                y[0] = 0.0;
-                return finish(OffRollerEnd::How::base_impact);
-            case Event::roller_landing: {
-                const TwoBlockWall::Landing l = wall_.land(q_of(y), qdot_of(y), Guide::roller);
-                out.dissipated += l.dissipated;
-                y[2] = l.theta1_dot;
-                return finish(OffRollerEnd::How::on_roller);
-            }
-            case Event::far_landing: {
-                const TwoBlockWall::Landing l = wall_.land(q_of(y), qdot_of(y), Guide::far);
-                out.dissipated += l.dissipated;
-                y[2] = l.qdot(0);
-                y[3] = l.qdot(1);
-                mode_ = Mode::far_guide;
-                project(y);
-                // Landed where the far guide would at once have to pull: the block rebounds into free flight.
-                if (far_force(t, y) < 0.0) mode_ = Mode::free;
-                break;
-            }
-            case Event::far_release: mode_ = Mode::free; break;
-        }
+        if (first)
+            if (const std::optional<OffRollerEnd::How> how = reset(first->first, t, y, start.t, out))
+                return finish(*how);
         dy = integrator_.rhs(std::nextafter(t, s_.t_end + 1.0), y);
-        if (first != Event::none) h_try = std::min(h_try, kFirstFlightStep);
+        if (first) h_try = std::min(h_try, kFirstFlightStep);
     }
     return finish(OffRollerEnd::How::end_time);
+}
+
+// A trial step from (t, y) to the next breakpoint or the end (h_try at most) into `step`; false when rejected (h_try
+// is cut). On acceptance h_try is the next step's size.
+bool Flight::take_step(double t, const State& y, const State& dy, double& h_try, RkStep<5>& step) const {
+    const double stop = std::min(s_.next_breakpoint(t), s_.t_end);
+    const double h = std::min(h_try, stop - t);
+    const double err = integrator_.step(t, y, dy, h, step);
+    bool finite = std::isfinite(err);
+    for (double v : step.y1) finite = finite && std::isfinite(v);
+    if (!finite || err > 1.0) {
+        h_try = finite ? integrator_.next_step(h, err) : 0.25 * h;
+        if (h_try <= s_.step.min_step)
+            throw std::runtime_error(fmt::format("step size underflow at t = {} s with the top off the roller", t));
+        return false;
+    }
+    h_try = integrator_.next_step(h, err);
+    return true;
+}
+
+// The first root over the mode's guards on the step, bracketed on its continuous extension from the step's start and
+// end (one look: a guard the step crosses and crosses back is not seen; the steps are short next to the flight).
+std::optional<std::pair<Event, Root>> Flight::first_event(double t, const State& y, RkStep<5>& step) const {
+    const auto on_step = [&](Event ev) {
+        return StepGuard{Direction::falling, guard(ev, t, y), guard(ev, t + step.h, step.y1),
+                         [this, ev, &step](double tau) {
+                             integrator_.make_dense(step);
+                             return guard(ev, tau, step.at(tau));
+                         }};
+    };
+    const Looks looks{t, step.h};
+    if (mode_ == Mode::free) return first_root_over(kFreeEvents, looks, s_.event_time_tol, on_step);
+    return first_root_over(kFarGuideEvents, looks, s_.event_time_tol, on_step);
+}
+
+// The turning points of theta1 inside the step up to `until` (the step's event), recorded as peaks.
+void Flight::record_turning_points(double t, const State& y, RkStep<5>& step, double until, OffRollerEnd& out) const {
+    const StepGuard velocity{Direction::either, y[2], step.y1[2], [&](double tau) {
+                                 integrator_.make_dense(step);
+                                 return step.at(tau)[2];
+                             }};
+    scan_and_bracket(velocity, Looks{t, step.h}, s_.event_time_tol, [&](Root r) {
+        if (r.t <= until) out.peaks.push_back({r.t, step.at(r.t)[0]});
+        return true;
+    });
+}
+
+// The reset of an event at (t, y): the flight's end when it ends there, nothing when it goes on (in another mode).
+// `since`: when the top left the roller.
+std::optional<OffRollerEnd::How> Flight::reset(Event ev, double t, State& y, double since, OffRollerEnd& out) {
+    switch (ev) {
+        case Event::none: break;
+        case Event::collapse: return OffRollerEnd::How::collapse;
+        case Event::base_impact:
+            if (mode_ == Mode::free)
+                throw std::runtime_error(fmt::format(
+                    "at t = {} s theta1 reached 0 with the top off both guides (off the roller since t = {} s): "
+                    "a base impact of the two-DOF wall, which the model does not describe",
+                    t, since));
+            y[0] = 0.0;
+            return OffRollerEnd::How::base_impact;
+        case Event::roller_landing: {
+            const TwoBlockWall::Landing l = wall_.land(q_of(y), qdot_of(y), Guide::roller);
+            out.dissipated += l.dissipated;
+            y[2] = l.theta1_dot;
+            return OffRollerEnd::How::on_roller;
+        }
+        case Event::far_landing: {
+            const TwoBlockWall::Landing l = wall_.land(q_of(y), qdot_of(y), Guide::far);
+            out.dissipated += l.dissipated;
+            y[2] = l.qdot(0);
+            y[3] = l.qdot(1);
+            mode_ = Mode::far_guide;
+            project(y);
+            // Landed where the far guide would at once have to pull: the block rebounds into free flight.
+            if (far_force(t, y) < 0.0) mode_ = Mode::free;
+            break;
+        }
+        case Event::far_release: mode_ = Mode::free; break;
+    }
+    return std::nullopt;
 }
 
 }  // namespace

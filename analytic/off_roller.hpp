@@ -17,9 +17,9 @@
 #include <functional>
 #include <vector>
 
-#include "ground_motion.hpp"
-#include "simulate.hpp"
 #include "dop853.hpp"
+#include "ground_motion.hpp"
+#include "result_parts.hpp"
 #include "two_block.hpp"
 
 namespace vssw {
@@ -42,6 +42,7 @@ struct OffRollerSetup {
     const GroundMotion* vertical;
     StepControl step;
     double t_end, collapse_angle, event_time_tol;
+    long max_steps;  // the run's step budget: the flight's steps count against it with the run's (`steps` below)
     std::function<double(double)> next_breakpoint;  // the ground motions' next breakpoint after t (or t_end)
     // Called for each accepted interval (t0, t1] with the state at any time in it, so the caller can fill its output
     // grid; may be empty.

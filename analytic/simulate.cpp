@@ -20,8 +20,13 @@ namespace {
 
 using State = Vec<3>;  // theta1, theta1', work done by the ground motion
 
-// Sub-intervals in which a step's continuous extension is searched for the first sign change of an event function
-// (the first step after an impact is capped to the predicted flight, so its first point is still in flight).
+// The state on a step's continuous extension at tau, as a reader of its components (Simulator::guard).
+auto on_extension(const RkStep<3>& step, double tau) {
+    return [&step, tau](std::size_t i) { return step.component_at(tau, i); };
+}
+
+// Looks (bracket.hpp) at which a step's continuous extension is scanned for the first sign change of the flight's
+// guards (the first step after an impact is capped to the predicted flight, so its first look is still in flight).
 constexpr int kScanPoints = 4;
 // Largest scan interval at rest for analytic ground motions (records are scanned sample by sample): 1 ms, and at most
 // a thousandth of the signal's duration so that a short pulse's time above the threshold is not stepped over.
@@ -57,6 +62,8 @@ constexpr double kShortLandingSpan = 1e-4;  // [s]
 // The parabola's error after a step of d is of order |theta1''' / theta1'| d^3: from 1e-4 s the second gap is below
 // 1e-9 s, the third within kTaylorSpan; a landing not reached in this many steps is searched instead.
 constexpr int kMaxShortLandingSteps = 4;
+// A time that never comes: no landing predicted, no rest in sight.
+constexpr double kNever = std::numeric_limits<double>::infinity();
 
 // Time to the landing, u = side theta1 = 0 coming down, along u + u' d + u'' d^2 / 2 from u >= 0 (or u < 0 just past
 // it, moving down: then negative, the landing behind), in forms without cancellation; infinity when the parabola
@@ -93,7 +100,36 @@ struct FlightHistory {
     }
 };
 
-enum class Event { none, impact, collapse };
+// The events of the one-DOF motion as a table of guards g(t, y) (bracket.hpp): each crosses zero in its direction at
+// its event, which calls its reset.
+//   event           guard g(t, y)                              direction  reset
+//   lift-off        the tipping margin at rest, |a_h| X -      rising     the flight starts (rest_phase)
+//                   (g + a_v) Y - N L (Eq. 12 for the VSSW)
+//   impact          side theta1                                falling    Eq. (19)'s map theta1'+ = e theta1'- onto
+//                                                                         the other side (impact)
+//   overturning     collapse angle - side theta1               falling    the run ends
+//   turning point   theta1'                                    either     a peak recorded
+//   roller tension  minus the roller's reaction (a VSSW)       rising     recorded; a unilateral roller lets the top
+//                                                                         go (leave_roller, off_roller.hpp)
+//   rest            rest_amplitude alpha - the next flight's   rising     the remaining impacts summed in closed form
+//                   rise (rest_margin)                                    (settle)
+// Lift-off is looked at while at rest on the ground motion's own grid, rest after each impact, the others along every
+// step of a flight (where a predicted landing may place the impact instead: place_landing). Event::none: no event,
+// the run's end.
+enum class Event { none, lift_off, impact, overturning, turning_point, roller_tension, rest };
+
+constexpr Direction direction(Event e) {
+    if (e == Event::impact || e == Event::overturning) return Direction::falling;
+    return e == Event::turning_point ? Direction::either : Direction::rising;  // lift-off, roller tension, rest
+}
+
+// The events that end a flight's step (the reset follows), in the order their guards are looked at.
+constexpr Event kFlightEnds[] = {Event::impact, Event::overturning};
+
+// How a step's motion is carried to where it ends (Simulator::apply): the step's own end; a landing within
+// kTaylorSpan past it, by y + dh f(y); a landing within kShortLandingSpan, by land_short; or an event found by the
+// search and placed on the integrator's own solution (polish_event).
+enum class Reach { step_end, taylor, short_steps, polished };
 
 // A ground motion read at the integrator's stages: the twelve stages of a step under a record fall in one sample
 // interval, so the interval's line is kept and the record looked up only when a time leaves it (the lookup was 10 %
@@ -259,21 +295,80 @@ private:
         last_roller_ = supports_.record(t, side_, y[0], y[1], theta_ddot, ah_stages_(t), vertical_at_stage(t),
                                         out_.supports);
     }
-    // The roller's reaction at time tau inside an accepted step (its continuous extension built).
-    double roller_at(const RkStep<3>& step, double tau) const {
-        const State s = step.at(tau);
-        const double a_h = ah_(tau), a_v = av_(tau);
-        const double acc = rocking_rates(model_.terms(side_ * s[0]), side_, s[1], a_h, a_v, g_, N_).acceleration;
-        return supports_.reactions(side_, s[0], s[1], acc, a_h, a_v).roller;
+    // The roller's reaction at (t, y) on the current side [N/m], positive when it pushes.
+    double roller_reaction(double t, const State& y) const {
+        const double a_h = ah_(t), a_v = av_(t);
+        const double acc = rocking_rates(model_.terms(side_ * y[0]), side_, y[1], a_h, a_v, g_, N_).acceleration;
+        return supports_.reactions(side_, y[0], y[1], acc, a_h, a_v).roller;
+    }
+    // The guards of the table above at (t, y), with y read through y(i), its component i: a State, or a step's
+    // continuous extension (on_extension), where a guard that reads one component costs one. The motion's own guards
+    // are inline (every step looks at them); those that evaluate the model are out of line (model_guard).
+    template <class Component>
+    double guard(Event e, double t, Component y) const {
+        if (e == Event::impact) return side_ * y(0);
+        if (e == Event::overturning) return collapse_ - side_ * y(0);
+        if (e == Event::turning_point) return y(1);
+        return model_guard(e, t, State{y(0), y(1), y(2)});
+    }
+    double guard(Event e, double t, const State& y) const {
+        return guard(e, t, [&y](std::size_t i) { return y[i]; });
+    }
+    // Lift-off, roller tension and rest. Out of line, so that guard() stays small enough to inline.
+    [[gnu::noinline]] double model_guard(Event e, double t, const State& y) const;
+    // The restoring acceleration at rest on the current side, side theta1'' at theta1 = 0 (< 0: back to the ground).
+    double restoring(double t, double theta_dot) const {
+        return side_ * model_.acceleration(side_, 0.0, theta_dot, ah_(t), av_(t));
+    }
+    // The rest guard at an impact (y: theta1 = 0 and the velocity after it, side_ the new side): positive when the
+    // next flight would rise less than rest_amplitude alpha while the ground cannot tip the wall.
+    double rest_margin(double t, const State& y) const {
+        const double a_out = restoring(t, y[1]);
+        if (!(a_out < 0.0)) return -kNever;
+        return opt_.rest_amplitude * alpha_ - y[1] * y[1] / (2.0 * -a_out);
     }
     bool unilateral() const { return opt_.roller == Roller::unilateral && supports_.active(); }
     // The supports are followed when asked for, and always under a unilateral roller (its departures need them).
     bool monitoring() const { return supports_.active() && (opt_.monitor_supports || unilateral()); }
+    // A flight: the motion on one side between a lift-off or an impact and the next impact (rocking_phase). What
+    // predicts its landing, the derivative at the current state and the storage of its steps.
+    struct Flight {
+        double launch = 0.0, launch_speed = 0.0;  // its start time and |theta1'| there
+        bool symmetric = false;       // from theta1 = 0 with the ground still: it lands at 2 t_turn - t_launch
+        bool starts_at_zero = false;  // the next step starts at theta1 = 0
+        double aim = kNever;          // a predicted landing the next step is cut to end at
+        State dy{};                   // f(t, y) at the current state
+        RkStep<3> step, event_step;   // the trial step; the step re-taken to an event (polish_event)
+    };
+    // One step of a flight: where it stops and how its motion ends.
+    struct Trial {
+        double breakpoint = 0.0, stop = 0.0, h = 0.0, h_next = 0.0;
+        bool to_aim = false;  // cut to end at the flight's aim
+        Event ev = Event::none;  // what ends the flight in this step: none, impact or overturning
+        Reach reach = Reach::step_end;
+        double landing_dh = 0.0;        // Reach::taylor: the Taylor step from the step's end
+        State landing{}, landing_dy{};  // Reach::short_steps: the state at the landing and its derivative
+        double event_time = 0.0;        // where the step's motion ends
+    };
+
     // The top leaves the roller at (t, y): flies off it (off_roller.hpp) until it lands back (nothing returned: the
     // one-DOF motion goes on from the updated t, y), or a base impact, overturning or the end ends the flight.
     std::optional<Event> leave_roller(double& t, State& y);
+    void back_on_roller(Flight& f, double t, const State& y);
     bool rest_phase(double& t, State& y);
     Event rocking_phase(double& t, State& y);
+    Flight launch(double t, const State& y);
+    double parabola_aim(double t, const State& y, const State& dy, double breakpoint) const;
+    bool take_step(Flight& f, double t, const State& y, Trial& s);
+    bool locate(Flight& f, double t, const State& y, Trial& s);
+    void place_landing(Flight& f, double t, Trial& s) const;
+    bool ends_past_flight(const RkStep<3>& step) const;
+    bool search_flight_end(Flight& f, double t, const State& y, Trial& s);
+    void record_turning_points(Flight& f, double t, const State& y, const Trial& s);
+    bool apply(Flight& f, double& t, State& y, const Trial& s);
+    std::optional<double> roller_tension_in(RkStep<3>& step, double roller_before, double t);
+    bool impact(double& t, State& y);
+    void settle(double& t, State& y);
     void polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const;
     bool may_turn(const RkStep<3>& step) const;
     std::optional<double> land_short(double t, State y, State dy, double limit, State& landing,
@@ -313,6 +408,7 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
     setup.t_end = opt_.t_end;
     setup.collapse_angle = collapse_;
     setup.event_time_tol = opt_.event_time_tol;
+    setup.max_steps = kMaxIntegrationSteps;
     setup.next_breakpoint = [this](double x) { return next_breakpoint(x); };
     // Samples of the flight carry its own (two-DOF) energies; none asked for, the flight builds no dense output.
     if (opt_.keep_samples && opt_.output_dt > 0.0)
@@ -345,7 +441,7 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
     switch (e.how) {
         case OffRollerEnd::How::on_roller: check_balance(t, y); return std::nullopt;
         case OffRollerEnd::How::base_impact: return Event::impact;  // on the far guide at theta1 = 0: one-DOF again
-        case OffRollerEnd::How::collapse: off_mechanism_ = true; return Event::collapse;
+        case OffRollerEnd::How::collapse: off_mechanism_ = true; return Event::overturning;
         case OffRollerEnd::How::end_time: off_mechanism_ = true; break;
     }
     return Event::none;
@@ -356,6 +452,7 @@ bool Simulator::rest_phase(double& t, State& y) {
     y[0] = 0.0;
     y[1] = 0.0;
     const double rest_start = t;
+    const auto margin = [&](double when) { return tipping_margin(when); };  // the lift-off guard, inline
     auto rest_state = [&](double) { return y; };
     auto lift = [&](double when) {
         emit_grid(rest_start, when, rest_state);
@@ -368,7 +465,7 @@ bool Simulator::rest_phase(double& t, State& y) {
     // a margin positive at that instant alone tips nothing. The wall lifts only where the margin is positive just
     // after the instant too.
     auto tips_from = [&](double when) {
-        return tipping_margin(when) > 0.0 && tipping_margin(std::nextafter(when, opt_.t_end + 1.0)) > 0.0;
+        return margin(when) > 0.0 && margin(std::nextafter(when, opt_.t_end + 1.0)) > 0.0;
     };
     if (tips_from(t)) return lift(t);
     double scan = t;
@@ -386,7 +483,7 @@ bool Simulator::rest_phase(double& t, State& y) {
         // samples, where the margin |a_h| X - (g + a_v) Y is convex), not for an analytic vertical signal, which can
         // rise with a_h and peak between looks (the command line offers vertical records only).
         next = std::min({next, scan + rest_scan_step_, ah_.next_extremum(scan), av_.next_extremum(scan)});
-        if (tipping_margin(next) > 0.0) {
+        if (margin(next) > 0.0) {
             // Narrow to the crossing, keeping the right end, where the margin is positive, so the flight starts.
             double lo = scan, hi = next;
             // A margin of exactly 0 counts as below: the bracket's right end then always lifts, and the search does
@@ -394,7 +491,7 @@ bool Simulator::rest_phase(double& t, State& y) {
             // started 0.6 ms late).
             shrink_bracket(
                 [&](double x) {
-                    const double m = tipping_margin(x);
+                    const double m = margin(x);
                     return m > 0.0 ? m : std::min(m, -std::numeric_limits<double>::denorm_min());
                 },
                 lo, hi, opt_.event_time_tol);
@@ -414,7 +511,8 @@ bool Simulator::rest_phase(double& t, State& y) {
 void Simulator::polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const {
     for (int i = 0; i < kMaxNewtonIterations; ++i) {
         integrator_.step(t, y, dy, h, step);
-        const double g = ev == Event::impact ? side_ * step.y1[0] : collapse_ - side_ * step.y1[0];
+        // The guard (impact or overturning) and its rate at the step's end.
+        const double g = guard(ev, t + h, step.y1);
         const double slope = ev == Event::impact ? side_ * step.y1[1] : -side_ * step.y1[1];
         if (slope == 0.0) return;
         const double dh = -g / slope;
@@ -472,209 +570,279 @@ bool Simulator::may_turn(const RkStep<3>& step) const {
     return false;
 }
 
+// The guards of the table that evaluate the model (guard() reads the motion's own).
+double Simulator::model_guard(Event e, double t, const State& y) const {
+    if (e == Event::roller_tension) return -roller_reaction(t, y);
+    if (e == Event::rest) return rest_margin(t, y);
+    return tipping_margin(t);  // lift-off
+}
+
+// A flight: step, predict, locate, apply, until an event ends it (an impact or the overturning, returned), or the
+// end time (Event::none). Under a unilateral roller the top may leave the roller on the way and land back.
 Event Simulator::rocking_phase(double& t, State& y) {
-    State dy = integrator_.rhs(t, y);
-    RkStep<3> step, event_step;
-    bool starts_at_zero = y[0] == 0.0;
-    if (starts_at_zero && y[1] != 0.0) {
+    Flight f = launch(t, y);
+    while (t < opt_.t_end) {
+        if (unilateral() && last_roller_ < 0.0) {  // the roller cannot pull: the top leaves it
+            f.symmetric = false;  // the flight goes on in another mechanism
+            flights_ = FlightHistory{};
+            f.aim = kNever;
+            if (const std::optional<Event> ended = leave_roller(t, y)) return *ended;
+            back_on_roller(f, t, y);
+            continue;
+        }
+        if (++out_.steps > kMaxIntegrationSteps) throw std::runtime_error("integration exceeded the step limit");
+        Trial s;
+        s.breakpoint = next_breakpoint(t);
+        if (!f.symmetric && opt_.predict_landings) f.aim = parabola_aim(t, y, f.dy, s.breakpoint);
+        if (!take_step(f, t, y, s) || !locate(f, t, y, s)) continue;  // rejected, or retried shorter
+        if (apply(f, t, y, s)) return s.ev;
+    }
+    return Event::none;
+}
+
+// A flight starts at (t, y): from theta1 = 0 (a lift-off or an impact) or anywhere (a release, the run's start).
+Simulator::Flight Simulator::launch(double t, const State& y) {
+    Flight f;
+    f.dy = integrator_.rhs(t, y);
+    f.starts_at_zero = y[0] == 0.0;
+    if (f.starts_at_zero && y[1] != 0.0) {
         // Cap the first step to 1.5 times the flight 2|v|/|a| predicted with the restoring acceleration at rest: the
         // real flight is longer (restoring moments fall as |theta1| grows), so the scan's first point (3/8 of the
         // flight) is still in the air, while a short flight usually ends inside this one step. Within a step the
         // side is fixed and the right-hand side smooth through theta1 = 0, so a step may overshoot the landing. (When
         // the parabola predicts the landing, the step is aimed at it instead: the flight itself, kShortLandingSpan.)
-        const double a = std::abs(dy[1]);
+        const double a = std::abs(f.dy[1]);
         if (a > 0.0) h_ = std::min(h_, 3.0 * std::abs(y[1]) / a);
     }
-    record_supports(t, y, dy[1]);
+    record_supports(t, y, f.dy[1]);
     // A flight from theta1 = 0 with the ground at rest is symmetric in time about its turning point (the equation of
     // motion is even in theta1' and has no time in it once the ground is still): it lands at 2 t_turn - t_launch.
     // The step that reaches that time is cut to end there, and when it lands within kTaylorSpan the impact is placed
     // by y + dh f(y) instead of by the search on the continuous extension and a re-step (a quarter of a free
     // vibration's right-hand sides). A prediction only: a step that does not land there goes on as any other. In the
     // other flights the parabola predicts instead (kShortLandingSpan).
-    const double launch = t, launch_speed = std::abs(y[1]);
-    bool symmetric = starts_at_zero && y[1] != 0.0 && t >= motion_end_;
-    if (!symmetric) flights_ = FlightHistory{};
+    f.launch = t;
+    f.launch_speed = std::abs(y[1]);
+    f.symmetric = f.starts_at_zero && y[1] != 0.0 && t >= motion_end_;
+    if (!f.symmetric) flights_ = FlightHistory{};
     // Before its turning point is known, the flight's end is predicted from the last two (FlightHistory).
-    double aim = symmetric && opt_.predict_landings ? launch + flights_.predict(launch_speed)
-                                                    : std::numeric_limits<double>::infinity();
-    while (t < opt_.t_end) {
-        if (unilateral() && last_roller_ < 0.0) {  // the roller cannot pull: the top leaves it
-            symmetric = false;  // the flight goes on in another mechanism
-            flights_ = FlightHistory{};
-            aim = std::numeric_limits<double>::infinity();
-            if (const std::optional<Event> ended = leave_roller(t, y)) return *ended;
-            dy = integrator_.rhs(t, y);
-            h_ = std::min(h_, kFirstStepAfterLanding);
-            starts_at_zero = false;
-            record_supports(t, y, dy[1]);
-            // Landed where the roller must pull at once: rather than leave again with no time between, the next
-            // one-DOF step is taken and the top leaves at its end (one step on a pulling roller).
-            if (last_roller_ < 0.0) last_roller_ = 0.0;
-            continue;
-        }
-        if (++out_.steps > kMaxIntegrationSteps) throw std::runtime_error("integration exceeded the step limit");
-        const double breakpoint = next_breakpoint(t);
-        if (!symmetric && opt_.predict_landings) {  // the ground moves: aim at the parabola's landing in this step
-            aim = std::numeric_limits<double>::infinity();
-            if (side_ * y[0] >= 0.0) {
-                const double d = parabola_landing(side_ * y[0], side_ * y[1], side_ * dy[1]);
-                if (d > 0.0 && d < h_ && t + d < breakpoint) aim = t + d;
-            }
-        }
-        const double stop = std::min({breakpoint, opt_.t_end, aim > t ? aim : opt_.t_end});
-        double h = std::min(h_, stop - t);
-        const bool to_aim = stop == aim && h == stop - t;
-        const double err = integrator_.step(t, y, dy, h, step);
-        // A trial step that blew up (non-finite state or error) is rejected like any other, with a quarter step.
-        const bool finite = std::isfinite(step.y1[0]) && std::isfinite(step.y1[1]) && std::isfinite(err);
-        if (!finite || (err > 1.0 && !integrator_.fixed_step())) {
-            ++out_.rejected_steps;
-            h_ = finite ? integrator_.next_step(h, err) : 0.25 * h;
-            if (h_ <= opt_.step.min_step)
-                throw std::runtime_error(fmt::format("step size underflow at t = {} s (state {}, {})", t, y[0], y[1]));
-            continue;
-        }
-        const double h_next = integrator_.next_step(h, err);
+    if (f.symmetric && opt_.predict_landings) f.aim = f.launch + flights_.predict(f.launch_speed);
+    return f;
+}
 
-        // Events show at the step's end: the wall cannot cross theta1 = 0 and come back within one flight.
-        Event ev = Event::none;
-        if (side_ * step.y1[0] <= 0.0) ev = Event::impact;
-        else if (side_ * step.y1[0] >= collapse_) ev = Event::collapse;
-        double landing_dh = 0.0;  // the Taylor step to the landing from a step that ended at the aim
-        bool landed = false;
-        std::optional<double> short_landing;  // the impact time reached by land_short from the aimed step's end
-        State landing{}, landing_dy{};        // and the state there, with its derivative
-        if (to_aim) {
-            aim = std::numeric_limits<double>::infinity();
-            const double slope = side_ * step.y1[1];
-            if (slope < 0.0) {
-                landing_dh = -side_ * step.y1[0] / slope;
-                landed = std::abs(landing_dh) < kTaylorSpan;
-                if (!landed && !symmetric && std::abs(landing_dh) < kShortLandingSpan)
-                    short_landing =
-                        land_short(t + h, step.y1, step.end_derivative(), breakpoint, landing, landing_dy);
-            }
-            if (landed || short_landing) ev = Event::impact;
-        }
-        const bool turns = may_turn(step);
-        // Where the step's motion ends: a landing placed from it (up to kShortLandingSpan past its end; the output
-        // times in between are read off the continuous extension just past the step), else the step's end (a search
-        // below may move it back).
-        double event_time = short_landing ? *short_landing : landed ? t + h + landing_dh : t + h;
-        const bool outputs = opt_.keep_samples && opt_.output_dt > 0.0 && next_output_ <= event_time + 1e-12;
-        const bool search = ev != Event::none && !landed && !short_landing;
-        if (search || turns || outputs) integrator_.make_dense(step);
-        if (search) {
-            // The first sub-interval of the continuous extension where the event function changes sign.
-            double lo = t, hi = t + h;
-            double prev = starts_at_zero ? 1.0 : (ev == Event::impact ? side_ * y[0] : collapse_ - side_ * y[0]);
-            int first_change = 0;
-            for (int k = 1; k <= kScanPoints; ++k) {
-                const double tau = t + h * k / kScanPoints;
-                const double th = k == kScanPoints ? step.y1[0] : step.component_at(tau, 0);
-                const double g = ev == Event::impact ? side_ * th : collapse_ - side_ * th;
-                if (prev > 0.0 && g <= 0.0) {
-                    lo = tau - h / kScanPoints;
-                    hi = tau;
-                    first_change = k;
-                    break;
-                }
-                prev = g;
-            }
-            // A flight from theta1 = 0 that is over before the scan's first point leaves no point in the air to
-            // bracket from (the bracket would close onto the start): retry with a quarter step until one is seen.
-            if (starts_at_zero && first_change == 1) {
-                ++out_.rejected_steps;
-                h_ = 0.25 * h;
-                if (h_ <= opt_.step.min_step)
-                    throw std::runtime_error(fmt::format("a flight from rest at t = {} s is shorter than the "
-                                                         "smallest step",
-                                                         t));
-                continue;
-            }
-            ++out_.searched_events;
-            shrink_bracket([&](double tau) {
-                const double th = step.component_at(tau, 0);
-                return ev == Event::impact ? side_ * th : collapse_ - side_ * th;
-            }, lo, hi, opt_.event_time_tol);
-            event_time = hi;
-        }
-        if (turns) {
-            double tau_prev = t, v_prev = y[1];
-            for (int k = 1; k <= kScanPoints; ++k) {
-                const double tau = t + h * k / kScanPoints;
-                if (tau_prev >= event_time) break;  // after the event: not part of this flight
-                const double v = k == kScanPoints ? step.y1[1] : step.component_at(tau, 1);
-                if (v_prev != 0.0 && (v == 0.0 || (v > 0.0) != (v_prev > 0.0))) {
-                    double a = tau_prev, b = tau;
-                    shrink_bracket([&](double x) { return step.component_at(x, 1); }, a, b, opt_.event_time_tol);
-                    if (b <= event_time) {
-                        const double th = step.component_at(b, 0);
-                        out_.peaks.push_back({b, th});
-                        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(th));
-                        if (symmetric && opt_.predict_landings && ev == Event::none) aim = 2.0 * b - launch;
-                    }
-                }
-                tau_prev = tau;
-                v_prev = v;
-            }
-        }
-        if (outputs) emit_grid(t, event_time, [&](double tau) { return step.at(tau); });
+// The top has landed back on the roller at (t, y): the one-DOF motion goes on from there.
+void Simulator::back_on_roller(Flight& f, double t, const State& y) {
+    f.dy = integrator_.rhs(t, y);
+    h_ = std::min(h_, kFirstStepAfterLanding);
+    f.starts_at_zero = false;
+    record_supports(t, y, f.dy[1]);
+    // Landed where the roller must pull at once: rather than leave again with no time between, the next one-DOF step
+    // is taken and the top leaves at its end (one step on a pulling roller).
+    if (last_roller_ < 0.0) last_roller_ = 0.0;
+}
 
-        const bool on_breakpoint = ev == Event::none && t + h == stop;
-        if (landed) {  // `step` stays the integrator's step (the roller's bracket below may read its extension)
-            dy = step.end_derivative();
-            for (std::size_t n = 0; n < 3; ++n) y[n] = step.y1[n] + landing_dh * dy[n];
-            h += landing_dh;
-        } else if (short_landing) {  // likewise
-            y = landing;
-            dy = landing_dy;
-            h = event_time - t;
-        } else if (ev != Event::none) {
-            polish_event(ev, t, y, dy, event_time - t, event_step);
-            h = event_step.h;
-            y = event_step.y1;
-            dy = event_step.end_derivative();
-        } else {
-            y = step.y1;
-            dy = step.end_derivative();
-        }
-        const double roller_before = last_roller_;
-        const bool first_tension = !out_.supports.roller_tension_at;
-        t += h;
-        h_ = h_next;
-        starts_at_zero = false;
-        record_supports(t, y, dy[1]);
-        if (monitoring() && roller_before >= 0.0 && last_roller_ < 0.0 &&
-            (first_tension || (unilateral() && ev == Event::none))) {
-            // The roller turned tensile inside the step: place the moment on the continuous extension. (Past the
-            // step's end, in a landing's last kShortLandingSpan, the landing's time stands for it.)
-            if (!step.dense_ready) integrator_.make_dense(step);
-            double lo = step.t0, hi = std::min(t, step.t0 + step.h);
-            if (roller_at(step, hi) < 0.0)
-                shrink_bracket([&](double tau) { return roller_at(step, tau); }, lo, hi, opt_.event_time_tol);
-            else
-                hi = t;
-            if (first_tension) out_.supports.roller_tension_at = hi;
-            if (unilateral() && ev == Event::none) {  // the top leaves the roller there, not at the step's end
-                t = hi;
-                y = step.at(hi);
-            }
-        }
-        // A ground motion may jump at a breakpoint (a cosine pulse's end) and is left-continuous there: the next
-        // step's first stage must see the value after the jump. Where both motions are continuous (a record's
-        // interior samples: every breakpoint but its ends) the step's last stage is already that value, to rounding.
-        if (on_breakpoint && !(ah_.continuous_at(t) && av_.continuous_at(t)))
-            dy = integrator_.rhs(std::nextafter(t, opt_.t_end + 1.0), y);
-        out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(y[0]));
-        if (ev == Event::impact) y[0] = 0.0;
-        if (opt_.keep_samples || ev != Event::none) check_balance(t, y);  // events always; every step when sampling
-        if (opt_.output_dt <= 0.0) emit(t, y);
-        if (ev == Event::impact && symmetric) flights_.add(t - launch, launch_speed);
-        if (ev != Event::none) return ev;
+// Where the ground moves, the landing predicted by the parabola through theta1, theta1', theta1'' when it falls in
+// the next step (of h_) before the breakpoint; kNever otherwise.
+double Simulator::parabola_aim(double t, const State& y, const State& dy, double breakpoint) const {
+    if (side_ * y[0] >= 0.0) {
+        const double d = parabola_landing(side_ * y[0], side_ * y[1], side_ * dy[1]);
+        if (d > 0.0 && d < h_ && t + d < breakpoint) return t + d;
     }
-    return Event::none;
+    return kNever;
+}
+
+// A trial step from (t, y) to the breakpoint, the end time or the aim, whichever comes first (h_ at most). False
+// when it is rejected: h_ is cut and the step is to be taken again.
+bool Simulator::take_step(Flight& f, double t, const State& y, Trial& s) {
+    s.stop = std::min({s.breakpoint, opt_.t_end, f.aim > t ? f.aim : opt_.t_end});
+    s.h = std::min(h_, s.stop - t);
+    s.to_aim = s.stop == f.aim && s.h == s.stop - t;
+    const double err = integrator_.step(t, y, f.dy, s.h, f.step);
+    // A trial step that blew up (non-finite state or error) is rejected like any other, with a quarter step.
+    const bool finite = std::isfinite(f.step.y1[0]) && std::isfinite(f.step.y1[1]) && std::isfinite(err);
+    if (!finite || (err > 1.0 && !integrator_.fixed_step())) {
+        ++out_.rejected_steps;
+        h_ = finite ? integrator_.next_step(s.h, err) : 0.25 * s.h;
+        if (h_ <= opt_.step.min_step)
+            throw std::runtime_error(fmt::format("step size underflow at t = {} s (state {}, {})", t, y[0], y[1]));
+        return false;
+    }
+    s.h_next = integrator_.next_step(s.h, err);
+    return true;
+}
+
+// Where the accepted step's motion ends (s.ev, s.reach, s.event_time): at a landing placed from a step aimed at it,
+// else at the first root over the flight's end guards, else at the step's end; with the turning points before it
+// and the output grid up to it. False when a flight from theta1 = 0 is to be retried with a shorter step.
+bool Simulator::locate(Flight& f, double t, const State& y, Trial& s) {
+    if (s.to_aim) place_landing(f, t, s);
+    if (s.reach == Reach::taylor) s.event_time = t + s.h + s.landing_dh;
+    else if (s.reach == Reach::step_end) s.event_time = t + s.h;
+    const bool turns = may_turn(f.step);
+    // The output times up to the step's motion's end (a landing up to kShortLandingSpan past the step's end: the
+    // times in between are read off the continuous extension just past the step).
+    const bool outputs = opt_.keep_samples && opt_.output_dt > 0.0 && next_output_ <= s.event_time + 1e-12;
+    if (turns || outputs) integrator_.make_dense(f.step);
+    if (s.reach == Reach::step_end && ends_past_flight(f.step) && !search_flight_end(f, t, y, s)) return false;
+    if (turns) record_turning_points(f, t, y, s);
+    if (outputs) emit_grid(t, s.event_time, [&](double tau) { return f.step.at(tau); });
+    return true;
+}
+
+// The step was cut to end at the predicted landing: when its end lies within kTaylorSpan of theta1 = 0 the impact is
+// placed there by y + dh f(y) (Reach::taylor); within kShortLandingSpan, in a flight the symmetry does not predict,
+// land_short reaches it (Reach::short_steps). Otherwise the step goes on as any other.
+void Simulator::place_landing(Flight& f, double t, Trial& s) const {
+    f.aim = kNever;
+    const RkStep<3>& step = f.step;
+    const double slope = side_ * step.y1[1];
+    if (!(slope < 0.0)) return;
+    s.landing_dh = -side_ * step.y1[0] / slope;
+    if (std::abs(s.landing_dh) < kTaylorSpan) {
+        s.ev = Event::impact;
+        s.reach = Reach::taylor;
+    } else if (!f.symmetric && std::abs(s.landing_dh) < kShortLandingSpan) {
+        const std::optional<double> when =
+            land_short(t + s.h, step.y1, step.end_derivative(), s.breakpoint, s.landing, s.landing_dy);
+        if (!when) return;
+        s.ev = Event::impact;
+        s.reach = Reach::short_steps;
+        s.event_time = *when;
+    }
+}
+
+// Whether the step ends past one of the flight's ends (on the ground or past the collapse angle). Events show at the
+// step's end: the wall cannot cross theta1 = 0 and come back within one flight. Most steps end in the air: this is
+// all they look at.
+bool Simulator::ends_past_flight(const RkStep<3>& step) const {
+    for (const Event e : kFlightEnds)
+        if (past(direction(e), guard(e, step.t0 + step.h, step.y1))) return true;
+    return false;
+}
+
+// The first root over the flight's end guards (impact, overturning) that the step crosses, found on the continuous
+// extension at kScanPoints looks. False when a flight from theta1 = 0 is to be retried with a shorter step.
+bool Simulator::search_flight_end(Flight& f, double t, const State& y, Trial& s) {
+    RkStep<3>& step = f.step;
+    const auto on_step = [&](Event e) {
+        // A flight launched from theta1 = 0 is above the ground from its start (its impact guard is 0 there).
+        const double before = e == Event::impact && f.starts_at_zero ? 1.0 : guard(e, t, y);
+        return StepGuard{direction(e), before, guard(e, t + s.h, step.y1), [this, e, &step](double tau) {
+                             integrator_.make_dense(step);
+                             return guard(e, tau, on_extension(step, tau));
+                         }};
+    };
+    const Looks looks{t, s.h, kScanPoints, true};
+    const auto root = first_root_over(kFlightEnds, looks, opt_.event_time_tol, on_step);
+    if (!root) return true;
+    // A flight from theta1 = 0 that is over before the scan's first point leaves no point in the air to bracket from
+    // (the bracket would close onto the start): retry with a quarter step until one is seen.
+    if (f.starts_at_zero && root->second.look == 1) {
+        ++out_.rejected_steps;
+        h_ = 0.25 * s.h;
+        if (h_ <= opt_.step.min_step)
+            throw std::runtime_error(
+                fmt::format("a flight from rest at t = {} s is shorter than the smallest step", t));
+        return false;
+    }
+    ++out_.searched_events;
+    s.ev = root->first;
+    s.reach = Reach::polished;
+    s.event_time = root->second.t;
+    return true;
+}
+
+// The turning points inside the step before its motion's end, recorded as peaks. In a symmetric flight the first one
+// predicts the landing at 2 t_turn - t_launch.
+void Simulator::record_turning_points(Flight& f, double t, const State& y, const Trial& s) {
+    const RkStep<3>& step = f.step;
+    const auto velocity = [&](double tau) { return guard(Event::turning_point, tau, on_extension(step, tau)); };
+    const StepGuard turning{direction(Event::turning_point), guard(Event::turning_point, t, y),
+                            guard(Event::turning_point, t + s.h, step.y1), velocity};
+    const auto record = [&](Root r) {
+        if (r.t <= s.event_time) {
+            const double theta = step.at(r.t)[0];
+            out_.peaks.push_back({r.t, theta});
+            out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(theta));
+            if (f.symmetric && opt_.predict_landings && s.ev == Event::none) f.aim = 2.0 * r.t - f.launch;
+        }
+        return true;
+    };
+    scan_and_bracket(turning, Looks{t, s.h, kScanPoints}, opt_.event_time_tol, record, s.event_time);
+}
+
+// Carries (t, y) to where the step's motion ends, records the supports there and the roller's tension inside the
+// step (where a unilateral roller lets the top go, the motion stops there instead), and checks the energy balance.
+// True when an event ends the flight (s.ev).
+bool Simulator::apply(Flight& f, double& t, State& y, const Trial& s) {
+    const RkStep<3>& step = f.step;
+    const bool on_breakpoint = s.ev == Event::none && t + s.h == s.stop;
+    double h = s.h;
+    switch (s.reach) {
+        case Reach::taylor:  // `step` stays the integrator's step (the roller's bracket below may read its extension)
+            f.dy = step.end_derivative();
+            for (std::size_t n = 0; n < 3; ++n) y[n] = step.y1[n] + s.landing_dh * f.dy[n];
+            h += s.landing_dh;
+            break;
+        case Reach::short_steps:  // likewise
+            y = s.landing;
+            f.dy = s.landing_dy;
+            h = s.event_time - t;
+            break;
+        case Reach::polished:
+            polish_event(s.ev, t, y, f.dy, s.event_time - t, f.event_step);
+            h = f.event_step.h;
+            y = f.event_step.y1;
+            f.dy = f.event_step.end_derivative();
+            break;
+        case Reach::step_end:
+            y = step.y1;
+            f.dy = step.end_derivative();
+            break;
+    }
+    const double roller_before = last_roller_;
+    const bool first_tension = !out_.supports.roller_tension_at;
+    t += h;
+    h_ = s.h_next;
+    f.starts_at_zero = false;
+    record_supports(t, y, f.dy[1]);
+    const bool lets_go = unilateral() && s.ev == Event::none;  // the top leaves the roller where it pulls
+    if (monitoring() && (first_tension || lets_go)) {
+        const std::optional<double> tension = roller_tension_in(f.step, roller_before, t);
+        if (tension && first_tension) out_.supports.roller_tension_at = *tension;
+        if (tension && lets_go) {  // there, not at the step's end
+            t = *tension;
+            y = step.at(*tension);
+        }
+    }
+    // A ground motion may jump at a breakpoint (a cosine pulse's end) and is left-continuous there: the next
+    // step's first stage must see the value after the jump. Where both motions are continuous (a record's
+    // interior samples: every breakpoint but its ends) the step's last stage is already that value, to rounding.
+    if (on_breakpoint && !(ah_.continuous_at(t) && av_.continuous_at(t)))
+        f.dy = integrator_.rhs(std::nextafter(t, opt_.t_end + 1.0), y);
+    out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(y[0]));
+    if (s.ev == Event::impact) y[0] = 0.0;
+    if (opt_.keep_samples || s.ev != Event::none) check_balance(t, y);  // events always; every step when sampling
+    if (opt_.output_dt <= 0.0) emit(t, y);
+    if (s.ev == Event::impact && f.symmetric) flights_.add(t - f.launch, f.launch_speed);
+    return s.ev != Event::none;
+}
+
+// The roller-tension guard across the step (the supports' reactions recorded at its start, roller_before, and at its
+// motion's end t): the moment it turned tensile, bracketed on the step's continuous extension up to t (past the
+// step's end, in a landing's last kShortLandingSpan, the landing's time t stands for it). Nothing when not across.
+std::optional<double> Simulator::roller_tension_in(RkStep<3>& step, double roller_before, double t) {
+    if (!crosses(direction(Event::roller_tension), -roller_before, -last_roller_)) return std::nullopt;
+    integrator_.make_dense(step);
+    const auto tension = [&](double tau) { return guard(Event::roller_tension, tau, on_extension(step, tau)); };
+    const Looks looks{step.t0, step.h, 1, false, std::min(t, step.t0 + step.h)};
+    double at = t;
+    const StepGuard g{direction(Event::roller_tension), -roller_before, tension(looks.end), tension};
+    scan_and_bracket(g, looks, opt_.event_time_tol, [&](Root r) {
+        at = r.t;
+        return false;
+    });
+    return at;
 }
 
 SimulationResult Simulator::run(InitialState init) {
@@ -715,47 +883,56 @@ SimulationResult Simulator::run(InitialState init) {
             if (opt_.output_dt <= 0.0) emit(t, y);
         }
         const Event ev = rocking_phase(t, y);
-        if (ev == Event::collapse) {
+        if (ev == Event::overturning) {
             out_.overturned = true;
             out_.t_overturn = t;
             break;
         }
         if (ev != Event::impact) break;  // end time reached
-
-        const double v_before = y[1];
-        const double m0 = rest_terms_.M;
-        if (e_ <= 0.0) {  // a stocky wall whose impact stops it dead (Eq. 19 can be <= 0)
-            out_.impacts.push_back({t, v_before, 0.0});
-            dissipated_ += 0.5 * m0 * v_before * v_before;
-            out_.rest_times.push_back(t);
-            rocking = false;
-            continue;
-        }
-        const double v_after = e_ * v_before;
-        out_.impacts.push_back({t, v_before, v_after});
-        dissipated_ += 0.5 * m0 * (v_before * v_before - v_after * v_after);
-        side_ = -side_;
-        y[1] = v_after;
-        // Would the next flight be negligible while the ground cannot tip the wall? Then sum the geometric tail
-        // of impacts (flight times 2|v| e^n / |a|) in closed form and come to rest.
-        const double a_out = side_ * model_.acceleration(side_, 0.0, v_after, ah_(t), av_(t));
-        if (a_out < 0.0 && v_after * v_after / (2.0 * -a_out) < opt_.rest_amplitude * alpha_) {
-            const double tail = 2.0 * std::abs(v_after) / (-a_out * (1.0 - e_));
-            dissipated_ += 0.5 * m0 * v_after * v_after;
-            y[1] = 0.0;
-            // The output grid during the tail: the wall is within rest_amplitude of rest, shown at rest.
-            const double t_rest = std::min(t + tail, opt_.t_end);
-            emit_grid(t, t_rest, [&](double) { return y; });
-            t = t_rest;
-            out_.rest_times.push_back(t);
-            check_balance(t, y);
-            if (opt_.output_dt <= 0.0) emit(t, y);
-            rocking = false;
-        }
+        rocking = impact(t, y);
     }
     check_balance(t, y);
     out_.t_final = t;
     return out_;
+}
+
+// The impact reset at (t, y), theta1 = 0: Eq. (19)'s map theta1'+ = e theta1'- onto the other side (or the impact
+// law's e), the kinetic energy lost dissipated. Then the rest guard: when it is across, the wall settles. Returns
+// whether the wall rocks on.
+bool Simulator::impact(double& t, State& y) {
+    const double v_before = y[1];
+    const double m0 = rest_terms_.M;
+    if (e_ <= 0.0) {  // an impact ratio of 0 (make_vssw refuses walls whose Eq. 19 gives e <= 0): stops dead
+        out_.impacts.push_back({t, v_before, 0.0});
+        dissipated_ += 0.5 * m0 * v_before * v_before;
+        out_.rest_times.push_back(t);
+        return false;
+    }
+    const double v_after = e_ * v_before;
+    out_.impacts.push_back({t, v_before, v_after});
+    dissipated_ += 0.5 * m0 * (v_before * v_before - v_after * v_after);
+    side_ = -side_;
+    y[1] = v_after;
+    if (!(guard(Event::rest, t, y) > 0.0)) return true;
+    settle(t, y);
+    return false;
+}
+
+// The rest reset after an impact at (t, y): the next flight would be negligible while the ground cannot tip the wall,
+// so the remaining impacts, a geometric series of flights 2|v| e^n / |a|, are summed in closed form and the wall comes
+// to rest at their end.
+void Simulator::settle(double& t, State& y) {
+    const double v_after = y[1];
+    const double tail = 2.0 * std::abs(v_after) / (-restoring(t, v_after) * (1.0 - e_));
+    dissipated_ += 0.5 * rest_terms_.M * v_after * v_after;
+    y[1] = 0.0;
+    // The output grid during the tail: the wall is within rest_amplitude of rest, shown at rest.
+    const double t_rest = std::min(t + tail, opt_.t_end);
+    emit_grid(t, t_rest, [&](double) { return y; });
+    t = t_rest;
+    out_.rest_times.push_back(t);
+    check_balance(t, y);
+    if (opt_.output_dt <= 0.0) emit(t, y);
 }
 
 }  // namespace

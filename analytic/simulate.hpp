@@ -13,9 +13,9 @@
 //  - After an impact whose next flight would rise less than rest_amplitude * alpha while the ground cannot tip the
 //    wall, the remaining impacts (a geometric series) are summed in closed form: the wall stops at a finite time.
 //  - |theta1| reaching the model's collapse angle is overturning; the run ends there.
+// These events are one table of guards with their resets (simulate.cpp), located by one routine (bracket.hpp).
 // Energy bookkeeping: kinetic + weights' potential - work(N) - work(ground) + dissipated stays at its initial value;
 // its largest relative drift (over V_r) is reported.
-#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -24,6 +24,7 @@
 #include "dop853.hpp"
 #include "ground_motion.hpp"
 #include "model.hpp"
+#include "result_parts.hpp"
 
 namespace vssw {
 
@@ -77,26 +78,6 @@ struct Sample {
 
 struct Impact {
     double t, theta_dot_before, theta_dot_after;
-};
-
-struct TurningPoint {
-    double t, theta;  // theta1' = 0 while rocking (the release is the first when starting from rest)
-};
-
-// What the supports had to do along a VSSW run, from Newton-Euler on each block along the motion
-// (analytic/two_block.hpp): the roller's reaction (N per metre of wall, positive when it pushes), the friction
-// coefficient the base and the hinge need not to slide (largest |T|/N), and whether a contact would have to pull.
-// Empty (computed == false) for a parapet.
-struct SupportDemand {
-    bool computed = false;
-    double min_roller_reaction = std::numeric_limits<double>::infinity();  // [N/m] over the one-DOF phases
-    double t_min_roller_reaction = 0.0;
-    std::optional<double> roller_tension_at;  // first time the bilateral roller would have to pull
-    double base_friction = 0.0, hinge_friction = 0.0;  // largest |T|/N while the contact pushes
-    std::optional<double> base_pulls_at, hinge_pulls_at;  // first time the contact would have to pull
-    // A unilateral roller: how often the top left it, and for how long in all [s].
-    int roller_departures = 0;
-    double time_off_roller = 0.0;
 };
 
 struct SimulationResult {

@@ -2,11 +2,11 @@
 // What the supports must do along a one-DOF VSSW run: each state of the run is embedded in the two blocks (theta2 and
 // its rates from the model's own kinematics, Eq. 2 or Eq. 3) and Newton-Euler on each block (analytic/two_block.hpp)
 // gives the roller's reaction, the base and hinge forces and the friction they need. The monitor records the extremes
-// into SupportDemand (simulate.hpp); for a parapet it is inactive.
+// into SupportDemand (result_parts.hpp); for a parapet it is inactive.
 #include <optional>
 
 #include "model.hpp"
-#include "simulate.hpp"
+#include "result_parts.hpp"
 #include "two_block.hpp"
 
 namespace vssw {

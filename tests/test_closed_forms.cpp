@@ -1,5 +1,6 @@
 // Closed forms against each other, against their stated limits, and against the mechanics they summarise
-// (angular momentum from the velocity fields of Eq. 5, potential and kinetic energy of Eqs. 6-7).
+// (angular momentum from the velocity fields of Eq. 5, potential and kinetic energy of Eqs. 6-7; Eqs. 4 and 7 against
+// the two blocks of two_block.hpp).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -7,6 +8,7 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/model.hpp"
+#include "analytic/two_block.hpp"
 
 namespace vssw {
 namespace {
@@ -184,6 +186,45 @@ TEST(ClosedForms, Eq26IsWhereTheRollerCanNoLongerHoldTheTop) {
     // At or below mid-height it does not exist (sin alpha1 >= sin alpha2).
     EXPECT_FALSE(eq26_limit_rotation(make_vssw(4.0, 0.4, 0.5)).has_value());
     EXPECT_FALSE(eq26_limit_rotation(make_vssw(4.0, 0.4, 0.46)).has_value());
+}
+
+// Eq. (4) is the rate of Eq. (2), theta2' / theta1' on the exact mechanism (as a magnitude: theta2 turns against
+// theta1). Checked against the tangent of the two blocks' mechanism, t with J_g t = 0 for the top corner's constraint
+// on the roller (two_block.hpp), and against a central difference of Eq. (2).
+TEST(ClosedForms, Eq4IsTheUpperBodysRateOnTheRoller) {
+    for (double r : {0.46, 0.5, 0.7, 0.8}) {
+        const VsswGeometry w = make_vssw(4.0, 0.4, r);
+        const TwoBlockWall wall(w, 1);
+        for (double f : {0.0, 0.3, 0.8, 1.2}) {
+            const double theta1 = f * w.alpha1;
+            const double theta2 = *eq2_theta2_exact(w, theta1);
+            const double rate = -wall.mechanism_tangent(wall.on_roller(theta1), Guide::roller)(1);
+            EXPECT_NEAR(eq4_velocity_ratio(w, theta1, theta2), rate, kRoundoff * rate);
+            if (theta1 == 0.0) continue;  // Eq. (2) holds for theta1 of either sign; its difference is one-sided there
+            constexpr double h = 1e-5;
+            const double slope = (*eq2_theta2_exact(w, theta1 + h) - *eq2_theta2_exact(w, theta1 - h)) / (2 * h);
+            EXPECT_NEAR(eq4_velocity_ratio(w, theta1, theta2), -slope, kFiniteDifference * rate);
+        }
+    }
+}
+
+// Eq. (7) is the two blocks' kinetic energy on the exact mechanism: checked against T = 1/2 q'^T M q' of the two
+// blocks (two_block.hpp: from each centroid's velocity and each block's rotation, not from Eq. 5), q' along the
+// mechanism's tangent. With Eq. (3) in it, it is 1/2 R1^2 C_A theta1'^2 (Eq. 11a).
+TEST(ClosedForms, Eq7IsTheTwoBlocksKineticEnergy) {
+    constexpr double theta1_dot = 0.37;  // [rad/s]
+    for (double r : {0.46, 0.5, 0.7, 0.8}) {
+        const VsswGeometry w = make_vssw(4.0, 0.4, r);
+        const TwoBlockWall wall(w, 1);
+        for (double f : {0.0, 0.3, 0.8, 1.2}) {
+            const double theta1 = f * w.alpha1;
+            const Vec2 q = wall.on_roller(theta1);
+            const double blocks = wall.kinetic(q, wall.mechanism_tangent(q, Guide::roller) * theta1_dot);
+            EXPECT_NEAR(eq7_kinetic(w, theta1, *eq2_theta2_exact(w, theta1), theta1_dot), blocks, kRoundoff * blocks);
+            const double eq11a = 0.5 * w.R1 * w.R1 * eq11_coefficients(w, theta1).C_A * theta1_dot * theta1_dot;
+            EXPECT_NEAR(eq7_kinetic(w, theta1, eq3_theta2_linear(w, theta1), theta1_dot), eq11a, kRoundoff * eq11a);
+        }
+    }
 }
 
 TEST(ClosedForms, Eq2AndEq3AgreeForSmallRotationsAndExactlyAtMidHeight) {
