@@ -7,6 +7,7 @@
 
 #include "multibody/engine.hpp"
 #include "multibody/registry.hpp"
+#include "study/mpi.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (apps/CMakeLists.txt)
 
 namespace vssw::cli {
@@ -33,7 +34,12 @@ std::string version_text() {
     const std::vector<std::string> missing = multibody::missing_engines();
     if (!missing.empty())
         text += fmt::format("not in this build (not found at configure time): {}\n", fmt::join(missing, ", "));
-    // Where the plugins were found (multibody/plugin_loader.hpp).
+    // Where the plugins were found (multibody/plugin_loader.hpp); MPI's is only looked for, not opened (that would
+    // load libmpi).
+    if (study::mpi_built()) {
+        const std::string mpi = study::mpi_module_path();
+        plugin_lines.push_back(fmt::format("  {:<14} {}\n", "MPI", mpi.empty() ? "vssw_mpi.so not found" : mpi));
+    }
     if (!plugin_lines.empty()) {
         text += "plugins (each opened only when a run needs it):\n";
         for (const std::string& line : plugin_lines) text += line;

@@ -36,9 +36,9 @@ std::string mapped_files() {
     return text.str();
 }
 
-// The engine libraries, by the names of their shared objects.
+// The engine libraries and MPI, by the names of their shared objects.
 const std::vector<std::string> kEngineLibraries = {"libBulletDynamics", "libode.so", "libSimTKsimbody", "libsiconos_kernel",
-                                                   "vssw_engine_"};
+                                                   "libmpi", "vssw_engine_", "vssw_mpi"};
 
 // The fixture plugins (plugin_fixture.cpp), opened from their folder through VSSW_PLUGIN_PATH.
 class FixturePlugin : public ::testing::Test {
@@ -75,7 +75,7 @@ TEST(Plugins, ListingTheEnginesOpensNoPlugin) {
     EXPECT_FALSE(contains(mapped_files(), "vssw_engine_"));
 }
 
-// The purpose of the plugins: a command that runs no engine loads no engine library.
+// The purpose of the plugins: a command that runs no engine loads no engine library, nor MPI.
 TEST(Plugins, AnAnalyticCommandLoadsNoEngineLibraryAndAnEngineOnlyItsOwn) {
     if (contains(mapped_files(), "vssw_engine_")) GTEST_SKIP() << "a plugin is open already (run this test alone)";
     const auto free = run_cli({"free", "--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--theta0", "0.5"});
@@ -90,7 +90,7 @@ TEST(Plugins, AnAnalyticCommandLoadsNoEngineLibraryAndAnEngineOnlyItsOwn) {
     maps = mapped_files();
     EXPECT_TRUE(contains(maps, "vssw_engine_ode.so"));
     EXPECT_TRUE(contains(maps, "libode.so"));
-    for (const char* library : {"libBulletDynamics", "libSimTKsimbody", "libsiconos_kernel"})
+    for (const char* library : {"libBulletDynamics", "libSimTKsimbody", "libsiconos_kernel", "libmpi"})
         EXPECT_FALSE(contains(maps, library)) << library;
 }
 
