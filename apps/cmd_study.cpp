@@ -154,20 +154,13 @@ void run_merge(const StudyOptions& o, std::ostream& out, std::ostream& err) {
 
 void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& err) {
     // Under mpirun every process reads the file and builds the grid; they agree that all could before any runs.
-    std::optional<study::MpiSession> mpi;
-    if (study::launched_by_mpirun()) {
-        if (!study::mpi_built())
-            throw InputError("started by mpirun, but this vssw was built without MPI (install libopenmpi-dev and "
-                             "build again): each process would run the whole study");
-        mpi.emplace();
-    }
+    const std::unique_ptr<study::MpiSession> mpi = study::start_mpi_if_launched();
     const bool leader = !mpi || mpi->rank() == 0;
 
     std::optional<study::Grid> grid;
     study::StudyRunOptions run;
     study::FolderLock lock;  // rank 0's, held until the study's folder is replaced
-    std::string refusal;
-    try {
+    const auto prepare = [&] {
         if (o.file.empty()) throw InputError("a study file is required (vssw study FILE --out DIR)");
         if (o.out.empty()) throw InputError("--out DIR is required");
         run.threads = parse_threads(o.threads_text);
@@ -190,26 +183,19 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
             study::check_inputs_not_outputs(o.out, study::OutKind::study, study_inputs(o.file, *grid));
             lock = study::prepare_study_dir(*grid, o.out, run);
         }
-    } catch (const InputError& e) {
-        refusal = e.what();
+    };
+    try {
+        study::prepare_on_every_process(mpi.get(), prepare, err);
+    } catch (const study::RefusedOnEveryProcess&) {
+        throw QuietExit(kExitBadInput);  // the reason is printed already (study/mpi.hpp)
     }
-    if (mpi && !mpi->all_ok(refusal.empty())) {
-        if (!refusal.empty() && leader) throw InputError(refusal);
-        if (!refusal.empty()) {
-            err << fmt::format("vssw: error on MPI process {}: {}\n", mpi->rank(), refusal);
-            throw QuietExit(kExitBadInput);
-        }
-        if (leader) throw InputError("another MPI process refused the study (its message is above)");
-        throw QuietExit(kExitBadInput);
-    }
-    if (!refusal.empty()) throw InputError(refusal);
     for (const std::string& s : grid->skipped_runs())
         if (leader) err << "vssw: note: " << s << '\n';
 
     Progress progress(err);
     if (leader && progress.on())
         run.progress = [&progress](long done, long total, const std::string& what) { progress.show(done, total, what); };
-    run.mpi = mpi ? &*mpi : nullptr;
+    run.mpi = mpi.get();
     // The results are written into a staging folder that replaces --out whole once everything is written; until
     // then --out keeps the journal (a run killed before the swap is resumed from it) and any older results as they
     // were (io/folder_swap.hpp).

@@ -1,11 +1,13 @@
 #pragma once
-// `vssw --version`: the program's version and commit, and each backend compiled in with its library's version.
+// `vssw --version`: the program's version and commit, each backend of this build with its library's version, and
+// where each plugin was found.
 #include <string>
 
 namespace vssw::cli {
 
-// "vssw 0.1.0 (commit 2389e4a)", then one line per backend ("  bullet  Bullet 3.24 (double precision)"), then the
-// backends this build left out, if any.
+// "vssw 0.1.0 (commit 2389e4a)", then one line per backend ("  bullet  Bullet 3.24 (double precision)"; for an
+// engine whose plugin cannot be opened, why), then the backends this build left out, if any, then each plugin's path
+// (the MPI module's too, found but not opened).
 std::string version_text();
 
 }  // namespace vssw::cli

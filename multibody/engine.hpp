@@ -163,10 +163,13 @@ public:
     virtual double cost_per_simulated_second() const = 0;
 };
 
-// Backends compiled into this build ("analytic" always; "bullet", ... when found at configure time).
+// Backends of this build ("analytic" always, built in; "bullet", ... when found at configure time, each a plugin built
+// with the program: engine_plugin.hpp). Known from a list fixed at build time: naming the engines opens no plugin.
 std::vector<std::string> available_engines();
-// Throws InputError naming the engine and the available ones. Every engine library's runs are isolated: each in a
-// child process with a CPU budget (isolated_engine.hpp), so that a library that aborts, crashes or hangs fails one run.
+// Opens the engine's plugin the first time one of its engines is made (registry.hpp). Throws InputError naming the
+// engine and the available ones, or naming the engine, its plugin and where it was looked for when the plugin cannot
+// be found, opened or is of another build. Every engine library's runs are isolated: each in a child process with a
+// CPU budget (isolated_engine.hpp), so that a library that aborts, crashes or hangs fails one run.
 std::unique_ptr<Engine> make_engine(const std::string& name);
 // The adapter itself, its runs in the caller's process: for callers that time a run's CPU inside the process (the
 // work-precision sweep, the benchmarks) or isolate runs themselves (vssw stress). A library's abort ends the caller.
@@ -174,7 +177,8 @@ std::unique_ptr<Engine> make_engine_in_process(const std::string& name);
 // The backends this project has adapters for that this build left out (not found at configure time), in the order of
 // available_engines(); empty when every one is compiled in.
 std::vector<std::string> missing_engines();
-// Engine::display_name() of a backend compiled in; the name itself otherwise (a report read back without the engine).
+// Engine::display_name() of a backend of this build, from the build-time list (no plugin opened); the name itself
+// otherwise (a report read back without the engine).
 std::string engine_display_name(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
 // except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold

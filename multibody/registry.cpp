@@ -5,28 +5,24 @@
 #include "analytic/error.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/engine_plugin.hpp"
 #include "multibody/isolated_engine.hpp"
-#ifdef VSSW_HAVE_BULLET
-#include "multibody/bullet/bullet_engine.hpp"
-#endif
-#ifdef VSSW_HAVE_ODE
-#include "multibody/ode/ode_engine.hpp"
-#endif
-#ifdef VSSW_HAVE_SIMBODY
-#include "multibody/simbody/simbody_engine.hpp"
-#endif
-#ifdef VSSW_HAVE_SICONOS
-#include "multibody/siconos/siconos_engine.hpp"
-#endif
+#include "multibody/plugin_loader.hpp"
+#include "multibody/registry.hpp"
 
 namespace vssw::multibody {
 
 namespace {
 
-// Every backend this code knows, in listing order, and whether this build has it: available_engines() and
-// missing_engines() both read this one list.
+// Every backend this code knows, in listing order: its name, the name a report prints, the plugin that holds its
+// adapter (vssw_engine_<plugin>.so; none for the analytic model, built in) and whether this build has it (the plugins
+// multibody/CMakeLists.txt builds). available_engines(), missing_engines() and engine_display_name() read this list
+// alone, so that naming the engines loads no plugin; the display names are the adapters' own (the test
+// Plugins.DisplayNamesAreTheAdapters' holds them).
 struct KnownEngine {
     const char* name;
+    const char* display_name;
+    const char* plugin;
     bool built;
 };
 #ifdef VSSW_HAVE_BULLET
@@ -50,12 +46,12 @@ constexpr bool kHaveSiconos = true;
 constexpr bool kHaveSiconos = false;
 #endif
 constexpr KnownEngine kKnownEngines[] = {
-    {"analytic", true},
-    {"bullet", kHaveBullet},
-    {"ode", kHaveOde},
-    {"simbody", kHaveSimbody},
-    {"simbody-rigid", kHaveSimbody},
-    {"siconos", kHaveSiconos},
+    {"analytic", "analytic", nullptr, true},
+    {"bullet", "Bullet", "bullet", kHaveBullet},
+    {"ode", "ODE", "ode", kHaveOde},
+    {"simbody", "Simbody", "simbody", kHaveSimbody},
+    {"simbody-rigid", "simbody-rigid", "simbody", kHaveSimbody},
+    {"siconos", "Siconos", "siconos", kHaveSiconos},
 };
 
 std::vector<std::string> known_engines(bool built) {
@@ -63,6 +59,36 @@ std::vector<std::string> known_engines(bool built) {
     for (const KnownEngine& e : kKnownEngines)
         if (e.built == built) names.push_back(e.name);
     return names;
+}
+
+const KnownEngine* built_engine(const std::string& name) {
+    for (const KnownEngine& e : kKnownEngines)
+        if (e.built && name == e.name) return &e;
+    return nullptr;
+}
+
+std::string plugin_file_of(const KnownEngine& engine) {
+    return plugin_file(std::string("vssw_engine_") + engine.plugin);
+}
+
+const KnownEngine& require_built(const std::string& name) {
+    const KnownEngine* known = built_engine(name);
+    if (!known)
+        throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
+                                     fmt::join(available_engines(), ", ")));
+    return *known;
+}
+
+// The plugin holding an engine, checked to be of this build (open_plugin opens each once per process). Its path in
+// `path` when asked.
+const EnginePlugin& engine_plugin(const KnownEngine& engine, std::string* path = nullptr) {
+    const std::string what = fmt::format("engine '{}'", engine.name);
+    const OpenedPlugin plugin = open_plugin(plugin_file_of(engine), kEnginePluginEntry, what);
+    const auto entry = reinterpret_cast<const EnginePlugin* (*)()>(plugin.entry);
+    const EnginePlugin* description = entry();
+    check_plugin_build(plugin, what, description->abi, kEnginePluginAbi, description->build_id);
+    if (path) *path = plugin.path;
+    return *description;
 }
 
 }  // namespace
@@ -79,9 +105,21 @@ std::vector<std::string> default_compared_engines() {
 }
 
 std::string engine_display_name(const std::string& name) {
-    const std::vector<std::string> known = available_engines();
-    if (std::find(known.begin(), known.end(), name) == known.end()) return name;
-    return make_engine(name)->display_name();
+    const KnownEngine* e = built_engine(name);
+    return e ? e->display_name : name;
+}
+
+std::string engine_plugin_file(const std::string& name) {
+    const KnownEngine& known = require_built(name);
+    return known.plugin ? plugin_file_of(known) : "";
+}
+
+std::string engine_plugin_path(const std::string& name) {
+    const KnownEngine& known = require_built(name);
+    if (!known.plugin) return "";
+    std::string path;
+    (void)engine_plugin(known, &path);
+    return path;
 }
 
 std::unique_ptr<Engine> make_engine(const std::string& name) {
@@ -91,22 +129,12 @@ std::unique_ptr<Engine> make_engine(const std::string& name) {
 }
 
 std::unique_ptr<Engine> make_engine_in_process(const std::string& name) {
-    if (name == "analytic") return std::make_unique<AnalyticEngine>();
-#ifdef VSSW_HAVE_BULLET
-    if (name == "bullet") return make_bullet_engine();
-#endif
-#ifdef VSSW_HAVE_ODE
-    if (name == "ode") return make_ode_engine();
-#endif
-#ifdef VSSW_HAVE_SIMBODY
-    if (name == "simbody") return make_simbody_engine();
-    if (name == "simbody-rigid") return make_simbody_rigid_engine();
-#endif
-#ifdef VSSW_HAVE_SICONOS
-    if (name == "siconos") return make_siconos_engine();
-#endif
-    throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
-                                 fmt::join(available_engines(), ", ")));
+    const KnownEngine& known = require_built(name);
+    if (!known.plugin) return std::make_unique<AnalyticEngine>();
+    const EnginePlugin& plugin = engine_plugin(known);
+    for (std::size_t i = 0; i < plugin.engine_count; ++i)
+        if (name == plugin.engines[i].name) return plugin.engines[i].make();
+    throw InputError(fmt::format("engine '{}': its plugin {} does not provide it", name, plugin_file_of(known)));
 }
 
 }  // namespace vssw::multibody

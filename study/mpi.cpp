@@ -1,19 +1,20 @@
 #include "study/mpi.hpp"
 
-#include <cstdio>
-#include <cstdlib>
-#include <exception>
-#include <stdexcept>
-
-#ifdef VSSW_HAVE_MPI
-#include <mpi.h>
-
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <deque>
+#include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
-#endif
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/plugin_loader.hpp"
+#include "study/mpi_module.hpp"
 
 namespace vssw::study {
 
@@ -24,20 +25,16 @@ bool launched_by_mpirun() {
     return false;
 }
 
-#ifndef VSSW_HAVE_MPI
-
-bool mpi_built() { return false; }
-MpiSession::MpiSession() = default;
-MpiSession::~MpiSession() = default;
-bool MpiSession::all_ok(bool ok) const { return ok; }
-void MpiSession::share_done(std::set<std::pair<int, std::size_t>>&, bool&) const {}
-void MpiSession::abort(const std::string& why) const { throw std::logic_error("MpiSession::abort without MPI: " + why); }
-void run_tasks_mpi(const MpiSession&, const std::vector<compare::PoolTask>&, const std::function<std::string(std::size_t)>&,
-                   const std::function<void(const std::string&)>&) {
-    throw std::logic_error("run_tasks_mpi: this build has no MPI");
-}
-
+// VSSW_HAVE_MPI: the module is built (study/CMakeLists.txt).
+#ifdef VSSW_HAVE_MPI
+bool mpi_built() { return true; }
 #else
+bool mpi_built() { return false; }
+#endif
+
+std::string mpi_module_path() {
+    return mpi_built() ? multibody::find_plugin(multibody::plugin_file(kMpiModuleStem)) : "";
+}
 
 namespace {
 
@@ -51,35 +48,27 @@ constexpr int kRequestsInFlight = 2;
 // its own worker thread (and on a small machine, other processes) need.
 constexpr std::chrono::microseconds kPollPause{200};
 
-void send_text(const std::string& text, int tag) {
-    MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, tag, MPI_COMM_WORLD);
+void send_text(const MpiModule& mpi, const std::string& text, int tag) {
+    mpi.send_text(text.data(), static_cast<int>(text.size()), 0, tag);
 }
 
-std::string receive_text(const MPI_Status& probed) {
-    int count = 0;
-    MPI_Get_count(&probed, MPI_CHAR, &count);
-    std::string text(static_cast<std::size_t>(count), '\0');
-    MPI_Recv(text.data(), count, MPI_CHAR, probed.MPI_SOURCE, probed.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    return text;
-}
-
-void worker(const std::function<std::string(std::size_t)>& run) {
-    for (int i = 0; i < kRequestsInFlight; ++i) send_text("", kRequest);
+void worker(const MpiModule& mpi, const std::function<std::string(std::size_t)>& run) {
+    for (int i = 0; i < kRequestsInFlight; ++i) send_text(mpi, "", kRequest);
     int stops = 0;
     while (stops < kRequestsInFlight) {
-        long task = -1;
-        MPI_Recv(&task, 1, MPI_LONG, 0, kTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        const long task = mpi.receive_long(0, kTask);
         if (task < 0) {
             ++stops;
             continue;
         }
-        send_text(run(static_cast<std::size_t>(task)), kResult);
-        send_text("", kRequest);
+        send_text(mpi, run(static_cast<std::size_t>(task)), kResult);
+        send_text(mpi, "", kRequest);
     }
 }
 
 void leader(const MpiSession& session, const std::vector<compare::PoolTask>& tasks,
             const std::function<std::string(std::size_t)>& run, const std::function<void(const std::string&)>& sink) {
+    const MpiModule& mpi = session.module();
     std::deque<std::size_t> queue(tasks.size());
     for (std::size_t i = 0; i < queue.size(); ++i) queue[i] = i;
     std::stable_sort(queue.begin(), queue.end(), [&](std::size_t a, std::size_t b) { return tasks[a].cost > tasks[b].cost; });
@@ -122,45 +111,50 @@ void leader(const MpiSession& session, const std::vector<compare::PoolTask>& tas
     } join_on_exit{local, mutex, queue};
     int stops_left = (session.size() - 1) * kRequestsInFlight;
     while (stops_left > 0) {
-        int flag = 0;
-        MPI_Status status;
-        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
-        if (!flag) {
+        int from = 0, tag = 0, size = 0;
+        if (!mpi.poll(&from, &tag, &size)) {
             std::this_thread::sleep_for(kPollPause);
             continue;
         }
-        const std::string text = receive_text(status);
-        if (status.MPI_TAG == kResult) {
+        std::string text(static_cast<std::size_t>(size), '\0');
+        mpi.receive_text(text.data(), size, from, tag);
+        if (tag == kResult) {
             const std::lock_guard<std::mutex> lock(mutex);
             sink(text);
             continue;
         }
         const long t = take();
-        MPI_Send(&t, 1, MPI_LONG, status.MPI_SOURCE, kTask, MPI_COMM_WORLD);
+        mpi.send_long(t, from, kTask);
         if (t < 0) --stops_left;
     }
     local.join();
     if (local_error) std::rethrow_exception(local_error);
 }
 
+// The module, opened once per process and checked to be of this build.
+const MpiModule& open_module() {
+    const std::string what = "MPI";
+    const multibody::OpenedPlugin plugin =
+        multibody::open_plugin(multibody::plugin_file(kMpiModuleStem), kMpiModuleEntry, what);
+    const auto entry = reinterpret_cast<const MpiModule* (*)()>(plugin.entry);
+    const MpiModule* module = entry();
+    multibody::check_plugin_build(plugin, what, module->abi, kMpiModuleAbi, module->build_id);
+    return *module;
+}
+
 }  // namespace
 
-bool mpi_built() { return true; }
-
 MpiSession::MpiSession() {
-    int provided = 0;
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    if (!mpi_built())
+        throw InputError("started by mpirun, but this vssw was built without MPI (install libopenmpi-dev and build "
+                         "again): each process would run the whole study");
+    mpi_ = &open_module();
+    mpi_->start(&rank_, &size_);
 }
 
-MpiSession::~MpiSession() { MPI_Finalize(); }
+MpiSession::~MpiSession() { mpi_->finish(); }
 
-bool MpiSession::all_ok(bool ok) const {
-    int mine = ok ? 1 : 0, all = 0;
-    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    return all == 1;
-}
+bool MpiSession::all_ok(bool ok) const { return mpi_->all_min(ok ? 1 : 0) == 1; }
 
 void MpiSession::share_done(std::set<std::pair<int, std::size_t>>& done, bool& finished) const {
     // As a flat list: finished, then case id and run per task.
@@ -173,9 +167,9 @@ void MpiSession::share_done(std::set<std::pair<int, std::size_t>>& done, bool& f
         }
     }
     long n = static_cast<long>(flat.size());
-    MPI_Bcast(&n, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+    mpi_->broadcast_longs(&n, 1);
     flat.resize(static_cast<std::size_t>(n));
-    MPI_Bcast(flat.data(), static_cast<int>(n), MPI_LONG, 0, MPI_COMM_WORLD);
+    mpi_->broadcast_longs(flat.data(), static_cast<int>(n));
     if (rank_ == 0) return;
     finished = flat.at(0) == 1;
     for (std::size_t i = 1; i + 1 < flat.size(); i += 2)
@@ -184,8 +178,32 @@ void MpiSession::share_done(std::set<std::pair<int, std::size_t>>& done, bool& f
 
 void MpiSession::abort(const std::string& why) const {
     std::fprintf(stderr, "vssw: error on MPI process %d: %s\n", rank_, why.c_str());
-    MPI_Abort(MPI_COMM_WORLD, 3);
+    mpi_->abort_all(3);
     std::abort();  // MPI_Abort does not return
+}
+
+std::unique_ptr<MpiSession> start_mpi_if_launched() {
+    if (!launched_by_mpirun()) return nullptr;
+    return std::make_unique<MpiSession>();
+}
+
+void prepare_on_every_process(const MpiSession* mpi, const std::function<void()>& prepare, std::ostream& err) {
+    if (!mpi) {
+        prepare();
+        return;
+    }
+    std::string refusal;
+    try {
+        prepare();
+    } catch (const InputError& e) {
+        refusal = e.what();
+    }
+    if (mpi->all_ok(refusal.empty())) return;
+    const bool leader = mpi->rank() == 0;
+    if (leader) throw InputError(refusal.empty() ? "another MPI process refused the study (its message is above)"
+                                                 : refusal);
+    if (!refusal.empty()) err << fmt::format("vssw: error on MPI process {}: {}\n", mpi->rank(), refusal);
+    throw RefusedOnEveryProcess();
 }
 
 void run_tasks_mpi(const MpiSession& session, const std::vector<compare::PoolTask>& tasks,
@@ -193,14 +211,12 @@ void run_tasks_mpi(const MpiSession& session, const std::vector<compare::PoolTas
                    const std::function<void(const std::string&)>& sink) {
     try {
         if (session.rank() == 0) leader(session, tasks, run, sink);
-        else worker(run);
+        else worker(session.module(), run);
     } catch (const std::exception& e) {
         session.abort(e.what());  // the others would wait for this process's messages for ever
     } catch (...) {
         session.abort("an unknown failure");
     }
 }
-
-#endif
 
 }  // namespace vssw::study

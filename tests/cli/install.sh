@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `cmake --install` staged into a temporary folder (DESTDIR), then the installed program run from there: it must find
-# the installed data, not the source tree's (README "Install"). Usage: install.sh BUILD_DIR
+# the installed data and plugins, not the source tree's or the build tree's (README "Install").
+# Usage: install.sh BUILD_DIR
 set -euo pipefail
 build="$1"
 stage="$(mktemp -d)"
@@ -35,4 +36,23 @@ if out="$("$vssw" check --bounds "$prefix/share/vssw/bounds/ci.toml" 2>&1)"; the
   echo "install.sh: check ran on a broken installed suite (it read another one)" >&2; exit 1
 fi
 echo "$out" | grep -q "$suite" || { echo "install.sh: the installed vssw did not read the installed suite: $out" >&2; exit 1; }
-echo "install.sh: installed vssw ran on its installed data"
+# The installed plugins (docs/architecture.md, "Plugins"): found beside the installed program, named by --version; a
+# missing one is bad input (exit 2) naming the engine and the installed folder; VSSW_PLUGIN_PATH is searched first.
+if "$vssw" --version | grep -q '^  ode '; then
+  plugin="$(find "$prefix" -name vssw_engine_ode.so)"
+  [ -n "$plugin" ] || { echo "install.sh: vssw_engine_ode.so was not installed" >&2; exit 1; }
+  "$vssw" --version | grep -q "$plugin" || { echo "install.sh: --version does not name $plugin" >&2; exit 1; }
+  wall=(--height 4 --thickness 0.4 --hinge 0.7)
+  "$vssw" compare --engine ode "${wall[@]}" >/dev/null
+  mkdir "$stage/moved-plugins"
+  mv "$plugin" "$stage/moved-plugins/"
+  rc=0
+  out="$("$vssw" compare --engine ode "${wall[@]}" 2>&1)" || rc=$?
+  [ "$rc" = 2 ] || { echo "install.sh: a missing plugin gave exit $rc, not 2: $out" >&2; exit 1; }
+  echo "$out" | grep -q "engine 'ode'.*vssw_engine_ode.so.*$(dirname "$plugin")" ||
+    { echo "install.sh: a missing plugin's message does not name the engine and the folder: $out" >&2; exit 1; }
+  VSSW_PLUGIN_PATH="$stage/moved-plugins" "$vssw" compare --engine ode "${wall[@]}" >/dev/null ||
+    { echo "install.sh: the plugin was not found through VSSW_PLUGIN_PATH" >&2; exit 1; }
+  mv "$stage/moved-plugins/vssw_engine_ode.so" "$plugin"
+fi
+echo "install.sh: installed vssw ran on its installed data and plugins"

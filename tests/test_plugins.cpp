@@ -1,0 +1,212 @@
+// The engines as plugins (multibody/plugin_loader.hpp, multibody/engine_plugin.hpp): found without set-up from the
+// build tree, opened only when a run needs one, refused with a clear message when missing or of another build, and
+// their exceptions caught by type across the module boundary.
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "analytic/error.hpp"
+#include "analytic/wall.hpp"
+#include "multibody/engine.hpp"
+#include "multibody/engine_plugin.hpp"
+#include "multibody/isolated_engine.hpp"
+#include "multibody/plugin_loader.hpp"
+#include "multibody/registry.hpp"
+#include "tests/cli_runner.hpp"
+#include "tests/engine_available.hpp"
+#include "tests/temp_files.hpp"
+
+namespace {
+
+using namespace vssw;
+using multibody::EngineFailure;
+using vssw::testing::run_cli;
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::string mapped_files() {
+    std::ifstream maps("/proc/self/maps");
+    std::stringstream text;
+    text << maps.rdbuf();
+    return text.str();
+}
+
+// The engine libraries and MPI, by the names of their shared objects.
+const std::vector<std::string> kEngineLibraries = {"libBulletDynamics", "libode.so", "libSimTKsimbody", "libsiconos_kernel",
+                                                   "libmpi", "vssw_engine_", "vssw_mpi"};
+
+// The fixture plugins (plugin_fixture.cpp), opened from their folder through VSSW_PLUGIN_PATH.
+class FixturePlugin : public ::testing::Test {
+protected:
+    void SetUp() override { ::setenv("VSSW_PLUGIN_PATH", VSSW_FIXTURE_PLUGIN_DIR, 1); }
+    void TearDown() override { ::unsetenv("VSSW_PLUGIN_PATH"); }
+
+    static const multibody::EnginePlugin& open(const std::string& stem) {
+        const multibody::OpenedPlugin p =
+            multibody::open_plugin(multibody::plugin_file(stem), multibody::kEnginePluginEntry, "the fixture");
+        const auto* plugin = reinterpret_cast<const multibody::EnginePlugin* (*)()>(p.entry)();
+        multibody::check_plugin_build(p, "the fixture", plugin->abi, multibody::kEnginePluginAbi, plugin->build_id);
+        return *plugin;
+    }
+    static std::unique_ptr<multibody::Engine> engine(const std::string& name) {
+        const multibody::EnginePlugin& plugin = open("vssw_fixture");
+        for (std::size_t i = 0; i < plugin.engine_count; ++i)
+            if (name == plugin.engines[i].name) return plugin.engines[i].make();
+        throw std::logic_error("no fixture engine " + name);
+    }
+    static void run(const multibody::Engine& e) {
+        (void)e.simulate(multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7)), {}, {});
+    }
+};
+
+TEST(Plugins, ListingTheEnginesOpensNoPlugin) {
+    if (contains(mapped_files(), "vssw_engine_")) GTEST_SKIP() << "a plugin is open already (run this test alone)";
+    for (const std::string& name : multibody::available_engines()) {
+        (void)multibody::engine_display_name(name);
+        (void)multibody::engine_plugin_file(name);
+    }
+    (void)multibody::missing_engines();
+    (void)multibody::default_compared_engines();
+    EXPECT_FALSE(contains(mapped_files(), "vssw_engine_"));
+}
+
+// The purpose of the plugins: a command that runs no engine loads no engine library, nor MPI.
+TEST(Plugins, AnAnalyticCommandLoadsNoEngineLibraryAndAnEngineOnlyItsOwn) {
+    if (contains(mapped_files(), "vssw_engine_")) GTEST_SKIP() << "a plugin is open already (run this test alone)";
+    const auto free = run_cli({"free", "--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--theta0", "0.5"});
+    ASSERT_EQ(free.code, 0) << free.err;
+    const auto wall = run_cli({"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"});
+    ASSERT_EQ(wall.code, 0) << wall.err;
+    std::string maps = mapped_files();
+    for (const std::string& library : kEngineLibraries) EXPECT_FALSE(contains(maps, library)) << library;
+    if (!vssw::testing::engine_available("ode")) return;
+    const auto ode = run_cli({"compare", "--engine", "ode", "--height", "4", "--thickness", "0.4", "--hinge", "0.7"});
+    ASSERT_EQ(ode.code, 0) << ode.err;
+    maps = mapped_files();
+    EXPECT_TRUE(contains(maps, "vssw_engine_ode.so"));
+    EXPECT_TRUE(contains(maps, "libode.so"));
+    for (const char* library : {"libBulletDynamics", "libSimTKsimbody", "libsiconos_kernel", "libmpi"})
+        EXPECT_FALSE(contains(maps, library)) << library;
+}
+
+TEST(Plugins, DisplayNamesAreTheAdapters) {
+    for (const std::string& name : multibody::available_engines())
+        EXPECT_EQ(multibody::engine_display_name(name), multibody::make_engine_in_process(name)->display_name())
+            << name;
+}
+
+// Tests, programs and the Python module of a build tree use that build's plugins without any set-up.
+TEST(Plugins, TheBuildTreesProgramsFindTheBuildsPlugins) {
+    ::unsetenv("VSSW_PLUGIN_PATH");
+    const std::vector<std::string> folders = multibody::plugin_folders();
+    ASSERT_EQ(folders.size(), 1u);
+    EXPECT_EQ(folders[0], VSSW_PLUGIN_OUTPUT_DIR);
+    for (const std::string& name : multibody::available_engines()) {
+        const std::string file = multibody::engine_plugin_file(name);
+        if (file.empty()) continue;  // the analytic model, built in
+        EXPECT_EQ(multibody::engine_plugin_path(name), std::string(VSSW_PLUGIN_OUTPUT_DIR) + "/" + file);
+    }
+}
+
+TEST(Plugins, ThePluginPathIsSearchedFirst) {
+    ::setenv("VSSW_PLUGIN_PATH", "/nowhere/a::/nowhere/b", 1);
+    const std::vector<std::string> folders = multibody::plugin_folders();
+    ::unsetenv("VSSW_PLUGIN_PATH");
+    ASSERT_EQ(folders.size(), 3u);
+    EXPECT_EQ(folders[0], "/nowhere/a");
+    EXPECT_EQ(folders[1], "/nowhere/b");
+    EXPECT_EQ(folders[2], VSSW_PLUGIN_OUTPUT_DIR);
+}
+
+TEST(Plugins, AMissingPluginIsBadInputNamingWhatNeedsItAndWhereItLooked) {
+    try {
+        (void)multibody::open_plugin("vssw_engine_nosuch.so", multibody::kEnginePluginEntry, "engine 'nosuch'");
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(contains(what, "engine 'nosuch'")) << what;
+        EXPECT_TRUE(contains(what, "vssw_engine_nosuch.so was not found")) << what;
+        EXPECT_TRUE(contains(what, VSSW_PLUGIN_OUTPUT_DIR)) << what;
+        EXPECT_TRUE(contains(what, "VSSW_PLUGIN_PATH")) << what;
+    }
+}
+
+TEST_F(FixturePlugin, AFileThatIsNotALoadableLibraryIsRefusedWithTheLinkersReason) {
+    const vssw::testing::TempDir dir;
+    std::ofstream(dir / "vssw_engine_broken.so") << "not a shared object\n";
+    ::setenv("VSSW_PLUGIN_PATH", dir.path.c_str(), 1);
+    try {
+        (void)multibody::open_plugin("vssw_engine_broken.so", multibody::kEnginePluginEntry, "engine 'broken'");
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "engine 'broken'")) << e.what();
+        EXPECT_TRUE(contains(e.what(), "could not be loaded")) << e.what();
+    }
+}
+
+TEST_F(FixturePlugin, ALibraryWithoutTheEntryPointIsRefused) {
+    try {
+        (void)multibody::open_plugin("vssw_fixture.so", "vssw_engine_plugin_v999", "the fixture");
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "is not a vssw plugin of this version")) << e.what();
+    }
+}
+
+TEST_F(FixturePlugin, APluginOfAnotherBuildIsRefusedSayingSo) {
+    try {
+        (void)open("vssw_fixture_other_build");
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "is from another build (another build of vssw;")) << e.what();
+        EXPECT_TRUE(contains(e.what(), multibody::program_build_id())) << e.what();
+    }
+}
+
+TEST_F(FixturePlugin, APluginOfAnotherInterfaceVersionIsRefusedSayingSo) {
+    try {
+        (void)open("vssw_fixture_other_abi");
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "has interface version 999")) << e.what();
+    }
+}
+
+// Each plugin holds its own copy of the exception types (its symbols are hidden): the program still catches them by
+// type, in its own process and from a worker child (the isolation every engine run goes through).
+TEST_F(FixturePlugin, ExceptionsThrownInAPluginAreCaughtByTypeInTheProgram) {
+    EXPECT_THROW(engine("input_error")->check_settings({}), InputError);
+    EXPECT_THROW(run(*engine("input_error")), InputError);
+    EXPECT_THROW(run(*engine("engine_failure")), EngineFailure);
+    try {
+        run(*engine("runtime_error"));
+        FAIL() << "no exception";
+    } catch (const InputError&) {
+        FAIL() << "a std::runtime_error caught as an InputError";
+    } catch (const EngineFailure&) {
+        FAIL() << "a std::runtime_error caught as an EngineFailure";
+    } catch (const std::runtime_error& e) {
+        EXPECT_TRUE(contains(e.what(), "a std::runtime_error from a plugin")) << e.what();
+    }
+    EXPECT_THROW(run(*multibody::isolated(engine("input_error"))), InputError);
+    EXPECT_THROW(run(*multibody::isolated(engine("engine_failure"))), EngineFailure);
+    EXPECT_THROW(run(*multibody::isolated(engine("runtime_error"))), std::runtime_error);
+}
+
+// The same for the real plugins: a setting an adapter refuses is an InputError thrown inside its plugin.
+TEST(Plugins, AnAdaptersRefusalIsAnInputErrorInTheProgram) {
+    for (const std::string& name : multibody::available_engines()) {
+        if (name == "analytic") continue;
+        multibody::EngineSettings settings;
+        settings.knobs["no_such_setting"] = 1.0;
+        EXPECT_THROW(multibody::make_engine_in_process(name)->check_settings(settings), InputError) << name;
+        EXPECT_THROW(multibody::make_engine(name)->check_settings(settings), InputError) << name;
+    }
+}
+
+}  // namespace
