@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "fast_sincos.hpp"
-#include "wall.hpp"
+#include "geometry.hpp"
 
 namespace vssw {
 

@@ -1,11 +1,8 @@
 #pragma once
-// Wall descriptions (Sect. 2 and Table 1 of Sorrentino, Masiani & Griffith 2008).
-//
-// Half dimensions throughout, as in the paper: b is the half-thickness, h1 and h2 the half-heights of the lower and
-// upper bodies, h = h1 + h2. Bodies are homogeneous rectangles; masses and inertias are per unit depth of wall
-// (kg/m, kg m): m_i = rho * 2b * 2h_i, I_G,i = m_i R_i^2 / 3. The overburden N = xi * W is a massless force at the
-// centre of the top face; W is the wall's weight per unit depth.
-#include <string>
+// Walls from what an engineer measures, each checked against the physical ranges below and refused (InputError) when
+// it would not rock: the descriptions themselves are in geometry.hpp (Sect. 2 and Table 1 of Sorrentino, Masiani &
+// Griffith 2008).
+#include "geometry.hpp"
 
 namespace vssw {
 
@@ -24,34 +21,6 @@ constexpr double kMaxDensity = 1e5;       // [kg/m^3] above any solid (osmium 22
 constexpr double kMinGravity = 1e-2;      // [m/s^2] a small asteroid's; the Moon's is 1.62
 constexpr double kMaxGravity = 1e3;       // [m/s^2] a centrifuge test at 100 g
 constexpr double kMaxOverburdenRatio = 1e3;  // N/W: 1000 walls' weight on the top, far past any floor load (xi ~ 0-2)
-
-// Vertical spanning strip wall: two rigid blocks, base on the ground, top held by a roller (Fig. 1).
-struct VsswGeometry {
-    double b, h1, h2;        // half-thickness, half-heights of lower and upper body [m]
-    double density, xi, g;   // [kg/m^3], N/W [-], gravity [m/s^2]
-    // Derived once on construction (read-only afterwards).
-    double alpha1, alpha2;   // atan(b/h_i) [rad]
-    double R1, R2;           // half-diagonals [m]
-    double m1, m2;           // masses per unit depth [kg/m]
-    double I1, I2;           // centroidal polar moments of inertia per unit depth [kg m]
-    double W, N;             // weight and overburden per unit depth [N/m]
-    double k;                // tan(alpha2)/tan(alpha1) = h1/h2, slope of Eq. (3)
-    double s;                // sin(alpha2)/sin(alpha1) = R1/R2, factor of Eq. (2)
-    // Trigonometric functions of the constant angles, which the equation of motion uses at every evaluation.
-    double sin_a1, cos_a1, tan_a1, sin_a2, cos_a2, tan_a2;
-
-    double h() const { return h1 + h2; }
-    double hinge_ratio() const { return h1 / h(); }
-};
-
-// Single rocking block (parapet wall, Housner 1963).
-struct ParapetGeometry {
-    double b, h;             // half-thickness, half-height [m]
-    double density, xi, g;
-    double alpha, R;         // atan(b/h), half-diagonal
-    double m, I_G, I_O;      // mass, centroidal and corner polar inertia per unit depth
-    double W, N;
-};
 
 // From what an engineer measures: full height 2h, full thickness 2b, hinge ratio h1/h in (0, 1). Also refused: a
 // wall whose Eq. (19) restitution is <= 0 (it would not rock onto its other corner: the message gives the hinge
