@@ -139,7 +139,10 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
             break;
         }
         pollfd p{fds[0], POLLIN, 0};
-        const int ready = ::poll(&p, 1, limited ? static_cast<int>(left * 1000.0) + 1 : -1);
+        // At most a minute at a time (the deadline is checked again at the top): a limit of days in milliseconds does
+        // not fit an int (UBSan stopped EngineSteps.AStepTooSmallForTheRunIsRefusedAtOnceNamingIt there).
+        constexpr double kLongestWaitS = 60.0;
+        const int ready = ::poll(&p, 1, limited ? static_cast<int>(std::min(left, kLongestWaitS) * 1000.0) + 1 : -1);
         if (ready < 0 && errno == EINTR) continue;
         if (ready <= 0) continue;  // the deadline is checked at the top
         if (received == buffer.capacity()) buffer.reserve(received + 1, received);
