@@ -10,10 +10,6 @@
 
 namespace vssw::multibody {
 
-// The wall's description and its analytic model are analytic/wall_scene.hpp's (require_one_description,
-// analytic_model); the name stays reachable as multibody::analytic_model for the callers that spell it so.
-using vssw::analytic_model;
-
 struct BlockPose {
     double x, y;   // centre [m]
     double angle;  // rotation, clockwise positive (engine.hpp's sign) [rad]

@@ -1,7 +1,5 @@
 #include "study/measure.hpp"
 
-#include "multibody/step_resolution.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,6 +12,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
+#include "analytic/wall_scene.hpp"
 #include "compare/experiments.hpp"
 #include "compare/case_runner.hpp"
 #include "multibody/scene_geometry.hpp"
@@ -193,7 +192,7 @@ struct Collapse {
 Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine) {
     const GroundMotion& record = grid.record(c);
     const double pga = record.pga();  // [m/s^2] at scale 1
-    const double threshold = multibody::analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0);
+    const double threshold = analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0);
     const double max_pga = c.max_pga_g > 0.0 ? c.max_pga_g * kStandardGravity : kDefaultMaxPgaOverThreshold * threshold;
     const double tolerance = c.tolerance > 0.0 ? c.tolerance : kDefaultCollapseTolerance;
     const auto overturns = [&](double scale) {
