@@ -13,7 +13,7 @@ import subprocess
 import sys
 
 PROGRAM = ["analytic", "io", "multibody", "compare", "study", "stress", "validation", "apps", "python", "bench"]
-# A folder above a quarter of the code holds more than one thing (the reason issue 28 split study/, which held 34 %).
+# A folder above a quarter of the code holds more than one thing (study/ held 34 % when it held four things).
 MAX_FOLDER_SHARE = 0.25
 # A function longer than two screens is several steps that want names (rocking_phase was 204 lines, run_study 165).
 MAX_FUNCTION_LINES = 120

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The code's layering as a check (issue 28 asks for one before its redesign): each folder includes only the folders
-below it, and each engine library's headers stay inside that engine's adapter folder.
+"""The code's layering as a check: each folder includes only the folders below it, and each engine library's headers
+stay inside that engine's adapter folder.
 
     analytic  <-  io
     analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  apps  <-  python
