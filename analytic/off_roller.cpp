@@ -24,11 +24,22 @@ enum class Mode { free, far_guide };
 //   roller landing  the roller corner's gap            plastic landing onto the one-DOF mechanism: the flight ends
 //   far landing     the far corner's gap               plastic landing onto the far guide
 //   far release     the far guide's push               free flight
+//   fold            free: side theta2 + alpha2 + pi/2  the run ends: the upper block has turned past the lock of
+//                   far guide: pi/2 - |theta2|         the roller (Eq. 26) or of the far guide (theta2 = pi/2):
+//                                                      the standing mechanism is gone (overturning)
 // The turning points of theta1 (theta1' crossing zero either way) are recorded on the way.
-enum class Event { none, roller_landing, far_landing, far_release, base_impact, collapse };
-// Free flight can land on either guide; on the far guide it can only be released from it.
-constexpr Event kFreeEvents[] = {Event::base_impact, Event::collapse, Event::roller_landing, Event::far_landing};
-constexpr Event kFarGuideEvents[] = {Event::base_impact, Event::collapse, Event::far_release};
+enum class Event { none, roller_landing, far_landing, far_release, base_impact, collapse, fold };
+// On the far guide the wall can only be released from it.
+// Free flight can land on either guide (its base impact is looked for first: Flight::first_event).
+constexpr Event kFreeEvents[] = {Event::collapse, Event::fold, Event::roller_landing, Event::far_landing};
+constexpr Event kFarGuideEvents[] = {Event::base_impact, Event::collapse, Event::fold, Event::far_release};
+
+// Eq. (2) with the top on the roller has two branches, side theta2 + alpha2 = asin(s sin(alpha1 - |theta1|)) (the
+// standing one, through rest) and -pi - asin(...) (folded), which meet at Eq. (26)'s limit where the asin is -pi/2.
+// Off the roller the upper block can turn on past that lock (measured: to 4 rad and back to theta1 = 0, where the
+// guides' gaps no longer describe its corners): the flight ends there as overturning, which is also what keeps a
+// flight from landing on the folded branch, where the one-DOF model's theta2(theta1) would be the other one.
+constexpr double kHalfPi = 1.5707963267948966;
 
 // The first step of a flight: the motion has just changed mechanism; the controller takes over from there.
 constexpr double kFirstFlightStep = 1e-4;  // [s]
@@ -74,6 +85,8 @@ private:
             case Event::far_release: return far_force(t, y);
             case Event::base_impact: return side_ * y[0];
             case Event::collapse: return s_.collapse_angle - side_ * y[0];
+            case Event::fold:  // each mode's lock: the roller's (free flight) or the far guide's (|theta2| = pi/2)
+                return mode_ == Mode::free ? side_ * y[1] + wall_.wall().alpha2 + kHalfPi : kHalfPi - std::abs(y[1]);
             case Event::none: break;
         }
         return 1.0;
@@ -88,7 +101,7 @@ private:
     bool take_step(double t, const State& y, const State& dy, double& h_try, RkStep<5>& step) const;
     std::optional<std::pair<Event, Root>> first_event(double t, const State& y, RkStep<5>& step) const;
     void record_turning_points(double t, const State& y, RkStep<5>& step, double until, OffRollerEnd& out) const;
-    std::optional<OffRollerEnd::How> reset(Event ev, double t, State& y, double since, OffRollerEnd& out);
+    std::optional<OffRollerEnd::How> reset(Event ev, double t, State& y, OffRollerEnd& out);
 
     TwoBlockWall wall_;
     const OffRollerSetup& s_;
@@ -137,7 +150,7 @@ OffRollerEnd Flight::run(const OffRollerStart& start, long& steps) {
         out.max_abs_theta = std::max(out.max_abs_theta, std::abs(y[0]));
         if (s_.check_energy) s_.check_energy(t, y, out.dissipated);
         if (first)
-            if (const std::optional<OffRollerEnd::How> how = reset(first->first, t, y, start.t, out))
+            if (const std::optional<OffRollerEnd::How> how = reset(first->first, t, y, out))
                 return finish(*how);
         dy = integrator_.rhs(std::nextafter(t, s_.t_end + 1.0), y);
         if (first) h_try = std::min(h_try, kFirstFlightStep);
@@ -164,18 +177,29 @@ bool Flight::take_step(double t, const State& y, const State& dy, double& h_try,
 }
 
 // The first root over the mode's guards on the step, bracketed on its continuous extension from the step's start and
-// end (one look: a guard the step crosses and crosses back is not seen; the steps are short next to the flight).
+// end (one look: a guard the step crosses and crosses back is not seen; the steps are short next to the flight). In
+// free flight the guards are looked at up to theta1 = 0 when the step reaches it: past it the flight's side is the
+// wrong one, and a corner that has struck its guide just before the base can look clear again there (measured: a far
+// landing missed by 4e-5 m of penetration, the base impact then taken with the top inside the guide).
 std::optional<std::pair<Event, Root>> Flight::first_event(double t, const State& y, RkStep<5>& step) const {
-    const auto on_step = [&](Event ev) {
-        return StepGuard{Direction::falling, guard(ev, t, y), guard(ev, t + step.h, step.y1),
-                         [this, ev, &step](double tau) {
-                             integrator_.make_dense(step);
-                             return guard(ev, tau, step.at(tau));
-                         }};
+    const auto at = [this, &step](double tau) {
+        integrator_.make_dense(step);
+        return step.at(tau);
     };
-    const Looks looks{t, step.h};
-    if (mode_ == Mode::free) return first_root_over(kFreeEvents, looks, s_.event_time_tol, on_step);
-    return first_root_over(kFarGuideEvents, looks, s_.event_time_tol, on_step);
+    const auto on_step_until = [&](double end) {
+        return [&, end](Event ev) {
+            return StepGuard{Direction::falling, guard(ev, t, y),
+                             end == t + step.h ? guard(ev, end, step.y1) : guard(ev, end, at(end)),
+                             [this, ev, &at](double tau) { return guard(ev, tau, at(tau)); }};
+        };
+    };
+    if (mode_ == Mode::far_guide)
+        return first_root_over(kFarGuideEvents, Looks{t, step.h}, s_.event_time_tol, on_step_until(t + step.h));
+    const Event base[] = {Event::base_impact};
+    const auto impact = first_root_over(base, Looks{t, step.h}, s_.event_time_tol, on_step_until(t + step.h));
+    const double end = impact ? impact->second.t : t + step.h;
+    const auto other = first_root_over(kFreeEvents, Looks{t, end - t}, s_.event_time_tol, on_step_until(end));
+    return other ? other : impact;
 }
 
 // The turning points of theta1 inside the step up to `until` (the step's event), recorded as peaks.
@@ -191,17 +215,22 @@ void Flight::record_turning_points(double t, const State& y, RkStep<5>& step, do
 }
 
 // The reset of an event at (t, y): the flight's end when it ends there, nothing when it goes on (in another mode).
-// `since`: when the top left the roller.
-std::optional<OffRollerEnd::How> Flight::reset(Event ev, double t, State& y, double since, OffRollerEnd& out) {
+std::optional<OffRollerEnd::How> Flight::reset(Event ev, double t, State& y, OffRollerEnd& out) {
     switch (ev) {
         case Event::none: break;
-        case Event::collapse: return OffRollerEnd::How::collapse;
+        case Event::collapse:
+        case Event::fold: return OffRollerEnd::How::collapse;
         case Event::base_impact:
-            if (mode_ == Mode::free)
-                throw std::runtime_error(fmt::format(
-                    "at t = {} s theta1 reached 0 with the top off both guides (off the roller since t = {} s): "
-                    "a base impact of the two-DOF wall, which the model does not describe",
-                    t, since));
+            if (mode_ == Mode::free) {
+                // theta1 = 0 in free flight: both top corners are back at their guides (the slot has closed, theta2
+                // ~ 0), so the base and the guides strike at once. Taken as the top's plastic landing on the roller
+                // an instant before the base (the M-orthogonal projection onto the mechanism, as any landing),
+                // whose one-DOF base impact the caller applies: both steps dissipative, the energy accounted for.
+                const TwoBlockWall::Landing l = wall_.land(wall_.on_roller(0.0), qdot_of(y), Guide::roller);
+                out.dissipated += l.dissipated;
+                y[1] = 0.0;
+                y[2] = l.theta1_dot;
+            }
             y[0] = 0.0;
             return OffRollerEnd::How::base_impact;
         case Event::roller_landing: {
@@ -211,6 +240,9 @@ std::optional<OffRollerEnd::How> Flight::reset(Event ev, double t, State& y, dou
             return OffRollerEnd::How::on_roller;
         }
         case Event::far_landing: {
+            // The far guide's Eq. (2) has its branches too (sin theta2 fixed, two_block.cpp): landing with
+            // |theta2| > pi/2 is on the folded one, the upper block turned over: overturning, as at the fold above.
+            if (std::abs(y[1]) > kHalfPi) return OffRollerEnd::How::collapse;
             const TwoBlockWall::Landing l = wall_.land(q_of(y), qdot_of(y), Guide::far);
             out.dissipated += l.dissipated;
             y[2] = l.qdot(0);

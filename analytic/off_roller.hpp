@@ -9,8 +9,9 @@
 //    until the guide would pull (back to free flight) or theta1 reaches 0. There both guides' constraints have the
 //    same Jacobian (both top corners are at the same height at rest), so the base impact is the one-DOF model's and
 //    the far guide is the new side's roller;
-//  - theta1 reaching 0 in free flight: a base impact with the top off both guides, which is not modelled (a failure
-//    with its reason);
+//  - theta1 reaching 0 in free flight: the slot has closed (theta2 ~ 0) and base and guides strike at once, taken
+//    as the roller landing an instant before the one-DOF base impact (off_roller.cpp says why);
+//  - the upper block turning past the roller's lock of Eq. (26) (the wall folded): overturning;
 //  - the collapse angle, or the end of the run.
 // Integrated with Dormand-Prince 8(5,3) on (theta1, theta2, theta1', theta2', work of the ground); events located on
 // its continuous extension.
