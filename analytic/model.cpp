@@ -254,6 +254,24 @@ double RockingModel::reference_velocity() const {
     return std::sqrt(2.0 * std::abs(reference_energy()) / terms(0.0).M);
 }
 
+double RockingModel::unstable_equilibrium() const {
+    // The potential rises from rest to one maximum and falls to the collapse (a heavy overburden moves the maximum
+    // below alpha1, never makes two): a scan brackets it, golden sections shrink the bracket to round-off.
+    constexpr int kScan = 256;
+    constexpr int kGoldenSteps = 80;  // 0.618^80 of a scan cell: below double's resolution of the angle
+    const double top = collapse_angle();
+    int best = 1;
+    for (int i = 2; i < kScan; ++i)
+        if (potential(top * i / kScan) > potential(top * best / kScan)) best = i;
+    double lo = top * (best - 1) / kScan, hi = top * (best + 1) / kScan;
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int k = 0; k < kGoldenSteps; ++k) {
+        const double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
+        (potential(a) < potential(b) ? lo : hi) = potential(a) < potential(b) ? a : b;
+    }
+    return 0.5 * (lo + hi);
+}
+
 double RockingModel::rest_threshold(double a_v) const {
     const ModelTerms t = terms(0.0);
     return ((gravity() + a_v) * t.Y + overburden() * t.L) / t.X;

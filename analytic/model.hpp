@@ -87,6 +87,10 @@ public:
     double reference_velocity() const;
     // Smallest |a_h| that tips the wall off rest, from the equation of motion at q = 0.
     double rest_threshold(double a_v) const;
+    // The unstable equilibrium: the |theta1| in (0, collapse angle) where the potential (weights and overburden) is
+    // largest. Past it, with the ground still, the wall falls outward; nothing standing can rest there, which is how
+    // a folded engine wall (at rest at 3-4 alpha1 short of the collapse angle) is told from a standing one.
+    double unstable_equilibrium() const;
 };
 
 // Restitution from the peaks either side of an impact, by energy conservation in flight with no ground motion:

@@ -42,6 +42,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       b_(block_sizes(scene).b),
       friction_(scene.friction),
       collapse_(collapse_angle(scene)),
+      unstable_(unstable_equilibrium(scene)),
       v_ref_(reference_velocity(scene)),
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),
@@ -76,6 +77,11 @@ RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const
             fmt::format("{}: the wall sank {:.3g} m into the ground at t = {:.6g} s", engine_, sink, t));
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
     if (std::abs(theta) >= collapse_) return Verdict::overturned;
+    if (t > motion_end_ && motion_end_ > 0.0) {  // folded: still, past the unstable equilibrium, the shaking over
+        const bool folded = std::abs(theta) > unstable_ && std::abs(rate) < 1e-3 * v_ref_;
+        folded_steps_ = folded ? folded_steps_ + 1 : 0;
+        if (folded_steps_ >= quiet_needed_) return Verdict::overturned;
+    }
     if (stop_at_rest_ && t > motion_end_) {
         const bool quiet = std::abs(theta) < 1e-3 * alpha_ && std::abs(rate) < 1e-3 * v_ref_;
         quiet_steps_ = quiet ? quiet_steps_ + 1 : 0;

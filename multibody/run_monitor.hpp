@@ -2,6 +2,9 @@
 // What every engine adapter checks after each step, in one place: failures (NaN, blow-up, sliding, sinking), each
 // an EngineFailure naming the engine, the reason and the time; and reasons to stop (a threshold trial's stop angle,
 // overturning at the scene's collapse angle, rest once the ground motion is over). Engine-free.
+// Overturning is also a wall that has folded: the two blocks can pass the roller's lock short of the collapse angle
+// and come to rest tilted at 3-4 alpha1 (Siconos, Simbody), which no standing wall can do past the unstable
+// equilibrium (RockingModel::unstable_equilibrium): at rest there once the ground motion is over, it has overturned.
 #include <string>
 #include <vector>
 
@@ -56,10 +59,10 @@ public:
 
 private:
     std::string engine_;
-    double b_, friction_, collapse_, v_ref_, alpha_, motion_end_, stop_angle_;
+    double b_, friction_, collapse_, unstable_, v_ref_, alpha_, motion_end_, stop_angle_;
     bool stop_at_rest_;
     FailureLimits limits_;
-    int quiet_steps_ = 0, quiet_needed_;
+    int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_;
 };
 
 }  // namespace vssw::multibody

@@ -49,6 +49,9 @@ WallPose pose_at(const WallScene& scene, double theta1) {
 }
 
 double collapse_angle(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->collapse_angle(); }
+double unstable_equilibrium(const WallScene& scene) {
+    return analytic_model(scene, Kinematics::exact)->unstable_equilibrium();
+}
 double reference_velocity(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->reference_velocity(); }
 
 }  // namespace vssw::multibody

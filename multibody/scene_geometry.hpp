@@ -34,6 +34,9 @@ WallPose pose_at(const WallScene& scene, double theta1);
 // Collapse angle of the scene (the analytic model's: Eq. 26 or pi/2 for a VSSW, pi/2 for a parapet).
 double collapse_angle(const WallScene& scene);
 
+// The unstable equilibrium |theta1| of the scene's analytic model (exact kinematics): past it a still wall falls.
+double unstable_equilibrium(const WallScene& scene);
+
 // theta1'_r of the scene's analytic model (exact kinematics): the scale engines use for rest and failure checks.
 double reference_velocity(const WallScene& scene);
 
