@@ -85,6 +85,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         add_study_command(app),
         add_stress_command(app),
         add_bench_command(app),
+        add_motions_command(app),
     };
     app.add_flag_callback(
         "--version", [] { throw EarlyOutput(version_text()); },

@@ -43,6 +43,7 @@ const std::vector<KindInfo>& kinds() {
         {OutKind::stress, "a stress run", "a stress run's results",
          {"stress.json", "stress.csv", "stress.md"},
          {"stress.json", "stress.csv", "stress.md"}},
+        {OutKind::motions, "a set of generated motions", "generated motions", {"motions.csv"}, {"motions.csv"}},
     };
     return table;
 }
@@ -55,6 +56,21 @@ const KindInfo& info(OutKind kind) {
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// "motion-<digits>.at2", the files of `vssw motions generate`: their number depends on --count.
+bool numbered_motion(const std::string& name) {
+    const std::string prefix = "motion-", suffix = ".at2";
+    if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    return digits.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// Whether the command of `me` writes `name` (replaces it in the new folder).
+bool owns(const KindInfo& me, const std::string& name) {
+    return contains(me.own, name) || (me.kind == OutKind::motions && numbered_motion(name));
 }
 
 // vssw's own hidden files, whatever the command: the study's lock, an old write probe, temporary files and folders.
@@ -150,7 +166,7 @@ void check_out_folder(const fs::path& dir, OutKind kind) {
             throw InputError(fmt::format("--out '{}' exists and is not a folder", dir.string()));
         for (const fs::directory_entry& e : fs::directory_iterator(target, ec)) {
             const std::string name = e.path().filename().string();
-            if (contains(me.own, name) || vssw_hidden(name)) continue;
+            if (owns(me, name) || vssw_hidden(name)) continue;
             for (const KindInfo& other : kinds())
                 if (other.kind != kind && contains(other.signature, name))
                     throw InputError(fmt::format("--out '{}' holds {} ({}): {} there would replace them; give --out "
@@ -259,7 +275,7 @@ void StagedFolder::commit() {
     try {
         for (const fs::directory_entry& e : fs::directory_iterator(target_)) {
             const std::string name = e.path().filename().string();
-            if (contains(me.own, name) || vssw_hidden(name)) continue;
+            if (owns(me, name) || vssw_hidden(name)) continue;
             carry(e.path(), staging_ / name);
         }
     } catch (const fs::filesystem_error& e) {

@@ -7,6 +7,8 @@
 // Files in the folder that the command does not write (a user's notes, study_slurm.sh's shards/ and logs) are carried
 // over into the new folder (hard links, a copy where a link cannot be made), so nothing of the user's is lost. A
 // folder holding another command's results is refused: a report there would replace a study's results.json.
+// `vssw motions generate` owns motions.csv and every "motion-<digits>.at2": a smaller set leaves none of a larger
+// one's motions behind.
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -15,7 +17,7 @@
 namespace vssw::study {
 
 // Which command writes the folder: it decides which names are its own (replaced) and which another's (refused).
-enum class OutKind { study, report, bench, stress };
+enum class OutKind { study, report, bench, stress, motions };
 
 // Checks --out before anything runs (InputError naming the folder): an existing path must be a folder this process
 // can write, neither a mount point nor '/' (it could not be renamed), holding no other command's results; the folder

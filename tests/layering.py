@@ -3,6 +3,7 @@
 stay inside that engine's adapter folder.
 
     analytic  <-  io
+    analytic, io  <-  motions  <-  apps
     analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  apps  <-  python
     (bench and tests may include any folder of the program)
 
@@ -16,7 +17,7 @@ import re
 import sys
 
 # What each folder may include besides itself.
-PROGRAM = {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "apps"}
+PROGRAM = {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "apps"}
 LAYERS = {
     "analytic": set(),
     "io": {"analytic"},
@@ -25,7 +26,8 @@ LAYERS = {
     "study": {"analytic", "io", "multibody", "compare"},
     "stress": {"analytic", "io", "multibody", "compare"},
     "validation": {"analytic", "io", "multibody", "compare", "study", "stress"},
-    "apps": {"analytic", "io", "multibody", "compare", "study", "stress", "validation"},
+    "motions": {"analytic", "io"},
+    "apps": {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions"},
     "python": {"apps"},
     "bench": PROGRAM,
     "tests": PROGRAM | {"tests"},

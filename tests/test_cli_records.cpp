@@ -328,3 +328,52 @@ TEST(CliRecords, AFileThatIsNoRecordIsNotQuoted) {
 }
 
 }  // namespace
+
+// `vssw motions`: bad input is one line naming it, exit 2, and nothing written; describe reads what generate writes.
+namespace {
+
+using vssw::testing::run_cli;
+
+void expect_bad_input(const std::vector<std::string>& args, const std::string& named) {
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.code, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(named), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(MotionsCli, BadInputsAreOneLineAndExit2) {
+    vssw::testing::TempDir dir;
+    const std::string out = (dir / "set").string();
+    expect_bad_input({"motions", "generate", "--count", "0", "--seed", "1", "--out", out}, "--count");
+    expect_bad_input({"motions", "generate", "--count", "-3", "--seed", "1", "--out", out}, "--count");
+    expect_bad_input({"motions", "generate", "--count", "ten", "--seed", "1", "--out", out}, "--count");
+    expect_bad_input({"motions", "generate", "--count", "2", "--seed", "-1", "--out", out}, "--seed");
+    expect_bad_input({"motions", "generate", "--count", "2", "--seed", "1", "--out", out, "--d5-95", "60"}, "--d5-95");
+    expect_bad_input({"motions", "generate", "--count", "2", "--seed", "1", "--out", out, "--magnitude", "7"},
+                     "--distance");
+    EXPECT_FALSE(std::filesystem::exists(out));
+    // A folder inside a file cannot be made.
+    std::ofstream(dir / "plain") << "x";
+    expect_bad_input({"motions", "generate", "--count", "2", "--seed", "1", "--out", (dir / "plain" / "set").string()},
+                     "--out");
+    const std::string missing = (dir / "no-such.at2").string();
+    expect_bad_input({"motions", "describe", missing}, missing);
+}
+
+TEST(MotionsCli, DescribeReadsWhatGenerateWrites) {
+    vssw::testing::TempDir dir;
+    const std::string out = (dir / "set").string();
+    const auto g = run_cli({"motions", "generate", "--count", "2", "--seed", "3", "--out", out});
+    ASSERT_EQ(g.code, 0) << g.err;
+    const auto d = run_cli({"motions", "describe", out + "/motion-001.at2", out + "/motion-002.at2", "--json"});
+    ASSERT_EQ(d.code, 0) << d.err;
+    const Json j = Json::parse(d.out);
+    ASSERT_EQ(j.size(), 2u);
+    EXPECT_GT(j[0]["arias_m_s"].get<double>(), 0.0);
+    EXPECT_DOUBLE_EQ(j[0]["dt_s"].get<double>(), 0.005);
+    const auto csv = run_cli({"motions", "describe", kRinaldi, "--csv"});
+    ASSERT_EQ(csv.code, 0) << csv.err;
+    EXPECT_EQ(csv.out.rfind("file,pga_g,pgv_m_s,arias_m_s,d5_95_s,t_mid_s,mid_frequency_hz,duration_s,dt_s\n", 0), 0u);
+}
+
+}  // namespace
