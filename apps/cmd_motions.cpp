@@ -1,5 +1,6 @@
 // `vssw motions`: ground motions of our own. `generate` draws a seeded set from the stochastic model of Rezaeian &
 // Der Kiureghian (motions/, docs/ground-motions.md); `describe` measures any record the readers accept.
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <limits>
@@ -131,10 +132,12 @@ void run_describe(const DescribeOptions& o, std::ostream& out) {
         out << list.dump(2) << '\n';
         return;
     }
-    out << fmt::format("{:<32} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "file", "PGA [g]", "PGV [m/s]",
-                       "Ia [m/s]", "D5-95 [s]", "f_mid [Hz]", "length [s]", "dt [s]");
+    std::size_t width = 4;  // the file column fits the longest name given (at least "file")
+    for (const auto& row : rows) width = std::max(width, row.first.size());
+    out << fmt::format("{:<{}} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "file", width, "PGA [g]",
+                       "PGV [m/s]", "Ia [m/s]", "D5-95 [s]", "f_mid [Hz]", "length [s]", "dt [s]");
     for (const auto& [file, m] : rows)
-        out << fmt::format("{:<32} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", file, num(m.pga_g),
+        out << fmt::format("{:<{}} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", file, width, num(m.pga_g),
                            num(m.pgv_m_s), num(m.arias_m_s), num_or(m.d5_95_s, "none"),
                            num_or(m.mid_frequency_hz, "none"), num(m.duration_s), num_or(m.dt_s, "uneven"));
 }
