@@ -10,6 +10,8 @@
 #include "io/document_html.hpp"
 #include "io/document_markdown.hpp"
 #include "study/effects.hpp"
+#include "study/ensemble_measures.hpp"
+#include "study/ensemble_outputs.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"
 #include "study/study_data.hpp"
@@ -38,16 +40,24 @@ OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOp
 
     const std::vector<Effect> effects = parameter_effects(data);
     const std::vector<Agreement> agreement = engine_agreement(data);
+    const EnsembleMeasures ensemble = ensemble_measures(data);
+    if (ensemble.applies) {
+        write_file(dir / kFragilityCsv, [&](std::ostream& out) { write_fragility_csv(out, data, ensemble); });
+        write_file(dir / kAgreementCsv, [&](std::ostream& out) { write_agreement_csv(out, data, ensemble); });
+        files.written.push_back(dir / kFragilityCsv);
+        files.written.push_back(dir / kAgreementCsv);
+    }
     StudyPlots scripts;
     PlotResult plots;
     const std::filesystem::path plots_dir = dir / kPlotsDir;
     if (options.plots) {
         scripts = study_plot_scripts(data, effects);
+        add_ensemble_plots(data, ensemble, scripts);
         plots = draw_plots(scripts.scripts, plots_dir, options.gnuplot);
         if (!plots.note.empty()) files.warnings.push_back("plots: " + plots.note);
         if (!scripts.scripts.empty()) files.written.push_back(plots_dir);
     }
-    const Document doc = build_study_document({data, effects, agreement, scripts, plots, !options.plots});
+    const Document doc = build_study_document({data, effects, agreement, scripts, plots, !options.plots, &ensemble});
     write_file(dir / kStudyMarkdown, [&](std::ostream& out) { write_markdown(out, doc); });
     write_file(dir / kStudyHtml, [&](std::ostream& out) { write_html(out, doc, plots_dir); });
     files.written.push_back(dir / kStudyMarkdown);

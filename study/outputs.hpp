@@ -4,6 +4,8 @@
 //   results.json           the manifest's keys and every row (results_files.hpp)
 //   plots/                 gnuplot SVGs with their .gp scripts and .dat data (study/study_plots.hpp); without gnuplot
 //                          the scripts and data only, and a warning
+//   fragility.csv, agreement.csv  record studies over >= 2 records: each series against the reference (IDA fits,
+//                          overturning agreement, peak ratios; study/ensemble_outputs.hpp)
 //   study.md, study.html   the study in plain words, the largest sensitivities first, the engines against each of the
 //                          analytic model's assumption sets, the plots inline (study/study_document.hpp)
 #include <filesystem>

@@ -153,6 +153,7 @@ void read_rows(StudyData& d, const fs::path& path) {
     std::unordered_map<std::string, std::uint32_t> metric_index;
     for (std::size_t m = 0; m < d.metrics.size(); ++m) metric_index[d.metrics[m].name] = static_cast<std::uint32_t>(m);
     std::set<std::tuple<int, std::vector<std::uint32_t>>> warned_tasks;
+    std::unordered_map<std::string, std::uint32_t> status_index;
     try {
         while (read_csv_record(in, fields)) {
             if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
@@ -169,6 +170,10 @@ void read_rows(StudyData& d, const fs::path& path) {
             row.metric = m->second;
             row.value = fields[value].empty() ? std::nan("") : number_of(fields[value]);
             for (std::size_t c = 0; c < d.columns.size(); ++c) row.levels.push_back(interners[c].id(fields[first + c]));
+            const auto [st, added] =
+                status_index.try_emplace(fields[status], static_cast<std::uint32_t>(d.statuses.size()));
+            if (added) d.statuses.push_back(fields[status]);
+            row.status = st->second;
             if (fields[status].rfind("failed", 0) == 0) {
                 ++d.failed_rows;
                 const auto colon = fields[status].find(": ");

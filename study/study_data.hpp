@@ -49,6 +49,7 @@ struct StudyRow {
     int case_id = 0;
     std::uint32_t metric = 0;         // index into StudyData::metrics
     double value = 0.0;               // NaN: empty (failed, or nothing to measure)
+    std::uint32_t status = 0;         // index into StudyData::statuses ("ok", "failed: <reason>")
     std::vector<std::uint32_t> levels;  // one per StudyData::columns
 };
 
@@ -60,6 +61,7 @@ struct StudyData {
     std::vector<MetricMeta> metrics;
     std::vector<Series> series;
     std::vector<StudyRow> rows;
+    std::vector<std::string> statuses;  // the status column's texts, interned (a row's reason, e.g. a censored IDA)
     long failed_rows = 0, warned_rows = 0, warned_tasks = 0;
     std::map<std::string, long> failure_reasons;  // "failed: <reason>" without the prefix, and how many rows
 

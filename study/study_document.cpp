@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "study/ensemble_outputs.hpp"
 #include "study/spec.hpp"
 #include "study/study_prose.hpp"
 #include "io/text.hpp"
@@ -223,6 +224,7 @@ Document build_study_document(const StudyDocumentInput& in) {
     add_counts(b, d);
     add_sensitivities(b, d, in.effects);
     add_agreement(b, d, in.agreement);
+    if (in.ensemble) add_ensemble_section(b, d, *in.ensemble);
     add_plots(b, in);
     add_run(b, d);
     add_files(b);

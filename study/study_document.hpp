@@ -4,6 +4,7 @@
 #include "study/agreement.hpp"
 #include "io/document.hpp"
 #include "study/effects.hpp"
+#include "study/ensemble_measures.hpp"
 #include "io/gnuplot.hpp"
 #include "study/study_data.hpp"
 #include "study/study_plots.hpp"
@@ -23,6 +24,7 @@ struct StudyDocumentInput {
     const StudyPlots& plot_notes;  // its notes (its scripts are drawn into `plots`)
     const PlotResult& plots;
     bool plots_skipped = false;    // --no-plots
+    const EnsembleMeasures* ensemble = nullptr;  // the "Ensemble" section's measures (none: no section)
 };
 
 Document build_study_document(const StudyDocumentInput& in);

@@ -1,0 +1,270 @@
+#include "study/ensemble_measures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "study/plot_panels.hpp"
+#include "study/spec.hpp"
+
+namespace vssw::study {
+namespace {
+
+using compare::IdaRecord;
+using Key = std::vector<std::uint32_t>;  // a run's levels with engine, settings, assumptions, perturbation cleared
+
+// The assumption set the engines share (their impact is the whole mechanism's, their roller unilateral).
+const std::vector<std::string> kPreferredReference = {"exact", "whole-mechanism", "unilateral"};
+// The status of an IDA record that stood up to the search's ceiling (study/measure.cpp, collapse_scale).
+constexpr const char* kCensoredStatus = "failed: does not overturn up to a PGA of ";
+
+// What one series ran, keyed by run.
+struct SeriesRuns {
+    std::map<Key, double> peak, overturned;
+    std::map<Key, IdaRecord> ida;
+    std::map<Key, std::vector<double>> perturbed_peak;  // the reference's perturbed repeats
+    std::map<Key, long> ida_failed;  // collapse_pga rows that failed otherwise than censored
+};
+
+struct Columns {
+    std::size_t file, pga, perturbation, max_pga;
+    std::vector<std::size_t> cleared, wall;
+    std::size_t peak_metric, overturned_metric, collapse_metric;
+};
+
+std::size_t metric_index(const StudyData& d, const std::string& name) {
+    for (std::size_t m = 0; m < d.metrics.size(); ++m)
+        if (d.metrics[m].name == name) return m;
+    return std::string::npos;
+}
+
+Columns columns_of(const StudyData& d) {
+    Columns c{d.column("file"), d.column("pga"), d.column("perturbation"), d.column("max_pga"), {0, d.columns.size() - 1},
+              {}, metric_index(d, "peak_rotation"), metric_index(d, "overturned"), metric_index(d, "collapse_pga")};
+    for (std::size_t a : d.assumption_columns)
+        if (a != std::string::npos) c.cleared.push_back(a);
+    if (c.perturbation != std::string::npos) c.cleared.push_back(c.perturbation);
+    for (std::size_t i = 0; i < d.columns.size(); ++i)
+        if (std::find(kWallKeys.begin(), kWallKeys.end(), d.columns[i].key) != kWallKeys.end()) c.wall.push_back(i);
+    return c;
+}
+
+bool nominal(const StudyData& d, const Columns& c, const StudyRow& r) {
+    if (c.perturbation == std::string::npos) return true;
+    const std::string& p = d.text(r, c.perturbation);
+    return p.empty() || p == "none";
+}
+
+// Each PGA level of a perturbed run as the nearest level a nominal run has (a perturbation may shift the column).
+std::vector<std::uint32_t> nominal_pga(const StudyData& d, const Columns& c) {
+    if (c.pga == std::string::npos) return {};
+    const ColumnLevels& col = d.columns[c.pga];
+    std::vector<bool> is_nominal(col.texts.size(), false);
+    for (const StudyRow& r : d.rows)
+        if (nominal(d, c, r)) is_nominal[r.levels[c.pga]] = true;
+    std::vector<std::uint32_t> map(col.texts.size());
+    for (std::uint32_t l = 0; l < col.texts.size(); ++l) {
+        map[l] = l;
+        double best = INFINITY;
+        for (std::uint32_t n = 1; n < col.texts.size(); ++n)
+            if (is_nominal[n] && std::abs(col.values[n] - col.values[l]) < best) {
+                best = std::abs(col.values[n] - col.values[l]);
+                map[l] = n;
+            }
+    }
+    return map;
+}
+
+// An IDA row as a record: collapsed at its value, right-censored at the ceiling, or nothing (another failure).
+std::optional<IdaRecord> ida_record(const StudyData& d, const Columns& c, const StudyRow& r) {
+    if (std::isfinite(r.value) && r.value > 0.0) return IdaRecord{r.value, true};
+    const std::string& status = d.statuses[r.status];
+    if (status.rfind(kCensoredStatus, 0) != 0) return std::nullopt;
+    double cap = c.max_pga == std::string::npos ? NAN : d.columns[c.max_pga].values[r.levels[c.max_pga]];
+    if (!(cap > 0.0)) cap = std::strtod(status.c_str() + std::string(kCensoredStatus).size(), nullptr);
+    if (!(std::isfinite(cap) && cap > 0.0)) return std::nullopt;
+    return IdaRecord{cap, false};
+}
+
+std::vector<SeriesRuns> collect(const StudyData& d, const Columns& c) {
+    std::vector<SeriesRuns> runs(d.series.size());
+    const std::vector<std::uint32_t> pga_map = nominal_pga(d, c);
+    for (const StudyRow& r : d.rows) {
+        Key key = r.levels;
+        for (std::size_t col : c.cleared) key[col] = kEmptyLevel;
+        if (c.pga != std::string::npos) key[c.pga] = pga_map[key[c.pga]];
+        const bool nominal_run = nominal(d, c, r);
+        for (std::size_t s = 0; s < d.series.size(); ++s) {
+            if (!d.in_series(r, d.series[s])) continue;
+            SeriesRuns& sr = runs[s];
+            if (r.metric == c.peak_metric) {
+                if (nominal_run) sr.peak[key] = r.value;
+                else if (std::isfinite(r.value)) sr.perturbed_peak[key].push_back(r.value);
+            } else if (r.metric == c.overturned_metric && nominal_run) {
+                sr.overturned[key] = r.value;
+            } else if (r.metric == c.collapse_metric && nominal_run) {
+                if (const auto rec = ida_record(d, c, r)) sr.ida[key] = *rec;
+                else ++sr.ida_failed[key];
+            }
+        }
+    }
+    return runs;
+}
+
+std::size_t choose_reference(const StudyData& d, bool& preferred) {
+    std::size_t first = std::string::npos;
+    for (std::size_t s = 0; s < d.series.size(); ++s) {
+        if (!d.series[s].analytic()) continue;
+        if (first == std::string::npos) first = s;
+        if (d.series[s].assumptions == kPreferredReference) {
+            preferred = true;
+            return s;
+        }
+    }
+    preferred = false;
+    return first;
+}
+
+Key wall_of(const Columns& c, const Key& key) {
+    Key w;
+    for (std::size_t col : c.wall) w.push_back(key[col]);
+    return w;
+}
+
+compare::BootstrapOptions bootstrap_options() {
+    compare::BootstrapOptions o;
+    o.replicates = kEnsembleReplicates;
+    o.confidence = kEnsembleConfidence;
+    o.seed = kEnsembleSeed;
+    return o;
+}
+
+void measure_ida(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
+                 const Columns& c) {
+    std::vector<IdaRecord> engine, ref;
+    for (const auto& [key, rec] : runs.ida) {
+        if (wall_of(c, key) != wall) continue;
+        m.records.push_back(rec);
+        if (!reference) continue;
+        const auto it = reference->ida.find(key);
+        if (it == reference->ida.end()) continue;
+        engine.push_back(rec);
+        ref.push_back(it->second);
+    }
+    for (const auto& [key, n] : runs.ida_failed)
+        if (wall_of(c, key) == wall) m.left_out += n;
+    m.ida = !m.records.empty() || m.left_out > 0;
+    if (!m.ida) return;
+    m.fit = compare::bootstrap_fit(m.records, bootstrap_options());
+    m.paired = static_cast<long>(engine.size());
+    m.ratio.ratio = {NAN, NAN, NAN, 0};
+    if (reference && !engine.empty()) m.ratio = compare::bootstrap_median_ratio(engine, ref, bootstrap_options());
+}
+
+void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
+                     const StudyData& d, const Columns& c) {
+    long agree = 0, both = 0;
+    std::vector<double> ratios;
+    std::vector<compare::BandRun> band;
+    std::map<std::uint32_t, std::pair<long, long>> per_level;  // pga level -> (overturned, runs)
+    for (const auto& [key, over] : runs.overturned) {
+        if (wall_of(c, key) != wall || !std::isfinite(over)) continue;
+        m.stripes = true;
+        auto& level = per_level[c.pga == std::string::npos ? kEmptyLevel : key[c.pga]];
+        level.first += over > 0.5 ? 1 : 0;
+        ++level.second;
+        if (!reference) continue;
+        const auto peak = runs.peak.find(key);
+        const double own_peak = peak == runs.peak.end() ? NAN : peak->second;
+        const auto ref_over = reference->overturned.find(key);
+        const auto ref_peak = reference->peak.find(key);
+        if (ref_over != reference->overturned.end() && std::isfinite(ref_over->second)) {
+            ++both;
+            agree += (over > 0.5) == (ref_over->second > 0.5) ? 1 : 0;
+            if (over < 0.5 && ref_over->second < 0.5 && ref_peak != reference->peak.end() &&
+                std::isfinite(ref_peak->second) && ref_peak->second != 0.0 && std::isfinite(own_peak))
+                ratios.push_back(own_peak / ref_peak->second);
+        }
+        const auto repeats = reference->perturbed_peak.find(key);
+        if (repeats == reference->perturbed_peak.end() || ref_peak == reference->peak.end() ||
+            !std::isfinite(ref_peak->second))
+            continue;
+        const auto [lo, hi] = std::minmax_element(repeats->second.begin(), repeats->second.end());
+        band.push_back({ref_peak->second, std::min(*lo, ref_peak->second), std::max(*hi, ref_peak->second), own_peak});
+    }
+    if (!m.stripes) return;
+    m.overturning = both > 0 ? compare::wilson_interval(agree, both, kEnsembleConfidence)
+                             : compare::Interval{NAN, NAN, NAN, 0};
+    m.peak_ratio = compare::quartiles(ratios);
+    m.band = !band.empty();
+    if (m.band) m.inside = compare::count_inside_band(band);
+    if (c.pga == std::string::npos) return;
+    for (std::uint32_t l : d.columns[c.pga].order) {
+        const auto it = per_level.find(l);
+        if (it == per_level.end()) continue;
+        m.levels.push_back({d.columns[c.pga].values[l],
+                            compare::wilson_interval(it->second.first, it->second.second, kEnsembleConfidence)});
+    }
+}
+
+}  // namespace
+
+bool repeats_earlier(const StudyData& d, std::size_t s) {
+    for (std::size_t t = 0; t < s; ++t)
+        if (d.series[t].engine == d.series[s].engine && d.series[t].settings == d.series[s].settings &&
+            d.series[t].assumptions == d.series[s].assumptions)
+            return true;
+    return false;
+}
+
+std::string assumptions_text(const Series& s) {
+    std::string out;
+    for (std::size_t i = 0; i < kAssumptionKeys.size() && s.analytic(); ++i)
+        if (!s.assumptions[i].empty()) out += fmt::format("{}{}={}", out.empty() ? "" : " ", kAssumptionKeys[i],
+                                                          s.assumptions[i]);
+    return out;
+}
+
+EnsembleMeasures ensemble_measures(const StudyData& d) {
+    EnsembleMeasures e;
+    const Columns c = columns_of(d);
+    if (c.file == std::string::npos || d.columns[c.file].order.size() < 2) return e;
+    if (c.overturned_metric == std::string::npos && c.collapse_metric == std::string::npos) return e;
+    e.applies = true;
+    e.reference = choose_reference(d, e.preferred_reference);
+    e.has_reference = e.reference != std::string::npos;
+    const std::vector<SeriesRuns> runs = collect(d, c);
+    std::map<Key, std::size_t> wall_index;
+    std::vector<Key> walls;
+    for (const StudyRow& r : d.rows) {
+        const Key w = wall_of(c, r.levels);
+        if (wall_index.emplace(w, walls.size()).second) walls.push_back(w);
+    }
+    std::vector<std::size_t> varied_walls;
+    for (std::size_t col : c.wall)
+        if (d.columns[col].varied) varied_walls.push_back(col);
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+        Key levels;
+        for (std::size_t col : varied_walls)
+            levels.push_back(walls[w][static_cast<std::size_t>(std::find(c.wall.begin(), c.wall.end(), col) -
+                                                               c.wall.begin())]);
+        e.walls.push_back(levels_title(d, varied_walls, levels));
+        for (std::size_t s = 0; s < d.series.size(); ++s) {
+            if (repeats_earlier(d, s)) continue;
+            SeriesMeasures m;
+            m.series = s;
+            m.wall = w;
+            const SeriesRuns* reference = e.has_reference && s != e.reference ? &runs[e.reference] : nullptr;
+            measure_ida(m, runs[s], reference, walls[w], c);
+            measure_stripes(m, runs[s], reference, walls[w], d, c);
+            if (m.ida || m.stripes) e.measures.push_back(std::move(m));
+        }
+    }
+    return e;
+}
+
+}  // namespace vssw::study

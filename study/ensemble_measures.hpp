@@ -1,0 +1,77 @@
+#pragma once
+// Ensemble measures of a record study (one that varies the record `file` over at least two records): every series (an
+// engine with its settings, the analytic model under one assumption set) against a reference series, per wall, from
+// the study's results alone (study/study_data.hpp), with the statistics of compare/ensemble_statistics.hpp.
+//
+//  - The reference: the analytic model with kinematics=exact, impact=whole-mechanism, roller=unilateral when the
+//    study ran it (the assumptions the engines' physics shares), else the study's first analytic series.
+//  - Stripes (kind record, file x pga): overturning agreement with the reference over records x levels (Wilson 95 %),
+//    the engine peak / reference peak where both stand (median, quartiles), the runs inside the reference's
+//    sensitivity band when the study has a `perturbation` column (rows other than "none" only build the band), and
+//    per level the share of runs that overturned (a stripe fragility, Wilson intervals).
+//  - IDA (kind scale-to-collapse): per record its collapse_pga; a record that did not overturn up to max_pga (status
+//    "failed: does not overturn up to a PGA of X g (max_pga)", study/measure.cpp) is right-censored at the max_pga
+//    column's value, else at the X of that status. A lognormal fit with bootstrap intervals, and the paired bootstrap
+//    ratio of its median to the reference's over the records both have. Other failed rows are left out (counted).
+// The bootstrap's seed and replicates are fixed (kEnsembleSeed, kEnsembleReplicates): the outputs are the same bytes
+// on every run, resume and merge.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "compare/ensemble_statistics.hpp"
+#include "study/study_data.hpp"
+
+namespace vssw::study {
+
+constexpr std::uint64_t kEnsembleSeed = 20150401;  // std::mt19937_64's seed for every bootstrap
+constexpr int kEnsembleReplicates = 2000;          // bootstrap resamples
+constexpr double kEnsembleConfidence = 0.95;       // of every interval
+
+// A stripe: runs at one PGA level [g] and the share of them that overturned (Wilson interval; n runs).
+struct StripeShare {
+    double pga = 0.0;
+    compare::Interval share;
+};
+
+// One series on one wall.
+struct SeriesMeasures {
+    std::size_t series = 0;  // in StudyData::series
+    std::size_t wall = 0;    // in EnsembleMeasures::walls
+    // IDA: one record per (file and the other excitation levels), in the results' order; failed rows left out.
+    bool ida = false;
+    std::vector<compare::IdaRecord> records;
+    long left_out = 0;
+    compare::FitBootstrap fit;
+    compare::RatioBootstrap ratio;  // against the reference over the records both have (NaN for the reference)
+    long paired = 0;                // those records
+    // Stripes.
+    bool stripes = false;
+    compare::Interval overturning{};  // share of runs where it and the reference agree on overturning
+    compare::Quartiles peak_ratio{};  // its peak / the reference's where neither overturned
+    bool band = false;                // the reference had perturbed repeats
+    compare::BandCount inside;        // its peaks inside the reference's band
+    std::vector<StripeShare> levels;  // by PGA level, in the study's order
+};
+
+struct EnsembleMeasures {
+    bool applies = false;            // the study varies `file` over >= 2 records and measures overturning or collapse
+    std::size_t reference = 0;       // in StudyData::series (meaningless when !has_reference)
+    bool has_reference = false;
+    bool preferred_reference = false;  // the exact / whole-mechanism / unilateral set (else the first analytic one)
+    std::vector<std::string> walls;  // per wall its varied wall parameters ("height 4, hinge 0.7"; "" for one wall)
+    std::vector<SeriesMeasures> measures;  // wall by wall, series in order
+};
+
+EnsembleMeasures ensemble_measures(const StudyData& d);
+
+// Whether series s repeats an earlier one (the same engine, settings and assumptions): a study of several parts lists
+// each part's runs; the measures and plots hold each series once.
+bool repeats_earlier(const StudyData& d, std::size_t s);
+
+// The series' label columns: the engine, its assumptions ("kinematics=exact impact=whole-mechanism roller=unilateral"
+// for the analytic model, "" for an engine), its settings.
+std::string assumptions_text(const Series& s);
+
+}  // namespace vssw::study

@@ -1,0 +1,248 @@
+#include "study/ensemble_outputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "io/csv.hpp"
+#include "io/gnuplot.hpp"
+#include "study/plot_panels.hpp"
+#include "study/study_prose.hpp"
+
+namespace vssw::study {
+
+const char* const kEnsembleSection = "Ensemble: fragility and agreement with the reference";
+
+namespace {
+
+// A fragility plot's PGA axis reaches this far past the largest record shown.
+constexpr double kAxisMargin = 1.1;
+
+std::string reference_label(const StudyData& d, const EnsembleMeasures& e) {
+    return e.has_reference ? d.series[e.reference].label : "";
+}
+
+// engine, assumptions (the first two columns of both files).
+std::string series_columns(const Series& s) {
+    return csv_field(s.engine) + "," + csv_field(assumptions_text(s));
+}
+
+// settings, wall, reference (the last columns of both files).
+std::string tail_columns(const StudyData& d, const EnsembleMeasures& e, const SeriesMeasures& m) {
+    return fmt::format("{},{},{}", csv_field(d.series[m.series].settings), csv_field(e.walls[m.wall]),
+                       csv_field(reference_label(d, e)));
+}
+
+std::string interval_columns(const compare::Interval& i) {
+    return fmt::format("{},{},{},{}", csv_number(i.value), csv_number(i.lo), csv_number(i.hi), i.n);
+}
+
+bool is_reference(const EnsembleMeasures& e, const SeriesMeasures& m) {
+    return e.has_reference && m.series == e.reference;
+}
+
+std::string pga_text(double pga) { return fmt::format("{:.6g}", pga); }
+
+// The ECDF of a series' collapse PGAs: the collapsed records' PGAs sorted, each at its rank over all records.
+std::vector<std::pair<double, double>> ecdf(const SeriesMeasures& m) {
+    std::vector<double> x;
+    for (const compare::IdaRecord& r : m.records)
+        if (r.collapsed) x.push_back(r.im);
+    std::sort(x.begin(), x.end());
+    std::vector<std::pair<double, double>> out;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        out.push_back({x[i], static_cast<double>(i + 1) / static_cast<double>(m.records.size())});
+    return out;
+}
+
+struct Styles {
+    std::vector<std::size_t> variants;
+    std::string of(const StudyData& d, std::size_t s) const {
+        return series_style(d.series[s].engine, variants[s]);
+    }
+};
+
+Styles styles_of(const StudyData& d) {
+    std::vector<std::string> engines;
+    for (const Series& s : d.series) engines.push_back(s.engine);
+    return {series_variants(engines)};
+}
+
+// One panel of the fragility plot: per series its curve, the ECDF of its records and its median's interval at 0.5.
+std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::size_t wall, const Styles& styles,
+                            const std::string& name, std::string& dat, std::size_t& block) {
+    double xmax = 0.0;
+    std::string cmd;
+    for (const SeriesMeasures& m : e.measures) {
+        if (m.wall != wall || !m.ida || !m.fit.fit.ok()) continue;
+        for (const compare::IdaRecord& r : m.records) xmax = std::max(xmax, r.im);
+        xmax = std::max(xmax, std::isfinite(m.fit.median.hi) ? m.fit.median.hi : 0.0);
+        const std::string style = styles.of(d, m.series);
+        dat += fmt::format("# wall {}: {}: collapse PGA [g], ECDF\n", gp_comment(e.walls[wall]),
+                           gp_comment(d.series[m.series].label));
+        for (const auto& [x, y] : ecdf(m)) dat += fmt::format("{} {}\n", gp_number(x), gp_number(y));
+        dat += fmt::format("\n\n# median [g], 0.5, median_lo, median_hi\n{} 0.5 {} {}\n\n\n",
+                           gp_number(m.fit.median.value), gp_number(m.fit.median.lo), gp_number(m.fit.median.hi));
+        cmd += fmt::format("{}norm(log(x/{})/{}) with lines {} title {}", cmd.empty() ? "plot " : ", \\\n     ",
+                           gp_number(m.fit.fit.median), gp_number(m.fit.fit.beta), style,
+                           gp_string(d.series[m.series].label));
+        cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points {} notitle", name, block, style);
+        cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:2:3:4 with xerrorbars {} notitle", name, block + 1,
+                           style);
+        block += 2;
+    }
+    if (cmd.empty()) return "set label 1 'no fit' at graph 0.5, graph 0.5 center\nplot [0:1][0:1] NaN notitle\n"
+                            "unset label 1\n";
+    return fmt::format("set xrange [0:{}]\nset yrange [0:1]\n", gp_number(kAxisMargin * xmax)) + cmd + "\n";
+}
+
+PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
+    const Styles styles = styles_of(d);
+    const PanelLayout layout = panel_layout(e.walls.size());
+    PlotScript s;
+    s.plot = {kEnsembleSection, "fragility",
+              "Collapse fragility: lognormal fit (line), records' collapse PGAs (points), 95 % bootstrap interval of "
+              "the median (bar at 0.5)",
+              false};
+    s.dat = "# " + gp_comment(s.plot.title) + "\n";
+    std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+                     "set xlabel 'PGA [g]'\nset ylabel 'P(collapse | PGA)'\nset samples 300\nset key bottom right\n" +
+                     layout_begin(layout, s.plot.title);
+    std::size_t block = 0;
+    std::vector<std::pair<std::string, std::string>> entries;
+    for (std::size_t w = 0; w < e.walls.size(); ++w)
+        gp += panel_begin(layout, e.walls[w]) + fragility_panel(d, e, w, styles, s.plot.name, s.dat, block);
+    for (std::size_t i = 0; i < d.series.size(); ++i)
+        if (!repeats_earlier(d, i)) entries.push_back({d.series[i].label, styles.of(d, i)});
+    s.gp = gp + layout_end(layout, entries);
+    return s;
+}
+
+PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
+    const Styles styles = styles_of(d);
+    const PanelLayout layout = panel_layout(e.walls.size());
+    PlotScript s;
+    s.plot = {kEnsembleSection, "stripes", "Share of records that overturned at each PGA level (95 % Wilson bars)",
+              false};
+    s.dat = "# " + gp_comment(s.plot.title) + "\n";
+    std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+                     "set xlabel 'PGA [g]'\nset ylabel 'share overturned'\nset key top left\n" +
+                     layout_begin(layout, s.plot.title);
+    std::size_t block = 0;
+    for (std::size_t w = 0; w < e.walls.size(); ++w) {
+        std::string cmd;
+        for (const SeriesMeasures& m : e.measures) {
+            if (m.wall != w || m.levels.empty()) continue;
+            s.dat += fmt::format("# {}: pga share lo hi runs\n", gp_comment(d.series[m.series].label));
+            for (const StripeShare& l : m.levels)
+                s.dat += fmt::format("{} {} {} {} {}\n", gp_number(l.pga), gp_number(l.share.value),
+                                     gp_number(l.share.lo), gp_number(l.share.hi), l.share.n);
+            s.dat += "\n\n";
+            cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} title {}",
+                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block++,
+                               styles.of(d, m.series), gp_string(d.series[m.series].label));
+        }
+        gp += panel_begin(layout, e.walls[w]) + "set yrange [-0.05:1.05]\n" +
+              (cmd.empty() ? "plot [0:1][0:1] NaN notitle\n" : cmd + "\n");
+    }
+    std::vector<std::pair<std::string, std::string>> entries;
+    for (std::size_t i = 0; i < d.series.size(); ++i)
+        if (!repeats_earlier(d, i)) entries.push_back({d.series[i].label, styles.of(d, i)});
+    s.gp = gp + layout_end(layout, entries);
+    return s;
+}
+
+std::string interval_text(const compare::Interval& i, const std::string& format) {
+    if (!std::isfinite(i.value)) return "-";
+    return fmt::format("{} [{}, {}]", fmt::format(fmt::runtime(format), i.value),
+                       std::isfinite(i.lo) ? fmt::format(fmt::runtime(format), i.lo) : "?",
+                       std::isfinite(i.hi) ? fmt::format(fmt::runtime(format), i.hi) : "?");
+}
+
+}  // namespace
+
+void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMeasures& e) {
+    out << "engine,assumptions,intensity,median,beta,median_lo,median_hi,beta_lo,beta_hi,records,collapsed,"
+           "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates\n";
+    for (const SeriesMeasures& m : e.measures) {
+        if (!m.ida) continue;
+        const compare::FitBootstrap& f = m.fit;
+        const bool ratio = !is_reference(e, m) && e.has_reference;
+        out << series_columns(d.series[m.series]) << ",pga_ida,"
+            << fmt::format("{},{},{},{},{},{},{},{},", csv_number(f.fit.median), csv_number(f.fit.beta),
+                           csv_number(f.median.lo), csv_number(f.median.hi), csv_number(f.beta.lo),
+                           csv_number(f.beta.hi), m.records.size(),
+                           std::count_if(m.records.begin(), m.records.end(),
+                                         [](const compare::IdaRecord& r) { return r.collapsed; }))
+            << fmt::format("{},{},{},", csv_number(ratio ? m.ratio.ratio.value : NAN),
+                           csv_number(ratio ? m.ratio.ratio.lo : NAN), csv_number(ratio ? m.ratio.ratio.hi : NAN))
+            << tail_columns(d, e, m) << fmt::format(",{},{}\n", kEnsembleSeed, kEnsembleReplicates);
+    }
+}
+
+void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMeasures& e) {
+    out << "engine,assumptions,measure,value,lo,hi,n,settings,wall,reference\n";
+    for (const SeriesMeasures& m : e.measures) {
+        const std::string head = series_columns(d.series[m.series]), tail = tail_columns(d, e, m);
+        const auto row = [&](const std::string& measure, const compare::Interval& i) {
+            out << head << ',' << csv_field(measure) << ',' << interval_columns(i) << ',' << tail << '\n';
+        };
+        const bool compared = e.has_reference && !is_reference(e, m);
+        if (m.stripes && compared) {
+            const compare::Quartiles& q = m.peak_ratio;
+            row("overturning_agreement", m.overturning);
+            row("peak_ratio_median", {q.median, q.q1, q.q3, q.n});
+            row("peak_ratio_q1", {q.q1, NAN, NAN, q.n});
+            row("peak_ratio_q3", {q.q3, NAN, NAN, q.n});
+            if (m.band) row("inside_band", {static_cast<double>(m.inside.inside), NAN, NAN, m.inside.runs});
+        }
+        if (m.ida && compared) row("fragility_median_ratio", {m.ratio.ratio.value, m.ratio.ratio.lo,
+                                                              m.ratio.ratio.hi, m.paired});
+        for (const StripeShare& l : m.levels) row("overturned_share_pga_" + pga_text(l.pga), l.share);
+    }
+}
+
+void add_ensemble_plots(const StudyData& d, const EnsembleMeasures& e, StudyPlots& out) {
+    if (!e.applies) return;
+    const bool fits = std::any_of(e.measures.begin(), e.measures.end(),
+                                  [](const SeriesMeasures& m) { return m.ida && m.fit.fit.ok(); });
+    const bool stripes = std::any_of(e.measures.begin(), e.measures.end(),
+                                     [](const SeriesMeasures& m) { return !m.levels.empty(); });
+    if (fits) out.scripts.push_back(fragility_plot(d, e));
+    if (stripes) out.scripts.push_back(stripes_plot(d, e));
+}
+
+void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const EnsembleMeasures& e) {
+    if (!e.applies) return;
+    b.push_back(heading(2, "Ensemble"));
+    b.push_back(paragraph(fmt::format(
+        "Each series against the reference, {} ({}), over the study's records (fragility.csv and agreement.csv hold "
+        "every number). Fragility: a lognormal fit to each record's collapse PGA, a record still standing at max_pga "
+        "right-censored there; 95 % percentile bootstrap intervals of {} resamples of the records (seed {}), the "
+        "ratio to the reference's median paired over the records both have. Overturning agreement: the share of "
+        "records x levels where the series and the reference agree (95 % Wilson interval). Inside band: the runs "
+        "whose peak lies within the reference's own spread under its perturbed repeats.",
+        e.has_reference ? d.series[e.reference].label : "none (the study ran no analytic series)",
+        e.preferred_reference ? "exact kinematics, whole-mechanism impact, unilateral roller"
+                              : "the first analytic series: the study did not run exact / whole-mechanism / unilateral",
+        kEnsembleReplicates, kEnsembleSeed)));
+    DocBlock t = table({"series", "wall", "fragility median [g]", "beta", "median / reference's",
+                        "overturning agreement", "inside band"},
+                       2);
+    for (const SeriesMeasures& m : e.measures) {
+        const bool compared = e.has_reference && !is_reference(e, m);
+        t.rows.push_back({{d.series[m.series].label + (is_reference(e, m) ? " (reference)" : "")},
+                          {e.walls[m.wall].empty() ? "-" : e.walls[m.wall]},
+                          {m.ida ? interval_text(m.fit.median, "{:.3g}") : "-"},
+                          {m.ida ? interval_text(m.fit.beta, "{:.2f}") : "-"},
+                          {m.ida && compared ? interval_text(m.ratio.ratio, "{:.3f}") : "-"},
+                          {m.stripes && compared ? interval_text(m.overturning, "{:.3f}") : "-"},
+                          {m.band && compared ? fmt::format("{} of {}", m.inside.inside, m.inside.runs) : "-"}});
+    }
+    b.push_back(t);
+}
+
+}  // namespace vssw::study
