@@ -281,23 +281,21 @@ TEST(StudyMeasure, RecordPeakIsTheModelsRunDirectly) {
     EXPECT_LT(value_of(t, "energy_balance_error", {}), SimulationOptions{}.energy_ceiling);
 }
 
-// A run that fails is rows with the reason, and the study goes on: the unilateral roller on a wall close to its lock
-// (h1/h 0.9) under El Centro at 1.1 g fails its energy ceiling in a flight off the roller (README, the runs that
-// still fail), while the bilateral model gives values.
+// A run that fails is rows with the reason, and the study goes on: a loose integrator tolerance (rtol 1e-2) on a wall
+// under a heavy overburden (h1/h 0.5, xi 2, from 0.5 alpha1) misses its energy ceiling 1e-6 by 70x, while the default
+// tolerance gives values.
 TEST(StudyMeasure, AFailingRunIsARowWithItsReason) {
     const TempDir dir;
-    const Grid grid(study_of(dir, "metrics = [\"peak_rotation\", \"overturned\"]\n[wall]\nheight = 4\n"
-                                  "thickness = 0.4\nhinge = 0.9\n[assumptions]\nkinematics = \"exact\"\n"
-                                  "impact = \"whole-mechanism\"\nroller = [\"bilateral\", \"unilateral\"]\n"
-                                  "[excitation]\nkind = \"record\"\nfile = \"" +
-                                      std::string(VSSW_DATA_DIR) + "/elcentro_chopra.txt\"\npga = 1.1\n"));
+    const Grid grid(study_of(dir, "metrics = [\"period\", \"peak_rotation\"]\n[wall]\nheight = 4\n"
+                                  "thickness = 0.4\nhinge = 0.5\nxi = 2\n[assumptions]\nkinematics = \"exact\"\n"
+                                  "[settings.analytic]\nrtol = [1e-10, 1e-2]\n[excitation]\nkind = \"free\"\n"
+                                  "theta0 = 0.5\n"));
     const ResultsTable t = run_into(grid, dir / "out");
     ASSERT_EQ(t.rows.size(), 4u);
-    const std::size_t status = t.column("status"), roller = t.column("roller"), warnings = t.column("warnings");
+    const std::size_t status = t.column("status"), settings = t.column("settings");
     for (const auto& row : t.rows) {
-        if (row[roller] == "bilateral") {
-            EXPECT_EQ(row[status], "ok");
-            EXPECT_NE(row[warnings].find("roller would have to pull"), std::string::npos) << row[warnings];
+        if (row[settings].find("rtol=0.01") == std::string::npos) {
+            EXPECT_EQ(row[status], "ok") << row[settings];
         } else {
             EXPECT_EQ(row[status].rfind("failed: ", 0), 0u);
             EXPECT_NE(row[status].find("energy balance"), std::string::npos) << row[status];
