@@ -17,22 +17,7 @@ constexpr double kSqrt2Pi = 2.50662827463100050242;  // sqrt(2 pi)
 
 Interval nan_interval(long n) { return {kNaN, kNaN, kNaN, n}; }
 
-// ln Phi(w), accurate in both tails: log1p(-Phi(-w)) above 0; below -35 (Phi(w) < 1e-267, near underflow) the
-// asymptotic series Phi(w) = phi(w)/|w| (1 - 1/w^2 + 3/w^4 - ...) (Abramowitz & Stegun 26.2.12), whose next term,
-// 15/w^6, is below 1e-8 of the sum there.
-double log_normal_cdf(double w) {
-    if (w > 0.0) return std::log1p(-normal_cdf(-w));
-    if (w > -35.0) return std::log(normal_cdf(w));
-    const double w2 = w * w;
-    return -0.5 * w2 - std::log(-w * kSqrt2Pi) + std::log1p(-1.0 / w2 + 3.0 / (w2 * w2));
-}
 
-// The inverse Mills ratio phi(w)/Phi(w), with the same asymptotic series below -35.
-double inverse_mills(double w) {
-    if (w > -35.0) return std::exp(-0.5 * w * w) / kSqrt2Pi / normal_cdf(w);
-    const double w2 = w * w;
-    return -w / (1.0 - 1.0 / w2 + 3.0 / (w2 * w2));
-}
 
 // Type-7 quantile of values already sorted, none NaN, at least one.
 double quantile_sorted(const std::vector<double>& x, double p) {
@@ -191,6 +176,29 @@ bool any_censored(const std::vector<IdaRecord>& records) {
     return std::any_of(records.begin(), records.end(), [](const IdaRecord& r) { return !r.collapsed; });
 }
 
+
+
+}  // namespace
+
+double normal_cdf(double z) { return 0.5 * std::erfc(-z / kSqrt2); }
+
+// ln Phi(w), accurate in both tails: log1p(-Phi(-w)) above 0; below -35 (Phi(w) < 1e-267, near underflow) the
+// asymptotic series Phi(w) = phi(w)/|w| (1 - 1/w^2 + 3/w^4 - ...) (Abramowitz & Stegun 26.2.12), whose next term,
+// 15/w^6, is below 1e-8 of the sum there.
+double log_normal_cdf(double w) {
+    if (w > 0.0) return std::log1p(-normal_cdf(-w));
+    if (w > -35.0) return std::log(normal_cdf(w));
+    const double w2 = w * w;
+    return -0.5 * w2 - std::log(-w * kSqrt2Pi) + std::log1p(-1.0 / w2 + 3.0 / (w2 * w2));
+}
+
+// The inverse Mills ratio phi(w)/Phi(w), with the same asymptotic series below -35.
+double inverse_mills(double w) {
+    if (w > -35.0) return std::exp(-0.5 * w * w) / kSqrt2Pi / normal_cdf(w);
+    const double w2 = w * w;
+    return -w / (1.0 - 1.0 / w2 + 3.0 / (w2 * w2));
+}
+
 // The percentile interval of replicate estimates around `value`.
 Interval percentile_interval(double value, std::vector<double> replicates, double confidence) {
     if (replicates.empty()) return nan_interval(0);
@@ -200,15 +208,11 @@ Interval percentile_interval(double value, std::vector<double> replicates, doubl
             static_cast<long>(replicates.size())};
 }
 
-void check_options(const BootstrapOptions& options) {
+void check_bootstrap_options(const BootstrapOptions& options) {
     require(options.replicates >= 1, "bootstrap replicates", "at least 1", options.replicates);
     require(options.confidence > 0.0 && options.confidence < 1.0, "bootstrap confidence", "in (0, 1)",
             options.confidence);
 }
-
-}  // namespace
-
-double normal_cdf(double z) { return 0.5 * std::erfc(-z / kSqrt2); }
 
 double normal_quantile(double p) {
     if (std::isnan(p) || p < 0.0 || p > 1.0) return kNaN;
@@ -287,7 +291,7 @@ std::uint64_t uniform_index(std::mt19937_64& rng, std::uint64_t n) {
 
 FitBootstrap bootstrap_fit(const std::vector<IdaRecord>& records, const BootstrapOptions& options) {
     check_records(records);
-    check_options(options);
+    check_bootstrap_options(options);
     FitBootstrap out;
     out.fit = fit_impl(records, false);
     if (!out.fit.ok()) {
@@ -319,7 +323,7 @@ RatioBootstrap bootstrap_median_ratio(const std::vector<IdaRecord>& engine, cons
             static_cast<double>(engine.size()));
     check_records(engine);
     check_records(reference);
-    check_options(options);
+    check_bootstrap_options(options);
     RatioBootstrap out;
     const LognormalFit engine_fit = fit_impl(engine, false);
     const LognormalFit reference_fit = fit_impl(reference, false);

@@ -30,6 +30,11 @@ double normal_cdf(double z);
 // the start, then Halley steps on normal_cdf to full double precision (for 0.975: 1.959963984540054).
 double normal_quantile(double p);
 
+// ln Phi(w) and the inverse Mills ratio phi(w)/Phi(w), accurate in both tails (below w = -35 by the asymptotic series
+// of Abramowitz & Stegun 26.2.12): what a likelihood of normal probabilities needs (also compare/stripe_fragility).
+double log_normal_cdf(double w);
+double inverse_mills(double w);
+
 // Wilson score interval for a proportion (Wilson 1927, JASA 22:209; Brown, Cai & DasGupta 2001, Stat. Sci. 16:101,
 // Eq. 4): with p = k/n and z = Phi^-1((1 + confidence)/2),
 //   centre = (p + z^2/(2n)) / (1 + z^2/n),  half = z / (1 + z^2/n) * sqrt(p (1 - p)/n + z^2/(4 n^2)),
@@ -89,6 +94,10 @@ struct BootstrapOptions {
     double confidence = 0.95;
     std::uint64_t seed = 20150401;  // std::mt19937_64's seed
 };
+// The percentile interval of bootstrap replicates' estimates around `value` (type-7 quantiles at (1 -/+ confidence)
+// / 2; NaN with n 0 for none); InputError unless replicates >= 1 and 0 < confidence < 1.
+Interval percentile_interval(double value, std::vector<double> replicates, double confidence);
+void check_bootstrap_options(const BootstrapOptions& options);
 struct FitBootstrap {
     LognormalFit fit;  // the fit to all records (the intervals' values)
     Interval median;   // [unit of IM]

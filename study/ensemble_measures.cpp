@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "compare/stripe_fragility.hpp"
 #include "study/plot_panels.hpp"
 #include "study/spec.hpp"
 
@@ -34,6 +35,7 @@ struct Columns {
     std::size_t file, pga, perturbation, max_pga;
     std::vector<std::size_t> cleared, wall;
     std::size_t peak_metric, overturned_metric, collapse_metric;
+    std::size_t scale = std::string::npos;
 };
 
 std::size_t metric_index(const StudyData& d, const std::string& name) {
@@ -48,6 +50,9 @@ Columns columns_of(const StudyData& d) {
     for (std::size_t a : d.assumption_columns)
         if (a != std::string::npos) c.cleared.push_back(a);
     if (c.perturbation != std::string::npos) c.cleared.push_back(c.perturbation);
+    // The scale follows from the file and the pga (and differs on a perturbed repeat): not part of a run's key.
+    c.scale = d.column("scale");
+    if (c.scale != std::string::npos) c.cleared.push_back(c.scale);
     for (std::size_t i = 0; i < d.columns.size(); ++i)
         if (std::find(kWallKeys.begin(), kWallKeys.end(), d.columns[i].key) != kWallKeys.end()) c.wall.push_back(i);
     return c;
@@ -159,10 +164,57 @@ void measure_ida(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* re
         if (wall_of(c, key) == wall) m.left_out += n;
     m.ida = !m.records.empty() || m.left_out > 0;
     if (!m.ida) return;
+    m.intensity = "pga_ida";
     m.fit = compare::bootstrap_fit(m.records, bootstrap_options());
     m.paired = static_cast<long>(engine.size());
     m.ratio.ratio = {NAN, NAN, NAN, 0};
     if (reference && !engine.empty()) m.ratio = compare::bootstrap_median_ratio(engine, ref, bootstrap_options());
+}
+
+// Each record's overturning at each nominal PGA level of the wall (1, 0, or -1 for no result), keyed by the run with
+// its pga cleared.
+std::map<Key, compare::StripeOutcomes> stripe_outcomes(const SeriesRuns& runs, const Key& wall,
+                                                       const std::vector<std::uint32_t>& levels, const Columns& c) {
+    std::map<Key, compare::StripeOutcomes> out;
+    for (const auto& [key, over] : runs.overturned) {
+        if (wall_of(c, key) != wall) continue;
+        Key record = key;  // the run without its level
+        record[c.pga] = kEmptyLevel;
+        compare::StripeOutcomes& o = out.try_emplace(record, levels.size(), -1).first->second;
+        const auto at = std::find(levels.begin(), levels.end(), key[c.pga]);
+        if (at != levels.end() && std::isfinite(over)) o[static_cast<std::size_t>(at - levels.begin())] = over > 0.5;
+    }
+    return out;
+}
+
+// The stripes' lognormal fit and, against the reference, the paired ratio of medians over the records both ran.
+void fit_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
+                 const StudyData& d, const Columns& c) {
+    const std::vector<std::uint32_t>& order = d.columns[c.pga].order;
+    std::vector<std::uint32_t> levels;
+    std::vector<double> pga;
+    for (std::uint32_t l : order)
+        if (l != kEmptyLevel && std::isfinite(d.columns[c.pga].values[l]) && d.columns[c.pga].values[l] > 0.0) {
+            levels.push_back(l);
+            pga.push_back(d.columns[c.pga].values[l]);
+        }
+    const auto own = stripe_outcomes(runs, wall, levels, c);
+    std::vector<compare::StripeOutcomes> records, engine, ref;
+    const auto theirs = reference ? stripe_outcomes(*reference, wall, levels, c) : decltype(own){};
+    for (const auto& [key, o] : own) {
+        records.push_back(o);
+        const auto it = theirs.find(key);
+        if (it == theirs.end()) continue;
+        engine.push_back(o);
+        ref.push_back(it->second);
+    }
+    if (records.empty() || pga.size() < 2) return;
+    m.intensity = "pga_stripes";
+    m.fit = compare::bootstrap_stripes(pga, records, bootstrap_options());
+    m.paired = static_cast<long>(engine.size());
+    m.ratio.ratio = {NAN, NAN, NAN, 0};
+    if (reference && !engine.empty())
+        m.ratio = compare::bootstrap_stripe_median_ratio(pga, engine, ref, bootstrap_options());
 }
 
 void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
@@ -203,6 +255,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     m.band = !band.empty();
     if (m.band) m.inside = compare::count_inside_band(band);
     if (c.pga == std::string::npos) return;
+    if (!m.ida) fit_stripes(m, runs, reference, wall, d, c);
     for (std::uint32_t l : d.columns[c.pga].order) {
         const auto it = per_level.find(l);
         if (it == per_level.end()) continue;

@@ -8,7 +8,8 @@
 //  - Stripes (kind record, file x pga): overturning agreement with the reference over records x levels (Wilson 95 %),
 //    the engine peak / reference peak where both stand (median, quartiles), the runs inside the reference's
 //    sensitivity band when the study has a `perturbation` column (rows other than "none" only build the band), and
-//    per level the share of runs that overturned (a stripe fragility, Wilson intervals).
+//    per level the share of runs that overturned (Wilson intervals), and a lognormal fit to those shares with its
+//    bootstrap over records and the paired ratio of its median to the reference's (compare/stripe_fragility.hpp).
 //  - IDA (kind scale-to-collapse): per record its collapse_pga; a record that did not overturn up to max_pga (status
 //    "failed: does not overturn up to a PGA of X g (max_pga)", study/measure.cpp) is right-censored at the max_pga
 //    column's value, else at the X of that status. A lognormal fit with bootstrap intervals, and the paired bootstrap
@@ -39,13 +40,17 @@ struct StripeShare {
 struct SeriesMeasures {
     std::size_t series = 0;  // in StudyData::series
     std::size_t wall = 0;    // in EnsembleMeasures::walls
+    // The fragility fit: "pga_ida" (each record's collapse PGA), "pga_stripes" (the maximum likelihood over the stripes'
+    // overturning counts, compare/stripe_fragility.hpp; when the series has no IDA), "" when none was attempted.
+    std::string intensity;
+    bool fitted() const { return !intensity.empty(); }
+    compare::FitBootstrap fit;
+    compare::RatioBootstrap ratio;  // against the reference over the records both have (NaN for the reference)
+    long paired = 0;                // those records
     // IDA: one record per (file and the other excitation levels), in the results' order; failed rows left out.
     bool ida = false;
     std::vector<compare::IdaRecord> records;
     long left_out = 0;
-    compare::FitBootstrap fit;
-    compare::RatioBootstrap ratio;  // against the reference over the records both have (NaN for the reference)
-    long paired = 0;                // those records
     // Stripes.
     bool stripes = false;
     compare::Interval overturning{};  // share of runs where it and the reference agree on overturning

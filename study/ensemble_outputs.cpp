@@ -47,6 +47,13 @@ bool is_reference(const EnsembleMeasures& e, const SeriesMeasures& m) {
 std::string pga_text(double pga) { return fmt::format("{:.6g}", pga); }
 
 // The ECDF of a series' collapse PGAs: the collapsed records' PGAs sorted, each at its rank over all records.
+// A stripe fit's points: each level's share overturned.
+std::vector<std::pair<double, double>> stripe_points(const SeriesMeasures& m) {
+    std::vector<std::pair<double, double>> out;
+    for (const StripeShare& l : m.levels) out.push_back({l.pga, l.share.value});
+    return out;
+}
+
 std::vector<std::pair<double, double>> ecdf(const SeriesMeasures& m) {
     std::vector<double> x;
     for (const compare::IdaRecord& r : m.records)
@@ -77,13 +84,15 @@ std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::
     double xmax = 0.0;
     std::string cmd;
     for (const SeriesMeasures& m : e.measures) {
-        if (m.wall != wall || !m.ida || !m.fit.fit.ok()) continue;
+        if (m.wall != wall || !m.fitted() || !m.fit.fit.ok()) continue;
         for (const compare::IdaRecord& r : m.records) xmax = std::max(xmax, r.im);
+        for (const StripeShare& l : m.levels) xmax = std::max(xmax, l.pga);
         xmax = std::max(xmax, std::isfinite(m.fit.median.hi) ? m.fit.median.hi : 0.0);
         const std::string style = styles.of(d, m.series);
-        dat += fmt::format("# wall {}: {}: collapse PGA [g], ECDF\n", gp_comment(e.walls[wall]),
-                           gp_comment(d.series[m.series].label));
-        for (const auto& [x, y] : ecdf(m)) dat += fmt::format("{} {}\n", gp_number(x), gp_number(y));
+        dat += fmt::format("# wall {}: {}: {}\n", gp_comment(e.walls[wall]), gp_comment(d.series[m.series].label),
+                           m.ida ? "collapse PGA [g], ECDF" : "stripe PGA [g], share overturned");
+        for (const auto& [x, y] : m.ida ? ecdf(m) : stripe_points(m))
+            dat += fmt::format("{} {}\n", gp_number(x), gp_number(y));
         dat += fmt::format("\n\n# median [g], 0.5, median_lo, median_hi\n{} 0.5 {} {}\n\n\n",
                            gp_number(m.fit.median.value), gp_number(m.fit.median.lo), gp_number(m.fit.median.hi));
         cmd += fmt::format("{}norm(log(x/{})/{}) with lines {} title {}", cmd.empty() ? "plot " : ", \\\n     ",
@@ -104,8 +113,8 @@ PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
     const PanelLayout layout = panel_layout(e.walls.size());
     PlotScript s;
     s.plot = {kEnsembleSection, "fragility",
-              "Collapse fragility: lognormal fit (line), records' collapse PGAs (points), 95 % bootstrap interval of "
-              "the median (bar at 0.5)",
+              "Collapse fragility: lognormal fit (line), records' collapse PGAs or stripes' shares overturned "
+              "(points), 95 % bootstrap interval of the median (bar at 0.5)",
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
@@ -168,15 +177,13 @@ void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMe
     out << "engine,assumptions,intensity,median,beta,median_lo,median_hi,beta_lo,beta_hi,records,collapsed,"
            "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates\n";
     for (const SeriesMeasures& m : e.measures) {
-        if (!m.ida) continue;
+        if (!m.fitted()) continue;
         const compare::FitBootstrap& f = m.fit;
         const bool ratio = !is_reference(e, m) && e.has_reference;
-        out << series_columns(d.series[m.series]) << ",pga_ida,"
+        out << series_columns(d.series[m.series]) << ',' << m.intensity << ','
             << fmt::format("{},{},{},{},{},{},{},{},", csv_number(f.fit.median), csv_number(f.fit.beta),
                            csv_number(f.median.lo), csv_number(f.median.hi), csv_number(f.beta.lo),
-                           csv_number(f.beta.hi), m.records.size(),
-                           std::count_if(m.records.begin(), m.records.end(),
-                                         [](const compare::IdaRecord& r) { return r.collapsed; }))
+                           csv_number(f.beta.hi), f.fit.records, f.fit.collapsed)
             << fmt::format("{},{},{},", csv_number(ratio ? m.ratio.ratio.value : NAN),
                            csv_number(ratio ? m.ratio.ratio.lo : NAN), csv_number(ratio ? m.ratio.ratio.hi : NAN))
             << tail_columns(d, e, m) << fmt::format(",{},{}\n", kEnsembleSeed, kEnsembleReplicates);
@@ -199,7 +206,7 @@ void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMe
             row("peak_ratio_q3", {q.q3, NAN, NAN, q.n});
             if (m.band) row("inside_band", {static_cast<double>(m.inside.inside), NAN, NAN, m.inside.runs});
         }
-        if (m.ida && compared) row("fragility_median_ratio", {m.ratio.ratio.value, m.ratio.ratio.lo,
+        if (m.fitted() && compared) row("fragility_median_ratio", {m.ratio.ratio.value, m.ratio.ratio.lo,
                                                               m.ratio.ratio.hi, m.paired});
         for (const StripeShare& l : m.levels) row("overturned_share_pga_" + pga_text(l.pga), l.share);
     }
@@ -208,7 +215,7 @@ void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMe
 void add_ensemble_plots(const StudyData& d, const EnsembleMeasures& e, StudyPlots& out) {
     if (!e.applies) return;
     const bool fits = std::any_of(e.measures.begin(), e.measures.end(),
-                                  [](const SeriesMeasures& m) { return m.ida && m.fit.fit.ok(); });
+                                  [](const SeriesMeasures& m) { return m.fitted() && m.fit.fit.ok(); });
     const bool stripes = std::any_of(e.measures.begin(), e.measures.end(),
                                      [](const SeriesMeasures& m) { return !m.levels.empty(); });
     if (fits) out.scripts.push_back(fragility_plot(d, e));
@@ -220,8 +227,8 @@ void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const En
     b.push_back(heading(2, "Ensemble"));
     b.push_back(paragraph(fmt::format(
         "Each series against the reference, {} ({}), over the study's records (fragility.csv and agreement.csv hold "
-        "every number). Fragility: a lognormal fit to each record's collapse PGA, a record still standing at max_pga "
-        "right-censored there; 95 % percentile bootstrap intervals of {} resamples of the records (seed {}), the "
+        "every number). Fragility: a lognormal fit to each record's collapse PGA (IDA), a record still standing at "
+        "max_pga right-censored there, or to the stripes' overturning counts by maximum likelihood; 95 % percentile bootstrap intervals of {} resamples of the records (seed {}), the "
         "ratio to the reference's median paired over the records both have. Overturning agreement: the share of "
         "records x levels where the series and the reference agree (95 % Wilson interval). Inside band: the runs "
         "whose peak lies within the reference's own spread under its perturbed repeats.",
@@ -236,9 +243,9 @@ void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const En
         const bool compared = e.has_reference && !is_reference(e, m);
         t.rows.push_back({{d.series[m.series].label + (is_reference(e, m) ? " (reference)" : "")},
                           {e.walls[m.wall].empty() ? "-" : e.walls[m.wall]},
-                          {m.ida ? interval_text(m.fit.median, "{:.3g}") : "-"},
-                          {m.ida ? interval_text(m.fit.beta, "{:.2f}") : "-"},
-                          {m.ida && compared ? interval_text(m.ratio.ratio, "{:.3f}") : "-"},
+                          {m.fitted() ? interval_text(m.fit.median, "{:.3g}") : "-"},
+                          {m.fitted() ? interval_text(m.fit.beta, "{:.2f}") : "-"},
+                          {m.fitted() && compared ? interval_text(m.ratio.ratio, "{:.3f}") : "-"},
                           {m.stripes && compared ? interval_text(m.overturning, "{:.3f}") : "-"},
                           {m.band && compared ? fmt::format("{} of {}", m.inside.inside, m.inside.runs) : "-"}});
     }

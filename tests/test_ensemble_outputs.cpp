@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "io/csv.hpp"
+#include "compare/ensemble_statistics.hpp"
 #include "study/ensemble_outputs.hpp"
 #include "study/grid.hpp"
 #include "study/merge.hpp"
@@ -168,6 +169,34 @@ TEST_F(EnsembleStudy, FragilityIsTheLogMomentsOfTheCollapsePgas) {
         }
     }
     EXPECT_TRUE(seen_eq19 && seen_reference);
+}
+
+// A stripes-only study at two levels (0.6 and 0.8 g): the maximum likelihood fit passes through both shares
+// overturned (1 of 4, then 2 of 4, for both impact laws), ln(x_j / theta) / beta = Phi^-1(share_j), solved here.
+TEST(EnsembleStripes, FragilityPassesThroughTheTwoStripesShares) {
+    constexpr double kNewtonRoundOff = 1e-9;  // the fit's Newton stops at a log-likelihood gain of 1e-12
+    const TempDir dir{TempDir::test_name()};
+    std::string toml = study_toml();
+    toml = toml.substr(0, toml.find("[[part]]", toml.find("[[part]]") + 1));  // the stripe part alone
+    toml.replace(toml.find("pga = [0.2, 0.4, 0.6]"), 21, "pga = [0.6, 0.8]");
+    std::ofstream(dir.path / "s.toml") << toml;
+    const st::Grid grid(st::read_study_file((dir.path / "s.toml").string()));
+    write_study(dir.path / "out", grid);
+    st::write_study_outputs(dir.path / "out", {true, "/nonexistent/gnuplot"});
+    const double u1 = vssw::compare::normal_quantile(0.25), u2 = vssw::compare::normal_quantile(0.5);
+    const double beta = std::log(0.8 / 0.6) / (u2 - u1), median = 0.6 * std::exp(-beta * u1);
+    const Table fragility = read_table(dir.path / "out" / st::kFragilityCsv);
+    ASSERT_EQ(fragility.size(), 2u);
+    for (const auto& row : fragility) {
+        EXPECT_EQ(row.at("intensity"), "pga_stripes");
+        EXPECT_EQ(row.at("records"), "4");
+        EXPECT_EQ(row.at("collapsed"), "3");  // runs overturned over both stripes
+        EXPECT_NEAR(std::stod(row.at("median")), median, kNewtonRoundOff);
+        EXPECT_NEAR(std::stod(row.at("beta")), beta, kNewtonRoundOff);
+        if (!row.at("median_ratio").empty()) {
+            EXPECT_EQ(std::stod(row.at("median_ratio")), 1.0);  // the same shares
+        }
+    }
 }
 
 TEST_F(EnsembleStudy, OverturningAgreementIsTheCountWithItsWilsonInterval) {

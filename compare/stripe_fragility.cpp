@@ -1,0 +1,205 @@
+#include "compare/stripe_fragility.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "analytic/error.hpp"
+
+namespace vssw::compare {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kNewtonIterations = 200;
+// Newton stops when the predicted gain of ln L (the Newton decrement's half square) is this small: ln L is a sum of
+// counts times logs of order 1-100, so 1e-12 is round-off.
+constexpr double kDecrement = 1e-12;
+constexpr const char* kSeparated =
+    "the stripes separate (every run below a level stands, every run from it collapses): no finite beta";
+
+// The counts the likelihood needs: per level ln x_j, runs n_j and collapses z_j.
+struct Stripes {
+    std::vector<double> log_level;
+    std::vector<double> runs, collapsed;
+};
+
+Stripes count(const std::vector<double>& levels, const std::vector<StripeOutcomes>& records) {
+    Stripes s;
+    s.runs.assign(levels.size(), 0.0);
+    s.collapsed.assign(levels.size(), 0.0);
+    for (double x : levels) s.log_level.push_back(std::log(x));
+    for (const StripeOutcomes& r : records)
+        for (std::size_t j = 0; j < levels.size(); ++j) {
+            if (r[j] < 0) continue;
+            s.runs[j] += 1.0;
+            s.collapsed[j] += r[j] > 0 ? 1.0 : 0.0;
+        }
+    return s;
+}
+
+// ln L and its gradient and Hessian in (gamma, delta), u_j = gamma ln x_j - delta.
+struct Local {
+    double value = 0.0, g_gamma = 0.0, g_delta = 0.0, h_gg = 0.0, h_gd = 0.0, h_dd = 0.0;
+};
+Local local(const Stripes& s, double gamma, double delta) {
+    Local l;
+    for (std::size_t j = 0; j < s.runs.size(); ++j) {
+        if (s.runs[j] == 0.0) continue;
+        const double u = gamma * s.log_level[j] - delta, z = s.collapsed[j], stood = s.runs[j] - z;
+        l.value += z * log_normal_cdf(u) + stood * log_normal_cdf(-u);
+        const double up = inverse_mills(u), down = inverse_mills(-u);  // phi/Phi(u), phi/Phi(-u)
+        const double d1 = z * up - stood * down;                            // d lnL / du
+        const double d2 = -z * up * (up + u) - stood * down * (down - u);  // d2 lnL / du2 (< 0)
+        const double x = s.log_level[j];
+        l.g_gamma += d1 * x;
+        l.g_delta -= d1;
+        l.h_gg += d2 * x * x;
+        l.h_gd -= d2 * x;
+        l.h_dd += d2;
+    }
+    return l;
+}
+
+LognormalFit not_fitted(LognormalFit fit, const std::string& why) {
+    fit.median = fit.beta = kNaN;
+    fit.reason = why;
+    return fit;
+}
+
+LognormalFit fit(const std::vector<double>& levels, const std::vector<StripeOutcomes>& records) {
+    LognormalFit out;
+    out.censored_mle = false;
+    const Stripes s = count(levels, records);
+    double runs = 0.0, collapsed = 0.0, mean_log = 0.0;
+    for (std::size_t j = 0; j < s.runs.size(); ++j) {
+        runs += s.runs[j];
+        collapsed += s.collapsed[j];
+        mean_log += s.runs[j] * s.log_level[j];
+    }
+    for (const StripeOutcomes& r : records)
+        for (int o : r)
+            if (o >= 0) {
+                ++out.records;
+                break;
+            }
+    out.collapsed = static_cast<long>(collapsed);
+    if (collapsed == 0.0 || collapsed == runs)
+        return not_fitted(out, collapsed == 0.0 ? "no run collapsed" : "every run collapsed");
+    // A finite maximum needs the outcomes to overlap: some run standing at a higher level than some run collapsing.
+    // Otherwise (every run up to a level stands, every run from it collapses) ln L climbs for ever as beta -> 0.
+    double lowest_collapse = HUGE_VAL, highest_standing = -HUGE_VAL;
+    for (std::size_t j = 0; j < s.runs.size(); ++j) {
+        if (s.collapsed[j] > 0.0) lowest_collapse = std::min(lowest_collapse, s.log_level[j]);
+        if (s.collapsed[j] < s.runs[j]) highest_standing = std::max(highest_standing, s.log_level[j]);
+    }
+    if (!(highest_standing > lowest_collapse)) return not_fitted(out, kSeparated);
+    // Start at beta 0.5 and the median at the runs' mean log level; Newton with backtracking on the concave ln L.
+    double gamma = 2.0, delta = gamma * mean_log / runs;
+    Local l = local(s, gamma, delta);
+    for (int i = 0; i < kNewtonIterations; ++i) {
+        const double det = l.h_gg * l.h_dd - l.h_gd * l.h_gd;
+        if (!(det > 0.0)) break;
+        const double step_g = -(l.h_dd * l.g_gamma - l.h_gd * l.g_delta) / det;
+        const double step_d = -(-l.h_gd * l.g_gamma + l.h_gg * l.g_delta) / det;
+        const double decrement = 0.5 * (l.g_gamma * step_g + l.g_delta * step_d);
+        if (decrement < kDecrement) {
+            if (!(gamma > 0.0)) return not_fitted(out, "the share collapsed falls as the intensity rises");
+            out.median = std::exp(delta / gamma);
+            out.beta = 1.0 / gamma;
+            return out;
+        }
+        double t = 1.0;
+        Local next = local(s, gamma + t * step_g, delta + t * step_d);
+        while (!(next.value >= l.value) && t > 1e-12) {
+            t *= 0.5;
+            next = local(s, gamma + t * step_g, delta + t * step_d);
+        }
+        gamma += t * step_g;
+        delta += t * step_d;
+        l = next;
+    }
+    return not_fitted(out, "the likelihood's maximum was not found in " + std::to_string(kNewtonIterations) +
+                               " Newton steps");
+}
+
+void check(const std::vector<double>& levels, const std::vector<StripeOutcomes>& records) {
+    for (double x : levels) require(std::isfinite(x) && x > 0.0, "a stripe's intensity", "finite and positive", x);
+    for (const StripeOutcomes& r : records)
+        require(r.size() == levels.size(), "a record's stripe outcomes", "one per level",
+                static_cast<double>(r.size()));
+}
+
+}  // namespace
+
+LognormalFit fit_lognormal_stripes(const std::vector<double>& levels, const std::vector<StripeOutcomes>& records) {
+    check(levels, records);
+    return fit(levels, records);
+}
+
+FitBootstrap bootstrap_stripes(const std::vector<double>& levels, const std::vector<StripeOutcomes>& records,
+                               const BootstrapOptions& options) {
+    check(levels, records);
+    check_bootstrap_options(options);
+    FitBootstrap out;
+    out.fit = fit(levels, records);
+    if (!out.fit.ok()) {
+        out.median = out.beta = {kNaN, kNaN, kNaN, 0};
+        return out;
+    }
+    std::mt19937_64 rng(options.seed);
+    std::vector<StripeOutcomes> sample(records.size());
+    std::vector<double> medians, betas;
+    for (int b = 0; b < options.replicates; ++b) {
+        for (StripeOutcomes& r : sample) r = records[uniform_index(rng, records.size())];
+        const LognormalFit f = fit(levels, sample);
+        if (!f.ok()) {
+            ++out.failed;
+            continue;
+        }
+        medians.push_back(f.median);
+        betas.push_back(f.beta);
+    }
+    out.median = percentile_interval(out.fit.median, std::move(medians), options.confidence);
+    out.beta = percentile_interval(out.fit.beta, std::move(betas), options.confidence);
+    return out;
+}
+
+RatioBootstrap bootstrap_stripe_median_ratio(const std::vector<double>& levels,
+                                             const std::vector<StripeOutcomes>& engine,
+                                             const std::vector<StripeOutcomes>& reference,
+                                             const BootstrapOptions& options) {
+    require(engine.size() == reference.size(), "the engine's record count", "the reference's",
+            static_cast<double>(engine.size()));
+    check(levels, engine);
+    check(levels, reference);
+    check_bootstrap_options(options);
+    RatioBootstrap out;
+    const LognormalFit e = fit(levels, engine), r = fit(levels, reference);
+    if (!e.ok() || !r.ok()) {
+        out.ratio = {kNaN, kNaN, kNaN, 0};
+        return out;
+    }
+    std::mt19937_64 rng(options.seed);
+    const std::size_t n = engine.size();
+    std::vector<StripeOutcomes> engine_sample(n), reference_sample(n);
+    std::vector<double> ratios;
+    for (int b = 0; b < options.replicates; ++b) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint64_t pick = uniform_index(rng, n);
+            engine_sample[i] = engine[pick];
+            reference_sample[i] = reference[pick];
+        }
+        const LognormalFit fe = fit(levels, engine_sample), fr = fit(levels, reference_sample);
+        if (!fe.ok() || !fr.ok()) {
+            ++out.failed;
+            continue;
+        }
+        ratios.push_back(fe.median / fr.median);
+    }
+    out.ratio = percentile_interval(e.median / r.median, std::move(ratios), options.confidence);
+    return out;
+}
+
+}  // namespace vssw::compare
