@@ -32,7 +32,7 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "file",  "scale",     "pga",       "shape",  "amplitude",
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "units", "duration",
-                                                "tolerance", "max_pga", "step"};
+                                                "tolerance", "max_pga", "step", "perturbation"};
 // Then wall_name and record_name when a part names its walls or records, then settings.
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : std::string(); }
@@ -81,8 +81,12 @@ std::string settings_text(const std::vector<Axis>& axes, const std::vector<Level
     return text;
 }
 
-// The key of a record read with given units ("" for the file's own): one file may be read in two parts' units.
+// The key of a record read with given units ("" for the file's own): one file may be read in two parts' units. The
+// band's record without its first sample is a record of its own.
 std::string record_key(const std::string& file, const std::string& units) { return file + "\n" + units; }
+std::string dropped_key(const std::string& key) { return key + "\ndrop-first"; }
+
+bool perturbed(const CaseSpec& c) { return !c.perturbation.empty() && c.perturbation != "none"; }
 
 std::string read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -174,12 +178,22 @@ void Grid::read_records(std::string& identity_text) {
             units = parse_units(as_word(u->levels.front()));
         }
         const std::string units_text = units ? as_word(part.excitation_axis("units")->levels.front()) : "";
+        const bool band = part.excitation_axis("perturbation") != nullptr;
         for (const Level& f : files->levels) {
             const std::string key = record_key(as_word(f), units_text);
-            if (records_.count(key)) continue;
+            if (records_.count(key)) {
+                if (band && !records_.count(dropped_key(key)))
+                    records_.emplace(dropped_key(key), records_.at(key).drop_first_sample());
+                continue;
+            }
             try {
                 GroundMotion r = read_record(record_path(as_word(f)), units ? &*units : nullptr);
                 require_shakes(r, as_word(f));
+                if (band) {
+                    GroundMotion dropped = r.drop_first_sample();
+                    require_shakes(dropped, as_word(f) + " without its first sample");
+                    records_.emplace(dropped_key(key), std::move(dropped));
+                }
                 records_.emplace(key, std::move(r));
             } catch (const InputError& e) {
                 throw InputError(fmt::format("{}: {}", where(part, "excitation.file"), e.what()));
@@ -228,6 +242,13 @@ void Grid::build_runs() {
                 }
         }
     }
+    for (const PartSpec& part : spec_.parts)
+        if (part.excitation_axis("perturbation") &&
+            std::any_of(part.engines.begin(), part.engines.end(), [](const EngineSpec& e) { return e.name != "analytic"; }))
+            skipped_runs_.push_back(fmt::format(
+                "the sensitivity band's perturbed cases (PGA x (1 +- {:g}), the record without its first sample): the "
+                "analytic model's only; engines run each case unperturbed",
+                kBandStep));
     std::sort(skipped_runs_.begin(), skipped_runs_.end());
     skipped_runs_.erase(std::unique(skipped_runs_.begin(), skipped_runs_.end()), skipped_runs_.end());
     if (runs_.empty())
@@ -398,12 +419,17 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
 // The record (scaled by the factor given or to the PGA given) or the pulse, and scale-to-collapse's search bounds.
 void Grid::set_excitation(CaseSpec& c, const CaseLevels& l) const {
     const PartSpec& part = spec_.parts[c.part];
+    if (l.has("perturbation")) c.perturbation = l.word("perturbation");
     if (l.has("file")) {
         c.file = l.word("file");
         c.record_key = record_key(c.file, part.excitation_axis("units")
                                               ? as_word(part.excitation_axis("units")->levels.front())
                                               : "");
-        const std::optional<double> pga = l.has("pga") ? std::optional(l.num("pga", 0.0)) : std::nullopt;
+        std::optional<double> pga = l.has("pga") ? std::optional(l.num("pga", 0.0)) : std::nullopt;
+        // The band (an ensemble's stripes, so a PGA is given): the level nudged, or the record one sample earlier.
+        if (pga && c.perturbation == "pga+1e-3") *pga *= 1.0 + kBandStep;
+        if (pga && c.perturbation == "pga-1e-3") *pga *= 1.0 - kBandStep;
+        if (c.perturbation == "drop-first") c.record_key = dropped_key(c.record_key);
         scale_record(c, record(c), pga, l.num("scale", 1.0));
     }
     if (l.has("shape")) c.shape = l.word("shape");
@@ -491,6 +517,7 @@ GroundMotion pulse_motion(const CaseSpec& c) {
 
 bool Grid::run_applies(const RunSpec& run, const CaseSpec& c) const {
     if (run.part != c.part) return false;
+    if (perturbed(c) && run.engine != "analytic") return false;  // the band is the analytic model's
     if (run.engine != "analytic" || c.model != "parapet") return true;
     // A parapet has neither a roller nor two kinematics: one analytic run per impact law stands for all.
     const auto it = parapet_run_.find(run.part);
@@ -537,7 +564,7 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
         else if (col == "kinematics") v.push_back(analytic && vssw ? to_text(run.assumptions[0]) : "");
         else if (col == "impact") v.push_back(analytic ? to_text(run.assumptions[1]) : "");
         else if (col == "roller") v.push_back(analytic && vssw ? to_text(run.assumptions[2]) : "");
-        else if (col == "kind") v.push_back(to_string(kind));
+        else if (col == "kind") v.push_back(part.kind_text());
         else if (col == "theta0") v.push_back(c.theta0 > 0.0 ? number(c.theta0) : "");
         else if (col == "file") v.push_back(c.file);
         else if (col == "scale") v.push_back(record_kind ? number(c.scale) : "");
@@ -618,7 +645,7 @@ std::string Grid::render(const std::string& tmpl, const CaseSpec& c, const char*
         if (name == "file" && !c.file.empty()) return c.file;
         if (name == "scale" && !c.file.empty()) return c.scale;
         if (name == "pga" && !c.file.empty()) return c.pga_g;
-        if (name == "kind") return std::string(to_string(part.kind));
+        if (name == "kind") return part.kind_text();
         return std::nullopt;
     };
     const auto fail = [&](const std::string& why) {

@@ -12,7 +12,8 @@
 // settings), or one engine under one combination of its settings. Engines ignore the assumptions (their physics is
 // their own), so each engine runs once per case, its assumption columns empty. The paper's kinematics with the
 // unilateral roller is not a model (the roller needs Eq. 2) and is not run (Grid::skipped_runs says so); on a parapet
-// only the first kinematics and roller levels run (it has neither).
+// only the first kinematics and roller levels run (it has neither). An ensemble's sensitivity band (spec.hpp) is the
+// analytic model's alone: its perturbed cases are not run by engines (run_applies; skipped_runs says so).
 #include <map>
 #include <memory>
 #include <optional>
@@ -59,6 +60,7 @@ struct CaseSpec {
     std::string shape;              // pulse
     double amplitude_g = 0.0, pulse_period = 0.0, duration = 0.0;  // pulse [g], [s], harmonic [s]
     double tolerance = 0.0, max_pga_g = 0.0, step = 0.0;  // scale-to-collapse; 0: the defaults (measure.cpp)
+    std::string perturbation;       // an ensemble's band: a kPerturbations level ("" without a band)
     // pulse, record, scale-to-collapse: how long a run goes on after the motion ends [s] (earlier at rest or
     // overturning): a study's answer, compare::kResponseTail; the validation suite's is kSuiteResponseTail
     // (compare/experiments.hpp says why two).

@@ -249,7 +249,7 @@ void require_runs_resolve(const Grid& grid, const std::vector<int>& case_ids) {
         const CaseSpec c = grid.make_case(id);
         for (std::size_t r = 0; r < grid.runs().size(); ++r) {
             const RunSpec& run = grid.runs()[r];
-            if (run.part != c.part || run.engine == "analytic") continue;
+            if (!grid.run_applies(run, c) || run.engine == "analytic") continue;
             const ExcitationKind kind = grid.spec().parts[c.part].kind;
             if (kind != ExcitationKind::pulse && kind != ExcitationKind::record &&
                 kind != ExcitationKind::scale_to_collapse)

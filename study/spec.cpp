@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <set>
 
@@ -11,6 +13,7 @@
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 #include "io/config_file.hpp"
+#include "io/csv.hpp"
 #include "study/metric_catalog.hpp"
 #include "compare/experiments.hpp"
 #include "multibody/analytic_engine.hpp"
@@ -23,7 +26,10 @@ const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thic
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "shape",    "amplitude", "pulse_period",
-                                                  "duration",     "tolerance", "max_pga",  "step"};
+                                                  "duration",     "tolerance", "max_pga",  "step",
+                                                  "perturbation"};
+// The names say the factors: kBandStep is 1e-3.
+const std::vector<std::string> kPerturbations = {"none", "pga+1e-3", "pga-1e-3", "drop-first"};
 
 namespace {
 
@@ -182,6 +188,7 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
         return u;
     }
     if (k == "shape") return r.word(v, key, {"sine", "cosine", "ricker", "harmonic"});
+    if (k == "perturbation") return r.word(v, key, kPerturbations);
     if (k == "theta0") {
         const double x = r.number(v, key, "a fraction of alpha");
         if (x < kMinTheta0) r.fail(key, fmt::format("must be at least {} (a fraction of alpha), got {}", kMinTheta0, v.dump()));
@@ -225,14 +232,116 @@ KindKeys kind_keys(ExcitationKind kind) {
 }
 
 ExcitationKind parse_kind(const Reader& r, const json& v, const std::string& key) {
-    const std::string k = r.word(v, key,
-                                 {"closed-form", "threshold", "free", "pulse", "record", "scale-to-collapse"});
+    // (An ensemble is read into a record or scale-to-collapse part before its kind is parsed: read_ensemble.)
+    const std::string k = r.word(
+        v, key, {"closed-form", "threshold", "free", "pulse", "record", "scale-to-collapse", "ensemble"});
     if (k == "closed-form") return ExcitationKind::closed_form;
     if (k == "threshold") return ExcitationKind::threshold;
     if (k == "free") return ExcitationKind::free;
     if (k == "pulse") return ExcitationKind::pulse;
     if (k == "record") return ExcitationKind::record;
     return ExcitationKind::scale_to_collapse;
+}
+
+// An ensemble folder's records: every file whose name ends in .at2 (any case), and every file a records.csv or
+// motions.csv in it lists in its `file` column (data/records/records.csv, vssw motions generate's motions.csv); each
+// once, sorted by name (byte order), each as the folder joined with its name (so relative to the study file's folder
+// when the folder is).
+std::vector<std::string> ensemble_files(const Reader& r, const std::string& key, const std::string& folder,
+                                        const std::string& base_dir) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(folder).is_absolute() ? fs::path(folder) : fs::path(base_dir) / folder;
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+        r.fail(key, fmt::format("no folder \"{}\" (looked for {})", folder, dir.string()));
+    std::set<std::string> names;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+        std::string ext = e.path().extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+        if (ext == ".at2" && e.is_regular_file(ec)) names.insert(e.path().filename().string());
+    }
+    if (ec) r.fail(key, fmt::format("cannot list the folder \"{}\": {}", folder, ec.message()));
+    for (const char* table : {"records.csv", "motions.csv"}) {
+        std::ifstream in(dir / table);
+        std::vector<std::string> fields;
+        if (!in || !read_csv_record(in, fields)) continue;
+        const auto column = std::find(fields.begin(), fields.end(), "file");
+        if (column == fields.end()) continue;
+        const std::size_t at = static_cast<std::size_t>(column - fields.begin());
+        while (read_csv_record(in, fields)) {
+            if (fields.size() <= at || fields[at].empty()) continue;
+            if (!fs::is_regular_file(dir / fields[at], ec))
+                r.fail(key, fmt::format("\"{}\" lists \"{}\", which is not a file in \"{}\"", table, fields[at],
+                                        folder));
+            names.insert(fields[at]);
+        }
+    }
+    if (names.empty())
+        r.fail(key, fmt::format("no records in \"{}\" (*.at2 files, or a records.csv or motions.csv naming them in "
+                                "its 'file' column)",
+                                folder));
+    std::vector<std::string> out;
+    for (const std::string& name : names) out.push_back((fs::path(folder) / name).generic_string());
+    return out;
+}
+
+const std::vector<std::string> kEnsembleKeys = {"kind",     "files",    "ensemble",  "intensity", "levels", "collapse",
+                                                "band",     "units",    "max_pga",   "tolerance", "step"};
+
+bool flag(const Reader& r, const json& ex, const std::string& ex_key, const char* name) {
+    if (!ex.contains(name)) return false;
+    if (!ex[name].is_boolean())
+        r.fail(ex_key + "." + name, fmt::format("must be true or false, got {}", ex[name].dump()));
+    return ex[name].get<bool>();
+}
+
+// kind = "ensemble" read into the record or scale-to-collapse excitation it stands for (spec.hpp): the records as
+// `file`, the levels as `pga`, band's `perturbation` axis; `e` says what it was.
+json read_ensemble(const Reader& r, const json& ex, const std::string& ex_key, const std::string& base_dir,
+                   EnsembleSpec& e) {
+    const auto key = [&](const char* k) { return ex_key + "." + k; };
+    r.unknown_keys(ex, ex_key + " (kind ensemble)", kEnsembleKeys);
+    if (ex.contains("files") == ex.contains("ensemble"))
+        r.fail(ex_key, "give the records one way: 'files' (a list of record files) or 'ensemble' (a folder of "
+                       "them), not both and not neither");
+    json out = json::object();
+    if (ex.contains("files")) {
+        const Axis files = r.axis(ex["files"], key("files"), [&](const json& v) -> Level {
+            if (!v.is_string() || v.get<std::string>().empty())
+                r.fail(key("files"), fmt::format("must list paths of record files, got {}", v.dump()));
+            return v.get<std::string>();
+        });
+        for (const Level& f : files.levels) out["file"].push_back(std::get<std::string>(f));
+    } else {
+        if (!ex["ensemble"].is_string() || ex["ensemble"].get<std::string>().empty())
+            r.fail(key("ensemble"), fmt::format("must be the path of a folder of records, got {}", ex["ensemble"].dump()));
+        e.folder = ex["ensemble"].get<std::string>();
+        out["file"] = ensemble_files(r, key("ensemble"), e.folder, base_dir);
+    }
+    if (!ex.contains("intensity")) r.fail(ex_key, "kind ensemble needs 'intensity' (\"pga\")");
+    e.intensity = r.word(ex["intensity"], key("intensity"), {"pga"});
+    e.collapse = flag(r, ex, ex_key, "collapse");
+    e.band = flag(r, ex, ex_key, "band");
+    if (ex.contains("levels") == e.collapse)
+        r.fail(ex_key, "give 'levels' (g: each record scaled to each level, a stripe analysis) or 'collapse = true' "
+                       "(each record scaled until the wall overturns, incremental dynamic analysis): one of them");
+    if (ex.contains("units")) out["units"] = ex["units"];
+    if (e.collapse) {
+        if (e.band) r.fail(key("band"), "is for a stripe analysis (levels), not collapse = true");
+        out["kind"] = "scale-to-collapse";
+        for (const char* k : {"max_pga", "tolerance", "step"})
+            if (ex.contains(k)) out[k] = ex[k];
+        return out;
+    }
+    for (const char* k : {"max_pga", "tolerance", "step"})
+        if (ex.contains(k)) r.fail(key(k), "is for collapse = true (a search for the overturning scale)");
+    out["kind"] = "record";
+    const Axis levels = r.axis(ex["levels"], key("levels"), [&](const json& v) -> Level {
+        return r.positive(v, key("levels"), "a PGA in g, > 0");
+    });
+    for (const Level& l : levels.levels) out["pga"].push_back(std::get<double>(l));
+    if (e.band) out["perturbation"] = kPerturbations;
+    return out;
 }
 
 // The wall's geometry must come one way: height and thickness, alpha and R, alpha1-alpha2-R1, or a specimen.
@@ -371,14 +480,21 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
     const auto key = [&](const std::string& k) { return where.empty() ? k : where + "." + k; };
 
     if (!t.contains("excitation")) r.fail(where, "no [excitation] table (kind = closed-form, threshold, free, ...)");
-    const json& ex = t["excitation"];
+    const json& given = t["excitation"];
     const std::string ex_key = key("excitation");
-    if (!ex.is_object()) r.fail(ex_key, fmt::format("must be a table of keys, got {}", ex.dump()));
-    if (!ex.contains("kind")) r.fail(ex_key, "'kind' is missing");
+    if (!given.is_object()) r.fail(ex_key, fmt::format("must be a table of keys, got {}", given.dump()));
+    if (!given.contains("kind")) r.fail(ex_key, "'kind' is missing");
+    json expanded;
+    if (given["kind"] == "ensemble") {
+        p.ensemble.emplace();
+        expanded = read_ensemble(r, given, ex_key, study.base_dir, *p.ensemble);
+    }
+    const json& ex = p.ensemble ? expanded : given;
     p.kind = parse_kind(r, ex["kind"], ex_key + ".kind");
     const KindKeys keys = kind_keys(p.kind);
     std::vector<std::string> known = {"kind"};
     known.insert(known.end(), keys.allowed.begin(), keys.allowed.end());
+    if (p.ensemble && p.ensemble->band) known.push_back("perturbation");
     r.unknown_keys(ex, fmt::format("{} (kind {})", ex_key, to_string(p.kind)), known);
     for (const std::string& k : keys.required)
         if (!ex.contains(k)) r.fail(ex_key, fmt::format("kind {} needs '{}'", to_string(p.kind), k));
@@ -502,10 +618,12 @@ const Axis* PartSpec::excitation_axis(const std::string& key) const {
     return nullptr;
 }
 
+std::string PartSpec::kind_text() const { return ensemble ? "ensemble" : to_string(kind); }
+
 std::string StudySpec::kind_text() const {
     for (const PartSpec& p : parts)
-        if (p.kind != parts.front().kind) return "mixed";
-    return parts.empty() ? "" : to_string(parts.front().kind);
+        if (p.kind_text() != parts.front().kind_text()) return "mixed";
+    return parts.empty() ? "" : parts.front().kind_text();
 }
 
 StudySpec study_from_json(const json& doc, const std::string& name, const std::string& base_dir) {

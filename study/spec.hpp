@@ -10,7 +10,7 @@
 //                   specimen: a Table 1 number, data/table1.csv)
 //   [assumptions]   kinematics (paper | exact), impact (eq19 | whole-mechanism | a number in [0, 1]),
 //                   roller (bilateral | unilateral): the analytic model's; engines ignore them
-//   [excitation]    kind = closed-form | threshold | free | pulse | record | scale-to-collapse, and its keys
+//   [excitation]    kind = closed-form | threshold | free | pulse | record | scale-to-collapse | ensemble, and its keys
 //   [settings.ode]  dt = 2e-4, iterations, knobs by name (a list varies them)
 //
 // A study may instead be several grids, each a [[part]] with its own [part.wall], [part.excitation] (any kind),
@@ -19,9 +19,19 @@
 // such as "t1-{specimen:02}-xi{xi}") and leave out the releases from which the analytic model falls
 // (skip_falling_releases): what a validation suite needs (studies/validation-default.toml; validation/suite_file.hpp).
 //
+// kind = "ensemble" is a record study over many records, read here into the kinds that run it: files = [...] (from the
+// study file's folder) or ensemble = "DIR" (DIR's *.at2 files, any case, and the files a records.csv or motions.csv
+// in DIR lists in its `file` column; each once, in name order), intensity = "pga", and levels = [g, ...] (a stripe
+// analysis: kind record with file x pga) or collapse = true (incremental dynamic analysis: kind scale-to-collapse over
+// the files, with its max_pga, step, tolerance). The ids, runs and rows are those of that study but for the `kind`
+// column ("ensemble"); PartSpec::ensemble remembers the rest. band = true (stripes only) adds the excitation axis
+// `perturbation` (kPerturbations): the analytic model's repeats of each case at the level x (1 +- 1e-3) and with the
+// record's first sample dropped (GroundMotion::drop_first_sample), which engines do not run (Grid::run_applies).
+//
 // Everything is checked here or when the grid is built, before any case runs: an unknown key, a value of the wrong
 // type, an empty list, an engine not built, a metric the excitation cannot measure, a record that does not read:
 // InputError naming the file, the key and the value.
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -58,6 +68,19 @@ extern const std::vector<std::string> kWallKeys;
 extern const std::vector<std::string> kAssumptionKeys;  // kinematics, impact, roller
 extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, scale, pga, shape, amplitude, ...
 
+// The sensitivity band's perturbations of an ensemble's stripe case, the `perturbation` axis's levels in order: none,
+// the level x (1 + kBandStep), x (1 - kBandStep), the record without its first sample. Engines run "none" only.
+extern const std::vector<std::string> kPerturbations;
+constexpr double kBandStep = 1e-3;
+
+// What an ensemble part was in the file (kind = "ensemble"), read into a record or scale-to-collapse part.
+struct EnsembleSpec {
+    std::string intensity = "pga";  // the intensity measure of the levels (the only one so far)
+    bool collapse = false;          // true: incremental dynamic analysis (scale-to-collapse); false: stripes at levels
+    bool band = false;              // stripes: the perturbation axis (the analytic model's sensitivity band)
+    std::string folder;             // ensemble = "DIR" as given; "" when the file lists its records (files)
+};
+
 // Templates naming a part's walls and records ("" when not given): {key} or {key:format} (fmt's format spec) with the
 // case's wall and excitation values (height, thickness, hinge, xi, specimen, scale, ... as results.csv has them).
 struct NameTemplates {
@@ -74,6 +97,10 @@ struct PartSpec {
     std::vector<EngineSpec> engines;   // the study's engines, each with this part's settings where it gives them
     NameTemplates names;
     bool skip_falling_releases = false;  // free: leave out a release from which the analytic model (exact) falls
+    std::optional<EnsembleSpec> ensemble;  // kind = "ensemble" in the file (kind is then record or scale-to-collapse)
+
+    // As results.csv's `kind` column and results.json say it: "ensemble" for an ensemble, else to_string(kind).
+    std::string kind_text() const;
 
     const Axis* wall_axis(const std::string& key) const;        // nullptr when not given
     const Axis* excitation_axis(const std::string& key) const;  // nullptr when not given
@@ -90,7 +117,7 @@ struct StudySpec {
     std::vector<Axis> assumptions;     // every key of kAssumptionKeys, defaulted (paper, eq19, bilateral)
     std::vector<PartSpec> parts;       // one for a study of one grid
 
-    // The excitation kind of every part ("free"), or "mixed".
+    // The excitation kind of every part ("free", "ensemble"), or "mixed".
     std::string kind_text() const;
 };
 

@@ -196,4 +196,47 @@ TEST(ShippedStudies, Fig10RockingCurvesFallWithSlendernessAndSize) {
         }
 }
 
+// The ensemble study: eight records at five PGAs, the analytic model's band beside each case; engines run the
+// unperturbed cases only. Under the reference (exact, whole mechanism, unilateral roller), twice the threshold
+// overturns the wall under more records than the threshold itself does.
+TEST(ShippedStudies, EnsembleDefaultRunsItsBandOnTheAnalyticModelAlone) {
+    const TempDir dir;
+    const ResultsTable t = run_shipped(dir, "ensemble-default");
+    EXPECT_EQ(levels(t, "kind"), std::vector<std::string>{"ensemble"});
+    EXPECT_EQ(levels(t, "file").size(), 8u);
+    EXPECT_EQ(levels(t, "perturbation"), (std::vector<std::string>{"none", "pga+1e-3", "pga-1e-3", "drop-first"}));
+    const std::size_t engine = t.column("engine"), perturbation = t.column("perturbation");
+    for (const auto& row : t.rows)
+        if (row[perturbation] != "none") {
+            EXPECT_EQ(row[engine], "analytic");
+        }
+    // The reference's overturnings at a level (the pga column is the scaled record's PGA, the level to rounding).
+    const auto overturned_at = [&](double level) {
+        int n = 0;
+        for (const auto& row : t.rows)
+            n += row[perturbation] == "none" && row[t.column("kinematics")] == "exact" &&
+                 row[t.column("impact")] == "whole-mechanism" && row[t.column("roller")] == "unilateral" &&
+                 row[t.column("metric")] == "overturned" &&
+                 std::abs(std::stod(row[t.column("pga")]) / level - 1.0) < kRoundoff && row[t.column("value")] == "1";
+        return n;
+    };
+    EXPECT_LT(overturned_at(0.29), overturned_at(0.57));
+}
+
+// The cluster study is thousands of runs, not for CI: read and gridded here (every record reads, every specimen is in
+// Table 1), with what it is meant to hold.
+TEST(ShippedStudies, EnsembleFullIsAGridOfEveryRecordOnThreeWalls) {
+    if (multibody::available_engines().size() < 6) GTEST_SKIP() << "the study names every engine; this build lacks some";
+    const study::StudySpec spec = study::read_study_file(std::string(VSSW_STUDIES_DIR) + "/ensemble-full.toml");
+    EXPECT_EQ(spec.kind_text(), "ensemble");
+    for (const study::PartSpec& part : spec.parts) {
+        ASSERT_TRUE(part.ensemble.has_value());
+        EXPECT_TRUE(part.ensemble->collapse);
+    }
+    const Grid grid(spec);
+    EXPECT_EQ(grid.case_ids().size(), 26u * 3u);
+    // Per part: 6 analytic runs (the assumptions that are a model) and each engine once.
+    EXPECT_EQ(grid.runs().size(), spec.parts.size() * (6u + spec.engines.size() - 1u));
+}
+
 }  // namespace

@@ -1,0 +1,236 @@
+// Ensembles in study files (kind = "ensemble", study/spec.hpp): read into the record or scale-to-collapse study they
+// stand for (the same ids and rows but for the kind), a folder's records listed in name order, every malformed key
+// named, and the sensitivity band: the analytic model's perturbed repeats of each stripe case, which engines do not
+// run, with a record one sample shorter (GroundMotion::drop_first_sample).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analytic/error.hpp"
+#include "analytic/ground_motion.hpp"
+#include "tests/engine_available.hpp"
+#include "tests/study_fixtures.hpp"
+
+namespace {
+
+using namespace vssw;
+using study::Grid;
+using study::ResultsTable;
+using vssw::testing::engine_available;
+using vssw::testing::run_into;
+using vssw::testing::study_of;
+using vssw::testing::TempDir;
+using vssw::testing::write_file;
+
+// A PGA set by scaling the record (scale = level g / PGA, then PGA x scale / g) is the level to rounding: a few ulps.
+constexpr double kScaledPga = 1e-14;
+// Times shifted by a subtraction (t - t1) are the originals' differences to rounding of numbers below 100 s.
+constexpr double kShiftedTime = 1e-12;
+// Picks a level's rows out of a band: theirs are within 1e-3 (kBandStep) of it, the other levels' 50 % away.
+constexpr double kNearLevel = 2e-3;
+
+const std::string kRecords = std::string(VSSW_DATA_DIR) + "/records";
+// Two of the shortest shipped records (20 s each), so that the runs stay quick.
+const std::string kRinaldi = kRecords + "/northridge1994-rinaldi-228.at2";
+const std::string kPacoimaDam = kRecords + "/northridge1994-pacoimadam-ew.at2";
+const std::string kWall = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n";
+
+std::string refusal(const TempDir& dir, const std::string& toml) {
+    try {
+        const Grid grid(study_of(dir, toml));
+        return "";
+    } catch (const InputError& e) {
+        return e.what();
+    }
+}
+
+// Every row of a results table with the `kind` column blanked.
+std::vector<std::vector<std::string>> rows_but_kind(const ResultsTable& t) {
+    std::vector<std::vector<std::string>> rows = t.rows;
+    for (auto& row : rows) row[t.column("kind")] = "";
+    return rows;
+}
+
+std::string file_list() { return "[\"" + kRinaldi + "\", \"" + kPacoimaDam + "\"]"; }
+
+TEST(StudyEnsemble, StripesAreTheRecordStudysCasesAndRows) {
+    const TempDir dir;
+    const std::string head = "metrics = [\"peak_rotation\", \"overturned\"]\n" + kWall;
+    const Grid ensemble(study_of(dir, head + "[excitation]\nkind = \"ensemble\"\nfiles = " + file_list() +
+                                          "\nintensity = \"pga\"\nlevels = [0.35, 0.5, 0.7]\n",
+                                 "ensemble.toml"));
+    const Grid record(study_of(dir, head + "[excitation]\nkind = \"record\"\nfile = " + file_list() +
+                                        "\npga = [0.35, 0.5, 0.7]\n",
+                               "record.toml"));
+    EXPECT_EQ(ensemble.spec().kind_text(), "ensemble");
+    ASSERT_TRUE(ensemble.spec().parts[0].ensemble.has_value());
+    EXPECT_FALSE(ensemble.spec().parts[0].ensemble->collapse);
+    EXPECT_EQ(ensemble.spec().parts[0].kind, study::ExcitationKind::record);
+    EXPECT_EQ(ensemble.case_ids(), record.case_ids());
+    EXPECT_EQ(ensemble.case_ids().size(), 6u);
+    EXPECT_EQ(ensemble.columns(), record.columns());
+    const ResultsTable e = run_into(ensemble, dir / "ensemble", 2);
+    const ResultsTable r = run_into(record, dir / "record", 2);
+    EXPECT_EQ(e.rows.size(), 6u * 2u);  // cases x metrics, one run
+    EXPECT_EQ(rows_but_kind(e), rows_but_kind(r));
+    for (const auto& row : e.rows) EXPECT_EQ(row[e.column("kind")], "ensemble");
+    // The rows say which record and level, as a record study's do.
+    EXPECT_EQ(e.rows.front()[e.column("file")], kRinaldi);
+    EXPECT_EQ(e.rows.front()[e.column("pga")], "0.35");
+}
+
+TEST(StudyEnsemble, CollapseIsTheScaleToCollapseStudysCasesAndRows) {
+    const TempDir dir;
+    const Grid ensemble(study_of(dir, kWall + "[excitation]\nkind = \"ensemble\"\nfiles = " + file_list() +
+                                          "\nintensity = \"pga\"\ncollapse = true\nmax_pga = 3\n",
+                                 "ensemble.toml"));
+    const Grid collapse(study_of(dir, kWall + "[excitation]\nkind = \"scale-to-collapse\"\nfile = " + file_list() +
+                                          "\nmax_pga = 3\n",
+                                 "collapse.toml"));
+    EXPECT_EQ(ensemble.spec().parts[0].kind, study::ExcitationKind::scale_to_collapse);
+    EXPECT_TRUE(ensemble.spec().parts[0].ensemble->collapse);
+    EXPECT_EQ(ensemble.spec().metrics, collapse.spec().metrics);  // collapse_scale, collapse_pga
+    EXPECT_EQ(ensemble.case_ids(), collapse.case_ids());
+    const ResultsTable e = run_into(ensemble, dir / "ensemble", 2);
+    const ResultsTable c = run_into(collapse, dir / "collapse", 2);
+    EXPECT_EQ(e.rows.size(), 2u * 2u);  // cases x (collapse_scale, collapse_pga)
+    EXPECT_EQ(rows_but_kind(e), rows_but_kind(c));
+}
+
+// A folder's records: its *.at2 files in any case and what its records.csv lists, each once, in byte order of name;
+// other files are not records.
+TEST(StudyEnsemble, AFolderGivesItsRecordsInNameOrder) {
+    const TempDir dir;
+    const std::filesystem::path folder = dir / "set";
+    std::filesystem::create_directories(folder);
+    for (const char* name : {"b.at2", "A.AT2", "c.At2"}) std::filesystem::copy_file(kRinaldi, folder / name);
+    write_file(folder / "d.txt", "0 0.1\n0.01 -0.2\n0.02 0.05\n");
+    write_file(folder / "e.txt", "0 0.1\n0.01 -0.2\n0.02 0.05\n");  // listed nowhere: not a record
+    write_file(folder / "records.csv", "file,pga_g\nd.txt,0.2\nb.at2,0.8\n");
+    const study::StudySpec spec = study_of(dir, kWall + "[excitation]\nkind = \"ensemble\"\nensemble = \"set\"\n"
+                                                        "intensity = \"pga\"\nlevels = 0.4\n");
+    const study::Axis* files = spec.parts[0].excitation_axis("file");
+    ASSERT_NE(files, nullptr);
+    EXPECT_EQ(files->levels, (std::vector<study::Level>{std::string("set/A.AT2"), std::string("set/b.at2"),
+                                                        std::string("set/c.At2"), std::string("set/d.txt")}));
+    EXPECT_EQ(spec.parts[0].ensemble->folder, "set");
+    const Grid grid(spec);  // every one reads
+    EXPECT_EQ(grid.case_ids().size(), 4u);
+
+    // The shipped records: all 26, as data/records/records.csv lists them.
+    const study::StudySpec shipped = study_of(dir, kWall + "[excitation]\nkind = \"ensemble\"\nensemble = \"" +
+                                                       kRecords + "\"\nintensity = \"pga\"\ncollapse = true\n");
+    EXPECT_EQ(shipped.parts[0].excitation_axis("file")->levels.size(), 26u);
+}
+
+TEST(StudyEnsemble, EachMalformationIsNamed) {
+    const TempDir dir;
+    std::filesystem::create_directories(dir / "empty");
+    write_file(dir / "empty" / "notes.txt", "no records here\n");
+    const std::string ex = kWall + "[excitation]\nkind = \"ensemble\"\n";
+    const std::string files = "files = " + file_list() + "\n";
+    const std::string pga = "intensity = \"pga\"\n";
+    struct Case {
+        std::string toml, expected;
+    };
+    const std::vector<Case> cases = {
+        {ex + "files = []\n" + pga + "levels = [0.4]\n", "excitation.files: an empty list"},
+        {ex + "files = [3]\n" + pga + "levels = [0.4]\n", "excitation.files: must list paths of record files, got 3"},
+        {ex + "ensemble = \"nowhere\"\n" + pga + "levels = [0.4]\n", "excitation.ensemble: no folder \"nowhere\""},
+        {ex + "ensemble = \"empty\"\n" + pga + "levels = [0.4]\n", "excitation.ensemble: no records in \"empty\""},
+        {ex + files + "ensemble = \"empty\"\n" + pga + "levels = [0.4]\n", "excitation: give the records one way"},
+        {ex + pga + "levels = [0.4]\n", "excitation: give the records one way"},
+        {ex + files + pga + "levels = [0.4]\ncollapse = true\n", "excitation: give 'levels'"},
+        {ex + files + pga, "excitation: give 'levels'"},
+        {ex + files + pga + "levels = [0.4, 0]\n", "excitation.levels: must be a PGA in g, > 0, got 0"},
+        {ex + files + pga + "levels = [0.4, -0.2]\n", "excitation.levels: must be a PGA in g, > 0, got -0.2"},
+        {ex + files + pga + "levels = [\"high\"]\n", "excitation.levels: must be a finite number (a PGA in g, > 0), got \"high\""},
+        {ex + files + pga + "levels = [0.4, 0.4]\n", "excitation.levels: lists 0.4 twice"},
+        {ex + files + "intensity = \"sa\"\nlevels = [0.4]\n", "excitation.intensity: must be one of pga, got \"sa\""},
+        {ex + files + "levels = [0.4]\n", "kind ensemble needs 'intensity'"},
+        {ex + files + pga + "collapse = \"yes\"\n", "excitation.collapse: must be true or false, got \"yes\""},
+        {ex + files + pga + "collapse = true\nband = true\n", "excitation.band: is for a stripe analysis"},
+        {ex + files + pga + "levels = [0.4]\nmax_pga = 2\n", "excitation.max_pga: is for collapse = true"},
+        {ex + files + pga + "levels = [0.4]\npga = 0.3\n", "unknown key 'pga'"},
+        {ex + "files = [\"missing.at2\"]\n" + pga + "levels = [0.4]\n", "missing.at2"},
+    };
+    for (const Case& c : cases) {
+        const std::string message = refusal(dir, c.toml);
+        EXPECT_NE(message.find("study file"), std::string::npos) << c.toml;
+        EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "' in: " << message;
+    }
+}
+
+// The band: each stripe case again at the level x (1 +- 1e-3) and with the record's first sample dropped, run by the
+// analytic model alone, each row saying which in its `perturbation` column.
+TEST(StudyEnsemble, TheBandIsTheAnalyticModelsAlone) {
+    const TempDir dir;
+    const std::vector<double> levels = {0.4, 0.6};
+    const std::string engines = engine_available("ode") ? "engines = [\"analytic\", \"ode\"]\n" : "";
+    const Grid grid(study_of(dir, engines + "metrics = [\"peak_rotation\"]\n" + kWall +
+                                      "[excitation]\nkind = \"ensemble\"\nfiles = [\"" + kRinaldi +
+                                      "\"]\nintensity = \"pga\"\nlevels = [0.4, 0.6]\nband = true\n"));
+    ASSERT_EQ(grid.case_ids().size(), levels.size() * study::kPerturbations.size());
+    for (const int id : grid.case_ids()) {
+        const study::CaseSpec c = grid.make_case(id);
+        for (const study::RunSpec& run : grid.runs())
+            EXPECT_EQ(grid.run_applies(run, c), run.engine == "analytic" || c.perturbation == "none")
+                << c.perturbation << " " << run.engine;
+    }
+    if (!engines.empty()) {
+        EXPECT_EQ(grid.skipped_runs().size(), 1u);
+    }
+
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const std::size_t perturbation = t.column("perturbation"), engine = t.column("engine"), pga = t.column("pga");
+    std::size_t band_rows = 0;
+    for (const auto& row : t.rows) {
+        EXPECT_EQ(row[t.column("status")], "ok");
+        if (row[perturbation] == "none") continue;
+        ++band_rows;
+        EXPECT_EQ(row[engine], "analytic");
+    }
+    EXPECT_EQ(band_rows, levels.size() * (study::kPerturbations.size() - 1));
+    EXPECT_EQ(t.rows.size(), levels.size() * (study::kPerturbations.size() + (engines.empty() ? 0 : 1)));
+    // The level's rows: none and drop-first at the level, the nudged ones at level x (1 +- 1e-3).
+    for (const double level : levels)
+        for (const auto& [name, factor] : std::vector<std::pair<std::string, double>>{
+                 {"none", 1.0}, {"pga+1e-3", 1.0 + 1e-3}, {"pga-1e-3", 1.0 - 1e-3}, {"drop-first", 1.0}}) {
+            const auto row = std::find_if(t.rows.begin(), t.rows.end(), [&](const auto& r) {
+                return r[perturbation] == name && r[engine] == "analytic" &&
+                       std::abs(std::stod(r[pga]) / level - 1.0) < kNearLevel;
+            });
+            ASSERT_NE(row, t.rows.end()) << name << " at " << level;
+            EXPECT_NEAR(std::stod((*row)[pga]), level * factor, kScaledPga * level) << name;
+        }
+}
+
+// Dropping the first sample: one sample fewer, the old second sample at t = 0, the same accelerations one sample
+// earlier. Shifted to 0 (not left to start at the old second time) because a record is zero before its first sample:
+// unshifted it would be the original with its first interval ramped from 0, no perturbation of the motion's phase.
+TEST(StudyEnsemble, DroppingTheFirstSampleShiftsTheRecordOneSampleEarlier) {
+    const GroundMotion original = read_record(kRinaldi);
+    const GroundMotion dropped = original.drop_first_sample();
+    ASSERT_EQ(dropped.sample_times().size() + 1, original.sample_times().size());
+    const double t1 = original.sample_times()[1];
+    EXPECT_EQ(dropped.sample_times().front(), 0.0);
+    for (std::size_t i = 0; i < dropped.sample_times().size(); i += 97) {
+        EXPECT_NEAR(dropped.sample_times()[i], original.sample_times()[i + 1] - t1, kShiftedTime) << i;
+        EXPECT_EQ(dropped.sample_values()[i], original.sample_values()[i + 1]) << i;
+    }
+    EXPECT_NEAR(dropped.duration(), original.duration() - t1, kShiftedTime);
+
+    const GroundMotion three = GroundMotion::sampled({0.5, 0.6, 0.8}, {1.0, -2.0, 3.0}, "three");
+    const GroundMotion two = three.drop_first_sample();
+    EXPECT_EQ(two.sample_times(), (std::vector<double>{0.0, 0.8 - 0.6}));
+    EXPECT_EQ(two.sample_values(), (std::vector<double>{-2.0, 3.0}));
+    EXPECT_THROW((void)two.drop_first_sample(), InputError);  // one sample cannot be a record
+    EXPECT_THROW((void)sine_pulse(1.0, 0.5).drop_first_sample(), InputError);
+    EXPECT_THROW((void)GroundMotion::none().drop_first_sample(), InputError);
+}
+
+}  // namespace
