@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <system_error>
@@ -22,6 +23,7 @@
 #include "apps/option_values.hpp"
 #include "apps/progress.hpp"
 #include "apps/run_budget_option.hpp"
+#include "validation/earthquake.hpp"
 #include "validation/suite.hpp"
 #include "multibody/engine.hpp"
 #include "validation/bench_files.hpp"
@@ -47,6 +49,10 @@ struct ReportCommandOptions {
     std::string gnuplot = "gnuplot";
     std::string data = shipped_data_dir();
     std::string out;
+    // --earthquake: the record ensemble the report judges the engines on (validation/earthquake.hpp); "default" is
+    // the shipped one, "none" runs none. Not given with --cases: none (a case subset is a quick run).
+    std::string earthquake = "default";
+    CLI::Option* earthquake_option = nullptr;
 };
 
 // Without --engines: multibody::default_compared_engines() (all but the analytic model, which always runs as the
@@ -111,6 +117,11 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--bench", o->bench,
                     "a finished `vssw bench --out DIR` folder: its cheapest settings and work-precision plots end the "
                     "report (the report does not run the sweep)");
+    o->earthquake_option = cmd->add_option(
+        "--earthquake", o->earthquake,
+        "the record ensemble judged under \"Under earthquake records\": default (studies/ensemble-report.toml: 4 "
+        "records x 4 PGAs on the Fig. 6 VSSW), a study file of kind \"ensemble\" with levels, or none (default: "
+        "default; none with --cases)");
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_option("--data", o->data, "folder of the ground-motion records (default: $VSSW_DATA_DIR, else <prefix>/share/vssw/data beside an installed vssw, else the source tree's data/)");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
@@ -139,6 +150,9 @@ Command add_report_command(CLI::App& root) {
                 compare::Suite suite = study::read_suite(o->suite, o->data);
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
                 require_records_readable(suite);
+                const bool earthquake_asked = o->earthquake_option->count() > 0 || o->cases.empty();
+                const std::string earthquake_file =
+                    earthquake_asked ? study::earthquake_study_file(o->earthquake) : std::string();
                 const std::filesystem::path dir = o->out;
                 // After every other check, before the suite runs. Nothing is made in --out until the report is
                 // complete: it is written into a staging folder that then replaces --out whole (a failed run leaves
@@ -171,6 +185,21 @@ Command add_report_command(CLI::App& root) {
                 options.bench_dir = o->bench;
                 study::StagedFolder staged(dir, study::OutKind::report);
                 staged.create();
+                std::optional<study::EarthquakePart> earthquake;
+                if (!earthquake_file.empty()) {
+                    study::EarthquakeRunOptions eq;
+                    eq.threads = o->threads;
+                    eq.plots = !o->no_plots;
+                    eq.gnuplot = o->gnuplot;
+                    eq.commit = VSSW_GIT_COMMIT;
+                    if (progress.on())
+                        eq.progress = [&progress](long done, long total, const std::string& what) {
+                            progress.show(done, total, "earthquake: " + what);
+                        };
+                    earthquake = study::run_earthquake_part(earthquake_file, engines, staged.path() / "earthquake", eq);
+                    progress.clear();
+                    options.earthquake = &*earthquake;
+                }
                 study::ReportFiles files = study::write_suite_report(staged.path(), suite, results, meta, options);
                 staged.commit();
                 for (std::filesystem::path* p : {&files.dir, &files.markdown, &files.html, &files.json})
@@ -186,6 +215,8 @@ Command add_report_command(CLI::App& root) {
                     << "  report.html   " << files.html.string() << '\n'
                     << "  results.json  " << files.json.string() << '\n';
                 for (const std::string& line : files.summary_lines) out << line << '\n';
+                if (earthquake)
+                    for (const std::string& line : study::earthquake_summary_lines(*earthquake)) out << line << '\n';
                 if (!results.failures.empty())
                     out << fmt::format("{} engine failure{}: see the report's Failures section\n",
                                        results.failures.size(), results.failures.size() == 1 ? "" : "s");

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "validation/earthquake.hpp"
+
 namespace vssw::study {
 
 Json settings_json(const multibody::EngineSettings& s) {
@@ -147,6 +149,7 @@ Json results_json(const ReportInput& in) {
             {"findings", findings(in)},
             {"step_study", steps},
             {"traces", traces},
+            {"earthquake", in.earthquake ? earthquake_json(*in.earthquake) : Json(nullptr)},
             {"plots", {{"made", in.meta.plots_made}, {"note", in.meta.plots_note}}},
             {"wall_time_s", finite_or_null(res.wall_time_s)},
             {"threads", res.threads}};

@@ -8,6 +8,7 @@
 
 #include "io/text.hpp"
 #include "multibody/engine.hpp"
+#include "validation/earthquake.hpp"
 
 namespace vssw::study {
 namespace {
@@ -89,13 +90,14 @@ void add_matrix(Blocks& b, const ReportInput& in) {
         b.push_back(paragraph("No engine was compared (the analytic model only)."));
         return;
     }
-    // Metrics with a target first, those without set apart after them.
+    // The metrics with a target: a single run's peak under a record (no target) switches branch for a 1 % change of
+    // the scale, so it has no verdict here; the earthquake part below judges the records by ensemble measures, and
+    // the tables under "Metrics" keep every single-run value.
     std::vector<std::string> metrics;
-    for (bool with_target : {true, false})
-        for (const std::string& m : metric_order(in.results))
-            if (target_of(m).has_value() == with_target &&
-                std::any_of(cells.begin(), cells.end(), [&](const MatrixCell& c) { return c.metric == m; }))
-                metrics.push_back(m);
+    for (const std::string& m : metric_order(in.results))
+        if (target_of(m).has_value() &&
+            std::any_of(cells.begin(), cells.end(), [&](const MatrixCell& c) { return c.metric == m; }))
+            metrics.push_back(m);
     std::vector<std::string> header = {"engine"};
     std::size_t apart = 0;
     for (const std::string& m : metrics) {
@@ -129,8 +131,10 @@ void add_matrix(Blocks& b, const ReportInput& in) {
     b.push_back(t);
     b.push_back(paragraph(
         "Each cell: the engine's error of largest magnitude over the cases of that metric (engine / reference - 1; the "
-        "step study left out), passed when every case is measured and within the target, failed otherwise; the "
-        "metrics after the double rule have no target and no verdict. The tables under \"Metrics\" give every case."));
+        "step study left out), passed when every case is measured and within the target, failed otherwise. The "
+        "tables under \"Metrics\" give every case, the single runs under records too (no target, no verdict)."));
+    if (in.earthquake)
+        for (DocBlock& block : earthquake_glance(*in.earthquake)) b.push_back(std::move(block));
 }
 
 void add_engines(Blocks& b, const ReportInput& in) {
@@ -336,6 +340,8 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
     add_engines(b, in);
     add_summary(b, in);
     add_findings(b, in);
+    if (in.earthquake)
+        for (DocBlock& block : earthquake_section(*in.earthquake)) b.push_back(std::move(block));
     add_failures(b, in);
     add_model_warnings(b, in);
     add_metric_tables(b, in);

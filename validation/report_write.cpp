@@ -48,7 +48,7 @@ ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite,
     }
     meta.plots_made = options.plots && plots.all_made;
     meta.plots_note = options.plots ? plots.note : "not made (--no-plots)";
-    const ReportInput in{suite, results, meta};
+    const ReportInput in{suite, results, meta, options.earthquake};
 
     write_file(files.json, [&](std::ostream& out) { out << results_json(in).dump(2) << '\n'; });
     write_file(dir / "metrics.csv", [&](std::ostream& out) { write_metrics_csv(out, results); });

@@ -17,6 +17,8 @@ struct ReportOptions {
     PlotOptions plot;
     // --bench: a finished `vssw bench` folder whose section (validation/bench_files.hpp) ends the report; empty: none.
     std::string bench_dir;
+    // The earthquake part (validation/earthquake.hpp), already run into the folder's earthquake/; nullptr: none.
+    const EarthquakePart* earthquake = nullptr;
 };
 
 struct ReportFiles {
