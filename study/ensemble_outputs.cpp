@@ -113,8 +113,7 @@ PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
     const PanelLayout layout = panel_layout(e.walls.size());
     PlotScript s;
     s.plot = {kEnsembleSection, "fragility",
-              "Collapse fragility: lognormal fit (line), records' collapse PGAs or stripes' shares overturned "
-              "(points), 95 % bootstrap interval of the median (bar at 0.5)",
+              "Collapse fragility: lognormal fits (lines), data (points), 95 % interval of the median (bar)",
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +

@@ -403,3 +403,23 @@ TEST(MotionsCli, ShippedRecordTableIsWhatDescribeMeasures) {
 }
 
 }  // namespace
+
+namespace {
+// data/synthetic is `vssw motions generate --count 20 --seed 2029 --dt 0.01` (studies/ensemble-full.toml): the same
+// command gives the same bytes, so the shipped set is the seed's and anyone can regenerate it.
+TEST(MotionsCli, ShippedSyntheticSetIsItsSeedsToTheByte) {
+    vssw::testing::TempDir dir;
+    const std::string out = (dir / "set").string();
+    const auto g = run_cli({"motions", "generate", "--count", "20", "--seed", "2029", "--dt", "0.01", "--out", out});
+    ASSERT_EQ(g.code, 0) << g.err;
+    const std::filesystem::path shipped = std::filesystem::path(VSSW_DATA_DIR) / "synthetic";
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(shipped)) {
+        ++files;
+        const std::string name = entry.path().filename().string();
+        EXPECT_EQ(vssw::testing::read_file(entry.path()), vssw::testing::read_file(std::filesystem::path(out) / name))
+            << name;
+    }
+    EXPECT_EQ(files, 21);  // 20 motions and motions.csv
+}
+}  // namespace
