@@ -104,8 +104,9 @@ Command add_report_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "report", "Run the validation suite for the analytic model and the engines; write a report into a folder");
     cmd->add_option("--suite", o->suite,
-                    "default (about 30 s on 2 cores with Bullet, ODE, Simbody and Siconos), full (233 cases), or a "
-                    "suite file (a study file whose parts name their walls: studies/validation-default.toml is one)");
+                    "default (about 1 min on 2 cores with Bullet, ODE, Simbody and Siconos, the earthquake part "
+                    "included), full (233 cases), or a suite file (a study file whose parts name their walls: "
+                    "studies/validation-default.toml is one)");
     add_list_option(*cmd, "--engines", o->engines,
                     fmt::format("engines to compare, comma-separated (default: {}; simbody-rigid on request)",
                                 fmt::join(multibody::default_compared_engines(), ", ")));
@@ -129,14 +130,18 @@ Command add_report_command(CLI::App& root) {
         "Writes into --out: report.md and report.html (the same content; the HTML is self-contained, plots inline),\n"
         "results.json, metrics.csv, failures.csv, traces.csv and plots/ (gnuplot .svg, with the .gp script and .dat\n"
         "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; targets:\n"
-        "threshold 0.5 %, period 0.5 %, restitution 2 %.\n"
+        "threshold 0.5 %, period 0.5 %, restitution 2 %; under records (earthquake/): overturning agreement >= 0.9,\n"
+        "fragility median within 10 % of the reference's.\n"
         "results.json keys: vssw {commit, report_format}, date, suite {name, walls, records, cases [{id, kind, wall,\n"
         "r, record, dt}]}, engines [{name, version, settings {dt, iterations (where set), knobs}}], targets, rows\n"
         "[{case_id, engine, metric, unit, reference, analytic, engine_value, rel_error, target, within_target}],\n"
         "failures [{case_id, engine, message}], summary [{engine, line, within, with_target, not_measured, failures,\n"
         "max_error}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],\n"
         "findings, step_study [{engine, case_id, metric, dt, rel_error, order}], traces [{case_id, engine,\n"
-        "assumption, samples}], plots {made, note}, wall_time_s, threads; NaN is null.\n"
+        "assumption, samples}], earthquake {study, reference, targets, records, levels, engines [{engine,\n"
+        "overturning_agreement {value, lo, hi, n, pass}, fragility_median_ratio {..., note}, peak_ratio, inside_band}]}\n"
+        "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"
+        "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
         "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"
         "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha,assumption (t to 6,\n"
         "theta1/alpha to 4 significant digits; assumption: the analytic model's, paper or whole_mechanism_impact).\n"

@@ -17,7 +17,7 @@ constexpr int kNewtonIterations = 200;
 // counts times logs of order 1-100, so 1e-12 is round-off.
 constexpr double kDecrement = 1e-12;
 constexpr const char* kSeparated =
-    "the stripes separate (every run below a level stands, every run from it collapses): no finite beta";
+    "the stripes do not overlap (no run stands at a level above one where a run collapsed): no finite beta";
 
 // The counts the likelihood needs: per level ln x_j, runs n_j and collapses z_j.
 struct Stripes {

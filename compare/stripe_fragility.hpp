@@ -5,7 +5,7 @@
 //   ln L = sum_j [ z_j ln Phi(u_j) + (n_j - z_j) ln Phi(-u_j) ],  u_j = ln(x_j / theta) / beta,
 // a probit regression on ln x: in (gamma, delta) = (1/beta, ln theta / beta), u_j = gamma ln x_j - delta and ln L is
 // concave, so Newton's method with backtracking finds its one maximum when there is one. There is none when the
-// stripes separate (every run below some level stands and every run above collapses: beta -> 0) or when no run
+// stripes do not overlap (no run stands at a level above one where a run collapsed: beta -> 0) or when no run
 // (or every run) collapses: then the fit is not made, with the reason.
 //
 // Bootstrap intervals resample records (a record's runs at every level go together), with the same seeded draws as

@@ -36,6 +36,8 @@ struct Columns {
     std::vector<std::size_t> cleared, wall;
     std::size_t peak_metric, overturned_metric, collapse_metric;
     std::size_t scale = std::string::npos;
+    std::vector<std::uint32_t> pga_stripe{};  // each pga level's stripe (nominal_pga), empty without a pga column
+    bool is_stripe(std::uint32_t l) const { return l < pga_stripe.size() && pga_stripe[l] == l && l != kEmptyLevel; }
 };
 
 std::size_t metric_index(const StudyData& d, const std::string& name) {
@@ -64,21 +66,33 @@ bool nominal(const StudyData& d, const Columns& c, const StudyRow& r) {
     return p.empty() || p == "none";
 }
 
-// Each PGA level of a perturbed run as the nearest level a nominal run has (a perturbation may shift the column).
+// Each PGA level as the level of the stripe it belongs to: a nominal run's as the first nominal level within round-off
+// of it (a record scaled to 0.85 g can read 0.8500000000000001 or ...02 in results.csv, the record's PGA times the
+// scale), a perturbed run's as the nearest nominal one (a perturbation shifts the column by 1e-3).
 std::vector<std::uint32_t> nominal_pga(const StudyData& d, const Columns& c) {
+    constexpr double kSameLevel = 1e-9;  // relative: round-off of a product, far below the band's 1e-3
     if (c.pga == std::string::npos) return {};
     const ColumnLevels& col = d.columns[c.pga];
     std::vector<bool> is_nominal(col.texts.size(), false);
     for (const StudyRow& r : d.rows)
         if (nominal(d, c, r)) is_nominal[r.levels[c.pga]] = true;
+    std::vector<std::uint32_t> stripe(col.texts.size(), kEmptyLevel);
+    std::vector<std::uint32_t> stripes;  // the first level of each stripe, in the study's order
+    for (std::uint32_t l : col.order) {
+        if (!is_nominal[l]) continue;
+        stripe[l] = l;
+        for (std::uint32_t s : stripes)
+            if (std::abs(col.values[l] - col.values[s]) <= kSameLevel * std::abs(col.values[s])) stripe[l] = s;
+        if (stripe[l] == l) stripes.push_back(l);
+    }
     std::vector<std::uint32_t> map(col.texts.size());
     for (std::uint32_t l = 0; l < col.texts.size(); ++l) {
         map[l] = l;
         double best = INFINITY;
-        for (std::uint32_t n = 1; n < col.texts.size(); ++n)
-            if (is_nominal[n] && std::abs(col.values[n] - col.values[l]) < best) {
-                best = std::abs(col.values[n] - col.values[l]);
-                map[l] = n;
+        for (std::uint32_t s : stripes)
+            if (std::abs(col.values[s] - col.values[l]) < best) {
+                best = std::abs(col.values[s] - col.values[l]);
+                map[l] = s;
             }
     }
     return map;
@@ -97,11 +111,10 @@ std::optional<IdaRecord> ida_record(const StudyData& d, const Columns& c, const 
 
 std::vector<SeriesRuns> collect(const StudyData& d, const Columns& c) {
     std::vector<SeriesRuns> runs(d.series.size());
-    const std::vector<std::uint32_t> pga_map = nominal_pga(d, c);
     for (const StudyRow& r : d.rows) {
         Key key = r.levels;
         for (std::size_t col : c.cleared) key[col] = kEmptyLevel;
-        if (c.pga != std::string::npos) key[c.pga] = pga_map[key[c.pga]];
+        if (c.pga != std::string::npos) key[c.pga] = c.pga_stripe[key[c.pga]];
         const bool nominal_run = nominal(d, c, r);
         for (std::size_t s = 0; s < d.series.size(); ++s) {
             if (!d.in_series(r, d.series[s])) continue;
@@ -194,7 +207,7 @@ void fit_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* re
     std::vector<std::uint32_t> levels;
     std::vector<double> pga;
     for (std::uint32_t l : order)
-        if (l != kEmptyLevel && std::isfinite(d.columns[c.pga].values[l]) && d.columns[c.pga].values[l] > 0.0) {
+        if (c.is_stripe(l) && std::isfinite(d.columns[c.pga].values[l]) && d.columns[c.pga].values[l] > 0.0) {
             levels.push_back(l);
             pga.push_back(d.columns[c.pga].values[l]);
         }
@@ -257,6 +270,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     if (c.pga == std::string::npos) return;
     if (!m.ida) fit_stripes(m, runs, reference, wall, d, c);
     for (std::uint32_t l : d.columns[c.pga].order) {
+        if (!c.is_stripe(l)) continue;
         const auto it = per_level.find(l);
         if (it == per_level.end()) continue;
         m.levels.push_back({d.columns[c.pga].values[l],
@@ -284,7 +298,8 @@ std::string assumptions_text(const Series& s) {
 
 EnsembleMeasures ensemble_measures(const StudyData& d) {
     EnsembleMeasures e;
-    const Columns c = columns_of(d);
+    Columns c = columns_of(d);
+    c.pga_stripe = nominal_pga(d, c);
     if (c.file == std::string::npos || d.columns[c.file].order.size() < 2) return e;
     if (c.overturned_metric == std::string::npos && c.collapse_metric == std::string::npos) return e;
     e.applies = true;

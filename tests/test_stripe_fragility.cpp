@@ -76,8 +76,11 @@ TEST(StripeFragility, NoFiniteFitIsSaidWithItsReason) {
     // Everything stands at 0.3 g and collapses at 0.6 g: beta -> 0, no maximum.
     const LognormalFit separated = fit_lognormal_stripes(levels, from_counts({0, 5}, 5));
     EXPECT_FALSE(separated.ok());
-    EXPECT_NE(separated.reason.find("separate"), std::string::npos);
+    EXPECT_NE(separated.reason.find("do not overlap"), std::string::npos);
     EXPECT_TRUE(std::isnan(separated.median));
+    // Quasi-separated: nothing collapses below the top level, where half do: still no finite maximum (beta -> 0
+    // with the median at that level).
+    EXPECT_FALSE(fit_lognormal_stripes(levels, from_counts({0, 2}, 4)).ok());
     EXPECT_THROW(fit_lognormal_stripes({0.3, -1.0}, from_counts({1, 2}, 3)), InputError);
     EXPECT_THROW(fit_lognormal_stripes({0.3}, from_counts({1, 2}, 3)), InputError);
 }
