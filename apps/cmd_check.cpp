@@ -18,6 +18,7 @@
 #include "validation/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
+#include "validation/earthquake_bounds.hpp"
 #include "validation/stress_bounds.hpp"
 #include "apps/json.hpp"
 #include "apps/run_budget_option.hpp"
@@ -40,11 +41,15 @@ struct CheckOptions {
 std::string value_text(const compare::BoundVerdict& v) {
     if (!v.value_label.empty()) return v.value_label;  // a stress verdict
     if (!std::isfinite(v.value)) return "-";
+    if (v.earthquake) return fmt::format("{:.4g}", v.value);
     return v.engine == "analytic" ? fmt::format("{:.8g}", v.value) : fmt::format("{:+.3e}", v.value);
 }
 
 std::string bound_text(const compare::BoundVerdict& v) {
     if (!v.allowed_label.empty()) return v.allowed_label;
+    if (v.earthquake)
+        return fmt::format("[{}, {}]", std::isfinite(v.lo) ? fmt::format("{:.4g}", v.lo) : "-",
+                           std::isfinite(v.hi) ? fmt::format("{:.4g}", v.hi) : "-");
     return v.engine == "analytic" ? fmt::format("[{:.8g}, {:.8g}]", v.lo, v.hi)
                                   : fmt::format("[{:+.3e}, {:+.3e}]", v.lo, v.hi);
 }
@@ -77,10 +82,10 @@ Json verdicts_json(const std::vector<compare::BoundVerdict>& verdicts, const com
             j["value"] = v.value_label;
             j["allowed"] = v.allowed_label;
         } else {
-            j["kind"] = v.engine == "analytic" ? "drift" : "rel_error";
+            j["kind"] = v.earthquake ? "earthquake" : v.engine == "analytic" ? "drift" : "rel_error";
             j["value"] = finite_or_null(v.value);
-            j["min"] = v.lo;
-            j["max"] = v.hi;
+            j["min"] = finite_or_null(v.lo);
+            j["max"] = finite_or_null(v.hi);
         }
         j["held"] = v.held;
         j["note"] = v.note;
@@ -150,6 +155,7 @@ void run_check(const CheckOptions& o, std::ostream& out) {
     }
     require_measurable(bounds, suite, o.bounds);
     const stress::RunOptions stress_run = plan_stress_bounds(bounds.stress, o.bounds, o.threads);
+    plan_earthquake_bounds(bounds.earthquake, o.bounds);
     compare::SuiteResults results;
     for (const auto& [part, part_engines] : {std::pair{&analytic_suite, std::vector<std::string>{}},
                                              std::pair{&engine_suite, engines}}) {
@@ -168,6 +174,11 @@ void run_check(const CheckOptions& o, std::ostream& out) {
     const auto stress_verdicts = check_stress_bounds(bounds.stress, stress_run);
     results.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - stress_start).count();
     verdicts.insert(verdicts.end(), stress_verdicts.begin(), stress_verdicts.end());
+    // [[earthquake]] bounds: each named record ensemble run once for its engines (validation/earthquake.hpp).
+    const auto earthquake_start = std::chrono::steady_clock::now();
+    const auto earthquake_verdicts = check_earthquake_bounds(bounds.earthquake, o.threads);
+    results.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - earthquake_start).count();
+    verdicts.insert(verdicts.end(), earthquake_verdicts.begin(), earthquake_verdicts.end());
     const auto out_of_bounds = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.held; });
     if (o.json) {
         out << verdicts_json(verdicts, results, o.bounds, bounds.suite).dump(2) << '\n';
@@ -203,9 +214,12 @@ Command add_check_command(CLI::App& root) {
         "metric that could not be measured (the engine failed, no impact) does not hold. Exit codes: 0 all hold, 1 "
         "some do not, 2 bad input (a missing or malformed bounds file, an unknown case, engine or key). [[stress]] "
         "bounds run the named `vssw stress` cases in their quick form and hold each verdict against the allowed "
-        "ones.\n"
-        "JSON keys: bounds, suite, held, verdicts [{engine, case, metric, kind (drift, rel_error or stress), value, min, max "
-        "(a stress verdict: value is the verdict, allowed the verdicts allowed, no min and max), held, note}], "
+        "ones. [[earthquake]] bounds (study, engine, measure, min and/or max) run the named record ensemble once "
+        "(as `vssw report --earthquake`) and hold an engine's overturning_agreement, fragility_median_ratio, "
+        "peak_ratio_median or inside_band (a share) in [min, max].\n"
+        "JSON keys: bounds, suite, held, verdicts [{engine, case, metric, kind (drift, rel_error, stress or "
+        "earthquake), value, min, max (a stress verdict: value is the verdict, allowed the verdicts allowed, no min "
+        "and max; an earthquake one: case is the ensemble, metric the measure, an open end null), held, note}], "
         "wall_time_s.");
     return {cmd, [o](std::ostream& out) {
                 o->threads = parse_threads(o->threads_text);

@@ -97,6 +97,25 @@ std::vector<std::pair<std::string, std::filesystem::path>> report_inputs(const s
     return inputs;
 }
 
+// The earthquake part (validation/earthquake.hpp) into the staging folder's `dir`; none when no file is asked for.
+std::optional<study::EarthquakePart> run_earthquake(const ReportCommandOptions& o, const std::string& file,
+                                                    const std::vector<std::string>& engines,
+                                                    const std::filesystem::path& dir, Progress& progress) {
+    if (file.empty()) return std::nullopt;
+    study::EarthquakeRunOptions eq;
+    eq.threads = o.threads;
+    eq.plots = !o.no_plots;
+    eq.gnuplot = o.gnuplot;
+    eq.commit = VSSW_GIT_COMMIT;
+    if (progress.on())
+        eq.progress = [&progress](long done, long total, const std::string& what) {
+            progress.show(done, total, "earthquake: " + what);
+        };
+    std::optional<study::EarthquakePart> part = study::run_earthquake_part(file, engines, dir, eq);
+    progress.clear();
+    return part;
+}
+
 }  // namespace
 
 Command add_report_command(CLI::App& root) {
@@ -190,21 +209,9 @@ Command add_report_command(CLI::App& root) {
                 options.bench_dir = o->bench;
                 study::StagedFolder staged(dir, study::OutKind::report);
                 staged.create();
-                std::optional<study::EarthquakePart> earthquake;
-                if (!earthquake_file.empty()) {
-                    study::EarthquakeRunOptions eq;
-                    eq.threads = o->threads;
-                    eq.plots = !o->no_plots;
-                    eq.gnuplot = o->gnuplot;
-                    eq.commit = VSSW_GIT_COMMIT;
-                    if (progress.on())
-                        eq.progress = [&progress](long done, long total, const std::string& what) {
-                            progress.show(done, total, "earthquake: " + what);
-                        };
-                    earthquake = study::run_earthquake_part(earthquake_file, engines, staged.path() / "earthquake", eq);
-                    progress.clear();
-                    options.earthquake = &*earthquake;
-                }
+                const std::optional<study::EarthquakePart> earthquake =
+                    run_earthquake(*o, earthquake_file, engines, staged.path() / "earthquake", progress);
+                if (earthquake) options.earthquake = &*earthquake;
                 study::ReportFiles files = study::write_suite_report(staged.path(), suite, results, meta, options);
                 staged.commit();
                 for (std::filesystem::path* p : {&files.dir, &files.markdown, &files.html, &files.json})

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "analytic/error.hpp"
+#include "compare/record_bootstrap.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -292,29 +293,9 @@ std::uint64_t uniform_index(std::mt19937_64& rng, std::uint64_t n) {
 FitBootstrap bootstrap_fit(const std::vector<IdaRecord>& records, const BootstrapOptions& options) {
     check_records(records);
     check_bootstrap_options(options);
-    FitBootstrap out;
-    out.fit = fit_impl(records, false);
-    if (!out.fit.ok()) {
-        out.median = out.beta = nan_interval(0);
-        return out;
-    }
     const bool mle = any_censored(records);
-    std::mt19937_64 rng(options.seed);
-    std::vector<IdaRecord> sample(records.size());
-    std::vector<double> medians, betas;
-    for (int b = 0; b < options.replicates; ++b) {
-        for (IdaRecord& r : sample) r = records[uniform_index(rng, records.size())];
-        const LognormalFit fit = fit_impl(sample, mle);
-        if (!fit.ok()) {
-            ++out.failed;
-            continue;
-        }
-        medians.push_back(fit.median);
-        betas.push_back(fit.beta);
-    }
-    out.median = percentile_interval(out.fit.median, std::move(medians), options.confidence);
-    out.beta = percentile_interval(out.fit.beta, std::move(betas), options.confidence);
-    return out;
+    return bootstrap_records(records, fit_impl(records, false),
+                             [mle](const std::vector<IdaRecord>& sample) { return fit_impl(sample, mle); }, options);
 }
 
 RatioBootstrap bootstrap_median_ratio(const std::vector<IdaRecord>& engine, const std::vector<IdaRecord>& reference,
@@ -324,35 +305,11 @@ RatioBootstrap bootstrap_median_ratio(const std::vector<IdaRecord>& engine, cons
     check_records(engine);
     check_records(reference);
     check_bootstrap_options(options);
-    RatioBootstrap out;
-    const LognormalFit engine_fit = fit_impl(engine, false);
-    const LognormalFit reference_fit = fit_impl(reference, false);
-    if (!engine_fit.ok() || !reference_fit.ok()) {
-        out.ratio = nan_interval(0);
-        return out;
-    }
-    const bool engine_mle = any_censored(engine);
-    const bool reference_mle = any_censored(reference);
-    std::mt19937_64 rng(options.seed);
-    const std::size_t n = engine.size();
-    std::vector<IdaRecord> engine_sample(n), reference_sample(n);
-    std::vector<double> ratios;
-    for (int b = 0; b < options.replicates; ++b) {
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::uint64_t pick = uniform_index(rng, n);
-            engine_sample[i] = engine[pick];
-            reference_sample[i] = reference[pick];
-        }
-        const LognormalFit e = fit_impl(engine_sample, engine_mle);
-        const LognormalFit r = fit_impl(reference_sample, reference_mle);
-        if (!e.ok() || !r.ok()) {
-            ++out.failed;
-            continue;
-        }
-        ratios.push_back(e.median / r.median);
-    }
-    out.ratio = percentile_interval(engine_fit.median / reference_fit.median, std::move(ratios), options.confidence);
-    return out;
+    const bool engine_mle = any_censored(engine), reference_mle = any_censored(reference);
+    return bootstrap_paired_ratio(
+        engine, reference, fit_impl(engine, false), fit_impl(reference, false),
+        [engine_mle](const std::vector<IdaRecord>& sample) { return fit_impl(sample, engine_mle); },
+        [reference_mle](const std::vector<IdaRecord>& sample) { return fit_impl(sample, reference_mle); }, options);
 }
 
 double quantile(const std::vector<double>& values, double p) {

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <string>
 
 #include "analytic/error.hpp"
+#include "compare/record_bootstrap.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -142,28 +142,8 @@ FitBootstrap bootstrap_stripes(const std::vector<double>& levels, const std::vec
                                const BootstrapOptions& options) {
     check(levels, records);
     check_bootstrap_options(options);
-    FitBootstrap out;
-    out.fit = fit(levels, records);
-    if (!out.fit.ok()) {
-        out.median = out.beta = {kNaN, kNaN, kNaN, 0};
-        return out;
-    }
-    std::mt19937_64 rng(options.seed);
-    std::vector<StripeOutcomes> sample(records.size());
-    std::vector<double> medians, betas;
-    for (int b = 0; b < options.replicates; ++b) {
-        for (StripeOutcomes& r : sample) r = records[uniform_index(rng, records.size())];
-        const LognormalFit f = fit(levels, sample);
-        if (!f.ok()) {
-            ++out.failed;
-            continue;
-        }
-        medians.push_back(f.median);
-        betas.push_back(f.beta);
-    }
-    out.median = percentile_interval(out.fit.median, std::move(medians), options.confidence);
-    out.beta = percentile_interval(out.fit.beta, std::move(betas), options.confidence);
-    return out;
+    const auto refit = [&levels](const std::vector<StripeOutcomes>& sample) { return fit(levels, sample); };
+    return bootstrap_records(records, fit(levels, records), refit, options);
 }
 
 RatioBootstrap bootstrap_stripe_median_ratio(const std::vector<double>& levels,
@@ -175,31 +155,9 @@ RatioBootstrap bootstrap_stripe_median_ratio(const std::vector<double>& levels,
     check(levels, engine);
     check(levels, reference);
     check_bootstrap_options(options);
-    RatioBootstrap out;
-    const LognormalFit e = fit(levels, engine), r = fit(levels, reference);
-    if (!e.ok() || !r.ok()) {
-        out.ratio = {kNaN, kNaN, kNaN, 0};
-        return out;
-    }
-    std::mt19937_64 rng(options.seed);
-    const std::size_t n = engine.size();
-    std::vector<StripeOutcomes> engine_sample(n), reference_sample(n);
-    std::vector<double> ratios;
-    for (int b = 0; b < options.replicates; ++b) {
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::uint64_t pick = uniform_index(rng, n);
-            engine_sample[i] = engine[pick];
-            reference_sample[i] = reference[pick];
-        }
-        const LognormalFit fe = fit(levels, engine_sample), fr = fit(levels, reference_sample);
-        if (!fe.ok() || !fr.ok()) {
-            ++out.failed;
-            continue;
-        }
-        ratios.push_back(fe.median / fr.median);
-    }
-    out.ratio = percentile_interval(e.median / r.median, std::move(ratios), options.confidence);
-    return out;
+    const auto refit = [&levels](const std::vector<StripeOutcomes>& sample) { return fit(levels, sample); };
+    return bootstrap_paired_ratio(engine, reference, fit(levels, engine), fit(levels, reference), refit, refit,
+                                  options);
 }
 
 }  // namespace vssw::compare

@@ -19,6 +19,7 @@
 #include "apps/cli.hpp"
 #include "validation/bounds.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/engine_available.hpp"
 #include "tests/temp_files.hpp"
 
 namespace {
@@ -125,6 +126,12 @@ TEST(BoundsFile, EachMalformationIsNamed) {
                    "the reference");
     expect_refused("[[engine]]\nengine = \"ode\"\ncases = [\"a\", \"a\"]\nmetric = \"period\"\nmax_error = 0.1\n",
                    "names a case twice");
+    const std::string quake = "[[earthquake]]\nengine = \"ode\"\n";
+    expect_refused(quake + "measure = \"peak\"\nmin = 0.9\n", "measure 'peak' is not one of");
+    expect_refused(quake + "measure = \"overturning_agreement\"\n", "give 'min', 'max' or both");
+    expect_refused(quake + "measure = \"overturning_agreement\"\nmin = 1\nmax = 0.5\n", "min 1 is above max 0.5");
+    expect_refused("[[earthquake]]\nengine = \"analytic\"\nmeasure = \"inside_band\"\nmin = 0\n", "the reference");
+    expect_refused(quake + "measure = \"inside_band\"\nmin = 0\nstudy = 3\n", "'study'");
 }
 
 // Found by the fuzz harness (tests/fuzz/fuzz_bounds_file.cpp): a JSON value nested a million deep crashed the
@@ -256,6 +263,24 @@ TEST(CheckCommand, ABadFileExitsWithTwoAndNamesTheProblem) {
         "[[engine]]\nengine = \"havok\"\ncases = [\"fig6-pw/r0.5\"]\nmetric = \"period\"\nmax_error = 0.1\n");
     EXPECT_EQ(unknown_engine.code, 2);
     EXPECT_NE(unknown_engine.err.find("havok"), std::string::npos) << unknown_engine.err;
+
+    const CliResult no_study = run_check(
+        "[[earthquake]]\nstudy = \"/nonexistent/e.toml\"\nengine = \"ode\"\nmeasure = \"inside_band\"\nmin = 0\n");
+    EXPECT_EQ(no_study.code, 2);
+    EXPECT_NE(no_study.err.find("/nonexistent/e.toml"), std::string::npos) << no_study.err;
+}
+
+// An earthquake bound holds the engine's measure on the named ensemble: ODE agrees with the reference on every run of
+// the report's ensemble (docs/earthquakes.md), so an agreement of at least 0.9 holds and one above 1 cannot.
+TEST(CheckCommand, AnEarthquakeBoundHoldsTheEnsemblesMeasure) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    const std::string bound = "[[earthquake]]\nengine = \"ode\"\nmeasure = \"overturning_agreement\"\n";
+    const CliResult held = run_check(bound + "min = 0.9\n");
+    EXPECT_EQ(held.code, 0) << held.out << held.err;
+    EXPECT_NE(held.out.find("ensemble-report"), std::string::npos) << held.out;
+    const CliResult out_of = run_check(bound + "min = 1.01\n");
+    EXPECT_EQ(out_of.code, 1) << out_of.out << out_of.err;
+    EXPECT_NE(out_of.out.find("OUT"), std::string::npos) << out_of.out;
 }
 
 }  // namespace

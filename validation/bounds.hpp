@@ -37,11 +37,22 @@ struct StressBound {
     std::vector<std::string> allowed;
 };
 
+// An engine's measure under a record ensemble (validation/earthquake.hpp): the value must lie in [min, max]. Measures:
+// overturning_agreement, fragility_median_ratio, peak_ratio_median, inside_band (the share of runs inside the
+// reference's band). Held in apps/ (cmd_check.cpp), which runs the ensemble.
+struct EarthquakeBound {
+    std::string study;  // the ensemble, as `vssw report --earthquake` names it ("default": the shipped one)
+    std::string engine;
+    std::string measure;
+    double min, max;
+};
+
 struct Bounds {
     std::string suite = "default";  // where the case ids come from: a shipped suite or a suite file (study::read_suite)
     std::vector<AnalyticBound> analytic;
     std::vector<EngineBound> engines;
     std::vector<StressBound> stress;
+    std::vector<EarthquakeBound> earthquake;
 };
 
 // The case ids and engines the bounds need (each once, in first-mention order): `check` runs only these.
@@ -59,6 +70,7 @@ struct BoundVerdict {
     std::string note;  // why it failed when that is not the number (the engine failed, the metric is missing)
     // A stress bound's verdict and the verdicts allowed, shown instead of value, lo and hi (which are NaN).
     std::string value_label, allowed_label;
+    bool earthquake = false;  // an [[earthquake]] bound: case is the ensemble's study, metric its measure
 };
 
 // Every bound against the results, in the bounds' order. A missing row, a NaN or an engine failure on the case is a

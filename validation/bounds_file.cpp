@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "analytic/error.hpp"
@@ -84,6 +85,20 @@ private:
     std::string where_;
 };
 
+// An [[earthquake]] entry: study (default "default"), engine, measure, and min, max or both.
+compare::EarthquakeBound earthquake_bound(const EntryReader& r) {
+    static const std::vector<std::string> kMeasures = {"overturning_agreement", "fragility_median_ratio",
+                                                       "peak_ratio_median", "inside_band"};
+    compare::EarthquakeBound b{r.has("study") ? r.text("study") : "default", r.text("engine"), r.text("measure"),
+                               r.has("min") ? r.number("min") : -HUGE_VAL, r.has("max") ? r.number("max") : HUGE_VAL};
+    if (b.engine == "analytic") throw InputError(r.where() + ": engine 'analytic' is the reference");
+    if (std::find(kMeasures.begin(), kMeasures.end(), b.measure) == kMeasures.end())
+        throw InputError(fmt::format("{}: measure '{}' is not one of {}", r.where(), b.measure, fmt::join(kMeasures, ", ")));
+    if (!r.has("min") && !r.has("max")) throw InputError(r.where() + ": give 'min', 'max' or both");
+    if (b.min > b.max) throw InputError(fmt::format("{}: min {} is above max {}", r.where(), b.min, b.max));
+    return b;
+}
+
 const json& list_of_tables(const json& doc, const char* key, const std::string& name) {
     static const json kEmpty = json::array();
     if (!doc.contains(key)) return kEmpty;
@@ -96,9 +111,11 @@ const json& list_of_tables(const json& doc, const char* key, const std::string& 
 compare::Bounds to_bounds(const json& doc, const std::string& name) {
     if (!doc.is_object()) throw InputError(fmt::format("bounds file {}: the top level must be a table", name));
     for (const auto& item : doc.items())
-        if (item.key() != "suite" && item.key() != "analytic" && item.key() != "engine" && item.key() != "stress")
-            throw InputError(fmt::format("bounds file {}: unknown key '{}' (known: suite, analytic, engine, stress)",
-                                         name, item.key()));
+        if (item.key() != "suite" && item.key() != "analytic" && item.key() != "engine" && item.key() != "stress" &&
+            item.key() != "earthquake")
+            throw InputError(fmt::format(
+                "bounds file {}: unknown key '{}' (known: suite, analytic, engine, stress, earthquake)", name,
+                item.key()));
     compare::Bounds bounds;
     if (doc.contains("suite")) {
         if (!doc["suite"].is_string())
@@ -144,9 +161,14 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
                 throw InputError(fmt::format("{}: 'allowed' holds '{}', not a verdict (ok, refused, failed)", r.where(), v));
         bounds.stress.push_back(b);
     }
-    if (bounds.analytic.empty() && bounds.engines.empty() && bounds.stress.empty())
-        throw InputError(
-            fmt::format("bounds file {}: no bounds ([[analytic]], [[engine]] or [[stress]] entries)", name));
+    i = 0;
+    for (const json& entry : list_of_tables(doc, "earthquake", name))
+        bounds.earthquake.push_back(
+            earthquake_bound(EntryReader(entry, fmt::format("bounds file {}: earthquake bound #{}", name, ++i),
+                                         {"study", "engine", "measure", "min", "max"})));
+    if (bounds.analytic.empty() && bounds.engines.empty() && bounds.stress.empty() && bounds.earthquake.empty())
+        throw InputError(fmt::format(
+            "bounds file {}: no bounds ([[analytic]], [[engine]], [[stress]] or [[earthquake]] entries)", name));
     return bounds;
 }
 
