@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -333,6 +334,47 @@ EnsembleMeasures ensemble_measures(const StudyData& d) {
         }
     }
     return e;
+}
+
+std::vector<RockingCurve> rocking_curves(const StudyData& d) {
+    Columns c = columns_of(d);
+    c.pga_stripe = nominal_pga(d, c);
+    const std::size_t alpha = d.column("alpha"), size = d.column("R");
+    if (c.file == std::string::npos || d.columns[c.file].order.size() < 2 || alpha == std::string::npos ||
+        !d.columns[alpha].varied || c.peak_metric == std::string::npos)
+        return {};
+    // (series, R level, stripe) -> alpha level -> peaks and overturned runs over the records.
+    using CurveKey = std::tuple<std::size_t, std::uint32_t, std::uint32_t>;
+    std::map<CurveKey, std::map<std::uint32_t, std::pair<std::vector<double>, long>>> groups;
+    for (const StudyRow& r : d.rows) {
+        if (r.metric != c.peak_metric || !nominal(d, c, r)) continue;
+        const std::uint32_t stripe = c.pga == std::string::npos ? kEmptyLevel : c.pga_stripe[r.levels[c.pga]];
+        const std::uint32_t R = size == std::string::npos ? kEmptyLevel : r.levels[size];
+        for (std::size_t s = 0; s < d.series.size(); ++s)
+            if (!repeats_earlier(d, s) && d.in_series(r, d.series[s]))
+                groups[{s, R, stripe}][r.levels[alpha]].first.push_back(r.value);
+    }
+    for (const StudyRow& r : d.rows) {  // the overturned runs, counted where their peak is
+        if (r.metric != c.overturned_metric || !nominal(d, c, r) || !(r.value > 0.5)) continue;
+        const std::uint32_t stripe = c.pga == std::string::npos ? kEmptyLevel : c.pga_stripe[r.levels[c.pga]];
+        const std::uint32_t R = size == std::string::npos ? kEmptyLevel : r.levels[size];
+        for (std::size_t s = 0; s < d.series.size(); ++s)
+            if (!repeats_earlier(d, s) && d.in_series(r, d.series[s])) ++groups[{s, R, stripe}][r.levels[alpha]].second;
+    }
+    std::vector<RockingCurve> out;
+    for (const auto& [key, by_alpha] : groups) {
+        const auto& [s, R, stripe] = key;
+        RockingCurve curve{s, size == std::string::npos ? NAN : d.columns[size].values[R],
+                           c.pga == std::string::npos ? NAN : d.columns[c.pga].values[stripe], {}};
+        for (std::uint32_t a : d.columns[alpha].order) {
+            const auto it = by_alpha.find(a);
+            if (it == by_alpha.end()) continue;
+            curve.points.push_back({d.columns[alpha].values[a], compare::quartiles(it->second.first),
+                                    it->second.second});
+        }
+        out.push_back(std::move(curve));
+    }
+    return out;
 }
 
 }  // namespace vssw::study

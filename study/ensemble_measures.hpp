@@ -71,6 +71,22 @@ struct EnsembleMeasures {
 
 EnsembleMeasures ensemble_measures(const StudyData& d);
 
+// The paper's Fig. 10 rocking curves with the ensemble's spread: per series, size R and stripe (PGA level), the peak
+// |theta1| / alpha1 over the records at each slenderness alpha of the whole wall (median and quartiles; an overturned
+// run counts at its collapse angle, as its peak does) and how many of them overturned. Empty unless the study varies
+// alpha and the record file (>= 2) and measures peak_rotation; perturbed repeats are left out.
+struct RockingPoint {
+    double alpha = 0.0;
+    compare::Quartiles peak{};
+    long overturned = 0;
+};
+struct RockingCurve {
+    std::size_t series = 0;
+    double R = 0.0, pga = 0.0;  // NaN when the study does not give them
+    std::vector<RockingPoint> points;  // by alpha, in the study's order
+};
+std::vector<RockingCurve> rocking_curves(const StudyData& d);
+
 // Whether series s repeats an earlier one (the same engine, settings and assumptions): a study of several parts lists
 // each part's runs; the measures and plots hold each series once.
 bool repeats_earlier(const StudyData& d, std::size_t s);

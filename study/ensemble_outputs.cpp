@@ -163,6 +163,52 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
     return s;
 }
 
+// Fig. 10's rocking curves with the ensemble's spread: one panel per stripe (PGA), per series and size R the median
+// peak over the records against alpha with its quartiles as bars.
+PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& curves) {
+    std::vector<double> stripes;
+    for (const RockingCurve& c : curves)
+        if (std::find(stripes.begin(), stripes.end(), c.pga) == stripes.end()) stripes.push_back(c.pga);
+    std::vector<double> sizes;
+    for (const RockingCurve& c : curves)
+        if (std::find(sizes.begin(), sizes.end(), c.R) == sizes.end()) sizes.push_back(c.R);
+    const Styles styles = styles_of(d);
+    const PanelLayout layout = panel_layout(stripes.size());
+    PlotScript s;
+    s.plot = {kEnsembleSection, "rocking_curves",
+              "Rocking curves (Fig. 10): peak |theta1|/alpha1 over the records against alpha, median and quartiles",
+              false};
+    s.dat = "# " + gp_comment(s.plot.title) + "\n";
+    std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+                     "set xlabel 'alpha [rad]'\nset ylabel 'peak |theta1| / alpha1'\nset key top right\n" +
+                     layout_begin(layout, s.plot.title);
+    std::size_t block = 0;
+    std::vector<std::pair<std::string, std::string>> entries;
+    for (double pga : stripes) {
+        std::string cmd;
+        for (const RockingCurve& c : curves) {
+            if (!(c.pga == pga || (std::isnan(c.pga) && std::isnan(pga)))) continue;
+            const std::size_t r = static_cast<std::size_t>(std::find(sizes.begin(), sizes.end(), c.R) - sizes.begin());
+            const std::string style =
+                series_style(d.series[c.series].engine, styles.variants[c.series] * sizes.size() + r);
+            const std::string label = d.series[c.series].label + (sizes.size() > 1 ? fmt::format(" R={:g}", c.R) : "");
+            s.dat += fmt::format("# {}: alpha median q1 q3 records overturned\n", gp_comment(label));
+            for (const RockingPoint& p : c.points)
+                s.dat += fmt::format("{} {} {} {} {} {}\n", gp_number(p.alpha), gp_number(p.peak.median),
+                                     gp_number(p.peak.q1), gp_number(p.peak.q3), p.peak.n, p.overturned);
+            s.dat += "\n\n";
+            // A single panel keeps its key inside (titles); several share the legend panel (entries).
+            cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} {}",
+                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block++, style,
+                               layout.multiplot() ? "notitle" : "title " + gp_string(label));
+            if (pga == stripes.front()) entries.push_back({label, style});
+        }
+        gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("PGA {:g} g", pga)) + cmd + "\n";
+    }
+    s.gp = gp + layout_end(layout, entries);
+    return s;
+}
+
 std::string interval_text(const compare::Interval& i, const std::string& format) {
     if (!std::isfinite(i.value)) return "-";
     return fmt::format("{} [{}, {}]", fmt::format(fmt::runtime(format), i.value),
@@ -219,6 +265,8 @@ void add_ensemble_plots(const StudyData& d, const EnsembleMeasures& e, StudyPlot
                                      [](const SeriesMeasures& m) { return !m.levels.empty(); });
     if (fits) out.scripts.push_back(fragility_plot(d, e));
     if (stripes) out.scripts.push_back(stripes_plot(d, e));
+    if (const std::vector<RockingCurve> curves = rocking_curves(d); !curves.empty())
+        out.scripts.push_back(rocking_plot(d, curves));
 }
 
 void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const EnsembleMeasures& e) {

@@ -12,6 +12,8 @@
 
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
+#include "study/ensemble_measures.hpp"
+#include "study/study_data.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
 
@@ -231,6 +233,40 @@ TEST(StudyEnsemble, DroppingTheFirstSampleShiftsTheRecordOneSampleEarlier) {
     EXPECT_THROW((void)two.drop_first_sample(), InputError);  // one sample cannot be a record
     EXPECT_THROW((void)sine_pulse(1.0, 0.5).drop_first_sample(), InputError);
     EXPECT_THROW((void)GroundMotion::none().drop_first_sample(), InputError);
+}
+
+
+// Fig. 10's rocking curves over an ensemble (study::rocking_curves): at each alpha the median and quartiles of the
+// records' peaks as results.csv holds them, computed here from the rows; the overturned runs counted.
+TEST(StudyEnsemble, RockingCurvesAreTheRecordsPeakQuartilesAtEachAlpha) {
+    constexpr double kSamePeak = 1e-12;  // results.csv prints each peak in full (17 digits): relative round-off
+    const TempDir dir(TempDir::test_name());
+    const Grid grid(study_of(dir, "metrics = [\"peak_rotation\", \"overturned\"]\nengines = [\"analytic\"]\n"
+                                  "[wall]\nalpha = [0.05, 0.1]\nR = 2.0\nhinge = 0.6\nxi = 0.1\n"
+                                  "[assumptions]\nkinematics = \"exact\"\nimpact = \"whole-mechanism\"\n"
+                                  "roller = \"unilateral\"\n[excitation]\nkind = \"ensemble\"\nfiles = [\"" +
+                                      kRinaldi + "\", \"" + kPacoimaDam + "\", \"" + kRecords +
+                                      "/parkfield1966-cholame8-050.at2\"]\nintensity = \"pga\"\nlevels = [0.4]\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    const std::vector<study::RockingCurve> curves = study::rocking_curves(study::read_study_data(dir / "out"));
+    ASSERT_EQ(curves.size(), 1u);
+    ASSERT_EQ(curves[0].points.size(), 2u);
+    for (const study::RockingPoint& p : curves[0].points) {
+        std::vector<double> peaks;
+        long overturned = 0;
+        const std::string alpha = p.alpha == 0.05 ? "0.05" : "0.1";
+        for (const auto& row : t.rows) {
+            if (row[t.column("alpha")] != alpha) continue;
+            if (row[t.column("metric")] == "peak_rotation") peaks.push_back(std::stod(row[t.column("value")]));
+            if (row[t.column("metric")] == "overturned") overturned += row[t.column("value")] == "1";
+        }
+        ASSERT_EQ(peaks.size(), 3u);
+        std::sort(peaks.begin(), peaks.end());
+        EXPECT_NEAR(p.peak.median, peaks[1], kSamePeak * peaks[1]);  // the middle of three
+        EXPECT_NEAR(p.peak.q1, 0.5 * (peaks[0] + peaks[1]), kSamePeak * peaks[1]);  // type 7 at 1/4 of three
+        EXPECT_NEAR(p.peak.q3, 0.5 * (peaks[1] + peaks[2]), kSamePeak * peaks[2]);
+        EXPECT_EQ(p.overturned, overturned);
+    }
 }
 
 }  // namespace
