@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <tuple>
@@ -231,11 +232,18 @@ void fit_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* re
         m.ratio = compare::bootstrap_stripe_median_ratio(pga, engine, ref, bootstrap_options());
 }
 
+// A run as a reader finds it: the record's file name and the PGA level ("rinaldi-228.at2 at 0.55 g").
+std::string run_name(const StudyData& d, const Columns& c, const Key& key) {
+    const std::string file = std::filesystem::path(d.columns[c.file].texts[key[c.file]]).filename().string();
+    return c.pga == std::string::npos ? file : fmt::format("{} at {:g} g", file, d.columns[c.pga].values[key[c.pga]]);
+}
+
 void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
                      const StudyData& d, const Columns& c) {
     long agree = 0, both = 0;
     std::vector<double> ratios;
     std::vector<compare::BandRun> band;
+    std::vector<Key> band_runs;  // the run of each band entry, to name the ones outside
     std::map<std::uint32_t, std::pair<long, long>> per_level;  // pga level -> (overturned, runs)
     for (const auto& [key, over] : runs.overturned) {
         if (wall_of(c, key) != wall || !std::isfinite(over)) continue;
@@ -261,13 +269,17 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
             continue;
         const auto [lo, hi] = std::minmax_element(repeats->second.begin(), repeats->second.end());
         band.push_back({ref_peak->second, std::min(*lo, ref_peak->second), std::max(*hi, ref_peak->second), own_peak});
+        band_runs.push_back(key);
     }
     if (!m.stripes) return;
     m.overturning = both > 0 ? compare::wilson_interval(agree, both, kEnsembleConfidence)
                              : compare::Interval{NAN, NAN, NAN, 0};
     m.peak_ratio = compare::quartiles(ratios);
     m.band = !band.empty();
-    if (m.band) m.inside = compare::count_inside_band(band);
+    if (m.band) {
+        m.inside = compare::count_inside_band(band);
+        for (std::size_t i : m.inside.outside) m.outside_band.push_back(run_name(d, c, band_runs[i]));
+    }
     if (c.pga == std::string::npos) return;
     if (!m.ida) fit_stripes(m, runs, reference, wall, d, c);
     for (std::uint32_t l : d.columns[c.pga].order) {

@@ -57,6 +57,7 @@ struct SeriesMeasures {
     compare::Quartiles peak_ratio{};  // its peak / the reference's where neither overturned
     bool band = false;                // the reference had perturbed repeats
     compare::BandCount inside;        // its peaks inside the reference's band
+    std::vector<std::string> outside_band;  // the runs outside it ("file at 0.55 g"), in the study's order
     std::vector<StripeShare> levels;  // by PGA level, in the study's order
 };
 

@@ -54,6 +54,7 @@ EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
     if (m.band) {
         v.inside = m.inside.inside;
         v.band_runs = m.inside.runs;
+        v.outside = m.outside_band;
     }
     v.agreement_pass = v.agreement.value >= kOverturningAgreementTarget;
     v.fragility_pass = std::abs(v.median_ratio.value - 1.0) <= kFragilityMedianTarget;
@@ -132,7 +133,7 @@ Json earthquake_json(const EarthquakePart& part) {
                                            {"q1", finite_or_null(v.peak_ratio.q1)},
                                            {"q3", finite_or_null(v.peak_ratio.q3)},
                                            {"n", v.peak_ratio.n}}},
-                           {"inside_band", {{"inside", v.inside}, {"runs", v.band_runs}}}});
+                           {"inside_band", {{"inside", v.inside}, {"runs", v.band_runs}, {"outside", v.outside}}}});
     }
     return Json{{"study", part.study_name},
                 {"folder", part.folder.filename().string()},

@@ -34,6 +34,7 @@ struct EarthquakeVerdict {
     std::string fit_note;              // why the engine's fragility was not fitted (empty when it was)
     compare::Quartiles peak_ratio{};   // its peak / the reference's where both stand
     long inside = 0, band_runs = 0;    // its peaks inside the reference's sensitivity band
+    std::vector<std::string> outside;  // the runs outside it ("file at 0.55 g")
     bool agreement_pass = false, fragility_pass = false;
 };
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "multibody/engine.hpp"
 #include "validation/earthquake.hpp"
@@ -99,6 +100,16 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
         "paper's Eq. (19) impact moves the reference's own median by +14 %). With 16 runs an interval is wide: a "
         "verdict says what this ensemble shows, studies/ensemble-full.toml measures it on 26 records.",
         kOverturningAgreementTarget, 100.0 * kFragilityMedianTarget)));
+    std::vector<std::string> outside;
+    for (const EarthquakeVerdict& v : p.engines)
+        if (!v.outside.empty())
+            outside.push_back(fmt::format("{}: {}", multibody::engine_display_name(v.engine), fmt::join(v.outside, "; ")));
+    if (!outside.empty()) {
+        b.push_back(paragraph("Runs whose peak lies outside the reference's band (where a difference is the engine's "
+                              "and not the response's own sensitivity, or the band is narrower than the step's "
+                              "error):"));
+        b.push_back(list(outside));
+    }
     const std::filesystem::path plots = p.folder / "plots";
     for (const auto& [name, title] :
          {std::pair<const char*, const char*>{"fragility", "Fragility: lognormal fits and the stripes' shares"},
