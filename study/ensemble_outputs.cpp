@@ -175,7 +175,7 @@ PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& cur
     const Styles styles = styles_of(d);
     const PanelLayout layout = panel_layout(stripes.size());
     PlotScript s;
-    s.plot = {kEnsembleSection, "rocking_curves",
+    s.plot = {kEnsembleSection, "ensemble_rocking",
               "Rocking curves (Fig. 10): peak |theta1|/alpha1 over the records against alpha, median and quartiles",
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
