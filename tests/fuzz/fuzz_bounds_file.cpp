@@ -26,7 +26,16 @@ namespace {
 }
 
 void check_bounds(const vssw::compare::Bounds& b, const char* format) {
-    if (b.analytic.empty() && b.engines.empty() && b.stress.empty()) finding(format, "bounds without an entry");
+    if (b.analytic.empty() && b.engines.empty() && b.stress.empty() && b.earthquake.empty())
+        finding(format, "bounds without an entry");
+    for (const auto& q : b.earthquake) {
+        if (q.engine.empty() || q.engine == "analytic" || q.study.empty()) finding(format, "earthquake bound incomplete");
+        if (q.measure != "overturning_agreement" && q.measure != "fragility_median_ratio" &&
+            q.measure != "peak_ratio_median" && q.measure != "inside_band")
+            finding(format, "earthquake bound with an unknown measure");
+        if (std::isnan(q.min) || std::isnan(q.max) || q.min > q.max || (std::isinf(q.min) && std::isinf(q.max)))
+            finding(format, "earthquake bound with a bad interval");
+    }
     for (const auto& st : b.stress) {
         if (st.case_ids.empty() || st.allowed.empty()) finding(format, "stress bound without cases or verdicts");
         for (const auto& v : st.allowed)
