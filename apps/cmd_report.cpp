@@ -176,7 +176,7 @@ Command add_report_command(CLI::App& root) {
                 require_records_readable(suite);
                 const bool earthquake_asked = o->earthquake_option->count() > 0 || o->cases.empty();
                 const std::string earthquake_file =
-                    earthquake_asked ? study::earthquake_study_file(o->earthquake) : std::string();
+                    earthquake_asked ? study::earthquake_study_file(o->earthquake, engines) : std::string();
                 const std::filesystem::path dir = o->out;
                 // After every other check, before the suite runs. Nothing is made in --out until the report is
                 // complete: it is written into a staging folder that then replaces --out whole (a failed run leaves

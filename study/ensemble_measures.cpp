@@ -24,6 +24,8 @@ using Key = std::vector<std::uint32_t>;  // a run's levels with engine, settings
 const std::vector<std::string> kPreferredReference = {"exact", "whole-mechanism", "unilateral"};
 // The status of an IDA record that stood up to the search's ceiling (study/measure.cpp, collapse_scale).
 constexpr const char* kCensoredStatus = "failed: does not overturn up to a PGA of ";
+// The status of an IDA record that overturned at the first scale tried, with that PGA in parentheses.
+constexpr const char* kAtThresholdStatus = "failed: overturns at the scale where the record's PGA equals the rest";
 
 // What one series ran, keyed by run.
 struct SeriesRuns {
@@ -102,13 +104,24 @@ std::vector<std::uint32_t> nominal_pga(const StudyData& d, const Columns& c) {
 
 // An IDA row as a record: collapsed at its value, right-censored at the ceiling, or nothing (another failure).
 std::optional<IdaRecord> ida_record(const StudyData& d, const Columns& c, const StudyRow& r) {
+    (void)c;
     if (std::isfinite(r.value) && r.value > 0.0) return IdaRecord{r.value, true};
     const std::string& status = d.statuses[r.status];
-    if (status.rfind(kCensoredStatus, 0) != 0) return std::nullopt;
-    double cap = c.max_pga == std::string::npos ? NAN : d.columns[c.max_pga].values[r.levels[c.max_pga]];
-    if (!(cap > 0.0)) cap = std::strtod(status.c_str() + std::string(kCensoredStatus).size(), nullptr);
-    if (!(std::isfinite(cap) && cap > 0.0)) return std::nullopt;
-    return IdaRecord{cap, false};
+    // Stood up to the last PGA run below max_pga: right-censored there.
+    if (status.rfind(kCensoredStatus, 0) == 0) {
+        const double cap = std::strtod(status.c_str() + std::string(kCensoredStatus).size(), nullptr);
+        if (std::isfinite(cap) && cap > 0.0) return IdaRecord{cap, false};
+        return std::nullopt;
+    }
+    // Overturned already at the first scale tried (the record's PGA at the wall's rest threshold): its collapse PGA
+    // is at most that; taken as collapsing there (an upper bound of a record with the lowest capacity, which leaving it
+    // out would bias the median up far more).
+    if (status.rfind(kAtThresholdStatus, 0) == 0) {
+        const std::size_t open = status.rfind('(');
+        const double at = open == std::string::npos ? NAN : std::strtod(status.c_str() + open + 1, nullptr);
+        if (std::isfinite(at) && at > 0.0) return IdaRecord{at, true};
+    }
+    return std::nullopt;
 }
 
 std::vector<SeriesRuns> collect(const StudyData& d, const Columns& c) {
@@ -246,11 +259,16 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     std::vector<Key> band_runs;  // the run of each band entry, to name the ones outside
     std::map<std::uint32_t, std::pair<long, long>> per_level;  // pga level -> (overturned, runs)
     for (const auto& [key, over] : runs.overturned) {
-        if (wall_of(c, key) != wall || !std::isfinite(over)) continue;
+        if (wall_of(c, key) != wall) continue;
         m.stripes = true;
-        auto& level = per_level[c.pga == std::string::npos ? kEmptyLevel : key[c.pga]];
-        level.first += over > 0.5 ? 1 : 0;
-        ++level.second;
+        // A failed run (no value) is no share of a level, and where the reference has a result it is a run the
+        // series does not agree on: an engine does not pass by failing.
+        if (!std::isfinite(over)) ++m.failed_runs;
+        if (std::isfinite(over)) {
+            auto& level = per_level[c.pga == std::string::npos ? kEmptyLevel : key[c.pga]];
+            level.first += over > 0.5 ? 1 : 0;
+            ++level.second;
+        }
         if (!reference) continue;
         const auto peak = runs.peak.find(key);
         const double own_peak = peak == runs.peak.end() ? NAN : peak->second;
@@ -258,7 +276,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         const auto ref_peak = reference->peak.find(key);
         if (ref_over != reference->overturned.end() && std::isfinite(ref_over->second)) {
             ++both;
-            agree += (over > 0.5) == (ref_over->second > 0.5) ? 1 : 0;
+            agree += std::isfinite(over) && (over > 0.5) == (ref_over->second > 0.5) ? 1 : 0;
             if (over < 0.5 && ref_over->second < 0.5 && ref_peak != reference->peak.end() &&
                 std::isfinite(ref_peak->second) && ref_peak->second != 0.0 && std::isfinite(own_peak))
                 ratios.push_back(own_peak / ref_peak->second);

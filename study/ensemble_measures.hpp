@@ -11,8 +11,9 @@
 //    per level the share of runs that overturned (Wilson intervals), and a lognormal fit to those shares with its
 //    bootstrap over records and the paired ratio of its median to the reference's (compare/stripe_fragility.hpp).
 //  - IDA (kind scale-to-collapse): per record its collapse_pga; a record that did not overturn up to max_pga (status
-//    "failed: does not overturn up to a PGA of X g (max_pga)", study/measure.cpp) is right-censored at the max_pga
-//    column's value, else at the X of that status. A lognormal fit with bootstrap intervals, and the paired bootstrap
+//    "failed: does not overturn up to a PGA of X g (...)", X the last PGA run, study/measure.cpp) is right-censored
+//    at X; one that overturned at the first scale tried counts as collapsing at that PGA (its status gives it, an
+//    upper bound). A lognormal fit with bootstrap intervals, and the paired bootstrap
 //    ratio of its median to the reference's over the records both have. Other failed rows are left out (counted).
 // The bootstrap's seed and replicates are fixed (kEnsembleSeed, kEnsembleReplicates): the outputs are the same bytes
 // on every run, resume and merge.
@@ -53,7 +54,9 @@ struct SeriesMeasures {
     long left_out = 0;
     // Stripes.
     bool stripes = false;
-    compare::Interval overturning{};  // share of runs where it and the reference agree on overturning
+    compare::Interval overturning{};  // share of runs where it and the reference agree on overturning (a run of its
+                                      // that failed where the reference has a result counts as not agreeing)
+    long failed_runs = 0;             // its runs with no overturning value (failed)
     compare::Quartiles peak_ratio{};  // its peak / the reference's where neither overturned
     bool band = false;                // the reference had perturbed repeats
     compare::BandCount inside;        // its peaks inside the reference's band

@@ -46,7 +46,6 @@ bool is_reference(const EnsembleMeasures& e, const SeriesMeasures& m) {
 
 std::string pga_text(double pga) { return fmt::format("{:.6g}", pga); }
 
-// The ECDF of a series' collapse PGAs: the collapsed records' PGAs sorted, each at its rank over all records.
 // A stripe fit's points: each level's share overturned.
 std::vector<std::pair<double, double>> stripe_points(const SeriesMeasures& m) {
     std::vector<std::pair<double, double>> out;
@@ -54,6 +53,7 @@ std::vector<std::pair<double, double>> stripe_points(const SeriesMeasures& m) {
     return out;
 }
 
+// The ECDF of a series' collapse PGAs: the collapsed records' PGAs sorted, each at its rank over all records.
 std::vector<std::pair<double, double>> ecdf(const SeriesMeasures& m) {
     std::vector<double> x;
     for (const compare::IdaRecord& r : m.records)
@@ -220,7 +220,7 @@ std::string interval_text(const compare::Interval& i, const std::string& format)
 
 void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMeasures& e) {
     out << "engine,assumptions,intensity,median,beta,median_lo,median_hi,beta_lo,beta_hi,records,collapsed,"
-           "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates\n";
+           "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates,failed_replicates\n";
     for (const SeriesMeasures& m : e.measures) {
         if (!m.fitted()) continue;
         const compare::FitBootstrap& f = m.fit;
@@ -231,7 +231,7 @@ void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMe
                            csv_number(f.beta.hi), f.fit.records, f.fit.collapsed)
             << fmt::format("{},{},{},", csv_number(ratio ? m.ratio.ratio.value : NAN),
                            csv_number(ratio ? m.ratio.ratio.lo : NAN), csv_number(ratio ? m.ratio.ratio.hi : NAN))
-            << tail_columns(d, e, m) << fmt::format(",{},{}\n", kEnsembleSeed, kEnsembleReplicates);
+            << tail_columns(d, e, m) << fmt::format(",{},{},{}\n", kEnsembleSeed, kEnsembleReplicates, f.failed);
     }
 }
 

@@ -199,11 +199,16 @@ Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run,
         return run_from_rest(engine, run, c, case_motion(grid, c, scale)).overturned;
     };
     double lo = threshold / pga, hi = kNaN;
-    if (overturns(lo)) return {kNaN, "overturns at the scale where the record's PGA equals the rest threshold"};
+    if (overturns(lo))
+        return {kNaN, fmt::format("overturns at the scale where the record's PGA equals the rest threshold ({:.6g} g)",
+                                  threshold / kStandardGravity)};
     const double step = c.step > 0.0 ? c.step : kDefaultCollapseStep;
     for (double s = lo * (1.0 + step);; s *= 1.0 + step) {
+        // The PGA named is the last one run and found standing (the next step would pass max_pga): where a
+        // fragility fit censors the record.
         if (s * pga > max_pga)
-            return {kNaN, fmt::format("does not overturn up to a PGA of {:.4g} g (max_pga)", max_pga / kStandardGravity)};
+            return {kNaN, fmt::format("does not overturn up to a PGA of {:.6g} g (the last run below max_pga {:.4g} g)",
+                                      lo * pga / kStandardGravity, max_pga / kStandardGravity)};
         if (overturns(s)) {
             hi = s;
             break;

@@ -255,10 +255,14 @@ std::vector<std::string> ensemble_files(const Reader& r, const std::string& key,
     if (!fs::is_directory(dir, ec))
         r.fail(key, fmt::format("no folder \"{}\" (looked for {})", folder, dir.string()));
     std::set<std::string> names;
-    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-        std::string ext = e.path().extension().string();
+    // Stepped with error codes (a range-for's ++ throws): a folder that cannot be listed is one line; an entry whose
+    // type cannot be read (a dangling link) is no record.
+    fs::directory_iterator it(dir, ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+        std::string ext = it->path().extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
-        if (ext == ".at2" && e.is_regular_file(ec)) names.insert(e.path().filename().string());
+        std::error_code type_ec;
+        if (ext == ".at2" && it->is_regular_file(type_ec)) names.insert(it->path().filename().string());
     }
     if (ec) r.fail(key, fmt::format("cannot list the folder \"{}\": {}", folder, ec.message()));
     for (const char* table : {"records.csv", "motions.csv"}) {
@@ -270,6 +274,10 @@ std::vector<std::string> ensemble_files(const Reader& r, const std::string& key,
         const std::size_t at = static_cast<std::size_t>(column - fields.begin());
         while (read_csv_record(in, fields)) {
             if (fields.size() <= at || fields[at].empty()) continue;
+            if (fs::path(fields[at]).has_parent_path() || fields[at] == "..")
+                r.fail(key, fmt::format("\"{}\" lists \"{}\", which is not a file name in \"{}\" (a folder's table "
+                                        "names files in it)",
+                                        table, fields[at], folder));
             if (!fs::is_regular_file(dir / fields[at], ec))
                 r.fail(key, fmt::format("\"{}\" lists \"{}\", which is not a file in \"{}\"", table, fields[at],
                                         folder));
@@ -318,6 +326,9 @@ json read_ensemble(const Reader& r, const json& ex, const std::string& ex_key, c
         e.folder = ex["ensemble"].get<std::string>();
         out["file"] = ensemble_files(r, key("ensemble"), e.folder, base_dir);
     }
+    if (out["file"].size() < 2)
+        r.fail(ex.contains("files") ? key("files") : key("ensemble"),
+               fmt::format("an ensemble needs at least two records, got {}", out["file"].size()));
     if (!ex.contains("intensity")) r.fail(ex_key, "kind ensemble needs 'intensity' (\"pga\")");
     e.intensity = r.word(ex["intensity"], key("intensity"), {"pga"});
     e.collapse = flag(r, ex, ex_key, "collapse");

@@ -22,6 +22,7 @@
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/run_monitor.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/table1.hpp"
 
@@ -591,4 +592,48 @@ TEST(simbody_compliant, CornerContactsReproduceTheContactSubsystem) {
 }
 
 }  // namespace
+
+// The unstable equilibrium (RockingModel::unstable_equilibrium) is where the potential stops rising: the generalised
+// force of gravity and overburden vanishes there. A single block's is its slenderness alpha exactly (its centroid is
+// highest with the diagonal vertical), a VSSW without overburden its alpha1; an overburden moves it inwards.
+TEST(UnstableEquilibrium, IsWhereThePotentialPeaks) {
+    constexpr double kGoldenSection = 1e-7;  // the potential is flat at its top (quadratic): in doubles its argmax
+                                             // is found to about sqrt(epsilon) of the angle
+    const auto parapet = make_parapet_model(make_parapet(4.0, 0.4));
+    EXPECT_NEAR(parapet->unstable_equilibrium(), parapet->reference_angle(), kGoldenSection);
+    const VsswGeometry fig6 = make_vssw(4.0, 0.4, 0.7);
+    const auto bare = make_vssw_model(fig6, Kinematics::exact);
+    EXPECT_NEAR(bare->unstable_equilibrium(), fig6.alpha1, kGoldenSection);
+    const auto loaded = make_vssw_model(make_vssw(4.0, 0.4, 0.7, 0.5), Kinematics::exact);
+    const double u = loaded->unstable_equilibrium(), h = 1e-4 * u;
+    EXPECT_LT(u, fig6.alpha1);
+    // Its slope vanishes there: the central difference is small next to the potential's scale V_r / alpha1.
+    constexpr double kFlatSlope = 1e-6;  // the argmax's error (~1e-8 rad) times V'' ~ V_r / alpha1^2: ~1e-7 of it
+    const double slope = (loaded->potential(u + h) - loaded->potential(u - h)) / (2.0 * h);
+    EXPECT_LT(std::abs(slope), kFlatSlope * std::abs(loaded->reference_energy()) / fig6.alpha1);
+}
+
+// An engine's folded wall (the blocks past the roller's lock, at rest tilted short of the collapse angle) has
+// overturned: RunMonitor says so once it has been still past the unstable equilibrium for 0.1 s after the shaking; a
+// wall passing there with a speed, or still there before the shaking ends, goes on.
+TEST(RunMonitorFold, StillPastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
+    const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
+    const double alpha1 = scene.alpha(), dt = 1e-3;
+    multibody::Excitation ex;
+    ex.horizontal = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, 1.0, 0.0}, "pulse");
+    ex.t_end = 5.0;
+    const multibody::BaseCorners corners{0.0, 0.0, 0.0, 0.0};
+    using Verdict = multibody::RunMonitor::Verdict;
+    const auto run = [&](double start, double theta, double rate) {
+        multibody::RunMonitor monitor("test", scene, ex, dt, {});
+        for (int i = 0; i < 300; ++i)
+            if (const Verdict v = monitor.check(start + i * dt, theta, rate, corners); v != Verdict::go_on) return v;
+        return Verdict::go_on;
+    };
+    EXPECT_EQ(run(2.5, 3.5 * alpha1, 0.0), Verdict::overturned);  // folded, still, after the shaking
+    EXPECT_EQ(run(1.0, 3.5 * alpha1, 0.0), Verdict::go_on);       // still during the shaking: not yet judged
+    EXPECT_EQ(run(2.5, 3.5 * alpha1, 0.5), Verdict::go_on);       // moving there: rocking, not folded
+    EXPECT_EQ(run(2.5, 0.5 * alpha1, 0.0), Verdict::go_on);       // still inside the unstable equilibrium
+}
+
 }  // namespace vssw

@@ -71,7 +71,7 @@ st::ResultRow value_row(const st::CaseSpec& c, const st::RunSpec& run, std::size
     st::ResultRow row{c.id, run_index, metric, NAN, "ok", ""};
     if (name == "collapse_pga" || name == "collapse_scale") {
         row.value = collapse;
-        if (std::isnan(collapse)) row.status = "failed: does not overturn up to a PGA of 2 g (max_pga)";
+        if (std::isnan(collapse)) row.status = "failed: does not overturn up to a PGA of 2 g (the last run below max_pga 2.1 g)";
     } else if (name == "overturned") {
         row.value = c.pga_g >= collapse ? 1.0 : 0.0;
     } else {

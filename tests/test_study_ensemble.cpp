@@ -158,7 +158,8 @@ TEST(StudyEnsemble, EachMalformationIsNamed) {
         {ex + files + pga + "collapse = true\nband = true\n", "excitation.band: is for a stripe analysis"},
         {ex + files + pga + "levels = [0.4]\nmax_pga = 2\n", "excitation.max_pga: is for collapse = true"},
         {ex + files + pga + "levels = [0.4]\npga = 0.3\n", "unknown key 'pga'"},
-        {ex + "files = [\"missing.at2\"]\n" + pga + "levels = [0.4]\n", "missing.at2"},
+        {ex + "files = [\"" + kRinaldi + "\", \"missing.at2\"]\n" + pga + "levels = [0.4]\n", "missing.at2"},
+        {ex + "files = [\"" + kRinaldi + "\"]\n" + pga + "levels = [0.4]\n", "at least two records, got 1"},
     };
     for (const Case& c : cases) {
         const std::string message = refusal(dir, c.toml);
@@ -174,9 +175,9 @@ TEST(StudyEnsemble, TheBandIsTheAnalyticModelsAlone) {
     const std::vector<double> levels = {0.4, 0.6};
     const std::string engines = engine_available("ode") ? "engines = [\"analytic\", \"ode\"]\n" : "";
     const Grid grid(study_of(dir, engines + "metrics = [\"peak_rotation\"]\n" + kWall +
-                                      "[excitation]\nkind = \"ensemble\"\nfiles = [\"" + kRinaldi +
-                                      "\"]\nintensity = \"pga\"\nlevels = [0.4, 0.6]\nband = true\n"));
-    ASSERT_EQ(grid.case_ids().size(), levels.size() * study::kPerturbations.size());
+                                      "[excitation]\nkind = \"ensemble\"\nfiles = [\"" + kRinaldi + "\", \"" +
+                                      kPacoimaDam + "\"]\nintensity = \"pga\"\nlevels = [0.4, 0.6]\nband = true\n"));
+    ASSERT_EQ(grid.case_ids().size(), 2u * levels.size() * study::kPerturbations.size());
     for (const int id : grid.case_ids()) {
         const study::CaseSpec c = grid.make_case(id);
         for (const study::RunSpec& run : grid.runs())
@@ -196,8 +197,9 @@ TEST(StudyEnsemble, TheBandIsTheAnalyticModelsAlone) {
         ++band_rows;
         EXPECT_EQ(row[engine], "analytic");
     }
-    EXPECT_EQ(band_rows, levels.size() * (study::kPerturbations.size() - 1));
-    EXPECT_EQ(t.rows.size(), levels.size() * (study::kPerturbations.size() + (engines.empty() ? 0 : 1)));
+    constexpr std::size_t kRecordsRun = 2;
+    EXPECT_EQ(band_rows, kRecordsRun * levels.size() * (study::kPerturbations.size() - 1));
+    EXPECT_EQ(t.rows.size(), kRecordsRun * levels.size() * (study::kPerturbations.size() + (engines.empty() ? 0 : 1)));
     // The level's rows: none and drop-first at the level, the nudged ones at level x (1 +- 1e-3).
     for (const double level : levels)
         for (const auto& [name, factor] : std::vector<std::pair<std::string, double>>{

@@ -20,7 +20,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kShippedStudy = "ensemble-report.toml";
 
-// The study file with its engines replaced by the analytic model (the reference) and the report's.
+// The study file with its engines replaced by the analytic model (the reference) and the report's; the settings it
+// gives engines that are not run are dropped (the report chooses the engines, at the file's settings for those it
+// names).
 StudySpec with_engines(const std::string& file, const std::vector<std::string>& engines) {
     const StudySpec read = read_study_file(file);
     Json doc = read.as_read;
@@ -28,18 +30,54 @@ StudySpec with_engines(const std::string& file, const std::vector<std::string>& 
     for (const std::string& e : engines)
         if (e != "analytic") names.push_back(e);
     doc["engines"] = names;
+    const auto prune = [&names](Json& table) {
+        if (!table.contains("settings") || !table["settings"].is_object()) return;
+        for (auto it = table["settings"].begin(); it != table["settings"].end();)
+            it = std::find(names.begin(), names.end(), it.key()) == names.end() ? table["settings"].erase(it)
+                                                                                 : std::next(it);
+    };
+    prune(doc);
+    if (doc.contains("part") && doc["part"].is_array())
+        for (Json& part : doc["part"]) prune(part);
     StudySpec spec = study_from_json(nlohmann::json::parse(doc.dump()), file, read.base_dir);
     spec.path = read.path;
     return spec;
 }
 
+// What the report can judge: one wall, stripes of at least two records that measure overturning and peaks, one run
+// per engine (a verdict per engine), and the reference among the analytic model's assumption sets.
 void require_stripe_ensemble(const StudySpec& spec, const std::string& file) {
-    for (const PartSpec& p : spec.parts)
-        if (p.kind != ExcitationKind::record || !p.excitation_axis("file") || !p.excitation_axis("pga"))
-            throw InputError(fmt::format("earthquake study {}: every part must be an ensemble of stripes (kind = "
-                                         "\"ensemble\" with levels): its records' overturning is what the report "
-                                         "judges",
-                                         file));
+    const auto refuse = [&file](const std::string& why) {
+        throw InputError(fmt::format("earthquake study {}: {}", file, why));
+    };
+    for (const std::string& m : {std::string("overturned"), std::string("peak_rotation")})
+        if (std::find(spec.metrics.begin(), spec.metrics.end(), m) == spec.metrics.end())
+            refuse("its metrics must include overturned and peak_rotation (what the verdicts are made of)");
+    if (spec.parts.size() != 1) refuse("one part (one wall's ensemble) is what the report judges");
+    const PartSpec& p = spec.parts.front();
+    if (!p.ensemble || p.ensemble->collapse || !p.excitation_axis("pga"))
+        refuse("it must be an ensemble of stripes (kind = \"ensemble\" with levels): its records' overturning is "
+               "what the report judges");
+    if (p.excitation_axis("file")->levels.size() < 2) refuse("an ensemble needs at least two records");
+    for (const Axis& a : p.wall)
+        if (a.varied()) refuse(fmt::format("one wall: '{}' varies", a.key));
+    for (const EngineSpec& e : p.engines)
+        for (const Axis& a : e.settings)
+            if (a.varied()) refuse(fmt::format("one run per engine: {}'s '{}' varies", e.name, a.key));
+}
+
+void require_judgeable(const StudySpec& spec, const std::string& file) {
+    require_stripe_ensemble(spec, file);
+    const Grid grid(spec);  // the checks a study's grid makes (records read, steps resolve), before anything runs
+    bool reference = false;
+    for (const RunSpec& r : grid.runs())
+        reference = reference || (r.engine == "analytic" && r.kinematics == Kinematics::exact &&
+                                  r.impact.kind == ImpactLaw::Kind::whole_mechanism && r.roller == Roller::unilateral);
+    if (!reference)
+        throw InputError(fmt::format("earthquake study {}: the analytic model must run with kinematics = \"exact\", "
+                                     "impact = \"whole-mechanism\", roller = \"unilateral\" (the reference: what "
+                                     "the engines realise)",
+                                     file));
 }
 
 EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
@@ -56,6 +94,7 @@ EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
         v.band_runs = m.inside.runs;
         v.outside = m.outside_band;
     }
+    v.failed_runs = m.failed_runs;
     v.agreement_pass = v.agreement.value >= kOverturningAgreementTarget;
     v.fragility_pass = std::abs(v.median_ratio.value - 1.0) <= kFragilityMedianTarget;
     return v;
@@ -68,18 +107,18 @@ Json interval_json(const compare::Interval& i) {
 
 }  // namespace
 
-std::string earthquake_study_file(const std::string& name_or_path) {
+std::string earthquake_study_file(const std::string& name_or_path, const std::vector<std::string>& engines) {
     if (name_or_path == "none") return "";
     const std::string file =
         name_or_path == "default" ? shipped_studies_dir() + "/" + kShippedStudy : name_or_path;
-    require_stripe_ensemble(read_study_file(file), file);
+    require_judgeable(with_engines(file, engines), file);
     return file;
 }
 
 EarthquakePart run_earthquake_part(const std::string& study_file, const std::vector<std::string>& engines,
                                    const std::filesystem::path& dir, const EarthquakeRunOptions& options) {
     const StudySpec spec = with_engines(study_file, engines);
-    require_stripe_ensemble(spec, study_file);
+    require_judgeable(spec, study_file);
     const Grid grid(spec);
     StudyRunOptions run;
     run.threads = options.threads;
@@ -113,9 +152,21 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     }
     for (const SeriesMeasures& m : e.measures)
         if (e.has_reference && m.series == e.reference) part.reference_median = m.fit.median;
-    for (const std::string& engine : engines)
-        for (const SeriesMeasures& m : e.measures)
-            if (d.series[m.series].engine == engine) part.engines.push_back(verdict_of(d, m));
+    part.preferred_reference = e.preferred_reference;
+    part.band = d.column("perturbation") != std::string::npos;
+    for (const std::string& engine : engines) {
+        const auto m = std::find_if(e.measures.begin(), e.measures.end(),
+                                    [&](const SeriesMeasures& x) { return d.series[x.series].engine == engine; });
+        if (m != e.measures.end()) {
+            part.engines.push_back(verdict_of(d, *m));
+            continue;
+        }
+        EarthquakeVerdict none;  // no row at all: every run failed before measuring
+        none.engine = engine;
+        none.agreement = none.median_ratio = {kNaN, kNaN, kNaN, 0};
+        none.fit_note = "no result on any run";
+        part.engines.push_back(none);
+    }
     return part;
 }
 
@@ -126,6 +177,7 @@ Json earthquake_json(const EarthquakePart& part) {
         agreement["pass"] = v.agreement_pass;
         ratio["pass"] = v.fragility_pass;
         ratio["note"] = v.fit_note;
+        agreement["failed_runs"] = v.failed_runs;
         engines.push_back({{"engine", v.engine},
                            {"overturning_agreement", agreement},
                            {"fragility_median_ratio", ratio},

@@ -43,6 +43,16 @@ private:
     std::optional<study::TempRegistration> registration_;
 };
 
+// Each ensemble once, for the engines its bounds name.
+std::map<std::string, std::vector<std::string>> engines_by_study(const std::vector<compare::EarthquakeBound>& bounds) {
+    std::map<std::string, std::vector<std::string>> out;
+    for (const compare::EarthquakeBound& b : bounds) {
+        std::vector<std::string>& e = out[b.study];
+        if (std::find(e.begin(), e.end(), b.engine) == e.end()) e.push_back(b.engine);
+    }
+    return out;
+}
+
 double measure_of(const study::EarthquakeVerdict& v, const std::string& measure) {
     if (measure == "overturning_agreement") return v.agreement.value;
     if (measure == "fragility_median_ratio") return v.median_ratio.value;
@@ -56,33 +66,26 @@ double measure_of(const study::EarthquakeVerdict& v, const std::string& measure)
 
 void plan_earthquake_bounds(const std::vector<compare::EarthquakeBound>& bounds, const std::string& path) {
     const std::vector<std::string> available = multibody::available_engines();
-    for (const compare::EarthquakeBound& b : bounds) {
+    for (const compare::EarthquakeBound& b : bounds)
         if (std::find(available.begin(), available.end(), b.engine) == available.end())
             throw InputError(fmt::format("bounds file {}: earthquake bound: engine '{}' is not in this build", path,
                                          b.engine));
-        try {
-            (void)study::earthquake_study_file(b.study);
+    for (const auto& [study_name, engines] : engines_by_study(bounds)) try {
+            (void)study::earthquake_study_file(study_name, engines);
         } catch (const InputError& e) {
             throw InputError(fmt::format("bounds file {}: earthquake bound: {}", path, e.what()));
         }
-    }
 }
 
 std::vector<compare::BoundVerdict> check_earthquake_bounds(const std::vector<compare::EarthquakeBound>& bounds,
                                                            int threads) {
-    // Each ensemble once, for the engines its bounds name.
-    std::map<std::string, std::vector<std::string>> engines_of;
-    for (const compare::EarthquakeBound& b : bounds) {
-        std::vector<std::string>& e = engines_of[b.study];
-        if (std::find(e.begin(), e.end(), b.engine) == e.end()) e.push_back(b.engine);
-    }
     std::map<std::string, study::EarthquakePart> parts;
-    for (const auto& [study_name, engines] : engines_of) {
+    for (const auto& [study_name, engines] : engines_by_study(bounds)) {
         const ScratchFolder scratch;
         study::EarthquakeRunOptions o;
         o.threads = threads;
         o.plots = false;
-        parts.emplace(study_name, study::run_earthquake_part(study::earthquake_study_file(study_name), engines,
+        parts.emplace(study_name, study::run_earthquake_part(study::earthquake_study_file(study_name, engines), engines,
                                                              scratch.path() / "earthquake", o));
     }
     std::vector<compare::BoundVerdict> out;

@@ -88,10 +88,12 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
     b.push_back(paragraph(fmt::format(
         "{}: {}. The reference is {}: what the engines' physics shares (exact kinematics, the whole mechanism's "
         "impact, a roller that can only push); its fragility median is {} g. Each engine ran every record at every "
-        "level once; the reference ran each also at PGA x (1 +- 1e-3) and with the record's first sample dropped, "
-        "whose spread is the response's own sensitivity (the band). {} rows, {} failed; {:.1f} s.",
-        ensemble_text(p), p.description, p.reference, interval_text(p.reference_median, "{:.3g}"), p.rows,
-        p.failed_rows, p.wall_time_s)));
+        "level once{}. A run an engine failed counts as one it does not agree on. {} rows, {} failed; {:.1f} s.",
+        ensemble_text(p), p.description, p.reference, interval_text(p.reference_median, "{:.3g}"),
+        p.band ? "; the reference ran each also at PGA x (1 +- 1e-3) and with the record's first sample dropped, "
+                 "whose spread is the response's own sensitivity (the band)"
+               : " (no band: the study does not ask for one)",
+        p.rows, p.failed_rows, p.wall_time_s)));
     b.push_back(verdict_table(p));
     b.push_back(paragraph(fmt::format(
         "Targets, set from measurements (docs/validation.md): overturning agreement at least {:g} (ODE 16 of 16, "
