@@ -16,6 +16,10 @@ constexpr int kNewtonIterations = 200;
 // Newton stops when the predicted gain of ln L (the Newton decrement's half square) is this small: ln L is a sum of
 // counts times logs of order 1-100, so 1e-12 is round-off.
 constexpr double kDecrement = 1e-12;
+// Backtracking halves a Newton step down to this fraction of it: 40 halvings, past any step that could still raise
+// a concave ln L in doubles.
+constexpr double kSmallestStep = 1e-12;
+constexpr const char* kFalling = "the share collapsed falls as the intensity rises";
 constexpr const char* kSeparated =
     "the stripes do not overlap (no run stands at a level above one where a run collapsed): no finite beta";
 
@@ -89,33 +93,44 @@ LognormalFit fit(const std::vector<double>& levels, const std::vector<StripeOutc
         return not_fitted(out, collapsed == 0.0 ? "no run collapsed" : "every run collapsed");
     // A finite maximum needs the outcomes to overlap: some run standing at a higher level than some run collapsing.
     // Otherwise (every run up to a level stands, every run from it collapses) ln L climbs for ever as beta -> 0.
+    // The mirror image (every collapse below every standing run) has its maximum at beta -> 0 with a falling share.
     double lowest_collapse = HUGE_VAL, highest_standing = -HUGE_VAL;
+    double highest_collapse = -HUGE_VAL, lowest_standing = HUGE_VAL;
     for (std::size_t j = 0; j < s.runs.size(); ++j) {
-        if (s.collapsed[j] > 0.0) lowest_collapse = std::min(lowest_collapse, s.log_level[j]);
-        if (s.collapsed[j] < s.runs[j]) highest_standing = std::max(highest_standing, s.log_level[j]);
+        if (s.runs[j] == 0.0) continue;
+        if (s.collapsed[j] > 0.0) {
+            lowest_collapse = std::min(lowest_collapse, s.log_level[j]);
+            highest_collapse = std::max(highest_collapse, s.log_level[j]);
+        }
+        if (s.collapsed[j] < s.runs[j]) {
+            highest_standing = std::max(highest_standing, s.log_level[j]);
+            lowest_standing = std::min(lowest_standing, s.log_level[j]);
+        }
     }
     if (!(highest_standing > lowest_collapse)) return not_fitted(out, kSeparated);
+    if (!(highest_collapse > lowest_standing)) return not_fitted(out, kFalling);
     // Start at beta 0.5 and the median at the runs' mean log level; Newton with backtracking on the concave ln L.
     double gamma = 2.0, delta = gamma * mean_log / runs;
     Local l = local(s, gamma, delta);
     for (int i = 0; i < kNewtonIterations; ++i) {
         const double det = l.h_gg * l.h_dd - l.h_gd * l.h_gd;
-        if (!(det > 0.0)) break;
+        if (!(det > 0.0)) return not_fitted(out, "the likelihood has no curvature here (too few distinct levels)");
         const double step_g = -(l.h_dd * l.g_gamma - l.h_gd * l.g_delta) / det;
         const double step_d = -(-l.h_gd * l.g_gamma + l.h_gg * l.g_delta) / det;
         const double decrement = 0.5 * (l.g_gamma * step_g + l.g_delta * step_d);
         if (decrement < kDecrement) {
-            if (!(gamma > 0.0)) return not_fitted(out, "the share collapsed falls as the intensity rises");
+            if (!(gamma > 0.0)) return not_fitted(out, kFalling);
             out.median = std::exp(delta / gamma);
             out.beta = 1.0 / gamma;
             return out;
         }
         double t = 1.0;
         Local next = local(s, gamma + t * step_g, delta + t * step_d);
-        while (!(next.value >= l.value) && t > 1e-12) {
+        while (!(next.value >= l.value) && t > kSmallestStep) {
             t *= 0.5;
             next = local(s, gamma + t * step_g, delta + t * step_d);
         }
+        if (!(next.value >= l.value)) return not_fitted(out, "no Newton step raises the likelihood (round-off)");
         gamma += t * step_g;
         delta += t * step_d;
         l = next;

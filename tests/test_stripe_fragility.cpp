@@ -81,6 +81,8 @@ TEST(StripeFragility, NoFiniteFitIsSaidWithItsReason) {
     // Quasi-separated: nothing collapses below the top level, where half do: still no finite maximum (beta -> 0
     // with the median at that level).
     EXPECT_FALSE(fit_lognormal_stripes(levels, from_counts({0, 2}, 4)).ok());
+    // The mirror image, collapses only below the standing runs: a falling share, no fragility.
+    EXPECT_NE(fit_lognormal_stripes(levels, from_counts({3, 0}, 5)).reason.find("falls"), std::string::npos);
     EXPECT_THROW(fit_lognormal_stripes({0.3, -1.0}, from_counts({1, 2}, 3)), InputError);
     EXPECT_THROW(fit_lognormal_stripes({0.3}, from_counts({1, 2}, 3)), InputError);
 }
