@@ -3,7 +3,7 @@
 // studies/ensemble-report.toml by default) run by the study machinery for the analytic reference and the report's
 // engines into the report's folder (earthquake/: results.csv, fragility.csv, agreement.csv, plots, study.md), and a
 // verdict per engine from its ensemble measures (study/ensemble_measures.hpp) against two targets set from
-// measurements (docs/validation.md, "Under earthquake records"). Single runs under a record are not judged: their
+// measurements (docs/earthquakes.md, "In the report"). Single runs under a record are not judged: their
 // peaks switch branch for a 1 % change of the scale (the response's own sensitivity); these measures are what the
 // engines can be held to.
 #include <filesystem>

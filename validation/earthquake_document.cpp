@@ -96,11 +96,11 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
         p.rows, p.failed_rows, p.wall_time_s)));
     b.push_back(verdict_table(p));
     b.push_back(paragraph(fmt::format(
-        "Targets, set from measurements (docs/validation.md): overturning agreement at least {:g} (ODE 16 of 16, "
+        "Targets, set from measurements (docs/earthquakes.md): overturning agreement at least {:g} (ODE 16 of 16, "
         "Bullet and Siconos 15 of 16, Simbody 13 of 16 on this ensemble; the reference's own band flips 1 run in 40 "
         "on a larger one); fragility median within {:g} % of the reference's (ODE 1.00, Bullet and Siconos 1.03; the "
         "paper's Eq. (19) impact moves the reference's own median by +14 %). With 16 runs an interval is wide: a "
-        "verdict says what this ensemble shows, studies/ensemble-full.toml measures it on 26 records.",
+        "verdict says what this ensemble shows, studies/ensemble-full.toml measures it on 46 motions and three walls.",
         kOverturningAgreementTarget, 100.0 * kFragilityMedianTarget)));
     std::vector<std::string> outside;
     for (const EarthquakeVerdict& v : p.engines)
