@@ -43,11 +43,14 @@ DocBlock verdict_table(const EarthquakePart& p) {
     t.apart_from = 3;
     t.css_class = "matrix";
     for (const EarthquakeVerdict& v : p.engines) {
-        const std::string ratio = v.fit_note.empty() ? interval_text(v.median_ratio, "{:.3f}") : "n/a: " + v.fit_note;
+        // No fit: a short cell (the reason in its tooltip and under the section's table), the table stays narrow.
+        const std::string ratio = v.fit_note.empty() ? interval_text(v.median_ratio, "{:.3f}") : "no fit";
         t.rows.push_back({{multibody::engine_display_name(v.engine)},
                           verdict_cell(interval_text(v.agreement, "{:.3f}"), v.agreement_pass,
                                        fmt::format("{} runs, 95 % Wilson interval", v.agreement.n)),
-                          verdict_cell(ratio, v.fragility_pass, "95 % paired bootstrap interval over the records"),
+                          verdict_cell(ratio, v.fragility_pass,
+                                       v.fit_note.empty() ? "95 % paired bootstrap interval over the records"
+                                                          : v.fit_note),
                           {peak_text(v.peak_ratio)},
                           {v.band_runs > 0 ? fmt::format("{} of {}", v.inside, v.band_runs) : "n/a"}});
     }
@@ -102,6 +105,14 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
         "paper's Eq. (19) impact moves the reference's own median by +14 %). With 16 runs an interval is wide: a "
         "verdict says what this ensemble shows, studies/ensemble-full.toml measures it on 46 motions and three walls.",
         kOverturningAgreementTarget, 100.0 * kFragilityMedianTarget)));
+    std::vector<std::string> unfitted;
+    for (const EarthquakeVerdict& v : p.engines)
+        if (!v.fit_note.empty())
+            unfitted.push_back(fmt::format("{}: {}", multibody::engine_display_name(v.engine), v.fit_note));
+    if (!unfitted.empty()) {
+        b.push_back(paragraph("No fragility fit:"));
+        b.push_back(list(unfitted));
+    }
     std::vector<std::string> outside;
     for (const EarthquakeVerdict& v : p.engines)
         if (!v.outside.empty())
