@@ -1066,4 +1066,13 @@ TEST(ReportEarthquake, NoneOrACaseSubsetRunsNoneAndAStudyThatIsNoEnsembleIsRefus
     EXPECT_TRUE(contains(r.err, "ensemble")) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(refused));
+    // An ensemble without the reference (the paper's impact only) cannot judge the engines: refused before running.
+    std::string text = read(small_ensemble(tmp.path));
+    text.replace(text.find("whole-mechanism"), std::string("whole-mechanism").size(), "eq19");
+    std::ofstream(tmp.path / "no-reference.toml") << text;
+    r = run_cli({"report", "--engines", "analytic", "--cases", "fig6-pw", "--earthquake",
+                 (tmp.path / "no-reference.toml").string(), "--out", refused.string()});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(contains(r.err, "the reference")) << r.err;
+    EXPECT_FALSE(fs::exists(refused));
 }

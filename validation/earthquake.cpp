@@ -50,14 +50,14 @@ void require_stripe_ensemble(const StudySpec& spec, const std::string& file) {
     const auto refuse = [&file](const std::string& why) {
         throw InputError(fmt::format("earthquake study {}: {}", file, why));
     };
-    for (const std::string& m : {std::string("overturned"), std::string("peak_rotation")})
-        if (std::find(spec.metrics.begin(), spec.metrics.end(), m) == spec.metrics.end())
-            refuse("its metrics must include overturned and peak_rotation (what the verdicts are made of)");
     if (spec.parts.size() != 1) refuse("one part (one wall's ensemble) is what the report judges");
     const PartSpec& p = spec.parts.front();
     if (!p.ensemble || p.ensemble->collapse || !p.excitation_axis("pga"))
         refuse("it must be an ensemble of stripes (kind = \"ensemble\" with levels): its records' overturning is "
                "what the report judges");
+    for (const std::string& m : {std::string("overturned"), std::string("peak_rotation")})
+        if (std::find(spec.metrics.begin(), spec.metrics.end(), m) == spec.metrics.end())
+            refuse("its metrics must include overturned and peak_rotation (what the verdicts are made of)");
     if (p.excitation_axis("file")->levels.size() < 2) refuse("an ensemble needs at least two records");
     for (const Axis& a : p.wall)
         if (a.varied()) refuse(fmt::format("one wall: '{}' varies", a.key));
