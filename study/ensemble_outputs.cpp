@@ -83,7 +83,11 @@ std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::
                             const std::string& name, std::string& dat, std::size_t& block) {
     double xmax = 0.0;
     std::string cmd;
+    std::string unfitted;  // series with data but no fit: named in the key, nothing drawn
     for (const SeriesMeasures& m : e.measures) {
+        if (m.wall == wall && m.fitted() && !m.fit.fit.ok())
+            unfitted += fmt::format(", \\\n     NaN with lines {} title {}", styles.of(d, m.series),
+                                    gp_string(d.series[m.series].label + " (no fit)"));
         if (m.wall != wall || !m.fitted() || !m.fit.fit.ok()) continue;
         for (const compare::IdaRecord& r : m.records) xmax = std::max(xmax, r.im);
         for (const StripeShare& l : m.levels) xmax = std::max(xmax, l.pga);
@@ -105,7 +109,7 @@ std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::
     }
     if (cmd.empty()) return "set label 1 'no fit' at graph 0.5, graph 0.5 center\nplot [0:1][0:1] NaN notitle\n"
                             "unset label 1\n";
-    return fmt::format("set xrange [0:{}]\nset yrange [0:1]\n", gp_number(kAxisMargin * xmax)) + cmd + "\n";
+    return fmt::format("set xrange [0:{}]\nset yrange [0:1]\n", gp_number(kAxisMargin * xmax)) + cmd + unfitted + "\n";
 }
 
 PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {

@@ -20,9 +20,9 @@ rm -rf "$work"
 mkdir -p "$work"
 
 # A small report: the Fig. 6 VSSW released at 0.5 alpha (a trace with both analytic impact laws) and the PW's
-# threshold, with ODE (about a second).
+# threshold, with ODE, and a small earthquake part (its verdict table and plots from ../earthquake/; a few seconds).
 if ! "$vssw" report --engines ode --cases fig6-vssw/r0.5,fig6-pw --data "$data" --out "$work/report" \
-        >"$work/report.log" 2>&1; then
+        --earthquake "$(dirname "$0")/earthquake_small.toml" >"$work/report.log" 2>&1; then
     echo "FAIL: vssw report failed:"; cat "$work/report.log"; exit 1
 fi
 
@@ -72,6 +72,9 @@ render() {
 }
 
 failures=0
+if ! grep -q 'id="under-earthquake-records"' "$work/report/report.html"; then
+    echo "FAIL: report.html has no section \"Under earthquake records\""; failures=$((failures + 1))
+fi
 instrument "$work/report/report.html" "$work/report/checked.html"
 verdict=$(render "$work/report/checked.html")
 case "$verdict" in
