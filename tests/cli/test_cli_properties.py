@@ -380,7 +380,7 @@ def finish(rng, command, opts, spec, positional=(), json_flag=True, files=None, 
         opts.append(("--json", None))
     args = assemble(opts, positional)
     json_out = json_flag and "--json" in args and not helped(args) and "--list-settings" not in args
-    return Case(command, [command] + args, json_out=json_out, files=files, out_dirs=out_dirs,
+    return Case(command, command.split() + args, json_out=json_out, files=files, out_dirs=out_dirs,
                 bad=[] if helped(args) else bad)
 
 
@@ -849,10 +849,34 @@ def gen_study_merge(rng):
     return Case("study merge", args, json_out="--json" in args, out_dirs=tuple(v for k, v in opts if k == "--out"))
 
 
+def gen_motions_generate(rng):
+    """A few synthetic motions (fractions of a second each); the edges stay small enough to write in seconds."""
+    spec = {"--count": Num(1, 3, integer=True, edges=(0, 3)), "--seed": Num(0, 1000, integer=True, edges=(0, 1e19)),
+            "--out": Out(OUT_DIRS, ODD_OUTS), "--dt": Num(0.005, 0.02, edges=(0.001, 0.1)),
+            "--duration": Num(5.0, 20.0, edges=(0.0, 100.0)), "--scatter": Num(0.0, 1.0, edges=(0.0, 2.0)),
+            "--d5-95": Num(5.0, 20.0, edges=(5.0, 45.0)), "--damping": Num(0.05, 0.5, edges=(0.02, 0.95)),
+            "--mechanism": Word(["strike-slip", "reverse"])}
+    opts = [("--count", spec["--count"].valid(rng)), ("--seed", spec["--seed"].valid(rng)),
+            ("--out", rng.choice(OUT_DIRS)), ("--duration", spec["--duration"].valid(rng))]
+    for key in ("--dt", "--scatter", "--d5-95", "--damping"):
+        if rng.random() < 0.3:
+            opts.append((key, spec[key].valid(rng)))
+    return finish(rng, "motions generate", opts, spec, json_flag=True)
+
+
+def gen_motions_describe(rng):
+    """Any record the readers take, and odd paths: one line naming a bad one, exit 2."""
+    files = rng.sample(RECORDS + ODD_INPUT_PATHS, rng.randint(1, 3))
+    spec = {}
+    opts = [rng.choice([("--csv", None), ("--json", None)])] if rng.random() < 0.6 else []
+    return finish(rng, "motions describe", opts, spec, positional=files, json_flag=False)
+
+
 GENERATORS = {
     "wall": gen_wall, "free": gen_free, "history": gen_history, "summary": gen_summary, "compare": gen_compare,
     "report": gen_report, "check": gen_check, "study": gen_study, "study merge": gen_study_merge,
-    "stress": gen_stress, "bench": gen_bench,
+    "stress": gen_stress, "bench": gen_bench, "motions generate": gen_motions_generate,
+    "motions describe": gen_motions_describe,
 }
 # Cases of these commands: fewer where one run costs more (report, check, stress, bench: 0.2-1 s each and little
 # option surface beyond the others'), more for study files (the file is a large input space of its own).
