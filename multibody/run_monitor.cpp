@@ -42,7 +42,9 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       b_(block_sizes(scene).b),
       friction_(scene.friction),
       collapse_(collapse_angle(scene)),
-      unstable_(unstable_equilibrium(scene)),
+      // Only a run under a ground motion can end folded (judged once the shaking is over): a free vibration or a
+      // threshold trial does not compute it.
+      unstable_(ex.horizontal.duration() > 0.0 ? unstable_equilibrium(scene) : HUGE_VAL),
       v_ref_(reference_velocity(scene)),
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),

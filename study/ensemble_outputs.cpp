@@ -78,6 +78,14 @@ Styles styles_of(const StudyData& d) {
     return {series_variants(engines)};
 }
 
+// The legend panel's entries: each series once (a study of several parts lists its runs per part).
+std::vector<std::pair<std::string, std::string>> series_entries(const StudyData& d, const Styles& styles) {
+    std::vector<std::pair<std::string, std::string>> entries;
+    for (std::size_t i = 0; i < d.series.size(); ++i)
+        if (!repeats_earlier(d, i)) entries.push_back({d.series[i].label, styles.of(d, i)});
+    return entries;
+}
+
 // One panel of the fragility plot: per series its curve, the ECDF of its records and its median's interval at 0.5.
 std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::size_t wall, const Styles& styles,
                             const std::string& name, std::string& dat, std::size_t& block) {
@@ -124,12 +132,9 @@ PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
                      "set xlabel 'PGA [g]'\nset ylabel 'P(collapse | PGA)'\nset samples 300\nset key bottom right\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
-    std::vector<std::pair<std::string, std::string>> entries;
     for (std::size_t w = 0; w < e.walls.size(); ++w)
         gp += panel_begin(layout, e.walls[w]) + fragility_panel(d, e, w, styles, s.plot.name, s.dat, block);
-    for (std::size_t i = 0; i < d.series.size(); ++i)
-        if (!repeats_earlier(d, i)) entries.push_back({d.series[i].label, styles.of(d, i)});
-    s.gp = gp + layout_end(layout, entries);
+    s.gp = gp + layout_end(layout, series_entries(d, styles));
     return s;
 }
 
@@ -160,10 +165,7 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
         gp += panel_begin(layout, e.walls[w]) + "set yrange [-0.05:1.05]\n" +
               (cmd.empty() ? "plot [0:1][0:1] NaN notitle\n" : cmd + "\n");
     }
-    std::vector<std::pair<std::string, std::string>> entries;
-    for (std::size_t i = 0; i < d.series.size(); ++i)
-        if (!repeats_earlier(d, i)) entries.push_back({d.series[i].label, styles.of(d, i)});
-    s.gp = gp + layout_end(layout, entries);
+    s.gp = gp + layout_end(layout, series_entries(d, styles));
     return s;
 }
 
