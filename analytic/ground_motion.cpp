@@ -678,6 +678,14 @@ double GroundMotion::pga() const {
     return peak;
 }
 
+double GroundMotion::quiet_after(double level) const {
+    if (is_zero_) return 0.0;
+    if (times_.empty()) return duration_;
+    for (std::size_t i = values_.size(); i-- > 0;)
+        if (std::abs(values_[i]) > level) return i + 1 < times_.size() ? times_[i + 1] : duration_;
+    return 0.0;
+}
+
 double GroundMotion::next_extremum(double t) const {
     if (is_zero_ || !times_.empty() || !next_extremum_) return std::numeric_limits<double>::infinity();
     return next_extremum_(t);

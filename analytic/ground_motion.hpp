@@ -62,6 +62,10 @@ public:
     const std::vector<double>& breakpoints() const { return breakpoints_; }
     const std::string& name() const { return name_; }
     double pga() const;  // max |a| in m/s^2 (over the samples, or an analytic signal's AnalyticShape::peak)
+    // The time after which |a(t)| stays at or below `level` (m/s^2, >= 0): for a record, the sample that follows the
+    // last one above it (a(t) is linear between samples), 0 when none is; for an analytic signal its duration (its
+    // shape is not scanned); 0 for no motion.
+    double quiet_after(double level) const;
     // The first extremum of an analytic signal after t (AnalyticShape::next_extremum); +infinity for a record (its
     // samples are its breakpoints), for no motion and for a signal monotone between its breakpoints.
     double next_extremum(double t) const;

@@ -22,6 +22,15 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // enough that the curvature of theta1''(theta1) does not matter (relative error ~1e-6), large enough that the
 // cancellation at the threshold does not (the terms are O(g), the difference O(1e-6 alpha q^2): ~1e-8 relative).
 constexpr double kGrowthStep = 1e-6;
+// RK4 steps over a trial's ramp in DepartureFromRest::angle_at: its error (h^4 q^4 ~ 1e-10 at the 0.2 s ramp) far
+// below the pointing's own error (the engine's wall is not the analytic one).
+constexpr int kRampSteps = 200;
+// Where a lift points, to this fraction of the trial's acceleration: a hundredth of the search's rel_tol (1e-4).
+constexpr double kPointedTolerance = 1e-6;
+// Guided trials of one threshold search before bisection takes over (find_threshold): 3 when the pointing is right
+// (measured: the analytic model), up to ~8 for an engine whose wall leaves rest unlike the analytic one; bisection
+// of the 2 % first bracket takes 8.
+constexpr int kGuidedTrials = 6;
 
 // Before anything reads scene.alpha() or scene.gravity(), which assume one description is set.
 void require_scene(const WallScene& scene) {
@@ -46,6 +55,66 @@ GroundMotion ramp_and_hold(double amplitude, double ramp_time, double hold_time)
         fmt::format("ramp to {} m/s^2 over {} s, held {} s", amplitude, ramp_time, hold_time));
 }
 
+namespace {
+
+// The wall's departure from rest under a held acceleration just above its threshold, linearised about rest (the
+// analytic model, exact kinematics): theta1'' = q2 theta1 + eps k, eps the relative excess over the threshold.
+// From rest: theta1(t) = eps k / q2 (cosh(sqrt(q2) t) - 1) (q2 > 0: every rocking wall), else eps k t^2 / 2.
+struct DepartureFromRest {
+    double q2, k;
+
+    static DepartureFromRest of(const WallScene& scene) {
+        const auto model = analytic_model(scene, Kinematics::exact);
+        const double alpha = model->reference_angle();
+        const double a_c = model->rest_threshold(0.0);
+        const ModelTerms rest = model->terms(0.0);
+        // Side +1 tips under a_h < 0 (engine.hpp's sign convention).
+        const double step = kGrowthStep * alpha;
+        const double q2 = (model->acceleration(1, step, 0.0, -a_c, 0.0) -
+                           model->acceleration(1, 0.0, 0.0, -a_c, 0.0)) / step;
+        return {q2, a_c * rest.X / rest.M};  // k: theta1'' at rest per unit relative excess
+    }
+    // Time for an excess eps to turn the wall to `angle` [rad].
+    double time_to(double angle, double eps) const {
+        return q2 > 0.0 ? std::acosh(1.0 + angle * q2 / (eps * k)) / std::sqrt(q2) : std::sqrt(2.0 * angle / (eps * k));
+    }
+    // theta1 at time t of a trial (ramp_and_hold to `held` over `ramp`), were the threshold `threshold` (same unit):
+    // at rest until the ramp passes the threshold, then driven by the excess; the ramp integrated (RK4 at
+    // kRampSteps steps: its excess is smooth), the hold in closed form.
+    double angle_at(double t, double held, double ramp, double threshold) const {
+        auto excess = [&](double time) {
+            const double x = std::min(time / ramp, 1.0);
+            return std::max(0.0, held * (x - std::sin(2.0 * kPi * x) / (2.0 * kPi)) / threshold - 1.0);
+        };
+        auto accel = [&](double time, double th) { return excess(time) > 0.0 ? q2 * th + k * excess(time) : 0.0; };
+        double th = 0.0, w = 0.0, time = 0.0;
+        const double h = std::min(t, ramp) / kRampSteps;
+        for (int i = 0; i < kRampSteps; ++i, time += h) {
+            const double k1 = accel(time, th), v1 = w;
+            const double k2 = accel(time + 0.5 * h, th + 0.5 * h * v1), v2 = w + 0.5 * h * k1;
+            const double k3 = accel(time + 0.5 * h, th + 0.5 * h * v2), v3 = w + 0.5 * h * k2;
+            const double k4 = accel(time + h, th + h * v3), v4 = w + h * k3;
+            th += h / 6.0 * (v1 + 2.0 * v2 + 2.0 * v3 + v4);
+            w += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        }
+        if (t <= ramp) return th;
+        const double e = excess(ramp), tau = t - ramp;
+        if (q2 <= 0.0) return th + w * tau + 0.5 * k * e * tau * tau;
+        const double om = std::sqrt(q2), shift = k * e / q2;  // theta1 + shift grows as cosh / sinh
+        return (th + shift) * std::cosh(om * tau) + w / om * std::sinh(om * tau) - shift;
+    }
+    // The threshold under which the wall of angle_at turns to `angle` at time t of a trial held at `held`: angle_at
+    // inverted (it falls as the threshold rises), by bisection in (0, held) to kPointedTolerance.
+    double threshold_for(double angle, double t, double held, double ramp) const {
+        double below = 0.0, above = held;  // angle_at(threshold = above) = 0: no excess at all
+        while (above - below > kPointedTolerance * held)
+            (angle_at(t, held, ramp, 0.5 * (below + above)) > angle ? below : above) = 0.5 * (below + above);
+        return 0.5 * (below + above);
+    }
+};
+
+}  // namespace
+
 double threshold_hold_time(const WallScene& scene, const ThresholdOptions& o) {
     require(o.rel_tol > 0.0 && o.rel_tol < 0.1, "threshold relative tolerance", "in (0, 0.1)", o.rel_tol);
     require(o.lift_angle > 0.0 && o.lift_angle < 1.0, "lift angle (units of alpha)", "in (0, 1)", o.lift_angle);
@@ -53,22 +122,8 @@ double threshold_hold_time(const WallScene& scene, const ThresholdOptions& o) {
             "in (0, 1]", o.detectable_excess);
     require(o.hold_margin >= 1.0 && std::isfinite(o.hold_margin), "hold margin", ">= 1", o.hold_margin);
     if (o.hold_time > 0.0) return o.hold_time;
-
-    const auto model = analytic_model(scene, Kinematics::exact);
-    const double alpha = model->reference_angle();
-    const double a_c = model->rest_threshold(0.0);
-    const ModelTerms rest = model->terms(0.0);
-    const double k = a_c * rest.X / rest.M;  // theta1'' at rest per unit relative excess
-    // Side +1 tips under a_h < 0 (engine.hpp's sign convention).
-    const double step = kGrowthStep * alpha;
-    const double q2 = (model->acceleration(1, step, 0.0, -a_c, 0.0) - model->acceleration(1, 0.0, 0.0, -a_c, 0.0)) /
-                      step;
-    const double eps = o.detectable_excess * o.rel_tol;
-    const double target = o.lift_angle * alpha;
-    // Unstable rest (q^2 > 0, every rocking wall): cosh growth. Otherwise the constant push alone: eps k t^2 / 2.
-    const double t = q2 > 0.0 ? std::acosh(1.0 + target * q2 / (eps * k)) / std::sqrt(q2)
-                              : std::sqrt(2.0 * target / (eps * k));
-    return o.hold_margin * t;
+    const DepartureFromRest departure = DepartureFromRest::of(scene);
+    return o.hold_margin * departure.time_to(o.lift_angle * scene.alpha(), o.detectable_excess * o.rel_tol);
 }
 
 ThresholdResult find_threshold(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
@@ -89,6 +144,10 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
     EngineSettings trial_settings = settings;
     trial_settings.sample_dt = std::max(settings.sample_dt, o.sample_dt);
     ThresholdResult result{kNaN, 0.0, kNaN, 0, hold};
+    const DepartureFromRest departure = DepartureFromRest::of(scene);
+    // The threshold the last trial that lifted points at: the one under which the analytic wall's departure from
+    // rest (DepartureFromRest) reaches the lift angle when the engine's wall did.
+    double pointed_g = kNaN;
     auto lifts = [&](double a_g) {
         multibody::Excitation ex;
         ex.horizontal = ramp_and_hold(a_g * g, o.ramp_time, hold);
@@ -98,7 +157,11 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
         ex.stop_angle = lift;  // the trial's question is answered once the wall has lifted
         ex.motion_only = true;  // whether it lifted is read from theta1 alone
         ++result.trials;
-        return lifted(engine.simulate(scene, ex, trial_settings), lift);
+        const Trajectory traj = engine.simulate(scene, ex, trial_settings);
+        if (!lifted(traj, lift)) return false;
+        pointed_g = traj.samples.empty() ? kNaN
+                                         : departure.threshold_for(lift, traj.samples.back().t, a_g, o.ramp_time);
+        return true;
     };
 
     // Bracket around the estimate (ThresholdOptions: why it holds for an engine within its target). The upper end
@@ -117,17 +180,46 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
         factor *= factor;
         hi = std::min(estimate_g * factor, cap_g);
     }
-    if (!lower_known) {  // the upper end held at once: now the lower end must not lift
+    // Narrow [lo, hi] to rel_tol (ThresholdOptions::guided). With a pointed threshold p, the next trial is p (1 - s)
+    // until one does not lift (a lower end close below the truth), then p (1 + s) (an upper end close above it), s a
+    // quarter of rel_tol: a right p closes the bracket with those two. A trial on either side that fails to close
+    // it says p was off that way: s grows fourfold for the next (a lift also moves p nearer, from a smaller excess).
+    // Trials stay a quarter of rel_tol inside the bracket; past kGuidedTrials the rest is bisection.
+    double spread = 0.25 * o.rel_tol;
+    bool below_found = false;  // a guided trial below p did not lift: aim above it now
+    int guided_trials = 0;
+    auto narrow = [&] {
+        while (hi - lo > o.rel_tol * hi) {
+            const double margin = 0.25 * o.rel_tol * hi;
+            const bool aim = o.guided && std::isfinite(pointed_g) && guided_trials < kGuidedTrials;
+            const double trial = aim ? std::clamp(pointed_g * (below_found ? 1.0 + spread : 1.0 - spread),
+                                                  lo + margin, hi - margin)
+                                     : 0.5 * (lo + hi);
+            guided_trials += aim;
+            if (lifts(trial)) {
+                hi = trial;
+                if (aim && !below_found) spread *= 4.0;  // p was too high
+                if (aim && below_found) {  // both ends found near p: start again from the lift's new p
+                    spread = 0.25 * o.rel_tol;
+                    below_found = false;
+                }
+            } else {
+                lo = trial;
+                lower_known = true;
+                if (aim && below_found) spread *= 4.0;  // p was too low
+                below_found = true;
+            }
+        }
+    };
+    narrow();
+    if (!lower_known) {  // every trial lifted: now the first lower end must not
         factor = o.bracket;
         while (lo > 0.0 && lifts(lo)) {
             hi = lo;  // lifted: an upper end, the lower end moves out
             factor *= factor;
             lo = factor > o.max_over_estimate ? 0.0 : estimate_g / factor;
         }
-    }
-    while (hi - lo > o.rel_tol * hi) {
-        const double mid = 0.5 * (lo + hi);
-        (lifts(mid) ? hi : lo) = mid;
+        narrow();
     }
     result.lower_g = lo;
     result.upper_g = hi;

@@ -40,7 +40,7 @@ struct Excitation {
     GroundMotion horizontal = GroundMotion::none();  // a_h(t), m/s^2, along +x
     double theta0 = 0.0;      // release from rest at this rotation of the lower body [rad]
     double t_end = 10.0;      // [s]
-    bool stop_at_rest = true;  // end the run once the wall is at rest after the ground motion (nothing left to see)
+    bool stop_at_rest = true;  // end the run once the wall is at rest and the shaking can no longer lift it (RunMonitor)
     // > 0: end the run once |theta1| reaches this angle [rad] (a threshold trial needs to know no more than that).
     double stop_angle = 0.0;
     // true: the caller reads the lower body's motion alone (t, theta1, theta1_dot: all that compare/ and study/

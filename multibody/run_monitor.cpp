@@ -48,6 +48,9 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       v_ref_(reference_velocity(scene)),
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),
+      // From here on no acceleration can lift a wall at rest (kRestCannotLiftShare): rest ends the run.
+      quiet_from_(ex.horizontal.is_zero() ? 0.0
+                                          : ex.horizontal.quiet_after(kRestCannotLiftShare * rest_threshold(scene))),
       stop_angle_(ex.stop_angle),
       stop_at_rest_(ex.stop_at_rest),
       limits_(limits),
@@ -84,7 +87,7 @@ RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const
         folded_steps_ = folded ? folded_steps_ + 1 : 0;
         if (folded_steps_ >= quiet_needed_) return Verdict::overturned;
     }
-    if (stop_at_rest_ && t > motion_end_) {
+    if (stop_at_rest_ && t > quiet_from_) {
         const bool quiet = std::abs(theta) < 1e-3 * alpha_ && std::abs(rate) < 1e-3 * v_ref_;
         quiet_steps_ = quiet ? quiet_steps_ + 1 : 0;
         if (quiet_steps_ >= quiet_needed_) return Verdict::at_rest;

@@ -5,6 +5,8 @@
 // Overturning is also a wall that has folded: the two blocks can pass the roller's lock short of the collapse angle
 // and come to rest tilted at 3-4 alpha1 (Siconos, Simbody), which no standing wall can do past the unstable
 // equilibrium (RockingModel::unstable_equilibrium): at rest there once the ground motion is over, it has overturned.
+// Rest ends a run once the shaking can no longer lift the wall: past the record's last acceleration above
+// kRestCannotLiftShare of the rest threshold, not only past its end (the quiet tail of a record is most of it).
 #include <string>
 #include <vector>
 
@@ -39,6 +41,11 @@ struct BaseCorners {
 // step, so 1e8 steps are minutes; --dt 1e-9 asked for 3e9 per threshold trial).
 constexpr double kMaxStepsPerRun = 1e8;
 
+// A wall at rest stays at rest while |a_h| is below its rest threshold (Eq. 12 / 17: no rocking solution leaves
+// rest). Half of the analytic model's threshold, so that an engine whose threshold is off by up to half (every
+// engine's target is 0.5 %) is held to the same: shaking below it cannot lift that engine's wall either.
+constexpr double kRestCannotLiftShare = 0.5;
+
 class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
@@ -59,7 +66,7 @@ public:
 
 private:
     std::string engine_;
-    double b_, friction_, collapse_, unstable_, v_ref_, alpha_, motion_end_, stop_angle_;
+    double b_, friction_, collapse_, unstable_, v_ref_, alpha_, motion_end_, quiet_from_, stop_angle_;
     bool stop_at_rest_;
     FailureLimits limits_;
     int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_;

@@ -52,6 +52,9 @@ double collapse_angle(const WallScene& scene) { return analytic_model(scene, Kin
 double unstable_equilibrium(const WallScene& scene) {
     return analytic_model(scene, Kinematics::exact)->unstable_equilibrium();
 }
+double rest_threshold(const WallScene& scene) {
+    return analytic_model(scene, Kinematics::exact)->rest_threshold(0.0);
+}
 double reference_velocity(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->reference_velocity(); }
 
 }  // namespace vssw::multibody

@@ -37,6 +37,9 @@ double collapse_angle(const WallScene& scene);
 // The unstable equilibrium |theta1| of the scene's analytic model (exact kinematics): past it a still wall falls.
 double unstable_equilibrium(const WallScene& scene);
 
+// The smallest |a_h| that tips the scene's wall off rest (Eq. 12 for a VSSW, Eq. 17 for a parapet; exact kinematics).
+double rest_threshold(const WallScene& scene);
+
 // theta1'_r of the scene's analytic model (exact kinematics): the scale engines use for rest and failure checks.
 double reference_velocity(const WallScene& scene);
 

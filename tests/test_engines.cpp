@@ -313,6 +313,44 @@ TEST_P(CrossEngine, VsswMovingSupportsGiveTheSamePeakResponse) {
     expect_peaks_agree(*engine_, settings_, table1_specimen11(0.1), 1.25, 0.25);
 }
 
+// Rest ends a run once the shaking can no longer lift the wall (RunMonitor, kRestCannotLiftShare), not at the
+// record's end: a pulse at 1.3 times the threshold, then a long tail of shaking at a tenth of it. The run that stops at
+// rest ends well before the record does, and moves as the run that goes to the end did (the same peak); past the stop
+// the full run's wall stays still: what the stop skips is a wall at rest under shaking that cannot lift it (Eq. 12 /
+// 17). (A tail at a third of the threshold kept Bullet's wall rocking a little, 0.005 alpha: rocking, unlike rest,
+// can be kept up by shaking below the threshold, and RunMonitor then goes on.)
+TEST_P(CrossEngine, RestEndsTheRunOnceTheShakingCannotLiftTheWall) {
+    if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model stops at rest by its own rule";
+    const WallScene scene = fig6_vssw();
+    const double a_c = analytic_reference(scene)->rest_threshold(0.0);
+    constexpr double kPulse = 0.5, kTail = 8.0, kSample = 0.01;  // [s]
+    std::vector<double> t, a;
+    for (double time = 0.0; time <= kPulse + kTail + 1e-9; time += kSample) {
+        t.push_back(time);
+        a.push_back(time < kPulse ? 1.3 * a_c * std::sin(2.0 * M_PI * time / kPulse)
+                                  : a_c / 10.0 * std::sin(2.0 * M_PI * 5.0 * time));
+    }
+    multibody::Excitation ex;
+    ex.horizontal = GroundMotion::sampled(t, a, "pulse and tail");
+    ex.t_end = kPulse + kTail;
+    ex.motion_only = true;
+    const multibody::Trajectory stopped = engine_->simulate(scene, ex, settings_);
+    ex.stop_at_rest = false;
+    const multibody::Trajectory full = engine_->simulate(scene, ex, settings_);
+    ASSERT_FALSE(stopped.samples.empty());
+    ASSERT_FALSE(full.overturned);
+    EXPECT_TRUE(stopped.at_rest_at_end);
+    EXPECT_LT(stopped.samples.back().t, 0.5 * ex.t_end);  // the tail was skipped
+    // The same steps up to the stop: the peaks are the same number.
+    EXPECT_EQ(compare::max_abs_theta(stopped), compare::max_abs_theta(full));
+    constexpr double kStill = 1e-3;  // RunMonitor's rest: |theta1| below 1e-3 alpha
+    double after = 0.0;
+    for (const multibody::TrajectorySample& p : full.samples)
+        if (p.t > stopped.samples.back().t) after = std::max(after, std::abs(p.theta1));
+    EXPECT_LT(after, kStill * scene.alpha());
+    EXPECT_GT(compare::max_abs_theta(full), 0.1 * scene.alpha());  // the pulse did rock the wall
+}
+
 // GoogleTest names may hold only letters, digits and '_': "simbody-rigid" becomes simbody_rigid.
 std::string engine_name(const ::testing::TestParamInfo<std::string>& info) {
     std::string name = info.param;
@@ -616,6 +654,30 @@ TEST(UnstableEquilibrium, IsWhereThePotentialPeaks) {
 // An engine's folded wall (the blocks past the roller's lock, at rest tilted short of the collapse angle) has
 // overturned: RunMonitor says so once it has been still past the unstable equilibrium for 0.1 s after the shaking; a
 // wall passing there with a speed, or still there before the shaking ends, goes on.
+TEST(RunMonitorRest, RestEndsTheRunOnlyOnceTheShakingCannotLiftTheWall) {
+    const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
+    const double a_c = analytic_reference(scene)->rest_threshold(0.0), dt = 1e-3;
+    const multibody::BaseCorners corners{0.0, 0.0, 0.0, 0.0};
+    using Verdict = multibody::RunMonitor::Verdict;
+    // A wall still at rest from t = 0; the shaking above half the threshold until t = 2 s, below it after, to 10 s.
+    const auto rest_ends_at = [&](double tail) {
+        multibody::Excitation ex;
+        ex.horizontal = GroundMotion::sampled({0.0, 1.0, 2.0, 10.0}, {0.0, 0.9 * a_c, tail * a_c, tail * a_c}, "m");
+        ex.t_end = 12.0;
+        multibody::RunMonitor monitor("test", scene, ex, dt, {});
+        for (int i = 1; i <= 12000; ++i)
+            if (monitor.check(i * dt, 0.0, 0.0, corners) == Verdict::at_rest) return i * dt;
+        return HUGE_VAL;
+    };
+    constexpr double kQuiet = 0.1;    // RunMonitor's stillness before rest is declared [s]
+    constexpr double kOneStep = 2e-3;  // the step counted on either side of it
+    // The tail at 0.4 a_c cannot lift it: rest ends the run 0.1 s after the shaking last exceeded half the threshold
+    // (the sample at 2 s, where the ramp from 0.9 a_c ends).
+    EXPECT_NEAR(rest_ends_at(0.4), 2.0 + kQuiet, kOneStep);
+    // At 0.6 a_c it is not shown that it cannot: rest is judged only after the record's end (10 s).
+    EXPECT_NEAR(rest_ends_at(0.6), 10.0 + kQuiet, kOneStep);
+}
+
 TEST(RunMonitorFold, StillPastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
     const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
     const double alpha1 = scene.alpha(), dt = 1e-3;

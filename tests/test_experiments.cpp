@@ -19,10 +19,13 @@ using multibody::AnalyticEngine;
 using multibody::Excitation;
 using multibody::Trajectory;
 
-// Trials of a search whose first bracket holds: its two ends, then the halvings of a bracket of relative width
-// 1.01 - 1 / 1.01 = 0.0199 down to rel_tol 1e-4: ceil(log2(0.0199 / 1e-4)) = 8. The doubling from 0.05 g that this
-// search replaced took 16-17 trials on these walls.
+// Trials of a search whose first bracket holds, bisected: its two ends, then the halvings of a bracket of relative
+// width 1.01 - 1 / 1.01 = 0.0199 down to rel_tol 1e-4: ceil(log2(0.0199 / 1e-4)) = 8. The doubling from 0.05 g that
+// this search replaced took 16-17 trials on these walls.
 constexpr int kBracketedTrials = 10;
+// Trials of a guided search on the analytic backend, whose wall leaves rest as the pointing assumes: the upper end,
+// then one trial just below the point (does not lift) and one just above it (lifts).
+constexpr int kGuidedTrials = 3;
 // A trial's acceleration is the search's value in g times g (from the estimate in m/s^2 divided by g, times a bracket
 // factor): a few ulps from the m/s^2 value the test expects. Where a trial lies: far above that, far below the
 // bracket's 1 % and rel_tol 1e-4.
@@ -67,13 +70,30 @@ TEST(ThresholdSearch, TheAnalyticModelsThresholdIsBracketedAtOnce) {
             find_threshold(engine, engine.default_settings(), multibody::WallScene::of(w), o);
         const double eq12 = eq12_threshold(w) / w.g;
         EXPECT_NEAR(r.value_g, eq12, tol * eq12);
-        EXPECT_LE(r.trials, kBracketedTrials);
+        EXPECT_EQ(r.trials, kGuidedTrials);
     }
     const ParapetGeometry p = make_parapet(4.0, 0.4);
     const ThresholdResult r = find_threshold(engine, engine.default_settings(), multibody::WallScene::of(p), o);
     const double eq17 = eq17_parapet_threshold(p) / p.g;
     EXPECT_NEAR(r.value_g, eq17, tol * eq17);
-    EXPECT_LE(r.trials, kBracketedTrials);
+    EXPECT_EQ(r.trials, kGuidedTrials);
+}
+
+// Bisection alone (guided = false) finds the same threshold in at most the bracketed trials: where the trials go does
+// not change the answer beyond the tolerance both are held to.
+TEST(ThresholdSearch, BisectionAloneFindsTheSameThreshold) {
+    const AnalyticEngine engine;
+    ThresholdOptions bisect;
+    bisect.guided = false;
+    const double tol = (0.5 + bisect.detectable_excess) * bisect.rel_tol;
+    for (const VsswGeometry& w : {make_vssw(4.0, 0.4, 0.7, 0.1), make_vssw(3.05, 0.143, 0.6, 0.5)}) {
+        const multibody::WallScene scene = multibody::WallScene::of(w);
+        const ThresholdResult plain = find_threshold(engine, engine.default_settings(), scene, bisect);
+        const ThresholdResult guided = find_threshold(engine, engine.default_settings(), scene, {});
+        EXPECT_LE(plain.trials, kBracketedTrials);
+        EXPECT_GT(plain.trials, guided.trials);
+        EXPECT_NEAR(plain.value_g, guided.value_g, 2.0 * tol * plain.value_g);
+    }
 }
 
 TEST(ThresholdSearch, ABracketThatDoesNotHoldIsWidened) {

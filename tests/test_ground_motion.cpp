@@ -653,5 +653,18 @@ TEST(GroundMotion, ConvertsUnitsToMetresPerSecondSquared) {
     EXPECT_EQ(to_m_per_s2(AccelUnits::cm_per_s2), 0.01);
 }
 
+// quiet_after: a record is linear between its samples, so |a| may exceed a level up to the sample after the last one
+// above it, and not past it; an analytic signal is not scanned (its duration); no motion is quiet at once.
+TEST(GroundMotion, QuietAfterIsTheSampleAfterTheLastOneAboveTheLevel) {
+    const GroundMotion m = GroundMotion::sampled({0.0, 0.5, 1.0, 1.5, 2.0}, {0.0, -3.0, 1.0, 2.5, 0.5}, "m");
+    EXPECT_EQ(m.quiet_after(2.0), 2.0);   // 2.5 at 1.5 s: quiet from the next sample
+    EXPECT_EQ(m.quiet_after(2.8), 1.0);   // only -3 at 0.5 s exceeds it
+    EXPECT_EQ(m.quiet_after(3.0), 0.0);   // nothing exceeds it
+    EXPECT_EQ(m.quiet_after(0.1), 2.0);   // the last sample exceeds it: quiet from the record's end
+    EXPECT_EQ(GroundMotion::none().quiet_after(0.0), 0.0);
+    const GroundMotion pulse = GroundMotion::analytic([](double) { return 0.0; }, 3.0, {}, {0.0, {}}, "zero");
+    EXPECT_EQ(pulse.quiet_after(1.0), 3.0);
+}
+
 }  // namespace
 }  // namespace vssw
