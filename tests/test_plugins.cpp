@@ -12,6 +12,7 @@
 
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
+#include "multibody/contact_schemes.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/engine_plugin.hpp"
 #include "multibody/isolated_engine.hpp"
@@ -98,6 +99,20 @@ TEST(Plugins, DisplayNamesAreTheAdapters) {
     for (const std::string& name : multibody::available_engines())
         EXPECT_EQ(multibody::engine_display_name(name), multibody::make_engine_in_process(name)->display_name())
             << name;
+}
+
+// Every backend this project knows has a contact scheme (the report groups the engines by it): an engine added
+// without one would be listed as "other".
+TEST(ContactSchemes, EveryKnownEngineHasOneAndTheReportOrderGroupsThem) {
+    std::vector<std::string> all = multibody::available_engines();
+    for (const std::string& e : multibody::missing_engines()) all.push_back(e);
+    for (const std::string& e : all) EXPECT_NE(multibody::contact_scheme(e).key, "other") << e;
+    EXPECT_EQ(multibody::contact_scheme("no-such-engine").key, "other");
+    // Siconos and Simbody are each a scheme of their own; ODE and Bullet share one, kept in the order given.
+    const std::vector<std::string> ordered = multibody::ordered_by_scheme({"simbody", "ode", "siconos", "bullet"});
+    EXPECT_EQ(ordered, (std::vector<std::string>{"ode", "bullet", "siconos", "simbody"}));
+    EXPECT_EQ(multibody::contact_scheme("ode").key, multibody::contact_scheme("bullet").key);
+    EXPECT_NE(multibody::contact_scheme("siconos").key, multibody::contact_scheme("bullet").key);
 }
 
 // Tests, programs and the Python module of a build tree use that build's plugins without any set-up.

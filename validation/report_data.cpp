@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "multibody/contact_schemes.hpp"
 #include "validation/earthquake.hpp"
 
 namespace vssw::study {
@@ -61,7 +62,8 @@ Json results_json(const ReportInput& in) {
     const compare::SuiteResults& res = in.results;
     Json engines = Json::array();
     for (const compare::EngineRunInfo& e : res.engines)
-        engines.push_back({{"name", e.name}, {"version", e.version}, {"settings", settings_json(e.settings)}});
+        engines.push_back({{"name", e.name}, {"version", e.version}, {"contact_scheme", multibody::contact_scheme(e.name).key},
+                           {"settings", settings_json(e.settings)}});
 
     Json targets = Json::object();
     for (const std::string& metric : metric_order(res))

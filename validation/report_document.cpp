@@ -5,8 +5,10 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "io/text.hpp"
+#include "multibody/contact_schemes.hpp"
 #include "multibody/engine.hpp"
 #include "validation/earthquake.hpp"
 
@@ -82,10 +84,29 @@ std::string matrix_text(const MatrixCell& c) {
     return text;
 }
 
+// The contact schemes of the compared engines, and what agreement within one and across them says.
+std::string schemes_text(const std::vector<std::string>& engines) {
+    std::string text = "Contact schemes (how each engine's defaults integrate the wall; docs/engines.md, \"Contact "
+                       "schemes\"): ";
+    std::vector<std::string> seen;
+    for (const std::string& e : engines) {
+        const multibody::ContactScheme s = multibody::contact_scheme(e);
+        if (std::find(seen.begin(), seen.end(), s.key) != seen.end()) continue;
+        std::vector<std::string> members;
+        for (const std::string& other : engines)
+            if (multibody::contact_scheme(other).key == s.key) members.push_back(multibody::engine_display_name(other));
+        text += fmt::format("{}{} ({}): {}", seen.empty() ? "" : "; ", s.key, fmt::join(members, ", "), s.description);
+        seen.push_back(s.key);
+    }
+    return text + ". Engines of one scheme share their dominant error, so their agreement with each other is one piece "
+                  "of evidence, not several; agreement across schemes is independent.";
+}
+
 void add_matrix(Blocks& b, const ReportInput& in) {
     b.push_back(heading(2, "At a glance"));
     const std::vector<MatrixCell> cells = error_matrix(in);
-    const std::vector<std::string> engines = compared_engines(in.results);
+    // Grouped by contact scheme: engines of one scheme share their dominant error (multibody/contact_schemes.hpp).
+    const std::vector<std::string> engines = multibody::ordered_by_scheme(compared_engines(in.results));
     if (cells.empty() || engines.empty()) {
         b.push_back(paragraph("No engine was compared (the analytic model only)."));
         return;
@@ -98,7 +119,7 @@ void add_matrix(Blocks& b, const ReportInput& in) {
         if (target_of(m).has_value() &&
             std::any_of(cells.begin(), cells.end(), [&](const MatrixCell& c) { return c.metric == m; }))
             metrics.push_back(m);
-    std::vector<std::string> header = {"engine"};
+    std::vector<std::string> header = {"engine", "contact scheme"};
     std::size_t apart = 0;
     for (const std::string& m : metrics) {
         const std::optional<double> target = target_of(m);
@@ -106,11 +127,11 @@ void add_matrix(Blocks& b, const ReportInput& in) {
         header.push_back(target ? fmt::format("{} (target {:g} %)", short_title(m), 100.0 * *target)
                                 : fmt::format("{} (no target)", short_title(m)));
     }
-    DocBlock t = table(header, 1);
+    DocBlock t = table(header, 2);
     t.apart_from = apart;
     t.css_class = "matrix";
     for (const std::string& e : engines) {
-        std::vector<DocCell> row = {{multibody::engine_display_name(e)}};
+        std::vector<DocCell> row = {{multibody::engine_display_name(e)}, {multibody::contact_scheme(e).key}};
         for (const std::string& m : metrics) {
             const auto c = std::find_if(cells.begin(), cells.end(),
                                         [&](const MatrixCell& x) { return x.engine == e && x.metric == m; });
@@ -133,6 +154,7 @@ void add_matrix(Blocks& b, const ReportInput& in) {
         "Each cell: the engine's error of largest magnitude over the cases of that metric (engine / reference - 1; the "
         "step study left out), passed when every case is measured and within the target, failed otherwise. The "
         "tables under \"Metrics\" give every case, the single runs under records too (no target, no verdict)."));
+    b.push_back(paragraph(schemes_text(engines)));
     if (in.earthquake)
         for (DocBlock& block : earthquake_glance(*in.earthquake)) b.push_back(std::move(block));
 }
