@@ -24,6 +24,7 @@ packages=(
   libode-dev                         # the ODE adapter (pkg-config ode, double precision)
   libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
   libsiconos-kernel-dev              # the Siconos adapter (kernel and numerics; found by headers and libraries)
+  libbox2d-dev                       # the Box2D adapter (2.4.1, single precision; CMake box2d::box2d or pkg-config box2d)
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
   libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
   gnuplot-nox                        # the plots of `vssw report` and `vssw study` (SVG; without it: no plots)

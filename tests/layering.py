@@ -36,6 +36,7 @@ LAYERS = {
 ENGINE_HEADERS = {
     "multibody/bullet": re.compile(r"(btBullet|Bullet|LinearMath|BulletCollision|BulletDynamics)"),
     "multibody/ode": re.compile(r"ode/"),
+    "multibody/box2d": re.compile(r"(box2d/|b2_)"),
     "multibody/simbody": re.compile(r"(Simbody|SimTK|simbody/)"),
     "multibody/siconos": re.compile(r"(Siconos|siconos|TimeStepping|TimeDiscretisation|SolverOptions|SimulationGraphs|"
                                     r"SimpleMatrix|NonSmoothDynamicalSystem|NewtonImpact|MoreauJeanOSI|LagrangianLinearTIDS|"

@@ -205,6 +205,10 @@ std::vector<BenchSetting> bench_sweep(const multibody::Engine& engine, bool quic
             s.settings.knobs["quickstep"] = 1.0;
             sweep.push_back(s);
         }
+    } else if (name == "box2d") {
+        // Box2D's sequential impulses: the step and the velocity iterations (docs/engines.md "Box2D").
+        for (double dt : dts)
+            for (int it : {4, 8, 16}) sweep.push_back(with_dt(engine, dt, it, fmt::format("dt={} it={}", sci(dt), it)));
     } else if (name == "simbody") {
         // The compliant route's error is set by its integrator's accuracy; dt is its reporting interval, which costs
         // too (a realization per report inside Simbody's stepTo) and sets the metrics' sampling.

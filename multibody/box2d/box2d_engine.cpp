@@ -1,0 +1,363 @@
+// Box2D adapter: the wall as polygon bodies in a b2World (2D, single precision), stepped by Box2D's sequential
+// impulses (velocity iterations) and its nonlinear position pass (position iterations).
+//
+// Scene (from the analytic description; depth 1 m, so a body's mass is the block's mass per unit depth, as in the
+// paper; units metres, kilograms, seconds: the Fig. 6 wall is 4 m tall and ~1.4e3 kg per block, well inside float's
+// range, and its corners are known to ~4e-7 m, float's resolution at 4 m):
+//  - ground: a static body (kinematic with moving_supports = 1) with one edge along y = 0;
+//  - lower and upper blocks: dynamic bodies with one box polygon each, (b, h1) and (b, h2) (one (b, h) for a
+//    parapet); density m / (4 b h), so Box2D's mass and central inertia are the block's, m (b^2 + h^2) / 3;
+//  - every polygon and the edge with m_radius = 0. Box2D gives polygons and edges a skin of b2_polygonRadius = 1 cm
+//    by default: the block then rolls on rounded corners, which raises its effective I_O by 2 r h / (4/3 R^2) and
+//    the period by 0.37 % (measured on the 4 x 0.4 m parapet: +0.30 % at 1 ms against -0.072 % with radius 0;
+//    docs/engines.md "Box2D");
+//  - contacts: Box2D's own (polygon-edge at the base, polygon-polygon at the hinge, at most 2 points per pair);
+//    collision filters keep every pair that cannot touch out (the upper block and the ground, the roller's parts
+//    and the blocks);
+//  - the roller (VSSW only), unilateral by default, as every other adapter's: a circle fixture of radius r centred on
+//    each top corner of the upper block (density 0: no mass), frictionless, meeting only a frictionless vertical
+//    edge of the ground body at x = +-(b + r). A circle against a line holds its centre r from the line, so the
+//    corner is held on x <= +b (right) and x >= -b (left) exactly, with y free. Only the circles touch the guides:
+//    a guide surface the block's face could reach would be penetrated by it (the face below the held corner leans
+//    outwards; docs/engines.md "Bullet"). With roller = 1, the paper's bilateral roller instead: a b2WheelJoint
+//    (stiffness 0, damping 0: a point of the block held on a vertical line, rotation free) at the top corner whose
+//    guide binds (left_guide_binds), moved to the other corner when the other guide binds;
+//  - N: a force at the centre of the top face each step, only when xi > 0 (Box2D adds a force's linear and angular
+//    impulse to the velocities before the solve, so every row sees it: Bullet's trap, docs/engines.md "Bullet",
+//    does not arise);
+//  - ground motion: by default the pseudo-forces -m a_h(t) as a tilt of gravity, (-a_h, -g), set before each step
+//    at its midpoint; with moving_supports = 1 the ground body (edge and guides) is kinematic, its velocity for the
+//    step V_k = V_{k-1} + dt a_h(t_{k-1/2}) (ODE's rule: the same impulse per step as the pseudo-forces);
+//  - sleeping off (a slowly rocking wall must not be put to sleep), continuous collision off (nothing here moves a
+//    body's size in a step; docs/engines.md "Box2D"), restitution 0 at every contact.
+#include "multibody/box2d/box2d_engine.hpp"
+
+#include <box2d/box2d.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/run_monitor.hpp"
+#include "multibody/scene_geometry.hpp"
+#include "multibody/settings_reader.hpp"
+
+namespace vssw::multibody {
+namespace {
+
+constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
+
+constexpr int kDefaultVelocityIterations = 8;  // Box2D's recommended value (b2World::Step's comment)
+constexpr int kDefaultPositionIterations = 3;  // likewise
+constexpr int kMaxPositionIterations = 1000;   // as kMaxIterations (engine.hpp): the cost grows linearly with them
+
+// The roller's circles: radius as a share of b. The guide sits r further out, so the value does not move the corner's
+// line (exact); it only has to exceed what a corner can pass its line by in one step (v dt: 1e-4 m for 0.1 m/s at
+// 1 ms) so that the circle's centre never crosses the two-sided guide, and stay well inside the block's width.
+constexpr double kRollerRadiusShare = 0.05;
+
+// Collision categories: which fixtures can meet (b2Filter).
+constexpr uint16_t kGroundBits = 0x1, kBlockBits = 0x2, kRollerCornerBits = 0x4, kGuideBits = 0x8;
+
+struct Knobs {
+    int velocity_iterations;  // --iterations
+    int position_iterations;
+    bool warm_starting;
+    bool continuous;
+    int roller;  // 0: unilateral (circles on guides), 1: the paper's bilateral roller (a wheel joint)
+    double skin;  // m_radius of the blocks' polygons and the ground's edge [m] (Box2D's default: b2_polygonRadius)
+    FailureLimits limits;
+    bool moving_supports;
+};
+
+// The largest skin a setting may give: 5 cm, five times Box2D's own b2_polygonRadius (1 cm), a quarter of the
+// Fig. 6 wall's half thickness; a skin near b would round the block into a disc.
+constexpr double kMaxSkin = 0.05;
+
+// Ranges (SettingDescription::lo/hi): switches 0/1; the skin as kMaxSkin says; position iterations from 0 (no position pass) to
+// kMaxPositionIterations.
+std::vector<SettingDescription> setting_table() {
+    return FailureLimits::described_after({
+        {"dt", "0.001", "s",
+         "the step (docs/engines.md \"Box2D\": every target met at 1 ms; Box2D's usual 1/60 s gives the parapet's "
+         "restitution -17 %)"},
+        {"iterations", std::to_string(kDefaultVelocityIterations), "", "velocity (sequential-impulse) iterations per step"},
+        {"position_iterations", std::to_string(kDefaultPositionIterations), "",
+         "position-correction iterations per step (they act only on a penetration past b2_linearSlop, 5 mm)", 0.0,
+         static_cast<double>(kMaxPositionIterations)},
+        {"warm_starting", "1", "0/1", "1: start each step's impulses from the last step's (Box2D's default)", 0.0, 1.0},
+        {"continuous", "0", "0/1", "1: Box2D's continuous collision (time of impact) against the ground", 0.0, 1.0},
+        {"roller", "0", "choice",
+         "0: a unilateral roller (corner circles on frictionless guides, as the other engines); 1: the paper's "
+         "bilateral roller (a wheel joint)",
+         0.0, 1.0},
+        {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of tilting gravity", 0.0, 1.0},
+        {"skin", "0", "m",
+         "Box2D's polygon radius on the block and the ground, parapet only (Box2D's default 0.01 rounds the corners: "
+         "period +0.37 %)",
+         0.0, kMaxSkin},
+    });
+}
+
+Knobs read_knobs(const EngineSettings& s) {
+    const SettingsReader r("Box2D", s, setting_table());
+    Knobs k{};
+    k.velocity_iterations = s.iterations > 0 ? s.iterations : kDefaultVelocityIterations;
+    k.position_iterations = r.choice("position_iterations", kDefaultPositionIterations, kMaxPositionIterations + 1);
+    k.warm_starting = r.choice("warm_starting", 1, 2) == 1;
+    k.continuous = r.flag("continuous");
+    k.roller = r.choice("roller", 0, 2);
+    k.limits = FailureLimits::read(r);
+    k.moving_supports = r.flag("moving_supports");
+    k.skin = r.non_negative("skin", 0.0);
+    return k;
+}
+
+b2Vec2 vec(double x, double y) { return b2Vec2(static_cast<float>(x), static_cast<float>(y)); }
+
+// A point given in a body's frame, in world coordinates.
+b2Vec2 world_point(const b2Body& body, double lx, double ly) { return body.GetWorldPoint(vec(lx, ly)); }
+
+class Box2dScene {
+public:
+    Box2dScene(const WallScene& scene, const Knobs& knobs, double theta0)
+        : world_(vec(0.0, -scene.gravity())), knobs_(knobs), sizes_(block_sizes(scene)) {
+        world_.SetAllowSleeping(false);
+        world_.SetWarmStarting(knobs.warm_starting);
+        world_.SetContinuousPhysics(knobs.continuous);
+        world_.SetSubStepping(false);
+
+        const double b = sizes_.b, h = sizes_.h_lower + sizes_.h_upper;
+        b2BodyDef ground_def;
+        ground_def.type = knobs.moving_supports ? b2_kinematicBody : b2_staticBody;
+        ground_ = world_.CreateBody(&ground_def);
+        // A moving ground travels with the record's displacement: wide enough that the wall never reaches its end.
+        const double half_width = knobs.moving_supports ? 1e4 : 4.0 * h + 10.0 * b;
+        b2EdgeShape edge;
+        // With a skin the edge's core sits two skins down, so that the block's skin rests on the edge's at rest.
+        const double y_edge = -2.0 * knobs.skin;
+        edge.SetTwoSided(vec(-half_width, y_edge), vec(half_width, y_edge));
+        edge.m_radius = static_cast<float>(knobs.skin);  // 0 by default: no skin (see the top of the file)
+        add_fixture(*ground_, edge, 0.0, scene.friction, kGroundBits, kBlockBits);
+
+        // A skin on the hinge's two faces would make the blocks overlap by two skins at rest (Box2D pushes that out,
+        // energy in): the setting is for the single block, where it shows what Box2D's default does to the period.
+        require(knobs.skin == 0.0 || !scene.vssw, "Box2D setting skin (m)", "0 for a VSSW (the parapet only)",
+                knobs.skin);
+        const WallPose pose = pose_at(scene, theta0);
+        lower_ = add_block(sizes_.h_lower, sizes_.m_lower, pose.lower, scene.friction);
+        if (scene.vssw) {
+            upper_ = add_block(sizes_.h_upper, sizes_.m_upper, pose.upper, scene.friction);
+            add_roller(2.0 * h);
+        }
+    }
+
+    b2World& world() { return world_; }
+    b2Body& lower() { return *lower_; }
+    b2Body* upper() { return upper_; }
+    b2Body& ground() { return *ground_; }
+
+    // One step of dt; forces and gravity for it must have been set.
+    void step(double dt) {
+        if (knobs_.roller == 1) place_wheel();
+        world_.Step(static_cast<float>(dt), knobs_.velocity_iterations, knobs_.position_iterations);
+    }
+
+    // Contact points in touch (Box2D's manifolds: points at or inside the surfaces).
+    int contact_points() {
+        int n = 0;
+        for (b2Contact* c = world_.GetContactList(); c; c = c->GetNext())
+            if (c->IsTouching()) n += c->GetManifold()->pointCount;
+        return n + (wheel_ ? 1 : 0);
+    }
+
+private:
+    b2Fixture* add_fixture(b2Body& body, const b2Shape& shape, double density, double friction, uint16_t category,
+                           uint16_t mask) {
+        b2FixtureDef def;
+        def.shape = &shape;
+        def.density = static_cast<float>(density);
+        def.friction = static_cast<float>(friction);
+        def.restitution = 0.0f;
+        def.filter.categoryBits = category;
+        def.filter.maskBits = mask;
+        return body.CreateFixture(&def);
+    }
+
+    b2Body* add_block(double half_h, double mass_per_depth, const BlockPose& p, double friction) {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position = vec(p.x, p.y);
+        def.angle = static_cast<float>(-p.angle);  // Box2D turns counter-clockwise
+        def.allowSleep = false;
+        b2Body* body = world_.CreateBody(&def);
+        b2PolygonShape box;
+        box.SetAsBox(static_cast<float>(sizes_.b), static_cast<float>(half_h));
+        box.m_radius = static_cast<float>(knobs_.skin);  // 0 by default: no skin (see the top of the file)
+        const double density = mass_per_depth * kDepth / (4.0 * sizes_.b * half_h);
+        add_fixture(*body, box, density, friction, kBlockBits, kGroundBits | kBlockBits);
+        return body;
+    }
+
+    // The unilateral roller's parts: circles on the upper block's top corners, guides on the ground (see the top of
+    // the file). Both guides are always there: the corner off the pivot's side sits inside its line by about
+    // b theta2^2 and its contact stays idle. With the bilateral roller (roller = 1) neither is made.
+    void add_roller(double y_top) {
+        if (knobs_.roller == 1) return;
+        const double b = sizes_.b, r = kRollerRadiusShare * b, reach = sizes_.h_upper;
+        for (double side : {-1.0, 1.0}) {
+            b2CircleShape corner;
+            corner.m_p = vec(side * b, sizes_.h_upper);
+            corner.m_radius = static_cast<float>(r);
+            add_fixture(*upper_, corner, 0.0, 0.0, kRollerCornerBits, kGuideBits);
+            b2EdgeShape guide;
+            guide.SetTwoSided(vec(side * (b + r), y_top - reach), vec(side * (b + r), y_top + reach));
+            guide.m_radius = 0.0f;
+            add_fixture(*ground_, guide, 0.0, 0.0, kGuideBits, kRollerCornerBits);
+        }
+    }
+
+    // The bilateral roller: a wheel joint holding the top corner whose guide binds on the vertical line x = +-b of
+    // the ground, rotation free, no spring (stiffness 0 and damping 0, b2WheelJointDef's defaults). Moved to the
+    // other corner when that one's guide binds (the corners' rule of every adapter, left_guide_binds).
+    void place_wheel() {
+        const double b = sizes_.b, x0 = ground_->GetPosition().x;
+        const b2Vec2 right = world_point(*upper_, b, sizes_.h_upper), left = world_point(*upper_, -b, sizes_.h_upper);
+        const int side = left_guide_binds(right.x, left.x, x0, b) ? -1 : 1;
+        if (wheel_ && side == wheel_side_) return;
+        if (wheel_) world_.DestroyJoint(wheel_);
+        b2WheelJointDef def;
+        const b2Vec2 corner = side > 0 ? right : left;
+        // The anchor on the line itself (x = x0 +- b), at the corner's height: the joint then holds the corner there.
+        def.Initialize(ground_, upper_, vec(x0 + side * b, corner.y), b2Vec2(0.0f, 1.0f));
+        def.localAnchorB = vec(side * b, sizes_.h_upper);
+        def.stiffness = 0.0f;
+        def.damping = 0.0f;
+        def.collideConnected = true;  // the joint must not switch off the blocks' other contacts with the ground
+        wheel_ = world_.CreateJoint(&def);
+        wheel_side_ = side;
+    }
+
+    b2World world_;
+    Knobs knobs_;
+    BlockSizes sizes_;
+    b2Body* ground_ = nullptr;
+    b2Body* lower_ = nullptr;
+    b2Body* upper_ = nullptr;
+    b2Joint* wheel_ = nullptr;
+    int wheel_side_ = 0;
+};
+
+class Box2dEngine final : public Engine {
+public:
+    std::string name() const override { return "box2d"; }
+    std::string display_name() const override { return "Box2D"; }
+    double cost_per_simulated_second() const override { return 1.6e-3; }  // at 1 ms, docs/engines.md "Box2D"
+    std::string version() const override {
+        return fmt::format("Box2D {}.{}.{} (single precision)", b2_version.major, b2_version.minor,
+                           b2_version.revision);
+    }
+    EngineSettings default_settings() const override {
+        EngineSettings s;
+        s.dt = 1e-3;  // measured: docs/engines.md "Box2D"
+        s.iterations = kDefaultVelocityIterations;
+        return s;
+    }
+    std::vector<SettingDescription> setting_descriptions() const override { return setting_table(); }
+    Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+    void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
+};
+
+// Clockwise angle of a body (Box2D's angle is counter-clockwise).
+double clockwise_angle(const b2Body& body) { return -static_cast<double>(body.GetAngle()); }
+double clockwise_rate(const b2Body& body) { return -static_cast<double>(body.GetAngularVelocity()); }
+
+Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
+    require(std::isfinite(settings.dt) && settings.dt > 0.0, "Box2D time step dt (s)", "a positive finite number",
+            settings.dt);
+    require_one_description(scene);
+    const Knobs knobs = read_knobs(settings);
+    Box2dScene w(scene, knobs, ex.theta0);
+    const BlockSizes s = block_sizes(scene);
+    const double g = scene.gravity();
+    const double N = scene.overburden() * kDepth;
+    const double h_total = s.h_lower + s.h_upper;
+    b2Body& lower = w.lower();
+    b2Body* upper = w.upper();
+    b2Body& top_body = upper ? *upper : lower;
+    const double top_half = upper ? s.h_upper : s.h_lower;
+    const double y_top0 = 2.0 * h_total;
+    const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
+
+    Trajectory out;
+    const double dt = settings.dt;
+    const long every = sample_every(settings, dt);
+    auto record = [&](double t) {
+        if (ex.motion_only) {
+            out.samples.push_back(motion_sample(t, clockwise_angle(lower), clockwise_rate(lower)));
+            return;
+        }
+        TrajectorySample p{};
+        p.t = t;
+        p.theta1 = clockwise_angle(lower);
+        p.theta1_dot = clockwise_rate(lower);
+        p.theta2 = upper ? clockwise_angle(*upper) : 0.0;
+        p.top_dy = world_point(top_body, 0.0, top_half).y - y_top0;
+        const double v_ground = w.ground().GetLinearVelocity().x;
+        auto kinetic = [&](const b2Body& body) {
+            const b2Vec2 v = body.GetLinearVelocity();
+            const double vx = v.x - v_ground, vy = v.y, om = body.GetAngularVelocity();
+            const double m = body.GetMass();
+            const double I = body.GetInertia();  // about the body origin, which is the centre of mass here
+            return 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * om * om;
+        };
+        p.kinetic = (kinetic(lower) + (upper ? kinetic(*upper) : 0.0)) / kDepth;
+        p.potential = (s.m_lower * kDepth * g * (lower.GetPosition().y - y_lower0) +
+                       (upper ? s.m_upper * kDepth * g * (upper->GetPosition().y - y_upper0) : 0.0) + N * p.top_dy) /
+                      kDepth;
+        p.contacts = w.contact_points();
+        out.samples.push_back(p);
+    };
+
+    const long n_steps = std::lround(ex.t_end / dt);
+    double v_g = 0.0;  // the ground's velocity (moving supports)
+    record(0.0);
+    RunMonitor monitor("Box2D", scene, ex, dt, knobs.limits);
+    for (long i = 1; i <= n_steps; ++i) {
+        const double t0 = static_cast<double>(i - 1) * dt;
+        // The ground motion at the step's midpoint: its impulse over the step to second order.
+        const double a_h = ex.horizontal(t0 + 0.5 * dt);
+        if (knobs.moving_supports) {
+            v_g += dt * a_h;  // the velocity change the pseudo-forces would give the blocks, given to the ground
+            w.ground().SetLinearVelocity(vec(v_g, 0.0));
+        } else {
+            w.world().SetGravity(vec(-a_h, -g));  // -m a_h at every centre of mass: gravity tilted
+        }
+        if (N > 0.0) top_body.ApplyForce(vec(0.0, -N), world_point(top_body, 0.0, top_half), true);
+        w.step(dt);
+        ++out.steps;
+        const double t = static_cast<double>(i) * dt;
+        const double theta = clockwise_angle(lower);
+        const double rate = clockwise_rate(lower);
+        if (!std::isfinite(theta) || !std::isfinite(rate))
+            throw EngineFailure(fmt::format("Box2D: the wall's rotation is not finite at t = {:.6g} s", t));
+        const double x_g = w.ground().GetPosition().x;
+        const b2Vec2 right = world_point(lower, s.b, -s.h_lower), left = world_point(lower, -s.b, -s.h_lower);
+        const auto verdict =  // corners relative to the (moving) ground
+            monitor.check(t, theta, rate, {right.x - x_g - s.b, right.y, left.x - x_g + s.b, left.y});
+        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
+        if (RunMonitor::ends_run(verdict, out)) return out;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::unique_ptr<Engine> make_box2d_engine() { return std::make_unique<Box2dEngine>(); }
+
+}  // namespace vssw::multibody
