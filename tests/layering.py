@@ -37,6 +37,7 @@ ENGINE_HEADERS = {
     "multibody/bullet": re.compile(r"(btBullet|Bullet|LinearMath|BulletCollision|BulletDynamics)"),
     "multibody/ode": re.compile(r"ode/"),
     "multibody/simbody": re.compile(r"(Simbody|SimTK|simbody/)"),
+    "multibody/dart": re.compile(r"dart/"),
     "multibody/siconos": re.compile(r"(Siconos|siconos|TimeStepping|TimeDiscretisation|SolverOptions|SimulationGraphs|"
                                     r"SimpleMatrix|NonSmoothDynamicalSystem|NewtonImpact|MoreauJeanOSI|LagrangianLinearTIDS|"
                                     r"FrictionContact|NumericsMatrix)"),
