@@ -23,9 +23,10 @@ constexpr EngineColour kEngineColours[] = {
     {"siconos", "#CC79A7"},        // reddish purple
     {"simbody-rigid", "#56B4E9"},  // sky blue
     {"box2d", "#882255"},          // wine (Paul Tol's colour-blind safe "muted" set: Okabe-Ito's spares stay free)
+    {"dart", "#E69F00"},           // orange
 };
-// The palette's colours left for other names (its yellow, #F0E442, reads badly on white and is not used).
-constexpr std::string_view kSpare[] = {"#E69F00", "#999999"};
+// The palette's colour left for other names (its yellow, #F0E442, reads badly on white and is not used).
+constexpr std::string_view kSpare[] = {"#999999"};
 
 // Dash types and point types the variants of one engine's series cycle through (gnuplot's numbers).
 constexpr int kAnalyticDashes[] = {1, 2, 4, 5}, kEngineDashes[] = {2, 4, 5, 3};

@@ -50,6 +50,11 @@ constexpr bool kHaveBox2d = true;
 #else
 constexpr bool kHaveBox2d = false;
 #endif
+#ifdef VSSW_HAVE_DART
+constexpr bool kHaveDart = true;
+#else
+constexpr bool kHaveDart = false;
+#endif
 constexpr KnownEngine kKnownEngines[] = {
     {"analytic", "analytic", nullptr, true},
     {"bullet", "Bullet", "bullet", kHaveBullet},
@@ -58,6 +63,7 @@ constexpr KnownEngine kKnownEngines[] = {
     {"simbody-rigid", "simbody-rigid", "simbody", kHaveSimbody},
     {"siconos", "Siconos", "siconos", kHaveSiconos},
     {"box2d", "Box2D", "box2d", kHaveBox2d},
+    {"dart", "DART", "dart", kHaveDart},
 };
 
 std::vector<std::string> known_engines(bool built) {

@@ -25,6 +25,9 @@ packages=(
   libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
   libsiconos-kernel-dev              # the Siconos adapter (kernel and numerics; found by headers and libraries)
   libbox2d-dev                       # the Box2D adapter (2.4.1, single precision; CMake box2d::box2d or pkg-config box2d)
+  # the DART adapter (CMake config; its ODE collision detector; ikfast, which dart/dart.hpp needs though libdart-dev
+  # does not depend on it). Heavy: libdart-dev pulls libboost-all-dev, about 108 packages and 224 MB installed.
+  libdart-dev libdart-collision-ode-dev libdart-external-ikfast-dev
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
   libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
   gnuplot-nox                        # the plots of `vssw report` and `vssw study` (SVG; without it: no plots)

@@ -38,6 +38,7 @@ ENGINE_HEADERS = {
     "multibody/ode": re.compile(r"ode/"),
     "multibody/box2d": re.compile(r"(box2d/|b2_)"),
     "multibody/simbody": re.compile(r"(Simbody|SimTK|simbody/)"),
+    "multibody/dart": re.compile(r"dart/"),
     "multibody/siconos": re.compile(r"(Siconos|siconos|TimeStepping|TimeDiscretisation|SolverOptions|SimulationGraphs|"
                                     r"SimpleMatrix|NonSmoothDynamicalSystem|NewtonImpact|MoreauJeanOSI|LagrangianLinearTIDS|"
                                     r"FrictionContact|NumericsMatrix)"),

@@ -219,6 +219,12 @@ std::vector<BenchSetting> bench_sweep(const multibody::Engine& engine, bool quic
         }
         for (double dt : {1e-3, 4e-3})
             sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
+    } else if (name == "dart") {
+        // The step with the ODE detector (the default), and DART's own detector at the default step.
+        for (double dt : dts) sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
+        BenchSetting s = with_dt(engine, defaults.dt, 0, fmt::format("dt={} detector=dart", sci(defaults.dt)));
+        s.settings.knobs["detector"] = 0.0;
+        sweep.push_back(s);
     } else {  // simbody-rigid and any other stepped engine: the step
         for (double dt : {2e-3, 1e-3, 5e-4, 2.5e-4}) sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
     }

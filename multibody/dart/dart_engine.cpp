@@ -1,0 +1,382 @@
+// DART adapter: the wall as boxes on planar joints in a dart::simulation::World, stepped by DART's boxed LCP solver
+// (Dantzig, PGS fallback: the World's default).
+//
+// Scene (from the analytic description; depth 1 m, so masses and energies are per unit depth as in the paper):
+//  - ground: a skeleton welded to the world, a box whose top face is y = 0; with moving_supports = 1 the skeleton is
+//    on a prismatic joint along x driven at the ground's velocity (a VELOCITY actuator: DART treats it as kinematic);
+//  - lower and upper blocks: one skeleton each, a BoxShape (b, h1) and (b, h2) (one box (b, h) for a parapet) on a
+//    PlanarJoint in the XY plane, q = (x, y, theta_z counter-clockwise); the constructor checks that convention
+//    against the body's transform;
+//  - contacts: the ODE collision detector of libdart-collision-ode (detector = 1, the default; 0 is DART's own) on the
+//    shape pairs a collision filter allows, and only those: ground-lower box, lower-upper box and the roller's pairs
+//    below. The two detectors give the same free vibrations, but under the record of `vssw bench` at 1 ms DART's own
+//    gave a peak 14 % above the converged one where ODE's gave 1.3 % (docs/engines.md "DART");
+//  - the roller (VSSW only), one-sided as in every other adapter: a small sphere on the upper block centred at each
+//    top corner, meeting a frictionless vertical guide box whose face is the sphere's radius outside x = +-b, so that
+//    the contact holds the corner itself on x <= +b (right) or x >= -b (left), y free. The force is horizontal through
+//    the sphere's centre, the corner: the same line of action as a contact at the corner. A guide cannot meet the
+//    upper block's box itself (below the held corner the face leans outwards: docs/engines.md "Bullet");
+//  - N: an external force at the centre of the top face each step (DART clears external forces after each step),
+//    only when xi > 0; ground motion: the world's gravity (-a_h(t), -g) each step, a_h at the step's midpoint (a
+//    uniform pseudo-force -m a_h on every block), or (moving_supports = 1) the ground and the guides moving.
+//
+// Impacts: the LCP resolves a landing with every closing contact (new pivot, hinge, roller) at once, restitution 0:
+// the whole new mechanism's plastic impact, as in every other engine (docs/engines.md "DART").
+//
+// Process-wide state: DART's ContactConstraint error reduction, its cap, constraint force mixing and error allowance
+// are static members, shared by every world in the process: simulate() sets all four at the start of each run (each run
+// of make_engine() is a forked child anyway).
+#include "multibody/dart/dart_engine.hpp"
+
+#include <dart/collision/CollisionFilter.hpp>
+#include <dart/collision/CollisionObject.hpp>
+#include <dart/collision/dart/DARTCollisionDetector.hpp>
+#include <dart/collision/ode/OdeCollisionDetector.hpp>
+#include <dart/config.hpp>
+#include <dart/constraint/ConstraintSolver.hpp>
+#include <dart/constraint/ContactConstraint.hpp>
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/BoxShape.hpp>
+#include <dart/dynamics/PlanarJoint.hpp>
+#include <dart/dynamics/PrismaticJoint.hpp>
+#include <dart/dynamics/ShapeNode.hpp>
+#include <dart/dynamics/Skeleton.hpp>
+#include <dart/dynamics/SphereShape.hpp>
+#include <dart/dynamics/WeldJoint.hpp>
+#include <dart/simulation/World.hpp>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/run_monitor.hpp"
+#include "multibody/scene_geometry.hpp"
+#include "multibody/settings_reader.hpp"
+
+namespace vssw::multibody {
+namespace {
+
+namespace dd = dart::dynamics;
+using Eigen::Vector3d;
+
+constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
+
+// The detectors a run may use (setting "detector"; ODE's by default, above). DART's Bullet detector is not offered: it links Debian's
+// single-precision Bullet, which aborted ("malloc(): invalid size") beside vssw's double-precision Bullet in one
+// process. FCL, DART's default, is not offered either: it costs 4 times as much (docs/engines.md "DART").
+enum Detector { kDartDetector = 0, kOdeDetector = 1, kDetectorCount = 2 };
+
+// The roller sphere's radius, as a share of the half thickness b. Nothing depends on it (the guide's face stands the
+// radius outside x = +-b and the force passes through the sphere's centre, the corner) as long as the sphere stays
+// clear of the lower block and the ground, which the collision filter ensures anyway.
+constexpr double kRollerRadiusShare = 0.1;
+
+struct Knobs {
+    Detector detector;
+    // DART's ContactConstraint statics (docs/engines.md "DART" for the measurements): error reduction parameter, the
+    // cap on the velocity it may give, constraint force mixing, and the penetration allowed before erp acts.
+    double erp, erv, cfm, allowance;
+    FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
+    bool moving_supports;
+};
+
+// DART's defaults for the four statics, kept (docs/engines.md "DART": measured on the parapet and the VSSWs).
+constexpr double kDefaultErp = 0.01, kDefaultErv = 1e-3, kDefaultCfm = 1e-5, kDefaultAllowance = 0.0;
+
+// Ranges (SettingDescription::lo/hi). erp is a share in [0, 1]. cfm: DART clamps values below 1e-9 to 1e-9 (with a
+// warning on stderr), and 1 already makes a contact softer than the wall's weight can hold. The correcting velocity
+// and the allowance: up to 1 m/s and 1 cm, far beyond anything measured and below the blocks' size.
+constexpr double kMinCfm = 1e-9;
+constexpr double kMaxErv = 1.0;        // [m/s]
+constexpr double kMaxAllowance = 1e-2;  // [m]
+
+std::vector<SettingDescription> setting_table() {
+    return FailureLimits::described_after({
+        {"dt", "0.001", "s", "the step (docs/engines.md \"DART\": every target met at 1 ms)"},
+        {"iterations", "none", "", "not used: the boxed LCP solver is Dantzig's pivoting (PGS only as its fallback)"},
+        {"detector", "1", "choice", "collision detector: 1 ODE's (libdart-collision-ode), 0 DART's own", 0.0, 1.0},
+        {"erp", "0.01", "", "ContactConstraint error reduction: the share of a penetration corrected per step", 0.0, 1.0},
+        {"erv", "0.001", "m/s", "cap on the velocity the error reduction may give", 0.0, kMaxErv},
+        {"cfm", "1e-05", "", "ContactConstraint constraint force mixing: the contacts' softness", kMinCfm, 1.0},
+        {"allowance", "0", "m", "penetration allowed before the error reduction acts", 0.0, kMaxAllowance},
+        {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces", 0.0, 1.0},
+    });
+}
+
+Knobs read_knobs(const EngineSettings& s) {
+    const SettingsReader r("DART", s, setting_table());
+    Knobs k{};
+    k.detector = static_cast<Detector>(r.choice("detector", kOdeDetector, kDetectorCount));
+    k.erp = r.number("erp", kDefaultErp);
+    require(k.erp >= 0.0 && k.erp <= 1.0, "DART setting erp", "in [0, 1]", k.erp);
+    k.erv = r.non_negative("erv", kDefaultErv);
+    require(k.erv <= kMaxErv, "DART setting erv (m/s)", fmt::format("in [0, {}]", kMaxErv), k.erv);
+    k.cfm = r.number("cfm", kDefaultCfm);
+    require(k.cfm >= kMinCfm && k.cfm <= 1.0, "DART setting cfm", fmt::format("in [{}, 1]", kMinCfm), k.cfm);
+    k.allowance = r.non_negative("allowance", kDefaultAllowance);
+    require(k.allowance <= kMaxAllowance, "DART setting allowance (m)", fmt::format("in [0, {}]", kMaxAllowance),
+            k.allowance);
+    k.limits = FailureLimits::read(r);
+    k.moving_supports = r.flag("moving_supports");
+    return k;
+}
+
+// Clockwise angle of a body about z, from its transform.
+double clockwise_angle(const dd::BodyNode& body) {
+    const Eigen::Matrix3d r = body.getWorldTransform().linear();
+    return -std::atan2(r(1, 0), r(0, 0));
+}
+
+// A point given in a body's frame, in world coordinates.
+Vector3d world_point(const dd::BodyNode& body, double lx, double ly) {
+    return body.getWorldTransform() * Vector3d(lx, ly, 0.0);
+}
+
+// Lets the detector pass only the listed pairs of shapes (DART's own filters work per BodyNode; the roller needs
+// per-shape pairs: a sphere meets its guide, and the upper block's box, on the same BodyNode, must not).
+class PairFilter final : public dart::collision::CollisionFilter {
+public:
+    void allow(const dd::ShapeFrame* a, const dd::ShapeFrame* b) { pairs_.emplace_back(a, b); }
+    bool ignoresCollision(const dart::collision::CollisionObject* o1,
+                          const dart::collision::CollisionObject* o2) const override {
+        const dd::ShapeFrame* a = o1->getShapeFrame();
+        const dd::ShapeFrame* b = o2->getShapeFrame();
+        for (const auto& p : pairs_)
+            if ((p.first == a && p.second == b) || (p.first == b && p.second == a)) return false;
+        return true;
+    }
+
+private:
+    std::vector<std::pair<const dd::ShapeFrame*, const dd::ShapeFrame*>> pairs_;
+};
+
+dd::ShapeNode* add_shape(dd::BodyNode* body, const dd::ShapePtr& shape, const Vector3d& offset, double friction) {
+    dd::ShapeNode* node = body->createShapeNodeWith<dd::CollisionAspect, dd::DynamicsAspect>(shape);
+    node->setRelativeTranslation(offset);
+    node->getDynamicsAspect()->setFrictionCoeff(friction);
+    node->getDynamicsAspect()->setRestitutionCoeff(0.0);
+    return node;
+}
+
+class DartScene {
+public:
+    DartScene(const WallScene& scene, const Knobs& knobs, double theta0, double dt)
+        : sizes_(block_sizes(scene)), g_(scene.gravity()) {
+        world_ = dart::simulation::World::create("vssw");
+        world_->setTimeStep(dt);
+        world_->setGravity(Vector3d(0.0, -g_, 0.0));
+        dart::constraint::ConstraintSolver* solver = world_->getConstraintSolver();
+        if (knobs.detector == kOdeDetector)
+            solver->setCollisionDetector(dart::collision::OdeCollisionDetector::create());
+        else
+            solver->setCollisionDetector(dart::collision::DARTCollisionDetector::create());
+        auto filter = std::make_shared<PairFilter>();
+        solver->getCollisionOption().collisionFilter = filter;
+
+        const double b = sizes_.b, h = sizes_.h_lower + sizes_.h_upper;
+        // Ground. A moving ground travels with the record's displacement: wide enough that the wall never reaches
+        // its edge.
+        const double half_width = knobs.moving_supports ? 1e4 : 4.0 * h + 10.0 * b;
+        dd::SkeletonPtr ground = dd::Skeleton::create("ground");
+        if (knobs.moving_supports) {
+            dd::PrismaticJoint::Properties slide;
+            slide.mAxis = Vector3d::UnitX();
+            auto pair = ground->createJointAndBodyNodePair<dd::PrismaticJoint>(nullptr, slide);
+            ground_joint_ = pair.first;
+            ground_joint_->setActuatorType(dd::Joint::VELOCITY);
+            ground_body_ = pair.second;
+            // A kinematic joint's body takes no impulse; its mass only keeps the articulated inertia regular.
+            ground_body_->setMass(1.0);
+        } else {
+            ground_body_ = ground->createJointAndBodyNodePair<dd::WeldJoint>().second;
+        }
+        dd::ShapeNode* ground_box = add_shape(
+            ground_body_, std::make_shared<dd::BoxShape>(Vector3d(2.0 * half_width, 2.0 * h, 4.0 * kDepth)),
+            Vector3d(0.0, -h, 0.0), scene.friction);
+
+        dd::ShapeNode* lower_box = nullptr;
+        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, scene.friction, lower_box);
+        filter->allow(ground_box, lower_box);
+        if (scene.vssw) {
+            dd::ShapeNode* upper_box = nullptr;
+            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.friction, upper_box);
+            filter->allow(lower_box, upper_box);
+            // The roller: a sphere centred at each top corner, a guide whose face is the radius outside x = +-b.
+            const double r = kRollerRadiusShare * b, guide_half = b;
+            for (double side : {-1.0, 1.0}) {
+                dd::ShapeNode* sphere =
+                    add_shape(upper_, std::make_shared<dd::SphereShape>(r), Vector3d(side * b, sizes_.h_upper, 0.0), 0.0);
+                dd::ShapeNode* guide = add_shape(
+                    ground_body_, std::make_shared<dd::BoxShape>(Vector3d(2.0 * guide_half, 4.0 * h, 2.0 * kDepth)),
+                    Vector3d(side * (b + r + guide_half), 2.0 * h, 0.0), 0.0);
+                filter->allow(sphere, guide);
+            }
+        }
+        world_->addSkeleton(ground);
+        const WallPose pose = pose_at(scene, theta0);
+        place(lower_, pose.lower);
+        if (upper_) place(upper_, pose.upper);
+    }
+
+    dd::BodyNode* lower() const { return lower_; }
+    dd::BodyNode* upper() const { return upper_; }
+    double ground_x() const { return ground_joint_ ? ground_joint_->getPosition(0) : 0.0; }
+    double ground_velocity() const { return ground_joint_ ? ground_joint_->getVelocity(0) : 0.0; }
+    int contacts() const { return static_cast<int>(world_->getLastCollisionResult().getNumContacts()); }
+
+    // One step: the pseudo-force as gravity (-a_h, -g), or the ground's velocity for the step (moving supports).
+    // External forces must have been added before; DART clears them after the step.
+    void step(double a_h, double ground_velocity) {
+        if (ground_joint_) {
+            ground_joint_->setCommand(0, ground_velocity);
+        } else {
+            world_->setGravity(Vector3d(-a_h, -g_, 0.0));
+        }
+        world_->step();
+    }
+
+private:
+    dd::BodyNode* add_block(const std::string& name, double half_h, double mass_per_depth, double friction,
+                            dd::ShapeNode*& box_node) {
+        dd::SkeletonPtr skeleton = dd::Skeleton::create(name);
+        dd::BodyNode* body = skeleton->createJointAndBodyNodePair<dd::PlanarJoint>().second;  // XY plane by default
+        auto box = std::make_shared<dd::BoxShape>(Vector3d(2.0 * sizes_.b, 2.0 * half_h, kDepth));
+        const double m = mass_per_depth * kDepth;
+        body->setInertia(dd::Inertia(m, Vector3d::Zero(), box->computeInertia(m)));
+        box_node = add_shape(body, box, Vector3d::Zero(), friction);
+        world_->addSkeleton(skeleton);
+        return body;
+    }
+
+    // q = (x, y, counter-clockwise angle), checked against the transform DART derives from it: a plane or sign
+    // convention other than the one assumed would place the wall wrongly, silently.
+    static void place(dd::BodyNode* body, const BlockPose& p) {
+        body->getParentJoint()->setPositions(Vector3d(p.x, p.y, -p.angle));
+        const Vector3d c = body->getWorldTransform().translation();
+        constexpr double kPlacement = 1e-12;  // the transform's rounding
+        if (std::abs(c.x() - p.x) > kPlacement || std::abs(c.y() - p.y) > kPlacement ||
+            std::abs(clockwise_angle(*body) - p.angle) > kPlacement)
+            throw EngineFailure(fmt::format(
+                "DART: the planar joint's coordinates are not (x, y, counter-clockwise angle): asked ({}, {}, {}), got "
+                "({}, {}, {})",
+                p.x, p.y, p.angle, c.x(), c.y(), clockwise_angle(*body)));
+    }
+
+    BlockSizes sizes_;
+    double g_;
+    dart::simulation::WorldPtr world_;
+    dd::BodyNode* ground_body_ = nullptr;
+    dd::PrismaticJoint* ground_joint_ = nullptr;
+    dd::BodyNode* lower_ = nullptr;
+    dd::BodyNode* upper_ = nullptr;
+};
+
+class DartEngine final : public Engine {
+public:
+    std::string name() const override { return "dart"; }
+    std::string display_name() const override { return "DART"; }
+    // At 1 ms, the Fig. 6 VSSW (the parapet: 1.1e-2), docs/engines.md "DART".
+    double cost_per_simulated_second() const override { return 3.4e-2; }
+    std::string version() const override { return fmt::format("DART {}", DART_VERSION); }
+    EngineSettings default_settings() const override {
+        EngineSettings s;
+        // Measured (docs/engines.md "DART"): 1 ms meets every target of the cross-engine suite and `vssw bench`;
+        // the period error is first order in the step, as Bullet's and ODE's (the same symplectic Euler).
+        s.dt = 1e-3;
+        s.iterations = 0;
+        return s;
+    }
+    std::vector<SettingDescription> setting_descriptions() const override { return setting_table(); }
+    Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+    void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
+    // The ContactConstraint statics are process-wide: one run at a time in a process (make_engine() forks each run).
+    bool runs_concurrently() const override { return false; }
+};
+
+Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
+    require(std::isfinite(settings.dt) && settings.dt > 0.0, "DART time step dt (s)", "a positive finite number",
+            settings.dt);
+    require_one_description(scene);
+    const Knobs knobs = read_knobs(settings);
+    const double dt = settings.dt;
+    RunMonitor monitor("DART", scene, ex, dt, knobs.limits);
+    // The statics, set for this run (see the top of the file).
+    dart::constraint::ContactConstraint::setErrorReductionParameter(knobs.erp);
+    dart::constraint::ContactConstraint::setMaxErrorReductionVelocity(knobs.erv);
+    dart::constraint::ContactConstraint::setConstraintForceMixing(knobs.cfm);
+    dart::constraint::ContactConstraint::setErrorAllowance(knobs.allowance);
+    DartScene w(scene, knobs, ex.theta0, dt);
+    const BlockSizes s = block_sizes(scene);
+    const double g = scene.gravity();
+    const double N = scene.overburden() * kDepth;
+    const double h_total = s.h_lower + s.h_upper;
+    dd::BodyNode* lower = w.lower();
+    dd::BodyNode* upper = w.upper();
+    dd::BodyNode* top_body = upper ? upper : lower;
+    const double top_half = upper ? s.h_upper : s.h_lower;
+    const double y_top0 = 2.0 * h_total;
+    const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
+
+    Trajectory out;
+    const long every = sample_every(settings, dt);
+    auto rate_of = [](const dd::BodyNode& body) { return -body.getAngularVelocity()[2]; };
+    auto record = [&](double t) {
+        if (ex.motion_only) {
+            out.samples.push_back(motion_sample(t, clockwise_angle(*lower), rate_of(*lower)));
+            return;
+        }
+        TrajectorySample p{};
+        p.t = t;
+        p.theta1 = clockwise_angle(*lower);
+        p.theta1_dot = rate_of(*lower);
+        p.theta2 = upper ? clockwise_angle(*upper) : 0.0;
+        p.top_dy = world_point(*top_body, 0.0, top_half).y() - y_top0;
+        const double v_ground = w.ground_velocity();
+        auto kinetic = [&](const dd::BodyNode& body) {
+            const Vector3d v = body.getCOMLinearVelocity() - Vector3d(v_ground, 0.0, 0.0);
+            const Vector3d wv = body.getAngularVelocity();
+            return 0.5 * body.getMass() * v.squaredNorm() + 0.5 * wv.dot(body.getInertia().getMoment() * wv);
+        };
+        p.kinetic = (kinetic(*lower) + (upper ? kinetic(*upper) : 0.0)) / kDepth;
+        p.potential = (s.m_lower * kDepth * g * (lower->getCOM().y() - y_lower0) +
+                       (upper ? s.m_upper * kDepth * g * (upper->getCOM().y() - y_upper0) : 0.0) + N * p.top_dy) /
+                      kDepth;
+        p.contacts = w.contacts();
+        out.samples.push_back(p);
+    };
+
+    const long n_steps = std::lround(ex.t_end / dt);
+    double v_g = 0.0;  // the ground's velocity (moving supports)
+    record(0.0);
+    for (long i = 1; i <= n_steps; ++i) {
+        const double t0 = static_cast<double>(i - 1) * dt;
+        // The ground motion at the step's midpoint: its impulse over the step to second order.
+        const double a_h = ex.horizontal(t0 + 0.5 * dt);
+        if (knobs.moving_supports) v_g += dt * a_h;  // the velocity change the pseudo-forces would give the blocks
+        if (N > 0.0) top_body->addExtForce(Vector3d(0.0, -N, 0.0), Vector3d(0.0, top_half, 0.0), false, true);
+        w.step(a_h, v_g);
+        ++out.steps;
+
+        const double t = static_cast<double>(i) * dt;
+        const double theta = clockwise_angle(*lower);
+        const double rate = rate_of(*lower);
+        const double x_g = w.ground_x();
+        const Vector3d right = world_point(*lower, s.b, -s.h_lower), left = world_point(*lower, -s.b, -s.h_lower);
+        const auto verdict =  // corners relative to the (moving) ground
+            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()});
+        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
+        if (RunMonitor::ends_run(verdict, out)) return out;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::unique_ptr<Engine> make_dart_engine() { return std::make_unique<DartEngine>(); }
+
+}  // namespace vssw::multibody
