@@ -22,6 +22,7 @@ constexpr EngineColour kEngineColours[] = {
     {"simbody", "#009E73"},        // bluish green
     {"siconos", "#CC79A7"},        // reddish purple
     {"simbody-rigid", "#56B4E9"},  // sky blue
+    {"mujoco", "#882255"},         // wine (Paul Tol's muted scheme, colour-blind safe; Okabe-Ito has no hue left)
 };
 // The palette's colours left for other names (its yellow, #F0E442, reads badly on white and is not used).
 constexpr std::string_view kSpare[] = {"#E69F00", "#999999"};

@@ -45,6 +45,11 @@ constexpr bool kHaveSiconos = true;
 #else
 constexpr bool kHaveSiconos = false;
 #endif
+#ifdef VSSW_HAVE_MUJOCO
+constexpr bool kHaveMujoco = true;
+#else
+constexpr bool kHaveMujoco = false;
+#endif
 constexpr KnownEngine kKnownEngines[] = {
     {"analytic", "analytic", nullptr, true},
     {"bullet", "Bullet", "bullet", kHaveBullet},
@@ -52,6 +57,7 @@ constexpr KnownEngine kKnownEngines[] = {
     {"simbody", "Simbody", "simbody", kHaveSimbody},
     {"simbody-rigid", "simbody-rigid", "simbody", kHaveSimbody},
     {"siconos", "Siconos", "siconos", kHaveSiconos},
+    {"mujoco", "MuJoCo", "mujoco", kHaveMujoco},
 };
 
 std::vector<std::string> known_engines(bool built) {

@@ -24,6 +24,7 @@ packages=(
   libode-dev                         # the ODE adapter (pkg-config ode, double precision)
   libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
   libsiconos-kernel-dev              # the Siconos adapter (kernel and numerics; found by headers and libraries)
+  libmujoco-dev libqhull-dev         # the MuJoCo adapter (found by header and library; libqhull-dev makes its CMake config usable)
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
   libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
   gnuplot-nox                        # the plots of `vssw report` and `vssw study` (SVG; without it: no plots)
