@@ -239,7 +239,7 @@ public:
     MujocoEngine() { ensure_handlers(); }
     std::string name() const override { return "mujoco"; }
     std::string display_name() const override { return "MuJoCo"; }
-    double cost_per_simulated_second() const override { return 4.0e-3; }  // at 1 ms, docs/engines.md "MuJoCo"
+    double cost_per_simulated_second() const override { return 7.5e-3; }  // at 1 ms, docs/engines.md "MuJoCo"
     std::string version() const override { return fmt::format("MuJoCo {}", mj_versionString()); }
     EngineSettings default_settings() const override {
         EngineSettings s;
