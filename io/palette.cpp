@@ -24,6 +24,7 @@ constexpr EngineColour kEngineColours[] = {
     {"simbody-rigid", "#56B4E9"},  // sky blue
     {"box2d", "#882255"},          // wine (Paul Tol's colour-blind safe "muted" set: Okabe-Ito's spares stay free)
     {"dart", "#E69F00"},           // orange
+    {"mujoco", "#332288"},         // indigo (Paul Tol's colour-blind safe "muted" set; Okabe-Ito has no hue left)
 };
 // The palette's colour left for other names (its yellow, #F0E442, reads badly on white and is not used).
 constexpr std::string_view kSpare[] = {"#999999"};

@@ -55,6 +55,11 @@ constexpr bool kHaveDart = true;
 #else
 constexpr bool kHaveDart = false;
 #endif
+#ifdef VSSW_HAVE_MUJOCO
+constexpr bool kHaveMujoco = true;
+#else
+constexpr bool kHaveMujoco = false;
+#endif
 constexpr KnownEngine kKnownEngines[] = {
     {"analytic", "analytic", nullptr, true},
     {"bullet", "Bullet", "bullet", kHaveBullet},
@@ -64,6 +69,7 @@ constexpr KnownEngine kKnownEngines[] = {
     {"siconos", "Siconos", "siconos", kHaveSiconos},
     {"box2d", "Box2D", "box2d", kHaveBox2d},
     {"dart", "DART", "dart", kHaveDart},
+    {"mujoco", "MuJoCo", "mujoco", kHaveMujoco},
 };
 
 std::vector<std::string> known_engines(bool built) {

@@ -28,6 +28,7 @@ packages=(
   # the DART adapter (CMake config; its ODE collision detector; ikfast, which dart/dart.hpp needs though libdart-dev
   # does not depend on it). Heavy: libdart-dev pulls libboost-all-dev, about 108 packages and 224 MB installed.
   libdart-dev libdart-collision-ode-dev libdart-external-ikfast-dev
+  libmujoco-dev libqhull-dev         # the MuJoCo adapter (found by header and library; libqhull-dev makes its CMake config usable)
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
   libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
   gnuplot-nox                        # the plots of `vssw report` and `vssw study` (SVG; without it: no plots)

@@ -42,6 +42,7 @@ ENGINE_HEADERS = {
     "multibody/siconos": re.compile(r"(Siconos|siconos|TimeStepping|TimeDiscretisation|SolverOptions|SimulationGraphs|"
                                     r"SimpleMatrix|NonSmoothDynamicalSystem|NewtonImpact|MoreauJeanOSI|LagrangianLinearTIDS|"
                                     r"FrictionContact|NumericsMatrix)"),
+    "multibody/mujoco": re.compile(r"mujoco/"),
 }
 QUOTED = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
 ANGLED = re.compile(r"^\s*#\s*include\s+<([^>]+)>")

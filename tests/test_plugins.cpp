@@ -39,7 +39,7 @@ std::string mapped_files() {
 
 // The engine libraries and MPI, by the names of their shared objects.
 const std::vector<std::string> kEngineLibraries = {"libBulletDynamics", "libode.so", "libSimTKsimbody", "libsiconos_kernel",
-                                                   "libbox2d", "libdart.so", "libmpi", "vssw_engine_", "vssw_mpi"};
+                                                   "libbox2d", "libdart.so", "libmujoco", "libmpi", "vssw_engine_", "vssw_mpi"};
 
 // The fixture plugins (plugin_fixture.cpp), opened from their folder through VSSW_PLUGIN_PATH.
 class FixturePlugin : public ::testing::Test {

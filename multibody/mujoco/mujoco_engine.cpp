@@ -1,0 +1,382 @@
+// MuJoCo adapter: the wall as bodies of an mjModel compiled from an XML text held in memory (MuJoCo's virtual file
+// system: no file is written), each block on slide-x, slide-z and hinge-y joints, so that the motion is exactly
+// planar. MuJoCo's world has z up: the engine's (x, y) plane is MuJoCo's (x, z) plane, and the engine's clockwise
+// rotation (the wall tipping towards +x) is a positive rotation about MuJoCo's +y axis: theta = the hinge's qpos.
+//
+// Scene (from the analytic description; depth 1 m, so masses and energies are per unit depth as in the paper):
+//  - ground: a plane z = 0 in the world body (MuJoCo allows planes only in static bodies);
+//  - lower and upper blocks: box geoms (b, h1) and (b, h2) (one box (b, h) for a parapet) with their masses and
+//    inertias given (not from the geoms), both children of the world body: MuJoCo drops contacts between a body and
+//    its parent by default (mjDSBL_FILTERPARENT), so an upper block nested in the lower would lose the hinge;
+//  - contacts: only the pairs the wall can touch, declared as <pair>s (every geom's contype and conaffinity are 0):
+//    ground-lower (box-plane: the corners), lower-upper (box-box: the hinge corners) with friction, and (VSSW only)
+//    the roller;
+//  - the roller, one-sided as in the other adapters (docs/engines.md "Bullet"): a tiny sphere at each top corner of
+//    the upper block, set in by its radius so that its outer point is the corner's line, against a frictionless
+//    (condim 1) plane at x = +b (normal -x) and one at x = -b (normal +x). Both guides are in every step; a sphere
+//    inside its line is a contact that is not active. Sphere-plane distances are exact to rounding at any depth;
+//  - N: a force and its moment about the centre of mass (xfrc_applied), the force acting at the centre of the top
+//    face, set every step;
+//  - ground motion: pseudo-forces, the x component of gravity set to -a_h at each step's midpoint (a uniform field:
+//    -m a_h at every centre of mass). No moving supports: MuJoCo's planes must be static, and a mocap ground moves
+//    without a velocity the contacts would see (docs/engines.md "MuJoCo").
+//
+// Contact: MuJoCo's contacts are soft (a spring-damper reference acceleration, solref, mixed with the constraint by
+// an impedance, solimp). At its defaults (solref 0.02 s, solimp 0.9/0.95) a rocking block loses 5.5 % too much
+// velocity at each impact, whatever the step; with the time constant at 2 dt (the smallest MuJoCo accepts: its
+// refsafe floor) and the impedance near 1 the impacts are those of rigid bodies (docs/engines.md "MuJoCo").
+#include "multibody/mujoco/mujoco_engine.hpp"
+
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "analytic/error.hpp"
+#include "multibody/run_monitor.hpp"
+#include "multibody/scene_geometry.hpp"
+#include "multibody/settings_reader.hpp"
+
+namespace vssw::multibody {
+namespace {
+
+constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
+
+// MuJoCo's error handler must not return (MuJoCo would go on past the error; without a handler it calls exit()): it
+// throws, and simulate() turns the text into an EngineFailure. Warnings (mju_warning: "Nan, Inf or huge value in
+// QACC", after which mj_step resets the simulation to its initial state and goes on, or a full contact buffer) are
+// recorded for the thread that ran into them; simulate() fails the run on any warning MuJoCo counts in mjData.
+struct MujocoError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+thread_local std::string t_last_warning;
+
+void on_mujoco_error(const char* text) { throw MujocoError(text ? text : "(no text)"); }
+void on_mujoco_warning(const char* text) { t_last_warning = text ? text : "(no text)"; }
+
+// The handlers are process-wide function pointers: set once (they hold no state but the thread's last warning).
+void ensure_handlers() {
+    static const bool set = [] {
+        mju_user_error = &on_mujoco_error;
+        mju_user_warning = &on_mujoco_warning;
+        return true;
+    }();
+    (void)set;
+}
+
+// The integrators of MuJoCo 2.2.2 (mjtIntegrator): semi-implicit Euler, RK4, implicit in the velocity.
+constexpr const char* kIntegrators[] = {"Euler", "RK4", "implicit"};
+constexpr int kIntegratorCount = 3;
+
+// The sphere that stands for a top corner of the upper block at the roller [m]: a point, set in from the corner by
+// its radius (sphere-plane distances are exact whatever the radius).
+constexpr double kRollerSphereRadius = 1e-6;
+
+// The spheres that stand for the upper block's bottom corners at the hinge [m], their lowest points at the corners.
+// MuJoCo 2.2.2's box-box contact kicked the flush blocks at random (a trial's wall launched upwards at 1 m/s in its
+// third step), and its sphere-box distance stops at minus the radius once the centre is inside the box, so the radius
+// must exceed every penetration (about 1e-5 m at rest, 1e-4 m in an impact at 1 ms). The rounding is a bias: 1 mm gave
+// a period -1.5 % off on T1 #14 at xi 0.5 flying off the roller (0.2 mm: -0.31 %), docs/engines.md "MuJoCo".
+constexpr double kHingeSphereRadius = 2e-4;
+
+struct Knobs {
+    int iterations;  // Newton iterations per step
+    double tolerance;
+    int integrator;  // kIntegrators
+    int noslip_iterations;
+    // solref (time constant, damping ratio): the time constant in steps (MuJoCo raises anything below 2 dt to 2 dt).
+    double solref_steps, dampratio;
+    // solimp (dmin, dmax, width, midpoint 0.5, power 2).
+    double solimp_dmin, solimp_dmax, solimp_width;
+    FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
+};
+
+constexpr int kDefaultIterations = 100;
+
+// Ranges (SettingDescription::lo/hi): solref's time constant from MuJoCo's floor (2 steps) to 1000 steps (a contact
+// of a second's time constant at 1 ms: the wall sinks); the impedances within MuJoCo's own clamp [1e-4, 0.9999]
+// (mjMINIMP, mjMAXIMP); the tolerance from 1e-15 (rounding) to 1e-2.
+std::vector<SettingDescription> setting_table() {
+    return FailureLimits::described_after({
+        {"dt", "0.001", "s", "the step (docs/engines.md \"MuJoCo\": every target met at 1 ms)"},
+        {"iterations", std::to_string(kDefaultIterations), "", "Newton solver iterations per step (at most)"},
+        {"tolerance", "1e-08", "", "Newton solver tolerance (relative improvement of the cost)", 1e-15, 1e-2},
+        {"integrator", "0", "choice", "0 semi-implicit Euler, 1 RK4, 2 implicit (in the velocity)", 0.0, 2.0},
+        {"noslip_iterations", "0", "", "iterations of MuJoCo's noslip pass (hard friction after the soft solve)", 0.0,
+         1000.0},
+        {"solref_steps", "2", "", "contacts' time constant (solref) in steps; 2 is MuJoCo's floor (refsafe)", 2.0,
+         1000.0},
+        {"dampratio", "1", "", "contacts' damping ratio (solref's second number)", 0.1, 10.0},
+        {"solimp_dmin", "0.99", "", "contacts' impedance at zero penetration (solimp's first number)", 1e-4, 0.9999},
+        {"solimp_dmax", "0.999", "", "contacts' impedance past solimp_width (solimp's second number)", 1e-4, 0.9999},
+        {"solimp_width", "0.001", "m", "penetration over which the impedance goes from dmin to dmax", 0.0, 1.0},
+    });
+}
+
+Knobs read_knobs(const EngineSettings& s) {
+    const SettingsReader r("MuJoCo", s, setting_table());
+    Knobs k{};
+    k.iterations = s.iterations > 0 ? s.iterations : kDefaultIterations;
+    k.tolerance = r.positive("tolerance", 1e-8);
+    k.integrator = r.choice("integrator", 0, kIntegratorCount);
+    k.noslip_iterations = static_cast<int>(std::lround(r.non_negative("noslip_iterations", 0.0)));
+    k.solref_steps = r.positive("solref_steps", 2.0);
+    k.dampratio = r.positive("dampratio", 1.0);
+    k.solimp_dmin = r.positive("solimp_dmin", 0.99);
+    k.solimp_dmax = r.positive("solimp_dmax", 0.999);
+    k.solimp_width = r.non_negative("solimp_width", 1e-3);
+    k.limits = FailureLimits::read(r);
+    return k;
+}
+
+std::string num(double v) { return fmt::format("{:.17g}", v); }
+
+// A block's <body>: at its place at rest, on slide-x, slide-z and hinge-y joints at its centre (the slides first, so
+// that their axes stay the world's), with its mass and inertia per depth kDepth, and a box geom.
+std::string block_xml(const std::string& name, double b, double h, double mass_per_depth, double z_rest,
+                      const std::string& extra_geoms) {
+    const double m = mass_per_depth * kDepth, w = 2.0 * b, H = 2.0 * h, d = kDepth;
+    return fmt::format(
+        "<body name='{0}' pos='0 0 {1}'>"
+        "<joint name='{0}_x' type='slide' axis='1 0 0'/><joint name='{0}_z' type='slide' axis='0 0 1'/>"
+        "<joint name='{0}_r' type='hinge' axis='0 1 0'/>"
+        "<inertial pos='0 0 0' mass='{2}' diaginertia='{3} {4} {5}'/>"
+        "<geom name='{0}' type='box' size='{6} {7} {8}'/>{9}</body>\n",
+        name, num(z_rest), num(m), num(m * (d * d + H * H) / 12.0), num(m * (w * w + H * H) / 12.0),
+        num(m * (w * w + d * d) / 12.0), num(b), num(0.5 * d), num(h), extra_geoms);
+}
+
+// The model for a scene and settings, as MuJoCo's XML.
+std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
+    const BlockSizes s = block_sizes(scene);
+    const double tc = k.solref_steps * dt;
+    const std::string contact = fmt::format("solref='{} {}' solimp='{} {} {} 0.5 2'", num(tc), num(k.dampratio),
+                                            num(k.solimp_dmin), num(k.solimp_dmax), num(k.solimp_width));
+    const std::string friction = fmt::format("friction='{0} {0} 0.005 0.0001 0.0001'", num(scene.friction));
+    std::string xml = fmt::format(
+        "<mujoco model='vssw'>\n<compiler angle='radian' inertiafromgeom='false'/>\n"
+        "<option timestep='{}' gravity='0 0 {}' integrator='{}' cone='pyramidal' impratio='1' "
+        "noslip_iterations='{}' solver='Newton' iterations='{}' tolerance='{}'/>\n"
+        "<default><geom contype='0' conaffinity='0'/></default>\n<worldbody>\n"
+        "<geom name='ground' type='plane' size='100 100 1'/>\n",
+        num(dt), num(-scene.gravity()), kIntegrators[k.integrator], k.noslip_iterations, k.iterations,
+        num(k.tolerance));
+    // The hinge's face: a box on the lower block whose top face is the block's, twice as wide, so that the upper
+    // block's corner spheres always meet that face and never the box's sides.
+    const std::string face = scene.vssw ? fmt::format("<geom name='hinge_face' type='box' size='{0} {1} {2}' pos='0 0 {3}'/>",
+                                                      num(2.0 * s.b), num(0.5 * kDepth), num(s.b), num(s.h_lower - s.b))
+                                        : std::string();
+    xml += block_xml("lower", s.b, s.h_lower, s.m_lower, s.h_lower, face);
+    if (scene.vssw) {
+        const double r = kRollerSphereRadius;
+        xml += fmt::format("<geom name='guide_right' type='plane' size='100 100 1' pos='{} 0 0' zaxis='-1 0 0'/>\n"
+                           "<geom name='guide_left' type='plane' size='100 100 1' pos='{} 0 0' zaxis='1 0 0'/>\n",
+                           num(s.b), num(-s.b));
+        const std::string top = fmt::format(
+            "<geom name='top_right' type='sphere' size='{0}' pos='{1} 0 {3}'/>"
+            "<geom name='top_left' type='sphere' size='{0}' pos='{2} 0 {3}'/>"
+            "<geom name='bottom_right' type='sphere' size='{4}' pos='{5} 0 {6}'/>"
+            "<geom name='bottom_left' type='sphere' size='{4}' pos='{7} 0 {6}'/>",
+            num(r), num(s.b - r), num(-(s.b - r)), num(s.h_upper), num(kHingeSphereRadius), num(s.b),
+            num(-s.h_upper + kHingeSphereRadius), num(-s.b));
+        xml += block_xml("upper", s.b, s.h_upper, s.m_upper, 2.0 * s.h_lower + s.h_upper, top);
+    }
+    xml += "</worldbody>\n<contact>\n";
+    xml += fmt::format("<pair geom1='ground' geom2='lower' condim='3' {} {}/>\n", friction, contact);
+    if (scene.vssw) {
+        for (const char* corner : {"bottom_right", "bottom_left"})
+            xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, friction, contact);
+        xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
+        xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
+    }
+    xml += "</contact>\n</mujoco>\n";
+    return xml;
+}
+
+// mjModel and mjData of one run, freed with it.
+struct ModelDeleter {
+    void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+struct DataDeleter {
+    void operator()(mjData* d) const { mj_deleteData(d); }
+};
+struct VfsDeleter {
+    void operator()(mjVFS* v) const {
+        mj_deleteVFS(v);
+        delete v;
+    }
+};
+
+// Compiles the XML from memory: one file in a virtual file system (mjVFS is 2 MB of names: on the heap).
+std::unique_ptr<mjModel, ModelDeleter> compile(const std::string& xml) {
+    std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
+    mj_defaultVFS(vfs.get());
+    const char* file = "vssw_wall.xml";
+    if (mj_makeEmptyFileVFS(vfs.get(), file, static_cast<int>(xml.size())) != 0)
+        throw EngineFailure("MuJoCo: could not make the model's file in its virtual file system");
+    const int index = mj_findFileVFS(vfs.get(), file);
+    std::memcpy(vfs->filedata[index], xml.data(), xml.size());
+    std::array<char, 1024> error{};
+    mjModel* m = mj_loadXML(file, vfs.get(), error.data(), static_cast<int>(error.size()));
+    if (!m) throw EngineFailure(fmt::format("MuJoCo: the model did not compile: {}", error.data()));
+    return std::unique_ptr<mjModel, ModelDeleter>(m);
+}
+
+struct Block {
+    int q = -1;     // index of its slide-x joint's qpos (and qvel): x, z, angle follow
+    int body = -1;  // body id
+    double z_rest = 0.0, half_h = 0.0, mass = 0.0, inertia = 0.0;
+};
+
+class MujocoEngine final : public Engine {
+public:
+    MujocoEngine() { ensure_handlers(); }
+    std::string name() const override { return "mujoco"; }
+    std::string display_name() const override { return "MuJoCo"; }
+    double cost_per_simulated_second() const override { return 7.5e-3; }  // at 1 ms, docs/engines.md "MuJoCo"
+    std::string version() const override { return fmt::format("MuJoCo {}", mj_versionString()); }
+    EngineSettings default_settings() const override {
+        EngineSettings s;
+        s.dt = 1e-3;  // docs/engines.md "MuJoCo": every target met at 1 ms, errors first order in the step
+        s.iterations = kDefaultIterations;
+        return s;
+    }
+    std::vector<SettingDescription> setting_descriptions() const override { return setting_table(); }
+    Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
+    void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
+    // Each run has its own mjModel and mjData; the process-wide state is the two handlers (set once, a warning's
+    // text kept per thread) and the XML compiler's, which MuJoCo guards with its own lock.
+    bool runs_concurrently() const override { return true; }
+
+private:
+    Trajectory run(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const;
+};
+
+Trajectory MujocoEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
+    try {
+        return run(scene, ex, settings);
+    } catch (const MujocoError& e) {
+        throw EngineFailure(fmt::format("MuJoCo: {}", e.what()));
+    }
+}
+
+Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
+    require(std::isfinite(settings.dt) && settings.dt > 0.0, "MuJoCo time step dt (s)", "a positive finite number",
+            settings.dt);
+    require_one_description(scene);
+    const Knobs knobs = read_knobs(settings);
+    const double dt = settings.dt;
+    ensure_handlers();
+    const BlockSizes s = block_sizes(scene);
+    const auto model = compile(model_xml(scene, knobs, dt));
+    mjModel* m = model.get();
+    const std::unique_ptr<mjData, DataDeleter> data(mj_makeData(m));
+    mjData* d = data.get();
+    if (!d) throw EngineFailure("MuJoCo: mj_makeData failed");
+
+    auto block = [&](const char* name, double z_rest, double half_h, double mass_per_depth) {
+        Block k;
+        k.body = mj_name2id(m, mjOBJ_BODY, name);
+        const std::string joint = std::string(name) + "_x";
+        k.q = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, joint.c_str())];
+        k.z_rest = z_rest;
+        k.half_h = half_h;
+        k.mass = mass_per_depth * kDepth;
+        k.inertia = k.mass * (4.0 * s.b * s.b + 4.0 * half_h * half_h) / 12.0;
+        return k;
+    };
+    const Block lower = block("lower", s.h_lower, s.h_lower, s.m_lower);
+    const bool vssw = scene.vssw.has_value();
+    const Block upper = vssw ? block("upper", 2.0 * s.h_lower + s.h_upper, s.h_upper, s.m_upper) : Block{};
+    // The joints are the only degrees of freedom (no free joints): qpos and qvel share their indices.
+    const WallPose pose = pose_at(scene, ex.theta0);
+    auto place = [&](const Block& k, const BlockPose& p) {
+        d->qpos[k.q] = p.x;
+        d->qpos[k.q + 1] = p.y - k.z_rest;
+        d->qpos[k.q + 2] = std::abs(p.angle) < 1e-12 ? 0.0 : p.angle;
+    };
+    place(lower, pose.lower);
+    if (vssw) place(upper, pose.upper);
+
+    const double g = scene.gravity();
+    const double N = scene.overburden() * kDepth;
+    const Block& top = vssw ? upper : lower;
+    const double y_top0 = 2.0 * (s.h_lower + s.h_upper);
+    auto centre_x = [&](const Block& k) { return d->qpos[k.q]; };
+    auto centre_y = [&](const Block& k) { return k.z_rest + d->qpos[k.q + 1]; };
+    auto angle = [&](const Block& k) { return d->qpos[k.q + 2]; };
+    // A point of a block given in its frame (engine axes: lx along its width, ly along its height), in world (x, y).
+    auto world = [&](const Block& k, double lx, double ly) {
+        const double a = angle(k), c = std::cos(a), sn = std::sin(a);
+        return std::array<double, 2>{centre_x(k) + c * lx + sn * ly, centre_y(k) - sn * lx + c * ly};
+    };
+
+    Trajectory out;
+    const long every = sample_every(settings, dt);
+    auto record = [&](double t) {
+        if (ex.motion_only) {
+            out.samples.push_back(motion_sample(t, angle(lower), d->qvel[lower.q + 2]));
+            return;
+        }
+        TrajectorySample p{};
+        p.t = t;
+        p.theta1 = angle(lower);
+        p.theta1_dot = d->qvel[lower.q + 2];
+        p.theta2 = vssw ? angle(upper) : 0.0;
+        p.top_dy = world(top, 0.0, top.half_h)[1] - y_top0;
+        auto kinetic = [&](const Block& k) {
+            const double vx = d->qvel[k.q], vy = d->qvel[k.q + 1], w = d->qvel[k.q + 2];
+            return 0.5 * k.mass * (vx * vx + vy * vy) + 0.5 * k.inertia * w * w;
+        };
+        auto potential = [&](const Block& k) { return k.mass * g * (centre_y(k) - k.z_rest); };
+        p.kinetic = (kinetic(lower) + (vssw ? kinetic(upper) : 0.0)) / kDepth;
+        p.potential = (potential(lower) + (vssw ? potential(upper) : 0.0) + N * p.top_dy) / kDepth;
+        p.contacts = d->ncon;
+        out.samples.push_back(p);
+    };
+
+    const long n_steps = std::lround(ex.t_end / dt);
+    record(0.0);
+    RunMonitor monitor("MuJoCo", scene, ex, dt, knobs.limits);
+    t_last_warning.clear();
+    for (long i = 1; i <= n_steps; ++i) {
+        const double t0 = static_cast<double>(i - 1) * dt;
+        // The ground motion at the step's midpoint (its impulse over the step to second order), as a uniform field.
+        m->opt.gravity[0] = -ex.horizontal(t0 + 0.5 * dt);
+        if (N > 0.0) {
+            // N at the centre of the top face: the force at the centre of mass and its moment about it (about +y:
+            // r_z F_x - r_x F_z with r the arm from the centre, F = (0, 0, -N)).
+            const double arm_x = world(top, 0.0, top.half_h)[0] - centre_x(top);
+            double* f = d->xfrc_applied + 6 * top.body;
+            f[2] = -N;
+            f[4] = arm_x * N;
+        }
+        mj_step(m, d);
+        ++out.steps;
+
+        const double t = static_cast<double>(i) * dt;
+        for (int w = 0; w < mjNWARNING; ++w)
+            if (d->warning[w].number > 0)
+                throw EngineFailure(fmt::format("MuJoCo warned at t = {:.6g} s: {}", t,
+                                                t_last_warning.empty() ? std::string("(no text)") : t_last_warning));
+        const auto right = world(lower, s.b, -s.h_lower), left = world(lower, -s.b, -s.h_lower);
+        const auto verdict =
+            monitor.check(t, angle(lower), d->qvel[lower.q + 2], {right[0] - s.b, right[1], left[0] + s.b, left[1]});
+        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
+        if (RunMonitor::ends_run(verdict, out)) return out;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::unique_ptr<Engine> make_mujoco_engine() { return std::make_unique<MujocoEngine>(); }
+
+}  // namespace vssw::multibody
