@@ -503,37 +503,6 @@ TEST(Dart, BadSettingsAreRefusedByName) {
     const auto engine = multibody::make_engine("dart");
     for (const auto& [knob, value] : std::vector<std::pair<std::string, double>>{
              {"erp", 1.5}, {"cfm", 0.0}, {"cfm", 2.0}, {"erv", -1.0}, {"allowance", 1.0}, {"detector", 2.0}}) {
-// MuJoCo (multibody/mujoco/mujoco_engine.cpp): its contacts are soft. At MuJoCo's own defaults (solref 0.02 s,
-// solimp 0.9/0.95) the parapet's impact loses 5.5 % too much energy (restitution from the amplitudes either side);
-// with the time constant at 2 dt and the impedance near 1 (the adapter's defaults) it is Housner's. Suite named in
-// lower case for `ctest -R mujoco`.
-double mujoco_amplitude_restitution(const multibody::Engine& engine, const multibody::EngineSettings& s) {
-    const WallScene scene = fig6_parapet();
-    const compare::FreeVibrationResult r = compare::run_free_vibration(engine, s, scene);
-    if (r.amplitude.empty()) return NAN;
-    return r.amplitude.front().energy / housner_restitution(scene.parapet->alpha) - 1.0;
-}
-
-TEST(mujoco, StiffContactGivesHousnersImpactWhereMujocosDefaultContactDoesNot) {
-    if (!engine_available("mujoco")) GTEST_SKIP() << "MuJoCo is not compiled in";
-    const auto engine = multibody::make_engine("mujoco");
-    multibody::EngineSettings s = engine->default_settings();
-    EXPECT_NEAR(mujoco_amplitude_restitution(*engine, s), 0.0, kRestitutionTarget);
-    s.knobs["solref_steps"] = 0.02 / s.dt;  // MuJoCo's default time constant, 0.02 s
-    s.knobs["solimp_dmin"] = 0.9;
-    s.knobs["solimp_dmax"] = 0.95;
-    constexpr double kDefaultContactLoss = -0.04;  // measured -5.5 % (docs/engines.md "MuJoCo"); beyond the target
-    EXPECT_LT(mujoco_amplitude_restitution(*engine, s), kDefaultContactLoss);
-}
-
-TEST(mujoco, SettingsOutsideTheirRangesAreRefusedByName) {
-    if (!engine_available("mujoco")) GTEST_SKIP() << "MuJoCo is not compiled in";
-    const auto engine = multibody::make_engine("mujoco");
-    for (const auto& [knob, value] : std::vector<std::pair<std::string, double>>{{"solref_steps", 1.0},
-                                                                                  {"solimp_dmax", 1.0},
-                                                                                  {"integrator", 3.0},
-                                                                                  {"tolerance", 0.0},
-                                                                                  {"moving_supports", 1.0}}) {
         multibody::EngineSettings s = engine->default_settings();
         s.knobs[knob] = value;
         try {
@@ -613,6 +582,48 @@ TEST(Dart, ContactStaticsAreSetForEachRun) {
     ASSERT_EQ(after.size(), before.size());
     EXPECT_NE(changed.back().theta1, before.back().theta1);  // the knobs do act
     for (std::size_t i = 0; i < before.size(); ++i) ASSERT_EQ(after[i].theta1, before[i].theta1) << "t " << before[i].t;
+}
+
+// MuJoCo (multibody/mujoco/mujoco_engine.cpp): its contacts are soft. At MuJoCo's own defaults (solref 0.02 s,
+// solimp 0.9/0.95) the parapet's impact loses 5.5 % too much energy (restitution from the amplitudes either side);
+// with the time constant at 2 dt and the impedance near 1 (the adapter's defaults) it is Housner's. Suite named in
+// lower case for `ctest -R mujoco`.
+double mujoco_amplitude_restitution(const multibody::Engine& engine, const multibody::EngineSettings& s) {
+    const WallScene scene = fig6_parapet();
+    const compare::FreeVibrationResult r = compare::run_free_vibration(engine, s, scene);
+    if (r.amplitude.empty()) return NAN;
+    return r.amplitude.front().energy / housner_restitution(scene.parapet->alpha) - 1.0;
+}
+
+TEST(mujoco, StiffContactGivesHousnersImpactWhereMujocosDefaultContactDoesNot) {
+    if (!engine_available("mujoco")) GTEST_SKIP() << "MuJoCo is not compiled in";
+    const auto engine = multibody::make_engine("mujoco");
+    multibody::EngineSettings s = engine->default_settings();
+    EXPECT_NEAR(mujoco_amplitude_restitution(*engine, s), 0.0, kRestitutionTarget);
+    s.knobs["solref_steps"] = 0.02 / s.dt;  // MuJoCo's default time constant, 0.02 s
+    s.knobs["solimp_dmin"] = 0.9;
+    s.knobs["solimp_dmax"] = 0.95;
+    constexpr double kDefaultContactLoss = -0.04;  // measured -5.5 % (docs/engines.md "MuJoCo"); beyond the target
+    EXPECT_LT(mujoco_amplitude_restitution(*engine, s), kDefaultContactLoss);
+}
+
+TEST(mujoco, SettingsOutsideTheirRangesAreRefusedByName) {
+    if (!engine_available("mujoco")) GTEST_SKIP() << "MuJoCo is not compiled in";
+    const auto engine = multibody::make_engine("mujoco");
+    for (const auto& [knob, value] : std::vector<std::pair<std::string, double>>{{"solref_steps", 1.0},
+                                                                                  {"solimp_dmax", 1.0},
+                                                                                  {"integrator", 3.0},
+                                                                                  {"tolerance", 0.0},
+                                                                                  {"moving_supports", 1.0}}) {
+        multibody::EngineSettings s = engine->default_settings();
+        s.knobs[knob] = value;
+        try {
+            engine->check_settings(s);
+            ADD_FAILURE() << knob << " = " << value << " was accepted";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(knob), std::string::npos) << e.what();
+        }
+    }
 }
 
 // MuJoCo answers a bad acceleration with a warning and resets the simulation to its start, then goes on: the
