@@ -56,7 +56,8 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       limits_(limits),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
-      quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))) {
+      quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))),
+      folded_needed_(std::max(1, static_cast<int>(std::lround(kFoldedFor / dt)))) {
     if (ex.t_end / dt > kMaxStepsPerRun)
         throw InputError(fmt::format("{}: dt = {:g} s would take {:.3g} steps for this run's {:g} s, more than the {:g} "
                                      "allowed: give a larger step",
@@ -82,10 +83,9 @@ RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const
             fmt::format("{}: the wall sank {:.3g} m into the ground at t = {:.6g} s", engine_, sink, t));
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
     if (std::abs(theta) >= collapse_) return Verdict::overturned;
-    if (t > motion_end_ && motion_end_ > 0.0) {  // folded: still, past the unstable equilibrium, the shaking over
-        const bool folded = std::abs(theta) > unstable_ && std::abs(rate) < 1e-3 * v_ref_;
-        folded_steps_ = folded ? folded_steps_ + 1 : 0;
-        if (folded_steps_ >= quiet_needed_) return Verdict::overturned;
+    if (t > motion_end_ && motion_end_ > 0.0) {  // folded: past the unstable equilibrium, the shaking over
+        folded_steps_ = std::abs(theta) > unstable_ ? folded_steps_ + 1 : 0;
+        if (folded_steps_ >= folded_needed_) return Verdict::overturned;
     }
     if (stop_at_rest_ && t > quiet_from_) {
         const bool quiet = std::abs(theta) < 1e-3 * alpha_ && std::abs(rate) < 1e-3 * v_ref_;

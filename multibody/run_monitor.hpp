@@ -3,8 +3,10 @@
 // an EngineFailure naming the engine, the reason and the time; and reasons to stop (a threshold trial's stop angle,
 // overturning at the scene's collapse angle, rest once the ground motion is over). Engine-free.
 // Overturning is also a wall that has folded: the two blocks can pass the roller's lock short of the collapse angle
-// and come to rest tilted at 3-4 alpha1 (Siconos, Simbody), which no standing wall can do past the unstable
-// equilibrium (RockingModel::unstable_equilibrium): at rest there once the ground motion is over, it has overturned.
+// and stay there, the upper block against the far guide, swinging between about 3.7 and 4.0 alpha1 (measured on the
+// Fig. 6 wall under Rinaldi at 0.55 g: MuJoCo, Siconos and Simbody alike, never still). No standing wall can stay past
+// the unstable equilibrium (RockingModel::unstable_equilibrium) once the ground is still: there gravity turns it
+// outward, and only an inward speed brings it back, at once. Past it for kFoldedFor after the shaking: overturned.
 // Rest ends a run once the shaking can no longer lift the wall: past the record's last acceleration above
 // kRestCannotLiftShare of the rest threshold, not only past its end (the quiet tail of a record is most of it).
 #include <string>
@@ -46,6 +48,10 @@ constexpr double kMaxStepsPerRun = 1e8;
 // engine's target is 0.5 %) is held to the same: shaking below it cannot lift that engine's wall either.
 constexpr double kRestCannotLiftShare = 0.5;
 
+// How long a wall must stay past the unstable equilibrium after the shaking to count as folded [s]: five times the
+// stillness asked for rest, longer than a wall coming back inward takes to cross it (it would be crossing at speed).
+constexpr double kFoldedFor = 0.5;
+
 class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
@@ -69,7 +75,7 @@ private:
     double b_, friction_, collapse_, unstable_, v_ref_, alpha_, motion_end_, quiet_from_, stop_angle_;
     bool stop_at_rest_;
     FailureLimits limits_;
-    int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_;
+    int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_, folded_needed_;
 };
 
 }  // namespace vssw::multibody

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -818,9 +819,9 @@ TEST(UnstableEquilibrium, IsWhereThePotentialPeaks) {
     EXPECT_LT(std::abs(slope), kFlatSlope * std::abs(loaded->reference_energy()) / fig6.alpha1);
 }
 
-// An engine's folded wall (the blocks past the roller's lock, at rest tilted short of the collapse angle) has
-// overturned: RunMonitor says so once it has been still past the unstable equilibrium for 0.1 s after the shaking; a
-// wall passing there with a speed, or still there before the shaking ends, goes on.
+// Rest ends a run once the record can no longer lift the wall (RunMonitor, kRestCannotLiftShare): a wall still from
+// the start is let go 0.1 s after the shaking last exceeded half the threshold, or after the record's end when it did
+// not fall below that.
 TEST(RunMonitorRest, RestEndsTheRunOnlyOnceTheShakingCannotLiftTheWall) {
     const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
     const double a_c = analytic_reference(scene)->rest_threshold(0.0), dt = 1e-3;
@@ -845,7 +846,10 @@ TEST(RunMonitorRest, RestEndsTheRunOnlyOnceTheShakingCannotLiftTheWall) {
     EXPECT_NEAR(rest_ends_at(0.6), 10.0 + kQuiet, kOneStep);
 }
 
-TEST(RunMonitorFold, StillPastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
+// An engine's folded wall (the blocks past the roller's lock, swinging short of the collapse angle) has overturned:
+// RunMonitor says so once it has stayed past the unstable equilibrium for kFoldedFor after the shaking; a wall coming
+// back inside it, or there during the shaking, goes on.
+TEST(RunMonitorFold, PastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
     const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
     const double alpha1 = scene.alpha(), dt = 1e-3;
     multibody::Excitation ex;
@@ -853,16 +857,23 @@ TEST(RunMonitorFold, StillPastTheUnstableEquilibriumAfterTheShakingIsOverturned)
     ex.t_end = 5.0;
     const multibody::BaseCorners corners{0.0, 0.0, 0.0, 0.0};
     using Verdict = multibody::RunMonitor::Verdict;
-    const auto run = [&](double start, double theta, double rate) {
+    const int window = static_cast<int>(1.5 * multibody::kFoldedFor / dt);  // steps watched: past kFoldedFor
+    // theta1(t) from `start`, checked every step over the window.
+    const auto run = [&](double start, const std::function<double(double)>& theta) {
         multibody::RunMonitor monitor("test", scene, ex, dt, {});
-        for (int i = 0; i < 300; ++i)
-            if (const Verdict v = monitor.check(start + i * dt, theta, rate, corners); v != Verdict::go_on) return v;
+        for (int i = 0; i < window; ++i) {
+            const double t = start + i * dt, rate = (theta(t + dt) - theta(t - dt)) / (2.0 * dt);
+            if (const Verdict v = monitor.check(t, theta(t), rate, corners); v != Verdict::go_on) return v;
+        }
         return Verdict::go_on;
     };
-    EXPECT_EQ(run(2.5, 3.5 * alpha1, 0.0), Verdict::overturned);  // folded, still, after the shaking
-    EXPECT_EQ(run(1.0, 3.5 * alpha1, 0.0), Verdict::go_on);       // still during the shaking: not yet judged
-    EXPECT_EQ(run(2.5, 3.5 * alpha1, 0.5), Verdict::go_on);       // moving there: rocking, not folded
-    EXPECT_EQ(run(2.5, 0.5 * alpha1, 0.0), Verdict::go_on);       // still inside the unstable equilibrium
+    // Folded and swinging there, 3.7 to 4.0 alpha1 (what MuJoCo, Siconos and Simbody do, never still): overturned.
+    const auto swinging = [&](double t) { return (3.85 + 0.15 * std::sin(2.0 * M_PI * t)) * alpha1; };
+    EXPECT_EQ(run(2.5, swinging), Verdict::overturned);
+    EXPECT_EQ(run(0.5, swinging), Verdict::go_on);  // during the shaking: not judged
+    // Past it but coming back inward at speed, inside it within 0.3 s: a rocking wall, not folded.
+    EXPECT_EQ(run(2.5, [&](double t) { return (1.5 - 3.0 * (t - 2.5)) * alpha1; }), Verdict::go_on);
+    EXPECT_EQ(run(2.5, [&](double) { return 0.5 * alpha1; }), Verdict::go_on);  // inside the unstable equilibrium
 }
 
 }  // namespace vssw
