@@ -225,6 +225,13 @@ std::vector<BenchSetting> bench_sweep(const multibody::Engine& engine, bool quic
         BenchSetting s = with_dt(engine, defaults.dt, 0, fmt::format("dt={} detector=dart", sci(defaults.dt)));
         s.settings.knobs["detector"] = 0.0;
         sweep.push_back(s);
+    } else if (name == "mujoco") {
+        // The step with semi-implicit Euler (the default; the contacts' time constant follows it, solref_steps), and
+        // RK4 at the default step (docs/engines.md "MuJoCo": the parapet's period to -0.002 %).
+        for (double dt : dts) sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
+        BenchSetting s = with_dt(engine, defaults.dt, 0, fmt::format("dt={} integrator=rk4", sci(defaults.dt)));
+        s.settings.knobs["integrator"] = 1.0;
+        sweep.push_back(s);
     } else {  // simbody-rigid and any other stepped engine: the step
         for (double dt : {2e-3, 1e-3, 5e-4, 2.5e-4}) sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
     }
