@@ -56,7 +56,7 @@ protected:
 // cos A2 = 0 there and the mass function of Eq. (11a) is infinite (sec^2 A2), so a wall driven towards it creeps
 // ever slower and never arrives. With the hinge high (k = h1/h2 large) this comes before Eq. (26); the run counts it as
 // overturning once |cos A2| falls below kPaperLockCos, where M(q) is already 1e6 times its value at rest: a wall
-// that far out has left the paper's mechanism for good (README, "Where each kinematics stops being valid").
+// that far out has left the paper's mechanism for good (docs/model/paper.md "Where each kinematics stops being valid").
 constexpr double kPaperLockCos = 1e-3;
 
 double paper_lock_angle(const VsswGeometry& w) { return (w.alpha2 + kHalfPi - std::asin(kPaperLockCos)) / w.k; }

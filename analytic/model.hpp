@@ -55,7 +55,7 @@ public:
     virtual double load_height(double q) const = 0;
     virtual double restitution() const = 0;     // impact map theta1'+ = e theta1'- (Eq. 19, or Housner's e)
     virtual double reference_angle() const = 0; // alpha1 (VSSW) or alpha (PW): where rotations are normalised
-    virtual double collapse_angle() const = 0;  // |theta1| at which the wall counts as overturned (see README)
+    virtual double collapse_angle() const = 0;  // |theta1| at which the wall counts as overturned (docs/model/analytic-core.md, "Overturning")
     virtual double gravity() const = 0;
     virtual double overburden() const = 0;      // N [N/m]
     virtual std::string name() const = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// The VSSW's top off the roller (a roller that can only push: README, "The model checks its own assumptions"). Where
+// The VSSW's top off the roller (a roller that can only push: docs/guide/program.md "The model checks its own assumptions"). Where
 // the bilateral roller would pull, the pivot-side top corner leaves the roller line and the wall moves with two
 // degrees of freedom, q = (theta1, theta2), base pivot and hinge kept (analytic/two_block.hpp). The slot between the
 // two top guides is narrow (2b (1 - cos theta2)), so a flight off the roller ends in one of:

@@ -30,7 +30,7 @@
 // Q = sum_i J_Gi^T F_i + J_top^T (0, -N). Energies relative to rest agree with ExactVssw's: V_w = g sum_i m_i
 // (y_Gi(q) - y_Gi(0)) and the work of N = -N (y_top(q) - y_top(0)), so an energy balance carries over.
 //
-// Guides. The top is held between two frictionless vertical lines a wall-thickness apart (README, "The validation
+// Guides. The top is held between two frictionless vertical lines a wall-thickness apart (docs/guide/report.md, "The validation
 // report"): the roller, x = 0 through the base pivot, holds the pivot-side top corner C; the other guide, x = -2b side,
 // holds the far top corner F. Each guide's gap is n . p + offset >= 0 with n its inward normal: the roller's
 // g(q) = -side x_C (the corner's distance from the roller line, positive inside the wall's line), the far guide's

@@ -34,7 +34,7 @@ namespace {
 
 using compare::kMinRelease;  // compare/experiments.hpp says why 0.01
 
-// The reference of every comparison with an engine is the exact kinematics (README): the default here, unlike the
+// The reference of every comparison with an engine is the exact kinematics (docs/model/engines-and-metrics.md): the default here, unlike the
 // other commands'.
 ModelOptions exact_by_default() {
     ModelOptions m;
@@ -226,7 +226,7 @@ Command add_compare_command(CLI::App& root) {
                                 kMinRelease));
     add_ground_motion_options(*cmd, o->motion);
     cmd->add_option("--dt", o->dt,
-                    "engine step [s], for every engine named (default: each engine's own, see the README)");
+                    "engine step [s], for every engine named (default: each engine's own, see --list-settings)");
     cmd->add_option("--iterations", o->iterations,
                     fmt::format("solver iterations, 1 to {}, for every engine named (default: each engine's own)",
                                 kMaxIterations));

@@ -27,7 +27,7 @@
 namespace vssw::cli {
 namespace {
 
-// --time-limit's range [s]: an hour per case is far past the slowest full case measured (README, "Stress").
+// --time-limit's range [s]: an hour per case is far past the slowest full case measured (docs/guide/stress.md).
 constexpr double kMaxTimeLimit = 3600.0;
 using stress::kFullTimeLimit;
 using stress::kQuickTimeLimit;
@@ -102,7 +102,7 @@ Command add_stress_command(CLI::App& root) {
                     fmt::format("cases at once, 0 to {} (default 0: the available cores)", kMaxThreads));
     cmd->add_flag("--json", o->json, "print JSON instead of the verdict table");
     cmd->footer(
-        "Verdicts: ok (no failure, no NaN, and the case's checks held: README \"Stress\"), refused (the backend or "
+        "Verdicts: ok (no failure, no NaN, and the case's checks held: docs/guide/stress.md), refused (the backend or "
         "the library refused the input, with its message), failed (reported: the backend's own failure; wrong: a "
         "result contradicting the analytic model; nan; timed_out; crashed). Exit codes: 0 when nothing hung, "
         "crashed, gave NaN or a wrong answer; 3 when something did; 2 bad input.\n"

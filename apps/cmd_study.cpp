@@ -274,7 +274,7 @@ Command add_study_command(CLI::App& root) {
     auto o = std::make_shared<StudyOptions>();
     CLI::App* cmd = root.add_subcommand(
         "study", "Run a study file: walls x assumptions x excitations x engines, on every core, in shards or with MPI");
-    cmd->add_option("FILE", o->file, "the study file (.toml or .json; see the README, \"Studies\")");
+    cmd->add_option("FILE", o->file, "the study file (.toml or .json; see docs/guide/studies.md)");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)");
     cmd->add_option("--threads", o->threads_text,
                     fmt::format("worker threads, 0 to {} (default 0: the available cores; one per process under "

@@ -99,7 +99,7 @@ void print_compare(std::ostream& out, const EngineCompareRun& run, const Compare
     t.add("closed forms", fmt::format("{} g, e = {}", num(c.threshold_closed_form_g), num(c.restitution_closed_form)),
           "", "Eq. (12)/(17) threshold, Eq. (19)/Housner restitution");
     t.add("restitution, whole mechanism", num(r.restitution_whole_mechanism), "",
-          fmt::format("plastic impact with the roller acting (README); engine / this - 1 = {:+.2e}",
+          fmt::format("plastic impact with the roller acting (docs/measurements/findings.md); engine / this - 1 = {:+.2e}",
                       c.restitution.engine / r.restitution_whole_mechanism - 1.0));
     t.add("wall time", fmt::format("{:.1f}", run.seconds), "s");
     for (const std::string& f : c.failures) t.text("not measured", f);

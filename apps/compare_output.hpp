@@ -22,7 +22,7 @@ struct CompareReference {
     ImpactLaw impact;
     std::optional<Roller> roller;          // none for a parapet (it has no roller)
     double theta0;                         // release for the period and restitution, a fraction r of alpha
-    double restitution_whole_mechanism;    // what an engine's impact should give (README)
+    double restitution_whole_mechanism;    // what an engine's impact should give (docs/measurements/findings.md)
 };
 
 // One engine's comparison. `failure` holds the message of an engine that failed outright (EngineFailure) instead.

@@ -21,7 +21,7 @@ std::string flag_of(const std::string& name) {
 }
 
 // The range column: a knob's documented range without its unit (the unit has its own column); dt and iterations have
-// rules of their own (a step the run can resolve, README "Bad input"; --iterations 1 to 1000).
+// rules of their own (a step the run can resolve, docs/guide/program.md "Bad input"; --iterations 1 to 1000).
 std::string range_of(const multibody::SettingDescription& s) {
     return multibody::is_knob(s.name) ? multibody::range_bounds_text(s) : "-";
 }
@@ -70,7 +70,7 @@ std::string settings_listing(const std::vector<std::string>& engines, bool json)
     return text +
            "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its range (both\n"
            "ends included; a value outside it is refused), its meaning.\n"
-           "Each default and why it was chosen: README, \"Engines\".\n";
+           "Each default and why it was chosen: docs/engines.md.\n";
 }
 
 }  // namespace vssw::cli

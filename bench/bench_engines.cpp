@@ -21,7 +21,7 @@ void run(benchmark::State& state, const std::string& engine_name, const multibod
     ex.theta0 = 0.5 * scene.alpha();
     ex.t_end = kSimulated;
     ex.stop_at_rest = false;
-    ex.motion_only = true;  // what compare/ and study/ read (the README's speed table measures the harness's runs)
+    ex.motion_only = true;  // what compare/ and study/ read (the speed table of docs/measurements/speed.md measures the harness's runs)
     for (auto _ : state) {
         const multibody::Trajectory t = engine->simulate(scene, ex, settings);
         benchmark::DoNotOptimize(t.samples.data());

@@ -1,7 +1,7 @@
 #pragma once
 // Experiments run through any Engine (the analytic model included, as multibody::AnalyticEngine), measured with
 // compare/metrics.hpp only: the threshold acceleration by bisection on simulations, the free vibration from rest, and
-// the comparison of an engine with the analytic model on threshold, period and restitution (README, "Engines").
+// the comparison of an engine with the analytic model on threshold, period and restitution (docs/model/engines-and-metrics.md).
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,7 +38,7 @@ using multibody::WallScene;
 //
 // Where to look: the analytic model's rest threshold E (Eq. 12 / Eq. 17, exact kinematics, the scene the engines
 // build) is already known, and every engine that meets the threshold target (0.5 %) lies within it by construction;
-// measured at their defaults they are within 0.15 % (README "Engines"). The search therefore starts from the bracket
+// measured at their defaults they are within 0.15 % (docs/model/engines-and-metrics.md). The search therefore starts from the bracket
 // [E / bracket, E * bracket] and tries its upper end (it must lift). Only when an end does not hold (an engine more
 // than 1 % off, a knob that moves the threshold) is that end moved out geometrically (the bracket factor squared each
 // time: 1 %, 2 %, 4 %, 8 %, ... in log), the end that failed becoming the other end of the bracket.

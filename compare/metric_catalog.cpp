@@ -61,8 +61,8 @@ const std::vector<MetricInfo>& metric_catalog() {
          "the whole mechanism's plastic impact, the roller acting (Housner's e for a parapet)",
          U::free, true, "restitution against the whole-mechanism impact", "restitution (vs whole mechanism)",
          "The same measured ratio against the plastic impact with every constraint of the new mechanism acting "
-         "at once, the roller included (1 - 2b^2 [m1 + m2 (2 + k)^2] / M(0); not in the paper, see the "
-         "README): what an engine that resolves all closing contacts and the roller together should give.",
+         "at once, the roller included (1 - 2b^2 [m1 + m2 (2 + k)^2] / M(0); not in the paper, see "
+         "docs/measurements/findings.md): what an engine that resolves all closing contacts and the roller together should give.",
          kRestitutionTarget},
         {"period_linearised", "s", true, S::closed_form, true,
          "Eq. (22) (Housner's for a parapet) at theta0; empty with an overburden or theta0 beyond A",

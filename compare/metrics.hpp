@@ -1,5 +1,5 @@
 #pragma once
-// Metrics of a sampled trajectory, one code path for every backend (README, "Engines": the metrics are defined once for
+// Metrics of a sampled trajectory, one code path for every backend (docs/model/engines-and-metrics.md: the metrics are defined once for
 // every backend): the analytic integrator and each engine are measured by these functions only, from the samples of a
 // multibody::Trajectory, never from a backend's own event list.
 //

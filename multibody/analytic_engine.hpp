@@ -28,7 +28,7 @@ namespace vssw::multibody {
 class AnalyticEngine final : public Engine {
 public:
     std::string name() const override { return "analytic"; }
-    double cost_per_simulated_second() const override { return 0.26e-3; }  // Fig. 6 VSSW, README "Speed"
+    double cost_per_simulated_second() const override { return 0.26e-3; }  // Fig. 6 VSSW, docs/measurements/speed.md
     bool dt_is_a_reporting_interval() const override { return true; }  // DOP853 picks its steps
     std::string version() const override { return "vssw analytic (DOP853, event-driven)"; }
     EngineSettings default_settings() const override;

@@ -45,7 +45,7 @@ struct Excitation {
     double stop_angle = 0.0;
     // true: the caller reads the lower body's motion alone (t, theta1, theta1_dot: all that compare/ and study/
     // measure), so the samples' theta2, top_dy, kinetic and potential are not computed (NaN; contacts 0). On the
-    // analytic model those fields were three quarters of a sampled run's instructions (README, "Speed").
+    // analytic model those fields were three quarters of a sampled run's instructions (docs/measurements/speed.md).
     bool motion_only = false;
 };
 
@@ -55,7 +55,7 @@ struct Excitation {
 // 50 times the default, still ends a compare in minutes rather than days.
 constexpr int kMaxIterations = 1000;
 
-// Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (README).
+// Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (docs/engines.md).
 struct EngineSettings {
     double dt = 1e-4;        // engine step [s]
     int iterations = 0;      // solver iterations (0: the adapter's default)
@@ -158,7 +158,7 @@ public:
     // Whether settings.dt is only the trajectory's sampling (the analytic model, Simbody's compliant route: their
     // integrators pick their own steps and see the ground motion between samples) rather than the engine's step.
     virtual bool dt_is_a_reporting_interval() const { return false; }
-    // Wall time per simulated second at the default settings [s/s], measured (README, "Speed"): callers order their
+    // Wall time per simulated second at the default settings [s/s], measured (docs/measurements/speed.md): callers order their
     // tasks longest first by it (compare/task_pool.hpp); only the order depends on it.
     virtual double cost_per_simulated_second() const = 0;
 };

@@ -29,7 +29,7 @@ w('#  - analytic: the stored value of each metric, max_drift relative (absolute 
 for m,(x,why) in DRIFT.items(): w(f'#      {m}: {x:g} ({why})')
 w('#  - engines: the relative error against the analytic model. Where every case is inside 0.8 x the project target')
 w('#    (threshold 0.5 %, period 0.5 %, restitution 2 %), the bound is the target; a case outside it (a measured,')
-w('#    explained difference, README "Engines") gets its own interval, the measured error +/- max(25 % of it, half')
+w('#    explained difference, docs/engines.md) gets its own interval, the measured error +/- max(25 % of it, half')
 w('#    the target), so that it fails if the difference grows, shrinks to nothing or changes sign.')
 w('#  - history metrics of the engines (peak rotation under a record) have no target and are not bounded: rocking')
 w('#    under a record is sensitive to every impact, the report shows them.')

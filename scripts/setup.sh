@@ -8,7 +8,7 @@
 #   bash scripts/setup.sh build  install and build only
 #   bash scripts/setup.sh asan   install, then the whole suite built with ASan + UBSan (clang) into build-asan/ and
 #                                run, the fuzz tests with libFuzzer (about 10 minutes on 2 cores: not in CI, run it
-#                                before landing a change; README "Sanitizers")
+#                                before landing a change; docs/contributing/fuzzing-and-sanitizers.md "Sanitizers")
 # Only Debian packages; apt-get runs only when one of them is missing.
 set -euo pipefail
 
@@ -37,6 +37,7 @@ packages=(
   pybind11-dev python3-dev           # the Python module (python/, `import vssw`), built for Debian's /usr/bin/python3
   python3-numpy python3-pandas       # its traces (NumPy arrays) and study() as a DataFrame (pandas: optional at run time)
   python3-pytest                     # its tests (the CTest vssw_python)
+  mkdocs mkdocs-material             # the documentation site (mkdocs.yml; the CTest vssw_docs builds it with --strict)
 )
 # The sanitizer build (test and asan only, so `run` installs none of it): clang, its sanitizer and libFuzzer runtimes
 # (libclang-rt-dev), and llvm for llvm-symbolizer, without which ASan and UBSan print stacks as bare addresses.
@@ -62,7 +63,7 @@ fi
 
 jobs="$(nproc 2>/dev/null || echo 2)"
 
-# The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer by clang (README "Sanitizers"), in its
+# The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer by clang (docs/contributing/fuzzing-and-sanitizers.md "Sanitizers"), in its
 # own folder. RelWithDebInfo with -gline-tables-only: -O2 keeps the engine suites fast enough, line tables give
 # file:line in the reports at a fraction of full -g's compile and link time (CI's time is bounded). The
 # benchmarks are not tests and are left out. The fuzz CTests (label fuzz) run there with libFuzzer.
@@ -85,7 +86,7 @@ sanitizer_build_and_test() {
 }
 # In CI: only the three fuzz harnesses (the parsers compiled into them with libFuzzer's coverage, ASan and UBSan; a
 # few files) and their tests. The whole suite under the sanitizers doubles the build and takes CI past its budget
-# (measured: 16 min for `test` with it, README "Sanitizers"); it is the `asan` mode.
+# (measured: 16 min for `test` with it, docs/contributing/fuzzing-and-sanitizers.md "Sanitizers"); it is the `asan` mode.
 sanitizer_fuzz() {
   sanitizer_configure
   cmake --build "$here/build-asan" -j "$jobs" --target fuzz_ground_motion fuzz_bounds_file fuzz_study_file

@@ -27,7 +27,7 @@ struct Setup {
 
 struct Case {
     std::string name;   // stable: bounds files and CI name it
-    std::string what;   // what it stresses and what is checked, one line (README, stress.md)
+    std::string what;   // what it stresses and what is checked, one line (docs/guide/stress.md, stress.md)
     bool quick = false; // in `vssw stress --quick`
     // The run on a backend (`engine` its name, `defaults` its default settings; `quick` shortens durations). Throws
     // InputError when the backend cannot take the case (a knob it does not have): the verdict "refused".

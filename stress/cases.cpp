@@ -1,4 +1,4 @@
-// The stress cases (README, "Stress"). Each names the input that makes it hard and what is held of the result; the
+// The stress cases (docs/measurements/stress.md). Each names the input that makes it hard and what is held of the result; the
 // tolerances are stability criteria, not the accuracy targets of the validation suite (an engine that meets those
 // on ordinary walls is asked here only not to break, and to agree with the analytic model where the answer is known).
 #include <cmath>
@@ -65,7 +65,7 @@ double rest_threshold(const WallScene& scene) {
     return scene.is_vssw() ? eq12_threshold(*scene.vssw) : eq17_parapet_threshold(*scene.parapet);
 }
 
-// The contact knobs at the soft and the stiff end of their range, per backend (README, "Stress": which knob).
+// The contact knobs at the soft and the stiff end of their range, per backend (docs/guide/stress.md: which knob).
 EngineSettings contact_end(const std::string& engine, EngineSettings s, bool stiff) {
     if (engine == "simbody") {
         s.knobs["stiffness"] = stiff ? 1e18 : 1e12;  // Hertz modulus [Pa]; default 1e15, 3 decades either side
@@ -199,7 +199,7 @@ std::vector<Case> make_cases() {
                                  "{} Pa, ode erp {} cfm {}, bullet erp {}; analytic and simbody-rigid refuse): as above",
                                  stiff ? "stiff" : "soft", stiff ? "1e18" : "1e12", stiff ? "1" : "0.2",
                                  stiff ? "0" : "1e-5", stiff ? "1" : "0"),
-                     false,  // Simbody at 1e18 Pa runs past a minute (README, "Stress")
+                     false,  // Simbody at 1e18 Pa runs past a minute (docs/measurements/stress.md)
                      [stiff](const std::string& engine, const EngineSettings& d, bool q) {
                          return free_vibration(fig6_vssw(), contact_end(engine, d, stiff), q);
                      }});

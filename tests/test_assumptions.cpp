@@ -98,7 +98,7 @@ TEST(HingeNearEnds, RunCleanlyInBothKinematics) {
     }
 }
 
-// The README's finding, now in the core: released from 0.8 alpha1 at xi 0.5 the exact kinematics need the roller
+// The finding of docs/measurements/findings.md, now in the core: released from 0.8 alpha1 at xi 0.5 the exact kinematics need the roller
 // to pull (Table 1 #7 and #2); from 0.5 alpha1, or at xi 0, it pushes throughout.
 TEST(Supports, TheRollersSignAlongFreeFlights) {
     struct Case {

@@ -174,7 +174,7 @@ TEST(CliRecords, BadFormatOptionsAreBadInputNamingTheValue) {
 
 namespace {
 
-// Energy balance of the integrator at rtol 1e-10 (README "What the analytic core holds": below 1e-9 of V_r over a
+// Energy balance of the integrator at rtol 1e-10 (docs/model/analytic-core.md: below 1e-9 of V_r over a
 // free vibration) plus the CSV's 10 significant digits; 1e-8 of V_r would show a lost or invented impact loss.
 constexpr double kBalanceInCsv = 1e-8;
 

@@ -40,7 +40,7 @@ using compare::kPeriodTarget;  // issue 3's targets (compare/targets.hpp)
 using compare::kRestitutionTarget;
 using compare::kThresholdTarget;
 
-// Differences measured and explained in the README ("Bullet"), keyed by engine and test.
+// Differences measured and explained in docs/engines.md ("Bullet"), keyed by engine and test.
 const std::map<std::string, std::string> kKnownDifferences = {
     {"simbody/MovingSupports",
      "Simbody's routes apply the ground motion as pseudo-forces only (the compliant route's integrator could follow a "
@@ -688,7 +688,7 @@ TEST(AnalyticBackend, StopAngleEndsTheRunThere) {
 namespace vssw {
 namespace {
 
-// The README's finding: at xi 0.5 released from 0.8 alpha1 the engines' periods differ from the analytic model's by
+// The finding of docs/measurements/findings.md: at xi 0.5 released from 0.8 alpha1 the engines' periods differ from the analytic model's by
 // up to 17 %, because the paper's roller pulls there and theirs cannot. The analytic model with a roller that can
 // only push (setting unilateral_roller) must account for that difference on Table 1 #14 (bilateral: 8 % off): each
 // engine's remaining difference at most a tenth of it. Measured: ODE -0.063 % and Bullet -0.063 % at their default
@@ -748,7 +748,7 @@ TEST(BulletOffRoller, OverburdenTorqueDoesNotSlideTheHingeAtOneMillisecond) {
 // two sum the same forces in a different order and take different integrator steps from there, so they agree to the
 // integrator's accuracy (1e-5), not to rounding. Measured at the defaults: period 6e-6, restitution 5e-5 (Fig. 6
 // VSSW), both 1e-7 (parapet); a change of the law shows far above the bounds (a dissipation of 100 instead of
-// 1000 s/m moves the Fig. 6 restitution by 1.3 %, README).
+// 1000 s/m moves the Fig. 6 restitution by 1.3 %, docs/engines.md).
 constexpr double kSameLawPeriod = 5e-5;       // about 10x the measured difference, 1e-4 of the period target
 constexpr double kSameLawRestitution = 5e-4;  // 10x the measured difference, 1/40 of the restitution target
 

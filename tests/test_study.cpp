@@ -269,7 +269,7 @@ TEST(StudyMeasure, RecordPeakIsTheModelsRunDirectly) {
                                       record + "\"\nscale = 0.25\n"));
     const ResultsTable t = run_into(grid, dir / "out");
     const VsswGeometry w = make_vssw(3.05, 0.143, 0.6, 0.1);
-    const GroundMotion motion = read_record(record).scaled(0.25);  // rocks through the whole record (README, "Speed")
+    const GroundMotion motion = read_record(record).scaled(0.25);  // rocks through the whole record (docs/measurements/speed.md)
     SimulationOptions o;
     o.keep_samples = false;
     o.t_end = motion.duration() + study::kResponseTail;

@@ -1,6 +1,6 @@
 // The two-block model (analytic/two_block.hpp): on the roller line it is the exact one-DOF model of model.cpp
 // (positions, energies, acceleration); Newton-Euler agrees with the Lagrangian (residual zero, guide force = the
-// multiplier) and with statics at the threshold of Eq. (12); the roller force's sign along free flights (the README's
+// multiplier) and with statics at the threshold of Eq. (12); the roller force's sign along free flights (docs/measurements/findings.md's
 // open finding) and what the free motion does where it would pull (the far guide catches the upper block); the free
 // two-DOF motion conserves energy; a landing is a projection; side -1 is the mirror image.
 #include <gtest/gtest.h>
@@ -261,14 +261,14 @@ RollerRange roller_along_flight(const VsswGeometry& w, double theta0) {
 }
 
 TEST(TwoBlock, RollerForceAlongFreeFlightsHasTheReadmesSigns) {
-    // The README's open finding (a scratch Newton-Euler check by finite differences, independent of this code): at
+    // The open finding of then (docs/measurements/findings.md) (a scratch Newton-Euler check by finite differences, independent of this code): at
     // xi 0.5 from 0.8 alpha1 the roller must pull near the release; from 0.5 alpha1 or at xi 0 it pushes throughout.
-    constexpr double kReadmeRel = 0.01;  // the README prints integers (0.6 % on -87) from finite differences
+    constexpr double kReadmeRel = 0.01;  // the findings page prints integers (0.6 % on -87) from finite differences
     struct Flight {
         const char* name;
         VsswGeometry w;
         double r;
-        double readme_min;  // N/m, NaN where the README gives none
+        double readme_min;  // N/m, NaN where the findings page gives none
     };
     const double none = std::numeric_limits<double>::quiet_NaN();
     const Flight flights[] = {
@@ -299,7 +299,7 @@ TEST(TwoBlock, RollerForceAlongFreeFlightsHasTheReadmesSigns) {
             EXPECT_NEAR(range.min, f.readme_min, kReadmeRel * std::abs(f.readme_min));
         }
     }
-    // The README's upper end for Fig. 6's flight.
+    // The findings page's upper end for Fig. 6's flight.
     const VsswGeometry fig6 = make_vssw(4.0, 0.4, 0.7, 0.0);
     EXPECT_NEAR(roller_along_flight(fig6, 0.5 * fig6.alpha1).max, 1573.0, kReadmeRel * 1573.0);
 }

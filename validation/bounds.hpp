@@ -29,7 +29,7 @@ struct EngineBound {
     double max_error;
 };
 
-// The verdicts `vssw stress --quick` may give (README, "Stress"): each listed case on each listed engine must end with
+// The verdicts `vssw stress --quick` may give (docs/guide/stress.md): each listed case on each listed engine must end with
 // one of `allowed` ("ok", "refused", "failed"). Held in apps/ (cmd_check.cpp), which runs the stress cases.
 struct StressBound {
     std::vector<std::string> case_ids;  // stress case names (stress/cases.cpp)

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a bounds file for `vssw check`: TOML (.toml) or JSON (.json), one schema (README, "vssw check"):
+// Reading a bounds file for `vssw check`: TOML (.toml) or JSON (.json), one schema (docs/guide/check.md):
 //
 //   suite = "default"                    # optional; where the case ids come from
 //   [[analytic]]                         # the analytic core against a stored value
@@ -13,7 +13,7 @@
 //   metric = "period"
 //   max_error = 0.005                    # |rel_error| <= max_error, or
 //   # error = [-0.14, -0.12]             # min <= rel_error <= max (a known, explained offset)
-//   [[stress]]                           # verdicts of `vssw stress --quick` (README, "Stress")
+//   [[stress]]                           # verdicts of `vssw stress --quick` (docs/guide/stress.md)
 //   cases = ["hinge-0.05", "xi-50"]
 //   engines = ["ode"]                    # optional: every backend compiled in
 //   allowed = ["ok"]                     # of ok, refused, failed

@@ -1,6 +1,6 @@
 #pragma once
 // The machine-readable half of `vssw report`: results.json (everything) and the CSV files. Layout and keys are
-// documented in `vssw report --help` and the README; keys may be added, none renamed.
+// documented in `vssw report --help` and docs/guide/report.md; keys may be added, none renamed.
 //
 // results.json:
 //   vssw {commit, report_format}, date, suite {name, walls [{id, label, kind}], records [{id, label, path, scale}],

@@ -216,7 +216,7 @@ class BulletEngine final : public Engine {
 public:
     std::string name() const override { return "bullet"; }
     std::string display_name() const override { return "Bullet"; }
-    double cost_per_simulated_second() const override { return 2.5e-3; }  // at 1 ms, README "Speed"
+    double cost_per_simulated_second() const override { return 2.5e-3; }  // at 1 ms, docs/measurements/speed.md
     std::string version() const override {
         return fmt::format("Bullet {}.{:02d} (double precision)", btGetVersion() / 100, btGetVersion() % 100);
     }

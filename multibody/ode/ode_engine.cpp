@@ -13,7 +13,7 @@
 //    points for box-box, turned into planar contact joints each step (add_pair), speculative within `margin`;
 //  - the roller (VSSW only): a frictionless contact joint between the upper block and the ground (body 0, or the
 //    kinematic ground) at the top corner on the pivot's side, holding x <= +b (right corner) or x >= -b (left);
-//    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards; README,
+//    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards; docs/engines.md,
 //    "Bullet"). Only the guide whose corner is further out is given to the solver (Bullet gives both: with one,
 //    its xi 0.5 restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target, docs/engines.md "ODE");
 //  - N: a force at the centre of the top face, only when xi > 0; ground motion: pseudo-forces -m a_h(t) at the centres
@@ -427,7 +427,7 @@ public:
     OdeEngine() { ensure_ode(); }
     std::string name() const override { return "ode"; }
     std::string display_name() const override { return "ODE"; }
-    double cost_per_simulated_second() const override { return 2.0e-3; }  // at 1 ms, README "Speed"
+    double cost_per_simulated_second() const override { return 2.0e-3; }  // at 1 ms, docs/measurements/speed.md
     std::string version() const override {
         ensure_ode();
         return fmt::format("ODE {} ({} precision)", dODE_VERSION,
@@ -439,7 +439,7 @@ public:
         // analytic model's bisection bracket at every step (1e-4; with a bracket of 1e-6 they are within 1.6e-6 of
         // Eq. 12 at 1 ms: the direct solver holds a wall at rest exactly); period errors are first order, -0.07 to
         // -0.19 % at 1 ms, -0.015 to -0.038 % at 0.2 ms, -0.004 to -0.009 % at 0.05 ms. 1 ms meets every target
-        // in `vssw bench` and on the full validation suite (README, "Defaults, by measurement") for a fifth of
+        // in `vssw bench` and on the full validation suite (docs/engines.md "Defaults, by measurement") for a fifth of
         // 0.2 ms's cost. The error grows as dt over the period: a wall much smaller (faster) than Table 1's needs a
         // smaller step (docs/engines.md, "ODE"). It is also the Bullet adapter's step.
         s.dt = 1e-3;

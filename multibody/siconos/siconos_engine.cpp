@@ -16,7 +16,7 @@
 //    adapters apply it); ground motion: pseudo-forces -m a_h(t) at the centres of mass, a_h at the step's midpoint.
 //
 // Impacts: Newton's law at each contact, e = 0 by default (the plastic landing of every other adapter), so a landing is
-// the plastic impact of the whole new mechanism (pivot, hinge, roller; README "The validation report", --impact
+// the plastic impact of the whole new mechanism (pivot, hinge, roller; docs/guide/report.md "The validation report", --impact
 // whole-mechanism). Settings e_ground, e_hinge and e_roller set the coefficient per kind of contact (docs/engines.md,
 // "Siconos").
 //
@@ -340,7 +340,7 @@ private:
     SP::TimeStepping simulation_;
 };
 
-// Wall time per simulated second at the defaults (vssw_bench_engines, Fig. 6 VSSW free vibration; README "Speed").
+// Wall time per simulated second at the defaults (vssw_bench_engines, Fig. 6 VSSW free vibration; docs/measurements/speed.md).
 constexpr double kCostPerSimulatedSecond = 33e-3;
 
 class SiconosEngine final : public Engine {

@@ -1,4 +1,5 @@
-"""The README's Python example runs as printed and prints the output the README shows."""
+"""The Python page's example (docs/guide/python.md, moved from the README) runs as printed and prints the output the
+page shows."""
 import contextlib
 import io
 import re
@@ -12,9 +13,7 @@ PRINTED_CLOSED_FORM_RTOL = 1e-12
 
 
 def python_section():
-    text = (REPO / "README.md").read_text(encoding="utf-8")
-    start = text.index("## Python (`import vssw`)")
-    return text[start:text.index("\n## ", start + 1)]
+    return (REPO / "docs" / "guide" / "python.md").read_text(encoding="utf-8")
 
 
 def test_the_readme_example_runs_and_prints_what_the_readme_shows():
@@ -24,7 +23,7 @@ def test_the_readme_example_runs_and_prints_what_the_readme_shows():
     assert len(code.strip().splitlines()) <= 10, "the README promises a loop in ten lines"
     printed = io.StringIO()
     with contextlib.redirect_stdout(printed):
-        exec(compile(code, "README.md", "exec"), {})  # noqa: S102 (the README's own example)
+        exec(compile(code, "docs/guide/python.md", "exec"), {})  # noqa: S102 (the README's own example)
     assert printed.getvalue() == shown
 
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `cmake --install` staged into a temporary folder (DESTDIR), then the installed program run from there: it must find
-# the installed data and plugins, not the source tree's or the build tree's (README "Install").
+# the installed data and plugins, not the source tree's or the build tree's (docs/guide/install.md).
 # Usage: install.sh BUILD_DIR
 set -euo pipefail
 build="$1"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # vssw stress --quick --json: every case ends (no hang, crash or NaN), the JSON has its documented shape, the files are
-# written, and the verdicts the README states hold; bad input exits 2 naming the value.
+# written, and the verdicts docs/measurements/stress.md states hold; bad input exits 2 naming the value.
 #   stress.sh VSSW WORKDIR
 set -uo pipefail
 vssw="$1" dir="$2"
@@ -34,7 +34,7 @@ for c in doc["cases"]:
         assert c["reason"], c
     verdict[(c["name"], c["engine"])] = c["verdict"]
 assert doc["unsafe"] == 0
-# The verdicts README "Stress" states for the quick set.
+# The verdicts docs/guide/stress.md states for the quick set.
 for name in quick_cases:
     assert verdict[(name, "analytic")] == "ok", (name, verdict[(name, "analytic")])
 for e in doc["engines"]:

@@ -1,4 +1,4 @@
-"""Property test of the vssw program's promise for input (README "The `vssw` program", "Bad input"; apps/cli.hpp's
+"""Property test of the vssw program's promise for input (docs/guide/program.md "The `vssw` program", "Bad input"; apps/cli.hpp's
 exit codes), on the real built program run as a subprocess so that a signal or a hang is seen.
 
 Every command is run on random option values from a seeded generator: valid values, values at the edges of their
@@ -14,7 +14,7 @@ letters), and `vssw study` on random small study files (TOML and JSON, valid and
   - on exit 0 with --json, print JSON with no NaN or infinity (nor as a string), and write none into a .json file;
   - create or change no file outside its own --out and --csv paths (its scratch folder, which holds its inputs and
     is its working directory and $HOME, is compared before and after), and never change an input file;
-  - for `study`, on exit 2 leave no --out folder it did not find (README "Studies": refused before any folder is made).
+  - for `study`, on exit 2 leave no --out folder it did not find (docs/guide/studies.md: refused before any folder is made).
 
 The runs are deterministic for a seed: VSSW_PROPERTY_SEED (default DEFAULT_SEED) picks another sample to explore
 more, VSSW_PROPERTY_CASES the number of cases per command. A failure lists every broken run by class, with its
@@ -247,7 +247,7 @@ def assemble(opts, positional=()):
 
 
 # Values no option of the kind can take: not numbers at all, not finite, or no word the option knows. An edit that
-# puts one in makes the case "certainly bad": it must be refused with exit 2 (README "Bad input"). Edges and the other
+# puts one in makes the case "certainly bad": it must be refused with exit 2 (docs/guide/program.md "Bad input"). Edges and the other
 # extremes (-0, 1e-310, 1e308, hex, " 4", upper case, ...) may be valid somewhere and are only held to the promise.
 BAD_NUMBERS = {"", " ", "nan", "NaN", "-nan", "inf", "-inf", "Infinity", "1e99999", "\u0664", "\uff14", "1,5", "4.0.0",
                "1e", "x" * 5000, "$(touch PWNED)", "`touch PWNED`", "'", "\""}
@@ -263,7 +263,7 @@ def certainly_bad(kind, value):
     if isinstance(kind, Num):
         return value in BAD_NUMBERS
     if isinstance(kind, Word):
-        # A list with an empty or a repeated item: "each engine named once" (README), and likewise for every list.
+        # A list with an empty or a repeated item: "each engine named once" (docs/guide/program.md), and likewise for every list.
         items = value.split(",")
         listy_bad = kind.listy and ("" in items or len(set(items)) < len(items))
         return value in BAD_WORDS or listy_bad or (not kind.listy and "," in value and value != "1,5")
@@ -343,7 +343,7 @@ def mutate(rng, opts, spec, command):
             bad.append("unknown option %s" % name)
         elif names.count(name) > 1 and name not in multi and any(v is not None or "=" in o for o, v in opts
                                                                   if o.split("=", 1)[0] == name):
-            bad.append("%s given twice" % name)  # "At Most 1" (README); a flag given twice is still the flag
+            bad.append("%s given twice" % name)  # "At Most 1" (CLI11); a flag given twice is still the flag
     knobs = [v.split("=", 1)[0] for o, v in opts if o == "--set" and v]
     if len(set(knobs)) < len(knobs):
         bad.append("--set of one knob twice")  # which value holds?
