@@ -285,8 +285,10 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     const vssw::multibody::EngineSettings settings = settings_of(*engine, chosen, dt, sample_dt, iterations, knobs);
     const ScopedRunBudget budget(run_budget);
     vssw::multibody::Trajectory traj;
-    {
+    if (engine->runs_concurrently()) {  // every backend make_engine() gives; one that is not keeps the GIL
         const py::gil_scoped_release released;
+        traj = engine->simulate(scene, ex, settings);
+    } else {
         traj = engine->simulate(scene, ex, settings);
     }
     py::dict d = trajectory_dict(traj, ex.horizontal);
@@ -333,8 +335,10 @@ py::dict compare(const std::string& engine_name, const WallArgs& wall, double th
         settings_of(*engine, engine_model, dt, std::nullopt, iterations, knobs);
     const ScopedRunBudget budget(run_budget);
     vssw::compare::EngineComparison c;
-    {
+    if (engine->runs_concurrently()) {
         const py::gil_scoped_release released;
+        c = vssw::compare::compare_with_analytic(*engine, settings, scene, theta0, options);
+    } else {
         c = vssw::compare::compare_with_analytic(*engine, settings, scene, theta0, options);
     }
     py::dict d;

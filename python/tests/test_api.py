@@ -187,3 +187,16 @@ def test_the_version_is_the_programs():
 def test_the_shipped_data_is_found():
     assert (vssw.data_dir() / "table1.csv").is_file()
     assert (REPO / RECORD).is_file()
+
+
+def test_runs_in_python_threads_give_the_same_numbers():
+    # The GIL is released around the library: two threads run ODE (each run a forked child) and the analytic model
+    # at once, each giving what it gives alone.
+    import concurrent.futures
+
+    jobs = [("ode", 0.5), ("analytic", 0.5), ("ode", -0.4), ("analytic", 0.3)]
+    alone = [vssw.simulate(e, **FIG6, theta0=r, t_end=0.5).theta1 for e, r in jobs]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=4) as pool:
+        together = list(pool.map(lambda job: vssw.simulate(job[0], **FIG6, theta0=job[1], t_end=0.5).theta1, jobs))
+    for a, b in zip(alone, together):
+        np.testing.assert_array_equal(a, b)

@@ -13,14 +13,14 @@ BUILD = os.environ.get("VSSW_BUILD_DIR")
 # Run inside the fresh environment: the package's location, and a free vibration on the analytic model and on an
 # engine plugin (ODE when built, else the first engine), under a record read from the installed data.
 SCRIPT = textwrap.dedent("""
-    import json, sys
+    import json, os, sys
     import vssw
     engine = "ode" if "ode" in vssw.engines() else [e for e in vssw.engines() if e != "analytic"][0]
     runs = {e: vssw.simulate(e, height=4, thickness=0.4, hinge=0.7, theta0=0.5, t_end=0.5) for e in ["analytic", engine]}
     shaken = vssw.simulate("analytic", height=4, thickness=0.4, hinge=0.7, record="records/kern1952-taft-021.at2", pga=0.3)
     print(json.dumps({"file": vssw.__file__, "version": vssw.__version__, "data": str(vssw.data_dir()),
                       "samples": {e: len(r.t) for e, r in runs.items()}, "shaken": len(shaken.t),
-                      "prefix": sys.prefix}))
+                      "prefix": sys.prefix, "plugins": os.environ.get("VSSW_PLUGIN_PATH")}))
 """)
 
 
@@ -47,5 +47,6 @@ def test_an_installed_package_imports_in_a_fresh_venv(tmp_path):
     assert pathlib.Path(out["file"]).is_relative_to(site)
     assert pathlib.Path(out["prefix"]) == venv
     assert pathlib.Path(out["data"]).is_relative_to(prefix)
+    assert pathlib.Path(out["plugins"]) == prefix / "lib" / "vssw" / "plugins"  # set by the package, not the test
     assert all(n > 10 for n in out["samples"].values()) and len(out["samples"]) == 2
     assert out["shaken"] > 10
