@@ -200,3 +200,31 @@ def test_runs_in_python_threads_give_the_same_numbers():
         together = list(pool.map(lambda job: vssw.simulate(job[0], **FIG6, theta0=job[1], t_end=0.5).theta1, jobs))
     for a, b in zip(alone, together):
         np.testing.assert_array_equal(a, b)
+
+
+def test_progress_true_drives_a_tqdm_bar(monkeypatch):
+    # tqdm is optional (not a Debian dependency here): a stand-in module records what the bar is told.
+    import sys
+    import types
+
+    updates = []
+
+    class FakeTqdm:
+        def __init__(self, total, desc, leave):
+            self.total, self.n = total, 0
+
+        def set_postfix_str(self, text, refresh):
+            pass
+
+        def refresh(self):
+            updates.append((self.n, self.total))
+
+        def close(self):
+            updates.append("closed")
+
+    module = types.ModuleType("tqdm.auto")
+    module.tqdm = FakeTqdm
+    monkeypatch.setitem(sys.modules, "tqdm", types.ModuleType("tqdm"))
+    monkeypatch.setitem(sys.modules, "tqdm.auto", module)
+    vssw.compare(["analytic"], **FIG6, progress=True)
+    assert updates == [(0, 1), (1, 1), "closed"]

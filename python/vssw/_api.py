@@ -122,7 +122,8 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
             (as `vssw compare` runs it); a ground motion runs its duration + 10 s.
         stop_at_rest: end the run once the wall is at rest and the shaking can no longer lift it (default True).
     The backend's settings:
-        dt: the engine's step [s] (the analytic model: its output interval; default each backend's own, 1e-4 s).
+        dt: the engine's step [s] (the analytic model: its output interval); default each backend's own
+            (vssw.engine_settings(engine) lists it: 1e-4 s for the analytic model, 1 ms for ODE, ...).
         sample_dt: sampling of the returned arrays [s] (0 or None: every step).
         iterations: solver iterations (Bullet, ODE; default the engine's own).
         settings: the engine's knobs, {name: value} (vssw.engine_settings(engine) lists each with its default,
