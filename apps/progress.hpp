@@ -37,7 +37,9 @@ private:
 class Progress {
 public:
     explicit Progress(std::ostream& err)
-        : err_(err), hook_(progress_hook), on_(hook_ != nullptr || (&err == &std::cerr && isatty(STDERR_FILENO) == 1)) {}
+        : err_(err),
+          hook_(progress_hook),
+          on_(hook_ != nullptr || (&err == &std::cerr && isatty(STDERR_FILENO) == 1)) {}
     bool on() const { return on_; }
     void show(long done, long total, const std::string& what) {
         const std::lock_guard<std::mutex> lock(mutex_);

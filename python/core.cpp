@@ -277,8 +277,11 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
         require(std::isfinite(*t_end) && *t_end > 0.0, "t_end (s)", "a positive finite number", *t_end);
         ex.t_end = *t_end;
     } else {
+        // As vssw compare runs them: a free vibration long enough for the analytic model's impacts that
+        // FreeVibrationOptions shows (8), a response the motion and kResponseTail.
+        const int impacts = vssw::compare::FreeVibrationOptions{}.impacts;
         ex.t_end = shaken ? ex.horizontal.duration() + vssw::compare::kResponseTail
-                          : vssw::compare::free_vibration_duration(scene, ex.theta0, vssw::compare::FreeVibrationOptions{}.impacts);
+                          : vssw::compare::free_vibration_duration(scene, ex.theta0, impacts);
     }
     ex.stop_at_rest = stop_at_rest;
     const std::unique_ptr<vssw::multibody::Engine> engine = vssw::multibody::make_engine(engine_name);

@@ -29,7 +29,7 @@ LAYERS = {
     "validation": {"analytic", "io", "multibody", "compare", "study", "stress"},
     "motions": {"analytic", "io"},
     "apps": {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions"},
-    # The typed API binds the library itself (simulate, compare over multibody/ and compare/), the commands through apps.
+    # The typed API binds the library (simulate, compare: multibody/, compare/), the commands through apps.
     "python": {"analytic", "multibody", "compare", "apps"},
     "bench": PROGRAM,
     "tests": PROGRAM | {"tests"},

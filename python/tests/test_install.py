@@ -16,8 +16,9 @@ SCRIPT = textwrap.dedent("""
     import json, os, sys
     import vssw
     engine = "ode" if "ode" in vssw.engines() else [e for e in vssw.engines() if e != "analytic"][0]
-    runs = {e: vssw.simulate(e, height=4, thickness=0.4, hinge=0.7, theta0=0.5, t_end=0.5) for e in ["analytic", engine]}
-    shaken = vssw.simulate("analytic", height=4, thickness=0.4, hinge=0.7, record="records/kern1952-taft-021.at2", pga=0.3)
+    wall = dict(height=4, thickness=0.4, hinge=0.7)
+    runs = {e: vssw.simulate(e, **wall, theta0=0.5, t_end=0.5) for e in ["analytic", engine]}
+    shaken = vssw.simulate("analytic", **wall, record="records/kern1952-taft-021.at2", pga=0.3)
     print(json.dumps({"file": vssw.__file__, "version": vssw.__version__, "data": str(vssw.data_dir()),
                       "samples": {e: len(r.t) for e, r in runs.items()}, "shaken": len(shaken.t),
                       "prefix": sys.prefix, "plugins": os.environ.get("VSSW_PLUGIN_PATH")}))
