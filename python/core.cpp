@@ -1,14 +1,45 @@
-// vssw._core: the vssw program's commands run in this process (apps/cli.hpp), for the pure-Python package vssw/.
-// One function, run(args) -> (exit code, stdout, stderr), exactly what `vssw ARGS...` would give. The GIL stays held
-// for the whole run: ODE's library is not re-entrant, and nothing here calls back into Python.
+// vssw._core: the library behind the pure-Python package vssw/ (docs/python.md).
+//  - run(args): the vssw program's commands in-process, exactly what `vssw ARGS...` would give (vssw.cli). The GIL
+//    stays held: a command may run an engine library in this process (`vssw bench` times them in-process, and ODE's
+//    library is not re-entrant), and nothing in it calls back into Python.
+//  - run_with_progress(args, progress): the same for `study` and `report`, the GIL released, the commands' progress
+//    lines (apps/progress.hpp) handed to a Python callable instead of a terminal. Those commands make their engines
+//    with make_engine(), whose engine-library runs are each a forked child (multibody/isolated_engine.hpp): nothing of
+//    ODE's process-wide state is shared between two Python threads.
+//  - simulate(...), compare(...): one backend's trajectory, one engine against the analytic model, over the library
+//    (multibody/engine.hpp, compare/experiments.hpp), the GIL released around the runs for the same reason. The
+//    Python layer names and documents every parameter; the checks are the library's, each message naming the value.
+// Library errors reach Python as the package's own classes: vssw::InputError as vssw.InputError (a ValueError),
+// multibody::EngineFailure as vssw.SimulationError (a RuntimeError).
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "analytic/data_dir.hpp"
+#include "analytic/error.hpp"
+#include "analytic/closed_forms.hpp"
 #include "apps/cli.hpp"
+#include "apps/ground_motion_options.hpp"
+#include "apps/progress.hpp"
+#include "apps/wall_options.hpp"
+#include "compare/experiments.hpp"
+#include "compare/metrics.hpp"
+#include "compare/targets.hpp"
+#include "multibody/analytic_engine.hpp"
+#include "multibody/engine.hpp"
+#include "multibody/run_budget.hpp"
+#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (apps/CMakeLists.txt)
 
 namespace py = pybind11;
 
@@ -22,32 +53,403 @@ py::str text(const std::string& bytes) {
     return py::reinterpret_steal<py::str>(decoded);
 }
 
-py::tuple run(const std::vector<std::string>& args) {
-    // A C argument ends at its first NUL: "4\0junk" would be read as 4. Refused as the program refuses bad input.
+// A C argument ends at its first NUL: "4\0junk" would be read as 4. Refused as the program refuses bad input.
+std::optional<py::tuple> refuse_nul(const std::vector<std::string>& args) {
     for (const std::string& arg : args)
         if (arg.find('\0') != std::string::npos)
             return py::make_tuple(vssw::cli::kExitBadInput, py::str(""),
                                   text("vssw: error: an argument holds a NUL character: '" +
                                        arg.substr(0, arg.find('\0')) + "\\0...'\n"));
+    return std::nullopt;
+}
+
+int run_cli(const std::vector<std::string>& args, std::ostringstream& out, std::ostringstream& err) {
     std::vector<const char*> argv;
     argv.reserve(args.size() + 2);
     argv.push_back("vssw");
     for (const std::string& arg : args) argv.push_back(arg.c_str());
     argv.push_back(nullptr);  // argv[argc] is null, as for main()
+    return vssw::cli::run(static_cast<int>(args.size() + 1), argv.data(), out, err);
+}
+
+py::tuple run(const std::vector<std::string>& args) {
+    if (auto refused = refuse_nul(args)) return *refused;
     std::ostringstream out, err;
-    const int code = vssw::cli::run(static_cast<int>(args.size() + 1), argv.data(), out, err);
+    const int code = run_cli(args, out, err);
     return py::make_tuple(code, text(out.str()), text(err.str()));
+}
+
+// `progress` (None or a callable (done, total, what)) is called from the command's threads, each call holding the
+// GIL; an exception it raises is dropped (a progress bar must not end a study).
+py::tuple run_with_progress(const std::vector<std::string>& args, const py::object& progress) {
+    if (auto refused = refuse_nul(args)) return *refused;
+    vssw::cli::ProgressHook hook;
+    if (!progress.is_none())
+        hook = [progress](long done, long total, const std::string& what) {
+            const py::gil_scoped_acquire gil;
+            try {
+                progress(done, total, what);
+            } catch (const py::error_already_set&) {
+            }
+        };
+    const vssw::cli::ScopedProgressHook scoped(progress.is_none() ? nullptr : &hook);
+    std::ostringstream out, err;
+    int code = 0;
+    {
+        const py::gil_scoped_release released;
+        code = run_cli(args, out, err);
+    }
+    return py::make_tuple(code, text(out.str()), text(err.str()));
+}
+
+// The wall and the analytic model's assumptions as the Python functions take them.
+struct WallArgs {
+    std::string model;
+    double height, thickness;
+    std::optional<double> hinge;
+    double xi, density, g;
+    std::string kinematics, impact, roller;
+};
+
+vssw::cli::ChosenModel chosen_model(const WallArgs& a) {
+    vssw::cli::WallOptions w;
+    w.height = a.height;
+    w.thickness = a.thickness;
+    w.hinge = a.hinge;
+    w.xi = a.xi;
+    w.density = a.density;
+    w.g = a.g;
+    vssw::cli::ModelOptions m;
+    m.model = a.model;
+    m.kinematics = a.kinematics;
+    m.impact = a.impact;
+    m.roller = a.roller;
+    return vssw::cli::choose_model(w, m);
+}
+
+// The engine's settings: the analytic model's assumptions for "analytic", else the engine's defaults; then the step,
+// the iterations and the knobs given, checked by the engine before anything runs.
+vssw::multibody::EngineSettings settings_of(const vssw::multibody::Engine& engine,
+                                            const vssw::cli::ChosenModel& chosen, std::optional<double> dt,
+                                            std::optional<double> sample_dt, std::optional<int> iterations,
+                                            const std::map<std::string, double>& knobs) {
+    using vssw::require;
+    vssw::multibody::EngineSettings s =
+        engine.name() == "analytic"
+            ? vssw::multibody::analytic_settings(chosen.kinematics.value_or(vssw::Kinematics::exact), chosen.impact,
+                                                 chosen.roller)
+            : engine.default_settings();
+    if (dt) {
+        require(std::isfinite(*dt) && *dt > 0.0, "dt (engine step, s)", "a positive finite number", *dt);
+        s.dt = *dt;
+    }
+    if (sample_dt) {
+        require(std::isfinite(*sample_dt) && *sample_dt >= 0.0, "sample_dt (trajectory sampling, s)",
+                "a finite number >= 0 (0: every step)", *sample_dt);
+        s.sample_dt = *sample_dt;
+    }
+    if (iterations) {
+        require(*iterations >= 1 && *iterations <= vssw::multibody::kMaxIterations, "iterations",
+                fmt::format("a whole number from 1 to {}", vssw::multibody::kMaxIterations), *iterations);
+        s.iterations = *iterations;
+    }
+    for (const auto& [name, value] : knobs) {
+        if (!std::isfinite(value))
+            throw vssw::InputError(fmt::format("settings['{}']: '{}' is not a finite number", name, value));
+        s.knobs[name] = value;
+    }
+    engine.check_settings(s);
+    return s;
+}
+
+// A budget for every engine run of one call (multibody/run_budget.hpp), the previous one restored afterwards.
+class ScopedRunBudget {
+public:
+    explicit ScopedRunBudget(std::optional<double> seconds) : previous_(vssw::multibody::RunBudget::given()) {
+        if (seconds) vssw::multibody::RunBudget::set(seconds);
+        set_ = seconds.has_value();
+    }
+    ~ScopedRunBudget() {
+        if (set_) vssw::multibody::RunBudget::set(previous_);
+    }
+    ScopedRunBudget(const ScopedRunBudget&) = delete;
+    ScopedRunBudget& operator=(const ScopedRunBudget&) = delete;
+
+private:
+    std::optional<double> previous_;
+    bool set_ = false;
+};
+
+py::array_t<double> column(const std::vector<vssw::multibody::TrajectorySample>& samples,
+                           double vssw::multibody::TrajectorySample::*field) {
+    py::array_t<double> a(static_cast<py::ssize_t>(samples.size()));
+    auto view = a.mutable_unchecked<1>();
+    for (std::size_t i = 0; i < samples.size(); ++i) view(static_cast<py::ssize_t>(i)) = samples[i].*field;
+    return a;
+}
+
+py::dict settings_dict(const vssw::multibody::EngineSettings& s) {
+    py::dict d;
+    d["dt"] = s.dt;
+    d["iterations"] = s.iterations;
+    d["sample_dt"] = s.sample_dt;
+    d["knobs"] = s.knobs;
+    return d;
+}
+
+py::list impacts_list(const std::vector<vssw::compare::ImpactMetric>& impacts) {
+    py::list l;
+    for (const auto& i : impacts) {
+        py::dict d;
+        d["t"] = i.t;
+        d["theta_dot_before"] = i.theta_dot_before;
+        d["theta_dot_after"] = i.theta_dot_after;
+        d["ratio"] = i.ratio;
+        d["resolved"] = i.resolved;
+        l.append(d);
+    }
+    return l;
+}
+
+// A trajectory as NumPy arrays (one per sample field) and what the metrics code reads from it.
+py::dict trajectory_dict(const vssw::multibody::Trajectory& traj, const vssw::GroundMotion& motion) {
+    using Sample = vssw::multibody::TrajectorySample;
+    py::dict d;
+    d["t"] = column(traj.samples, &Sample::t);
+    d["theta1"] = column(traj.samples, &Sample::theta1);
+    d["theta1_dot"] = column(traj.samples, &Sample::theta1_dot);
+    d["theta2"] = column(traj.samples, &Sample::theta2);
+    d["top_dy"] = column(traj.samples, &Sample::top_dy);
+    d["kinetic"] = column(traj.samples, &Sample::kinetic);
+    d["potential"] = column(traj.samples, &Sample::potential);
+    py::array_t<int> contacts(static_cast<py::ssize_t>(traj.samples.size()));
+    py::array_t<double> ground(static_cast<py::ssize_t>(traj.samples.size()));
+    auto c = contacts.mutable_unchecked<1>();
+    auto a = ground.mutable_unchecked<1>();
+    for (std::size_t i = 0; i < traj.samples.size(); ++i) {
+        c(static_cast<py::ssize_t>(i)) = traj.samples[i].contacts;
+        a(static_cast<py::ssize_t>(i)) = motion(traj.samples[i].t);
+    }
+    d["contacts"] = contacts;
+    d["ground_acceleration"] = ground;
+    d["overturned"] = traj.overturned;
+    d["at_rest_at_end"] = traj.at_rest_at_end;
+    d["steps"] = traj.steps;
+    d["warnings"] = traj.warnings;
+    const auto impacts = vssw::compare::impacts(traj);
+    d["impacts"] = impacts_list(impacts);
+    py::list peaks;
+    for (const auto& p : vssw::compare::peaks(traj)) peaks.append(py::make_tuple(p.t, p.theta));
+    d["peaks"] = peaks;
+    const auto quarter = vssw::compare::quarter_period(traj);
+    d["period"] = quarter ? py::cast(4.0 * *quarter) : py::none();
+    d["max_abs_theta1"] = vssw::compare::max_abs_theta(traj);
+    return d;
+}
+
+py::dict simulate(const std::string& engine_name, const WallArgs& wall, double theta0, std::optional<double> t_end,
+                  std::optional<double> dt, std::optional<double> sample_dt, std::optional<int> iterations,
+                  const std::map<std::string, double>& knobs, const vssw::cli::GroundMotionOptions& motion_options,
+                  bool stop_at_rest, std::optional<double> friction, std::optional<double> run_budget) {
+    using vssw::require;
+    if (engine_name != "analytic" &&
+        (wall.kinematics != "exact" || wall.impact != "eq19" || wall.roller != "bilateral"))
+        throw vssw::InputError(fmt::format(
+            "kinematics, impact and roller are the analytic model's assumptions; engine '{}' realises its own "
+            "physics (its settings are its knobs: vssw.engine_settings('{}'))",
+            engine_name, engine_name));
+    const vssw::cli::ChosenModel chosen = chosen_model(wall);
+    vssw::multibody::WallScene scene(chosen.wall);
+    if (friction) {
+        require(std::isfinite(*friction) && *friction > 0.0, "friction", "a positive finite coefficient", *friction);
+        scene.friction = *friction;
+    }
+    const bool shaken = motion_options.record || motion_options.pulse;
+    vssw::multibody::Excitation ex;
+    if (shaken) ex.horizontal = vssw::cli::load_ground_motion(motion_options).motion;
+    require(std::isfinite(theta0) && std::abs(theta0) < 1.0, "theta0 (release from rest, a fraction of alpha)",
+            "a number from -1 to 1, both excluded", theta0);
+    if (!shaken && theta0 == 0.0)
+        throw vssw::InputError("nothing moves the wall: give a release theta0 (a fraction of alpha) or a ground "
+                               "motion (record= or pulse=)");
+    ex.theta0 = theta0 * scene.alpha();
+    if (t_end) {
+        require(std::isfinite(*t_end) && *t_end > 0.0, "t_end (s)", "a positive finite number", *t_end);
+        ex.t_end = *t_end;
+    } else {
+        // As vssw compare runs them: a free vibration long enough for the analytic model's impacts that
+        // FreeVibrationOptions shows (8), a response the motion and kResponseTail.
+        const int impacts = vssw::compare::FreeVibrationOptions{}.impacts;
+        ex.t_end = shaken ? ex.horizontal.duration() + vssw::compare::kResponseTail
+                          : vssw::compare::free_vibration_duration(scene, ex.theta0, impacts);
+    }
+    ex.stop_at_rest = stop_at_rest;
+    const std::unique_ptr<vssw::multibody::Engine> engine = vssw::multibody::make_engine(engine_name);
+    const vssw::multibody::EngineSettings settings = settings_of(*engine, chosen, dt, sample_dt, iterations, knobs);
+    const ScopedRunBudget budget(run_budget);
+    vssw::multibody::Trajectory traj;
+    if (engine->runs_concurrently()) {  // every backend make_engine() gives; one that is not keeps the GIL
+        const py::gil_scoped_release released;
+        traj = engine->simulate(scene, ex, settings);
+    } else {
+        traj = engine->simulate(scene, ex, settings);
+    }
+    py::dict d = trajectory_dict(traj, ex.horizontal);
+    d["engine"] = engine->name();
+    d["version"] = engine->version();
+    d["settings"] = settings_dict(settings);
+    d["alpha"] = scene.alpha();
+    d["theta0"] = ex.theta0;
+    d["t_end"] = ex.t_end;
+    d["kinematics"] = engine_name == "analytic" && chosen.kinematics
+                          ? py::cast(chosen.kinematics == vssw::Kinematics::exact ? "exact" : "paper")
+                          : py::none();
+    d["ground_motion"] = shaken ? py::cast(ex.horizontal.name()) : py::none();
+    return d;
+}
+
+py::dict metric(const vssw::compare::MetricComparison& m, double target) {
+    py::dict d;
+    d["value"] = m.engine;
+    d["reference"] = m.analytic;
+    d["rel_error"] = m.rel_error;
+    d["target"] = target;
+    return d;
+}
+
+py::dict compare(const std::string& engine_name, const WallArgs& wall, double theta0, std::optional<double> dt,
+                 std::optional<int> iterations, const std::map<std::string, double>& knobs,
+                 std::optional<double> run_budget) {
+    using vssw::require;
+    const vssw::cli::ChosenModel chosen = chosen_model(wall);
+    const vssw::multibody::WallScene scene(chosen.wall);
+    require(std::isfinite(theta0) && theta0 >= vssw::compare::kMinRelease && theta0 < 1.0,
+            "theta0 (release for the period and restitution, a fraction of alpha)",
+            fmt::format("from {:g} to below 1", vssw::compare::kMinRelease), theta0);
+    vssw::compare::ComparisonOptions options;
+    options.reference =
+        vssw::multibody::analytic_settings(chosen.kinematics.value_or(vssw::Kinematics::exact), chosen.impact,
+                                           chosen.roller);
+    const std::unique_ptr<vssw::multibody::Engine> engine = vssw::multibody::make_engine(engine_name);
+    // The engine's own settings: the analytic model's assumptions belong to the reference, not to the engine.
+    vssw::cli::ChosenModel engine_model = chosen_model({wall.model, wall.height, wall.thickness, wall.hinge, wall.xi,
+                                                        wall.density, wall.g, "exact", "eq19", "bilateral"});
+    const vssw::multibody::EngineSettings settings =
+        settings_of(*engine, engine_model, dt, std::nullopt, iterations, knobs);
+    const ScopedRunBudget budget(run_budget);
+    vssw::compare::EngineComparison c;
+    if (engine->runs_concurrently()) {
+        const py::gil_scoped_release released;
+        c = vssw::compare::compare_with_analytic(*engine, settings, scene, theta0, options);
+    } else {
+        c = vssw::compare::compare_with_analytic(*engine, settings, scene, theta0, options);
+    }
+    py::dict d;
+    d["engine"] = engine->name();
+    d["version"] = engine->version();
+    d["settings"] = settings_dict(settings);
+    d["theta0"] = theta0;
+    d["threshold"] = metric(c.threshold_g, vssw::compare::kThresholdTarget);
+    d["period"] = metric(c.period, vssw::compare::kPeriodTarget);
+    d["restitution"] = metric(c.restitution, vssw::compare::kRestitutionTarget);
+    d["restitution_amplitude"] = metric(c.restitution_amplitude, vssw::compare::kRestitutionTarget);
+    py::dict closed;
+    closed["threshold_g"] = c.threshold_closed_form_g;
+    closed["restitution"] = c.restitution_closed_form;
+    closed["restitution_whole_mechanism"] = scene.vssw ? vssw::restitution_whole_mechanism(*scene.vssw)
+                                                       : vssw::housner_restitution(scene.parapet->alpha);
+    closed["period_linearised"] = c.period_linearised;
+    d["closed_forms"] = closed;
+    d["threshold_trials"] = py::make_tuple(c.analytic_threshold.trials, c.engine_threshold.trials);
+    d["impacts"] = py::make_tuple(c.analytic_impacts, c.engine_impacts);
+    d["failures"] = c.failures;
+    d["analytic_warnings"] = c.analytic_warnings;
+    return d;
+}
+
+py::list engine_settings(const std::string& engine_name) {
+    const std::unique_ptr<vssw::multibody::Engine> engine = vssw::multibody::make_engine(engine_name);
+    py::list l;
+    for (const auto& s : engine->setting_descriptions()) {
+        py::dict d;
+        d["name"] = s.name;
+        d["default"] = s.default_value;
+        d["unit"] = s.unit;
+        d["meaning"] = s.meaning;
+        d["min"] = s.lo;
+        d["max"] = s.hi;
+        l.append(d);
+    }
+    return l;
+}
+
+// Raises `name` of the vssw package (InputError, SimulationError) with the library's message, as the Python layer
+// raises it for the program's errors: Error(message, code, stderr).
+void raise_package_error(const char* name, int code, const char* message) {
+    const py::object cls = py::module_::import("vssw").attr(name);
+    const py::object exc = cls(message, code, "");
+    PyErr_SetObject(cls.ptr(), exc.ptr());
 }
 
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
-    m.doc() = "The vssw program's commands, run in-process (use the vssw package, not this module).";
+    m.doc() = "The library behind the vssw package (use the vssw package, not this module).";
     m.def("run", &run, py::arg("args"),
           "Runs `vssw ARGS...` in this process: returns (exit code, standard output, standard error). Never raises "
           "for the program's own errors: they are the exit code and the stderr line.");
+    m.def("run_with_progress", &run_with_progress, py::arg("args"), py::arg("progress"),
+          "run(args) with the GIL released and the command's progress lines given to progress(done, total, what).");
+    py::class_<WallArgs>(m, "WallArgs")
+        .def(py::init<std::string, double, double, std::optional<double>, double, double, double, std::string,
+                      std::string, std::string>(),
+             py::arg("model"), py::arg("height"), py::arg("thickness"), py::arg("hinge"), py::arg("xi"),
+             py::arg("density"), py::arg("g"), py::arg("kinematics"), py::arg("impact"), py::arg("roller"));
+    m.def(
+        "simulate",
+        [](const std::string& engine, const WallArgs& wall, double theta0, std::optional<double> t_end,
+           std::optional<double> dt, std::optional<double> sample_dt, std::optional<int> iterations,
+           const std::map<std::string, double>& knobs, std::optional<std::string> record, std::optional<double> scale,
+           std::optional<double> pga, std::optional<std::string> pulse, std::optional<double> amplitude,
+           std::optional<double> pulse_period, std::optional<double> duration, bool stop_at_rest,
+           std::optional<double> friction, std::optional<double> run_budget) {
+            vssw::cli::GroundMotionOptions motion;
+            motion.record = std::move(record);
+            motion.scale = scale;
+            motion.pga_g = pga;
+            motion.pulse = std::move(pulse);
+            motion.amplitude_g = amplitude;
+            motion.pulse_period = pulse_period;
+            motion.duration = duration;
+            return simulate(engine, wall, theta0, t_end, dt, sample_dt, iterations, knobs, motion, stop_at_rest,
+                            friction, run_budget);
+        },
+        py::arg("engine"), py::arg("wall"), py::arg("theta0"), py::arg("t_end"), py::arg("dt"), py::arg("sample_dt"),
+        py::arg("iterations"), py::arg("knobs"), py::arg("record"), py::arg("scale"), py::arg("pga"),
+        py::arg("pulse"), py::arg("amplitude"), py::arg("pulse_period"), py::arg("duration"),
+        py::arg("stop_at_rest"), py::arg("friction"), py::arg("run_budget"),
+        "One backend's run (vssw.simulate documents the arguments): the trajectory's arrays and what it measured.");
+    m.def("compare", &compare, py::arg("engine"), py::arg("wall"), py::arg("theta0"), py::arg("dt"),
+          py::arg("iterations"), py::arg("knobs"), py::arg("run_budget"),
+          "One engine against the analytic model (vssw.compare documents the arguments).");
+    m.def("engine_settings", &engine_settings, py::arg("engine"), "Every setting of one backend.");
+    m.def("available_engines", &vssw::multibody::available_engines, "The backends of this build.");
+    m.def("default_compared_engines", &vssw::multibody::default_compared_engines,
+          "The engines `all` stands for (every engine but the analytic model and simbody-rigid).");
+    m.def("data_dir", &vssw::shipped_data_dir, "The shipped data folder (records, Table 1).");
+    m.attr("VERSION") = VSSW_VERSION;
+    m.attr("COMMIT") = VSSW_GIT_COMMIT;
     m.attr("EXIT_OK") = vssw::cli::kExitOk;
     m.attr("EXIT_OUT_OF_BOUNDS") = vssw::cli::kExitOutOfBounds;
     m.attr("EXIT_BAD_INPUT") = vssw::cli::kExitBadInput;
     m.attr("EXIT_SIMULATION_FAILED") = vssw::cli::kExitSimulationFailed;
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const vssw::InputError& e) {
+            raise_package_error("InputError", vssw::cli::kExitBadInput, e.what());
+        } catch (const vssw::multibody::EngineFailure& e) {
+            raise_package_error("SimulationError", vssw::cli::kExitSimulationFailed, e.what());
+        }
+    });
 }

@@ -5,6 +5,7 @@ stay inside that engine's adapter folder.
     analytic  <-  io
     analytic, io  <-  motions  <-  apps
     analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  apps  <-  python
+    (python also binds analytic, multibody and compare directly)
     (bench and tests may include any folder of the program)
 
 Exit 0 when every `#include "folder/..."` and every engine header include keeps to that; otherwise 1, one line per
@@ -28,7 +29,8 @@ LAYERS = {
     "validation": {"analytic", "io", "multibody", "compare", "study", "stress"},
     "motions": {"analytic", "io"},
     "apps": {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions"},
-    "python": {"apps"},
+    # The typed API binds the library (simulate, compare: multibody/, compare/), the commands through apps.
+    "python": {"analytic", "multibody", "compare", "apps"},
     "bench": PROGRAM,
     "tests": PROGRAM | {"tests"},
 }

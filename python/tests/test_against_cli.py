@@ -61,11 +61,11 @@ def test_compare_is_the_programs_json(cli):
     # The analytic backend against the analytic model: deterministic and quick (no engine library needed).
     kwargs = dict(engine="analytic", **FIG6, theta0=0.5)
     flags = ["--engine", "analytic", *FIG6_FLAGS, "--theta0", "0.5"]
-    assert without_timing(vssw.compare(**kwargs)) == without_timing(cli.json(["compare", *flags]))
+    assert without_timing(vssw.cli.compare(**kwargs)) == without_timing(cli.json(["compare", *flags]))
 
 
 def test_compare_takes_a_list_of_engines_and_a_dict_of_settings(cli):
-    module = vssw.compare(engine=["analytic"], **FIG6, set={"restitution": 0.5})
+    module = vssw.cli.compare(engine=["analytic"], **FIG6, set={"restitution": 0.5})
     program = cli.json(["compare", "--engine", "analytic", *FIG6_FLAGS, "--set", "restitution=0.5"])
     assert without_timing(module) == without_timing(program)
     assert module["settings"]["knobs"] == program["settings"]["knobs"]
@@ -96,7 +96,7 @@ def test_the_free_vibration_trace_is_the_programs_csv(cli, tmp_path):
 
 
 def test_keywords_become_the_programs_options():
-    args = vssw._arguments(dict(pulse_period=0.5, thickness=-0.2, json_like=None, force=True, resume=False,
+    args = vssw.cli._arguments(dict(pulse_period=0.5, thickness=-0.2, json_like=None, force=True, resume=False,
                                 engine=["ode", "bullet"], set={"dt": 1e-4, "slide_limit": 0.1}, theta0=np.float64(0.4),
                                 threads=np.int64(2), record=REPO / "data" / "x.AT2"))
     assert args == ["--pulse-period=0.5", "--thickness=-0.2", "--force", "--engine=ode", "--engine=bullet",

@@ -128,14 +128,14 @@ def test_a_setting_that_crashed_the_interpreter_is_an_input_error():
     # An ODE margin of 1e308 once aborted inside ODE and took the Python process with it (issue 27): every knob is
     # now checked against its documented range before the library sees it.
     with pytest.raises(ValueError, match="margin.*documented range.*1e\\+308"):
-        vssw.compare(engine="ode", **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5, set={"margin": 1e308})
+        vssw.cli.compare(engine="ode", **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5, set={"margin": 1e308})
 
 
 def test_an_engine_run_past_its_budget_is_a_simulation_error_and_python_goes_on():
     # Each engine run is a child process with a CPU budget: Simbody at its tightest accuracy needs more than a second
     # for the threshold search's runs, so a budget of one second stops it, naming the budget.
     with pytest.raises(vssw.SimulationError, match="budget of 1 s of CPU time"):
-        vssw.compare(engine="simbody", **FIG6, run_budget=1, set={"accuracy": 1e-10})
+        vssw.cli.compare(engine="simbody", **FIG6, run_budget=1, set={"accuracy": 1e-10})
     assert vssw.wall(**FIG6)["threshold_g"] > 0  # the interpreter is still here and the module works
 
 
@@ -168,9 +168,9 @@ def test_true_for_an_option_that_needs_a_value_names_it(cli):
 
 def test_a_bool_inside_a_list_or_dict_is_refused():
     with pytest.raises(vssw.InputError, match="set.*erp.*True is not a value"):
-        vssw.compare(engine="analytic", **FIG6, set={"erp": True})
+        vssw.cli.compare(engine="analytic", **FIG6, set={"erp": True})
     with pytest.raises(vssw.InputError, match="engine.*False is not a value"):
-        vssw.compare(engine=["analytic", False], **FIG6)
+        vssw.cli.compare(engine=["analytic", False], **FIG6)
 
 
 def test_help_is_returned_not_raised():

@@ -33,7 +33,7 @@ def test_a_study_file_gives_the_programs_results_csv(cli, tmp_path):
     study_file = tmp_path / "free.json"
     study_file.write_text(json.dumps(FREE_STUDY))
     program = program_results(cli, study_file, tmp_path / "program")
-    module = vssw.study(study_file, threads=1)
+    module = vssw.cli.study(study_file, threads=1)
     assert isinstance(module, pd.DataFrame)
     assert len(module) == FREE_ROWS
     pd.testing.assert_frame_equal(module, program)
@@ -44,7 +44,7 @@ def test_a_study_file_gives_the_programs_results_csv(cli, tmp_path):
 
 def test_a_dict_is_a_study_and_out_keeps_the_folder(cli, tmp_path):
     out = tmp_path / "kept"
-    module = vssw.study(FREE_STUDY, out=out, threads=1, no_plots=True)
+    module = vssw.cli.study(FREE_STUDY, out=out, threads=1, no_plots=True)
     assert (out / "results.csv").is_file() and (out / "study.md").is_file()
     study_file = tmp_path / "free.json"  # the same study as a file (it names no record), run by the program
     study_file.write_text(json.dumps(FREE_STUDY))
@@ -56,7 +56,7 @@ def test_a_dict_reads_a_relative_record_from_the_current_directory(cli, monkeypa
     monkeypatch.chdir(RECORD.parent)
     spec = {"metrics": ["peak_rotation", "overturned"], "wall": {"height": 4.0, "thickness": 0.4, "hinge": 0.7},
             "excitation": {"kind": "record", "file": RECORD.name, "scale": [0.45, 0.6]}}
-    frame = vssw.study(spec, threads=1)
+    frame = vssw.cli.study(spec, threads=1)
     assert len(frame) == 2 * 2
     assert (frame["status"] == "ok").all()
     direct = cli.json(["history", "--record", RECORD, "--scale", "0.6", "--height", "4", "--thickness", "0.4",
@@ -68,8 +68,8 @@ def test_a_dict_reads_a_relative_record_from_the_current_directory(cli, monkeypa
 
 
 def test_without_pandas_the_rows_are_a_list_of_dicts(monkeypatch, tmp_path):
-    monkeypatch.setattr(vssw, "_pandas", lambda: None)
-    rows = vssw.study(FREE_STUDY, out=tmp_path / "s", threads=1, no_plots=True)
+    monkeypatch.setattr(vssw.cli, "_pandas", lambda: None)
+    rows = vssw.cli.study(FREE_STUDY, out=tmp_path / "s", threads=1, no_plots=True)
     assert isinstance(rows, list) and len(rows) == FREE_ROWS
     frame = read_results(tmp_path / "s")
     assert [r["case_id"] for r in rows] == frame["case_id"].tolist()
@@ -78,4 +78,45 @@ def test_without_pandas_the_rows_are_a_list_of_dicts(monkeypatch, tmp_path):
 
 def test_a_bad_study_is_a_value_error_naming_the_key():
     with pytest.raises(ValueError, match="colour"):
-        vssw.study({**FREE_STUDY, "colour": "red"})
+        vssw.cli.study({**FREE_STUDY, "colour": "red"})
+
+
+# The typed vssw.study and vssw.report: the same files, as DataFrames, with the folders they are in.
+
+def test_the_typed_study_gives_the_programs_results_and_its_folder(cli, tmp_path):
+    study_file = tmp_path / "free.json"
+    study_file.write_text(json.dumps(FREE_STUDY))
+    program = program_results(cli, study_file, tmp_path / "program")
+    calls = []
+    result = vssw.study(study_file, out=tmp_path / "typed", threads=1, plots=False,
+                        progress=lambda done, total, what: calls.append((done, total)))
+    assert isinstance(result, vssw.StudyResult)
+    assert result.folder == tmp_path / "typed" and (result.folder / "results.csv").is_file()
+    pd.testing.assert_frame_equal(result.results, program)
+    assert result.summary["rows"] == FREE_ROWS
+    assert calls and calls[-1][0] == calls[-1][1], "the progress callback saw the last task"
+
+
+def test_the_typed_study_takes_a_dict_into_a_kept_folder():
+    result = vssw.study(FREE_STUDY, threads=1)
+    try:
+        assert len(result.results) == FREE_ROWS and (result.results["status"] == "ok").all()
+        assert (result.folder / "results.csv").is_file()
+    finally:
+        import shutil
+
+        shutil.rmtree(result.folder)
+
+
+def test_the_typed_report_gives_its_csv_files_as_dataframes(tmp_path):
+    # One case, the analytic model alone (no engine library): the report's tables without the minutes of a suite.
+    result = vssw.report(tmp_path / "report", engines=["analytic"], cases=["fig6-vssw"], threads=1, plots=False)
+    assert isinstance(result, vssw.ReportResult)
+    assert result.markdown.is_file() and result.html.is_file()
+    pd.testing.assert_frame_equal(result.metrics, read_results_csv(tmp_path / "report" / "metrics.csv"))
+    assert set(result.metrics["case_id"]) == {"fig6-vssw"}
+    assert {"rel_error", "target", "within_target"} <= set(result.rows.columns)
+
+
+def read_results_csv(path):
+    return pd.read_csv(path, float_precision="round_trip")

@@ -1,0 +1,351 @@
+"""The typed API over the library (docs/python.md): simulate, compare, study, report, engines, engine_settings."""
+
+import json
+import numbers
+import os
+import pathlib
+import sys
+import tempfile
+
+from . import _core, cli
+from ._errors import Error, InputError, SimulationError
+from ._results import (ReportResult, StudyResult, comparison_from, failed_comparison, simulation_from)
+
+_DENSITY = 1800.0  # kg/m^3, brick masonry (analytic/wall.hpp kDefaultDensity)
+_GRAVITY = 9.81  # m/s^2 (analytic/wall.hpp kDefaultGravity)
+
+
+def _number(name, value, optional=False):
+    """A float from a Python or NumPy number; InputError naming the parameter otherwise."""
+    if value is None and optional:
+        return None
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise InputError(f"{name}: a number is expected, got {type(value).__name__} {value!r}",
+                         _core.EXIT_BAD_INPUT)
+    return float(value)
+
+
+def _integer(name, value):
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise InputError(f"{name}: a whole number is expected, got {type(value).__name__} {value!r}",
+                         _core.EXIT_BAD_INPUT)
+    return int(value)
+
+
+def _word(name, value, default):
+    """A choice as the library reads it ("exact", "eq19", ...); an impact law may also be a number (e = 0.6)."""
+    if value is None:
+        return default
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return repr(float(value))
+    if not isinstance(value, str) or value == "" or "\x00" in value:
+        raise InputError(f"{name}: a word is expected, got {type(value).__name__} {value!r}", _core.EXIT_BAD_INPUT)
+    return value
+
+
+def _knobs(settings):
+    """An engine's settings as {name: float}: a dict, or a list of "name=value" strings (as vssw.cli takes them)."""
+    if settings is None:
+        return {}
+    if isinstance(settings, (list, tuple)):
+        pairs = {}
+        for item in settings:
+            name, sep, value = str(item).partition("=")
+            if not sep or not name:
+                raise InputError(f"settings: 'name=value' is expected, got {item!r}", _core.EXIT_BAD_INPUT)
+            pairs[name] = value
+        settings = pairs
+    if not isinstance(settings, dict):
+        raise InputError(f"settings: a dict {{name: value}} is expected, got {type(settings).__name__}",
+                         _core.EXIT_BAD_INPUT)
+    out = {}
+    for name, value in settings.items():
+        if isinstance(value, str):
+            try:
+                value = float(value)
+            except ValueError:
+                raise InputError(f"settings[{name!r}]: {value!r} is not a number", _core.EXIT_BAD_INPUT) from None
+        out[str(name)] = _number(f"settings[{name!r}]", value)
+    return out
+
+
+def _wall(model, height, thickness, hinge, xi, density, g, kinematics="exact", impact=None, roller=None):
+    return _core.WallArgs(
+        model=_word("model", model, "vssw"), height=_number("height", height),
+        thickness=_number("thickness", thickness), hinge=_number("hinge", hinge, optional=True),
+        xi=_number("xi", xi), density=_number("density", density), g=_number("g", g),
+        kinematics=_word("kinematics", kinematics, "exact"), impact=_word("impact", impact, "eq19"),
+        roller=_word("roller", roller, "bilateral"))
+
+
+def _record_path(record):
+    """A record path as given when it exists from the current directory; else the shipped data's file of that name
+    ("data/records/x.at2" or "records/x.at2" from the data folder of this build or installation)."""
+    if record is None:
+        return None
+    path = pathlib.Path(os.fspath(record))
+    if path.exists() or path.is_absolute():
+        return str(path)
+    data = pathlib.Path(_core.data_dir())
+    for candidate in [data.parent / path, data / path]:
+        if candidate.exists():
+            return str(candidate)
+    return str(path)  # the library names it in its message
+
+
+def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY,
+             g=_GRAVITY, theta0=0.0, t_end=None, record=None, scale=None, pga=None, pulse=None, amplitude=None,
+             pulse_period=None, duration=None, dt=None, sample_dt=None, iterations=None, settings=None,
+             kinematics=None, impact=None, roller=None, friction=None, stop_at_rest=True, run_budget=None):
+    """One backend's run of one wall: its trajectory as NumPy arrays (a vssw.Simulation).
+
+    engine: "analytic" (the two-block model, this project's own DOP853 integration) or an engine of this build
+        (vssw.engines(): "bullet", "ode", "simbody", "siconos", "box2d", "dart", "mujoco", ...). An engine run is a
+        child process with a CPU budget (a library that crashes fails the run, never Python).
+    The wall:
+        height, thickness: full height 2h and full thickness 2b [m].
+        hinge: the hinge's height ratio h1/h in (0, 1) (required for model="vssw"; ignored for a parapet).
+        model: "vssw" (two blocks with a top roller, the paper's) or "parapet" (one block, Housner's).
+        xi: overburden N/W on the top (0: none). density [kg/m^3] (default 1800). g [m/s^2] (default 9.81).
+    How it starts and what shakes it (one of a release and a ground motion, or both):
+        theta0: release from rest at theta0 * alpha (a fraction of alpha1, or alpha for a parapet; -1 < theta0 < 1;
+            the sign is the side: positive tips the wall towards +x).
+        record: a ground-motion file (PEER AT2, two columns time/acceleration, or a CSV with those first) in g
+            unless its header says otherwise; a relative path is read from the current directory, else from the
+            shipped data ("data/records/northridge1994-rinaldi-228.at2"). scale: a factor on it, or pga: its peak
+            ground acceleration [g] (not both).
+        pulse: "sine", "cosine", "ricker" or "harmonic", with amplitude [g] and pulse_period [s] (duration [s]:
+            harmonic only); pga replaces the amplitude.
+        t_end: end of the run [s]. Default: a release alone runs long enough for 8 impacts of the analytic model
+            (as `vssw compare` runs it); a ground motion runs its duration + 10 s.
+        stop_at_rest: end the run once the wall is at rest and the shaking can no longer lift it (default True).
+    The backend's settings:
+        dt: the engine's step [s] (the analytic model: its output interval); default each backend's own
+            (vssw.engine_settings(engine) lists it: 1e-4 s for the analytic model, 1 ms for ODE, ...).
+        sample_dt: sampling of the returned arrays [s] (0 or None: every step).
+        iterations: solver iterations (Bullet, ODE; default the engine's own).
+        settings: the engine's knobs, {name: value} (vssw.engine_settings(engine) lists each with its default,
+            unit, range and meaning), e.g. {"erp": 0.2} for ODE. A knob the engine does not know is an InputError.
+        kinematics, impact, roller (analytic only): "exact" (Eq. 2, the default here: what the engines realise) or
+            "paper" (Eq. 3); "eq19" (the default), "whole-mechanism" or a number e in [0, 1]; "bilateral" (the
+            default) or "unilateral" (a roller that can only push).
+        friction: Coulomb friction of the engines' contacts (default 2: nothing slides; sliding is a failure).
+        run_budget: CPU seconds one engine run may take (default 30 s + 1 ms per step).
+    Raises InputError (a ValueError) naming a bad value, SimulationError (a RuntimeError) when the run fails."""
+    result = _core.simulate(
+        engine=_word("engine", engine, "analytic"),
+        wall=_wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller),
+        theta0=_number("theta0", theta0), t_end=_number("t_end", t_end, True), dt=_number("dt", dt, True),
+        sample_dt=_number("sample_dt", sample_dt, True), iterations=_integer("iterations", iterations),
+        knobs=_knobs(settings), record=_record_path(record), scale=_number("scale", scale, True),
+        pga=_number("pga", pga, True), pulse=None if pulse is None else _word("pulse", pulse, None),
+        amplitude=_number("amplitude", amplitude, True), pulse_period=_number("pulse_period", pulse_period, True),
+        duration=_number("duration", duration, True), stop_at_rest=bool(stop_at_rest),
+        friction=_number("friction", friction, True), run_budget=_number("run_budget", run_budget, True))
+    return simulation_from(result)
+
+
+class _Bar:
+    """progress=True: a tqdm bar where tqdm is installed, else a line on stderr rewritten in place; a callable: called
+    as progress(done, total, what); False or None: nothing."""
+
+    def __init__(self, progress, description):
+        self.user = progress if callable(progress) else None
+        self.bar = None
+        self.line = bool(progress) and self.user is None
+        self.description = description
+        if self.line:
+            try:
+                from tqdm.auto import tqdm
+
+                self.bar = tqdm(total=0, desc=description, leave=False)
+                self.line = False
+            except ImportError:
+                pass
+
+    def __call__(self, done, total, what):
+        if self.user is not None:
+            self.user(done, total, what)
+        elif self.bar is not None:
+            self.bar.total = total
+            self.bar.n = done
+            self.bar.set_postfix_str(what[:40], refresh=False)
+            self.bar.refresh()
+        elif self.line:
+            sys.stderr.write(f"\r{self.description} [{done}/{total}] {what}"[:79].ljust(79))
+            sys.stderr.flush()
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+        elif self.line:
+            sys.stderr.write("\r" + " " * 79 + "\r")
+            sys.stderr.flush()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+def _engine_list(engine):
+    if isinstance(engine, str):
+        if engine == "all":
+            return list(_core.default_compared_engines()), True
+        if "," in engine:
+            return [e.strip() for e in engine.split(",") if e.strip()], True
+        return [engine], False
+    return [_word("engine", e, None) for e in engine], True
+
+
+def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY, g=_GRAVITY,
+            theta0=0.5, kinematics="exact", impact=None, roller=None, dt=None, iterations=None, settings=None,
+            run_budget=None, progress=False):
+    """Engines against the analytic model on the metrics the project holds them to (`vssw compare`, over the
+    library): the threshold acceleration [g] (the smallest constant ground acceleration that lifts the wall off
+    rest, by bisection on simulations to 1e-4), the period [s] (4 x the time from the release at theta0 to the first
+    impact) and the restitution (theta1' after / before the first impact). Each is measured from both trajectories by
+    the same code; targets 0.5 %, 0.5 %, 2 %.
+
+    engine: a backend name (returns one vssw.Comparison), a list of names or "all" (every engine of this build but
+        the analytic model and simbody-rigid; returns a list of Comparison, one whose engine failed carrying its
+        `error` and NaN metrics).
+    height, thickness [m], hinge (h1/h), model ("vssw" | "parapet"), xi (N/W), density [kg/m^3], g [m/s^2]: the
+        wall, as vssw.simulate.
+    theta0: release for the period and restitution, a fraction of alpha from 0.01 to below 1 (default 0.5).
+    kinematics, impact, roller: the analytic reference's assumptions (default exact, Eq. 19, bilateral); the engines'
+        settings do not reach it.
+    dt [s], iterations, settings ({knob: value}): every engine's step, solver iterations and knobs.
+    run_budget: CPU seconds one engine run may take.
+    progress: True shows a bar over the engines (tqdm when installed, else a line on stderr); a callable is called
+        as progress(done, total, engine).
+    A metric that could not be measured is NaN with its reason in `failures` (`vssw compare` exits 3 then).
+    Raises InputError naming a bad value before any engine runs; SimulationError when the one engine asked fails."""
+    names, several = _engine_list(engine)
+    wall = _wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller)
+    arguments = dict(wall=wall, theta0=_number("theta0", theta0), dt=_number("dt", dt, True),
+                     iterations=_integer("iterations", iterations), knobs=_knobs(settings),
+                     run_budget=_number("run_budget", run_budget, True))
+    for name in names:  # every engine and its settings checked before the first one runs
+        if name not in _core.available_engines():
+            raise InputError(f"engine '{name}' is not one of this build's: {', '.join(_core.available_engines())}",
+                             _core.EXIT_BAD_INPUT)
+    results = []
+    with _Bar(progress, "compare") as bar:
+        for i, name in enumerate(names):
+            bar(i, len(names), name)
+            try:
+                results.append(comparison_from(_core.compare(engine=name, **arguments)))
+            except SimulationError as e:
+                if not several:
+                    raise
+                results.append(failed_comparison(name, str(e)))
+        bar(len(names), len(names), "done")
+    return results if several else results[0]
+
+
+def engines():
+    """The backends of this build: "analytic" first, then each engine found at configure time."""
+    return list(_core.available_engines())
+
+
+def engine_settings(engine):
+    """Every setting of one backend: a list of {name, default, unit, meaning, min, max} (min and max: the range a
+    value may take, both included; -inf/inf when unbounded). dt and iterations are given as simulate's dt and
+    iterations, every other one in settings={name: value}."""
+    return _core.engine_settings(_word("engine", engine, None))
+
+
+def data_dir():
+    """The shipped data folder (records in records/, Table 1) this build or installation reads."""
+    return pathlib.Path(_core.data_dir())
+
+
+def _read_csv(path):
+    import pandas as pd
+
+    # round_trip: the 17 digits the files hold read back to the same doubles (pandas' default may be 1 ulp off).
+    return pd.read_csv(path, float_precision="round_trip")
+
+
+def _folder(out, prefix):
+    if out is not None:
+        return pathlib.Path(os.fspath(out))
+    return pathlib.Path(tempfile.mkdtemp(prefix=prefix))
+
+
+def _run_command(args, progress, description):
+    with _Bar(progress, description) as bar:
+        code, out, err = _core.run_with_progress([str(a) for a in args], bar if progress else None)
+    if code != _core.EXIT_OK:
+        raise cli._EXCEPTIONS.get(code, Error)(cli._message(err), code, err)
+    return out
+
+
+def study(file, out=None, *, threads=None, shard=None, resume=False, force=False, strict=False, plots=None,
+          gnuplot=None, run_budget=None, progress=False):
+    """Runs a study (`vssw study`, docs/studies in the README): walls x assumptions x excitations x engines.
+
+    file: a study file (.toml or .json) or a dict of its keys (a relative record `file` in it is read from the
+        current directory).
+    out: the study folder to write (created if missing). None: a new temporary folder, kept (its path is
+        StudyResult.folder), without plots unless plots=True.
+    threads: worker threads (default: the available cores). shard: "K/N", run every N-th case from the K-th.
+    resume: finish an interrupted study in `out`. force: run a study of more than 10000 tasks. strict: raise
+        SimulationError when any row failed. plots: write the gnuplot plots (default: with `out` given).
+    gnuplot: the gnuplot program. run_budget: CPU seconds one engine run may take.
+    progress: True shows a bar over the tasks (tqdm when installed, else a line on stderr); a callable is called as
+        progress(done, total, what).
+    Returns a vssw.StudyResult: results (results.csv as a pandas DataFrame), folder, summary (the JSON summary)."""
+    folder = _folder(out, "vssw-study-")
+    with tempfile.TemporaryDirectory(prefix="vssw-study-file-") as scratch:
+        if isinstance(file, dict):
+            path = os.path.join(scratch, "study.json")
+            with open(path, "w", encoding="utf-8") as f:
+                json.dump({**cli._absolute_record_paths(file), "name": file.get("name", "study")}, f)
+            file = path
+        options = dict(threads=threads, shard=shard, resume=resume, force=force, strict=strict,
+                       no_plots=not (plots if plots is not None else out is not None), gnuplot=gnuplot,
+                       run_budget=run_budget)
+        args = ["study", cli._text("file", os.fspath(file)), f"--out={folder}", *cli._arguments(options), "--json"]
+        summary = json.loads(_run_command(args, progress, "study"))
+    return StudyResult(results=_read_csv(folder / "results.csv"), folder=folder, summary=summary)
+
+
+def _joined(names):
+    """A list of names as one comma-separated option value (a str as it is; None or empty: the option left out)."""
+    if not names:
+        return None
+    return names if isinstance(names, str) else ",".join(names)
+
+
+def report(out=None, *, suite="default", engines=None, cases=None, threads=None, plots=None, earthquake=None,
+           bench=None, gnuplot=None, data=None, run_budget=None, progress=False):
+    """Runs the validation suite and writes its report (`vssw report`): every case for the analytic model and each
+    engine, the metrics against the references and targets, the plots.
+
+    out: the report folder (created if missing). None: a new temporary folder, kept (ReportResult.folder), without
+        plots unless plots=True.
+    suite: "default", "full" or a suite file. engines: a list of engines (default every engine of this build but
+        simbody-rigid). cases: only these case ids (a list). threads: worker threads (default the available cores).
+    earthquake: "default", "none" or a study file of kind "ensemble" (default: "default", "none" with cases).
+    bench: a finished `vssw bench --out DIR` folder whose section ends the report. gnuplot: the gnuplot program.
+    data: the records' folder. run_budget: CPU seconds one engine run may take.
+    progress: True shows a bar over the (case, engine) tasks; a callable is called as progress(done, total, what).
+    Returns a vssw.ReportResult: metrics (metrics.csv), failures (failures.csv), rows (results.json's rows with
+    targets), each a pandas DataFrame, and the folder, report.md and report.html paths."""
+    import pandas as pd
+
+    folder = _folder(out, "vssw-report-")
+    options = dict(suite=suite, engines=_joined(engines), cases=_joined(cases),
+                   threads=threads, no_plots=not (plots if plots is not None else out is not None),
+                   earthquake=earthquake, bench=bench, gnuplot=gnuplot, data=data, run_budget=run_budget)
+    summary = _run_command(["report", f"--out={folder}", *cli._arguments(options)], progress, "report")
+    with open(folder / "results.json", encoding="utf-8") as f:
+        rows = pd.DataFrame(json.load(f)["rows"])
+    return ReportResult(metrics=_read_csv(folder / "metrics.csv"), failures=_read_csv(folder / "failures.csv"),
+                        rows=rows, folder=folder, markdown=folder / "report.md", html=folder / "report.html",
+                        summary=summary)

@@ -1,0 +1,232 @@
+"""The typed API's results: small dataclasses with attributes, NumPy arrays for trajectories, pandas DataFrames for
+tables (docs/python.md)."""
+
+import dataclasses
+import math
+import pathlib
+from typing import List, Optional, Tuple
+
+import numpy as np
+
+
+@dataclasses.dataclass(frozen=True)
+class Impact:
+    """One impact of a trajectory: theta1 changing sign (compare/metrics.hpp, the code `vssw compare` measures with).
+
+    t: crossing time [s], theta1 interpolated linearly between the samples either side.
+    theta_dot_before, theta_dot_after: theta1' either side [rad/s], extrapolated to t (NaN when not resolved).
+    ratio: theta_dot_after / theta_dot_before (the restitution of this impact; NaN when not resolved).
+    resolved: each side's flight had samples enough to extrapolate from."""
+
+    t: float
+    theta_dot_before: float
+    theta_dot_after: float
+    ratio: float
+    resolved: bool
+
+
+@dataclasses.dataclass(frozen=True)
+class Simulation:
+    """One backend's run of one wall (vssw.simulate). Arrays are NumPy float64, one value per sample:
+
+    t [s]; theta1 [rad] (the lower body's rotation, positive clockwise: tipping towards +x); theta1_dot [rad/s];
+    theta2 [rad] (the upper body's, negative while theta1 > 0; equal to theta1 for a parapet); top_dy [m] (the top
+    face's rise); kinetic, potential [J] (per metre of wall for the analytic model, for the scene's depth for the
+    engines); contacts (contact points in use; 0 for the analytic model); ground_acceleration [m/s^2] (a_h at each
+    sample, along +x).
+
+    Also: engine, version (of its library), settings (as used: dt, iterations, sample_dt, knobs), alpha [rad] (alpha1
+    of a VSSW, alpha of a parapet), theta0 [rad] (the release), t_end [s] (asked; the run may stop earlier at rest),
+    overturned, at_rest_at_end, steps (engine or integrator steps), warnings (the analytic model's own assumptions
+    failing along the run), impacts (list of Impact), peaks (list of (t [s], theta1 [rad]) turning points), period
+    [s] (4 x release to first impact; None without a release or an impact), max_abs_theta1 [rad], kinematics
+    (analytic: "exact" or "paper"; None for an engine or a parapet), ground_motion (its name, None in free
+    vibration)."""
+
+    engine: str
+    version: str
+    t: np.ndarray
+    theta1: np.ndarray
+    theta1_dot: np.ndarray
+    theta2: np.ndarray
+    top_dy: np.ndarray
+    kinetic: np.ndarray
+    potential: np.ndarray
+    contacts: np.ndarray
+    ground_acceleration: np.ndarray
+    settings: dict
+    alpha: float
+    theta0: float
+    t_end: float
+    overturned: bool
+    at_rest_at_end: bool
+    steps: int
+    warnings: List[str]
+    impacts: List[Impact]
+    peaks: List[Tuple[float, float]]
+    period: Optional[float]
+    max_abs_theta1: float
+    kinematics: Optional[str]
+    ground_motion: Optional[str]
+
+    @property
+    def theta1_over_alpha(self):
+        """theta1 / alpha: the rotation in units of the reference angle (1 is the corner over the pivot at rest)."""
+        return self.theta1 / self.alpha
+
+    @property
+    def energy(self):
+        """kinetic + potential [J]."""
+        return self.kinetic + self.potential
+
+    @property
+    def restitution(self):
+        """theta1' after / before the first impact when it is resolved, else None (what `vssw compare` measures)."""
+        if self.impacts and self.impacts[0].resolved:
+            return self.impacts[0].ratio
+        return None
+
+    def to_dataframe(self):
+        """The arrays as a pandas DataFrame, one column each."""
+        import pandas as pd
+
+        return pd.DataFrame({name: getattr(self, name) for name in _ARRAYS})
+
+    def __repr__(self):
+        return (f"Simulation(engine={self.engine!r}, samples={len(self.t)}, t_end={self.t_end:g} s, "
+                f"max |theta1|/alpha={self.max_abs_theta1 / self.alpha:.4g}, overturned={self.overturned}, "
+                f"period={self.period!r})")
+
+
+_ARRAYS = ["t", "theta1", "theta1_dot", "theta2", "top_dy", "kinetic", "potential", "contacts", "ground_acceleration"]
+
+
+def simulation_from(d):
+    fields = {f.name for f in dataclasses.fields(Simulation)}
+    values = {k: v for k, v in d.items() if k in fields}
+    values["impacts"] = [Impact(**i) for i in d["impacts"]]
+    values["peaks"] = [tuple(p) for p in d["peaks"]]
+    return Simulation(**values)
+
+
+@dataclasses.dataclass(frozen=True)
+class Metric:
+    """One metric of an engine against the analytic model (vssw.compare).
+
+    value: the engine's; reference: the analytic model's (both measured from their trajectories by the same code);
+    rel_error: value / reference - 1 (NaN when either is missing); target: the accuracy asked of an engine
+    (threshold and period 0.5 %, restitution 2 %: compare/targets.hpp); within_target: |rel_error| <= target."""
+
+    value: float
+    reference: float
+    rel_error: float
+    target: float
+
+    @property
+    def within_target(self):
+        return not math.isnan(self.rel_error) and abs(self.rel_error) <= self.target
+
+
+@dataclasses.dataclass(frozen=True)
+class ClosedForms:
+    """The closed forms beside the measured values: threshold_g (Eq. 12 / 17) [g], restitution (Eq. 19 / Housner's
+    e), restitution_whole_mechanism (the whole mechanism's plastic impact), period_linearised (Eq. 22 / Housner's at
+    theta0 [s]; NaN where it does not apply: an overburden, theta0 beyond A)."""
+
+    threshold_g: float
+    restitution: float
+    restitution_whole_mechanism: float
+    period_linearised: float
+
+
+@dataclasses.dataclass(frozen=True)
+class Comparison:
+    """One engine against the analytic model (vssw.compare): threshold [g], period [s], restitution and
+    restitution_amplitude (from the peaks either side of the first impact), each a Metric; closed_forms; theta0 (the
+    release, a fraction of alpha); settings (the engine's, as used); threshold_trials and impacts ((analytic, engine)
+    simulations of the threshold search, impacts in the free vibrations); failures (why a metric is NaN, one line
+    each); analytic_warnings (the analytic model's own assumptions failing along its free vibration); error (several
+    engines asked: the engine's failure, its metrics then NaN; None otherwise)."""
+
+    engine: str
+    version: str
+    threshold: Metric
+    period: Metric
+    restitution: Metric
+    restitution_amplitude: Metric
+    closed_forms: ClosedForms
+    theta0: float
+    settings: dict
+    threshold_trials: Tuple[int, int]
+    impacts: Tuple[int, int]
+    failures: List[str]
+    analytic_warnings: List[str]
+    error: Optional[str] = None
+
+    @property
+    def metrics(self):
+        """{"threshold": Metric, "period": ..., "restitution": ..., "restitution_amplitude": ...}."""
+        return {name: getattr(self, name) for name in ["threshold", "period", "restitution", "restitution_amplitude"]}
+
+    @property
+    def within_targets(self):
+        """Threshold, period and restitution all within their targets."""
+        return all(getattr(self, m).within_target for m in ["threshold", "period", "restitution"])
+
+    def to_dataframe(self):
+        """One row per metric: engine, metric, value, reference, rel_error, target, within_target."""
+        import pandas as pd
+
+        return pd.DataFrame([dict(engine=self.engine, metric=name, value=m.value, reference=m.reference,
+                                  rel_error=m.rel_error, target=m.target, within_target=m.within_target)
+                             for name, m in self.metrics.items()])
+
+
+def comparison_from(d):
+    return Comparison(
+        engine=d["engine"], version=d["version"],
+        threshold=Metric(**d["threshold"]), period=Metric(**d["period"]), restitution=Metric(**d["restitution"]),
+        restitution_amplitude=Metric(**d["restitution_amplitude"]), closed_forms=ClosedForms(**d["closed_forms"]),
+        theta0=d["theta0"], settings=d["settings"], threshold_trials=tuple(d["threshold_trials"]),
+        impacts=tuple(d["impacts"]), failures=list(d["failures"]), analytic_warnings=list(d["analytic_warnings"]))
+
+
+def failed_comparison(engine, message):
+    nan = float("nan")
+    missing = Metric(nan, nan, nan, nan)
+    return Comparison(engine=engine, version="", threshold=missing, period=missing, restitution=missing,
+                      restitution_amplitude=missing, closed_forms=ClosedForms(nan, nan, nan, nan), theta0=nan,
+                      settings={}, threshold_trials=(0, 0), impacts=(0, 0), failures=[message],
+                      analytic_warnings=[], error=message)
+
+
+@dataclasses.dataclass(frozen=True)
+class StudyResult:
+    """A study's outputs (vssw.study): results (results.csv as a DataFrame, read to the last bit), folder (the study
+    folder: results.csv, results.json, manifest.json, study.md, plots/), summary (the command's JSON summary)."""
+
+    results: "object"
+    folder: pathlib.Path
+    summary: dict
+
+    def __repr__(self):
+        return f"StudyResult(folder={str(self.folder)!r}, rows={len(self.results)})"
+
+
+@dataclasses.dataclass(frozen=True)
+class ReportResult:
+    """A validation report's outputs (vssw.report): metrics (metrics.csv: case_id, engine, metric, unit, reference,
+    analytic, engine_value, rel_error), failures (failures.csv: case_id, engine, message), rows (results.json's rows,
+    with target and within_target, as a DataFrame), folder, markdown (report.md), html (report.html), summary (the
+    command's printed summary, one line per engine)."""
+
+    metrics: "object"
+    failures: "object"
+    rows: "object"
+    folder: pathlib.Path
+    markdown: pathlib.Path
+    html: pathlib.Path
+    summary: str
+
+    def __repr__(self):
+        return f"ReportResult(folder={str(self.folder)!r}, metrics={len(self.metrics)} rows)"

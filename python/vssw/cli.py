@@ -1,0 +1,290 @@
+"""vssw.cli: the vssw program's commands from Python, options as keyword arguments, results as the commands' JSON
+(plain dicts). This was the whole package before the typed API (vssw.simulate, vssw.compare, vssw.study,
+vssw.report: docs/python.md); it is kept unchanged for the scripts written against it. vssw.wall, vssw.free,
+vssw.history, vssw.run and vssw.help are still these functions; the dict-returning compare and study are here.
+
+Every function runs the `vssw` program's command of the same name in this process (no subprocess, no binary on
+PATH) with its keyword arguments as the command's options, and returns the command's JSON as plain Python objects:
+
+    wall(**options)      `vssw wall`: the closed forms of a VSSW and of the parapet of the same size
+    free(**options)      `vssw free`: free vibration from rest at theta0 * alpha
+    history(**options)   `vssw history`: response to a record or a pulse; trace=True adds the time history
+    compare(**options)   `vssw compare`: engines against the analytic model
+    study(file, **kw)    `vssw study`: a study file (or a dict of its keys); its results.csv as a pandas DataFrame
+    run(command, ...)    any command with --json, e.g. run("check", bounds="bounds/ci.toml")
+    help(command)        the command's --help text: every option, unit and default
+
+Options: `name=value` is `--name value` with underscores as dashes (pulse_period=0.5 is --pulse-period 0.5); True
+is a bare flag and False or None leaves the option out; a list or tuple repeats the option (engine=["ode",
+"bullet"]); a dict is NAME=VALUE pairs (set={"slide_limit": 0.1} is --set slide_limit=0.1). Keys of the results are
+the JSON keys the README lists ("The vssw program"). Relative paths (records, study files) are read from the current
+directory, as the program reads them.
+
+Errors raise exceptions carrying the program's one-line message: bad input (exit code 2) InputError, a ValueError;
+a failed simulation (3) SimulationError, a RuntimeError; a bound out in `check` (1) BoundsError. All three derive
+from vssw.Error and keep the exit code, the program's stderr and, where the command printed one, its JSON (result).
+"""
+
+import json as _json
+import numbers as _numbers
+import os as _os
+import tempfile as _tempfile
+
+from . import _core
+from ._errors import BoundsError, Error, InputError, SimulationError
+
+# help() is left out of __all__: `from vssw import *` must not hide the built-in help.
+__all__ = ["wall", "free", "history", "compare", "study", "run", "Error", "InputError", "SimulationError",
+           "BoundsError"]
+
+_EXCEPTIONS = {_core.EXIT_BAD_INPUT: InputError, _core.EXIT_SIMULATION_FAILED: SimulationError,
+               _core.EXIT_OUT_OF_BOUNDS: BoundsError}
+# The prefixes of the program's error line (apps/cli.cpp); the exception's message is the line without them.
+_PREFIXES = ("vssw: error: ", "vssw: simulation failed: ", "vssw: check failed: ")
+
+
+def _bad_value(name, why):
+    return InputError(f"{name}: {why}", _core.EXIT_BAD_INPUT, "")
+
+
+def _text(name, text):
+    """A string as one argument. Refused: an empty one (the program would read an empty number as 0) and one with a
+    NUL character (the C argument would end there: "4\x00junk" was read as 4)."""
+    if isinstance(text, bytes):
+        raise _bad_value(name, f"a number, a string or a path is expected, got bytes {text!r}")
+    if text == "":
+        raise _bad_value(name, "an empty value; give a value, or None to leave the option out")
+    if "\x00" in text:
+        raise _bad_value(name, f"a value with a NUL character: {text!r}")
+    return text
+
+
+def _value_text(name, value):
+    """One option value as the program reads it: floats in full precision (repr round-trips), NaN and infinities
+    as the words the program refuses by name."""
+    if isinstance(value, (str, _os.PathLike)):
+        return _text(name, _os.fspath(value))
+    if isinstance(value, bool):  # a bare flag is True at the top level only (_arguments); here it would become 1
+        raise _bad_value(name, f"{value} is not a value (True and False turn a flag on and off)")
+    if isinstance(value, _numbers.Integral):
+        return str(int(value))
+    if isinstance(value, _numbers.Real):  # NumPy floats too: float() first, so that repr is "0.4", not "np.float64(0.4)"
+        return repr(float(value))  # "nan", "inf", "-inf" for those: the words the program refuses by name
+    raise InputError(f"{name}: a number, a string or a path is expected, got {type(value).__name__} {value!r}",
+                     _core.EXIT_BAD_INPUT, "")
+
+
+def _arguments(options):
+    """Keyword arguments as command-line arguments, in the order given."""
+    args = []
+    for name, value in options.items():
+        flag = "--" + name.replace("_", "-")
+        if value is None or value is False:
+            continue
+        if value is True:
+            args.append(flag)
+        elif isinstance(value, dict):
+            args += [f"{flag}={_text(name, str(key))}={_value_text(f'{name}[{key!r}]', v)}" for key, v in value.items()]
+        elif isinstance(value, (list, tuple)):
+            args += [f"{flag}={_value_text(name, v)}" for v in value]
+        else:
+            # --name=value, one argument: a value starting with '-' (a negative number) stays a value, and no value
+            # can be taken for the next option. (True for an option that needs a value gives the bare --name, which
+            # the program refuses by name: "--height needs a value".)
+            args.append(f"{flag}={_value_text(name, value)}")
+    return args
+
+
+def _message(stderr):
+    """The program's error line without its 'vssw: error: ' prefix (the last such line: a command may have warned
+    before)."""
+    lines = [line for line in stderr.splitlines() if line.startswith("vssw: ")]
+    line = lines[-1] if lines else stderr.strip()
+    for prefix in _PREFIXES:
+        if line.startswith(prefix):
+            return line[len(prefix):]
+    return line
+
+
+_HELP = ("--help", "-h")
+
+
+def _call(args):
+    """Runs `vssw ARGS --json` in this process; returns the parsed JSON or raises the exit code's exception. With
+    --help (help=True) the help text is returned instead: it is the answer asked for, not an error."""
+    if any(a in _HELP for a in args):
+        code, out, err = _core.run([str(a) for a in args])
+        if code == _core.EXIT_OK:
+            return out
+        raise _EXCEPTIONS.get(code, Error)(_message(err), code, err)
+    code, out, err = _core.run([str(a) for a in args] + ["--json"])
+    result = None
+    if out.strip():
+        try:
+            result = _json.loads(out)
+        except ValueError:
+            pass  # no JSON: the exception below carries the error line
+    if code == _core.EXIT_OK:
+        if result is None:
+            raise Error(f"vssw {args[0]} printed no JSON", code, err)
+        return result
+    raise _EXCEPTIONS.get(code, Error)(_message(err), code, err, result)
+
+
+def _reserved(options, names):
+    for name in names:
+        if name in options:
+            raise InputError(f"'{name}' is set by the vssw module itself; it cannot be given", _core.EXIT_BAD_INPUT,
+                             "")
+
+
+def run(command, *positional, **options):
+    """Any vssw command with --json, e.g. run("check", bounds="bounds/ci.toml") or
+    run("study", "merge", "s1", "s2", out="s"). Positional arguments are passed as they are, before the options.
+    Returns the parsed JSON; run("--help") and help=True return the help text."""
+    _reserved(options, ["json"])
+    words = [_text("command", _os.fspath(command))]
+    words += [_text(f"positional argument {i + 1}", _os.fspath(p)) for i, p in enumerate(positional)]
+    return _call([*words, *_arguments(options)])
+
+
+def _commands():
+    """The program's commands, read from its --help (the lines of its Subcommands section)."""
+    _, text, _ = _core.run(["--help"])
+    listed = text.split("Subcommands:", 1)[-1].splitlines()
+    return [line.split()[0] for line in listed if line.startswith("  ") and line.split()]
+
+
+def help(command=None):  # noqa: A001 (the module's own help, as `vssw COMMAND --help`)
+    """The --help text of a command (every option with its unit and default), or of the program."""
+    commands = _commands() if command is not None else []
+    if command is not None and command not in commands:
+        # `vssw NAME --help` with a name that is no command prints the program's help: refuse it here instead.
+        message = f"'{command}' is not a command; the commands are {', '.join(commands)}"
+        raise InputError(message, _core.EXIT_BAD_INPUT, "")
+    code, out, err = _core.run(([command] if command else []) + ["--help"])
+    if code != _core.EXIT_OK:
+        raise InputError(_message(err), code, err)
+    return out
+
+
+def wall(**options):
+    """`vssw wall`: the closed forms (Eqs. 12, 15, 19, 21, 22, 26; Housner's parapet). Options: height, thickness,
+    hinge (required), xi, density, g. Returns the JSON: alpha1, alpha2, R1, R2, threshold_g, restitution, A, P,
+    theta_lim, period_half_A, collapse_angle, ..., parapet {alpha, R, threshold_g, restitution, p}."""
+    return run("wall", **options)
+
+
+def free(trace=False, **options):
+    """`vssw free`: free vibration released from rest at theta0 (a fraction of alpha). Options: height, thickness,
+    hinge, theta0 (required), model, kinematics, impact, roller, xi, density, g, rtol, output_dt, csv, strict (True:
+    SimulationError when the model's own assumptions fail along the run, i.e. any warning). Returns the
+    JSON: impacts [{t, theta_dot_before, theta_dot_after}], peaks, peak_times, stop_time, falls, warnings, roller,
+    ...; with trace=True also "trace", as for history()."""
+    return _with_trace("free", trace, options)
+
+
+def _read_trace(path):
+    """The CSV the program wrote (a header of column names, then numbers) as {column: 1-D float array}."""
+    import numpy as np
+
+    with open(path, encoding="utf-8") as f:
+        header = f.readline().strip().split(",")
+        data = np.loadtxt(f, delimiter=",", ndmin=2)
+    if data.size == 0:
+        data = np.empty((0, len(header)))
+    return {name: data[:, i].copy() for i, name in enumerate(header)}
+
+
+def history(trace=False, **options):
+    """`vssw history`: the response from rest to a record (record=FILE, with scale= or pga=) or a pulse (pulse=
+    "sine"|"cosine"|"ricker"|"harmonic", amplitude=, pulse_period=). Other options as `free` (no theta0), and
+    output_dt, t_end, csv (a file to write the time history to). Returns the JSON; with trace=True also "trace":
+    the time history as NumPy arrays keyed by the CSV's columns (t, theta_over_alpha, theta_dot_over_ref,
+    E_over_Vr, ED_over_Vr, ag_g), read from csv= when given, else from a temporary file."""
+    return _with_trace("history", trace, options)
+
+
+def _with_trace(command, trace, options):
+    """The command's JSON; with trace, its --csv time history too (from csv= when given, else a temporary file)."""
+    if not trace:
+        return run(command, **options)
+    if options.get("csv"):
+        result = run(command, **options)
+        result["trace"] = _read_trace(_os.fspath(options["csv"]))
+        return result
+    with _tempfile.TemporaryDirectory(prefix="vssw-trace-") as folder:
+        path = _os.path.join(folder, "trace.csv")
+        result = run(command, **{**options, "csv": path})
+        result["trace"] = _read_trace(path)
+    return result
+
+
+def compare(**options):
+    """`vssw compare`: engine (a name, a list of names or "all"; required) against the analytic model, on the wall
+    of height, thickness, hinge (and xi, density, g, model, kinematics, impact, roller): threshold, period (theta0),
+    restitution; or, with record= or pulse=, the response from rest. Engine options: dt, iterations, set (a dict
+    {knob: value} or a list of "knob=value"), run_budget (CPU seconds one engine run may take; each runs in a child
+    process, so an engine library that crashes or passes its budget raises SimulationError, never ends Python). Returns the JSON (one engine: {engine, threshold {analytic, engine,
+    rel_error, ...}, period, restitution, ...}; several: {comparisons, engine_failures, wall_time_s}). A metric that
+    could not be measured raises SimulationError with the JSON as its `result`."""
+    return run("compare", **options)
+
+
+def _pandas():
+    """pandas when it imports, else None (pandas is optional: study() then returns a list of dicts)."""
+    try:
+        import pandas
+    except ImportError:
+        return None
+    return pandas
+
+
+def _absolute_record_paths(spec):
+    """A study given as a dict has no folder of its own: its excitation's `file` (one path or a list), relative to
+    the study file's folder in a file, is made relative to the current directory instead."""
+
+    def fix(excitation):
+        if not isinstance(excitation, dict) or "file" not in excitation:
+            return excitation
+        files = excitation["file"]
+        absolute = [_os.path.abspath(f) for f in files] if isinstance(files, list) else _os.path.abspath(files)
+        return {**excitation, "file": absolute}
+
+    spec = dict(spec)
+    if "excitation" in spec:
+        spec["excitation"] = fix(spec["excitation"])
+    if isinstance(spec.get("part"), list):
+        spec["part"] = [{**p, "excitation": fix(p["excitation"])} if isinstance(p, dict) and "excitation" in p else p
+                        for p in spec["part"]]
+    return spec
+
+
+def study(file, out=None, **options):
+    """`vssw study`: `file` is a study file (.toml or .json, README "Studies") or a dict of its keys (a relative
+    record `file` in it is read from the current directory). Writes the study folder into `out` (plots and prose
+    included); without `out`, into a temporary folder removed afterwards, with no plots. Other options: threads,
+    shard ("K/N"), resume, force, strict, no_plots, gnuplot, run_budget. Returns results.csv as a pandas DataFrame (its
+    `attrs["summary"]` the command's JSON summary) when pandas imports, else the rows of results.json as a list of
+    dicts (the same columns; empty values None)."""
+    _reserved(options, ["json"])
+    with _tempfile.TemporaryDirectory(prefix="vssw-study-") as scratch:
+        if isinstance(file, dict):
+            name = file.get("name", "study")
+            path = _os.path.join(scratch, "study.json")
+            with open(path, "w", encoding="utf-8") as f:
+                _json.dump({**_absolute_record_paths(file), "name": name}, f)
+            file = path
+        folder = _os.fspath(out) if out is not None else _os.path.join(scratch, "out")
+        if out is None:
+            options.setdefault("no_plots", True)
+        summary = run("study", file, out=folder, **options)
+        pandas = _pandas()
+        if pandas is not None:
+            # round_trip: pandas' default parser can be 1 ulp off the 17 digits written (measured on periods).
+            frame = pandas.read_csv(_os.path.join(folder, "results.csv"), float_precision="round_trip")
+            frame.attrs["summary"] = summary
+            return frame
+        with open(_os.path.join(folder, "results.json"), encoding="utf-8") as f:
+            return _json.load(f)["rows"]
+
