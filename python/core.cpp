@@ -1,4 +1,4 @@
-// vssw._core: the library behind the pure-Python package vssw/ (docs/python.md).
+// vssw._core: the library behind the pure-Python package vssw/ (docs/guide/python.md).
 //  - run(args): the vssw program's commands in-process, exactly what `vssw ARGS...` would give (vssw.cli). The GIL
 //    stays held: a command may run an engine library in this process (`vssw bench` times them in-process, and ODE's
 //    library is not re-entrant), and nothing in it calls back into Python.

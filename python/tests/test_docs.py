@@ -1,4 +1,4 @@
-"""docs/python.md's example runs as printed, with matplotlib (a plot saved) or without it (a table printed)."""
+"""docs/guide/python.md's example runs as printed, with matplotlib (a plot saved) or without it (a table printed)."""
 import builtins
 import contextlib
 import io
@@ -10,7 +10,7 @@ EXAMPLE_LINES = 20  # the page promises a wall to a plotted comparison in under 
 
 
 def example():
-    text = (REPO / "docs" / "python.md").read_text(encoding="utf-8")
+    text = (REPO / "docs" / "guide" / "python.md").read_text(encoding="utf-8")
     return re.search(r"```python\n(.*?)```", text, re.S).group(1)
 
 
@@ -18,7 +18,7 @@ def run(code, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     printed = io.StringIO()
     with contextlib.redirect_stdout(printed):
-        exec(compile(code, "docs/python.md", "exec"), {})  # noqa: S102 (the page's own example)
+        exec(compile(code, "docs/guide/python.md", "exec"), {})  # noqa: S102 (the page's own example)
     return printed.getvalue()
 
 

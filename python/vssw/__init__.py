@@ -1,5 +1,5 @@
 """vssw from Python: the rocking of masonry walls (Sorrentino, Masiani & Griffith 2008) and the engines measured
-against it, over the library (docs/python.md).
+against it, over the library (docs/guide/python.md).
 
 The typed API (keyword arguments with units, results as objects, arrays as NumPy, tables as pandas):
 

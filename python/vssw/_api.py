@@ -1,4 +1,4 @@
-"""The typed API over the library (docs/python.md): simulate, compare, study, report, engines, engine_settings."""
+"""The typed API over the library (docs/guide/python.md): simulate, compare, study, report, engines, engine_settings."""
 
 import json
 import numbers

@@ -1,5 +1,5 @@
 """The typed API's results: small dataclasses with attributes, NumPy arrays for trajectories, pandas DataFrames for
-tables (docs/python.md)."""
+tables (docs/guide/python.md)."""
 
 import dataclasses
 import math

@@ -1,6 +1,6 @@
 """vssw.cli: the vssw program's commands from Python, options as keyword arguments, results as the commands' JSON
 (plain dicts). This was the whole package before the typed API (vssw.simulate, vssw.compare, vssw.study,
-vssw.report: docs/python.md); it is kept unchanged for the scripts written against it. vssw.wall, vssw.free,
+vssw.report: docs/guide/python.md); it is kept unchanged for the scripts written against it. vssw.wall, vssw.free,
 vssw.history, vssw.run and vssw.help are still these functions; the dict-returning compare and study are here.
 
 Every function runs the `vssw` program's command of the same name in this process (no subprocess, no binary on
