@@ -1,20 +1,19 @@
 #pragma once
-// The VSSW's top off the roller (a roller that can only push: docs/guide/program.md "The model checks its own assumptions"). Where
-// the bilateral roller would pull, the pivot-side top corner leaves the roller line and the wall moves with two
-// degrees of freedom, q = (theta1, theta2), base pivot and hinge kept (analytic/two_block.hpp). The slot between the
-// two top guides is narrow (2b (1 - cos theta2)), so a flight off the roller ends in one of:
-//  - the corner lands back on the roller (plastic: the kinetic-energy projection onto the one-DOF mechanism):
+// The VSSW's top off the roller (a roller that can only push: docs/guide/program.md "The model checks its own
+// assumptions"). Where the bilateral roller would pull, the pivot-side top corner leaves the roller line and the wall
+// moves with two degrees of freedom, q = (theta1, theta2), base pivot and hinge kept (analytic/two_block.hpp). The slot
+// between the two top guides is narrow (2b (1 - cos theta2)), so a flight off the roller ends in one of: - the corner
+// lands back on the roller (plastic: the kinetic-energy projection onto the one-DOF mechanism):
 //    the one-DOF model takes over;
-//  - the far top corner lands on the other guide (plastic): the wall moves on that guide as a one-DOF mechanism
+// - the far top corner lands on the other guide (plastic): the wall moves on that guide as a one-DOF mechanism
 //    until the guide would pull (back to free flight) or theta1 reaches 0. There both guides' constraints have the
 //    same Jacobian (both top corners are at the same height at rest), so the base impact is the one-DOF model's and
 //    the far guide is the new side's roller;
-//  - theta1 reaching 0 in free flight: the slot has closed (theta2 ~ 0) and base and guides strike at once, taken
+// - theta1 reaching 0 in free flight: the slot has closed (theta2 ~ 0) and base and guides strike at once, taken
 //    as the roller landing an instant before the one-DOF base impact (off_roller.cpp says why);
-//  - the upper block turning past the roller's lock of Eq. (26) (the wall folded): overturning;
-//  - the collapse angle, or the end of the run.
-// Integrated with Dormand-Prince 8(5,3) on (theta1, theta2, theta1', theta2', work of the ground); events located on
-// its continuous extension.
+// - the upper block turning past the roller's lock of Eq. (26) (the wall folded): overturning; - the collapse angle, or
+// the end of the run. Integrated with Dormand-Prince 8(5,3) on (theta1, theta2, theta1', theta2', work of the ground);
+// events located on its continuous extension.
 #include <functional>
 #include <vector>
 

@@ -30,14 +30,13 @@
 // Q = sum_i J_Gi^T F_i + J_top^T (0, -N). Energies relative to rest agree with ExactVssw's: V_w = g sum_i m_i
 // (y_Gi(q) - y_Gi(0)) and the work of N = -N (y_top(q) - y_top(0)), so an energy balance carries over.
 //
-// Guides. The top is held between two frictionless vertical lines a wall-thickness apart (docs/guide/report.md, "The validation
-// report"): the roller, x = 0 through the base pivot, holds the pivot-side top corner C; the other guide, x = -2b side,
-// holds the far top corner F. Each guide's gap is n . p + offset >= 0 with n its inward normal: the roller's
-// g(q) = -side x_C (the corner's distance from the roller line, positive inside the wall's line), the far guide's
-// side x_F + 2b. A guide pushes its corner along n with a force lambda >= 0 [N/m], whose generalised force is
-// J_g^T lambda (J_g = dg/dq):
-// M q'' + c = Q + J_g^T lambda. As a bilateral constraint (on the roller: the exact one-DOF mechanism, Eq. 2),
-// g = 0 and g'' = J_g q'' + dJ_g/dt q' = 0 give
+// Guides. The top is held between two frictionless vertical lines a wall-thickness apart (docs/guide/report.md, "The
+// validation report"): the roller, x = 0 through the base pivot, holds the pivot-side top corner C; the other guide, x
+// = -2b side, holds the far top corner F. Each guide's gap is n . p + offset >= 0 with n its inward normal: the
+// roller's g(q) = -side x_C (the corner's distance from the roller line, positive inside the wall's line), the far
+// guide's side x_F + 2b. A guide pushes its corner along n with a force lambda >= 0 [N/m], whose generalised force is
+// J_g^T lambda (J_g = dg/dq): M q'' + c = Q + J_g^T lambda. As a bilateral constraint (on the roller: the exact one-DOF
+// mechanism, Eq. 2), g = 0 and g'' = J_g q'' + dJ_g/dt q' = 0 give
 //   lambda = -(J_g M^-1 (Q - c) + dJ_g/dt q') / (J_g M^-1 J_g^T),  q'' = M^-1 (Q - c + J_g^T lambda).
 // Landing (plastic impact of a corner on its guide, no rebound): an impulse Lambda J_g^T takes q'- to
 //   q'+ = q'- + M^-1 J_g^T Lambda,  Lambda = -J_g q'- / (J_g M^-1 J_g^T),

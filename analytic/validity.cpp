@@ -14,7 +14,8 @@ std::vector<std::string> validity_warnings(const RockingModel& model, std::optio
     const double alpha = model.reference_angle();
     const VsswGeometry* w = model.vssw_geometry();
     if (w && kinematics == Kinematics::paper) {
-        // Eq. (3) strays from the roller as theta1 grows (docs/model/paper.md "Where each kinematics stops being valid").
+        // Eq. (3) strays from the roller as theta1 grows (docs/model/paper.md "Where each kinematics stops being
+        // valid").
         const auto limit = eq3_validity_limit(*w, kEq3DriftFraction);
         if (limit && result.max_abs_theta > *limit)
             out.push_back(fmt::format(

@@ -168,8 +168,8 @@ void run_check(const CheckOptions& o, std::ostream& out) {
         results.threads = r.threads;
     }
     std::vector<compare::BoundVerdict> verdicts = compare::evaluate(bounds, results);
-    // [[stress]] bounds: the named stress cases in their quick form (a few seconds; docs/guide/stress.md), counted in the
-    // check's wall time.
+    // [[stress]] bounds: the named stress cases in their quick form (a few seconds; docs/guide/stress.md), counted in
+    // the check's wall time.
     const auto stress_start = std::chrono::steady_clock::now();
     const auto stress_verdicts = check_stress_bounds(bounds.stress, stress_run);
     results.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - stress_start).count();

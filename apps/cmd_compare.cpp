@@ -34,8 +34,8 @@ namespace {
 
 using compare::kMinRelease;  // compare/experiments.hpp says why 0.01
 
-// The reference of every comparison with an engine is the exact kinematics (docs/model/engines-and-metrics.md): the default here, unlike the
-// other commands'.
+// The reference of every comparison with an engine is the exact kinematics (docs/model/engines-and-metrics.md): the
+// default here, unlike the other commands'.
 ModelOptions exact_by_default() {
     ModelOptions m;
     m.kinematics = "exact";

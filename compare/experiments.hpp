@@ -1,7 +1,8 @@
 #pragma once
 // Experiments run through any Engine (the analytic model included, as multibody::AnalyticEngine), measured with
 // compare/metrics.hpp only: the threshold acceleration by bisection on simulations, the free vibration from rest, and
-// the comparison of an engine with the analytic model on threshold, period and restitution (docs/model/engines-and-metrics.md).
+// the comparison of an engine with the analytic model on threshold, period and restitution
+// (docs/model/engines-and-metrics.md).
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,12 +37,12 @@ using multibody::WallScene;
 // parapet, 2.4 s for 0.9 m x 0.11 m; an excess of 1e-5 lifts each at 0.80 of it (the 1/1.25 margin: the estimate is
 // accurate), 1e-6 does not lift at all.
 //
-// Where to look: the analytic model's rest threshold E (Eq. 12 / Eq. 17, exact kinematics, the scene the engines
-// build) is already known, and every engine that meets the threshold target (0.5 %) lies within it by construction;
-// measured at their defaults they are within 0.15 % (docs/model/engines-and-metrics.md). The search therefore starts from the bracket
-// [E / bracket, E * bracket] and tries its upper end (it must lift). Only when an end does not hold (an engine more
-// than 1 % off, a knob that moves the threshold) is that end moved out geometrically (the bracket factor squared each
-// time: 1 %, 2 %, 4 %, 8 %, ... in log), the end that failed becoming the other end of the bracket.
+// Where to look: the analytic model's rest threshold E (Eq. 12 / Eq. 17, exact kinematics, the scene the engines build)
+// is already known, and every engine that meets the threshold target (0.5 %) lies within it by construction; measured
+// at their defaults they are within 0.15 % (docs/model/engines-and-metrics.md). The search therefore starts from the
+// bracket [E / bracket, E * bracket] and tries its upper end (it must lift). Only when an end does not hold (an engine
+// more than 1 % off, a knob that moves the threshold) is that end moved out geometrically (the bracket factor squared
+// each time: 1 %, 2 %, 4 %, 8 %, ... in log), the end that failed becoming the other end of the bracket.
 //
 // Where to look next (guided): a trial that lifted says when, and the time it took points at the threshold: the one
 // under which the analytic wall, linearised as above and driven through the ramp, reaches the lift angle at that time.

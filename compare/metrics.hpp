@@ -1,7 +1,7 @@
 #pragma once
-// Metrics of a sampled trajectory, one code path for every backend (docs/model/engines-and-metrics.md: the metrics are defined once for
-// every backend): the analytic integrator and each engine are measured by these functions only, from the samples of a
-// multibody::Trajectory, never from a backend's own event list.
+// Metrics of a sampled trajectory, one code path for every backend (docs/model/engines-and-metrics.md: the metrics are
+// defined once for every backend): the analytic integrator and each engine are measured by these functions only, from
+// the samples of a multibody::Trajectory, never from a backend's own event list.
 //
 // Impacts are where theta1 changes sign; turning points (peaks) are where theta1_dot changes sign away from
 // theta1 = 0. A sample with theta1 == 0 and theta1_dot == 0 exactly is the wall at rest (the analytic model writes

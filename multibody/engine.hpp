@@ -158,8 +158,8 @@ public:
     // Whether settings.dt is only the trajectory's sampling (the analytic model, Simbody's compliant route: their
     // integrators pick their own steps and see the ground motion between samples) rather than the engine's step.
     virtual bool dt_is_a_reporting_interval() const { return false; }
-    // Wall time per simulated second at the default settings [s/s], measured (docs/measurements/speed.md): callers order their
-    // tasks longest first by it (compare/task_pool.hpp); only the order depends on it.
+    // Wall time per simulated second at the default settings [s/s], measured (docs/measurements/speed.md): callers
+    // order their tasks longest first by it (compare/task_pool.hpp); only the order depends on it.
     virtual double cost_per_simulated_second() const = 0;
 };
 

@@ -38,9 +38,9 @@ struct BaseCorners {
     double right_dx, right_y, left_dx, left_y;
 };
 
-// Steps (or reports) one engine run may take: a step so small that a run would take more is refused as bad input,
-// not left to run for hours (ODE costs 2.3 ms per simulated second at its 1 ms step, docs/measurements/speed.md: about 2 us a
-// step, so 1e8 steps are minutes; --dt 1e-9 asked for 3e9 per threshold trial).
+// Steps (or reports) one engine run may take: a step so small that a run would take more is refused as bad input, not
+// left to run for hours (ODE costs 2.3 ms per simulated second at its 1 ms step, docs/measurements/speed.md: about 2 us
+// a step, so 1e8 steps are minutes; --dt 1e-9 asked for 3e9 per threshold trial).
 constexpr double kMaxStepsPerRun = 1e8;
 
 // A wall at rest stays at rest while |a_h| is below its rest threshold (Eq. 12 / 17: no rocking solution leaves

@@ -1,6 +1,7 @@
-// The stress cases (docs/measurements/stress.md). Each names the input that makes it hard and what is held of the result; the
-// tolerances are stability criteria, not the accuracy targets of the validation suite (an engine that meets those
-// on ordinary walls is asked here only not to break, and to agree with the analytic model where the answer is known).
+// The stress cases (docs/measurements/stress.md). Each names the input that makes it hard and what is held of the
+// result; the tolerances are stability criteria, not the accuracy targets of the validation suite (an engine that meets
+// those on ordinary walls is asked here only not to break, and to agree with the analytic model where the answer is
+// known).
 #include <cmath>
 
 #include <fmt/format.h>

@@ -12,10 +12,10 @@
 namespace vssw::stress {
 
 // Time limits per case and backend [s]: the quick set's runs took up to 15 s each on 2 cores under load 21
-// (simbody-rigid holding the threshold pulse), 30 s timed that one out with a second run beside it; the full set's
-// 600 s harmonic and 0.01 x steps take up to minutes (simbody-rigid's harmonic 297 s idle, so the full limit is twice
-// that); the limits leave room for a loaded machine (docs/guide/stress.md). The [[stress]] bounds of `vssw check` use the
-// quick one.
+// (simbody-rigid holding the threshold pulse), 30 s timed that one out with a second run beside it; the full set's 600
+// s harmonic and 0.01 x steps take up to minutes (simbody-rigid's harmonic 297 s idle, so the full limit is twice
+// that); the limits leave room for a loaded machine (docs/guide/stress.md). The [[stress]] bounds of `vssw check` use
+// the quick one.
 constexpr double kQuickTimeLimit = 120.0;
 constexpr double kFullTimeLimit = 600.0;
 

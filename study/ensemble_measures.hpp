@@ -41,8 +41,9 @@ struct StripeShare {
 struct SeriesMeasures {
     std::size_t series = 0;  // in StudyData::series
     std::size_t wall = 0;    // in EnsembleMeasures::walls
-    // The fragility fit: "pga_ida" (each record's collapse PGA), "pga_stripes" (the maximum likelihood over the stripes'
-    // overturning counts, compare/stripe_fragility.hpp; when the series has no IDA), "" when none was attempted.
+    // The fragility fit: "pga_ida" (each record's collapse PGA), "pga_stripes" (the maximum likelihood over the
+    // stripes' overturning counts, compare/stripe_fragility.hpp; when the series has no IDA), "" when none was
+    // attempted.
     std::string intensity;
     bool fitted() const { return !intensity.empty(); }
     compare::FitBootstrap fit;

@@ -98,8 +98,8 @@ TEST(HingeNearEnds, RunCleanlyInBothKinematics) {
     }
 }
 
-// The finding of docs/measurements/findings.md, now in the core: released from 0.8 alpha1 at xi 0.5 the exact kinematics need the roller
-// to pull (Table 1 #7 and #2); from 0.5 alpha1, or at xi 0, it pushes throughout.
+// The finding of docs/measurements/findings.md, now in the core: released from 0.8 alpha1 at xi 0.5 the exact
+// kinematics need the roller to pull (Table 1 #7 and #2); from 0.5 alpha1, or at xi 0, it pushes throughout.
 TEST(Supports, TheRollersSignAlongFreeFlights) {
     struct Case {
         const char* name;

@@ -698,7 +698,8 @@ TEST(CliHardening, CompareWithAnUnmeasuredMetricExitsThreeWithTheReason) {
 // The analytic model's own assumptions, as a user meets them (issue: no silent wrong answers).
 namespace {
 
-// Table 1 #7 at xi 0.5: released from 0.8 alpha1 its exact kinematics need the roller to pull (docs/measurements/findings.md).
+// Table 1 #7 at xi 0.5: released from 0.8 alpha1 its exact kinematics need the roller to pull
+// (docs/measurements/findings.md).
 std::vector<std::string> t1n7_heavy() { return specimen_args(7) + std::vector<std::string>{"--xi", "0.5"}; }
 
 }  // namespace

@@ -182,7 +182,8 @@ TEST(IsolatedEngine, ARunThatNeverEndsFailsAtItsBudgetNamingIt) {
 
 TEST(RunBudget, TheDefaultGrowsWithTheStepsAndAGivenOneIsChecked) {
     multibody::RunBudget::set(std::nullopt);
-    // 30 s + 1 ms for each of a 2 s run's 2,000 steps at 1 ms (docs/guide/program.md's figure); twice the steps, 2 s more.
+    // 30 s + 1 ms for each of a 2 s run's 2,000 steps at 1 ms (docs/guide/program.md's figure); twice the steps, 2 s
+    // more.
     EXPECT_DOUBLE_EQ(multibody::RunBudget::seconds(2.0, 1e-3), 32.0);
     EXPECT_DOUBLE_EQ(multibody::RunBudget::seconds(4.0, 1e-3), 34.0);
     EXPECT_NE(multibody::RunBudget::describe(2.0, 1e-3).find("--run-budget"), std::string::npos);

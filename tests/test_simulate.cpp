@@ -379,8 +379,9 @@ TEST(Simulate, OutputGridHasNoGapsAcrossRestAndTheSummedTailOfImpacts) {
 }
 
 TEST(Simulate, VsswDampsMoreThanTheParapetLikeSection5Says) {
-    // Sect. 5: equivalent viscous damping from the logarithmic decrement over four cycles (eight half-cycles)
-    // after release at theta0/alpha = 0.7, for Lam's parapet and Doherty's VSSW. See docs/model/paper.md ("§5 damping") for the values.
+    // Sect. 5: equivalent viscous damping from the logarithmic decrement over four cycles (eight half-cycles) after
+    // release at theta0/alpha = 0.7, for Lam's parapet and Doherty's VSSW. See docs/model/paper.md ("§5 damping") for
+    // the values.
     auto zeta = [](const RockingModel& m) {
         const SimulationResult r = free_vibration(m, 0.7 * m.reference_angle());
         const double delta = std::log(std::abs(r.peaks.at(0).theta) / std::abs(r.peaks.at(8).theta)) / 4.0;

@@ -31,8 +31,8 @@ kind = "free"
 theta0 = 0.5
 )";
 
-// The unilateral roller fails its energy ceiling on Table 1 #6 at xi 0.5 from 0.8 alpha1 (docs/measurements/findings.md): a study with a
-// failed row.
+// The unilateral roller fails its energy ceiling on Table 1 #6 at xi 0.5 from 0.8 alpha1
+// (docs/measurements/findings.md): a study with a failed row.
 const char* const kFailingStudy = R"(
 metrics = ["period"]
 [wall]

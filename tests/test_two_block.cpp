@@ -1,8 +1,9 @@
 // The two-block model (analytic/two_block.hpp): on the roller line it is the exact one-DOF model of model.cpp
 // (positions, energies, acceleration); Newton-Euler agrees with the Lagrangian (residual zero, guide force = the
-// multiplier) and with statics at the threshold of Eq. (12); the roller force's sign along free flights (docs/measurements/findings.md's
-// open finding) and what the free motion does where it would pull (the far guide catches the upper block); the free
-// two-DOF motion conserves energy; a landing is a projection; side -1 is the mirror image.
+// multiplier) and with statics at the threshold of Eq. (12); the roller force's sign along free flights
+// (docs/measurements/findings.md's open finding) and what the free motion does where it would pull (the far guide
+// catches the upper block); the free two-DOF motion conserves energy; a landing is a projection; side -1 is the mirror
+// image.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -261,8 +262,9 @@ RollerRange roller_along_flight(const VsswGeometry& w, double theta0) {
 }
 
 TEST(TwoBlock, RollerForceAlongFreeFlightsHasTheReadmesSigns) {
-    // The open finding of then (docs/measurements/findings.md) (a scratch Newton-Euler check by finite differences, independent of this code): at
-    // xi 0.5 from 0.8 alpha1 the roller must pull near the release; from 0.5 alpha1 or at xi 0 it pushes throughout.
+    // The open finding of then (docs/measurements/findings.md) (a scratch Newton-Euler check by finite differences,
+    // independent of this code): at xi 0.5 from 0.8 alpha1 the roller must pull near the release; from 0.5 alpha1 or at
+    // xi 0 it pushes throughout.
     constexpr double kReadmeRel = 0.01;  // the findings page prints integers (0.6 % on -87) from finite differences
     struct Flight {
         const char* name;

@@ -29,8 +29,8 @@ struct EngineBound {
     double max_error;
 };
 
-// The verdicts `vssw stress --quick` may give (docs/guide/stress.md): each listed case on each listed engine must end with
-// one of `allowed` ("ok", "refused", "failed"). Held in apps/ (cmd_check.cpp), which runs the stress cases.
+// The verdicts `vssw stress --quick` may give (docs/guide/stress.md): each listed case on each listed engine must end
+// with one of `allowed` ("ok", "refused", "failed"). Held in apps/ (cmd_check.cpp), which runs the stress cases.
 struct StressBound {
     std::vector<std::string> case_ids;  // stress case names (stress/cases.cpp)
     std::vector<std::string> engines;   // empty: every backend compiled in

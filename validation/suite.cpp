@@ -210,9 +210,9 @@ void compute_reference(const TaskContext& x) {
         case CaseKind::history: {
             const Excitation ex = history_excitation(x);
             ref.history = analytic.simulate(x.wall.scene, ex, analytic_reference_settings());
-            // A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in
-            // place of Eq. (19) (the impact the engines make: docs/model/engines-and-metrics.md): does the impact law account for a
-            // difference in peaks?
+            // A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in place
+            // of Eq. (19) (the impact the engines make: docs/model/engines-and-metrics.md): does the impact law account
+            // for a difference in peaks?
             if (x.wall.scene.vssw) {
                 const multibody::Trajectory whole =
                     analytic.simulate(x.wall.scene, ex, whole_mechanism_settings(*x.wall.scene.vssw));
@@ -533,9 +533,9 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     std::vector<TaskOutput> outputs(tasks.size());
 
     // Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost the suite more
-    // than they gain: a fork per simulation of this large process, for ODE's small share of the suite at its 1 ms
-    // step (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s without, docs/measurements/speed.md
-    // "Speed"). ODE's tasks take turns instead (run_cases).
+    // than they gain: a fork per simulation of this large process, for ODE's small share of the suite at its 1 ms step
+    // (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s without,
+    // docs/measurements/speed.md "Speed"). ODE's tasks take turns instead (run_cases).
     CaseRunOptions run_options;
     run_options.threads = options.threads;
     if (options.progress)

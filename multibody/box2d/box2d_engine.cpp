@@ -4,16 +4,16 @@
 // Scene (from the analytic description; depth 1 m, so a body's mass is the block's mass per unit depth, as in the
 // paper; units metres, kilograms, seconds: the Fig. 6 wall is 4 m tall and ~1.4e3 kg per block, well inside float's
 // range, and its corners are known to ~4e-7 m, float's resolution at 4 m):
-//  - ground: a static body (kinematic with moving_supports = 1) with one edge along y = 0;
+//  - ground: a static body (kinematic with moving_supports = 1) with one edge along y = 0 (y = -2 skin with a skin);
 //  - lower and upper blocks: dynamic bodies with one box polygon each, (b, h1) and (b, h2) (one (b, h) for a
 //    parapet); density m / (4 b h), so Box2D's mass and central inertia are the block's, m (b^2 + h^2) / 3;
-//  - every polygon and the edge with m_radius = 0. Box2D gives polygons and edges a skin of b2_polygonRadius = 1 cm
+//  - every polygon and the edge with m_radius = 0 (unless the skin setting puts it back). Box2D gives polygons and edges a skin of b2_polygonRadius = 1 cm
 //    by default: the block then rolls on rounded corners, which raises its effective I_O by 2 r h / (4/3 R^2) and
 //    the period by 0.37 % (measured on the 4 x 0.4 m parapet: +0.30 % at 1 ms against -0.072 % with radius 0;
 //    docs/engines.md "Box2D");
 //  - contacts: Box2D's own (polygon-edge at the base, polygon-polygon at the hinge, at most 2 points per pair);
-//    collision filters keep every pair that cannot touch out (the upper block and the ground, the roller's parts
-//    and the blocks);
+//    collision filters keep the roller's parts apart from the blocks and the ground (the upper block and the ground
+//    may meet, but never come near each other);
 //  - the roller (VSSW only), unilateral by default, as every other adapter's: a circle fixture of radius r centred on
 //    each top corner of the upper block (density 0: no mass), frictionless, meeting only a frictionless vertical
 //    edge of the ground body at x = +-(b + r). A circle against a line holds its centre r from the line, so the
@@ -34,7 +34,6 @@
 
 #include <box2d/box2d.h>
 
-#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -79,8 +78,8 @@ struct Knobs {
 // Fig. 6 wall's half thickness; a skin near b would round the block into a disc.
 constexpr double kMaxSkin = 0.05;
 
-// Ranges (SettingDescription::lo/hi): switches 0/1; the skin as kMaxSkin says; position iterations from 0 (no position pass) to
-// kMaxPositionIterations.
+// Ranges (SettingDescription::lo/hi): switches 0/1; the skin as kMaxSkin says; position iterations from 0 (no position
+// pass) to kMaxPositionIterations.
 std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
         {"dt", "0.001", "s",
@@ -344,8 +343,6 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
         const double t = static_cast<double>(i) * dt;
         const double theta = clockwise_angle(lower);
         const double rate = clockwise_rate(lower);
-        if (!std::isfinite(theta) || !std::isfinite(rate))
-            throw EngineFailure(fmt::format("Box2D: the wall's rotation is not finite at t = {:.6g} s", t));
         const double x_g = w.ground().GetPosition().x;
         const b2Vec2 right = world_point(lower, s.b, -s.h_lower), left = world_point(lower, -s.b, -s.h_lower);
         const auto verdict =  // corners relative to the (moving) ground

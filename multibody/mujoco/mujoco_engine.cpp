@@ -9,8 +9,8 @@
 //    inertias given (not from the geoms), both children of the world body: MuJoCo drops contacts between a body and
 //    its parent by default (mjDSBL_FILTERPARENT), so an upper block nested in the lower would lose the hinge;
 //  - contacts: only the pairs the wall can touch, declared as <pair>s (every geom's contype and conaffinity are 0):
-//    ground-lower (box-plane: the corners), lower-upper (box-box: the hinge corners) with friction, and (VSSW only)
-//    the roller;
+//    ground-lower (box-plane: the corners), the upper block's bottom-corner spheres on the lower block's face box
+//    (the hinge; flush box-box contact is broken in 2.2.2, below) with friction, and (VSSW only) the roller;
 //  - the roller, one-sided as in the other adapters (docs/engines.md "Bullet"): a tiny sphere at each top corner of
 //    the upper block, set in by its radius so that its outer point is the corner's line, against a frictionless
 //    (condim 1) plane at x = +b (normal -x) and one at x = -b (normal +x). Both guides are in every step; a sphere
@@ -29,7 +29,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include <algorithm>
+#include <stdexcept>
 #include <array>
 #include <cmath>
 #include <cstring>

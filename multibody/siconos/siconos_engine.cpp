@@ -16,9 +16,9 @@
 //    adapters apply it); ground motion: pseudo-forces -m a_h(t) at the centres of mass, a_h at the step's midpoint.
 //
 // Impacts: Newton's law at each contact, e = 0 by default (the plastic landing of every other adapter), so a landing is
-// the plastic impact of the whole new mechanism (pivot, hinge, roller; docs/guide/report.md "The validation report", --impact
-// whole-mechanism). Settings e_ground, e_hinge and e_roller set the coefficient per kind of contact (docs/engines.md,
-// "Siconos").
+// the plastic impact of the whole new mechanism (pivot, hinge, roller; docs/guide/report.md "The validation report",
+// --impact whole-mechanism). Settings e_ground, e_hinge and e_roller set the coefficient per kind of contact
+// (docs/engines.md, "Siconos").
 //
 // Time stepping: Moreau-Jean (theta-method on the smooth part, impulses over the step; a contact joins the step's
 // problem when its gap predicted half a step ahead closes). The one-step problem is a 2-D frictional contact problem
@@ -234,8 +234,9 @@ void on_solver_output(int info, Simulation*) {
 
 // The kernel calls BLAS on matrices of 6 x 6 at most. Debian's default BLAS is OpenBLAS with a thread pool, whose
 // threads spin for work that is never worth sharing: measured on a Fig. 6 compare, 53 % of perf's samples in the
-// kernel's scheduler and sched_yield; with one thread it took 1.95 s of wall time instead of 4.5 (2.1 s of CPU, 9.0). One thread for the process, if the BLAS loaded is OpenBLAS (looked up at run time:
-// the reference BLAS has no such call).
+// kernel's scheduler and sched_yield; with one thread it took 1.95 s of wall time instead of 4.5 (2.1 s of CPU, 9.0).
+// One thread for the process, if the BLAS loaded is OpenBLAS (looked up at run time: the reference BLAS has no such
+// call).
 void one_blas_thread() {
     using SetThreads = void (*)(int);
     if (void* f = dlsym(RTLD_DEFAULT, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(f)(1);
@@ -340,7 +341,8 @@ private:
     SP::TimeStepping simulation_;
 };
 
-// Wall time per simulated second at the defaults (vssw_bench_engines, Fig. 6 VSSW free vibration; docs/measurements/speed.md).
+// Wall time per simulated second at the defaults (vssw_bench_engines, Fig. 6 VSSW free vibration;
+// docs/measurements/speed.md).
 constexpr double kCostPerSimulatedSecond = 33e-3;
 
 class SiconosEngine final : public Engine {

@@ -227,8 +227,8 @@ public:
     explicit SimbodyEngine(bool compliant) : compliant_(compliant) {}
     std::string name() const override { return compliant_ ? "simbody" : "simbody-rigid"; }
     std::string display_name() const override { return compliant_ ? "Simbody" : "simbody-rigid"; }
-    // docs/measurements/speed.md: the compliant route (CPodes, reports every 2 ms) 65 ms, the rigid route at 0.5 ms 189 ms per
-    // simulated second.
+    // docs/measurements/speed.md: the compliant route (CPodes, reports every 2 ms) 65 ms, the rigid route at 0.5 ms 189
+    // ms per simulated second.
     double cost_per_simulated_second() const override { return compliant_ ? 65e-3 : 189e-3; }
     bool dt_is_a_reporting_interval() const override { return compliant_; }  // CPodes picks its steps
     std::string version() const override {

@@ -4,6 +4,7 @@ import json
 import numbers
 import os
 import pathlib
+import shutil
 import sys
 import tempfile
 
@@ -277,6 +278,17 @@ def _folder(out, prefix):
     return pathlib.Path(tempfile.mkdtemp(prefix=prefix))
 
 
+def _run_into(folder, out, args, progress, description):
+    """_run_command writing into `folder`; a temporary folder made for it (out None) is removed when the run fails,
+    so that a failed call leaves nothing behind."""
+    try:
+        return _run_command(args, progress, description)
+    except BaseException:
+        if out is None:
+            shutil.rmtree(folder, ignore_errors=True)
+        raise
+
+
 def _run_command(args, progress, description):
     with _Bar(progress, description) as bar:
         code, out, err = _core.run_with_progress([str(a) for a in args], bar if progress else None)
@@ -311,7 +323,7 @@ def study(file, out=None, *, threads=None, shard=None, resume=False, force=False
                        no_plots=not (plots if plots is not None else out is not None), gnuplot=gnuplot,
                        run_budget=run_budget)
         args = ["study", cli._text("file", os.fspath(file)), f"--out={folder}", *cli._arguments(options), "--json"]
-        summary = json.loads(_run_command(args, progress, "study"))
+        summary = json.loads(_run_into(folder, out, args, progress, "study"))
     return StudyResult(results=_read_csv(folder / "results.csv"), folder=folder, summary=summary)
 
 
@@ -343,7 +355,7 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
     options = dict(suite=suite, engines=_joined(engines), cases=_joined(cases),
                    threads=threads, no_plots=not (plots if plots is not None else out is not None),
                    earthquake=earthquake, bench=bench, gnuplot=gnuplot, data=data, run_budget=run_budget)
-    summary = _run_command(["report", f"--out={folder}", *cli._arguments(options)], progress, "report")
+    summary = _run_into(folder, out, ["report", f"--out={folder}", *cli._arguments(options)], progress, "report")
     with open(folder / "results.json", encoding="utf-8") as f:
         rows = pd.DataFrame(json.load(f)["rows"])
     return ReportResult(metrics=_read_csv(folder / "metrics.csv"), failures=_read_csv(folder / "failures.csv"),

@@ -33,11 +33,12 @@ TIMEOUT_S = 60  # a generous ceiling; the examples are meant to take a few secon
 
 
 def blocks(text):
-    """(kind, first line number, lines, file name from a directive or None, python opt-in) for every fenced block."""
+    """(kind, first line number, lines, file name from a directive or None) for every fenced block."""
     lines = text.split("\n")
     out, i, pending_file = [], 0, None
     while i < len(lines):
-        directive = re.match(r"^<!-- doctest: file (\S+) -->$", lines[i])
+        # A plain file name: the file is written into the page's scratch folder, never beside or above it.
+        directive = re.match(r"^<!-- doctest: file ([A-Za-z0-9_][A-Za-z0-9_.-]*) -->$", lines[i])
         if directive:
             pending_file = directive.group(1)
             i += 1

@@ -1,5 +1,5 @@
-// Fuzz harness of the bounds-file reader of `vssw check` (validation/bounds_file.hpp, parse_bounds = read_bounds_file on
-// text): every input is read as TOML and as JSON.
+// Fuzz harness of the bounds-file reader of `vssw check` (validation/bounds_file.hpp, parse_bounds = read_bounds_file
+// on text): every input is read as TOML and as JSON.
 //
 // A normal outcome is a set of bounds or vssw::InputError, the only error the reader documents for bad files
 // (syntax errors of toml++ and nlohmann::json are turned into it). A finding is anything else: another exception
