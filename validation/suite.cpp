@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <ctime>
+#include <malloc.h>
 #include <limits>
 #include <memory>
 #include <atomic>
@@ -12,6 +13,7 @@
 #include <set>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -36,6 +38,12 @@ constexpr const char* kReferenceEngine = "analytic";
 // Traces: at most this many points per trace (plots), a free vibration's first seconds only.
 constexpr std::size_t kMaxTracePoints = 2000;
 constexpr double kFreeTraceSeconds = 10.0;
+// [s] The analytic model's sampling of a record run (history cases). Its peak comes from the located turning points
+// (LocatedEvents), not the samples; the samples serve the RMS difference against an engine that reports every 1 ms at
+// its defaults (2 ms for Simbody) and the trace, at most kMaxTracePoints over a 20-40 s record (one per 10-20 ms).
+// At the 1e-4 s of analytic_reference_settings() a record run held 16 MB for as long as its case ran, and every engine
+// run's child copied the parent's page tables (docs/measurements/speed.md, "The parent's memory").
+constexpr double kHistoryReferenceSampleDt = 1e-3;
 
 // Running ----------------------------------------------------------------------------------------------------------
 
@@ -92,7 +100,9 @@ Trace make_trace(const std::string& case_id, const std::string& engine, const mu
 struct PeakRotation {
     double value = kNaN, t = kNaN;  // max |theta1| [rad] and when
 };
+// The analytic model's located turning point when the run has one (exact), else the largest sample.
 PeakRotation peak_rotation(const multibody::Trajectory& traj) {
+    if (traj.located) return {traj.located->max_abs_theta1, traj.located->t_max_abs_theta1};
     PeakRotation p;
     for (const auto& s : traj.samples)
         if (!(std::abs(s.theta1) <= p.value)) p = {std::abs(s.theta1), s.t};  // the first sample replaces NaN
@@ -204,18 +214,23 @@ void compute_reference(const TaskContext& x) {
                                                            kWholeMechanismImpact);
                 }
             }
-            ref.free.trajectory.samples = {};  // the rows need its metrics only (warnings kept)
+            // The rows need its metrics only (warnings kept). Swapped out: `samples = {}` is the initializer-list
+            // assignment, which keeps the capacity (it held 70 MB of the report's parent this way).
+            std::vector<multibody::TrajectorySample>().swap(ref.free.trajectory.samples);
             return;
         }
         case CaseKind::history: {
             const Excitation ex = history_excitation(x);
-            ref.history = analytic.simulate(x.wall.scene, ex, analytic_reference_settings());
+            EngineSettings sampled = analytic_reference_settings();
+            sampled.sample_dt = kHistoryReferenceSampleDt;
+            ref.history = analytic.simulate(x.wall.scene, ex, sampled);
             // A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in place
             // of Eq. (19) (the impact the engines make: docs/model/engines-and-metrics.md): does the impact law account
             // for a difference in peaks?
             if (x.wall.scene.vssw) {
-                const multibody::Trajectory whole =
-                    analytic.simulate(x.wall.scene, ex, whole_mechanism_settings(*x.wall.scene.vssw));
+                EngineSettings whole_settings = whole_mechanism_settings(*x.wall.scene.vssw);
+                whole_settings.sample_dt = kHistoryReferenceSampleDt;
+                const multibody::Trajectory whole = analytic.simulate(x.wall.scene, ex, whole_settings);
                 ref.whole_mechanism_peak = peak_rotation(whole).value / x.wall.scene.alpha();
                 if (x.keep_traces) {
                     ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole, x.wall.scene.alpha(),
@@ -229,7 +244,12 @@ void compute_reference(const TaskContext& x) {
 }
 
 const CaseReference& reference_of(const TaskContext& x) {
-    std::call_once(x.ref.once, [&] { compute_reference(x); });  // an exception leaves it for the next task to try
+    // An exception leaves it for the next task to try. malloc_trim: the reference's runs leave their sample vectors'
+    // pages in this thread's malloc arena, which glibc keeps; each engine run's child would copy them (fork).
+    std::call_once(x.ref.once, [&] {
+        compute_reference(x);
+        ::malloc_trim(0);
+    });
     return x.ref;
 }
 
@@ -312,7 +332,10 @@ void history_task(const TaskContext& x, TaskOutput& out) {
     struct Release {
         CaseReference& r;
         ~Release() {
-            if (r.users.fetch_sub(1) == 1) r.history = {};
+            if (r.users.fetch_sub(1) == 1) {
+                r.history = {};
+                ::malloc_trim(0);  // as in reference_of
+            }
         }
     } release{ref};
     const multibody::Trajectory& a = reference_of(x).history;

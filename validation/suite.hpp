@@ -91,7 +91,8 @@ Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids)
 
 // One measured quantity of one case for one engine. For the engine "analytic" the row holds the analytic model's
 // value in both `analytic` and `engine` (rel_error 0): its drift is checked against stored references (vssw check).
-// Metrics, by case kind (the analytic side is AnalyticEngine, exact kinematics, sampled like the engine):
+// Metrics, by case kind (the analytic side is AnalyticEngine, exact kinematics; its record runs sampled every 1 ms,
+// their peaks its located turning points):
 //   threshold       threshold_g [g]: find_threshold on both sides
 //   free, step      period [s]: 4 x release to first impact; restitution []: theta1_dot ratio at the first impact
 //                   (the analytic model's impact law: Eq. 19 for a VSSW, Housner's e for a PW);
