@@ -112,7 +112,7 @@ std::string gp_preamble(const std::string& drawn_by, const std::string& name, in
         "set output {4}\n"
         "set datafile missing '?'\n"
         "set grid lc rgb '#dddddd'\n"
-        "set key inside top right opaque box lc rgb '#cccccc' samplen 2 spacing 1.1\n",
+        "set key below center horizontal Left reverse box lc rgb '#cccccc' samplen 2 spacing 1.1\n",
         width, height, gp_comment(drawn_by), gp_comment(name + ".gp"), gp_string(name + ".svg"));
 }
 

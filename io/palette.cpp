@@ -29,9 +29,29 @@ constexpr EngineColour kEngineColours[] = {
 // The palette's colour left for other names (its yellow, #F0E442, reads badly on white and is not used).
 constexpr std::string_view kSpare[] = {"#999999"};
 
-// Dash types and point types the variants of one engine's series cycle through (gnuplot's numbers).
+// One marker shape per engine, so that a series reads without its colour (in grey print, to a reader who does not
+// tell the colours apart) and a backend keeps its marker whatever the engine list is: gnuplot's point types, a filled
+// one and its open twin (the plus, cross and star have no filled form: both the same). A name the table does not
+// know takes the spare shape.
+struct EngineMarker {
+    std::string_view engine;
+    int filled, open;
+};
+constexpr EngineMarker kEngineMarkers[] = {
+    {"analytic", 7, 6},        // circle
+    {"bullet", 5, 4},          // square
+    {"ode", 9, 8},             // triangle
+    {"simbody", 11, 10},       // inverted triangle
+    {"siconos", 13, 12},       // diamond
+    {"simbody-rigid", 15, 14}, // pentagon
+    {"box2d", 1, 1},           // plus
+    {"dart", 3, 3},            // star
+    {"mujoco", 2, 2},          // cross
+};
+constexpr EngineMarker kSpareMarker = {"", 7, 6};  // a circle, in the spare grey: apart from the black analytic's
+
+// Dash types the variants of one engine's series cycle through (gnuplot's numbers).
 constexpr int kAnalyticDashes[] = {1, 2, 4, 5}, kEngineDashes[] = {2, 4, 5, 3};
-constexpr int kPoints[] = {7, 5, 9, 11, 13};
 
 }  // namespace
 
@@ -43,12 +63,19 @@ std::string engine_colour(const std::string& engine) {
     return std::string(kSpare[h % (sizeof kSpare / sizeof kSpare[0])]);
 }
 
+int engine_point(const std::string& engine, bool filled) {
+    EngineMarker m = kSpareMarker;
+    for (const EngineMarker& e : kEngineMarkers)
+        if (e.engine == engine) m = e;
+    return filled ? m.filled : m.open;
+}
+
 std::string series_style(const std::string& engine, std::size_t variant) {
     const bool analytic = engine == "analytic";
     const int dash = analytic ? kAnalyticDashes[variant % std::size(kAnalyticDashes)]
                               : kEngineDashes[variant % std::size(kEngineDashes)];
     return fmt::format("lc rgb '{}' lw {} dt {} pt {} ps 0.7", engine_colour(engine), analytic ? 2 : 1.5, dash,
-                       kPoints[variant % std::size(kPoints)]);
+                       engine_point(engine, variant % 2 == 0));
 }
 
 std::vector<std::size_t> series_variants(const std::vector<std::string>& engines) {

@@ -129,7 +129,7 @@ PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     "set xlabel 'PGA [g]'\nset ylabel 'P(collapse | PGA)'\nset samples 300\nset key bottom right\n" +
+                     "set xlabel 'PGA [g]'\nset ylabel 'P(collapse | PGA)'\nset samples 300\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w)
@@ -146,7 +146,7 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     "set xlabel 'PGA [g]'\nset ylabel 'share overturned'\nset key top left\n" +
+                     "set xlabel 'PGA [g]'\nset ylabel 'share overturned'\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
@@ -186,7 +186,7 @@ PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& cur
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     "set xlabel 'alpha [rad]'\nset ylabel 'peak |theta1| / alpha1'\nset key top right\n" +
+                     "set xlabel 'alpha [rad]'\nset ylabel 'peak |theta1| / alpha1'\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
@@ -203,7 +203,7 @@ PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& cur
                 s.dat += fmt::format("{} {} {} {} {} {}\n", gp_number(p.alpha), gp_number(p.peak.median),
                                      gp_number(p.peak.q1), gp_number(p.peak.q3), p.peak.n, p.overturned);
             s.dat += "\n\n";
-            // A single panel keeps its key inside (titles); several share the legend panel (entries).
+            // A single panel has its key right of the data (titles); several share the legend panel (entries).
             cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} {}",
                                cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block++, style,
                                layout.multiplot() ? "notitle" : "title " + gp_string(label));

@@ -729,12 +729,14 @@ TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
     EXPECT_LT(x->first, 5.1);
     EXPECT_GT(x->second, 11.9);
     EXPECT_LT(x->second, 12.5);
-    // The three models in the legend, each in its engine's colour; the legend inside the plot.
+    // The three models in the legend, each in its engine's colour and marker; the legend right of the data, where it
+    // hides no line.
     EXPECT_TRUE(contains(s->gp, "title 'analytic, Eq. (19) impact (reference)'")) << s->gp;
     EXPECT_TRUE(contains(s->gp, "title 'analytic, whole-mechanism impact'")) << s->gp;
     EXPECT_TRUE(contains(s->gp, "lc rgb '" + vssw::study::engine_colour("ode") + "' title 'ODE'")) << s->gp;
-    EXPECT_TRUE(contains(s->gp, "set key inside")) << s->gp;
-    EXPECT_FALSE(contains(s->gp, "outside")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, fmt::format("pt {} ", vssw::study::engine_point("ode")))) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "set key below")) << s->gp;
+    EXPECT_FALSE(contains(s->gp, "inside")) << s->gp;
 }
 
 TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
@@ -828,6 +830,58 @@ TEST(ReportPlots, OneColourPerEngineInEveryPlot) {
     EXPECT_GE(checked, 4);  // the trace, the error plots, the step plots
     EXPECT_NE(vssw::study::engine_colour("ode"), vssw::study::engine_colour("bullet"));
     EXPECT_EQ(vssw::study::engine_colour("analytic"), "#000000");
+}
+
+// The point type a plot line gives its series ("pt N"), -1 without one.
+int point_type(const std::string& line) {
+    std::smatch m;
+    return std::regex_search(line, m, std::regex(" pt (\\d+) ")) ? std::stoi(m[1]) : -1;
+}
+
+// Each engine draws with its own marker in every plot (filled, or its open twin for a second series of the engine),
+// and an engine's marker does not depend on which other engines the report compares.
+TEST(ReportPlots, OneMarkerPerEngineWhateverTheEngineList) {
+    vssw::compare::SuiteResults without_bullet = hand_results();
+    auto& engines = without_bullet.engines;
+    engines.erase(std::remove_if(engines.begin(), engines.end(), [](const auto& e) { return e.name == "bullet"; }),
+                  engines.end());
+    auto& rows = without_bullet.rows;
+    rows.erase(std::remove_if(rows.begin(), rows.end(), [](const auto& r) { return r.engine == "bullet"; }), rows.end());
+    without_bullet.failures.clear();
+    std::map<std::string, std::set<int>> seen;  // engine -> the point types its series had, in both reports
+    int checked = 0;
+    for (const auto& results : {hand_results(), without_bullet})
+        for (const auto& s : vssw::study::report_plot_scripts({hand_suite(), results, {}}))
+            for (const std::string& line : lines_of(s.gp))
+                for (const char* engine : {"ode", "bullet"}) {
+                    if (!contains(line, "title '" + vssw::multibody::engine_display_name(engine))) continue;
+                    const int pt = point_type(line);
+                    EXPECT_TRUE(pt == vssw::study::engine_point(engine, true) ||
+                                pt == vssw::study::engine_point(engine, false))
+                        << s.plot.name << ": " << line;
+                    if (s.plot.name.rfind("error_", 0) == 0) seen[engine].insert(pt);
+                    ++checked;
+                }
+    EXPECT_GE(checked, 6);
+    // The error plots (one series per engine): the engine's filled marker, with bullet in the list and without.
+    EXPECT_EQ(seen["ode"], std::set<int>{vssw::study::engine_point("ode")});
+    EXPECT_EQ(seen["bullet"], std::set<int>{vssw::study::engine_point("bullet")});
+}
+
+TEST(Palette, EveryKnownEngineHasItsOwnMarkerShape) {
+    const std::vector<std::string> engines = {"analytic", "bullet",  "ode",  "simbody", "siconos",
+                                              "simbody-rigid", "box2d", "dart", "mujoco"};
+    std::set<int> shapes;
+    for (const std::string& e : engines) {
+        EXPECT_TRUE(shapes.insert(vssw::study::engine_point(e)).second) << e << " shares its marker";
+        // A second series of the engine: the open twin of the same shape, in the same colour.
+        const std::string first = vssw::study::series_style(e, 0), second = vssw::study::series_style(e, 1);
+        EXPECT_EQ(point_type(first + ' '), vssw::study::engine_point(e, true)) << first;
+        EXPECT_EQ(point_type(second + ' '), vssw::study::engine_point(e, false)) << second;
+    }
+    // An unknown name: a marker all the same, the same every time.
+    EXPECT_GT(vssw::study::engine_point("someengine"), 0);
+    EXPECT_EQ(vssw::study::engine_point("someengine"), vssw::study::engine_point("someengine"));
 }
 
 // --- the command --------------------------------------------------------------------------------------------------

@@ -24,6 +24,8 @@ const char* const kStepSection = "Error against step size";
 // the HTML shows them at about their own size; the error plots widen with the number of cases so their labels stay
 // readable (the page then scales them down).
 constexpr int kPlotWidth = 1100, kPlotHeight = 420, kPixelsPerCase = 34;
+// About this many markers on a trace plot's line (its engine's, io/palette.hpp), spread over its drawn points.
+constexpr std::size_t kTraceMarkers = 12;
 
 // The trace plots' x axis runs over the motion: from the first to the last time any trace is beyond this share of the
 // largest |theta1| / alpha of the case (1 %: 4 px of a 420 px plot, a line that is flat to the eye), with this share
@@ -180,15 +182,19 @@ PlotScript trace_script(const std::string& id, const std::string& name, const st
             py.push_back((t->theta1_over_alpha[i] - w.y0) / (w.y1 - w.y0) * kPlotHeight);
             at.push_back(i);
         }
-        for (std::size_t k : simplify_polyline(px, py, kTracePixelTolerance))
+        const std::vector<std::size_t> kept = simplify_polyline(px, py, kTracePixelTolerance);
+        for (std::size_t k : kept)
             s.dat += trace_number(t->t[at[k]], kTraceTimeDigits) + ' ' +
                      trace_number(t->theta1_over_alpha[at[k]], kTraceValueDigits) + '\n';
         s.dat += "\n\n";  // the next gnuplot index
         const bool analytic = t->engine == "analytic";
         const bool whole = t->assumption == compare::kWholeMechanismImpact;
-        plot_cmd += fmt::format("{}'{}.dat' index {} using 1:2 with lines lw {} dt {} lc rgb '{}' title {}",
-                                index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, analytic ? 2.2 : 1.4,
-                                whole ? 2 : 1, engine_colour(t->engine), gp_string(trace_title(*t, vssw)));
+        // The engine's marker (io/palette.hpp) on a few of the line's points: the line reads without its colour.
+        const std::size_t every = std::max<std::size_t>(1, kept.size() / kTraceMarkers);
+        plot_cmd += fmt::format(
+            "{}'{}.dat' index {} using 1:2 with linespoints lw {} dt {} pt {} ps 0.8 pi {} lc rgb '{}' title {}",
+            index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, analytic ? 2.2 : 1.4, whole ? 2 : 1,
+            engine_point(t->engine, !whole), every, engine_colour(t->engine), gp_string(trace_title(*t, vssw)));
         ++index;
     }
     s.gp = gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
@@ -278,13 +284,14 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
             tics += fmt::format("{}{} {}", i == 0 ? "set xtics (" : ", \\\n    ", gp_string(table.rows[i].case_id), i);
         if (!tics.empty()) tics += ")\n";
         std::string cmd;
-        // A distinct point type per engine, slightly offset along x so that equal values stay visible.
+        // Each engine's own marker and colour (io/palette.hpp: the same whatever the engine list), slightly offset
+        // along x so that equal values stay visible.
         const double spread = 0.12;
         for (std::size_t e = 0; e < table.engines.size(); ++e) {
             const double offset =
                 spread * (static_cast<double>(e) - 0.5 * static_cast<double>(table.engines.size() - 1));
             cmd += fmt::format("{}'{}.dat' using ($1+({:g})):{} with points pt {} ps 1.3 lc rgb '{}' title {}",
-                               e == 0 ? "plot " : ", \\\n     ", s.plot.name, offset, e + 3, 5 + 2 * static_cast<int>(e),
+                               e == 0 ? "plot " : ", \\\n     ", s.plot.name, offset, e + 3, engine_point(table.engines[e]),
                                engine_colour(table.engines[e]), gp_string(multibody::engine_display_name(table.engines[e])));
         }
         if (table.target)
