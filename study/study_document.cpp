@@ -10,6 +10,7 @@
 
 #include "study/ensemble_outputs.hpp"
 #include "study/spec.hpp"
+#include "study/study_plots.hpp"
 #include "study/study_prose.hpp"
 #include "io/text.hpp"
 
@@ -36,6 +37,52 @@ void add_introduction(Blocks& b, const StudyData& d) {
                                       "manifest.json and results.csv.",
                                       study.value("file", std::string()), d.kind,
                                       study.value("identity", std::string()))));
+}
+
+// The study's main figures, which open the page: those of the first of these sections that has any (the paper's
+// rocking curves, an ensemble's fragility, the overturning maps, the values against the varied parameters), at most
+// kGlanceFigures of them, then the first tornado chart (the largest effects of the model's assumptions).
+std::vector<Plot> main_figures(const PlotResult& plots) {
+    std::vector<Plot> out;
+    for (const char* section : {kRockingSection, kEnsembleSection, kMapSection, kValueSection}) {
+        for (const Plot& p : plots.plots)
+            if (p.made && p.section == section && out.size() < kGlanceFigures) out.push_back(p);
+        if (!out.empty()) break;
+    }
+    for (const Plot& p : plots.plots)
+        if (p.made && p.section == kTornadoSection) {
+            out.push_back(p);
+            break;
+        }
+    return out;
+}
+
+bool is_shown(const std::vector<Plot>& shown, const Plot& p) {
+    return std::any_of(shown.begin(), shown.end(), [&](const Plot& s) { return s.name == p.name; });
+}
+
+DocBlock effects_table(const StudyData& d, const std::vector<Effect>& effects);
+
+// What a reader came for, first: the main figures and the largest effects; every detail follows.
+void add_glance(Blocks& b, const StudyDocumentInput& in) {
+    const StudyData& d = in.data;
+    // Each parameter and metric once, at its largest (effects come sorted largest first), as the sentences below
+    // do: a parameter with many levels would otherwise fill the table with its own levels.
+    std::vector<Effect> largest;
+    std::set<std::pair<std::string, std::size_t>> said;
+    for (const Effect& e : in.effects)
+        if (e.pairs > 0 && largest.size() < kGlanceEffects && said.insert({e.parameter, e.metric}).second)
+            largest.push_back(e);
+    const std::vector<Plot> figures = in.plots_skipped ? std::vector<Plot>{} : main_figures(in.plots);
+    if (figures.empty() && largest.empty()) return;
+    b.push_back(heading(2, "At a glance"));
+    for (const Plot& p : figures) b.push_back(plot(p.title, p.name));
+    if (largest.empty()) return;
+    b.push_back(paragraph(fmt::format(
+        "The {} largest effects, each parameter and metric at its largest level against the first (every level under "
+        "\"Largest sensitivities first\"):",
+        largest.size())));
+    b.push_back(effects_table(d, largest));
 }
 
 void add_varied(Blocks& b, const StudyData& d) {
@@ -185,7 +232,14 @@ void add_plots(Blocks& b, const StudyDocumentInput& in) {
     }
     if (!in.plots.note.empty()) b.push_back(paragraph("Plots: " + in.plots.note + "."));
     for (const std::string& note : in.plot_notes.notes) b.push_back(paragraph(note));
-    for (DocBlock& block : plot_blocks(in.plots)) b.push_back(std::move(block));
+    // The main figures are at the top ("At a glance"): the others here.
+    const std::vector<Plot> shown = main_figures(in.plots);
+    PlotResult rest = in.plots;
+    rest.plots.erase(std::remove_if(rest.plots.begin(), rest.plots.end(),
+                                    [&](const Plot& p) { return is_shown(shown, p); }),
+                     rest.plots.end());
+    if (!shown.empty()) b.push_back(paragraph("The main figures are under \"At a glance\"."));
+    for (DocBlock& block : plot_blocks(rest)) b.push_back(std::move(block));
     if (in.plots.plots.empty() && in.plots.note.empty()) b.push_back(paragraph("No plot applies to this study."));
 }
 
@@ -219,6 +273,7 @@ Document build_study_document(const StudyDocumentInput& in) {
     doc.title = fmt::format("vssw study: {}", d.name);
     Blocks& b = doc.blocks;
     add_introduction(b, d);
+    add_glance(b, in);
     add_varied(b, d);
     add_runs(b, d);
     add_counts(b, d);

@@ -16,6 +16,10 @@ namespace vssw::study {
 constexpr std::size_t kMaxSensitivitySentences = 20;
 // Failure reasons listed by name, the most common first.
 constexpr std::size_t kMaxFailureReasons = 3;
+// The page opens with at most this many main figures (and a tornado chart) and this many of the largest effects: a
+// first screen or two; everything else follows under its own heading.
+constexpr std::size_t kGlanceFigures = 2;
+constexpr std::size_t kGlanceEffects = 5;
 
 struct StudyDocumentInput {
     const StudyData& data;

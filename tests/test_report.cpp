@@ -432,6 +432,30 @@ TEST(ReportFiles, PlotsAreDrawnAndInlinedAsSvg) {
     EXPECT_TRUE(contains(w.html, "slid past 0.05 b at t = 1.2 s &lt;x,"));
 }
 
+// The first screens answer before any detail: the matrix, then a figure for each of its measures (the error plot of
+// each metric with a target, in the matrix's order), then the contents; the plots without a target stay below.
+TEST(ReportFiles, AFigurePerMeasureFollowsTheMatrix) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const Written w = write_hand_report("measures", vssw::study::ReportOptions{});
+    const auto at = [&](const std::string& text) { return w.md.find(text); };
+    const std::size_t glance = at("## At a glance"), figures = at("## One figure per measure"),
+                      contents = at("- [At a glance](#at-a-glance)"), plots = at("## Plots");
+    ASSERT_NE(figures, std::string::npos) << w.md;
+    EXPECT_LT(glance, figures);
+    EXPECT_LT(figures, contents);
+    std::size_t previous = figures;
+    for (const char* metric : {"threshold_g", "period", "restitution", "restitution_whole_mechanism"}) {
+        const std::size_t f = at(std::string("](plots/error_") + metric + ".svg)");
+        EXPECT_GT(f, previous) << metric << ": in the matrix's order, after the matrix";
+        EXPECT_LT(f, contents) << metric;
+        previous = f;
+        // Once: not again under "Plots".
+        EXPECT_EQ(w.md.find(std::string("](plots/error_") + metric + ".svg)", f + 1), std::string::npos) << metric;
+    }
+    // A single run's peak (no target) is not a measure of the matrix: its plot is under "Plots".
+    EXPECT_GT(at("](plots/error_peak_rotation.svg)"), plots);
+}
+
 // A suite file shared with wall and record names made to run commands (`report --suite FILE`): the report's plots are
 // drawn with the names shown as they are, nothing runs, and the pages show the markup as text.
 TEST(ReportFiles, HostileSuiteNamesAreShownAndNeverRun) {
@@ -1101,6 +1125,16 @@ TEST(ReportEarthquake, VerdictIsTheEnsemblesOverturningCountAgainstTheTarget) {
     EXPECT_EQ(j["earthquake"]["levels"], 2);
     const std::string md = read(out / "report.md");
     EXPECT_TRUE(contains(md, "## Under earthquake records")) << md;
+    // The verdict is a column of the matrix at a glance, with its target in the header.
+    const std::string matrix_header = lines_of(md.substr(md.find("## At a glance"))).at(2);
+    EXPECT_TRUE(contains(matrix_header, "records: overturning agreement (target >= 0.9)")) << matrix_header;
+    EXPECT_TRUE(contains(matrix_header, "records: fragility median / reference (target 1 +- 0.1)")) << matrix_header;
+    const std::vector<std::string> lines = lines_of(md);
+    const auto ode_row = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+        return l.rfind("| ODE | impulse stepping |", 0) == 0;
+    });
+    ASSERT_NE(ode_row, lines.end()) << md;
+    EXPECT_TRUE(contains(*ode_row, fmt::format("| {:.3f} [", agree / 4.0))) << *ode_row;
     EXPECT_TRUE(contains(md, "| ODE | ")) << md;
     EXPECT_TRUE(contains(r.out, fmt::format("ODE under records: overturning agrees on {}/4", agree))) << r.out;
 }

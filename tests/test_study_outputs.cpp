@@ -6,6 +6,7 @@
 // warning and no failure, and a merged study written exactly as a single run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -18,6 +19,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/engine.hpp"
+#include "study/study_document.hpp"
 #include "study/effects.hpp"
 #include "io/gnuplot.hpp"
 #include "study/grid.hpp"
@@ -282,6 +284,38 @@ TEST_F(TinyStudy, TornadoDataHoldTheAssumptionsEffects) {
     }
     EXPECT_FALSE(fs::exists(plots / "rocking.svg")) << "a free-vibration study has no rocking curves";
     EXPECT_TRUE(contains(read(out() / st::kStudyHtml), "<svg"));
+}
+
+// The page opens with its answer: the main figures (here the first value plots, as the study has no rocking curves,
+// ensemble or map) and the first tornado chart, then the largest effects, each parameter and metric once; every detail
+// follows, and a figure shown at the top is not repeated under "Plots".
+TEST_F(TinyStudy, ThePageOpensWithItsMainFiguresAndLargestEffects) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    st::write_study_outputs(out(), {});
+    const std::string md = read(out() / st::kStudyMarkdown);
+    const auto glance = md.find("\n## At a glance\n"), varied = md.find("\n## What varied\n"),
+               plots = md.find("\n## Plots\n");
+    ASSERT_NE(glance, std::string::npos) << md;
+    EXPECT_LT(glance, varied);
+    const std::string top = md.substr(glance, varied - glance);
+    EXPECT_TRUE(contains(top, "](plots/value_period_vs_hinge.svg)")) << top;
+    EXPECT_TRUE(contains(top, "](plots/tornado_period.svg)")) << top;
+    EXPECT_EQ(std::count(top.begin(), top.end(), '!'), static_cast<long>(st::kGlanceFigures) + 1) << top;
+    for (const char* shown : {"](plots/value_period_vs_hinge.svg)", "](plots/tornado_period.svg)"})
+        EXPECT_EQ(md.find(shown, plots), std::string::npos) << shown << ": shown twice";
+    EXPECT_TRUE(contains(md.substr(plots), "](plots/tornado_overturned.svg)")) << "the other tornado stays below";
+    // The largest effects, in the ranking's order (SensitivitiesAreRankedLargestFirstWithTheirNumbers), five of six.
+    const std::vector<std::string> rows = {"| impact | eq19 | whole-mechanism | overturned |",
+                                           "| hinge | 0.5 | 0.7 | overturned |", "| hinge | 0.5 | 0.7 | period |",
+                                           "| kinematics | paper | exact | period |",
+                                           "| kinematics | paper | exact | overturned |"};
+    std::size_t at = 0;
+    for (const std::string& row : rows) {
+        const auto found = top.find(row, at);
+        ASSERT_NE(found, std::string::npos) << row << "\n" << top;
+        at = found;
+    }
+    EXPECT_FALSE(contains(top, "| impact | eq19 | whole-mechanism | period |")) << "the sixth is below";
 }
 
 TEST_F(TinyStudy, WithoutGnuplotTheStudyIsWrittenWithAWarning) {

@@ -82,8 +82,14 @@ Json earthquake_json(const EarthquakePart& part);
 // >= 0.9) pass; fragility median x 1.000 [1.000, 1.000] (target 1 +- 0.1) pass".
 std::vector<std::string> earthquake_summary_lines(const EarthquakePart& part);
 
-// The report's blocks (validation/earthquake_document.cpp): the verdict table under "At a glance", and the section.
+// The report's blocks (validation/earthquake_document.cpp). Under "At a glance": the two ensemble measures as
+// columns of the engine x measure matrix (their headers; an engine's two verdict cells, "-" where the part has no
+// verdict for it) and a paragraph saying what they are; the fragility plot among the figures per measure (none when
+// it was not drawn); then the section with every number.
+std::vector<std::string> earthquake_matrix_header();
+std::vector<DocCell> earthquake_matrix_cells(const EarthquakePart& part, const std::string& engine);
 std::vector<DocBlock> earthquake_glance(const EarthquakePart& part);
+std::vector<DocBlock> earthquake_figure(const EarthquakePart& part);
 std::vector<DocBlock> earthquake_section(const EarthquakePart& part);
 
 }  // namespace vssw::study

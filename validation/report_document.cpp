@@ -102,6 +102,18 @@ std::string schemes_text(const std::vector<std::string>& engines) {
                   "of evidence, not several; agreement across schemes is independent.";
 }
 
+// The matrix's metrics: those with a target that some engine was measured on. A single run's peak under a record
+// (no target) switches branch for a 1 % change of the scale, so it has no verdict here; the earthquake part judges the
+// records by ensemble measures, and the tables under "Metrics" keep every single-run value.
+std::vector<std::string> matrix_metrics(const ReportInput& in, const std::vector<MatrixCell>& cells) {
+    std::vector<std::string> metrics;
+    for (const std::string& m : metric_order(in.results))
+        if (target_of(m).has_value() &&
+            std::any_of(cells.begin(), cells.end(), [&](const MatrixCell& c) { return c.metric == m; }))
+            metrics.push_back(m);
+    return metrics;
+}
+
 void add_matrix(Blocks& b, const ReportInput& in) {
     b.push_back(heading(2, "At a glance"));
     const std::vector<MatrixCell> cells = error_matrix(in);
@@ -111,14 +123,7 @@ void add_matrix(Blocks& b, const ReportInput& in) {
         b.push_back(paragraph("No engine was compared (the analytic model only)."));
         return;
     }
-    // The metrics with a target: a single run's peak under a record (no target) switches branch for a 1 % change of
-    // the scale, so it has no verdict here; the earthquake part below judges the records by ensemble measures, and
-    // the tables under "Metrics" keep every single-run value.
-    std::vector<std::string> metrics;
-    for (const std::string& m : metric_order(in.results))
-        if (target_of(m).has_value() &&
-            std::any_of(cells.begin(), cells.end(), [&](const MatrixCell& c) { return c.metric == m; }))
-            metrics.push_back(m);
+    const std::vector<std::string> metrics = matrix_metrics(in, cells);
     std::vector<std::string> header = {"engine", "contact scheme"};
     std::size_t apart = 0;
     for (const std::string& m : metrics) {
@@ -127,6 +132,9 @@ void add_matrix(Blocks& b, const ReportInput& in) {
         header.push_back(target ? fmt::format("{} (target {:g} %)", short_title(m), 100.0 * *target)
                                 : fmt::format("{} (no target)", short_title(m)));
     }
+    // The earthquake part's two ensemble measures, each with its target, as the last columns.
+    if (in.earthquake)
+        for (const std::string& h : earthquake_matrix_header()) header.push_back(h);
     DocBlock t = table(header, 2);
     t.apart_from = apart;
     t.css_class = "matrix";
@@ -147,6 +155,8 @@ void add_matrix(Blocks& b, const ReportInput& in) {
                                         c->target ? "outside the target" : m == "overturned" ? "differ" : "nonzero");
             row.push_back(std::move(cell));
         }
+        if (in.earthquake)
+            for (DocCell& c : earthquake_matrix_cells(*in.earthquake, e)) row.push_back(std::move(c));
         t.rows.push_back(std::move(row));
     }
     b.push_back(t);
@@ -310,14 +320,47 @@ void add_step_study(Blocks& b, const ReportInput& in) {
     b.push_back(t);
 }
 
-void add_plots(Blocks& b, const PlotResult& plots, bool plots_skipped) {
+// The error plot of each metric of the matrix (error_<metric>, validation/report_plots.hpp), in the matrix's order.
+std::vector<std::string> measure_plot_names(const ReportInput& in) {
+    std::vector<std::string> names;
+    for (const std::string& m : matrix_metrics(in, error_matrix(in))) names.push_back("error_" + file_stem(m));
+    return names;
+}
+
+// Right after the matrix: a figure for each of its measures (the errors per case and engine, the fragility under
+// records), so that the first screens answer "which engine, how far off, where" before any detail.
+void add_measure_figures(Blocks& b, const ReportInput& in, const PlotResult& plots, bool plots_skipped) {
+    if (plots_skipped) return;
+    Blocks figures;
+    for (const std::string& name : measure_plot_names(in))
+        for (const Plot& p : plots.plots)
+            if (p.made && p.name == name) figures.push_back(plot(p.title, p.name));
+    if (in.earthquake)
+        for (DocBlock& block : earthquake_figure(*in.earthquake)) figures.push_back(std::move(block));
+    if (figures.empty()) return;
+    b.push_back(heading(2, "One figure per measure"));
+    b.push_back(paragraph("Each engine's relative error on each case of a measure of the matrix, the target dashed (hover "
+                          "a point for its value); under records, each engine's fragility curve beside the "
+                          "reference's."));
+    for (DocBlock& f : figures) b.push_back(std::move(f));
+}
+
+void add_plots(Blocks& b, const ReportInput& in, const PlotResult& plots, bool plots_skipped) {
     b.push_back(heading(2, "Plots"));
     if (plots_skipped) {
         b.push_back(paragraph("Plots were not made (--no-plots)."));
         return;
     }
     if (!plots.note.empty()) b.push_back(paragraph("Plots: " + plots.note + "."));
-    for (DocBlock& block : plot_blocks(plots)) b.push_back(std::move(block));
+    // The figures per measure are at the top: the others here.
+    const std::vector<std::string> shown = measure_plot_names(in);
+    PlotResult rest = plots;
+    rest.plots.erase(std::remove_if(rest.plots.begin(), rest.plots.end(),
+                                    [&](const Plot& p) {
+                                        return std::find(shown.begin(), shown.end(), p.name) != shown.end();
+                                    }),
+                     rest.plots.end());
+    for (DocBlock& block : plot_blocks(rest)) b.push_back(std::move(block));
     if (plots.plots.empty() && plots.note.empty()) b.push_back(paragraph("No data to plot."));
 }
 
@@ -358,6 +401,7 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
     Blocks& b = doc.blocks;
     b.push_back(introduction(in));
     add_matrix(b, in);
+    add_measure_figures(b, in, plots, plots_skipped);
     b.push_back(contents());
     add_engines(b, in);
     add_summary(b, in);
@@ -368,7 +412,7 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
     add_model_warnings(b, in);
     add_metric_tables(b, in);
     add_step_study(b, in);
-    add_plots(b, plots, plots_skipped);
+    add_plots(b, in, plots, plots_skipped);
     add_cases(b, in);
     add_files(b);
     return doc;
