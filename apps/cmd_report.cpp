@@ -23,6 +23,7 @@
 #include "apps/option_values.hpp"
 #include "apps/progress.hpp"
 #include "apps/run_budget_option.hpp"
+#include "compare/targets.hpp"
 #include "validation/earthquake.hpp"
 #include "validation/suite.hpp"
 #include "multibody/engine.hpp"
@@ -145,12 +146,16 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_option("--data", o->data, "folder of the ground-motion records (default: $VSSW_DATA_DIR, else <prefix>/share/vssw/data beside an installed vssw, else the source tree's data/)");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
+    // The targets are the constants the report judges by (compare/targets.hpp, validation/earthquake.hpp).
     cmd->footer(
         "Writes into --out: report.md and report.html (the same content; the HTML is self-contained, plots inline),\n"
         "results.json, metrics.csv, failures.csv, traces.csv and plots/ (gnuplot .svg, with the .gp script and .dat\n"
-        "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; targets:\n"
-        "threshold 0.5 %, period 0.5 %, restitution 2 %; under records (earthquake/): overturning agreement >= 0.9,\n"
-        "fragility median within 10 % of the reference's.\n"
+        "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; targets:\n" +
+        fmt::format("threshold {:g} %, period {:g} %, restitution {:g} %; under records (earthquake/): overturning "
+                    "agreement >= {:g},\nfragility median within {:g} % of the reference's.\n",
+                    100.0 * compare::kThresholdTarget, 100.0 * compare::kPeriodTarget,
+                    100.0 * compare::kRestitutionTarget, study::kOverturningAgreementTarget,
+                    100.0 * study::kFragilityMedianTarget) +
         "results.json keys: vssw {commit, report_format}, date, suite {name, walls, records, cases [{id, kind, wall,\n"
         "r, record, dt}]}, engines [{name, version, contact_scheme, settings {dt, iterations (where set), knobs}}],\n"
         "targets, rows [{case_id, engine, metric, unit, reference, analytic, engine_value, rel_error, target,\n"
