@@ -1,6 +1,7 @@
 #include "study/spec.hpp"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <cctype>
 #include <filesystem>
@@ -350,7 +351,18 @@ json read_ensemble(const Reader& r, const json& ex, const std::string& ex_key, c
     const Axis levels = r.axis(ex["levels"], key("levels"), [&](const json& v) -> Level {
         return r.positive(v, key("levels"), "a PGA in g, > 0");
     });
-    for (const Level& l : levels.levels) out["pga"].push_back(std::get<double>(l));
+    // agreement.csv names a column per level by its PGA to 6 significant digits (study/ensemble_outputs.cpp): two
+    // levels that print alike there would share one.
+    std::map<std::string, double> printed;
+    for (const Level& l : levels.levels) {
+        const double pga = std::get<double>(l);
+        const auto [at, added] = printed.emplace(fmt::format("{:.6g}", pga), pga);
+        if (!added)
+            r.fail(key("levels"), fmt::format("{} and {} are one level to 6 significant digits (agreement.csv names "
+                                              "its columns by them): give levels that differ there",
+                                              at->second, pga));
+        out["pga"].push_back(pga);
+    }
     if (e.band) out["perturbation"] = kPerturbations;
     return out;
 }

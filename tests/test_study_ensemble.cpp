@@ -152,6 +152,8 @@ TEST(StudyEnsemble, EachMalformationIsNamed) {
         {ex + files + pga + "levels = [0.4, -0.2]\n", "excitation.levels: must be a PGA in g, > 0, got -0.2"},
         {ex + files + pga + "levels = [\"high\"]\n", "excitation.levels: must be a finite number (a PGA in g, > 0), got \"high\""},
         {ex + files + pga + "levels = [0.4, 0.4]\n", "excitation.levels: lists 0.4 twice"},
+        {ex + files + pga + "levels = [0.4, 0.40000001]\n",
+         "excitation.levels: 0.4 and 0.40000001 are one level to 6 significant digits"},
         {ex + files + "intensity = \"sa\"\nlevels = [0.4]\n", "excitation.intensity: must be one of pga, got \"sa\""},
         {ex + files + "levels = [0.4]\n", "kind ensemble needs 'intensity'"},
         {ex + files + pga + "collapse = \"yes\"\n", "excitation.collapse: must be true or false, got \"yes\""},
