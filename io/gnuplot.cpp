@@ -8,12 +8,17 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string_view>
 #include <system_error>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/document_html.hpp"  // html_escape
 
 namespace vssw::study {
 namespace fs = std::filesystem;
@@ -61,6 +66,40 @@ bool write_text(const fs::path& path, const std::string& text) {
 // Newline, CR, tab, the other C0 codes and DEL: what gnuplot text and comments turn into spaces.
 bool is_control(char c) { return static_cast<unsigned char>(c) < 0x20 || c == '\x7f'; }
 
+// Every plot's font (gnuplot.hpp, gp_font): a size the report's and a study's pages show at about 11 px, their text's.
+constexpr const char* kPlotFont = "sans,11";
+
+// gnuplot 5.4's SVG terminal writes a hypertext point as HEAD TEXT TAIL then the marker and "</g>".
+constexpr std::string_view kHoverHead = "<g onmousemove=\"gnuplot_svg.showHypertext(evt,'";
+constexpr std::string_view kHoverTail = "')\" onmouseout=\"gnuplot_svg.hideHypertext()\"><title> </title>";
+
+// gnuplot's escaping of a hypertext undone (it writes & and < as entities, the rest as it is).
+std::string xml_unescape(std::string_view s) {
+    std::string out;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        bool matched = false;
+        for (const auto& [entity, c] : {std::pair<std::string_view, char>{"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'},
+                                        {"&quot;", '"'}, {"&apos;", '\''}})
+            if (s.substr(i, entity.size()) == entity) {
+                out += c;
+                i += entity.size() - 1;
+                matched = true;
+                break;
+            }
+        if (!matched) out += s[i];
+    }
+    return out;
+}
+
+// The SVG gnuplot wrote with native tooltips (svg_native_tooltips); false when it cannot be read or written again.
+bool add_tooltips(const fs::path& svg, const std::string& title) {
+    std::ifstream in(svg, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) return false;
+    return write_text(svg, svg_native_tooltips(text.str(), title));
+}
+
 }  // namespace
 
 std::string gp_string(const std::string& text) {
@@ -104,16 +143,59 @@ std::string gp_number(double v, bool positive_only) {
     return fmt::format("{:.10g}", v);
 }
 
+std::string gp_font() { return "font " + gp_string(kPlotFont); }
+
 std::string gp_preamble(const std::string& drawn_by, const std::string& name, int width, int height) {
     return fmt::format(
         "# Drawn by `{2}`; re-draw with: gnuplot {3}\n"
         "set encoding utf8\n"
-        "set terminal svg size {0},{1} noenhanced font 'sans,11' background rgb 'white'\n"
+        "set terminal svg size {0},{1} noenhanced {5} background rgb 'white'\n"
         "set output {4}\n"
         "set datafile missing '?'\n"
         "set grid lc rgb '#dddddd'\n"
         "set key below center horizontal Left reverse box lc rgb '#cccccc' samplen 2 spacing 1.1\n",
-        width, height, gp_comment(drawn_by), gp_comment(name + ".gp"), gp_string(name + ".svg"));
+        width, height, gp_comment(drawn_by), gp_comment(name + ".gp"), gp_string(name + ".svg"), gp_font());
+}
+
+std::string gp_xlabel(const std::string& text, bool key_below) {
+    return "set xlabel " + gp_string(text) + (key_below ? ".\"\\n\"\n" : "\n");
+}
+
+std::string gp_hover_layer(const std::string& source, const std::string& style) {
+    return source + " with labels hypertext point " + style + " notitle";
+}
+
+std::string gp_hover_text(const std::string& series, const std::string& where, double value, const std::string& unit) {
+    const std::string shown = std::isfinite(value) ? fmt::format("{:.4g}{}", value, unit.empty() ? "" : " " + unit)
+                                                   : std::string("no value");
+    return gp_data_string(fmt::format("{}, {}: {}", series, where, shown));
+}
+
+std::string svg_native_tooltips(const std::string& svg, const std::string& title) {
+    std::string out;
+    out.reserve(svg.size());
+    std::size_t at = 0;
+    for (;;) {
+        const std::size_t head = svg.find(kHoverHead, at);
+        const std::size_t tail = head == std::string::npos ? head : svg.find(kHoverTail, head + kHoverHead.size());
+        if (tail == std::string::npos) break;
+        const std::string_view text(svg.data() + head + kHoverHead.size(), tail - head - kHoverHead.size());
+        out.append(svg, at, head - at);
+        out += "<g><title>" + html_escape(xml_unescape(text)) + "</title>";
+        at = tail + kHoverTail.size();
+    }
+    out.append(svg, at, std::string::npos);
+    // gnuplot's group titles: `<g id="gnuplot_plot_3" ><title>gnuplot_plot_3</title>`, a tooltip naming nothing.
+    for (std::size_t g = out.find("<title>gnuplot_plot_"); g != std::string::npos;
+         g = out.find("<title>gnuplot_plot_", g)) {
+        const std::size_t end = out.find("</title>", g);
+        if (end == std::string::npos) break;
+        out.erase(g, end + std::string_view("</title>").size() - g);
+    }
+    const std::string gnuplot_title = "<title>Gnuplot</title>";
+    if (const std::size_t t = out.find(gnuplot_title); t != std::string::npos)
+        out.replace(t, gnuplot_title.size(), "<title>" + html_escape(title) + "</title>");
+    return out;
 }
 
 PlotResult draw_plots(const std::vector<PlotScript>& scripts, const fs::path& plots_dir, const std::string& program) {
@@ -147,7 +229,8 @@ PlotResult draw_plots(const std::vector<PlotScript>& scripts, const fs::path& pl
         if (!gnuplot_missing) {
             const int status = run_program(run, plot.name + ".gp", plots_dir, log);
             if (status == kNotFound) gnuplot_missing = true;
-            plot.made = status == 0 && fs::exists(svg, ec) && fs::file_size(svg, ec) > 0;
+            plot.made = status == 0 && fs::exists(svg, ec) && fs::file_size(svg, ec) > 0 &&
+                        add_tooltips(svg, plot.title);
             if (plot.made) {
                 fs::remove(log, ec);
             } else {

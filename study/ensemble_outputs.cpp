@@ -104,13 +104,17 @@ std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::
         dat += fmt::format("# wall {}: {}: {}\n", gp_comment(e.walls[wall]), gp_comment(d.series[m.series].label),
                            m.ida ? "collapse PGA [g], ECDF" : "stripe PGA [g], share overturned");
         for (const auto& [x, y] : m.ida ? ecdf(m) : stripe_points(m))
-            dat += fmt::format("{} {}\n", gp_number(x), gp_number(y));
+            dat += fmt::format("{} {} {}\n", gp_number(x), gp_number(y),
+                               gp_hover_text(d.series[m.series].label, fmt::format("PGA {:.4g} g", x), y,
+                                             m.ida ? "collapsed (ECDF)" : "overturned"));
         dat += fmt::format("\n\n# median [g], 0.5, median_lo, median_hi\n{} 0.5 {} {}\n\n\n",
                            gp_number(m.fit.median.value), gp_number(m.fit.median.lo), gp_number(m.fit.median.hi));
         cmd += fmt::format("{}norm(log(x/{})/{}) with lines {} title {}", cmd.empty() ? "plot " : ", \\\n     ",
                            gp_number(m.fit.fit.median), gp_number(m.fit.fit.beta), style,
                            gp_string(d.series[m.series].label));
-        cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:2 with points {} notitle", name, block, style);
+        const std::string points = fmt::format("'{}.dat' index {} using 1:2", name, block);
+        cmd += fmt::format(", \\\n     {0} with points {1} notitle, \\\n     {2}", points, style,
+                           gp_hover_layer(points + ":(stringcolumn(3))", style));
         cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:2:3:4 with xerrorbars {} notitle", name, block + 1,
                            style);
         block += 2;
@@ -129,7 +133,7 @@ PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     "set xlabel 'PGA [g]'\nset ylabel 'P(collapse | PGA)'\nset samples 300\n" +
+                     gp_xlabel("PGA [g]", !layout.multiplot()) + "set ylabel 'P(collapse | PGA)'\nset samples 300\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w)
@@ -146,21 +150,28 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     "set xlabel 'PGA [g]'\nset ylabel 'share overturned'\n" +
+                     gp_xlabel("PGA [g]", !layout.multiplot()) + "set ylabel 'share overturned'\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
         std::string cmd;
         for (const SeriesMeasures& m : e.measures) {
             if (m.wall != w || m.levels.empty()) continue;
-            s.dat += fmt::format("# {}: pga share lo hi runs\n", gp_comment(d.series[m.series].label));
+            const std::string& label = d.series[m.series].label;
+            s.dat += fmt::format("# {}: pga share lo hi runs hover_text\n", gp_comment(label));
             for (const StripeShare& l : m.levels)
-                s.dat += fmt::format("{} {} {} {} {}\n", gp_number(l.pga), gp_number(l.share.value),
-                                     gp_number(l.share.lo), gp_number(l.share.hi), l.share.n);
+                s.dat += fmt::format("{} {} {} {} {} {}\n", gp_number(l.pga), gp_number(l.share.value),
+                                     gp_number(l.share.lo), gp_number(l.share.hi), l.share.n,
+                                     gp_hover_text(label, fmt::format("PGA {:.4g} g, {} runs", l.pga, l.share.n),
+                                                   l.share.value, "overturned"));
             s.dat += "\n\n";
-            cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} title {}",
-                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block++,
-                               styles.of(d, m.series), gp_string(d.series[m.series].label));
+            const std::string style = styles.of(d, m.series);
+            cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} title {}, \\\n     {}",
+                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block, style, gp_string(label),
+                               gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(6))", s.plot.name,
+                                                          block),
+                                              style));
+            ++block;
         }
         gp += panel_begin(layout, e.walls[w]) + "set yrange [-0.05:1.05]\n" +
               (cmd.empty() ? "plot [0:1][0:1] NaN notitle\n" : cmd + "\n");
@@ -186,7 +197,7 @@ PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& cur
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     "set xlabel 'alpha [rad]'\nset ylabel 'peak |theta1| / alpha1'\n" +
+                     gp_xlabel("alpha [rad]", !layout.multiplot()) + "set ylabel 'peak |theta1| / alpha1'\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;

@@ -1,6 +1,8 @@
 #include "study/plot_lines.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -19,22 +21,43 @@ bool panel_has_value(const LineFigure& f, std::size_t p) {
     return false;
 }
 
+// A point's x in its hover text: its category, or its value.
+std::string x_text(const LineFigure& f, std::size_t i) {
+    const std::string x = i < f.categories.size() ? f.categories[i] : fmt::format("{:g}", f.x[i]);
+    return f.xname.empty() ? x : f.xname + " " + x;
+}
+
 std::string data_of(const LineFigure& f) {
-    std::string dat = fmt::format("# {}\n# x y marked   (one block per panel and line, in that order)\n",
+    std::string dat = fmt::format("# {}\n# x y marked hover_text   (one block per panel and line, in that order)\n",
                                   gp_comment(f.title));
     for (std::size_t p = 0; p < f.y.size(); ++p)
         for (std::size_t l = 0; l < f.lines.size(); ++l) {
             dat += fmt::format("# panel {}: {}; line {}: {}\n", p + 1, gp_comment(f.panel_titles[p]), l + 1,
                                gp_comment(f.lines[l].first));
             for (std::size_t i = 0; i < f.x.size(); ++i)
-                dat += fmt::format("{} {} {}\n", gp_number(f.x[i]), gp_number(f.y[p][l][i]), f.marked[p][l][i] ? 1 : 0);
+                dat += fmt::format("{} {} {} {}\n", gp_number(f.x[i]), gp_number(f.y[p][l][i]),
+                                   f.marked[p][l][i] ? 1 : 0, gp_hover_text(f.lines[l].first, x_text(f, i), f.y[p][l][i], f.yunit));
             dat += "\n\n";
         }
     return dat;
 }
 
+// The panel's y range when its values span less than f.min_span of their largest |y| or f.min_abs_span, around their
+// middle; else gnuplot's autoscale (an earlier panel may have set a range).
+std::string panel_range(const LineFigure& f, std::size_t p) {
+    if (f.min_span <= 0.0 && f.min_abs_span <= 0.0) return "";
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& line : f.y[p])
+        for (double v : line)
+            if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    const double span = std::max(f.min_span * std::max(std::abs(lo), std::abs(hi)), f.min_abs_span);
+    const double middle = 0.5 * (lo + hi);
+    if (!(hi >= lo) || !(hi - lo < span)) return "set autoscale y\n";  // no value, or a span of their own
+    return fmt::format("set yrange [{}:{}]\n", gp_number(middle - 0.5 * span), gp_number(middle + 0.5 * span));
+}
+
 std::string panel_plot(const LineFigure& f, const PanelLayout& layout, std::size_t p) {
-    std::string s = panel_begin(layout, f.panel_titles[p]);
+    std::string s = panel_begin(layout, f.panel_titles[p]) + panel_range(f, p);
     if (!panel_has_value(f, p))
         return s + "set label 1 'no value' at graph 0.5, graph 0.5 center\nplot [0:1][0:1] NaN notitle\n"
                    "unset label 1\n";
@@ -42,9 +65,11 @@ std::string panel_plot(const LineFigure& f, const PanelLayout& layout, std::size
     bool marker_titled = false;
     for (std::size_t l = 0; l < f.lines.size(); ++l) {
         const std::size_t index = p * f.lines.size() + l;
-        cmd += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints {} title {}",
+        cmd += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints {} title {}, \\\n     {}",
                            cmd.empty() ? "plot " : ", \\\n     ", f.name, index, f.lines[l].second,
-                           gp_string(f.lines[l].first));
+                           gp_string(f.lines[l].first),
+                           gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(4))", f.name, index),
+                                          f.lines[l].second));
         if (f.marker_title.empty()) continue;
         cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:($3 > 0.5 ? $2 : NaN) with points pt 6 ps 2 lc rgb "
                            "'black' {}",
@@ -72,8 +97,8 @@ bool LineFigure::any_value() const {
 PlotScript line_figure_script(const LineFigure& f) {
     const PanelLayout layout = panel_layout(f.panel_titles.size());
     std::string gp = gp_preamble("vssw study", f.name, layout.width, layout.height) +
-                     fmt::format("set xlabel {}\nset ylabel {}\nset format y '%.4g'\n", gp_string(f.xlabel),
-                                 gp_string(f.ylabel));
+                     gp_xlabel(f.xlabel, !layout.multiplot()) +
+                     fmt::format("set ylabel {}\nset format y '%.4g'\n", gp_string(f.ylabel));
     if (!f.categories.empty()) {
         std::vector<std::string> tics;
         for (std::size_t i = 0; i < f.categories.size(); ++i)

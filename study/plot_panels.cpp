@@ -134,7 +134,7 @@ std::string layout_end(const PanelLayout& layout, const std::vector<std::pair<st
     std::string s =
         "unset title\nunset border\nunset tics\nunset grid\nunset xlabel\nunset ylabel\nunset colorbox\n"
         "unset arrow\nset lmargin 0\nset rmargin 0\nset xrange [0:1]\nset yrange [0:1]\n"
-        "set key left center vertical reverse Left samplen 2 noautotitle font ',9'\n";
+        "set key left center vertical reverse Left samplen 2 noautotitle\n";  // in the plots' one font
     std::string cmd;
     for (const auto& [title, style] : entries)
         cmd += fmt::format("{}NaN with linespoints {} title {}", cmd.empty() ? "plot " : ", \\\n     ", style,

@@ -134,6 +134,8 @@ PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturning&
                                                    : " (overturning not measured)");
     f.xlabel = parameter_label("alpha");
     f.ylabel = "peak rotation [alpha]";
+    f.xname = "alpha";
+    f.yunit = "alpha";
     for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back("R " + rc.texts[rc.order[p]] + " m");
     std::vector<std::string> engines;
     for (const Series& s : d.series) engines.push_back(s.engine);
@@ -221,10 +223,11 @@ PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const O
     }
     const PanelLayout layout = panel_layout(panels);
     s.gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-           fmt::format("set xlabel {}\nset ylabel {}\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
+           gp_xlabel(parameter_label("pulse_period"), !layout.multiplot()) +
+           fmt::format("set ylabel {}\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
                        "set palette defined (0 '#2c7bb6', 0.5 '#ffffbf', 1 '#d7191c')\nset cbrange [0:1]\n"
                        "set cblabel 'peak rotation / alpha (capped at 1)'\n",
-                       gp_string(parameter_label("pulse_period")), gp_string(parameter_label("amplitude"))) +
+                       gp_string(parameter_label("amplitude"))) +
            layout_begin(layout, s.plot.title);
     const std::string standing =
         peak ? "with points pt 7 ps 1.6 lc palette" : "with points pt 7 ps 1.6 lc rgb '#2c7bb6'";

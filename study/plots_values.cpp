@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/simulate.hpp"  // SimulationOptions::energy_ceiling
 #include "study/plot_lines.hpp"
 #include "study/plot_panels.hpp"
 #include "study/spec.hpp"
@@ -13,6 +14,10 @@
 
 namespace vssw::study {
 namespace {
+
+// A value plot's y axis spans at least 1 % of its largest |value|: differences below that are a study's rounding and
+// noise, not a trend to read, and with it the '%.4g' tic labels stay apart (tics a fifth of the span: 2e-3 of it).
+constexpr double kMinValueSpan = 0.01;
 
 // A line of a value plot: a series, with the x parameter left out of the analytic ones when it is an assumption (the
 // line then runs across that assumption's levels).
@@ -83,6 +88,14 @@ std::optional<PlotScript> value_plot(const StudyData& d, std::size_t metric, std
     f.title = fmt::format("{} against {}{}", m.name, xc.key, summary_note(d, split.rest, m.binary));
     f.xlabel = parameter_label(xc.key);
     f.ylabel = m.binary ? m.name + " (share of runs)" : metric_label(m);
+    f.xname = xc.key;
+    f.yunit = m.binary ? "share of runs" : m.unit;
+    // A share runs from 0 to 1 whatever its values; a value's axis is never narrower than kMinValueSpan of it.
+    if (m.binary) f.setup = "set yrange [-0.05:1.05]\n";
+    else f.min_span = kMinValueSpan;
+    // A run's energy balance error is a relative error that passes up to the ceiling simulate() allows (1e-6): below
+    // that it is the integrator's round-off, which would fill the axis.
+    if (m.name == "energy_balance_error") f.min_abs_span = SimulationOptions{}.energy_ceiling;
     for (const auto& combo : combinations(d, split.split))
         f.panel_titles.push_back(split.split.empty() ? f.title : levels_title(d, split.split, combo));
     std::vector<std::string> engines;

@@ -4,6 +4,7 @@
 // command that ran anyway (the marker files it leaves).
 #include <cstdio>
 #include <filesystem>
+#include <regex>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -59,6 +60,16 @@ inline std::string svg_text(const std::string& text) {
         else s += c;
     }
     return s;
+}
+
+// The hover texts of a plot's SVG as vssw writes it (a native tooltip per point: `<g><title>TEXT</title>`,
+// io/gnuplot.hpp), the document's own <title> left out; as the SVG holds them, XML-escaped.
+inline std::vector<std::string> hover_titles(const std::string& svg) {
+    std::vector<std::string> titles;
+    const std::regex title("<g><title>([^<]*)</title>");
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), title); it != std::sregex_iterator(); ++it)
+        titles.push_back((*it)[1]);
+    return titles;
 }
 
 // The marker files under dir and in the current folder: each is a command that ran.

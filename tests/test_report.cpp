@@ -29,7 +29,9 @@
 #include "apps/cli.hpp"
 #include "multibody/engine.hpp"
 #include "io/csv.hpp"
+#include "compare/targets.hpp"
 #include "io/document_html.hpp"
+#include "io/gnuplot.hpp"
 #include "io/palette.hpp"
 #include "validation/report.hpp"
 #include "validation/report_data.hpp"
@@ -906,6 +908,95 @@ TEST(Palette, EveryKnownEngineHasItsOwnMarkerShape) {
     // An unknown name: a marker all the same, the same every time.
     EXPECT_GT(vssw::study::engine_point("someengine"), 0);
     EXPECT_EQ(vssw::study::engine_point("someengine"), vssw::study::engine_point("someengine"));
+}
+
+// --- values on hover, axes, font ----------------------------------------------------------------------------------
+
+// Each point of an error plot names its engine, case and error in a native SVG tooltip: no script handler (gnuplot's
+// own calls a gnuplot_svg the page does not load), a <title> per point with the text a reader needs.
+TEST(ReportPlots, ErrorPlotPointsShowTheirValueOnHoverWithoutAScript) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const Written w = write_hand_report("hover", vssw::study::ReportOptions{});
+    const std::string svg = read(w.dir.path / "plots" / "error_threshold_g.svg");
+    EXPECT_FALSE(contains(svg, "onmousemove"));
+    EXPECT_FALSE(contains(svg, "gnuplot_svg"));
+    EXPECT_FALSE(contains(svg, "<title>gnuplot_plot_")) << "gnuplot's group titles name nothing";
+    const std::string ode = vssw::multibody::engine_display_name("ode"),
+                      bullet = vssw::multibody::engine_display_name("bullet");
+    // hand_results: fig6-vssw ODE exact, Bullet 0.2858 for 0.286; fig6-pw ODE 0.1001 for 0.1.
+    std::vector<std::string> expected = {ode + ", fig6-vssw: 0 %", bullet + ", fig6-vssw: -0.06993 %",
+                                         ode + ", fig6-pw: 0.1 %"};
+    std::vector<std::string> titles = vssw::testing::hover_titles(svg);
+    std::sort(expected.begin(), expected.end());
+    std::sort(titles.begin(), titles.end());
+    EXPECT_EQ(titles, expected) << "one per point: " << svg.substr(0, 2000);
+    EXPECT_TRUE(contains(svg, "<title>Relative error of the threshold acceleration per case and engine</title>"));
+    // The page inlines it as it is.
+    EXPECT_TRUE(contains(w.html, "<g><title>" + bullet + ", fig6-vssw: -0.06993 %</title>"));
+    EXPECT_FALSE(contains(w.html, "gnuplot_svg"));
+    // The trace plots carry none (thousands of points each).
+    EXPECT_TRUE(vssw::testing::hover_titles(read(w.dir.path / "plots" / "trace_fig6-vssw_r0.5.svg")).empty());
+}
+
+// The rewrite itself: gnuplot's escaping undone and the text escaped once for XML, whatever it holds; everything else
+// of the SVG kept.
+TEST(ReportPlots, NativeTooltipsAreEscapedAndReplaceOnlyGnuplotsHandlers) {
+    const std::string handler = "\" onmouseout=\"gnuplot_svg.hideHypertext()\"><title> </title>";
+    const std::string svg = "<svg>\n<title>Gnuplot</title>\n<g id=\"gnuplot_plot_1\" ><title>gnuplot_plot_1</title>\n"
+                            "<g onmousemove=\"gnuplot_svg.showHypertext(evt,'a &lt;b> &amp; 'c' ')" + handler +
+                            "\n<use xlink:href='#gpPt6'/></g>\n"
+                            "<g onmousemove=\"gnuplot_svg.showHypertext(evt,'plain')" + handler +
+                            "<use/></g>\n</g>\n</svg>\n";
+    const std::string out = vssw::study::svg_native_tooltips(svg, "x < y & \"z\"");
+    EXPECT_EQ(out, "<svg>\n<title>x &lt; y &amp; &quot;z&quot;</title>\n<g id=\"gnuplot_plot_1\" >\n"
+                   "<g><title>a &lt;b&gt; &amp; 'c' </title>\n<use xlink:href='#gpPt6'/></g>\n"
+                   "<g><title>plain</title><use/></g>\n</g>\n</svg>\n");
+    EXPECT_EQ(vssw::study::svg_native_tooltips(out, "x"), out) << "a second pass finds nothing to change";
+}
+
+// Relative errors of 1e-7 % are no error: the axis spans the target band (with room around it), not their noise.
+TEST(ReportPlots, ErrorAxesSpanAtLeastTheTarget) {
+    vssw::compare::SuiteResults results = hand_results();
+    for (auto& r : results.rows)
+        if (r.metric == "threshold_g" && r.engine != "analytic") {
+            r.engine_value = r.analytic * (1.0 + 1e-9);
+            r.rel_error = 1e-9;
+        }
+    const auto scripts = vssw::study::report_plot_scripts({hand_suite(), results, {}});
+    const vssw::study::PlotScript* s = script_named(scripts, "error_threshold_g");
+    ASSERT_NE(s, nullptr);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set yrange \\[\\*<([^:]+):([^<]+)<\\*\\]"))) << s->gp;
+    const double band = 100.0 * vssw::compare::kThresholdTarget;  // [%]
+    EXPECT_LE(std::stod(m[1]), -band) << s->gp;
+    EXPECT_GE(std::stod(m[2]), band) << s->gp;
+    EXPECT_TRUE(contains(s->gp, fmt::format("title 'target +/-{:g} %'", band))) << s->gp;
+    EXPECT_FALSE(contains(s->gp, "bmargin")) << "gnuplot sizes the margin to the case labels: " << s->gp;
+}
+
+// One font for every plot: the terminal's, from gp_preamble, and no text of any plot in another.
+TEST(ReportPlots, EveryPlotScriptUsesTheOneFont) {
+    const std::string preamble = vssw::study::gp_preamble("vssw test", "x", 1, 1);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(preamble, m, std::regex("set terminal svg size 1,1 ([^\n]*)")));
+    const std::string terminal = m[1];
+    EXPECT_TRUE(contains(terminal, vssw::study::gp_font())) << terminal;
+    const auto scripts = vssw::study::report_plot_scripts({hand_suite(), hand_results(), {}});
+    ASSERT_GE(scripts.size(), 4u);
+    for (const auto& s : scripts) {
+        int terminals = 0;
+        for (const std::string& line : lines_of(s.gp)) {
+            if (line.rfind("set terminal", 0) == 0) {
+                ++terminals;
+                EXPECT_TRUE(std::regex_match(line, std::regex("set terminal svg size \\d+,\\d+ (.*)"))) << line;
+                EXPECT_TRUE(contains(line, terminal)) << s.plot.name << ": " << line;
+            }
+            for (auto at = line.find("font "); at != std::string::npos; at = line.find("font ", at + 1))
+                EXPECT_EQ(line.compare(at, vssw::study::gp_font().size(), vssw::study::gp_font()), 0)
+                    << s.plot.name << ": " << line;
+        }
+        EXPECT_EQ(terminals, 1) << s.plot.name;
+    }
 }
 
 // --- the command --------------------------------------------------------------------------------------------------

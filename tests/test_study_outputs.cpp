@@ -12,7 +12,9 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <algorithm>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -26,6 +28,7 @@
 #include "study/journal.hpp"
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
+#include "study/plot_lines.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"
 #include "study/spec.hpp"
@@ -141,7 +144,8 @@ std::vector<TornadoRow> tornado_rows(const fs::path& dat) {
     return rows;
 }
 
-// The data lines of a .dat (comments and blank lines left out), each split into words.
+// The data lines of a .dat (comments and blank lines left out), each split into words up to a quoted text (a point's
+// hover text, the last column).
 std::vector<std::vector<std::string>> dat_lines(const fs::path& dat) {
     std::vector<std::vector<std::string>> lines;
     std::istringstream in(read(dat));
@@ -149,7 +153,7 @@ std::vector<std::vector<std::string>> dat_lines(const fs::path& dat) {
         if (line.empty() || line[0] == '#') continue;
         std::istringstream words(line);
         std::vector<std::string> w;
-        for (std::string word; words >> word;) w.push_back(word);
+        for (std::string word; words >> word && word[0] != '"';) w.push_back(word);
         lines.push_back(w);
     }
     return lines;
@@ -316,6 +320,80 @@ TEST_F(TinyStudy, ThePageOpensWithItsMainFiguresAndLargestEffects) {
         at = found;
     }
     EXPECT_FALSE(contains(top, "| impact | eq19 | whole-mechanism | period |")) << "the sixth is below";
+}
+
+// The hover texts of every point of the SVG (hostile_names.hpp), no script handler left.
+std::vector<std::string> point_texts(const std::string& svg) {
+    EXPECT_FALSE(contains(svg, "onmousemove"));
+    EXPECT_FALSE(contains(svg, "gnuplot_svg"));
+    return vssw::testing::hover_titles(svg);
+}
+
+// Every point of a value plot and every median of a tornado names its line, x and value with its unit on hover; every
+// script draws in the one font.
+TEST_F(TinyStudy, PlotsShowValuesOnHoverInTheOneFont) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const st::OutputFiles files = st::write_study_outputs(out(), {});
+    EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
+    const fs::path plots = out() / st::kPlotsDir;
+    // Period against hinge: each series at 0.5 and 0.7 (1 s to 1.2 x 1.10 x 1.01 s), in seconds.
+    const std::vector<std::string> values = point_texts(read(plots / "value_period_vs_hinge.svg"));
+    EXPECT_GE(values.size(), 4u);
+    for (const std::string& t : values)
+        EXPECT_TRUE(std::regex_match(t, std::regex(".+, hinge 0\\.[57]: 1(\\.\\d+)? s"))) << t;
+    EXPECT_NE(std::find_if(values.begin(), values.end(),
+                           [](const std::string& t) { return contains(t, "hinge 0.7: 1.333 s"); }),
+              values.end())
+        << "the engine at 0.7: 1.2 x 1.10 x 1.01";
+    // The tornado's medians: kinematics changes the period by 5 to 10 %, median 7.5 % (its "->" escaped in XML).
+    const std::vector<std::string> medians = point_texts(read(plots / "tornado_period.svg"));
+    EXPECT_EQ(medians.size(), 2u);
+    EXPECT_NE(std::find(medians.begin(), medians.end(), "kinematics: paper -&gt; exact, 5 to 10 %, median: 7.5 %"),
+              medians.end())
+        << (medians.empty() ? "" : medians.front());
+    // An assumption's change axis spans at least +-1 %, however small the changes.
+    EXPECT_TRUE(contains(read(plots / "tornado_period.gp"), "set xrange [*<-1:1<*]"));
+    // One font: the preamble's terminal, no other size anywhere.
+    int scripts = 0;
+    for (const auto& entry : fs::directory_iterator(plots)) {
+        if (entry.path().extension() != ".gp") continue;
+        ++scripts;
+        const std::string gp = read(entry.path());
+        const std::regex terminal("set terminal svg size \\d+,\\d+ noenhanced " + st::gp_font() + " background");
+        EXPECT_EQ(std::distance(std::sregex_iterator(gp.begin(), gp.end(), terminal), std::sregex_iterator()), 1)
+            << entry.path();
+        for (auto at = gp.find("font "); at != std::string::npos; at = gp.find("font ", at + 1))
+            EXPECT_EQ(gp.compare(at, st::gp_font().size(), st::gp_font()), 0) << entry.path();
+    }
+    EXPECT_GE(scripts, 6);
+}
+
+// A value plot's axis never magnifies round-off: values that agree to 8 digits get an axis of at least 1 % of them
+// (no tic labels alike), values that differ keep gnuplot's autoscale.
+TEST(StudyOutputs, ValuePlotAxesNeverMagnifyRoundOff) {
+    st::LineFigure f;
+    f.name = "flat";
+    f.title = f.xlabel = f.ylabel = "flat";
+    f.panel_titles = {"close", "apart"};
+    f.lines = {{"line", "pt 7"}};
+    f.x = {1.0, 2.0, 3.0};
+    f.min_span = 0.01;
+    f.resize();
+    f.y[0][0] = {0.1234567, 0.1234568, 0.1234569};
+    f.y[1][0] = {0.1, 0.2, 0.3};
+    const std::string gp = st::line_figure_script(f).gp;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(gp, m, std::regex("set yrange \\[([^:]+):([^\\]]+)\\]"))) << gp;
+    EXPECT_GE(std::stod(m[2]) - std::stod(m[1]), 0.01 * 0.1234569 * (1.0 - kDatDigits)) << gp;
+    EXPECT_LT(std::stod(m[1]), 0.1234567);
+    EXPECT_GT(std::stod(m[2]), 0.1234569);
+    EXPECT_TRUE(contains(gp.substr(static_cast<std::size_t>(m.position(0))), "set autoscale y\n")) << gp;
+    // An absolute floor: errors of 1e-14 on an axis of at least 1e-6.
+    f.min_abs_span = 1e-6;
+    f.y[0][0] = {1.3e-14, 1.4e-14, 1.2e-14};
+    const std::string floor = st::line_figure_script(f).gp;
+    ASSERT_TRUE(std::regex_search(floor, m, std::regex("set yrange \\[([^:]+):([^\\]]+)\\]"))) << floor;
+    EXPECT_GE(std::stod(m[2]) - std::stod(m[1]), 1e-6 * (1.0 - kDatDigits)) << floor;
 }
 
 TEST_F(TinyStudy, WithoutGnuplotTheStudyIsWrittenWithAWarning) {

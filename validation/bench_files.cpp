@@ -197,7 +197,7 @@ std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
         const std::string title = fmt::format("Work-precision: {} on {}", metric, problem);
         gp << gp_preamble("vssw bench", name, kPlotWidth, kPlotHeight) << "set title " << gp_string(title) << '\n'
              << "set logscale xy\nset format x '%g'\nset format y '%g'\n"
-             << "set xlabel 'CPU time per run [s] (median of repeats)'\n"
+             << gp_xlabel("CPU time per run [s] (median of repeats)")
              << "set ylabel 'relative error against the converged reference'\n"
              << "plot " << fmt::format("{}", fmt::join(series, ", \\\n     ")) << '\n';
         PlotScript script;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "compare/targets.hpp"
 #include "io/palette.hpp"  // series_style, series_variants
 #include "validation/report_data.hpp"  // trace_number
 #include "multibody/engine.hpp"
@@ -36,6 +37,14 @@ constexpr double kMotionMargin = 0.04;
 // this [px] (Douglas-Peucker on the plot's pixel grid): less than half a pixel, so the plot shows what all samples
 // would; a record's long rest at zero becomes one segment.
 constexpr double kTracePixelTolerance = 0.25;
+
+// The error plots' y axis spans at least the target band times this, so that the band's dashed lines stay inside the
+// frame with a little room (a fifth of the band) for a point just outside them.
+constexpr double kBandRoom = 1.2;
+// The band of a metric without a target (the RMS difference): the smallest target of any metric (threshold and period,
+// 0.5 %: compare/targets.hpp), below which no difference is one the report asks about.
+constexpr double kSmallestTarget = std::min({compare::kThresholdTarget, compare::kPeriodTarget,
+                                             compare::kRestitutionTarget});
 
 // A case whose other traces (engines, the whole-mechanism model) all peak below this share of the reference's gets a
 // second trace plot zoomed on them: below a third of the reference they span less than a third of its plot's height,
@@ -190,6 +199,8 @@ PlotScript trace_script(const std::string& id, const std::string& name, const st
         const bool analytic = t->engine == "analytic";
         const bool whole = t->assumption == compare::kWholeMechanismImpact;
         // The engine's marker (io/palette.hpp) on a few of the line's points: the line reads without its colour.
+        // No hover layer (gnuplot.hpp, gp_hover_layer): a trace has up to thousands of points, each a group with its
+        // text in the SVG, which the page inlines: several times its size for values the .dat holds anyway.
         const std::size_t every = std::max<std::size_t>(1, kept.size() / kTraceMarkers);
         plot_cmd += fmt::format(
             "{}'{}.dat' index {} using 1:2 with linespoints lw {} dt {} pt {} ps 0.8 pi {} lc rgb '{}' title {}",
@@ -199,9 +210,10 @@ PlotScript trace_script(const std::string& id, const std::string& name, const st
     }
     s.gp = gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
            // clip two: a line between two points outside the frame is drawn across it (a zoomed plot's reference).
-           fmt::format("set title {}\nset xlabel 't [s]'\nset ylabel 'theta1 / alpha'\nset clip two\n"
+           fmt::format("set title {}\n{}set ylabel 'theta1 / alpha'\nset clip two\n"
                        "set xrange [{}:{}]\nset yrange [{}:{}]\n",
-                       gp_string(s.plot.title), gp_number(w.t0), gp_number(w.t1), gp_number(w.y0), gp_number(w.y1)) +
+                       gp_string(s.plot.title), gp_xlabel("t [s]"), gp_number(w.t0), gp_number(w.t1),
+                       gp_number(w.y0), gp_number(w.y1)) +
            plot_cmd + "\n";
     return s;
 }
@@ -267,13 +279,18 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
                       ? std::string("RMS difference of theta1 / alpha over the analytic peak, per case and engine")
                       : fmt::format("Relative error of the {} per case and engine", metric_title(table.metric)),
                   false};
+        // Per case: the engines' errors, then each one's hover text (gnuplot.hpp, gp_hover_layer) in that order.
+        const std::size_t engines = table.engines.size();
         s.dat = "# index case_id";
         for (const std::string& e : table.engines) s.dat += ' ' + gp_comment(e);
-        s.dat += "   (relative error in %)\n";
+        s.dat += "   (relative error in %), then the hover text of each\n";
         for (std::size_t i = 0; i < table.rows.size(); ++i) {
             const MetricTableRow& row = table.rows[i];
             s.dat += fmt::format("{} {}", i, gp_data_string(row.case_id));
             for (const MetricCell& c : row.cells) s.dat += ' ' + gp_number(c.present ? 100.0 * c.rel_error : NAN);
+            for (std::size_t e = 0; e < row.cells.size() && e < engines; ++e)
+                s.dat += ' ' + gp_hover_text(multibody::engine_display_name(table.engines[e]), row.case_id,
+                                             row.cells[e].present ? 100.0 * row.cells[e].rel_error : NAN, "%");
             s.dat += '\n';
         }
         const int width = std::max(kPlotWidth, 260 + kPixelsPerCase * static_cast<int>(table.rows.size()));
@@ -285,23 +302,29 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
         if (!tics.empty()) tics += ")\n";
         std::string cmd;
         // Each engine's own marker and colour (io/palette.hpp: the same whatever the engine list), slightly offset
-        // along x so that equal values stay visible.
+        // along x so that equal values stay visible; its values on hover over the same markers.
         const double spread = 0.12;
-        for (std::size_t e = 0; e < table.engines.size(); ++e) {
-            const double offset =
-                spread * (static_cast<double>(e) - 0.5 * static_cast<double>(table.engines.size() - 1));
-            cmd += fmt::format("{}'{}.dat' using ($1+({:g})):{} with points pt {} ps 1.3 lc rgb '{}' title {}",
-                               e == 0 ? "plot " : ", \\\n     ", s.plot.name, offset, e + 3, engine_point(table.engines[e]),
-                               engine_colour(table.engines[e]), gp_string(multibody::engine_display_name(table.engines[e])));
+        for (std::size_t e = 0; e < engines; ++e) {
+            const double offset = spread * (static_cast<double>(e) - 0.5 * static_cast<double>(engines - 1));
+            const std::string style = fmt::format("pt {} ps 1.3 lc rgb '{}'", engine_point(table.engines[e]),
+                                                  engine_colour(table.engines[e]));
+            const std::string using_xy = fmt::format("'{}.dat' using ($1+({:g})):{}", s.plot.name, offset, e + 3);
+            cmd += fmt::format("{}{} with points {} title {}, \\\n     {}", e == 0 ? "plot " : ", \\\n     ", using_xy,
+                               style, gp_string(multibody::engine_display_name(table.engines[e])),
+                               gp_hover_layer(fmt::format("{}:(stringcolumn({}))", using_xy, e + 3 + engines), style));
         }
+        // The y axis spans at least the target band with room around it (or, without a target, the smallest target),
+        // so that errors far inside it stay near zero instead of filling the plot (1e-7 % read as large).
+        const double band = 100.0 * table.target.value_or(kSmallestTarget);
         if (table.target)
             cmd += fmt::format(", \\\n     {0:g} with lines dt 2 lc rgb '#888888' title 'target +/-{0:g} %', \\\n"
                                "     -{0:g} with lines dt 2 lc rgb '#888888' notitle",
-                               100.0 * *table.target);
+                               band);
         s.gp = gp_preamble("vssw report", s.plot.name, width, kPlotHeight + 80) +
                fmt::format("set title {}\nset ylabel 'relative error [%] (engine / reference - 1)'\n"
-                           "set xrange [-0.6:{}]\nset xtics rotate by -35 left\n{}set bmargin 9\n",
-                           gp_string(s.plot.title), static_cast<double>(table.rows.size()) - 0.4, tics) +
+                           "set xrange [-0.6:{}]\nset yrange [*<{}:{}<*]\nset xtics rotate by -35 left\n{}",
+                           gp_string(s.plot.title), static_cast<double>(table.rows.size()) - 0.4,
+                           gp_number(-kBandRoom * band), gp_number(kBandRoom * band), tics) +
                cmd + "\n";
         scripts.push_back(std::move(s));
     }
@@ -332,25 +355,30 @@ std::vector<PlotScript> step_scripts(const ReportInput& in) {
         const std::vector<std::size_t> variants = series_variants(engines);
         for (const StepSeries* drawn_series : drawn) {
             const StepSeries& series = *drawn_series;
-            s.dat += fmt::format("# {} {} {}\n# dt_ms abs_rel_error_percent\n", gp_comment(series.engine),
+            s.dat += fmt::format("# {} {} {}\n# dt_ms abs_rel_error_percent hover_text\n", gp_comment(series.engine),
                                  gp_comment(series.base_case), gp_comment(metric));
+            const std::string label = multibody::engine_display_name(series.engine) + " " + series.base_case;
             for (std::size_t i = 0; i < series.dt.size(); ++i)
                 s.dat += gp_number(1e3 * series.dt[i], true) + ' ' +
-                         gp_number(100.0 * std::abs(series.rel_error[i]), true) + '\n';
+                         gp_number(100.0 * std::abs(series.rel_error[i]), true) + ' ' +
+                         gp_hover_text(label, fmt::format("dt {:g} ms", 1e3 * series.dt[i]),
+                                       100.0 * std::abs(series.rel_error[i]), "%") +
+                         '\n';
             s.dat += "\n\n";
-            cmd += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints {} title {}",
-                               index == 0 ? "plot " : ", \\\n     ", s.plot.name, index,
-                               series_style(series.engine, variants[static_cast<std::size_t>(index)]),
-                               gp_string(multibody::engine_display_name(series.engine) + " " + series.base_case));
+            const std::string style = series_style(series.engine, variants[static_cast<std::size_t>(index)]);
+            cmd += fmt::format("{0}'{1}.dat' index {2} using 1:2 with linespoints {3} title {4}, \\\n     {5}",
+                               index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, style, gp_string(label),
+                               gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(3))",
+                                                          s.plot.name, index),
+                                              style));
             ++index;
         }
         if (index == 0) continue;
         if (const auto target = target_of(metric))
             cmd += fmt::format(", \\\n     {0:g} with lines dt 2 lc rgb '#888888' title 'target {0:g} %'", 100.0 * *target);
         s.gp = gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
-               fmt::format("set title {}\nset logscale xy\nset format y '%g'\nset xlabel 'engine step dt [ms]'\n"
-                           "set ylabel '|relative error| [%]'\n",
-                           gp_string(s.plot.title)) +
+               fmt::format("set title {}\nset logscale xy\nset format y '%g'\n{}set ylabel '|relative error| [%]'\n",
+                           gp_string(s.plot.title), gp_xlabel("engine step dt [ms]")) +
                cmd + "\n";
         scripts.push_back(std::move(s));
     }

@@ -1,10 +1,14 @@
 #!/bin/bash
-# The report as a reader sees it: report.html rendered by headless Chromium (Debian package `chromium`), failing on a
-# JavaScript error, an image that does not load, a figure without its plot drawn, or a contents link without its
-# anchor. A copy of the page gets a small script at the top of its <head> that records every error event (scripts and
-# resources alike, caught in the capture phase) and, once the page has loaded, writes what it found into the DOM,
-# which Chromium dumps. A deliberately broken copy (an <img> whose file is missing, a script calling an undefined
-# function) must fail the same check naming both, or the check could not fail at all. About 10 s, two renders.
+# The report and a study as a reader sees them: report.html and study.html rendered by headless Chromium (Debian package
+# `chromium`), failing on a JavaScript error, an image that does not load, a figure without its plot drawn, a contents
+# link without its anchor, or a plot point left with gnuplot's script hover handler (onmousemove calling a gnuplot_svg
+# the pages do not load: an error on every hover). A copy of the page gets a small script at the top of its <head> that
+# records every error event (scripts and resources alike, caught in the capture phase) and, once the page has loaded,
+# writes what it found into the DOM, which Chromium dumps; it counts the plots and the points' native hover texts
+# (<title> in a plot's group: io/gnuplot.hpp), of which each page must have some when gnuplot is installed. A
+# deliberately broken copy (an <img> whose file is missing, a script calling an undefined function, a point with
+# gnuplot's handler) must fail the same check naming all three, or the check could not fail at all. About 15 s, three
+# renders.
 # Usage: report_browser.sh path/to/vssw path/to/data work_dir        Exit 0 ok, 1 failed, 77 skipped (no chromium).
 set -u
 vssw=$1
@@ -38,6 +42,11 @@ window.addEventListener("load", function () {
   document.querySelectorAll("img").forEach(function (img) {
     if (!img.complete || img.naturalWidth === 0) p.push("image not shown: " + img.getAttribute("src"));
   });
+  document.querySelectorAll("[onmousemove]").forEach(function (g) {
+    p.push("script hover handler: " + g.getAttribute("onmousemove").slice(0, 60));
+  });
+  var hovers = 0;
+  document.querySelectorAll("figure svg g > title").forEach(function (t) { if (t.textContent.trim()) hovers++; });
   var plots = 0;
   document.querySelectorAll("figure").forEach(function (f, i) {
     var svg = f.querySelector("svg"), r = svg ? svg.getBoundingClientRect() : null;
@@ -50,7 +59,8 @@ window.addEventListener("load", function () {
       p.push("link without its anchor: " + a.getAttribute("href"));
   });
   var out = document.createElement("pre");
-  out.textContent = p.length ? "VSSW-CHECK FAIL\n" + p.join("\n") : "VSSW-CHECK OK plots=" + plots;
+  out.textContent = p.length ? "VSSW-CHECK FAIL\n" + p.join("\n")
+                             : "VSSW-CHECK OK hovers=" + hovers + " plots=" + plots;
   document.body.appendChild(out);
 });
 </script>'
@@ -75,23 +85,43 @@ failures=0
 if ! grep -q 'id="under-earthquake-records"' "$work/report/report.html"; then
     echo "FAIL: report.html has no section \"Under earthquake records\""; failures=$((failures + 1))
 fi
-instrument "$work/report/report.html" "$work/report/checked.html"
-verdict=$(render "$work/report/checked.html")
-case "$verdict" in
-    "VSSW-CHECK OK"*)
-        echo "report.html: $verdict"
-        if command -v gnuplot >/dev/null && [ "${verdict#*plots=}" = 0 ]; then
-            echo "FAIL: gnuplot is installed but the page shows no plot"; failures=$((failures + 1))
-        fi ;;
-    *)  echo "FAIL: report.html in Chromium:"; echo "${verdict:-(no verdict: the checker did not run)}"
-        tail -20 "$work/report/checked.html.log"; failures=$((failures + 1)) ;;
-esac
 
-# The check must be able to fail: a copy with a missing image and a script error must fail it, naming both.
+# A small study (study_small.toml: analytic runs only, under a second) for study.html: value plots and tornado charts.
+if ! "$vssw" study "$(dirname "$0")/study_small.toml" --out "$work/study" >"$work/study.log" 2>&1; then
+    echo "FAIL: vssw study failed:"; cat "$work/study.log"; exit 1
+fi
+
+# check PAGE: the checker's verdict on the page, which must be OK, with plots and hover texts when gnuplot is there.
+check() {
+    local page=$1 checked verdict
+    checked="$(dirname "$page")/checked.html"
+    instrument "$page" "$checked"
+    verdict=$(render "$checked")
+    case "$verdict" in
+        "VSSW-CHECK OK"*)
+            echo "$(basename "$page"): $verdict"
+            if command -v gnuplot >/dev/null; then
+                case "$verdict" in
+                    *" plots=0"|*"hovers=0 "*)
+                        echo "FAIL: gnuplot is installed but $(basename "$page") shows no plot or no hover text"
+                        failures=$((failures + 1)) ;;
+                esac
+            fi ;;
+        *)  echo "FAIL: $(basename "$page") in Chromium:"; echo "${verdict:-(no verdict: the checker did not run)}"
+            tail -20 "$checked.log"; failures=$((failures + 1)) ;;
+    esac
+}
+check "$work/report/report.html"
+check "$work/study/study.html"
+
+# The check must be able to fail: a copy with a missing image, a script error and a point with gnuplot's hover handler
+# must fail it, naming all three.
 instrument "$work/report/report.html" "$work/report/broken.html" \
-    '<img src="plots/no_such_plot.svg" alt="missing"><script>vsswNoSuchFunction();</script>'
+    '<img src="plots/no_such_plot.svg" alt="missing"><script>vsswNoSuchFunction();</script>
+<svg><g onmousemove="gnuplot_svg.showHypertext(evt,'"'x'"')"><circle r="3"/></g></svg>'
 verdict=$(render "$work/report/broken.html")
-for expected in "VSSW-CHECK FAIL" "did not load: plots/no_such_plot.svg" "script error: Uncaught ReferenceError"; do
+for expected in "VSSW-CHECK FAIL" "did not load: plots/no_such_plot.svg" "script error: Uncaught ReferenceError" \
+                "script hover handler: gnuplot_svg.showHypertext"; do
     case "$verdict" in
         *"$expected"*) ;;
         *) echo "FAIL: the broken copy's verdict lacks '$expected' (${verdict:-no verdict}): the check cannot fail"
