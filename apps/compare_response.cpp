@@ -90,4 +90,40 @@ void print_response_comparison(const study::ResponseComparison& result, const Mo
         throw SimulationFailure("--strict: the analytic model's assumptions failed along the run: " + ref.warnings);
 }
 
+// The ground motion of a comparison, from its options as `vssw history` reads them, with a study's rules besides
+// (a record with its own times and one that shakes, a pulse of positive amplitude), each message naming the option.
+study::ResponseMotion response_motion(const GroundMotionOptions& m, LoadedMotion loaded) {
+    require(!m.scale || (std::isfinite(*m.scale) && *m.scale > 0.0), "--scale (vssw compare)",
+            "a positive finite factor", m.scale.value_or(0.0));
+    study::ResponseMotion r;
+    r.scale = m.scale;
+    r.pga_g = m.pga_g;
+    if (m.record) {
+        // compare has taken records with their own times only, as a study does (AT2 headers, two columns, a CSV with
+        // a time column). The record read above could now be one of values at --record-dt or of named columns; taking
+        // those widens what compare accepts, a change of its own.
+        if (!m.format.is_default())
+            throw InputError("--record-dt, --time-column and --accel-column are read by history and free, not yet by "
+                             "compare: give compare a record with its times (an AT2 file, two columns, or a CSV whose "
+                             "first two columns are time and acceleration)");
+        try {
+            study::require_shakes(loaded.unscaled, *m.record);
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("--record: {}", e.what()));
+        }
+        r.file = *m.record;
+        r.record = std::move(loaded.unscaled);
+        return r;
+    }
+    // `vssw history` takes a negative amplitude as a pulse the other way; a study's amplitude is positive (--pga
+    // replaces it).
+    if (!m.pga_g && !(*m.amplitude_g > 0.0))
+        throw InputError(fmt::format("--amplitude: must be a positive number, got {}", *m.amplitude_g));
+    r.shape = *m.pulse;
+    r.amplitude_g = *m.amplitude_g;
+    r.pulse_period = *m.pulse_period;
+    r.duration = m.duration.value_or(0.0);
+    return r;
+}
+
 }  // namespace vssw::cli

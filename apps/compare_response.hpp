@@ -4,10 +4,16 @@
 // as a table or JSON.
 #include <iosfwd>
 
+#include "apps/ground_motion_options.hpp"
 #include "apps/wall_options.hpp"
 #include "study/response_comparison.hpp"
 
 namespace vssw::cli {
+
+// The ground motion of a comparison, from its options as `vssw history` reads them (`loaded`: what
+// load_ground_motion read from them), with a study's rules besides (a record with its own times and one that shakes,
+// a pulse of positive amplitude): InputError naming the option otherwise. Also the Python module's (vssw.compare).
+study::ResponseMotion response_motion(const GroundMotionOptions& m, LoadedMotion loaded);
 
 // Prints the comparison (table or JSON); `options` names the reference's assumptions as given. SimulationFailure
 // (exit 3) when any run failed, or with `strict` when the analytic run warns (after printing).

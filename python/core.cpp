@@ -30,6 +30,7 @@
 #include "analytic/error.hpp"
 #include "analytic/closed_forms.hpp"
 #include "apps/cli.hpp"
+#include "apps/compare_response.hpp"
 #include "apps/ground_motion_options.hpp"
 #include "apps/progress.hpp"
 #include "apps/wall_options.hpp"
@@ -39,6 +40,7 @@
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/run_budget.hpp"
+#include "study/response_comparison.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (apps/CMakeLists.txt)
 
 namespace py = pybind11;
@@ -367,6 +369,58 @@ py::dict compare(const std::string& engine_name, const WallArgs& wall, double th
     return d;
 }
 
+// Engines and the analytic model from rest under one ground motion (`vssw compare --record|--pulse`): the runs in
+// order, the reference first, each as a dict (vssw.ResponseRun's fields).
+py::dict compare_response(const std::vector<std::string>& engine_names, const WallArgs& wall,
+                          const vssw::cli::GroundMotionOptions& motion_options, std::optional<double> dt,
+                          std::optional<int> iterations, const std::map<std::string, double>& knobs,
+                          std::optional<double> run_budget) {
+    const vssw::cli::ChosenModel chosen = chosen_model(wall);
+    // The engines' own settings: the analytic model's assumptions belong to the reference, as in compare().
+    const vssw::cli::ChosenModel engine_model = chosen_model({wall.model, wall.height, wall.thickness, wall.hinge,
+                                                              wall.xi, wall.density, wall.g, "exact", "eq19",
+                                                              "bilateral"});
+    std::vector<vssw::study::ResponseEngine> engines;
+    bool concurrent = true;  // every engine may run beside another thread's (else the GIL serialises them, as compare)
+    for (const std::string& name : engine_names) {
+        const std::unique_ptr<vssw::multibody::Engine> e = vssw::multibody::make_engine(name);
+        engines.push_back({name, settings_of(*e, engine_model, dt, std::nullopt, iterations, knobs)});
+        concurrent = concurrent && e->runs_concurrently();
+    }
+    const vssw::study::ResponseMotion motion =
+        vssw::cli::response_motion(motion_options, vssw::cli::load_ground_motion(motion_options));
+    const vssw::multibody::AnalyticAssumptions reference{
+        chosen.kinematics.value_or(vssw::Kinematics::exact), chosen.impact, chosen.roller};
+    const ScopedRunBudget budget(run_budget);
+    vssw::study::ResponseComparison result;
+    {
+        std::optional<py::gil_scoped_release> released;
+        if (concurrent) released.emplace();
+        result = vssw::study::compare_response(vssw::multibody::WallScene(chosen.wall), reference, motion, engines);
+    }
+    py::list runs;
+    for (const vssw::study::ResponseRun& r : result.runs) {
+        py::dict d;
+        d["engine"] = r.engine;
+        d["version"] = r.version;
+        d["settings"] = r.settings;
+        d["peak"] = r.peak;
+        d["peak_time"] = r.peak_time;
+        d["overturned"] = std::isfinite(r.overturned) ? py::cast(r.overturned == 1.0) : py::none();
+        d["t_overturn"] = r.t_overturn;
+        d["status"] = r.status;
+        d["warnings"] = r.warnings;
+        runs.append(d);
+    }
+    const vssw::study::CaseSpec& c = result.the_case;
+    py::dict out;
+    out["ground_motion"] = c.file.empty() ? fmt::format("{} pulse, amplitude {} g, period {} s", c.shape,
+                                                        c.amplitude_g, c.pulse_period)
+                                          : fmt::format("{} scaled by {:.6g} (PGA {:.4g} g)", c.file, c.scale, c.pga_g);
+    out["runs"] = runs;
+    return out;
+}
+
 py::list engine_settings(const std::string& engine_name) {
     const std::unique_ptr<vssw::multibody::Engine> engine = vssw::multibody::make_engine(engine_name);
     py::list l;
@@ -393,6 +447,22 @@ void raise_package_error(const char* name, int code, const char* message) {
 
 }  // namespace
 
+// The ground motion as the Python functions take it (record= with scale= or pga=, or pulse= with its parameters).
+vssw::cli::GroundMotionOptions motion_options(std::optional<std::string> record, std::optional<double> scale,
+                                              std::optional<double> pga, std::optional<std::string> pulse,
+                                              std::optional<double> amplitude, std::optional<double> pulse_period,
+                                              std::optional<double> duration) {
+    vssw::cli::GroundMotionOptions motion;
+    motion.record = std::move(record);
+    motion.scale = scale;
+    motion.pga_g = pga;
+    motion.pulse = std::move(pulse);
+    motion.amplitude_g = amplitude;
+    motion.pulse_period = pulse_period;
+    motion.duration = duration;
+    return motion;
+}
+
 PYBIND11_MODULE(_core, m) {
     m.doc() = "The library behind the vssw package (use the vssw package, not this module).";
     m.def("run", &run, py::arg("args"),
@@ -413,14 +483,8 @@ PYBIND11_MODULE(_core, m) {
            std::optional<double> pga, std::optional<std::string> pulse, std::optional<double> amplitude,
            std::optional<double> pulse_period, std::optional<double> duration, bool stop_at_rest,
            std::optional<double> friction, std::optional<double> run_budget) {
-            vssw::cli::GroundMotionOptions motion;
-            motion.record = std::move(record);
-            motion.scale = scale;
-            motion.pga_g = pga;
-            motion.pulse = std::move(pulse);
-            motion.amplitude_g = amplitude;
-            motion.pulse_period = pulse_period;
-            motion.duration = duration;
+            const auto motion = motion_options(std::move(record), scale, pga, std::move(pulse), amplitude, pulse_period,
+                                               duration);
             return simulate(engine, wall, theta0, t_end, dt, sample_dt, iterations, knobs, motion, stop_at_rest,
                             friction, run_budget);
         },
@@ -432,6 +496,21 @@ PYBIND11_MODULE(_core, m) {
     m.def("compare", &compare, py::arg("engine"), py::arg("wall"), py::arg("theta0"), py::arg("dt"),
           py::arg("iterations"), py::arg("knobs"), py::arg("run_budget"),
           "One engine against the analytic model (vssw.compare documents the arguments).");
+    m.def(
+        "compare_response",
+        [](const std::vector<std::string>& engines, const WallArgs& wall, std::optional<std::string> record,
+           std::optional<double> scale, std::optional<double> pga, std::optional<std::string> pulse,
+           std::optional<double> amplitude, std::optional<double> pulse_period, std::optional<double> duration,
+           std::optional<double> dt, std::optional<int> iterations, const std::map<std::string, double>& knobs,
+           std::optional<double> run_budget) {
+            const auto motion = motion_options(std::move(record), scale, pga, std::move(pulse), amplitude, pulse_period,
+                                               duration);
+            return compare_response(engines, wall, motion, dt, iterations, knobs, run_budget);
+        },
+        py::arg("engines"), py::arg("wall"), py::arg("record"), py::arg("scale"), py::arg("pga"), py::arg("pulse"),
+        py::arg("amplitude"), py::arg("pulse_period"), py::arg("duration"), py::arg("dt"), py::arg("iterations"),
+        py::arg("knobs"), py::arg("run_budget"),
+        "Engines and the analytic model from rest under one ground motion (vssw.compare with record= or pulse=).");
     m.def("engine_settings", &engine_settings, py::arg("engine"), "Every setting of one backend.");
     m.def("available_engines", &vssw::multibody::available_engines, "The backends of this build.");
     m.def("default_compared_engines", &vssw::multibody::default_compared_engines,

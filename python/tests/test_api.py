@@ -115,6 +115,40 @@ def test_a_record_scaled_to_a_pga():
     assert r.max_abs_theta1 > 0
 
 
+def test_compare_under_a_record_gives_the_programs_peaks_and_simulates_alike(cli):
+    # vssw compare --record runs the analytic model and the engine from rest under the record, measured by the study's
+    # code; vssw.compare(record=...) runs the same library functions: the same numbers, to the last bit. The
+    # reference's peak is also what vssw.simulate finds for the analytic model under the same assumptions (its
+    # located turning point, independent of the sampling).
+    model = dict(kinematics="exact", impact="whole-mechanism", roller="unilateral")
+    program = cli.json(["compare", "--engine", "ode", *FIG6_FLAGS, "--record", RECORD, "--pga", "0.4",
+                        "--kinematics", "exact", "--impact", "whole-mechanism", "--roller", "unilateral"])
+    c = vssw.compare("ode", **FIG6, record=RECORD, pga=0.4, **model)
+    assert isinstance(c, vssw.ResponseComparison)
+    runs = {r["engine"]: r for r in program["runs"]}
+    assert c.reference.engine == "analytic" and c.engine.engine == "ode"
+    assert c.reference.peak == runs["analytic"]["peak_rotation"]
+    assert c.engine.peak == runs["ode"]["peak_rotation"]
+    assert c.peak_ratio - 1 == pytest.approx(runs["ode"]["peak_rotation_rel_error"], rel=1e-12)
+    assert c.overturning_agrees == (runs["ode"]["overturned"] == runs["analytic"]["overturned"])
+    analytic = vssw.simulate("analytic", **FIG6, record=RECORD, pga=0.4, **model)
+    assert c.reference.peak == pytest.approx(analytic.max_abs_theta1 / analytic.alpha, rel=MIRROR_RTOL)
+    several = vssw.compare(["ode", "bullet"], **FIG6, record=RECORD, pga=0.4, **model)
+    assert [x.engine.engine for x in several] == ["ode", "bullet"]
+    assert several[0].engine.peak == c.engine.peak  # one reference for every engine, the same runs
+
+
+def test_compare_under_a_ground_motion_refuses_a_release_and_names_python_parameters():
+    with pytest.raises(vssw.InputError, match="theta0 is a release"):
+        vssw.compare("ode", **FIG6, record=RECORD, pga=0.4, theta0=0.5)
+    with pytest.raises(vssw.InputError) as raised:
+        vssw.compare("ode", **FIG6, pulse="sine", amplitude=0.3)
+    assert "pulse_period" in str(raised.value) and "--" not in str(raised.value)
+    with pytest.raises(vssw.InputError) as raised:
+        vssw.simulate("ode", **FIG6, record=RECORD, pga=-1)
+    assert "(pga)" in str(raised.value) and "--pga" not in str(raised.value)
+
+
 def test_engine_settings_reach_the_engine():
     default = vssw.simulate("ode", **FIG6, theta0=0.5, t_end=0.3)
     loose = vssw.simulate("ode", **FIG6, theta0=0.5, t_end=0.3, settings={"erp": 0.5})

@@ -7,7 +7,7 @@ The typed API (keyword arguments with units, results as objects, arrays as NumPy
         one backend's run: a Simulation with t, theta1, theta1_dot, theta2, top_dy, kinetic, potential arrays
     compare(engine, height=, thickness=, hinge=, theta0=0.5, ...)
         engines against the analytic model: a Comparison with threshold, period, restitution (each a Metric:
-        value, reference, rel_error, target, within_target)
+        value, reference, rel_error, target, within_target); with record= or pulse= a ResponseComparison (peaks)
     study(file_or_dict, out=None, ...)      a study: StudyResult(results DataFrame, folder, summary)
     report(out=None, suite="default", ...)  the validation report: ReportResult(metrics, failures, rows, folder, ...)
     engines(), engine_settings(engine), data_dir()
@@ -46,8 +46,8 @@ _locate_installed_files()
 from . import _core, cli  # noqa: E402 (after the environment is set)
 from ._api import compare, data_dir, engine_settings, engines, report, simulate, study  # noqa: E402
 from ._errors import BoundsError, Error, InputError, SimulationError  # noqa: E402
-from ._results import (ClosedForms, Comparison, Impact, Metric, ReportResult, Simulation,  # noqa: E402
-                       StudyResult)
+from ._results import (ClosedForms, Comparison, Impact, Metric, ReportResult, ResponseComparison,  # noqa: E402
+                       ResponseRun, Simulation, StudyResult)
 from .cli import free, help, history, run, wall  # noqa: E402,A004 (help: the program's, as before)
 
 # "0.1.0" (the project's version, CMakeLists.txt); the commit the module was built from is __commit__ ("" outside a
@@ -57,5 +57,6 @@ __commit__ = _core.COMMIT
 
 # help() is left out of __all__: `from vssw import *` must not hide the built-in help.
 __all__ = ["simulate", "compare", "study", "report", "engines", "engine_settings", "data_dir", "wall", "free",
-           "history", "run", "cli", "Simulation", "Impact", "Comparison", "Metric", "ClosedForms", "StudyResult",
+           "history", "run", "cli", "Simulation", "Impact", "Comparison", "Metric", "ClosedForms", "ResponseComparison",
+           "ResponseRun", "StudyResult",
            "ReportResult", "Error", "InputError", "SimulationError", "BoundsError", "__version__"]

@@ -10,7 +10,8 @@ import tempfile
 
 from . import _core, cli
 from ._errors import Error, InputError, SimulationError
-from ._results import (ReportResult, StudyResult, comparison_from, failed_comparison, simulation_from)
+from ._results import (ReportResult, StudyResult, comparison_from, failed_comparison, response_comparisons_from,
+                       simulation_from)
 
 _DENSITY = 1800.0  # kg/m^3, brick masonry (analytic/wall.hpp kDefaultDensity)
 _GRAVITY = 9.81  # m/s^2 (analytic/wall.hpp kDefaultGravity)
@@ -135,7 +136,7 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
         friction: Coulomb friction of the engines' contacts (default 2: nothing slides; sliding is a failure).
         run_budget: CPU seconds one engine run may take (default 30 s + 1 ms per step).
     Raises InputError (a ValueError) naming a bad value, SimulationError (a RuntimeError) when the run fails."""
-    result = _core.simulate(
+    result = _with_python_names(lambda: _core.simulate(
         engine=_word("engine", engine, "analytic"),
         wall=_wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller),
         theta0=_number("theta0", theta0), t_end=_number("t_end", t_end, True), dt=_number("dt", dt, True),
@@ -144,7 +145,7 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
         pga=_number("pga", pga, True), pulse=None if pulse is None else _word("pulse", pulse, None),
         amplitude=_number("amplitude", amplitude, True), pulse_period=_number("pulse_period", pulse_period, True),
         duration=_number("duration", duration, True), stop_at_rest=bool(stop_at_rest),
-        friction=_number("friction", friction, True), run_budget=_number("run_budget", run_budget, True))
+        friction=_number("friction", friction, True), run_budget=_number("run_budget", run_budget, True)))
     return simulation_from(result)
 
 
@@ -202,8 +203,36 @@ def _engine_list(engine):
     return [_word("engine", e, None) for e in engine], True
 
 
+def _check_engines(names):
+    for name in names:
+        if name not in _core.available_engines():
+            raise InputError(f"engine '{name}' is not one of this build's: {', '.join(_core.available_engines())}",
+                             _core.EXIT_BAD_INPUT)
+
+
+# The library's messages about a ground motion name the command line's options (--pga, --pulse-period): the
+# Python functions' parameters are these.
+_OPTION_NAMES = {f"--{name.replace('_', '-')}": name
+                 for name in ["record", "scale", "pga", "pulse", "amplitude", "pulse_period", "duration", "units"]}
+
+
+def _with_python_names(call):
+    """call(), an InputError's message naming the parameters as Python takes them (pga, not --pga)."""
+    try:
+        return call()
+    except InputError as e:
+        message = str(e.args[0]) if e.args else str(e)
+        renamed = message
+        for option, name in sorted(_OPTION_NAMES.items(), key=lambda kv: -len(kv[0])):
+            renamed = renamed.replace(option, name)
+        if renamed == message:
+            raise
+        raise InputError(renamed, _core.EXIT_BAD_INPUT) from None
+
+
 def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY, g=_GRAVITY,
-            theta0=0.5, kinematics="exact", impact=None, roller=None, dt=None, iterations=None, settings=None,
+            theta0=None, record=None, scale=None, pga=None, pulse=None, amplitude=None, pulse_period=None,
+            duration=None, kinematics="exact", impact=None, roller=None, dt=None, iterations=None, settings=None,
             run_budget=None, progress=False):
     """Engines against the analytic model on the metrics the project holds them to (`vssw compare`, over the
     library): the threshold acceleration [g] (the smallest constant ground acceleration that lifts the wall off
@@ -217,6 +246,11 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     height, thickness [m], hinge (h1/h), model ("vssw" | "parapet"), xi (N/W), density [kg/m^3], g [m/s^2]: the
         wall, as vssw.simulate.
     theta0: release for the period and restitution, a fraction of alpha from 0.01 to below 1 (default 0.5).
+    record (with scale or pga) or pulse (with amplitude, pulse_period, duration), as vssw.simulate takes them:
+        instead, the engines and the analytic model from rest under that ground motion (`vssw compare --record`):
+        returns a vssw.ResponseComparison (a list of them for several engines): each run's peak |theta1| / alpha, its
+        time and overturning, and peak_ratio. Not with theta0. A single run's peak is no verdict: judge engines
+        under records on an ensemble (vssw.study, vssw.report).
     kinematics, impact, roller: the analytic reference's assumptions (default exact, Eq. 19, bilateral); the engines'
         settings do not reach it.
     dt [s], iterations, settings ({knob: value}): every engine's step, solver iterations and knobs.
@@ -227,13 +261,29 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     Raises InputError naming a bad value before any engine runs; SimulationError when the one engine asked fails."""
     names, several = _engine_list(engine)
     wall = _wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller)
+    if record is not None or pulse is not None:
+        if theta0 is not None:
+            raise InputError("theta0 is a release for the free vibration; with record= or pulse= the wall starts "
+                             "from rest", _core.EXIT_BAD_INPUT)
+        _check_engines(names)
+        with _Bar(progress, "compare") as bar:
+            bar(0, 1, ", ".join(names))
+            result = _with_python_names(lambda: _core.compare_response(
+                engines=names, wall=wall, record=_record_path(record), scale=_number("scale", scale, True),
+                pga=_number("pga", pga, True), pulse=None if pulse is None else _word("pulse", pulse, None),
+                amplitude=_number("amplitude", amplitude, True),
+                pulse_period=_number("pulse_period", pulse_period, True),
+                duration=_number("duration", duration, True), dt=_number("dt", dt, True),
+                iterations=_integer("iterations", iterations), knobs=_knobs(settings),
+                run_budget=_number("run_budget", run_budget, True)))
+            bar(1, 1, "done")
+        comparisons = response_comparisons_from(result)
+        return comparisons if several else comparisons[0]
+    theta0 = 0.5 if theta0 is None else theta0
     arguments = dict(wall=wall, theta0=_number("theta0", theta0), dt=_number("dt", dt, True),
                      iterations=_integer("iterations", iterations), knobs=_knobs(settings),
                      run_budget=_number("run_budget", run_budget, True))
-    for name in names:  # every engine and its settings checked before the first one runs
-        if name not in _core.available_engines():
-            raise InputError(f"engine '{name}' is not one of this build's: {', '.join(_core.available_engines())}",
-                             _core.EXIT_BAD_INPUT)
+    _check_engines(names)  # every engine and its settings checked before the first one runs
     results = []
     with _Bar(progress, "compare") as bar:
         for i, name in enumerate(names):

@@ -201,6 +201,54 @@ def failed_comparison(engine, message):
 
 
 @dataclasses.dataclass(frozen=True)
+class ResponseRun:
+    """One backend's run from rest under the ground motion (vssw.compare with record= or pulse=): engine, version,
+    settings (as a study writes them: "" at the engine's defaults), peak (max |theta1| / alpha), peak_time [s],
+    overturned (None when the run failed), t_overturn [s] (NaN when standing), status ("ok" or "failed: reason"),
+    warnings (the analytic model's own assumptions failing along the run, "; "-joined)."""
+
+    engine: str
+    version: str
+    settings: str
+    peak: float
+    peak_time: float
+    overturned: Optional[bool]
+    t_overturn: float
+    status: str
+    warnings: str
+
+
+@dataclasses.dataclass(frozen=True)
+class ResponseComparison:
+    """An engine against the analytic model from rest under one ground motion (vssw.compare with record= or pulse=):
+    engine and reference (each a ResponseRun), ground_motion (what shook the wall, in words). A single run's peak is
+    not a verdict: under a record it switches branch for a 1 % change of the scale (docs/earthquakes.md); judge an
+    engine on an ensemble (vssw.study with kind "ensemble", or vssw.report's earthquake part)."""
+
+    engine: ResponseRun
+    reference: ResponseRun
+    ground_motion: str
+
+    @property
+    def peak_ratio(self):
+        """engine peak / reference peak (NaN when either run failed)."""
+        return self.engine.peak / self.reference.peak if self.reference.peak else float("nan")
+
+    @property
+    def overturning_agrees(self):
+        """Both overturned or both stood (None when a run failed)."""
+        if self.engine.overturned is None or self.reference.overturned is None:
+            return None
+        return self.engine.overturned == self.reference.overturned
+
+
+def response_comparisons_from(d):
+    runs = [ResponseRun(**r) for r in d["runs"]]
+    reference = runs[0]  # the analytic model runs first
+    return [ResponseComparison(engine=r, reference=reference, ground_motion=d["ground_motion"]) for r in runs[1:]]
+
+
+@dataclasses.dataclass(frozen=True)
 class StudyResult:
     """A study's outputs (vssw.study): results (results.csv as a DataFrame, read to the last bit), folder (the study
     folder: results.csv, results.json, manifest.json, study.md, plots/), summary (the command's JSON summary)."""
