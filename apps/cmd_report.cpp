@@ -117,6 +117,37 @@ std::optional<study::EarthquakePart> run_earthquake(const ReportCommandOptions& 
     return part;
 }
 
+// What --help says after the options: the files, the targets (formatted from the constants the report judges by:
+// compare/targets.hpp, validation/earthquake.hpp), the JSON keys and CSV columns, the exit codes.
+std::string report_footer() {
+    return
+        "Writes into --out: report.md and report.html (the same content; the HTML is self-contained, plots inline),\n"
+        "results.json, metrics.csv, failures.csv, traces.csv and plots/ (gnuplot .svg, with the .gp script and .dat\n"
+        "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; "
+        "targets:\n" +
+        fmt::format("threshold {:g} %, period {:g} %, restitution {:g} %; under records (earthquake/): overturning "
+                    "agreement >= {:g},\nfragility median within {:g} % of the reference's.\n",
+                    100.0 * compare::kThresholdTarget, 100.0 * compare::kPeriodTarget,
+                    100.0 * compare::kRestitutionTarget, study::kOverturningAgreementTarget,
+                    100.0 * study::kFragilityMedianTarget) +
+        "results.json keys: vssw {commit, report_format}, date, suite {name, walls, records, cases [{id, kind, wall,\n"
+        "r, record, dt}]}, engines [{name, version, contact_scheme, settings {dt, iterations (where set), knobs}}],\n"
+        "targets, rows [{case_id, engine, metric, unit, reference, analytic, engine_value, rel_error, target,\n"
+        "within_target}],\n"
+        "failures [{case_id, engine, message}], summary [{engine, line, within, with_target, not_measured, failures,\n"
+        "max_error}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],\n"
+        "findings, step_study [{engine, case_id, metric, dt, rel_error, order}], traces [{case_id, engine,\n"
+        "assumption, samples}], earthquake {study, reference, targets, records, levels, engines [{engine,\n"
+        "overturning_agreement {value, lo, hi, n, pass}, fragility_median_ratio {..., note}, peak_ratio, inside_band}]}\n"
+        "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"
+        "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
+        "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"
+        "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha,assumption (t to 6,\n"
+        "theta1/alpha to 4 significant digits; assumption: the analytic model's, paper or whole_mechanism_impact).\n"
+        "An engine failing on a case is reported (exit 0). Exit 2 on bad input (unknown suite, engine or case, an\n"
+        "--out that is not a writable folder). Without gnuplot the report is written without plots (a warning).";
+}
+
 }  // namespace
 
 Command add_report_command(CLI::App& root) {
@@ -146,32 +177,7 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_option("--data", o->data, "folder of the ground-motion records (default: $VSSW_DATA_DIR, else <prefix>/share/vssw/data beside an installed vssw, else the source tree's data/)");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
-    // The targets are the constants the report judges by (compare/targets.hpp, validation/earthquake.hpp).
-    cmd->footer(
-        "Writes into --out: report.md and report.html (the same content; the HTML is self-contained, plots inline),\n"
-        "results.json, metrics.csv, failures.csv, traces.csv and plots/ (gnuplot .svg, with the .gp script and .dat\n"
-        "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; targets:\n" +
-        fmt::format("threshold {:g} %, period {:g} %, restitution {:g} %; under records (earthquake/): overturning "
-                    "agreement >= {:g},\nfragility median within {:g} % of the reference's.\n",
-                    100.0 * compare::kThresholdTarget, 100.0 * compare::kPeriodTarget,
-                    100.0 * compare::kRestitutionTarget, study::kOverturningAgreementTarget,
-                    100.0 * study::kFragilityMedianTarget) +
-        "results.json keys: vssw {commit, report_format}, date, suite {name, walls, records, cases [{id, kind, wall,\n"
-        "r, record, dt}]}, engines [{name, version, contact_scheme, settings {dt, iterations (where set), knobs}}],\n"
-        "targets, rows [{case_id, engine, metric, unit, reference, analytic, engine_value, rel_error, target,\n"
-        "within_target}],\n"
-        "failures [{case_id, engine, message}], summary [{engine, line, within, with_target, not_measured, failures,\n"
-        "max_error}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],\n"
-        "findings, step_study [{engine, case_id, metric, dt, rel_error, order}], traces [{case_id, engine,\n"
-        "assumption, samples}], earthquake {study, reference, targets, records, levels, engines [{engine,\n"
-        "overturning_agreement {value, lo, hi, n, pass}, fragility_median_ratio {..., note}, peak_ratio, inside_band}]}\n"
-        "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"
-        "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
-        "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"
-        "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha,assumption (t to 6,\n"
-        "theta1/alpha to 4 significant digits; assumption: the analytic model's, paper or whole_mechanism_impact).\n"
-        "An engine failing on a case is reported (exit 0). Exit 2 on bad input (unknown suite, engine or case, an\n"
-        "--out that is not a writable folder). Without gnuplot the report is written without plots (a warning).");
+    cmd->footer(report_footer());
     return {cmd, {}, [o](std::ostream& out, std::ostream& err) {
                 const std::vector<std::string> engines = checked_engines(o->engines);
                 o->threads = parse_threads(o->threads_text);

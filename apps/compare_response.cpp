@@ -126,4 +126,12 @@ study::ResponseMotion response_motion(const GroundMotionOptions& m, LoadedMotion
     return r;
 }
 
+study::ResponseComparison compare_under_motion(const ChosenModel& chosen, const GroundMotionOptions& motion,
+                                               const std::vector<study::ResponseEngine>& engines) {
+    const study::ResponseMotion m = response_motion(motion, load_ground_motion(motion));
+    const multibody::AnalyticAssumptions reference{chosen.kinematics.value_or(Kinematics::exact), chosen.impact,
+                                                   chosen.roller};
+    return study::compare_response(multibody::WallScene(chosen.wall), reference, m, engines);
+}
+
 }  // namespace vssw::cli

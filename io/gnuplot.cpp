@@ -229,8 +229,12 @@ PlotResult draw_plots(const std::vector<PlotScript>& scripts, const fs::path& pl
         if (!gnuplot_missing) {
             const int status = run_program(run, plot.name + ".gp", plots_dir, log);
             if (status == kNotFound) gnuplot_missing = true;
-            plot.made = status == 0 && fs::exists(svg, ec) && fs::file_size(svg, ec) > 0 &&
-                        add_tooltips(svg, plot.title);
+            const bool drawn = status == 0 && fs::exists(svg, ec) && fs::file_size(svg, ec) > 0;
+            // gnuplot's SVG kept as it drew it when it cannot be rewritten (its hover texts then need its script).
+            plot.made = drawn;
+            if (drawn && !add_tooltips(svg, plot.title))
+                failed.push_back(fmt::format("{} (drawn, but {}.svg could not be read back to add its hover texts)",
+                                             plot.name, plot.name));
             if (plot.made) {
                 fs::remove(log, ec);
             } else {

@@ -41,8 +41,8 @@ PlotResult draw_plots(const std::vector<PlotScript>& scripts, const std::filesys
 std::string gp_font();
 
 // The start of every script: SVG terminal of this size in gp_font(), output NAME.svg, '?' as missing data, a light
-// grid, the legend below the plot's frame, in columns and framed: outside the data, never hiding a line. Not right of the
-// frame: gnuplot leaves out a right-hand key whose titles do not fit that margin. (A plot that sets its own key
+// grid, the legend below the plot's frame, in columns and framed: outside the data, never hiding a line. Not right of
+// the frame: gnuplot leaves out a right-hand key whose titles do not fit that margin. (A plot that sets its own key
 // position keeps it outside: `set key left` then puts it left of the frame.)
 // `drawn_by` names the command in the script's first comment ("vssw report").
 std::string gp_preamble(const std::string& drawn_by, const std::string& name, int width, int height);

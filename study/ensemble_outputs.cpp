@@ -214,7 +214,7 @@ PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& cur
                 s.dat += fmt::format("{} {} {} {} {} {}\n", gp_number(p.alpha), gp_number(p.peak.median),
                                      gp_number(p.peak.q1), gp_number(p.peak.q3), p.peak.n, p.overturned);
             s.dat += "\n\n";
-            // A single panel has its key right of the data (titles); several share the legend panel (entries).
+            // A single panel has its key below the frame (titles); several share the legend panel (entries).
             cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} {}",
                                cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block++, style,
                                layout.multiplot() ? "notitle" : "title " + gp_string(label));

@@ -36,7 +36,8 @@ std::string data_of(const LineFigure& f) {
                                gp_comment(f.lines[l].first));
             for (std::size_t i = 0; i < f.x.size(); ++i)
                 dat += fmt::format("{} {} {} {}\n", gp_number(f.x[i]), gp_number(f.y[p][l][i]),
-                                   f.marked[p][l][i] ? 1 : 0, gp_hover_text(f.lines[l].first, x_text(f, i), f.y[p][l][i], f.yunit));
+                                   f.marked[p][l][i] ? 1 : 0,
+                                   gp_hover_text(f.lines[l].first, x_text(f, i), f.y[p][l][i], f.yunit));
             dat += "\n\n";
         }
     return dat;

@@ -35,8 +35,8 @@ PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Eff
     s.plot.title = m.binary
                        ? fmt::format("{}: share of paired runs that flip (right: to 1, left: to 0; dot: net)", m.name)
                        : fmt::format("{}: change with each assumption (bar: smallest to largest; dot: median)", m.name);
-    s.dat = fmt::format("# {}\n# y label lo median hi pairs hover_text   (changes as fractions; binary metric: shares of "
-                        "pairs, lo = -(1 -> 0), hi = +(0 -> 1), median = net)\n",
+    s.dat = fmt::format("# {}\n# y label lo median hi pairs hover_text   (changes as fractions; binary metric: "
+                        "shares of pairs, lo = -(1 -> 0), hi = +(0 -> 1), median = net)\n",
                         gp_comment(m.name));
     const std::size_t n = bars.size();
     for (std::size_t i = 0; i < n; ++i) {

@@ -79,9 +79,9 @@ void add_glance(Blocks& b, const StudyDocumentInput& in) {
     for (const Plot& p : figures) b.push_back(plot(p.title, p.name));
     if (largest.empty()) return;
     b.push_back(paragraph(fmt::format(
-        "The {} largest effects, each parameter and metric at its largest level against the first (every level under "
+        "The {}, each parameter and metric at the level of its largest effect against its first (every level under "
         "\"Largest sensitivities first\"):",
-        largest.size())));
+        largest.size() == 1 ? std::string("largest effect") : fmt::format("{} largest effects", largest.size()))));
     b.push_back(effects_table(d, largest));
 }
 

@@ -755,7 +755,7 @@ TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
     EXPECT_LT(x->first, 5.1);
     EXPECT_GT(x->second, 11.9);
     EXPECT_LT(x->second, 12.5);
-    // The three models in the legend, each in its engine's colour and marker; the legend right of the data, where it
+    // The three models in the legend, each in its engine's colour and marker; the legend below the frame, where it
     // hides no line.
     EXPECT_TRUE(contains(s->gp, "title 'analytic, Eq. (19) impact (reference)'")) << s->gp;
     EXPECT_TRUE(contains(s->gp, "title 'analytic, whole-mechanism impact'")) << s->gp;

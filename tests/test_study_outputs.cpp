@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <algorithm>
 #include <optional>
 #include <regex>
 #include <sstream>

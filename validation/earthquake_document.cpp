@@ -64,7 +64,8 @@ std::vector<EnsemblePlot> drawn_plots(const EarthquakePart& p) {
     std::vector<EnsemblePlot> out;
     const std::filesystem::path plots = p.folder / "plots";
     for (const auto& [kind, title] :
-         {std::pair<const char*, const char*>{"fragility", "Under records: lognormal fragility fits and the stripes' shares"},
+         {std::pair<const char*, const char*>{"fragility",
+                                              "Under records: lognormal fragility fits and the stripes' shares"},
           {"stripes", "Under records: share overturned at each PGA level (95 % Wilson bars)"}})
         if (std::filesystem::exists(plots / (std::string(kind) + ".svg")))
             out.push_back({kind, "../" + p.folder.filename().string() + "/plots/" + kind, title});

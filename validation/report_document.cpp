@@ -125,18 +125,12 @@ void add_matrix(Blocks& b, const ReportInput& in) {
     }
     const std::vector<std::string> metrics = matrix_metrics(in, cells);
     std::vector<std::string> header = {"engine", "contact scheme"};
-    std::size_t apart = 0;
-    for (const std::string& m : metrics) {
-        const std::optional<double> target = target_of(m);
-        if (!target && apart == 0) apart = header.size();
-        header.push_back(target ? fmt::format("{} (target {:g} %)", short_title(m), 100.0 * *target)
-                                : fmt::format("{} (no target)", short_title(m)));
-    }
+    for (const std::string& m : metrics)  // each has a target (matrix_metrics)
+        header.push_back(fmt::format("{} (target {:g} %)", short_title(m), 100.0 * *target_of(m)));
     // The earthquake part's two ensemble measures, each with its target, as the last columns.
     if (in.earthquake)
         for (const std::string& h : earthquake_matrix_header()) header.push_back(h);
     DocBlock t = table(header, 2);
-    t.apart_from = apart;
     t.css_class = "matrix";
     for (const std::string& e : engines) {
         std::vector<DocCell> row = {{multibody::engine_display_name(e)}, {multibody::contact_scheme(e).key}};
@@ -148,11 +142,10 @@ void add_matrix(Blocks& b, const ReportInput& in) {
                 continue;
             }
             DocCell cell{matrix_text(*c)};
-            if (c->target) cell.verdict = c->pass ? DocCell::Verdict::pass : DocCell::Verdict::fail;
+            cell.verdict = c->pass ? DocCell::Verdict::pass : DocCell::Verdict::fail;
             if (!c->case_id.empty())
-                cell.note = fmt::format("worst on {}; {} of {} case{} {}", c->case_id, c->outside, c->rows,
-                                        c->rows == 1 ? "" : "s",
-                                        c->target ? "outside the target" : m == "overturned" ? "differ" : "nonzero");
+                cell.note = fmt::format("worst on {}; {} of {} case{} outside the target", c->case_id, c->outside,
+                                        c->rows, c->rows == 1 ? "" : "s");
             row.push_back(std::move(cell));
         }
         if (in.earthquake)
@@ -339,9 +332,9 @@ void add_measure_figures(Blocks& b, const ReportInput& in, const PlotResult& plo
         for (DocBlock& block : earthquake_figure(*in.earthquake)) figures.push_back(std::move(block));
     if (figures.empty()) return;
     b.push_back(heading(2, "One figure per measure"));
-    b.push_back(paragraph("Each engine's relative error on each case of a measure of the matrix, the target dashed (hover "
-                          "a point for its value); under records, each engine's fragility curve beside the "
-                          "reference's."));
+    b.push_back(paragraph("Each engine's relative error on each case of a measure of the matrix, the target dashed (in "
+                          "report.html, hover a point for its value); under records, each engine's fragility curve "
+                          "beside the reference's."));
     for (DocBlock& f : figures) b.push_back(std::move(f));
 }
 
@@ -354,6 +347,8 @@ void add_plots(Blocks& b, const ReportInput& in, const PlotResult& plots, bool p
     if (!plots.note.empty()) b.push_back(paragraph("Plots: " + plots.note + "."));
     // The figures per measure are at the top: the others here.
     const std::vector<std::string> shown = measure_plot_names(in);
+    if (!shown.empty())
+        b.push_back(paragraph("The error plots of the matrix's measures are under \"One figure per measure\"."));
     PlotResult rest = plots;
     rest.plots.erase(std::remove_if(rest.plots.begin(), rest.plots.end(),
                                     [&](const Plot& p) {

@@ -210,10 +210,11 @@ def _check_engines(names):
                              _core.EXIT_BAD_INPUT)
 
 
-# The library's messages about a ground motion name the command line's options (--pga, --pulse-period): the
+# The library's messages about a wall or a ground motion name the command line's options (--pga, --roller): the
 # Python functions' parameters are these.
 _OPTION_NAMES = {f"--{name.replace('_', '-')}": name
-                 for name in ["record", "scale", "pga", "pulse", "amplitude", "pulse_period", "duration", "units"]}
+                 for name in ["record", "scale", "pga", "pulse", "amplitude", "pulse_period", "duration", "model",
+                              "height", "thickness", "hinge", "xi", "density", "g", "kinematics", "impact", "roller"]}
 
 
 def _with_python_names(call):
@@ -261,10 +262,19 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     Raises InputError naming a bad value before any engine runs; SimulationError when the one engine asked fails."""
     names, several = _engine_list(engine)
     wall = _wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller)
-    if record is not None or pulse is not None:
+    motion = dict(scale=scale, pga=pga, amplitude=amplitude, pulse_period=pulse_period, duration=duration)
+    if record is None and pulse is None:
+        given = [name for name, value in motion.items() if value is not None]
+        if given:
+            raise InputError(f"{', '.join(given)}: a ground motion's, given without record= or pulse=",
+                             _core.EXIT_BAD_INPUT)
+    else:
         if theta0 is not None:
             raise InputError("theta0 is a release for the free vibration; with record= or pulse= the wall starts "
                              "from rest", _core.EXIT_BAD_INPUT)
+        if "analytic" in names:
+            raise InputError("engine 'analytic': the analytic model is the reference every engine is compared with; "
+                             "name engines only", _core.EXIT_BAD_INPUT)
         _check_engines(names)
         with _Bar(progress, "compare") as bar:
             bar(0, 1, ", ".join(names))
@@ -289,7 +299,7 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
         for i, name in enumerate(names):
             bar(i, len(names), name)
             try:
-                results.append(comparison_from(_core.compare(engine=name, **arguments)))
+                results.append(comparison_from(_with_python_names(lambda: _core.compare(engine=name, **arguments))))
             except SimulationError as e:
                 if not several:
                     raise

@@ -243,9 +243,9 @@ class ResponseComparison:
 
 
 def response_comparisons_from(d):
-    runs = [ResponseRun(**r) for r in d["runs"]]
-    reference = runs[0]  # the analytic model runs first
-    return [ResponseComparison(engine=r, reference=reference, ground_motion=d["ground_motion"]) for r in runs[1:]]
+    reference = ResponseRun(**d["reference"])
+    return [ResponseComparison(engine=ResponseRun(**r), reference=reference, ground_motion=d["ground_motion"])
+            for r in d["runs"]]
 
 
 @dataclasses.dataclass(frozen=True)
