@@ -6,7 +6,7 @@ import pandas as pd
 import pytest
 
 import vssw
-from conftest import RECORD
+from conftest import RECORD, REPO
 
 # A small grid: 2 thicknesses x 2 hinges x 2 impact laws, closed forms and a free vibration's measured metrics.
 FREE_STUDY = {
@@ -120,3 +120,29 @@ def test_the_typed_report_gives_its_csv_files_as_dataframes(tmp_path):
         assert m["engine_value"] == from_json[(m["case_id"], m["engine"], m["metric"])], m["metric"]
     assert set(result.metrics["case_id"]) == {"fig6-vssw"}
     assert {"rel_error", "target", "within_target"} <= set(result.rows.columns)
+
+
+def test_the_typed_report_gives_its_verdicts_at_a_glance_and_under_records(tmp_path):
+    # ODE on one wall and a small record ensemble (tests/cli/earthquake_small.toml: 2 records x 2 PGAs). The
+    # earthquake table's agreement is counted here from the ensemble's own rows: the runs on which ODE and the
+    # reference (the unperturbed analytic series) agree whether the wall overturns.
+    ensemble = REPO / "tests" / "cli" / "earthquake_small.toml"
+    result = vssw.report(tmp_path / "report", engines=["ode"], cases=["fig6-pw"], earthquake=str(ensemble),
+                         threads=1, plots=False)
+    rows = pd.read_csv(tmp_path / "report" / "earthquake" / "results.csv")
+    over = rows[(rows["metric"] == "overturned") & (rows["perturbation"] == "none")]
+    by_run = over.pivot_table(index=["file", "pga"], columns="engine", values="value", aggfunc="first")
+    agree = int((by_run["ode"] == by_run["analytic"]).sum())
+    table = result.earthquake
+    assert list(table["engine"]) == ["ode"]
+    assert table.loc[0, "runs"] == len(by_run) == 4
+    assert table.loc[0, "overturning_agreement"] == agree / 4
+    assert table.loc[0, "overturning_pass"] == (agree / 4 >= 0.9)
+    assert table.loc[0, "overturning_agreement_lo"] <= agree / 4 <= table.loc[0, "overturning_agreement_hi"]
+    # The matrix: a cell passes exactly when every row of its engine and metric is within its target.
+    for _, cell in result.matrix.iterrows():
+        mine = result.rows[(result.rows["engine"] == cell["engine"]) & (result.rows["metric"] == cell["metric"])]
+        assert bool(cell["pass"]) == bool(mine["within_target"].all()), (cell["engine"], cell["metric"])
+    # No earthquake part: None, not an empty table.
+    plain = vssw.report(tmp_path / "plain", engines=["ode"], cases=["fig6-pw"], threads=1, plots=False)
+    assert plain.earthquake is None

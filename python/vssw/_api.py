@@ -408,7 +408,8 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
     data: the records' folder. run_budget: CPU seconds one engine run may take.
     progress: True shows a bar over the (case, engine) tasks; a callable is called as progress(done, total, what).
     Returns a vssw.ReportResult: metrics (metrics.csv), failures (failures.csv), rows (results.json's rows with
-    targets), each a pandas DataFrame, and the folder, report.md and report.html paths."""
+    targets), matrix (the verdicts at a glance), earthquake (the verdicts under records, None without that part),
+    each a pandas DataFrame, and the folder, report.md and report.html paths."""
     import pandas as pd
 
     folder = _folder(out, "vssw-report-")
@@ -417,7 +418,26 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
                    earthquake=earthquake, bench=bench, gnuplot=gnuplot, data=data, run_budget=run_budget)
     summary = _run_into(folder, out, ["report", f"--out={folder}", *cli._arguments(options)], progress, "report")
     with open(folder / "results.json", encoding="utf-8") as f:
-        rows = pd.DataFrame(json.load(f)["rows"])
+        results = json.load(f)
     return ReportResult(metrics=_read_csv(folder / "metrics.csv"), failures=_read_csv(folder / "failures.csv"),
-                        rows=rows, folder=folder, markdown=folder / "report.md", html=folder / "report.html",
-                        summary=summary)
+                        rows=pd.DataFrame(results["rows"]), folder=folder, markdown=folder / "report.md",
+                        html=folder / "report.html", summary=summary, matrix=pd.DataFrame(results["matrix"]),
+                        earthquake=_earthquake_table(results["earthquake"]))
+
+
+def _earthquake_table(part):
+    """results.json's earthquake verdicts as a DataFrame, one row per engine (None when no earthquake part ran)."""
+    import pandas as pd
+
+    if part is None:
+        return None
+    rows = []
+    for e in part["engines"]:
+        a, f = e["overturning_agreement"], e["fragility_median_ratio"]
+        rows.append(dict(engine=e["engine"], overturning_agreement=a["value"], overturning_agreement_lo=a["lo"],
+                         overturning_agreement_hi=a["hi"], runs=a["n"], overturning_pass=a["pass"],
+                         fragility_median_ratio=f["value"], fragility_median_ratio_lo=f["lo"],
+                         fragility_median_ratio_hi=f["hi"], fragility_pass=f["pass"], fragility_note=f["note"],
+                         peak_ratio_median=e["peak_ratio"]["median"], inside_band=e["inside_band"]["inside"],
+                         band_runs=e["inside_band"]["runs"]))
+    return pd.DataFrame(rows)

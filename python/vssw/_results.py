@@ -266,7 +266,10 @@ class ReportResult:
     """A validation report's outputs (vssw.report): metrics (metrics.csv: case_id, engine, metric, unit, reference,
     analytic, engine_value, rel_error), failures (failures.csv: case_id, engine, message), rows (results.json's rows,
     with target and within_target, as a DataFrame), folder, markdown (report.md), html (report.html), summary (the
-    command's printed summary, one line per engine)."""
+    command's printed summary, one line per engine), matrix (the engine x metric matrix at a glance: engine, metric,
+    worst_rel_error, case_id, target, pass, ...), earthquake (one row per engine under the record ensemble:
+    overturning_agreement with its lo, hi, runs and pass; fragility_median_ratio with its lo, hi, pass and note;
+    peak_ratio_median; inside_band of band_runs; None when the report ran no earthquake part)."""
 
     metrics: "object"
     failures: "object"
@@ -275,6 +278,8 @@ class ReportResult:
     markdown: pathlib.Path
     html: pathlib.Path
     summary: str
+    matrix: "object" = None
+    earthquake: "object" = None
 
     def __repr__(self):
         return f"ReportResult(folder={str(self.folder)!r}, metrics={len(self.metrics)} rows)"
