@@ -45,6 +45,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       // Only a run under a ground motion can end folded (judged once the shaking is over): a free vibration or a
       // threshold trial does not compute it.
       unstable_(ex.horizontal.duration() > 0.0 ? unstable_equilibrium(scene) : HUGE_VAL),
+      unstable2_(ex.horizontal.duration() > 0.0 ? unstable_equilibrium_theta2(scene) : HUGE_VAL),
       v_ref_(reference_velocity(scene)),
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),
@@ -65,7 +66,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
     require_step_resolves(engine_, scene, ex, dt, dt_steps_the_motion);
 }
 
-RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const BaseCorners& c) {
+RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const BaseCorners& c, double theta2) {
     if (!std::isfinite(theta) || !std::isfinite(rate))
         throw EngineFailure(fmt::format("{}: the state became NaN at t = {:.6g} s", engine_, t));
     // A rocking wall never turns a hundred times faster than the rate that carries it from rest to alpha.
@@ -83,12 +84,14 @@ RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const
             fmt::format("{}: the wall sank {:.3g} m into the ground at t = {:.6g} s", engine_, sink, t));
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
     if (std::abs(theta) >= collapse_) return Verdict::overturned;
+    // The upper block past the mechanism's range (NaN compares false: not given).
+    const bool upper_gone = std::abs(theta2) > unstable2_;
     if (t > motion_end_ && motion_end_ > 0.0) {  // folded: past the unstable equilibrium, the shaking over
-        folded_steps_ = std::abs(theta) > unstable_ ? folded_steps_ + 1 : 0;
+        folded_steps_ = std::abs(theta) > unstable_ || upper_gone ? folded_steps_ + 1 : 0;
         if (folded_steps_ >= folded_needed_) return Verdict::overturned;
     }
     if (stop_at_rest_ && t > quiet_from_) {
-        const bool quiet = std::abs(theta) < 1e-3 * alpha_ && std::abs(rate) < 1e-3 * v_ref_;
+        const bool quiet = std::abs(theta) < 1e-3 * alpha_ && std::abs(rate) < 1e-3 * v_ref_ && !upper_gone;
         quiet_steps_ = quiet ? quiet_steps_ + 1 : 0;
         if (quiet_steps_ >= quiet_needed_) return Verdict::at_rest;
     }

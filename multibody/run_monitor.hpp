@@ -7,8 +7,13 @@
 // Fig. 6 wall under Rinaldi at 0.55 g: MuJoCo, Siconos and Simbody alike, never still). No standing wall can stay past
 // the unstable equilibrium (RockingModel::unstable_equilibrium) once the ground is still: there gravity turns it
 // outward, and only an inward speed brings it back, at once. Past it for kFoldedFor after the shaking: overturned.
+// The same holds for the upper block (theta2, where the adapter gives it): a wall whose upper block fell off the roller
+// and turned past the mechanism's theta2 at that equilibrium has collapsed even with its lower block upright again
+// (Simbody's Fig. 6 wall under LA Dam at 0.7 g: theta2 2.2 rad, the top 2.4 m down, theta1 back near 0). Such a wall is
+// never at rest either.
 // Rest ends a run once the shaking can no longer lift the wall: past the record's last acceleration above
 // kRestCannotLiftShare of the rest threshold, not only past its end (the quiet tail of a record is most of it).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -52,6 +57,9 @@ constexpr double kRestCannotLiftShare = 0.5;
 // stillness asked for rest, longer than a wall coming back inward takes to cross it (it would be crossing at speed).
 constexpr double kFoldedFor = 0.5;
 
+// An adapter's theta2 for a parapet (RunMonitor::check): no upper block.
+constexpr double kNoTheta2 = std::numeric_limits<double>::quiet_NaN();
+
 class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
@@ -61,8 +69,10 @@ public:
     RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, FailureLimits limits,
                bool dt_steps_the_motion = true);
 
-    // Throws EngineFailure on a failure; otherwise says whether the run goes on.
-    Verdict check(double t, double theta1, double theta1_dot, const BaseCorners& corners);
+    // Throws EngineFailure on a failure; otherwise says whether the run goes on. theta2: the upper block's rotation
+    // (NaN for a parapet or an adapter that does not give it).
+    Verdict check(double t, double theta1, double theta1_dot, const BaseCorners& corners,
+                  double theta2 = std::numeric_limits<double>::quiet_NaN());
     // True when the verdict ends the run, having marked the trajectory overturned or at rest as it says.
     static bool ends_run(Verdict verdict, Trajectory& out);
     // Whether step i of n is recorded: every `every` steps, the last, and the one that ends the run.
@@ -72,7 +82,7 @@ public:
 
 private:
     std::string engine_;
-    double b_, friction_, collapse_, unstable_, v_ref_, alpha_, motion_end_, quiet_from_, stop_angle_;
+    double b_, friction_, collapse_, unstable_, unstable2_, v_ref_, alpha_, motion_end_, quiet_from_, stop_angle_;
     bool stop_at_rest_;
     FailureLimits limits_;
     int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_, folded_needed_;

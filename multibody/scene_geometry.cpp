@@ -1,6 +1,7 @@
 #include "multibody/scene_geometry.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/model.hpp"
@@ -51,6 +52,11 @@ WallPose pose_at(const WallScene& scene, double theta1) {
 double collapse_angle(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->collapse_angle(); }
 double unstable_equilibrium(const WallScene& scene) {
     return analytic_model(scene, Kinematics::exact)->unstable_equilibrium();
+}
+double unstable_equilibrium_theta2(const WallScene& scene) {
+    if (!scene.vssw) return HUGE_VAL;
+    const std::optional<double> theta2 = eq2_theta2_exact(*scene.vssw, unstable_equilibrium(scene));
+    return theta2 ? std::abs(*theta2) : HUGE_VAL;
 }
 double rest_threshold(const WallScene& scene) {
     return analytic_model(scene, Kinematics::exact)->rest_threshold(0.0);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analytic/closed_forms.hpp"
+#include "multibody/scene_geometry.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/simulate.hpp"
@@ -846,6 +847,38 @@ TEST(RunMonitorFold, PastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
     // Past it but coming back inward at speed, inside it within 0.3 s: a rocking wall, not folded.
     EXPECT_EQ(run(2.5, [&](double t) { return (1.5 - 3.0 * (t - 2.5)) * alpha1; }), Verdict::go_on);
     EXPECT_EQ(run(2.5, [&](double) { return 0.5 * alpha1; }), Verdict::go_on);  // inside the unstable equilibrium
+}
+
+// A wall whose upper block fell off the roller has collapsed though its lower block stands again (Simbody's Fig. 6
+// wall under LA Dam at 0.7 g: theta2 2.2 rad, theta1 back near 0): RunMonitor says overturned once the upper block
+// has stayed past the mechanism's theta2 at the unstable equilibrium for kFoldedFor after the shaking, and never
+// calls such a wall at rest. A standing wall's theta2 (the mechanism's, inside that range) does not.
+TEST(RunMonitorFold, AnUpperBlockThatFellIsOverturnedEvenWithTheLowerBlockUpright) {
+    const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
+    const double dt = 1e-3, unstable2 = multibody::unstable_equilibrium_theta2(scene);
+    ASSERT_TRUE(std::isfinite(unstable2));
+    // The mechanism's theta2 at the unstable equilibrium lies between a rocking wall's (at half its angle) and a
+    // fallen block's.
+    ASSERT_GT(unstable2, std::abs(*eq2_theta2_exact(*scene.vssw, 0.5 * scene.alpha())));
+    ASSERT_LT(unstable2, 2.0);
+    multibody::Excitation ex;
+    ex.horizontal = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, 1.0, 0.0}, "pulse");
+    ex.t_end = 5.0;
+    const multibody::BaseCorners corners{0.0, 0.0, 0.0, 0.0};
+    using Verdict = multibody::RunMonitor::Verdict;
+    // From t = 2.5 s (after the shaking): theta1 still at 0, theta2 as given, every step for 1.5 kFoldedFor.
+    const auto verdict = [&](double theta2) {
+        multibody::RunMonitor monitor("test", scene, ex, dt, {});
+        const int window = static_cast<int>(1.5 * multibody::kFoldedFor / dt);
+        for (int i = 0; i < window; ++i)
+            if (const Verdict v = monitor.check(2.5 + i * dt, 0.0, 0.0, corners, theta2); v != Verdict::go_on)
+                return v;
+        return Verdict::go_on;
+    };
+    EXPECT_EQ(verdict(2.2), Verdict::overturned);   // the block lying past the guide
+    EXPECT_EQ(verdict(-2.2), Verdict::overturned);  // on the other side
+    EXPECT_EQ(verdict(0.0), Verdict::at_rest);      // a standing wall at rest
+    EXPECT_EQ(verdict(multibody::kNoTheta2), Verdict::at_rest);  // an adapter that does not give theta2: as before
 }
 
 }  // namespace vssw

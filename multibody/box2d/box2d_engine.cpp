@@ -346,7 +346,8 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
         const double x_g = w.ground().GetPosition().x;
         const b2Vec2 right = world_point(lower, s.b, -s.h_lower), left = world_point(lower, -s.b, -s.h_lower);
         const auto verdict =  // corners relative to the (moving) ground
-            monitor.check(t, theta, rate, {right.x - x_g - s.b, right.y, left.x - x_g + s.b, left.y});
+            monitor.check(t, theta, rate, {right.x - x_g - s.b, right.y, left.x - x_g + s.b, left.y},
+                          upper ? clockwise_angle(*upper) : kNoTheta2);
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

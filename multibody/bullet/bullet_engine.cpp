@@ -321,7 +321,8 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         const btVector3 right = lower.getWorldTransform() * btVector3(s.b, -s.h_lower, 0);
         const btVector3 left = lower.getWorldTransform() * btVector3(-s.b, -s.h_lower, 0);
         const auto verdict =  // corners relative to the (moving) ground
-            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()});
+            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()},
+                          upper ? clockwise_angle(*upper) : kNoTheta2);
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

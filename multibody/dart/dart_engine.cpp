@@ -364,7 +364,8 @@ Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, co
         const double x_g = w.ground_x();
         const Vector3d right = world_point(*lower, s.b, -s.h_lower), left = world_point(*lower, -s.b, -s.h_lower);
         const auto verdict =  // corners relative to the (moving) ground
-            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()});
+            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()},
+                          upper ? clockwise_angle(*upper) : kNoTheta2);
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

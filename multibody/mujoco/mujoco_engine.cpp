@@ -368,7 +368,8 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
                                                 t_last_warning.empty() ? std::string("(no text)") : t_last_warning));
         const auto right = world(lower, s.b, -s.h_lower), left = world(lower, -s.b, -s.h_lower);
         const auto verdict =
-            monitor.check(t, angle(lower), d->qvel[lower.q + 2], {right[0] - s.b, right[1], left[0] + s.b, left[1]});
+            monitor.check(t, angle(lower), d->qvel[lower.q + 2], {right[0] - s.b, right[1], left[0] + s.b, left[1]},
+                          vssw ? angle(upper) : kNoTheta2);
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

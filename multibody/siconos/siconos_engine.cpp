@@ -446,7 +446,8 @@ Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex,
                     fmt::format("Siconos: the one-step contact problem was not solved at t = {:.6g} s", t));
             const Vec2 right = w.world_point(kLower, {s.b, -s.h_lower}), left = w.world_point(kLower, {-s.b, -s.h_lower});
             const auto verdict = monitor.check(t, -w.q().getValue(2), -w.v().getValue(2),
-                                               {right.x - s.b, right.y, left.x + s.b, left.y});
+                                               {right.x - s.b, right.y, left.x + s.b, left.y},
+                                               vssw ? -w.q().getValue(5) : kNoTheta2);
             if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
             if (RunMonitor::ends_run(verdict, out)) return out;
         }

@@ -372,7 +372,8 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
         // Base corners = sphere centres; their heights above the ground less r (negative: penetration).
         const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
         const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
-        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1] - r, left[0] + s.b, left[1] - r});
+        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1] - r, left[0] + s.b, left[1] - r},
+                                           vssw ? clockwise_angle(upper, now) : kNoTheta2);
         if (RunMonitor::records(i, n_reports, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

@@ -345,7 +345,8 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
         const double rate = -lower.getBodyAngularVelocity(now)[2];
         const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
         const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
-        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1], left[0] + s.b, left[1]});
+        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1], left[0] + s.b, left[1]},
+                                           vssw ? clockwise_angle(upper, now) : kNoTheta2);
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }
