@@ -45,7 +45,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       // Only a run under a ground motion can end folded (judged once the shaking is over): a free vibration or a
       // threshold trial does not compute it.
       unstable_(ex.horizontal.duration() > 0.0 ? unstable_equilibrium(scene) : HUGE_VAL),
-      unstable2_(ex.horizontal.duration() > 0.0 ? unstable_equilibrium_theta2(scene) : HUGE_VAL),
+      unstable2_(ex.horizontal.duration() > 0.0 ? mechanism_theta2(scene, unstable_) : HUGE_VAL),
       v_ref_(reference_velocity(scene)),
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),

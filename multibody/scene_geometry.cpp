@@ -53,9 +53,9 @@ double collapse_angle(const WallScene& scene) { return analytic_model(scene, Kin
 double unstable_equilibrium(const WallScene& scene) {
     return analytic_model(scene, Kinematics::exact)->unstable_equilibrium();
 }
-double unstable_equilibrium_theta2(const WallScene& scene) {
+double mechanism_theta2(const WallScene& scene, double theta1) {
     if (!scene.vssw) return HUGE_VAL;
-    const std::optional<double> theta2 = eq2_theta2_exact(*scene.vssw, unstable_equilibrium(scene));
+    const std::optional<double> theta2 = eq2_theta2_exact(*scene.vssw, theta1);
     return theta2 ? std::abs(*theta2) : HUGE_VAL;
 }
 double rest_threshold(const WallScene& scene) {

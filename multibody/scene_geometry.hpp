@@ -36,9 +36,10 @@ double collapse_angle(const WallScene& scene);
 
 // The unstable equilibrium |theta1| of the scene's analytic model (exact kinematics): past it a still wall falls.
 double unstable_equilibrium(const WallScene& scene);
-// |theta2| of a VSSW's mechanism at that unstable equilibrium (Eq. 2): an upper block turned further than this has
-// left the standing wall's range, the roller holding it or not. +infinity for a parapet.
-double unstable_equilibrium_theta2(const WallScene& scene);
+// |theta2| of a VSSW's mechanism at |theta1| (Eq. 2); at the unstable equilibrium, an upper block turned further than
+// this has left the standing wall's range, the roller holding it or not. +infinity for a parapet (no upper block) or
+// where Eq. (2) has no solution.
+double mechanism_theta2(const WallScene& scene, double theta1);
 
 // The smallest |a_h| that tips the scene's wall off rest (Eq. 12 for a VSSW, Eq. 17 for a parapet; exact kinematics).
 double rest_threshold(const WallScene& scene);

@@ -64,7 +64,7 @@ bool is_shown(const std::vector<Plot>& shown, const Plot& p) {
 DocBlock effects_table(const StudyData& d, const std::vector<Effect>& effects);
 
 // What a reader came for, first: the main figures and the largest effects; every detail follows.
-void add_glance(Blocks& b, const StudyDocumentInput& in) {
+void add_glance(Blocks& b, const StudyDocumentInput& in, const std::vector<Plot>& figures) {
     const StudyData& d = in.data;
     // Each parameter and metric once, at its largest (effects come sorted largest first), as the sentences below
     // do: a parameter with many levels would otherwise fill the table with its own levels.
@@ -73,7 +73,6 @@ void add_glance(Blocks& b, const StudyDocumentInput& in) {
     for (const Effect& e : in.effects)
         if (e.pairs > 0 && largest.size() < kGlanceEffects && said.insert({e.parameter, e.metric}).second)
             largest.push_back(e);
-    const std::vector<Plot> figures = in.plots_skipped ? std::vector<Plot>{} : main_figures(in.plots);
     if (figures.empty() && largest.empty()) return;
     b.push_back(heading(2, "At a glance"));
     for (const Plot& p : figures) b.push_back(plot(p.title, p.name));
@@ -224,7 +223,7 @@ void add_agreement(Blocks& b, const StudyData& d, const std::vector<Agreement>& 
     }
 }
 
-void add_plots(Blocks& b, const StudyDocumentInput& in) {
+void add_plots(Blocks& b, const StudyDocumentInput& in, const std::vector<Plot>& shown) {
     b.push_back(heading(2, "Plots"));
     if (in.plots_skipped) {
         b.push_back(paragraph("Plots were not made (--no-plots)."));
@@ -233,7 +232,6 @@ void add_plots(Blocks& b, const StudyDocumentInput& in) {
     if (!in.plots.note.empty()) b.push_back(paragraph("Plots: " + in.plots.note + "."));
     for (const std::string& note : in.plot_notes.notes) b.push_back(paragraph(note));
     // The main figures are at the top ("At a glance"): the others here.
-    const std::vector<Plot> shown = main_figures(in.plots);
     PlotResult rest = in.plots;
     rest.plots.erase(std::remove_if(rest.plots.begin(), rest.plots.end(),
                                     [&](const Plot& p) { return is_shown(shown, p); }),
@@ -273,14 +271,16 @@ Document build_study_document(const StudyDocumentInput& in) {
     doc.title = fmt::format("vssw study: {}", d.name);
     Blocks& b = doc.blocks;
     add_introduction(b, d);
-    add_glance(b, in);
+    // The main figures open the page and are not shown again under "Plots".
+    const std::vector<Plot> figures = in.plots_skipped ? std::vector<Plot>{} : main_figures(in.plots);
+    add_glance(b, in, figures);
     add_varied(b, d);
     add_runs(b, d);
     add_counts(b, d);
     add_sensitivities(b, d, in.effects);
     add_agreement(b, d, in.agreement);
     if (in.ensemble) add_ensemble_section(b, d, *in.ensemble);
-    add_plots(b, in);
+    add_plots(b, in, figures);
     add_run(b, d);
     add_files(b);
     return doc;

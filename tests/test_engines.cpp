@@ -855,7 +855,8 @@ TEST(RunMonitorFold, PastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
 // calls such a wall at rest. A standing wall's theta2 (the mechanism's, inside that range) does not.
 TEST(RunMonitorFold, AnUpperBlockThatFellIsOverturnedEvenWithTheLowerBlockUpright) {
     const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
-    const double dt = 1e-3, unstable2 = multibody::unstable_equilibrium_theta2(scene);
+    const double dt = 1e-3;
+    const double unstable2 = multibody::mechanism_theta2(scene, multibody::unstable_equilibrium(scene));
     ASSERT_TRUE(std::isfinite(unstable2));
     // The mechanism's theta2 at the unstable equilibrium lies between a rocking wall's (at half its angle) and a
     // fallen block's.

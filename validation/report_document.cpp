@@ -322,10 +322,11 @@ std::vector<std::string> measure_plot_names(const ReportInput& in) {
 
 // Right after the matrix: a figure for each of its measures (the errors per case and engine, the fragility under
 // records), so that the first screens answer "which engine, how far off, where" before any detail.
-void add_measure_figures(Blocks& b, const ReportInput& in, const PlotResult& plots, bool plots_skipped) {
+void add_measure_figures(Blocks& b, const ReportInput& in, const std::vector<std::string>& measure_plots,
+                         const PlotResult& plots, bool plots_skipped) {
     if (plots_skipped) return;
     Blocks figures;
-    for (const std::string& name : measure_plot_names(in))
+    for (const std::string& name : measure_plots)
         for (const Plot& p : plots.plots)
             if (p.made && p.name == name) figures.push_back(plot(p.title, p.name));
     if (in.earthquake)
@@ -338,23 +339,20 @@ void add_measure_figures(Blocks& b, const ReportInput& in, const PlotResult& plo
     for (DocBlock& f : figures) b.push_back(std::move(f));
 }
 
-void add_plots(Blocks& b, const ReportInput& in, const PlotResult& plots, bool plots_skipped) {
+// The plots not shown among the figures per measure (`shown`).
+void add_plots(Blocks& b, const std::vector<std::string>& shown, const PlotResult& plots, bool plots_skipped) {
     b.push_back(heading(2, "Plots"));
     if (plots_skipped) {
         b.push_back(paragraph("Plots were not made (--no-plots)."));
         return;
     }
     if (!plots.note.empty()) b.push_back(paragraph("Plots: " + plots.note + "."));
-    // The figures per measure are at the top: the others here.
-    const std::vector<std::string> shown = measure_plot_names(in);
-    if (!shown.empty())
+    // The figures per measure are at the top (when drawn): the others here.
+    const auto is_shown = [&](const Plot& p) { return std::find(shown.begin(), shown.end(), p.name) != shown.end(); };
+    if (std::any_of(plots.plots.begin(), plots.plots.end(), [&](const Plot& p) { return p.made && is_shown(p); }))
         b.push_back(paragraph("The error plots of the matrix's measures are under \"One figure per measure\"."));
     PlotResult rest = plots;
-    rest.plots.erase(std::remove_if(rest.plots.begin(), rest.plots.end(),
-                                    [&](const Plot& p) {
-                                        return std::find(shown.begin(), shown.end(), p.name) != shown.end();
-                                    }),
-                     rest.plots.end());
+    rest.plots.erase(std::remove_if(rest.plots.begin(), rest.plots.end(), is_shown), rest.plots.end());
     for (DocBlock& block : plot_blocks(rest)) b.push_back(std::move(block));
     if (plots.plots.empty() && plots.note.empty()) b.push_back(paragraph("No data to plot."));
 }
@@ -396,7 +394,8 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
     Blocks& b = doc.blocks;
     b.push_back(introduction(in));
     add_matrix(b, in);
-    add_measure_figures(b, in, plots, plots_skipped);
+    const std::vector<std::string> measure_plots = measure_plot_names(in);
+    add_measure_figures(b, in, measure_plots, plots, plots_skipped);
     b.push_back(contents());
     add_engines(b, in);
     add_summary(b, in);
@@ -407,7 +406,7 @@ Document build_document(const ReportInput& in, const PlotResult& plots, bool plo
     add_model_warnings(b, in);
     add_metric_tables(b, in);
     add_step_study(b, in);
-    add_plots(b, in, plots, plots_skipped);
+    add_plots(b, measure_plots, plots, plots_skipped);
     add_cases(b, in);
     add_files(b);
     return doc;

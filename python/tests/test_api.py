@@ -20,6 +20,12 @@ MIRROR_ATOL = 1e-12  # [rad], theta1 near its zero crossings
 # The analytic model's peak under a record is its located turning point (a root of theta1' found by DOP853's dense
 # output): two runs of the same record through different entry points agree to rounding in that root search.
 LOCATED_PEAK_RTOL = 1e-9
+# An engine's wall settles into its contacts at the release (a few micrometres on 4 m): its first sample is within
+# 0.1 % of the angle asked.
+RELEASE_RTOL = 1e-3
+# The threshold bisection stops with a bracket of 1e-4 of the value on each side (compare/experiments.hpp): twice that
+# is the room between the bisected threshold and Eq. (12).
+BISECTION_RTOL = 2e-4
 # Standard gravity converts a PGA given in g (analytic/ground_motion.hpp kStandardGravity).
 STANDARD_GRAVITY = 9.80665
 # The record's peak after scaling to a PGA: one multiplication and division of each sample, rounding only.
@@ -105,7 +111,7 @@ def test_every_backend_gives_a_trajectory():
         r = vssw.simulate(engine, **FIG6, theta0=0.5, t_end=0.3)
         assert r.engine == engine
         assert len(r.t) == len(r.theta1) == len(r.theta1_dot) > 10, engine
-        assert r.theta1[0] == pytest.approx(0.5 * r.alpha, rel=1e-3), engine  # released where asked (engines settle)
+        assert r.theta1[0] == pytest.approx(0.5 * r.alpha, rel=RELEASE_RTOL), engine  # released where asked
         assert np.isfinite(r.theta1).all() and np.isfinite(r.theta1_dot).all(), engine
         assert r.max_abs_theta1 <= r.alpha, engine  # a free vibration never passes its release
 
@@ -201,7 +207,7 @@ def test_several_engines_give_a_list_of_comparisons():
     assert isinstance(results, list) and len(results) == 1
     (c,) = results
     assert c.engine == "analytic" and c.error is None and c.within_targets
-    assert c.threshold.value == pytest.approx(c.closed_forms.threshold_g, rel=2e-4)  # the bisection's bracket
+    assert c.threshold.value == pytest.approx(c.closed_forms.threshold_g, rel=BISECTION_RTOL)
     frame = c.to_dataframe()
     assert list(frame["metric"]) == ["threshold", "period", "restitution", "restitution_amplitude"]
 

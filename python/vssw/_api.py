@@ -4,6 +4,7 @@ import json
 import numbers
 import os
 import pathlib
+import re
 import shutil
 import sys
 import tempfile
@@ -223,9 +224,8 @@ def _with_python_names(call):
         return call()
     except InputError as e:
         message = str(e.args[0]) if e.args else str(e)
-        renamed = message
-        for option, name in sorted(_OPTION_NAMES.items(), key=lambda kv: -len(kv[0])):
-            renamed = renamed.replace(option, name)
+        # A whole option only ("--g", not the start of "--gnuplot"); one the Python functions do not take stays.
+        renamed = re.sub(r"--[a-z][a-z-]*\b", lambda m: _OPTION_NAMES.get(m.group(0), m.group(0)), message)
         if renamed == message:
             raise
         raise InputError(renamed, _core.EXIT_BAD_INPUT) from None
