@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "error.hpp"
+#include "input_file.hpp"
 
 namespace vssw {
 namespace {
@@ -85,23 +86,6 @@ bool parse_number(const std::string& token, double& out) {
     return end != begin && end == begin + token.size();
 }
 
-// Refuses, without opening it, what is not a regular file of at most kMaxRecordBytes (ground_motion.hpp).
-void require_record_file(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);  // follows a symbolic link to what it names
-    if (!fs::exists(status)) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
-    if (fs::is_directory(status)) throw InputError(fmt::format("ground-motion file '{}' is a directory", path));
-    if (!fs::is_regular_file(status))
-        throw InputError(fmt::format("ground-motion file '{}' is not a regular file (a device, FIFO or socket)", path));
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec) throw InputError(fmt::format("cannot open ground-motion file '{}': {}", path, ec.message()));
-    if (size > static_cast<std::uintmax_t>(kMaxRecordBytes))
-        throw InputError(fmt::format("ground-motion file '{}' has {} bytes, more than the {} allowed (real records "
-                                     "are a few MB)",
-                                     path, size, kMaxRecordBytes));
-}
-
 // A stream as lines (line i of the file is lines[i - 1]), with any '\r' of DOS line endings removed: PEER files are
 // often distributed with CRLF. Its size is bounded too (a file that grows while it is read; a text given whole).
 std::vector<std::string> lines_of(std::istream& in, const std::string& name) {
@@ -123,9 +107,7 @@ std::vector<std::string> lines_of(std::istream& in, const std::string& name) {
 }
 
 std::vector<std::string> read_lines(const std::string& path) {
-    require_record_file(path);
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("cannot open ground-motion file '{}'", path));
+    std::ifstream in = open_input_file(path, "ground-motion file", static_cast<std::uintmax_t>(kMaxRecordBytes));
     std::vector<std::string> lines = lines_of(in, path);
     if (in.bad()) throw InputError(fmt::format("error while reading ground-motion file '{}'", path));
     return lines;

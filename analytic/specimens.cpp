@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 
 namespace vssw {
 namespace {
@@ -67,8 +68,7 @@ Specimen parse_specimen(const std::string& where, const std::string& line) {
 std::string default_table1_path() { return shipped_data_dir() + "/table1.csv"; }
 
 std::vector<Specimen> read_table1(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("cannot open the Table 1 file '{}'", path));
+    std::ifstream in = open_input_file(path, "the Table 1 file", kMaxTextFileBytes);
     std::vector<Specimen> table;
     std::vector<int> lines;  // where each specimen was given, for a repeated number's message
     std::string line;

@@ -109,7 +109,7 @@ Command add_bench_command(CLI::App& root) {
                     (void)compare::bench_sweep(*multibody::make_engine(name), options.quick);  // settings checked
                 // An unwritable --out fails before the sweep, not after it; nothing is made in it until the files
                 // are complete (a staging folder then replaces it whole: io/folder_swap.hpp).
-                study::check_out_folder(o->out, study::OutKind::bench);
+                const study::FolderLock lock = study::check_out_folder(o->out, study::OutKind::bench);
                 study::check_inputs_not_outputs(o->out, study::OutKind::bench, {{"the record", options.record_path}});
 
                 study::BenchMeta meta{study::utc_now(), VSSW_GIT_COMMIT, load_average(), options.repeats, o->quick,

@@ -193,7 +193,7 @@ Command add_report_command(CLI::App& root) {
                 // After every other check, before the suite runs. Nothing is made in --out until the report is
                 // complete: it is written into a staging folder that then replaces --out whole (a failed run leaves
                 // --out as it was, or leaves none).
-                study::check_out_folder(dir, study::OutKind::report);
+                const study::FolderLock lock = study::check_out_folder(dir, study::OutKind::report);
                 study::check_inputs_not_outputs(dir, study::OutKind::report, report_inputs(o->suite, suite));
 
                 Progress progress(err);

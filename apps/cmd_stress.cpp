@@ -54,7 +54,8 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     for (const std::string& name : o.cases) (void)stress::require_case(name);  // before --out is created
     // Check the folder can be written before anything runs; the files go into a staging folder that replaces it
     // whole once they are complete (io/folder_swap.hpp).
-    if (!o.out_dir.empty()) study::check_out_folder(o.out_dir, study::OutKind::stress);
+    study::FolderLock lock;  // held until the results are swapped in
+    if (!o.out_dir.empty()) lock = study::check_out_folder(o.out_dir, study::OutKind::stress);
     const auto start = std::chrono::steady_clock::now();
     stress::RunOptions run;
     run.engines = report.engines;

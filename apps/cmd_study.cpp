@@ -118,17 +118,14 @@ study::OutputFiles as_committed(study::OutputFiles files, const study::StagedFol
 
 void run_merge(const StudyOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<std::filesystem::path> dirs(o.merge_dirs.begin(), o.merge_dirs.end());
-    study::check_out_folder(o.out, study::OutKind::study);
     // A study still running in --out, or one killed there that --resume would finish, is not replaced by a merge:
     // the same lock and the same refusal as a study's own.
-    study::FolderLock lock;
-    if (std::filesystem::is_directory(o.out)) {
-        lock = study::FolderLock(o.out);
-        if (std::filesystem::exists(std::filesystem::path(o.out) / study::kJournalFile))
-            throw InputError(fmt::format("--out '{}' holds an unfinished study ({}): finish it with vssw study --resume, "
-                                         "or give study merge another --out",
-                                         o.out, study::kJournalFile));
-    }
+    const study::FolderLock lock = study::check_out_folder(o.out, study::OutKind::study);
+    std::error_code ec;
+    if (std::filesystem::exists(std::filesystem::path(o.out) / study::kJournalFile, ec))
+        throw InputError(fmt::format("--out '{}' holds an unfinished study ({}): finish it with vssw study --resume, "
+                                     "or give study merge another --out",
+                                     o.out, study::kJournalFile));
     study::StagedFolder staged(o.out, study::OutKind::study);
     staged.create();
     const study::MergeResult merged = study::merge_studies(dirs, o.out, staged.path());

@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 
 namespace vssw::study {
 namespace {
@@ -94,14 +95,7 @@ json parse_config(const std::string& text, const std::string& format, const std:
 
 json read_config_file(const std::string& path, const std::string& what) {
     const std::string format = config_format(path, what);
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(fmt::format("{} {}: no such file (or not a regular file)", what, path));
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("{} {}: cannot be read (missing or not readable)", what, path));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_config(text.str(), format, path, what);
+    return parse_config(read_input_file(path, what, kMaxTextFileBytes), format, path, what);
 }
 
 }  // namespace vssw::study

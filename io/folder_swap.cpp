@@ -75,19 +75,12 @@ bool owns(const KindInfo& me, const std::string& name) {
     return contains(me.own, name) || (me.kind == OutKind::motions && numbered_motion(name));
 }
 
-// vssw's own hidden files, whatever the command: the study's lock, an old write probe, temporary files and folders.
+// vssw's own hidden files, whatever the command: locks (of a folder inside, or of older versions), an old write probe,
+// temporary files and folders.
 bool vssw_hidden(const std::string& name) {
-    return name == kLockFile || name == ".vssw-write-test" || name.find(".vssw-tmp-") != std::string::npos;
-}
-
-// --out resolved: absolute, symlinks followed (the staging folder goes beside the real folder, and a symlink named
-// by --out stays a symlink to it), no trailing "/" or ".".
-fs::path resolve(const fs::path& dir) {
-    std::error_code ec;
-    fs::path p = fs::weakly_canonical(fs::absolute(dir), ec);
-    if (ec) p = fs::absolute(dir).lexically_normal();
-    while (p.has_parent_path() && p.filename().empty() && p != p.root_path()) p = p.parent_path();
-    return p;
+    const std::string suffix = kLockSuffix;
+    const bool lock = name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return name == kLockFile || lock || name == ".vssw-write-test" || name.find(".vssw-tmp-") != std::string::npos;
 }
 
 fs::path staging_path(const fs::path& target) {
@@ -151,31 +144,41 @@ void remove_stale_staging(const fs::path& target) {
     }
 }
 
+// Refuses (InputError) a folder holding another command's results: run at the check of --out, and again just before
+// the swap (a command of an older vssw, or one that ignored the lock, may have written there meanwhile: its files
+// would be carried into ours).
+void refuse_other_results(const fs::path& dir, const fs::path& target, const KindInfo& me) {
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(target, ec)) {
+        const std::string name = e.path().filename().string();
+        if (owns(me, name) || vssw_hidden(name)) continue;
+        for (const KindInfo& other : kinds())
+            if (other.kind != me.kind && contains(other.signature, name))
+                throw InputError(fmt::format("--out '{}' holds {} ({}): {} there would replace them; give --out "
+                                             "another folder",
+                                             dir.string(), other.whose, name, me.what));
+    }
+    if (ec) throw InputError(fmt::format("--out '{}' cannot be read: {}", dir.string(), ec.message()));
+}
+
 }  // namespace
 
-void check_out_folder(const fs::path& dir, OutKind kind) {
+FolderLock check_out_folder(const fs::path& dir, OutKind kind) {
     const KindInfo& me = info(kind);
     if (dir.empty()) throw InputError("--out: the path is empty");
     std::error_code ec;
-    const fs::path target = resolve(dir);
+    const fs::path target = resolve_out(dir);
     if (target == target.root_path())
         throw InputError(fmt::format("--out '{}' is the root folder: vssw replaces its results folder as a whole; give "
                                      "--out a folder inside it",
                                      dir.string()));
+    // Locked before anything is looked at: a command already writing --out is named, not raced.
+    FolderLock lock(dir);
     const bool exists = fs::exists(target, ec);
     if (exists) {
         if (!fs::is_directory(target, ec))
             throw InputError(fmt::format("--out '{}' exists and is not a folder", dir.string()));
-        for (const fs::directory_entry& e : fs::directory_iterator(target, ec)) {
-            const std::string name = e.path().filename().string();
-            if (owns(me, name) || vssw_hidden(name)) continue;
-            for (const KindInfo& other : kinds())
-                if (other.kind != kind && contains(other.signature, name))
-                    throw InputError(fmt::format("--out '{}' holds {} ({}): {} there would replace them; give --out "
-                                                 "another folder",
-                                                 dir.string(), other.whose, name, me.what));
-        }
-        if (ec) throw InputError(fmt::format("--out '{}' cannot be read: {}", dir.string(), ec.message()));
+        refuse_other_results(dir, target, me);
         struct stat self {}, parent {};
         if (::stat(target.c_str(), &self) == 0 && ::stat(target.parent_path().c_str(), &parent) == 0 &&
             self.st_dev != parent.st_dev)
@@ -190,7 +193,7 @@ void check_out_folder(const fs::path& dir, OutKind kind) {
                                          "without one",
                                          dir.string(), mount.string()));
         std::error_code cwd_ec;
-        const fs::path cwd = resolve(fs::current_path(cwd_ec));
+        const fs::path cwd = resolve_out(fs::current_path(cwd_ec));
         if (!cwd_ec && within(cwd, target))
             throw InputError(fmt::format("--out '{}' holds the current folder ('{}'): vssw replaces its results folder "
                                          "as a whole, which would leave this shell in a removed folder; give --out a "
@@ -210,6 +213,7 @@ void check_out_folder(const fs::path& dir, OutKind kind) {
                                      "beside --out and swaps it in when they are complete",
                                      dir.string(), parent.string(), ec ? ec.message() : "it exists"));
     fs::remove_all(staging, ec);
+    return lock;
 }
 
 void check_inputs_not_outputs(const fs::path& dir, OutKind kind,
@@ -222,7 +226,7 @@ void check_inputs_not_outputs(const fs::path& dir, OutKind kind,
             const fs::path out = dir / name;
             bool hit = fs::equivalent(input, out, ec) && !ec;
             // A file inside a folder of outputs (plots/) goes with the folder.
-            for (fs::path p = resolve(input).parent_path(); !hit && p.has_relative_path(); p = p.parent_path())
+            for (fs::path p = resolve_out(input).parent_path(); !hit && p.has_relative_path(); p = p.parent_path())
                 hit = fs::equivalent(p, out, ec) && !ec;
             if (hit)
                 throw InputError(fmt::format("{} '{}' is {} '{}' that {} writes: it would be replaced by the results; "
@@ -234,7 +238,7 @@ void check_inputs_not_outputs(const fs::path& dir, OutKind kind,
 }
 
 StagedFolder::StagedFolder(const fs::path& dir, OutKind kind)
-    : dir_(dir), target_(resolve(dir)), staging_(staging_path(target_)), kind_(kind) {
+    : dir_(dir), target_(resolve_out(dir)), staging_(staging_path(target_)), kind_(kind) {
     register_temp(staging_);  // before it exists: SIGINT/SIGTERM remove it (apps/signal_cleanup.hpp)
     std::error_code ec;
     fs::remove_all(staging_, ec);  // a leftover of a killed run that had this process id
@@ -274,6 +278,7 @@ void StagedFolder::commit() {
         unregister_temp(staging_);
         return;
     }
+    refuse_other_results(dir_, target_, me);
     try {
         for (const fs::directory_entry& e : fs::directory_iterator(target_)) {
             const std::string name = e.path().filename().string();

@@ -14,16 +14,19 @@
 #include <utility>
 #include <vector>
 
+#include "io/folder_lock.hpp"
+
 namespace vssw::study {
 
 // Which command writes the folder: it decides which names are its own (replaced) and which another's (refused).
 enum class OutKind { study, report, bench, stress, motions };
 
-// Checks --out before anything runs (InputError naming the folder): an existing path must be a folder this process
-// can write, neither a mount point nor '/' (it could not be renamed), holding no other command's results; the folder
-// beside it must take the staging folder (made and removed at once: a read-only or full place fails here, not after
-// the run).
-void check_out_folder(const std::filesystem::path& dir, OutKind kind);
+// Locks --out (io/folder_lock.hpp: another command writing it is named) and checks it before anything runs
+// (InputError naming the folder): an existing path must be a folder this process can write, neither a mount point nor
+// '/' (it could not be renamed), holding no other command's results; the folder beside it must take the staging
+// folder (made and removed at once: a read-only or full place fails here, not after the run). The caller holds the
+// lock it returns until its folder is swapped in (commit), or the run ends.
+[[nodiscard]] FolderLock check_out_folder(const std::filesystem::path& dir, OutKind kind);
 
 // Refuses (InputError) an input the run would destroy: a file that is, however spelled (symlink, hard link, ../),
 // one of the files `kind` writes in `dir`, or lies in its plots/ folder. Each input is (what it is, its path), e.g.
@@ -47,7 +50,8 @@ public:
     const std::filesystem::path& path() const { return staging_; }
     // A path inside the staging folder as it will be named once committed (for what the program prints).
     std::filesystem::path final_path(const std::filesystem::path& inside) const;
-    // Carries over the old folder's files that are not the command's own, then swaps the staging folder in and
+    // Checks again that the old folder holds no other command's results (written meanwhile by a command that did not
+    // take the lock), carries over its files that are not the command's own, then swaps the staging folder in and
     // removes the old one (InputError naming the folder when it cannot; the old folder is then as it was).
     void commit();
 

@@ -48,7 +48,7 @@ std::vector<MotionRow> write_motion_set(const MotionSetRequest& request, const s
         throw InputError(fmt::format("--count must be an integer from 1 to {}, got {}", kMaxMotions, request.count));
     check_draw_settings(request.draws);
     check_settings(request.simulation);
-    study::check_out_folder(request.out, study::OutKind::motions);
+    const study::FolderLock lock = study::check_out_folder(request.out, study::OutKind::motions);
     study::StagedFolder staged(request.out, study::OutKind::motions);
     staged.create();
     std::vector<MotionRow> rows;

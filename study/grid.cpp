@@ -13,6 +13,7 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "analytic/specimens.hpp"
 #include "analytic/wall.hpp"
 #include "multibody/analytic_engine.hpp"
@@ -88,12 +89,8 @@ std::string dropped_key(const std::string& key) { return key + "\ndrop-first"; }
 
 bool perturbed(const CaseSpec& c) { return !c.perturbation.empty() && c.perturbation != "none"; }
 
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+// A file read already (a record, Table 1), again for its bytes: still a regular file, however it changed meanwhile.
+std::string read_bytes(const std::string& path) { return read_input_file(path, "the file", kMaxTextFileBytes); }
 
 // Whether the analytic model (exact kinematics) released from rest at theta0 alpha falls rather than rocks: a heavy
 // overburden with a high hinge puts the unstable equilibrium below 0.8 alpha1 (Table 1 #1, #10, #11 at xi 0.5), and

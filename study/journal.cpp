@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "io/csv.hpp"
 
 namespace vssw::study {
@@ -29,8 +30,7 @@ long parse_long(const std::string& text, const std::filesystem::path& path) {
 // Reads the journal's whole tasks (their rows in file order) and the byte offset just past the last whole task.
 std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const std::string* identity,
                                         const Shard* shard, std::set<TaskKey>* done, std::streamoff* end_of_whole) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("journal {}: cannot be read", path.string()));
+    std::ifstream in = open_input_file(path, "the study journal", kMaxResultsBytes);
     std::string first;
     std::getline(in, first);
     if (first.rfind(kMagic, 0) != 0) throw InputError(fmt::format("{} is not a vssw study journal", path.string()));

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
 #include "study/outputs.hpp"
@@ -35,8 +36,8 @@ struct ShardReader {
     std::set<std::vector<std::string>> case_keys;
     std::vector<std::size_t> key_columns;
 
-    explicit ShardReader(const fs::path& p) : path(p), in(p, std::ios::binary) {
-        if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+    explicit ShardReader(const fs::path& p)
+        : path(p), in(open_input_file(p, "study merge: the shard's results", kMaxResultsBytes)) {
         if (!read_csv_record(in, header) || header.empty() || header.front() != "case_id")
             throw InputError(fmt::format("'{}' is not a study's results.csv", path.string()));
         for (std::size_t i = 0; i < header.size(); ++i)

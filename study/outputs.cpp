@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "study/agreement.hpp"
 #include "io/atomic_file.hpp"
 #include "io/document_html.hpp"
@@ -22,8 +23,10 @@ namespace vssw::study {
 
 nlohmann::ordered_json read_manifest(const std::filesystem::path& dir) {
     const std::filesystem::path path = dir / kManifestFile;
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("cannot read '{}' (not a study folder?)", path.string()));
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec)))
+        throw InputError(fmt::format("cannot read '{}' (not a study folder?)", path.string()));
+    std::ifstream in = open_input_file(path, "the study's manifest", kMaxTextFileBytes);
     try {
         return nlohmann::ordered_json::parse(in);
     } catch (const std::exception& e) {

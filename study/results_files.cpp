@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "io/csv.hpp"
 #include "study/metric_catalog.hpp"
 
@@ -108,8 +109,7 @@ std::size_t ResultsTable::column(const std::string& name) const {
 }
 
 ResultsTable read_results_csv(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+    std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
     ResultsTable t;
     try {
         if (!read_csv_record(in, t.header) || t.header.empty() || t.header.front() != "case_id")
@@ -129,8 +129,7 @@ ResultsTable read_results_csv(const std::filesystem::path& path) {
 }
 
 std::string file_fnv1a(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+    std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
     std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64's offset basis and prime, as grid.cpp's identity
     char buf[1 << 16];
     while (in) {

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "compare/case_runner.hpp"
 #include "compare/task_pool.hpp"
 #include "multibody/engine.hpp"
@@ -32,8 +33,9 @@ namespace {
 
 // The identity and shard an existing manifest records ("" when there is none or it does not read).
 std::string recorded_study(const fs::path& manifest) {
-    std::ifstream in(manifest);
-    if (!in) return "";
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(manifest, ec))) return "";
+    std::ifstream in = open_input_file(manifest, "the study's manifest", kMaxTextFileBytes);  // a FIFO: refused
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
         return fmt::format("{} {}/{}", j.at("study").at("identity").get<std::string>(), j.at("shard").at("k").get<int>(),
@@ -92,7 +94,8 @@ FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyR
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(fmt::format("--out '{}' is not a folder", dir.string()));
-    check_out_folder(dir, OutKind::study);
+    // Locked before the journal is looked at: a run still going there is named, not read half-written.
+    FolderLock lock = check_out_folder(dir, OutKind::study);
     // A refused study leaves no folder behind: one made here is removed again (empty) when it is refused below.
     const bool existed = fs::exists(dir, ec);
     if (options.resume && !existed)
@@ -107,8 +110,6 @@ FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyR
             if (!keep) fs::remove_all(dir, ignored);
         }
     } made{dir, existed};
-    // Before the journal is looked at: a run still going there is named, not read half-written.
-    FolderLock lock(dir);
     const bool journal = fs::exists(dir / kJournalFile, ec);
     const std::string this_study =
         fmt::format("{} {}/{}", grid.identity(), options.shard.k, options.shard.n);

@@ -12,9 +12,11 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "analytic/ground_motion.hpp"
 #include "io/config_file.hpp"
 #include "io/csv.hpp"
+#include "study/record_files.hpp"
 #include "study/metric_catalog.hpp"
 #include "compare/experiments.hpp"
 #include "multibody/analytic_engine.hpp"
@@ -256,20 +258,26 @@ std::vector<std::string> ensemble_files(const Reader& r, const std::string& key,
     if (!fs::is_directory(dir, ec))
         r.fail(key, fmt::format("no folder \"{}\" (looked for {})", folder, dir.string()));
     std::set<std::string> names;
-    // Stepped with error codes (a range-for's ++ throws): a folder that cannot be listed is one line; an entry whose
-    // type cannot be read (a dangling link) is no record.
+    // Stepped with error codes (a range-for's ++ throws): a folder that cannot be listed is one line. An entry named
+    // *.at2 that is no file (a dangling link, as a git-annex or DVC folder not fully fetched holds; a link loop, a
+    // FIFO, a device, a folder) is refused by name: skipped, the ensemble would shrink without a word.
     fs::directory_iterator it(dir, ec), end;
     for (; !ec && it != end; it.increment(ec)) {
         std::string ext = it->path().extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
-        std::error_code type_ec;
-        if (ext == ".at2" && it->is_regular_file(type_ec)) names.insert(it->path().filename().string());
+        if (ext != ".at2") continue;
+        if (const std::string why = not_a_record_file(it->path()); !why.empty())
+            r.fail(key, fmt::format("\"{}\" in \"{}\" is {}, not a record file: fetch or remove it", it->path().filename().string(),
+                                    folder, why));
+        names.insert(it->path().filename().string());
     }
     if (ec) r.fail(key, fmt::format("cannot list the folder \"{}\": {}", folder, ec.message()));
     for (const char* table : {"records.csv", "motions.csv"}) {
-        std::ifstream in(dir / table);
+        std::error_code table_ec;
+        if (!fs::exists(fs::symlink_status(dir / table, table_ec))) continue;
+        std::ifstream in = open_input_file(dir / table, fmt::format("{}: the table", key), kMaxTextFileBytes);
         std::vector<std::string> fields;
-        if (!in || !read_csv_record(in, fields)) continue;
+        if (!read_csv_record(in, fields)) continue;
         const auto column = std::find(fields.begin(), fields.end(), "file");
         if (column == fields.end()) continue;
         const std::size_t at = static_cast<std::size_t>(column - fields.begin());
@@ -279,9 +287,9 @@ std::vector<std::string> ensemble_files(const Reader& r, const std::string& key,
                 r.fail(key, fmt::format("\"{}\" lists \"{}\", which is not a file name in \"{}\" (a folder's table "
                                         "names files in it)",
                                         table, fields[at], folder));
-            if (!fs::is_regular_file(dir / fields[at], ec))
-                r.fail(key, fmt::format("\"{}\" lists \"{}\", which is not a file in \"{}\"", table, fields[at],
-                                        folder));
+            if (const std::string why = not_a_record_file(dir / fields[at]); !why.empty())
+                r.fail(key, fmt::format("\"{}\" lists \"{}\", which is not a file in \"{}\" ({})", table, fields[at],
+                                        folder, why));
             names.insert(fields[at]);
         }
     }
@@ -302,6 +310,19 @@ bool flag(const Reader& r, const json& ex, const std::string& ex_key, const char
     if (!ex[name].is_boolean())
         r.fail(ex_key + "." + name, fmt::format("must be true or false, got {}", ex[name].dump()));
     return ex[name].get<bool>();
+}
+
+// Two entries of an ensemble that name one file, however spelled (study/record_files.hpp), refused naming both.
+void refuse_one_record_twice(const Reader& r, const std::string& key, const json& files, const std::string& base_dir) {
+    std::vector<std::filesystem::path> paths;
+    for (const json& f : files) {
+        const std::filesystem::path given = f.get<std::string>();
+        paths.push_back(given.is_absolute() ? given : std::filesystem::path(base_dir) / given);
+    }
+    if (const auto twice = same_file_twice(paths))
+        r.fail(key, fmt::format("\"{}\" and \"{}\" are one file (the same device and inode): each record once, or "
+                                "the ensemble would count it as two independent records",
+                                files[twice->first].get<std::string>(), files[twice->second].get<std::string>()));
 }
 
 // kind = "ensemble" read into the record or scale-to-collapse excitation it stands for (spec.hpp): the records as
@@ -327,8 +348,10 @@ json read_ensemble(const Reader& r, const json& ex, const std::string& ex_key, c
         e.folder = ex["ensemble"].get<std::string>();
         out["file"] = ensemble_files(r, key("ensemble"), e.folder, base_dir);
     }
+    const std::string files_key = ex.contains("files") ? key("files") : key("ensemble");
+    refuse_one_record_twice(r, files_key, out["file"], base_dir);
     if (out["file"].size() < 2)
-        r.fail(ex.contains("files") ? key("files") : key("ensemble"),
+        r.fail(files_key,
                fmt::format("an ensemble needs at least two records, got {}", out["file"].size()));
     if (!ex.contains("intensity")) r.fail(ex_key, "kind ensemble needs 'intensity' (\"pga\")");
     e.intensity = r.word(ex["intensity"], key("intensity"), {"pga"});

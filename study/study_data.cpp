@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "io/csv.hpp"
 #include "study/outputs.hpp"
 #include "study/runner.hpp"
@@ -131,8 +132,7 @@ void read_series(StudyData& d) {
 }
 
 void read_rows(StudyData& d, const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+    std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
     std::vector<std::string> header, fields;
     try {
         if (!read_csv_record(in, header) || header.empty() || header.front() != "case_id")

@@ -434,7 +434,7 @@ TEST(StudyRun, ASecondRunInAFolderInUseIsRefusedNamingTheFirst) {
             (void)study::prepare_study_dir(grid, dir / "s", second);
             ADD_FAILURE() << "a second run was let in";
         } catch (const InputError& e) {
-            EXPECT_NE(std::string(e.what()).find("in use by another vssw study (process " + std::to_string(getpid())),
+            EXPECT_NE(std::string(e.what()).find("in use by another vssw command (process " + std::to_string(getpid())),
                       std::string::npos)
                 << e.what();
         }

@@ -1,12 +1,22 @@
 // `vssw study` and `vssw study merge` as a user runs them: exit codes, the JSON summary, refusals before anything is
 // created, --strict, --force, --shard, merge.
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
+#include "io/folder_swap.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
@@ -47,6 +57,14 @@ roller = "unilateral"
 kind = "free"
 theta0 = 0.8
 )";
+
+// Runs the study `file` as shards 1/2 and 2/2 into dir/1 and dir/2; whether both succeeded.
+bool run_two_shards(const TempDir& dir, const std::string& file) {
+    for (const char* k : {"1", "2"})
+        if (run_cli({"study", file, "--out", (dir / k).string(), "--shard", std::string(k) + "/2", "--no-plots"}).code != 0)
+            return false;
+    return true;
+}
 
 TEST(StudyCli, RunsAStudyAndSummarisesItInJson) {
     const TempDir dir;
@@ -122,9 +140,7 @@ TEST(StudyCli, ShardsMergeIntoOneRunsFiles) {
     const TempDir dir;
     const std::string file = write_file(dir / "s.toml", kStudy).string();
     ASSERT_EQ(run_cli({"study", file, "--out", (dir / "one").string(), "--no-plots"}).code, 0);
-    for (const char* k : {"1", "2"})
-        ASSERT_EQ(run_cli({"study", file, "--out", (dir / k).string(), "--shard", std::string(k) + "/2", "--no-plots"}).code,
-                  0);
+    ASSERT_TRUE(run_two_shards(dir, file));
     const auto missing = run_cli({"study", "merge", (dir / "1").string(), "--out", (dir / "m").string()});
     EXPECT_EQ(missing.code, 2);
     EXPECT_NE(missing.err.find("shard 2 of 2 missing"), std::string::npos) << missing.err;
@@ -134,6 +150,50 @@ TEST(StudyCli, ShardsMergeIntoOneRunsFiles) {
     ASSERT_EQ(merged.code, 0) << merged.err;
     EXPECT_EQ(nlohmann::json::parse(merged.out)["shards"], 2);
     EXPECT_EQ(vssw::testing::read_file(dir / "one" / "results.csv"), vssw::testing::read_file(dir / "m" / "results.csv"));
+}
+
+// A study folder's files are read only when they are regular files within their bound (analytic/input_file.hpp): a
+// FIFO in place of results.csv, manifest.json or journal.csv blocked `study merge` and `--resume` forever, a symbolic
+// link to /dev/zero grew memory without end. Each is refused unread (exit 2, one line naming the file).
+TEST(StudyCli, AStudyFolderFileThatIsNoRegularFileIsRefusedUnread) {
+    namespace fs = std::filesystem;
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string();
+    ASSERT_TRUE(run_two_shards(dir, file));
+    const std::vector<std::pair<std::string, std::function<void(const fs::path&)>>> stand_ins = {
+        {"a FIFO", [](const fs::path& p) { ASSERT_EQ(mkfifo(p.c_str(), 0600), 0); }},
+        {"a device", [](const fs::path& p) { fs::create_symlink("/dev/zero", p); }},
+        {"bytes, more than", [](const fs::path& p) {  // a sparse file past the bound: nothing is written
+             write_file(p, "");
+             fs::resize_file(p, vssw::kMaxResultsBytes + 1);
+         }},
+    };
+    const auto expect_refused = [](const vssw::testing::CliResult& r, const fs::path& path, const std::string& what) {
+        EXPECT_EQ(r.code, 2) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find("'" + path.string() + "'"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    };
+    for (const auto& [what, make] : stand_ins) {
+        for (const char* name : {"results.csv", "manifest.json"}) {
+            if (std::string(name) == "manifest.json" && what == "bytes, more than") continue;  // its bound is 256 MiB
+            const fs::path path = dir / "2" / name, kept = dir / "kept";
+            fs::rename(path, kept);
+            make(path);
+            const auto r = run_cli({"study", "merge", (dir / "1").string(), (dir / "2").string(), "--out",
+                                    (dir / "m").string(), "--no-plots"});
+            expect_refused(r, path, what);
+            EXPECT_FALSE(fs::exists(dir / "m"));
+            fs::remove(path);
+            fs::rename(kept, path);
+        }
+        const fs::path journal = dir / "r" / "journal.csv";
+        fs::create_directories(dir / "r");
+        make(journal);
+        const auto r = run_cli({"study", file, "--out", (dir / "r").string(), "--resume", "--no-plots"});
+        expect_refused(r, journal, what);
+        fs::remove_all(dir / "r");
+    }
 }
 
 TEST(StudyCli, HelpListsEveryMetric) {
@@ -412,3 +472,70 @@ TEST(StudyCli, TheManifestRecordsTheRunBudget) {
 }
 
 }  // namespace
+
+// Two commands on one --out: every command that writes a results folder holds its lock (io/folder_lock.hpp) from its
+// check of --out to its swap, so a second one meanwhile is refused up front, naming the first's process, and the
+// folder holds only the first's files. Here this process holds the lock (a flock is per open file: the command run
+// in-process is refused as another process would be).
+TEST(StudyCli, AnOutFolderInUseIsRefusedToEveryCommandThatWritesOne) {
+    namespace fs = std::filesystem;
+    const TempDir dir;
+    const std::string file = write_file(dir / "s.toml", kStudy).string();
+    ASSERT_TRUE(run_two_shards(dir, file));
+    ASSERT_EQ(run_cli({"study", file, "--out", (dir / "resumed").string(), "--no-plots"}).code, 0);
+    const std::string busy = (dir / "busy").string();
+    const std::vector<std::vector<std::string>> commands = {
+        {"study", file, "--out", busy, "--no-plots"},
+        {"study", "merge", (dir / "1").string(), (dir / "2").string(), "--out", busy, "--no-plots"},
+        {"motions", "generate", "--count", "1", "--seed", "1", "--out", busy},
+        {"report", "--cases", "fig6-vssw", "--engines", "analytic", "--no-plots", "--out", busy},
+        {"bench", "--quick", "--engines", "analytic", "--no-plots", "--out", busy},
+        {"stress", "--quick", "--engines", "analytic", "--cases", "xi-50", "--out", busy},
+    };
+    const std::string named = "is in use by another vssw command (process " + std::to_string(getpid()) + ")";
+    for (const bool exists : {false, true}) {
+        if (exists) {
+            fs::create_directories(dir / "busy");
+            write_file(dir / "busy" / "notes.txt", "the user's\n");
+        }
+        const vssw::study::FolderLock held = vssw::study::check_out_folder(busy, vssw::study::OutKind::study);
+        for (const std::vector<std::string>& command : commands) {
+            const auto r = run_cli(command);
+            EXPECT_EQ(r.code, 2) << command[0] << ": " << r.err;
+            EXPECT_NE(r.err.find("--out '" + busy + "' " + named), std::string::npos) << command[0] << ": " << r.err;
+            std::vector<std::string> names;
+            std::error_code ec;
+            for (const fs::directory_entry& e : fs::directory_iterator(dir / "busy", ec))
+                names.push_back(e.path().filename().string());
+            EXPECT_EQ(names, exists ? std::vector<std::string>{"notes.txt"} : std::vector<std::string>{}) << command[0];
+            EXPECT_EQ(fs::exists(dir / "busy"), exists) << command[0] << ": no folder made";
+        }
+    }
+    // A --resume of a folder in use, too.
+    const vssw::study::FolderLock held = vssw::study::check_out_folder(dir / "resumed", vssw::study::OutKind::study);
+    const auto r = run_cli({"study", file, "--out", (dir / "resumed").string(), "--resume", "--no-plots"});
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(named), std::string::npos) << r.err;
+}
+
+// The swap checks the folder again: a command that did not take the lock (an older vssw) and wrote its results there
+// meanwhile is not mixed in; the swap fails naming them, and the folder is as that command left it.
+TEST(StudyCli, TheSwapRefusesAFolderAnotherCommandFilledMeanwhile) {
+    namespace fs = std::filesystem;
+    const TempDir dir;
+    const fs::path out = dir / "out";
+    fs::create_directories(out);
+    const vssw::study::FolderLock lock = vssw::study::check_out_folder(out, vssw::study::OutKind::study);
+    vssw::study::StagedFolder staged(out, vssw::study::OutKind::study);
+    staged.create();
+    write_file(staged.path() / "results.csv", "case_id\n");
+    write_file(out / "motions.csv", "file\n");  // the other command's, written after our check
+    try {
+        staged.commit();
+        ADD_FAILURE() << "the swap mixed the folders";
+    } catch (const vssw::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("holds generated motions (motions.csv)"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::exists(out / "motions.csv"));
+    EXPECT_FALSE(fs::exists(out / "results.csv"));
+}

@@ -2,11 +2,15 @@
 // stand for (the same ids and rows but for the kind), a folder's records listed in name order, every malformed key
 // named, and the sensitivity band: the analytic model's perturbed repeats of each stripe case, which engines do not
 // run, with a record one sample shorter (GroundMotion::drop_first_sample).
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -168,6 +172,86 @@ TEST(StudyEnsemble, EachMalformationIsNamed) {
         EXPECT_NE(message.find("study file"), std::string::npos) << c.toml;
         EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "' in: " << message;
     }
+}
+
+// A record is the file its path resolves to (study/record_files.hpp): one file named twice, however spelled ("./",
+// "..", a symlinked folder, a symbolic link or a hard link to it), is refused naming both spellings; two byte-identical
+// copies are two files and run as two records.
+TEST(StudyEnsemble, OneFileSpelledTwiceIsRefusedNamingBothSpellings) {
+    namespace fs = std::filesystem;
+    const TempDir dir;
+    fs::create_directories(dir / "recs");
+    fs::copy_file(kRinaldi, dir / "recs" / "a.at2");
+    fs::copy_file(kPacoimaDam, dir / "recs" / "b.at2");
+    fs::create_directory_symlink("recs", dir / "recs_link");
+    fs::create_symlink("a.at2", dir / "recs" / "a_alias.at2");
+    fs::create_hard_link(dir / "recs" / "b.at2", dir / "b_hard.at2");
+    const std::string tail = "\nintensity = \"pga\"\nlevels = [0.4]\n";
+    const auto files = [&](const std::string& one, const std::string& two) {
+        return kWall + "[excitation]\nkind = \"ensemble\"\nfiles = [\"" + one + "\", \"" + two + "\"]" + tail;
+    };
+    const std::vector<std::pair<std::string, std::string>> pairs = {
+        {"recs/a.at2", "recs/./a.at2"},
+        {"recs/a.at2", "recs/../recs/a.at2"},
+        {"recs/a.at2", "recs_link/a.at2"},
+        {"recs/a.at2", "recs/a_alias.at2"},
+        {"recs/b.at2", "b_hard.at2"},
+        {"recs/a.at2", (dir / "recs" / "a.at2").string()},
+    };
+    for (const auto& [one, two] : pairs) {
+        const std::string message = refusal(dir, files(one, two));
+        EXPECT_NE(message.find("excitation.files: \"" + one + "\" and \"" + two + "\" are one file"), std::string::npos)
+            << message;
+    }
+    // A folder holding a symbolic link to one of its records (the same file under two names).
+    const std::string folder = kWall + "[excitation]\nkind = \"ensemble\"\nensemble = \"recs\"" + tail;
+    const std::string message = refusal(dir, folder);
+    EXPECT_NE(message.find("excitation.ensemble: \"recs/a.at2\" and \"recs/a_alias.at2\" are one file"),
+              std::string::npos)
+        << message;
+    // Byte-identical copies: two files.
+    fs::remove(dir / "recs" / "a_alias.at2");
+    fs::copy_file(dir / "recs" / "a.at2", dir / "recs" / "a_copy.at2");
+    EXPECT_EQ(refusal(dir, folder), "");
+    EXPECT_EQ(refusal(dir, files("recs/a.at2", "recs/a_copy.at2")), "");
+}
+
+// An entry of an ensemble folder named *.at2 that is no file is refused by name, not skipped (the ensemble would
+// shrink without a word): a dangling link, a link loop, a FIFO, a device, a folder. So is one its records.csv lists.
+TEST(StudyEnsemble, AFolderEntryThatIsNoFileIsRefusedByName) {
+    namespace fs = std::filesystem;
+    const TempDir dir;
+    const std::string toml =
+        kWall + "[excitation]\nkind = \"ensemble\"\nensemble = \"set\"\nintensity = \"pga\"\nlevels = [0.4]\n";
+    const auto fresh_set = [&] {
+        fs::remove_all(dir / "set");
+        fs::create_directories(dir / "set");
+        fs::copy_file(kRinaldi, dir / "set" / "a.at2");
+        fs::copy_file(kPacoimaDam, dir / "set" / "b.at2");
+    };
+    fresh_set();
+    ASSERT_EQ(refusal(dir, toml), "") << "the set as it is runs";
+    const std::vector<std::pair<std::function<void()>, std::string>> entries = {
+        {[&] { fs::create_symlink("missing.at2", dir / "set" / "x.at2"); }, "a symbolic link to a missing file"},
+        {[&] { fs::create_symlink("x.at2", dir / "set" / "x.at2"); }, "a symbolic link loop"},
+        {[&] { ASSERT_EQ(mkfifo((dir / "set" / "x.at2").c_str(), 0600), 0); }, "a FIFO"},
+        {[&] { fs::create_symlink("/dev/zero", dir / "set" / "x.at2"); }, "a device"},
+        {[&] { fs::create_directory(dir / "set" / "x.at2"); }, "a folder"},
+    };
+    for (const auto& [make, what] : entries) {
+        fresh_set();
+        make();
+        const std::string message = refusal(dir, toml);
+        EXPECT_NE(message.find("excitation.ensemble: \"x.at2\" in \"set\" is " + what), std::string::npos) << message;
+    }
+    fresh_set();
+    fs::create_symlink("missing.txt", dir / "set" / "c.txt");
+    write_file(dir / "set" / "records.csv", "file\nc.txt\n");
+    const std::string message = refusal(dir, toml);
+    EXPECT_NE(message.find("\"records.csv\" lists \"c.txt\", which is not a file in \"set\" (a symbolic link to a "
+                           "missing file)"),
+              std::string::npos)
+        << message;
 }
 
 // The band: each stripe case again at the level x (1 +- 1e-3) and with the record's first sample dropped, run by the

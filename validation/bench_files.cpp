@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/input_file.hpp"
 #include "compare/targets.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
@@ -262,10 +263,11 @@ namespace {
 
 Json read_bench_json(const std::filesystem::path& bench_dir) {
     const std::filesystem::path path = bench_dir / "bench.json";
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("--bench: cannot read {} (run `vssw bench --out {}` first)", path.string(),
-                                          bench_dir.string()));
-    Json j = Json::parse(in, nullptr, false);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        throw InputError(fmt::format("--bench: cannot read {} (run `vssw bench --out {}` first)", path.string(),
+                                     bench_dir.string()));
+    Json j = Json::parse(read_input_file(path, "--bench: the file", kMaxTextFileBytes), nullptr, false);
     if (j.is_discarded() || !j.is_object() || !j.contains("cheapest") || !j.contains("points"))
         throw InputError(fmt::format("--bench: {} is not a bench.json written by vssw bench", path.string()));
     return j;

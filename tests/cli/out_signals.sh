@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# SIGINT and SIGTERM leave no temporary file or folder behind, and what the run would have replaced as it was; a
-# --resume while the study still runs is refused naming its process; the interrupted study resumes to the rows of an
-# uninterrupted run. The real program, on jobs long enough to be caught mid-way: a history writing a 30 MB CSV, and
-# a study held in its plot phase by a stand-in for gnuplot that sleeps.
+# SIGINT and SIGTERM leave no temporary file, folder or lock file behind, and what the run would have replaced as it
+# was; a --resume or another command on its --out while the study still runs is refused naming its process; the
+# interrupted study resumes to the rows of an uninterrupted run. The real program, on jobs long enough to be caught
+# mid-way: a history writing a 30 MB CSV, and a study held in its plot phase by a stand-in for gnuplot that sleeps.
 # usage: out_signals.sh VSSW SOURCE_DIR WORK_DIR
 set -euo pipefail
 set -m  # background jobs keep SIGINT (a script's background jobs otherwise ignore it)
 vssw="$1" src="$2" work="$3"
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
-no_leftovers() { if ls -a "$1" | grep -q 'vssw-tmp'; then ls -a "$1" >&2; fail "$2: a .vssw-tmp leftover in $1"; fi; }
+no_leftovers() { if ls -a "$1" | grep -q 'vssw-tmp\|vssw-lock'; then ls -a "$1" >&2; fail "$2: a leftover in $1"; fi; }
 # Waits (up to 60 s) until a path matching the glob exists.
 wait_for() { for _ in $(seq 6000); do compgen -G "$1" >/dev/null && return 0; sleep 0.01; done; fail "never saw $1"; }
 
@@ -52,7 +52,13 @@ for sig in INT TERM; do
   # A second run or a --resume meanwhile: refused, naming the first.
   rc=0; "$vssw" study "$study" --out s --resume --no-plots >/dev/null 2>second.txt || rc=$?
   [ "$rc" = 2 ] || fail "a --resume while the study runs: exit $rc, want 2"
-  grep -q "in use by another vssw study (process $pid)" second.txt || { cat second.txt >&2; fail "not named: $pid"; }
+  grep -q "in use by another vssw command (process $pid)" second.txt || { cat second.txt >&2; fail "not named: $pid"; }
+  # Another command on the same --out meanwhile (two commands started together once both succeeded, the folder mixing
+  # their files): refused up front, naming the first; nothing of it in the folder.
+  rc=0; "$vssw" motions generate --count 2 --seed 1 --out s >/dev/null 2>second.txt || rc=$?
+  [ "$rc" = 2 ] || fail "motions generate into a study's folder in use: exit $rc, want 2"
+  grep -q "in use by another vssw command (process $pid)" second.txt || { cat second.txt >&2; fail "motions: not named"; }
+  if ls s | grep -q 'motion'; then ls s >&2; fail "motions generate wrote into the study's folder"; fi
   kill -s "$sig" "$pid"
   rc=0; wait "$pid" || rc=$?
   kill "$(cat mark)" 2>/dev/null || true  # the stand-in for gnuplot, orphaned
