@@ -31,6 +31,7 @@ import json
 import math
 import os
 import random
+import re
 import shlex
 import shutil
 import signal
@@ -39,6 +40,8 @@ import tempfile
 import time
 
 import pytest
+
+import property_surface as surface
 
 # --- constants -----------------------------------------------------------------------------------------------------
 
@@ -224,12 +227,16 @@ STRAY_OPTIONS = ["--heigth", "--engine", "--engines", "--out", "--csv", "--recor
 class Case:
     """One run: argv after the program, what it may write, whether stdout is JSON, and files to create first."""
 
-    def __init__(self, command, args, json_out=False, files=None, out_dirs=(), inputs=(), bad=()):
+    def __init__(self, command, args, json_out=False, files=None, out_dirs=(), inputs=(), bad=(), valid=False,
+                 setup=None, env=None):
         self.command, self.args, self.json_out = command, list(args), json_out
         self.files = dict(files or {})  # name -> text, written into the run's folder before it runs
-        self.out_dirs = out_dirs        # --out values of a study (exit 2 must leave no new folder there)
+        self.out_dirs = out_dirs        # --out values (exit 2 must leave no new folder there)
         self.inputs = list(inputs)      # files the run reads that its arguments do not name (a study's records)
         self.bad = list(bad)            # why the input is certainly bad (then it must exit 2), empty if it may be valid
+        self.valid = valid and not bad  # valid as drawn: then it must succeed (exit 0)
+        self.setup = setup              # setup(folder): inputs a text cannot hold (symlinks, FIFOs, damaged plugins)
+        self.env = dict(env or {})      # more environment (VSSW_PLUGIN_PATH)
         self.index = 0
 
     def line(self):
@@ -373,15 +380,28 @@ def motion_opts(rng, pulse_period_hi=1.0):
 
 def finish(rng, command, opts, spec, positional=(), json_flag=True, files=None, out_dirs=()):
     """The case with probability 0.3 valid as drawn, else mutated; --json added on most runs that take it."""
-    bad = []
-    if rng.random() >= 0.3:
+    bad, mutated = [], rng.random() >= 0.3
+    if mutated:
         opts, bad = mutate(rng, opts, spec, command)
     if json_flag and rng.random() < 0.85 and "--json" not in [o for o, _ in opts]:
         opts.append(("--json", None))
     args = assemble(opts, positional)
     json_out = json_flag and "--json" in args and not helped(args) and "--list-settings" not in args
     return Case(command, command.split() + args, json_out=json_out, files=files, out_dirs=out_dirs,
-                bad=[] if helped(args) else bad)
+                bad=[] if helped(args) else bad, valid=not mutated and valid_as_drawn(command, opts))
+
+
+def valid_as_drawn(command, opts):
+    """Whether an unmutated draw is valid input: the generators draw each option from its valid values, but a few
+    draws combine into what the docs refuse (the paper's kinematics with the unilateral roller; a parapet has no
+    roller or kinematics of a VSSW to choose) or into a run that may fail for a stated reason (an engine's compare
+    measures metrics that may be unmeasurable, exit 3)."""
+    given = dict((o, v) for o, v in opts)
+    if given.get("--roller") == "unilateral" and given.get("--kinematics", "paper") == "paper":
+        return False
+    if given.get("--model") == "parapet" and any(k in given for k in ("--roller", "--kinematics", "--hinge")):
+        return False
+    return command not in ("compare", "check")
 
 
 def helped(args):
@@ -877,11 +897,15 @@ GENERATORS = {
     "report": gen_report, "check": gen_check, "study": gen_study, "study merge": gen_study_merge,
     "stress": gen_stress, "bench": gen_bench, "motions generate": gen_motions_generate,
     "motions describe": gen_motions_describe,
+    # The surface added since (tests/cli/property_surface.py).
+    "study ensemble": lambda rng: surface.gen_ensemble_study(rng, Case, to_toml),
+    "plugins": lambda rng: surface.gen_plugins(rng, Case, VSSW),
+    "hostile names": lambda rng: surface.gen_hostile_names(rng, Case),
 }
 # Cases of these commands: fewer where one run costs more (report, check, stress, bench: 0.2-1 s each and little
 # option surface beyond the others'), more for study files (the file is a large input space of its own).
 CASE_SHARE = {"report": 0.5, "check": 0.5, "stress": 0.5, "bench": 0.4, "study merge": 0.5, "study": 2.0,
-              "summary": 0.5}
+              "summary": 0.5, "study ensemble": 0.7, "plugins": 0.5, "hostile names": 0.7}
 
 
 # --- running -------------------------------------------------------------------------------------------------------
@@ -963,6 +987,9 @@ def make_inputs(folder, shards_dir):
             shutil.copytree(os.path.join(shards_dir, d), os.path.join(folder, d))
 
 
+# What a message must never carry raw: C0 controls but the line break and tab, DEL, and C1 (ESC's 8-bit forms).
+CONTROL_BYTES = re.compile("[\x00-\x08\x0b-\x1f\x7f\x80-\x9f]")
+
 NON_FINITE_STRINGS = {"nan", "-nan", "+nan", "inf", "-inf", "+inf", "infinity", "-infinity"}
 
 
@@ -997,9 +1024,11 @@ def run_case(case, work, shards_dir):
     for name, text in case.files.items():
         with open(os.path.join(folder, name), "w", encoding="utf-8", errors="surrogatepass") as f:
             f.write(text)
+    if case.setup:
+        case.setup(folder)
     before = snapshot(folder)
     out_existed = {o: os.path.exists(os.path.join(folder, o)) for o in case.out_dirs}
-    env = dict(os.environ, HOME=folder, LC_ALL="C.UTF-8")
+    env = dict(os.environ, HOME=folder, LC_ALL="C.UTF-8", **case.env)
     env.pop("VSSW_DATA_DIR", None)  # the program finds its data itself; --data is what the case gives
     start = time.monotonic()
     proc = subprocess.Popen([VSSW] + case.args, cwd=folder, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
@@ -1064,10 +1093,15 @@ def run_case(case, work, shards_dir):
                     broken.append(("a written .json file is not JSON", "%s: %s" % (rel, str(e)[:60])))
     if case.bad and not timed_out and rc >= 0 and rc != 2:
         broken.append(("certainly bad input not refused (exit %d)" % rc, "; ".join(case.bad)))
-    if case.command == "study" and rc == 2:
+    if rc == 2:
         for o, existed in out_existed.items():
-            if not existed and os.path.exists(os.path.join(folder, o)):
-                broken.append(("study exit 2 left a new --out folder", o))
+            if not existed and os.path.lexists(os.path.join(folder, o)):
+                broken.append(("exit 2 left a new --out folder (refused after the work, or not before it)", o))
+    if case.valid and not timed_out and rc != 0:
+        broken.append(("valid input did not succeed (exit %d)" % rc, "valid as drawn"))
+    control = sorted(set(CONTROL_BYTES.findall(stderr.decode("utf-8", "surrogateescape"))))
+    if control:
+        broken.append(("a control character reached the terminal", " ".join("%r" % c for c in control)))
     # One entry per class and run: a shell command run from a name may create a dozen files.
     merged = {}
     for cls, detail in broken:
