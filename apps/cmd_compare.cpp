@@ -28,6 +28,7 @@
 #include "study/response_comparison.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/settings_reader.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -136,6 +137,12 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
         runs.push_back({e.name(), e.version(), settings_of(e, o), {}, 0.0, ""});
     }
     const CompareReference reference = reference_of(o, chosen, scene);
+    // A setting for another wall, or a step no run can use: refused before the first engine runs.
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        multibody::require_settings_fit_wall(engines[i]->display_name(), runs[i].settings,
+                                             engines[i]->setting_descriptions(), scene);
+        compare::require_comparison_steps(*engines[i], runs[i].settings, scene, o.theta0, options);
+    }
     const bool several = runs.size() > 1;
 
     const auto start = std::chrono::steady_clock::now();

@@ -28,7 +28,8 @@ namespace vssw::cli {
 namespace {
 
 struct GenerateOptions {
-    std::string count_text, seed_text, out, mechanism = "strike-slip";
+    std::string count_text, seed_text, out;
+    std::optional<std::string> mechanism;  // strike-slip when a scenario is given without it
     std::optional<double> magnitude, distance, vs30;
     std::optional<double> arias, d5_95, t_mid, mid_frequency, slope, damping;
     double scatter = 1.0;
@@ -59,9 +60,14 @@ motions::DrawSettings draw_settings(const GenerateOptions& o) {
     const int given = int(o.magnitude.has_value()) + int(o.distance.has_value()) + int(o.vs30.has_value());
     if (given != 0 && given != 3)
         throw InputError("--magnitude, --distance and --vs30 name a scenario together: give all three or none");
-    if (o.mechanism != "strike-slip" && o.mechanism != "reverse")
-        throw InputError(fmt::format("--mechanism must be strike-slip or reverse, got {}", o.mechanism));
-    if (given == 3) d.scenario = motions::Scenario{*o.magnitude, *o.distance, *o.vs30, o.mechanism == "reverse"};
+    if (o.mechanism && given == 0)
+        throw InputError(fmt::format("--mechanism {} names a scenario's faulting: give it with --magnitude, --distance "
+                                     "and --vs30",
+                                     *o.mechanism));
+    const std::string mechanism = o.mechanism.value_or("strike-slip");
+    if (mechanism != "strike-slip" && mechanism != "reverse")
+        throw InputError(fmt::format("--mechanism must be strike-slip or reverse, got {}", mechanism));
+    if (given == 3) d.scenario = motions::Scenario{*o.magnitude, *o.distance, *o.vs30, mechanism == "reverse"};
     d.medians = {o.arias, o.d5_95, o.t_mid, o.mid_frequency, o.slope, o.damping};
     d.scatter = o.scatter;
     return d;
@@ -153,12 +159,17 @@ void add_generate_options(CLI::App& gen, GenerateOptions& o) {
     gen.add_option("--distance", o.distance, "scenario: closest distance to the rupture [km], 1 to 200");
     gen.add_option("--vs30", o.vs30, "scenario: the site's Vs30 [m/s], 150 to 2000");
     gen.add_option("--mechanism", o.mechanism, "scenario: strike-slip (default) or reverse faulting");
-    gen.add_option("--arias", o.arias, "median Arias intensity [m/s]");
-    gen.add_option("--d5-95", o.d5_95, "median significant duration D5-95 [s], 5 to 45");
-    gen.add_option("--t-mid", o.t_mid, "median t_mid, the time at 45 % of the Arias intensity [s], 0.5 to 40");
-    gen.add_option("--mid-frequency", o.mid_frequency, "median filter frequency at t_mid, w_mid/2pi [Hz]");
-    gen.add_option("--frequency-slope", o.slope, "median slope of the filter frequency, w'/2pi [Hz/s], -2 to 0.5");
-    gen.add_option("--damping", o.damping, "median filter damping zeta_f, 0.02 to 0.95");
+    // Each median's range as check_draw_settings refuses it (motions::median_range).
+    const auto median = [&](const char* name, std::optional<double>& target, const char* what, motions::Parameter j) {
+        gen.add_option(name, target, fmt::format("{}, {}", what, motions::median_range_text(j)));
+    };
+    median("--arias", o.arias, "median Arias intensity [m/s]", motions::kArias);
+    median("--d5-95", o.d5_95, "median significant duration D5-95 [s]", motions::kD595);
+    median("--t-mid", o.t_mid, "median t_mid, the time at 45 % of the Arias intensity [s]", motions::kTmid);
+    median("--mid-frequency", o.mid_frequency, "median filter frequency at t_mid, w_mid/2pi [Hz]",
+           motions::kMidFrequency);
+    median("--frequency-slope", o.slope, "median slope of the filter frequency, w'/2pi [Hz/s]", motions::kSlope);
+    median("--damping", o.damping, "median filter damping zeta_f", motions::kDamping);
     gen.add_option("--scatter", o.scatter,
                    "factor on the parameters' scatter, 0 to 2 (default 1; 0: every motion has the medians)");
     gen.add_option("--dt", o.simulation.dt, fmt::format("sample step [s], at most 0.1 (default {})", o.simulation.dt));

@@ -12,6 +12,7 @@
 #include "analytic/simulate.hpp"
 #include "analytic/wall_scene.hpp"
 #include "multibody/analytic_engine.hpp"
+#include "multibody/step_resolution.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -271,6 +272,36 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
     return out;
 }
 
+void require_threshold_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                             const ThresholdOptions& o) {
+    if (engine.name() == "analytic") return;
+    multibody::Excitation ex;  // a trial (find_threshold): its amplitude sets no time scale
+    const double hold = threshold_hold_time(scene, o);
+    ex.horizontal = ramp_and_hold(scene.gravity(), o.ramp_time, hold);
+    ex.t_end = o.ramp_time + hold;
+    multibody::require_step_resolves(engine.display_name(), scene, ex, settings.dt,
+                                     !engine.dt_is_a_reporting_interval());
+}
+
+void require_free_vibration_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                                  const FreeVibrationOptions& o) {
+    require(std::isfinite(o.r) && o.r > 0.0, "release angle r (units of alpha)", "a positive finite number", o.r);
+    if (engine.name() == "analytic") return;
+    multibody::Excitation ex;  // run_free_vibration's run
+    ex.theta0 = o.r * scene.alpha();
+    ex.t_end = o.t_end > 0.0 ? o.t_end : free_vibration_duration(scene, ex.theta0, o.impacts);
+    multibody::require_step_resolves(engine.display_name(), scene, ex, settings.dt,
+                                     !engine.dt_is_a_reporting_interval());
+}
+
+void require_comparison_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene, double r,
+                              const ComparisonOptions& options) {
+    FreeVibrationOptions free = options.free;
+    free.r = r;
+    require_free_vibration_steps(engine, settings, scene, free);
+    require_threshold_steps(engine, settings, scene, options.threshold);
+}
+
 MetricComparison compare_metric(double analytic, double engine) { return {analytic, engine, engine / analytic - 1.0}; }
 
 EngineSettings analytic_reference_settings() {
@@ -305,6 +336,7 @@ double first_amplitude(const FreeVibrationResult& f) {
 EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
                                        double r, const ComparisonOptions& options) {
     require_scene(scene);
+    require_comparison_steps(engine, settings, scene, r, options);
     const multibody::AnalyticEngine analytic;
 
     EngineComparison c{};

@@ -144,6 +144,15 @@ double free_vibration_duration(const WallScene& scene, double theta0, int impact
 FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
                                        const FreeVibrationOptions& options = {});
 
+// Whether the engine's step can serve find_threshold's trials and run_free_vibration's run as they will be run
+// (multibody::require_step_resolves: at most kMaxStepsPerRun steps, fine enough for the wall and a trial's ramp):
+// InputError naming dt otherwise. Callers check it for every engine before the first runs; the analytic model, whose
+// dt is its sampling only, passes.
+void require_threshold_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                             const ThresholdOptions& options = {});
+void require_free_vibration_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+                                  const FreeVibrationOptions& options = {});
+
 // Comparison with the analytic model ---------------------------------------------------------------------------
 
 struct MetricComparison {
@@ -200,8 +209,11 @@ FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const
                                                      const EngineSettings& reference);
 
 // The engine against AnalyticEngine at options.reference (exact kinematics unless it says otherwise), both measured
-// by the code above, both free vibrations run for the same time.
+// by the code above, both free vibrations run for the same time. require_comparison_steps first.
 EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
                                        double r, const ComparisonOptions& options = {});
+// require_threshold_steps and require_free_vibration_steps for compare_with_analytic's runs.
+void require_comparison_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene, double r,
+                              const ComparisonOptions& options = {});
 
 }  // namespace vssw::compare

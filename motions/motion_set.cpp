@@ -48,6 +48,9 @@ std::vector<MotionRow> write_motion_set(const MotionSetRequest& request, const s
         throw InputError(fmt::format("--count must be an integer from 1 to {}, got {}", kMaxMotions, request.count));
     check_draw_settings(request.draws);
     check_settings(request.simulation);
+    // The record's length and the filter's cost, for the median motion, before anything is written (each drawn motion
+    // is checked again as it is made).
+    (void)record_samples(median_parameters(request.draws), request.simulation, "the median motion");
     const study::FolderLock lock = study::check_out_folder(request.out, study::OutKind::motions);
     study::StagedFolder staged(request.out, study::OutKind::motions);
     staged.create();

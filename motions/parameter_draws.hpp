@@ -18,6 +18,7 @@
 // has it) is drawn again from the same stream.
 #include <array>
 #include <optional>
+#include <string>
 
 #include "motions/random_stream.hpp"
 #include "motions/stochastic.hpp"
@@ -42,7 +43,18 @@ struct DrawSettings {
     double scatter = 1.0;
 };
 
-// InputError naming the value when a median lies outside its distribution's support, a scenario outside the
+// The medians the model can honour, both ends included: a median's v_j = Phi^-1(F_j(median)) is held within 8
+// standard deviations like every draw, and above 6 it no longer comes back from F_j to 1e-8 (rounding near 1), so
+// the range is F_j's quantiles from Phi(-8) to Phi(6) (also within the support, and damping at most 0.95, where the
+// draws are held), rounded inward to 6 significant digits: a median inside is the parameter at --scatter 0 to 1e-6.
+struct MedianRange {
+    double lo, hi;
+};
+MedianRange median_range(Parameter j);
+// "from LO to HI", as the option's help and its refusal state it.
+std::string median_range_text(Parameter j);
+
+// InputError naming the option, value and range when a median lies outside median_range, a scenario outside the
 // ranges above, or the scatter outside [0, 2].
 void check_draw_settings(const DrawSettings& settings);
 // The median of each parameter under `settings` (ModelParameters' units).

@@ -53,23 +53,31 @@ void check_settings(const SimulationSettings& s) {
 
 namespace {
 
+// The samples an impulse's response is followed for: until exp(-zeta w s) < exp(-kImpulseDecay).
+double impulse_span(double damping, double w, double dt) { return std::ceil(kImpulseDecay / (damping * w * dt)); }
+std::size_t impulse_end(std::size_t i, std::size_t n, double span) {
+    return span >= static_cast<double>(n - i) ? n : i + static_cast<std::size_t>(span);
+}
+// w_f(t) in rad/s, held within [kMinFilterHz, max_filter_hz(dt)].
+double filter_w(const ModelParameters& p, double t, double dt) {
+    return 2.0 * M_PI * std::clamp(p.mid_frequency_hz + p.slope_hz_per_s * (t - p.t_mid_s), kMinFilterHz,
+                                   max_filter_hz(dt));
+}
+
 // Sum_i h(t - t_i; w_f(t_i)) u_i / sqrt(sum_i h^2), the unit-variance filtered noise at every sample. Each impulse's
 // response is a damped sine sampled at steps dt: the complex number exp((-zeta w + i w_d) m dt), advanced by one
 // multiplication a step, gives it without a sine or exponential per sample.
 std::vector<double> filtered_noise(const ModelParameters& p, double dt, std::size_t n, RandomStream& random) {
     std::vector<double> num(n, 0.0), den(n, 0.0);
     const double root = std::sqrt(1.0 - p.damping * p.damping);
-    const double top_hz = max_filter_hz(dt);
     for (std::size_t i = 0; i < n; ++i) {
         const double u = random.normal();
         const double t = static_cast<double>(i) * dt;
-        const double f = std::clamp(p.mid_frequency_hz + p.slope_hz_per_s * (t - p.t_mid_s), kMinFilterHz, top_hz);
-        const double w = 2.0 * M_PI * f;
+        const double w = filter_w(p, t, dt);
         const double gain = w / root;
         const double decay = std::exp(-p.damping * w * dt);
         const double step_re = decay * std::cos(w * root * dt), step_im = decay * std::sin(w * root * dt);
-        const double span = std::ceil(kImpulseDecay / (p.damping * w * dt));
-        const std::size_t end = span >= static_cast<double>(n - i) ? n : i + static_cast<std::size_t>(span);
+        const std::size_t end = impulse_end(i, n, impulse_span(p.damping, w, dt));
         double re = 1.0, im = 0.0;  // exp((-zeta w + i w_d) (k - i) dt), from k = i
         for (std::size_t k = i + 1; k < end; ++k) {
             const double next_re = re * step_re - im * step_im;
@@ -104,6 +112,41 @@ std::vector<double> high_pass(const std::vector<double>& x, double dt, double co
 }
 
 }  // namespace
+
+std::size_t record_samples(const ModelParameters& p, const SimulationSettings& s, const std::string& what) {
+    const std::optional<Modulation> q = modulation_for(p.arias_m_s, p.d5_95_s, p.t_mid_s);
+    if (!q) return 0;  // simulate names the parameters no modulation has
+    const double duration = s.duration ? *s.duration : default_duration(*q, s.corner_hz);
+    const double samples = duration / s.dt;
+    if (!(samples <= kMaxSamples)) {
+        const std::string length =
+            s.duration ? fmt::format("--duration {:g} s", *s.duration)
+                       : fmt::format("the default length {:.4g} s ({}'s modulation to 99.9 % of its energy, then 12/w_c "
+                                     "for --corner {:g} Hz)",
+                                     duration, what, s.corner_hz);
+        throw InputError(fmt::format("{} / --dt {:g} s is {:.4g} samples, more than the {:g} allowed: give a larger "
+                                     "--dt{}",
+                                     length, s.dt, samples, kMaxSamples, s.duration ? " or a shorter --duration"
+                                                                                    : ", a larger --corner or --duration"));
+    }
+    const std::size_t n = static_cast<std::size_t>(std::floor(samples)) + 1;
+    // The filter's cost: each sample's impulse response followed for its span (filtered_noise), summed.
+    double steps = 0.0;
+    double longest = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double span = impulse_span(p.damping, filter_w(p, static_cast<double>(i) * s.dt, s.dt), s.dt);
+        steps += static_cast<double>(impulse_end(i, n, span) - i);
+        longest = std::max(longest, span);
+    }
+    if (steps > kMaxFilterSteps)
+        throw InputError(fmt::format("{} would take {:.3g} filter steps ({} samples, each impulse followed for up to "
+                                     "{:.3g} samples at damping {:g}), more than the {:g} allowed (about {:.0f} s of "
+                                     "CPU): give a shorter --duration, a larger --dt, or a larger --damping or "
+                                     "--mid-frequency",
+                                     what, steps, n, std::min(longest, static_cast<double>(n)), p.damping,
+                                     kMaxFilterSteps, kMaxFilterSteps / kFilterStepsPerSecond));
+    return n;
+}
 
 double Modulation::operator()(double t) const {
     if (!(t > 0.0)) return 0.0;
@@ -152,10 +195,7 @@ std::vector<double> simulate(const ModelParameters& p, const SimulationSettings&
         throw InputError(fmt::format("D5-95 = {:g} s and t_mid = {:g} s: the gamma modulation needs D5-95 below "
                                      "{:.3g} t_mid (alpha2 > 1)",
                                      p.d5_95_s, p.t_mid_s, max_duration_ratio()));
-    const double duration = settings.duration ? *settings.duration : default_duration(*q, settings.corner_hz);
-    require(duration / settings.dt <= kMaxSamples, "the record's samples (duration / dt)",
-            fmt::format("at most {:g}", kMaxSamples), duration / settings.dt);
-    const std::size_t n = static_cast<std::size_t>(std::floor(duration / settings.dt)) + 1;
+    const std::size_t n = record_samples(p, settings, "a motion");
     std::vector<double> x = filtered_noise(p, settings.dt, n, random);
     for (std::size_t i = 0; i < n; ++i) x[i] *= (*q)(static_cast<double>(i) * settings.dt);
     return high_pass(x, settings.dt, settings.corner_hz);

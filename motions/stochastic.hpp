@@ -12,7 +12,9 @@
 // then the response u'' of a critically damped oscillator u'' + 2 w_c u' + w_c^2 u = x(t) (corner f_c = w_c / 2 pi):
 // a high-pass filter whose output integrates to velocity u'(t) and displacement u(t), both back to ~0 once the
 // oscillator has come to rest after the shaking.
+#include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "motions/random_stream.hpp"
@@ -68,6 +70,18 @@ constexpr double kImpulseDecay = 25.0;
 // The record length when --duration is not given: the time at 99.9 % of integral q^2, then 12 / w_c for the
 // high-pass oscillator to come to rest (its free motion decays as (1 + w_c t) exp(-w_c t): below 1e-4 by then).
 double default_duration(const Modulation& q, double corner_hz);
+
+// The filter's cost bound: each sample's impulse response is followed for 25 / (zeta w dt) samples, so a long record
+// at low damping and frequency costs samples x span steps, quadratic in its length (--damping 0.021
+// --mid-frequency 0.31 --duration 500 took 16 s; at --duration 50000 it would take hours). Measured about 3e8 steps
+// a second (0.98 s for 3.1e8 steps, the 125 s record of that case); the bound is some 100 s of CPU a motion, 20 times
+// the cost of that 500 s record.
+constexpr double kFilterStepsPerSecond = 3e8;
+constexpr double kMaxFilterSteps = 3e10;
+// The samples of the motion with parameters p: InputError naming the options (--duration or the default length with
+// --corner, --dt) past 1e7 samples, or (--duration, --dt, --damping, --mid-frequency) past kMaxFilterSteps; `what`
+// names the motion ("motion 3", "the median motion"). 0 when no modulation has p's D5-95 and t_mid.
+std::size_t record_samples(const ModelParameters& p, const SimulationSettings& settings, const std::string& what);
 
 // One motion: accelerations [m/s^2] at t_i = i dt, i = 0 .. floor(duration / dt). Consumes one standard normal per
 // sample from `random`. InputError when the parameters or settings are out of range.

@@ -79,6 +79,9 @@ struct SettingDescription {
     // margin of 1e308 aborted the process). Unbounded by default; dt and iterations are checked on their own.
     double lo = -std::numeric_limits<double>::infinity();
     double hi = std::numeric_limits<double>::infinity();
+    // A setting for the single block only: any value but its default is refused for a VSSW, with the other settings
+    // before anything runs (require_settings_fit_wall in settings_reader.hpp).
+    bool parapet_only = false;
 };
 
 // "[0, 1]", "[1e-06, 1]", "any" for an unbounded one: a range's ends (--list-settings prints the unit beside them).

@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "multibody/run_budget.hpp"
+#include "multibody/settings_reader.hpp"
+#include "multibody/step_resolution.hpp"
 #include "multibody/worker_process.hpp"
 
 namespace vssw::multibody {
@@ -69,7 +71,10 @@ public:
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                         const EngineSettings& settings) const override {
         // A bad setting comes back from the child as the InputError the adapter throws (callers check settings before
-        // they run anything: check_settings above).
+        // they run anything: check_settings above). A step the run cannot use is refused here, in this process, before
+        // a budget is made of its step count (MuJoCo at dt 1e-310 once failed on "a budget of inf s").
+        require_step_resolves(display_name(), scene, excitation, settings.dt, !dt_is_a_reporting_interval());
+        require_settings_fit_wall(display_name(), settings, setting_descriptions(), scene);
         WorkerLimits limits;
         limits.cpu_seconds = RunBudget::seconds(excitation.t_end, settings.dt);
         limits.wall_seconds = kWallSecondsPerBudgetSecond * limits.cpu_seconds;

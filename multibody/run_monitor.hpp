@@ -19,6 +19,7 @@
 
 #include "multibody/engine.hpp"
 #include "multibody/settings_reader.hpp"
+#include "multibody/step_resolution.hpp"  // kMaxStepsPerRun, require_step_resolves
 
 namespace vssw::multibody {
 
@@ -43,11 +44,6 @@ struct BaseCorners {
     double right_dx, right_y, left_dx, left_y;
 };
 
-// Steps (or reports) one engine run may take: a step so small that a run would take more is refused as bad input, not
-// left to run for hours (ODE costs 2.3 ms per simulated second at its 1 ms step, docs/measurements/speed.md: about 2 us
-// a step, so 1e8 steps are minutes; --dt 1e-9 asked for 3e9 per threshold trial).
-constexpr double kMaxStepsPerRun = 1e8;
-
 // A wall at rest stays at rest while |a_h| is below its rest threshold (Eq. 12 / 17: no rocking solution leaves
 // rest). Half of the analytic model's threshold, so that an engine whose threshold is off by up to half (every
 // engine's target is 0.5 %) is held to the same: shaking below it cannot lift that engine's wall either.
@@ -64,8 +60,7 @@ class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
 
-    // InputError when ex.t_end / dt exceeds kMaxStepsPerRun, or dt cannot resolve the run (step_resolution.hpp),
-    // naming dt. dt_steps_the_motion false: dt is a reporting interval (the integrator picks its own steps).
+    // InputError when dt is not usable for the run (require_step_resolves: too many steps, or too coarse), naming dt. dt_steps_the_motion false: dt is a reporting interval (the integrator picks its own steps).
     RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, FailureLimits limits,
                bool dt_steps_the_motion = true);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <utility>
 
 #include <fmt/format.h>
@@ -28,6 +29,18 @@ SettingsReader::SettingsReader(std::string engine, const EngineSettings& setting
                                     [&](const SettingDescription& x) { return x.name == name; });
         require(value >= d->lo && value <= d->hi, label(name),
                 fmt::format("within its documented range {} (vssw compare --list-settings)", range_text(*d)), value);
+    }
+}
+
+void require_settings_fit_wall(const std::string& engine, const EngineSettings& settings,
+                               const std::vector<SettingDescription>& described, const WallScene& scene) {
+    if (!scene.vssw) return;
+    for (const SettingDescription& d : described) {
+        const auto given = settings.knobs.find(d.name);
+        if (!d.parapet_only || given == settings.knobs.end()) continue;
+        if (given->second == std::strtod(d.default_value.c_str(), nullptr)) continue;
+        throw InputError(fmt::format("{} setting {} = {:g} is for a parapet wall only: give {} (its default) for a VSSW",
+                                     engine, d.name, given->second, d.default_value));
     }
 }
 
@@ -61,9 +74,12 @@ double SettingsReader::non_negative(const std::string& name, double fallback) co
 }
 
 int SettingsReader::choice(const std::string& name, int fallback, int count) const {
+    return whole_number(name, fallback, count - 1);
+}
+
+int SettingsReader::whole_number(const std::string& name, int fallback, int max) const {
     const double v = value(name, fallback);
-    require(v >= 0.0 && v < count && v == std::floor(v), label(name), fmt::format("a whole number in [0, {}]", count - 1),
-            v);
+    require(v >= 0.0 && v <= max && v == std::floor(v), label(name), fmt::format("a whole number in [0, {}]", max), v);
     return static_cast<int>(v);
 }
 

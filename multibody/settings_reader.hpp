@@ -9,6 +9,12 @@
 
 namespace vssw::multibody {
 
+// InputError naming the engine, the setting, its value and the wall when a setting `described` marks parapet_only is
+// given a value other than its default for a VSSW. Every entry point checks it with the other settings, once it knows
+// the wall, before anything runs (compare, study, report suites; IsolatedEngine again for any other caller).
+void require_settings_fit_wall(const std::string& engine, const EngineSettings& settings,
+                               const std::vector<SettingDescription>& described, const WallScene& scene);
+
 class SettingsReader {
 public:
     // Throws InputError on a name that is not one of the described knobs, or a NaN value. `described` is the
@@ -19,6 +25,7 @@ public:
     double positive(const std::string& name, double fallback) const;      // finite and > 0
     double non_negative(const std::string& name, double fallback) const;  // finite and >= 0
     int choice(const std::string& name, int fallback, int count) const;   // a whole number in [0, count)
+    int whole_number(const std::string& name, int fallback, int max) const;  // a whole number in [0, max]
     bool flag(const std::string& name) const;                             // 0 (the default) or 1
 
 private:

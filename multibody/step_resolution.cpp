@@ -57,6 +57,10 @@ double wall_time_scale(const WallScene& scene) { return scene.alpha() / referenc
 
 void require_step_resolves(const std::string& engine, const WallScene& scene, const Excitation& ex, double dt,
                            bool dt_steps_the_motion) {
+    if (!(ex.t_end / dt <= kMaxStepsPerRun))
+        throw InputError(fmt::format("{}: dt = {:g} s would take {:.3g} steps for this run's {:g} s, more than the {:g} "
+                                     "allowed: give a larger step",
+                                     engine, dt, ex.t_end / dt, ex.t_end, kMaxStepsPerRun));
     const double wall = wall_time_scale(scene);
     const double motion = dt_steps_the_motion ? excitation_time_scale(ex.horizontal) : kInf;
     const double wall_limit = wall / kStepsPerWallTimeScale, motion_limit = motion / kStepsPerExcitationStretch;

@@ -19,6 +19,11 @@
 
 namespace vssw::multibody {
 
+// Steps (or reports) one engine run may take: a step so small that a run would take more is refused as bad input, not
+// left to run for hours (ODE costs 2.3 ms per simulated second at its 1 ms step, docs/measurements/speed.md: about 2 us
+// a step, so 1e8 steps are minutes; --dt 1e-9 asked for 3e9 per threshold trial).
+constexpr double kMaxStepsPerRun = 1e8;
+
 constexpr double kStepsPerWallTimeScale = 10.0;
 constexpr double kStepsPerExcitationStretch = 2.0;
 
@@ -27,8 +32,10 @@ double excitation_time_scale(const GroundMotion& motion);
 // alpha / theta1'_r of the scene [s].
 double wall_time_scale(const WallScene& scene);
 
-// Throws InputError naming the step, the limit and what sets it when dt is longer than either limit allows (the
-// ground motion's only when `dt_steps_the_motion`).
+// The one check of an engine step every entry point makes before anything runs (compare, study, report suites,
+// Python; RunMonitor and IsolatedEngine again for a caller that did not): InputError naming dt when the run of
+// ex.t_end seconds would take more than kMaxStepsPerRun steps, or naming the step, the limit and what sets it when dt
+// is longer than either limit above allows (the ground motion's only when `dt_steps_the_motion`).
 void require_step_resolves(const std::string& engine, const WallScene& scene, const Excitation& ex, double dt,
                            bool dt_steps_the_motion = true);
 

@@ -344,7 +344,19 @@ CaseSpec Grid::make_case(int id) const {
             throw refused(fmt::format("theta0 {} alpha is at or beyond the wall's collapse angle ({:.4g} alpha)",
                                       c.theta0, collapse / c.scene.alpha()));
     }
-    set_excitation(c, l);
+    try {
+        set_excitation(c, l);
+    } catch (const InputError& e) {
+        throw refused(e.what());
+    }
+    if (part.kind == ExcitationKind::scale_to_collapse && c.max_pga_g > 0.0) {
+        // The search steps up from lift-off: a max_pga at or below the wall's rest threshold leaves nothing to search.
+        const double threshold_g = analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0) / kStandardGravity;
+        if (!(c.max_pga_g > threshold_g))
+            throw refused(fmt::format("max_pga {:g} g is not above the wall's rest threshold, {:.4g} g: no scale up to "
+                                      "it can lift the wall, let alone overturn it",
+                                      c.max_pga_g, threshold_g));
+    }
     if (part.kind == ExcitationKind::pulse) {
         // Built here, as every case is built before anything runs: a pulse the library refuses (a harmonic of more
         // than 1e6 cycles, as `vssw history` refuses it) is bad input, not a study whose every row fails.
@@ -467,6 +479,12 @@ void describe_wall(CaseSpec& c) {
 void scale_record(CaseSpec& c, const GroundMotion& record, std::optional<double> pga_g, double scale) {
     c.scale = pga_g ? *pga_g * kStandardGravity / record.pga() : scale;
     c.pga_g = c.scale * record.pga() / kStandardGravity;
+    // The record's largest sample times the factor: finite exactly when every scaled sample is (GroundMotion::scaled,
+    // which `vssw history --pga` and `--scale` call before anything runs).
+    if (!std::isfinite(c.scale) || !std::isfinite(c.scale * record.pga()))
+        throw InputError(fmt::format("{} {:g}: scaling the record '{}' (PGA {:.4g} g) to it overflows a double",
+                                     pga_g ? "pga" : "scale", pga_g ? *pga_g : scale, c.file,
+                                     record.pga() / kStandardGravity));
 }
 
 void require_shakes(const GroundMotion& record, const std::string& file) {

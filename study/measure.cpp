@@ -16,6 +16,7 @@
 #include "compare/experiments.hpp"
 #include "compare/case_runner.hpp"
 #include "multibody/scene_geometry.hpp"
+#include "multibody/settings_reader.hpp"
 #include "multibody/step_resolution.hpp"
 #include "study/metric_catalog.hpp"
 
@@ -240,11 +241,21 @@ std::size_t threshold_metric(const Grid& grid) {
 
 void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine) {
     if (engine.name() == "analytic") return;  // its dt is the sampling only, and it has no wall rule to meet
-    multibody::Excitation ex;
-    ex.horizontal = case_motion(grid, c, c.scale);
-    ex.t_end = ex.horizontal.duration() + c.response_tail;
-    multibody::require_step_resolves(engine.display_name(), c.scene, ex, run.settings.dt,
-                                     !engine.dt_is_a_reporting_interval());
+    multibody::require_settings_fit_wall(engine.display_name(), run.settings, engine.setting_descriptions(), c.scene);
+    const ExcitationKind kind = grid.spec().parts[c.part].kind;
+    if (kind == ExcitationKind::pulse || kind == ExcitationKind::record || kind == ExcitationKind::scale_to_collapse) {
+        multibody::Excitation ex;
+        ex.horizontal = case_motion(grid, c, c.scale);
+        ex.t_end = ex.horizontal.duration() + c.response_tail;
+        multibody::require_step_resolves(engine.display_name(), c.scene, ex, run.settings.dt,
+                                         !engine.dt_is_a_reporting_interval());
+    }
+    if (kind == ExcitationKind::free) {
+        compare::FreeVibrationOptions free;  // as measure() runs it
+        free.r = c.theta0;
+        compare::require_free_vibration_steps(engine, run.settings, c.scene, free);
+    }
+    if (measures_threshold(grid, c)) compare::require_threshold_steps(engine, run.settings, c.scene);
 }
 
 void require_runs_resolve(const Grid& grid, const std::vector<int>& case_ids) {
@@ -254,11 +265,7 @@ void require_runs_resolve(const Grid& grid, const std::vector<int>& case_ids) {
         const CaseSpec c = grid.make_case(id);
         for (std::size_t r = 0; r < grid.runs().size(); ++r) {
             const RunSpec& run = grid.runs()[r];
-            if (!grid.run_applies(run, c) || run.engine == "analytic") continue;
-            const ExcitationKind kind = grid.spec().parts[c.part].kind;
-            if (kind != ExcitationKind::pulse && kind != ExcitationKind::record &&
-                kind != ExcitationKind::scale_to_collapse)
-                continue;  // free vibration and thresholds: the engine's own check names the step when it runs
+            if (!grid.run_applies(run, c)) continue;
             try {
                 require_run_resolves(grid, c, run, *engines[r]);
             } catch (const InputError& e) {

@@ -1113,3 +1113,37 @@ TEST(CliWords, AnOptionWithoutItsValueDoesNotTakeTheNextOption) {
     EXPECT_EQ(r.err.find("Could not convert"), std::string::npos) << r.err;
     expect_bad_input(with_fig6({"history", "--record", "--json"}), {"--record needs a value"});
 }
+
+namespace {
+
+const std::vector<std::string> kSinePulse = {"--pulse", "sine", "--amplitude", "0.5", "--pulse-period", "0.5"};
+
+}  // namespace
+
+// Issue 38: an engine setting no run can honour is refused by `vssw compare` before any engine runs, the same in free
+// vibration and under a ground motion: a step of more than 1e8 steps (MuJoCo at 1e-310 by its step count, never "a
+// budget of inf s"), a setting for a parapet only on a VSSW. And --run-budget '' is an empty value, not 0.
+TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
+    struct Case {
+        const char* engine;
+        std::vector<std::string> options;
+        std::vector<std::string> named;
+    };
+    const std::vector<Case> cases = {
+        {"ode", {"--dt", "1e-9"}, {"dt = 1e-09", "more than the 1e+08 allowed"}},
+        {"mujoco", {"--dt", "1e-310"}, {"dt = 1e-310", "more than the 1e+08 allowed"}},
+        {"box2d", {"--set", "skin=0.05"}, {"Box2D setting skin = 0.05", "parapet wall only"}},
+    };
+    for (const Case& c : cases) {
+        if (!vssw::testing::engine_available(c.engine)) continue;
+        for (const bool pulse : {false, true}) {
+            std::vector<std::string> args = kCompareFig6 + std::vector<std::string>{"--engine", c.engine};
+            args = args + c.options;
+            if (pulse) args = args + kSinePulse;
+            const CliResult r = expect_bad_input(args, c.named);
+            EXPECT_EQ(r.err.find("budget"), std::string::npos) << r.err;
+        }
+    }
+    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--run-budget", ""},
+                     {"--run-budget must be a number, got an empty value"});
+}

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -352,6 +353,25 @@ TEST(MotionsCli, BadInputsAreOneLineAndExit2) {
     expect_bad_input({"motions", "generate", "--count", "2", "--seed", "1", "--out", out, "--d5-95", "60"}, "--d5-95");
     expect_bad_input({"motions", "generate", "--count", "2", "--seed", "1", "--out", out, "--magnitude", "7"},
                      "--distance");
+    // Issue 38: a value the model cannot honour is refused naming the option given, never clamped or ignored.
+    const std::vector<std::pair<std::vector<std::string>, std::string>> refused = {
+        {{"--arias", "1e6"}, "--arias must be from"},          // held at the 8-sigma quantile, 7228 m/s
+        {{"--arias", "1e-9"}, "--arias must be from"},
+        {{"--mid-frequency", "100"}, "--mid-frequency must be from"},  // held at 64 Hz
+        {{"--d5-95", "45"}, "--d5-95 must be from"},
+        {{"--damping", "0.02"}, "--damping must be from"},
+        {{"--mechanism", "reverse"}, "--mechanism reverse names a scenario"},  // ignored without one
+        {{"--dt", "1e-310"}, "--dt 1e-310"},
+        {{"--corner", "1e-300"}, "--corner 1e-300"},
+        {{"--duration", "50000", "--damping", "0.021", "--mid-frequency", "0.31", "--frequency-slope", "0",
+          "--scatter", "0"},
+         "filter steps"},
+    };
+    for (const auto& [options, named] : refused) {
+        std::vector<std::string> args = {"motions", "generate", "--count", "2", "--seed", "1", "--out", out};
+        args.insert(args.end(), options.begin(), options.end());
+        expect_bad_input(args, named);
+    }
     EXPECT_FALSE(std::filesystem::exists(out));
     // A folder inside a file cannot be made.
     std::ofstream(dir / "plain") << "x";

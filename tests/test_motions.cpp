@@ -1,5 +1,6 @@
 // The ground motions of motions/: the measures against closed forms, the generator's statistics against the model's
 // targets, the parameter draws against their distributions' moments, reproducibility and the AT2 round trip.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -185,6 +186,75 @@ TEST(ParameterDraws, NoScatterGivesTheMedians) {
     EXPECT_NEAR(p.damping, 0.25, kInverse);
     s.medians[kD595] = 50.0;
     EXPECT_THROW(check_draw_settings(s), vssw::InputError);
+}
+
+// Every median option has a range (median_range): a median just inside it is the parameter at --scatter 0, one just
+// outside is refused naming the option and the range. The ends are rounded inward to 6 significant digits, so the
+// parameter at an end is that end to 1e-6 (and to the inverse's 1e-9 inside).
+TEST(ParameterDraws, EveryMedianInsideItsRangeIsHonouredAndOutsideRefused) {
+    constexpr double kAtAnEnd = 2e-6;   // the end rounded inward at 6 digits, plus the two inverses
+    constexpr double kOutside = 1e-5;   // a step past an end, relative, well beyond its rounding
+    const char* const options[kParameterCount] = {"--arias", "--d5-95", "--t-mid", "--mid-frequency",
+                                                  "--frequency-slope", "--damping"};
+    const double medians[kParameterCount] = {0.3, 12.0, 6.0, 4.0, -0.1, 0.25};
+    for (int j = 0; j < kParameterCount; ++j) {
+        const Parameter pj = static_cast<Parameter>(j);
+        const MedianRange r = median_range(pj);
+        ASSERT_LT(r.lo, r.hi) << options[j];
+        for (const double end : {r.lo, r.hi}) {
+            DrawSettings s;
+            s.scatter = 0.0;
+            for (int k = 0; k < kParameterCount; ++k) s.medians[k] = medians[k];
+            s.medians[j] = end;
+            EXPECT_NO_THROW(check_draw_settings(s)) << options[j] << " " << end;
+            const ModelParameters m = median_parameters(s);
+            const double got[kParameterCount] = {m.arias_m_s, m.d5_95_s, m.t_mid_s, m.mid_frequency_hz,
+                                                 m.slope_hz_per_s, m.damping};
+            EXPECT_NEAR(got[j], end, kAtAnEnd * std::abs(end)) << options[j];
+            const double step = kOutside * std::max(std::abs(end), 1e-3);
+            s.medians[j] = end == r.lo ? end - step : end + step;
+            try {
+                check_draw_settings(s);
+                ADD_FAILURE() << options[j] << " " << *s.medians[j] << " was accepted";
+            } catch (const vssw::InputError& e) {
+                const std::string what = e.what();
+                EXPECT_NE(what.find(options[j]), std::string::npos) << what;
+                EXPECT_NE(what.find(median_range_text(pj)), std::string::npos) << what;
+            }
+        }
+    }
+    // The clamps the sweep found (issue 38): Arias 1e6 and f_mid 100 Hz were held at the 8-sigma quantile silently.
+    EXPECT_LT(median_range(kArias).hi, 1e4);
+    EXPECT_LT(median_range(kMidFrequency).hi, 100.0);
+}
+
+// A motion whose filter would take more than kMaxFilterSteps (a long record at low damping and frequency: samples x
+// impulse span) is refused before anything is made, naming the options; the same at a short duration is made.
+TEST(Stochastic, FilterCostIsBoundedUpFront) {
+    ModelParameters p{0.3, 12.0, 6.0, 0.31, 0.0, 0.021};
+    SimulationSettings s;
+    s.duration = 50000.0;
+    try {
+        (void)record_samples(p, s, "the median motion");
+        ADD_FAILURE() << "a 50000 s record at damping 0.021 was accepted";
+    } catch (const vssw::InputError& e) {
+        const std::string what = e.what();
+        for (const char* option : {"--duration", "--dt", "--damping", "--mid-frequency"})
+            EXPECT_NE(what.find(option), std::string::npos) << what;
+    }
+    s.duration = 60.0;
+    EXPECT_EQ(record_samples(p, s, "the median motion"), 12001u);
+    // The record's length: a --dt so small that the default length is past 1e7 samples names --dt and --corner.
+    s.duration.reset();
+    s.dt = 1e-9;
+    try {
+        (void)record_samples(p, s, "the median motion");
+        ADD_FAILURE() << "--dt 1e-9 was accepted";
+    } catch (const vssw::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("--dt 1e-09"), std::string::npos) << what;
+        EXPECT_NE(what.find("--corner"), std::string::npos) << what;
+    }
 }
 
 TEST(Reproducibility, SameSeedSameMotionWhateverTheCount) {

@@ -454,6 +454,52 @@ dt = [0.001, 1000.0]
     EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
+// Every class of value a study's runs cannot honour is refused while the file is read, exit 2 naming the key (or
+// engine and setting) and value, before the folder exists (issue 38): a step of more than 1e8 steps in a free
+// vibration, a threshold and under a pulse; a setting for a parapet only on a VSSW; a PGA, scale or ensemble level
+// whose scale factor overflows; a collapse search's max_pga below the wall's threshold; a fractional iteration count.
+TEST(StudyCli, EveryValueARunCannotHonourIsRefusedBeforeTheFolder) {
+    const std::string wall = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n";
+    const std::string record = std::string(VSSW_DATA_DIR) + "/records/northridge1994-rinaldi-228.at2";
+    const std::string free = "[excitation]\nkind = \"free\"\ntheta0 = 0.5\n";
+    const std::string pulse = "[excitation]\nkind = \"pulse\"\nshape = \"sine\"\namplitude = 0.5\npulse_period = 0.5\n";
+    const std::string on_record = "[excitation]\nkind = \"record\"\nfile = \"" + record + "\"\n";
+    const std::string other = std::string(VSSW_DATA_DIR) + "/records/northridge1994-pacoimadam-ew.at2";
+    const std::string ensemble = "[excitation]\nkind = \"ensemble\"\nfiles = [\"" + record + "\", \"" + other +
+                                 "\"]\nintensity = \"pga\"\n";
+    struct Case {
+        const char* engine;  // needed in this build ("" for none)
+        std::string body;    // after metrics and engines
+        std::vector<std::string> expected;
+    };
+    const std::vector<Case> cases = {
+        {"ode", wall + free + "[settings.ode]\ndt = 1e-9\n", {"dt = 1e-09", "more than the 1e+08 allowed"}},
+        {"ode", wall + pulse + "[settings.ode]\ndt = 1e-9\n", {"dt = 1e-09", "more than the 1e+08 allowed"}},
+        {"mujoco", wall + free + "[settings.mujoco]\ndt = 1e-310\n", {"steps", "more than the 1e+08 allowed"}},
+        {"mujoco", wall + free + "[settings.mujoco]\nnoslip_iterations = 2.5\n", {"noslip_iterations", "whole number"}},
+        {"box2d", wall + pulse + "[settings.box2d]\nskin = 0.05\n", {"Box2D setting skin = 0.05", "parapet wall only"}},
+        {"", wall + on_record + "pga = [1e308]\n", {"pga 1e+308", "overflows"}},
+        {"", wall + on_record + "scale = [1e308]\n", {"scale 1e+308", "overflows"}},
+        {"", wall + ensemble + "levels = [1e308]\n", {"pga 1e+308", "overflows"}},
+        {"", wall + ensemble + "collapse = true\nmax_pga = 0.1\n", {"max_pga 0.1 g is not above", "threshold"}},
+        {"", wall + ensemble + "collapse = true\nmax_pga = 1e-310\n", {"max_pga 1e-310 g is not above"}},
+    };
+    for (const Case& c : cases) {
+        if (*c.engine && !vssw::testing::engine_available(c.engine)) continue;
+        const TempDir dir;
+        const std::string engines = *c.engine ? std::string("engines = [\"analytic\", \"") + c.engine + "\"]\n" : "";
+        const std::string metrics = c.body.find("ensemble") != std::string::npos && c.body.find("collapse") != std::string::npos
+                                        ? "metrics = [\"collapse_pga\"]\n"
+                                        : c.body.find("free") != std::string::npos ? "metrics = [\"period\"]\n"
+                                                                                  : "metrics = [\"peak_rotation\"]\n";
+        const std::string file = write_file(dir / "s.toml", metrics + engines + c.body).string();
+        const auto r = run_cli({"study", file, "--out", (dir / "out").string(), "--no-plots"});
+        EXPECT_EQ(r.code, 2) << c.body << r.err;
+        for (const std::string& e : c.expected) EXPECT_NE(r.err.find(e), std::string::npos) << e << " in: " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out")) << c.body;
+    }
+}
+
 }  // namespace
 
 

@@ -24,6 +24,8 @@
 #include "compare/experiments.hpp"
 #include "compare/metric_catalog.hpp"
 #include "multibody/analytic_engine.hpp"
+#include "multibody/settings_reader.hpp"
+#include "multibody/step_resolution.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -365,6 +367,33 @@ void run_task(const TaskContext& x, TaskOutput& out) {
     }
 }
 
+// The task's engine settings, checked for every task before any runs: a parapet-only setting on a VSSW
+// (multibody::require_settings_fit_wall), a step that takes too many steps or is too coarse
+// (compare::require_threshold_steps and require_free_vibration_steps, multibody::require_step_resolves). InputError
+// naming the case; the settings are the ones the task runs at.
+void require_task_steps(const TaskContext& x) {
+    if (x.reference) return;
+    EngineSettings settings = case_settings(x.c, x.engine);
+    try {
+        multibody::require_settings_fit_wall(x.engine.display_name(), settings, x.engine.setting_descriptions(),
+                                             x.wall.scene);
+        switch (x.c.kind) {
+            case CaseKind::threshold: require_threshold_steps(x.engine, settings, x.wall.scene); return;
+            case CaseKind::free:
+            case CaseKind::step:
+                if (x.c.dt) settings.dt = *x.c.dt;  // as free_task runs it
+                require_free_vibration_steps(x.engine, settings, x.wall.scene, free_options(x));
+                return;
+            case CaseKind::history:
+                multibody::require_step_resolves(x.engine.display_name(), x.wall.scene, history_excitation(x),
+                                                 settings.dt, !x.engine.dt_is_a_reporting_interval());
+                return;
+        }
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("case '{}': {}", x.c.id, e.what()));
+    }
+}
+
 // Simulated seconds a task's engine runs (compare/case_runner.hpp's cost model). free_t_end: the case's free
 // vibration end (CaseReference).
 double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMotion* record, double free_t_end) {
@@ -554,6 +583,10 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     std::vector<CaseReference> references(suite.cases.size());
     const std::vector<CaseTask> tasks = plan_tasks(suite, in, engines, references);
     std::vector<TaskOutput> outputs(tasks.size());
+    for (const CaseTask& task : tasks)
+        require_task_steps({suite.cases[task.case_index], *in.case_walls[task.case_index], *engines[task.engine],
+                            task.engine == 0, in.record_of(suite.cases[task.case_index]), false,
+                            references[task.case_index]});
 
     // Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost the suite more
     // than they gain: a fork per simulation of this large process, for ODE's small share of the suite at its 1 ms step

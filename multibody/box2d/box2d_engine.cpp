@@ -99,7 +99,7 @@ std::vector<SettingDescription> setting_table() {
         {"skin", "0", "m",
          "Box2D's polygon radius on the block and the ground, parapet only (Box2D's default 0.01 rounds the corners: "
          "period +0.37 %)",
-         0.0, kMaxSkin},
+         0.0, kMaxSkin, /*parapet_only=*/true},
     });
 }
 
@@ -144,10 +144,6 @@ public:
         edge.m_radius = static_cast<float>(knobs.skin);  // 0 by default: no skin (see the top of the file)
         add_fixture(*ground_, edge, 0.0, scene.friction, kGroundBits, kBlockBits);
 
-        // A skin on the hinge's two faces would make the blocks overlap by two skins at rest (Box2D pushes that out,
-        // energy in): the setting is for the single block, where it shows what Box2D's default does to the period.
-        require(knobs.skin == 0.0 || !scene.vssw, "Box2D setting skin (m)", "0 for a VSSW (the parapet only)",
-                knobs.skin);
         const WallPose pose = pose_at(scene, theta0);
         lower_ = add_block(sizes_.h_lower, sizes_.m_lower, pose.lower, scene.friction);
         if (scene.vssw) {
@@ -281,6 +277,10 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
             settings.dt);
     require_one_description(scene);
     const Knobs knobs = read_knobs(settings);
+    // A skin on the hinge's two faces would make the blocks overlap by two skins at rest (Box2D pushes that out,
+    // energy in): the setting is for the single block (parapet_only), where it shows what Box2D's default does to
+    // the period.
+    require_settings_fit_wall("Box2D", settings, setting_table(), scene);
     Box2dScene w(scene, knobs, ex.theta0);
     const BlockSizes s = block_sizes(scene);
     const double g = scene.gravity();

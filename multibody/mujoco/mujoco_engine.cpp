@@ -99,6 +99,7 @@ struct Knobs {
 };
 
 constexpr int kDefaultIterations = 100;
+constexpr int kMaxNoslipIterations = 1000;  // noslip_iterations' range: a pass of 1000 is far past any that converges
 
 // Ranges (SettingDescription::lo/hi): solref's time constant from MuJoCo's floor (2 steps) to 1000 steps (a contact
 // of a second's time constant at 1 ms: the wall sinks); the impedances within MuJoCo's own clamp [1e-4, 0.9999]
@@ -110,7 +111,7 @@ std::vector<SettingDescription> setting_table() {
         {"tolerance", "1e-08", "", "Newton solver tolerance (relative improvement of the cost)", 1e-15, 1e-2},
         {"integrator", "0", "choice", "0 semi-implicit Euler, 1 RK4, 2 implicit (in the velocity)", 0.0, 2.0},
         {"noslip_iterations", "0", "", "iterations of MuJoCo's noslip pass (hard friction after the soft solve)", 0.0,
-         1000.0},
+         static_cast<double>(kMaxNoslipIterations)},
         {"solref_steps", "2", "", "contacts' time constant (solref) in steps; 2 is MuJoCo's floor (refsafe)", 2.0,
          1000.0},
         {"dampratio", "1", "", "contacts' damping ratio (solref's second number)", 0.1, 10.0},
@@ -126,7 +127,7 @@ Knobs read_knobs(const EngineSettings& s) {
     k.iterations = s.iterations > 0 ? s.iterations : kDefaultIterations;
     k.tolerance = r.positive("tolerance", 1e-8);
     k.integrator = r.choice("integrator", 0, kIntegratorCount);
-    k.noslip_iterations = static_cast<int>(std::lround(r.non_negative("noslip_iterations", 0.0)));
+    k.noslip_iterations = r.whole_number("noslip_iterations", 0, kMaxNoslipIterations);
     k.solref_steps = r.positive("solref_steps", 2.0);
     k.dampratio = r.positive("dampratio", 1.0);
     k.solimp_dmin = r.positive("solimp_dmin", 0.99);
