@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <thread>
 
+#include "analytic/child_fork.hpp"
 #include "io/temp_registry.hpp"
 
 namespace vssw::cli {
@@ -39,6 +40,9 @@ void watch() {
         if (n < 0 && errno == EINTR) continue;
         return;  // the pipe is gone: nothing to watch
     }
+    // The children first (engine workers, gnuplot): none outlives the program, and none that ends now is reported as a
+    // failed run by a process already ending (child_fork.hpp).
+    vssw::kill_children_before_exit();
     vssw::study::remove_registered_temps();
     const int sig = byte;
     ::signal(sig, SIG_DFL);

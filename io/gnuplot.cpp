@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/child_fork.hpp"
 #include "analytic/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/document_html.hpp"  // html_escape
@@ -30,7 +31,7 @@ constexpr int kNotFound = 127;
 // Runs `program script` in dir with stdin from /dev/null and stdout/stderr into log. The exit status; kNotFound when
 // the program could not be started; -1 when fork failed.
 int run_program(const std::string& program, const std::string& script, const fs::path& dir, const fs::path& log) {
-    const pid_t pid = fork();
+    const pid_t pid = fork_child();  // flushed, and gnuplot dies with this process (child_fork.hpp)
     if (pid < 0) return -1;
     if (pid == 0) {
         // The log first: a relative log path names a file from here, not from dir (opened after the chdir, the log
@@ -46,9 +47,8 @@ int run_program(const std::string& program, const std::string& script, const fs:
         execlp(program.c_str(), program.c_str(), script.c_str(), static_cast<char*>(nullptr));
         _exit(kNotFound);
     }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return -1;
+    const int status = wait_child(pid);
+    if (status < 0) return -1;
     if (WIFEXITED(status)) return WEXITSTATUS(status);
     return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }

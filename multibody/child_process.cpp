@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdint>
 #include <chrono>
@@ -17,6 +18,8 @@
 #include <string_view>
 
 #include <fmt/format.h>
+
+#include "analytic/child_fork.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -103,10 +106,15 @@ private:
 
 thread_local ReceiveBuffer t_received;
 
+std::atomic<bool> g_interrupting{false};
+
 }  // namespace
+
+void interrupt_children(bool on) { g_interrupting = on; }
 
 ChildResult run_in_child(const std::function<std::string()>& work, double time_limit_s, std::string_view& answer) {
     answer = {};
+    if (g_interrupting) throw RunInterrupted("interrupted: no new run is started");
     int fds[2];
     if (::pipe(fds) != 0)
         throw std::runtime_error(fmt::format("cannot make a pipe for a child process: {}", std::strerror(errno)));
@@ -115,7 +123,7 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
     ReceiveBuffer& buffer = t_received;
     buffer.reserve(1 << 16, 0);
     const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
+    const pid_t pid = fork_child();  // flushed, and the child dies with this process (child_fork.hpp)
     if (pid < 0) {
         ::close(fds[0]);
         ::close(fds[1]);
@@ -130,7 +138,7 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
     const auto deadline = start + std::chrono::duration<double>(limited ? time_limit_s : 0.0);
     std::size_t received = 0;
     std::uint64_t length = 0;  // the text's, once the header is in
-    bool killed = false;
+    bool killed = false, interrupted = false;
     for (;;) {
         const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
         if (limited && left <= 0.0) {
@@ -138,11 +146,17 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
             killed = true;
             break;
         }
+        if (g_interrupting) {
+            ::kill(pid, SIGKILL);
+            interrupted = true;
+            break;
+        }
         pollfd p{fds[0], POLLIN, 0};
-        // At most a minute at a time (the deadline is checked again at the top): a limit of days in milliseconds does
-        // not fit an int (UBSan stopped EngineSteps.AStepTooSmallForTheRunIsRefusedAtOnceNamingIt there).
-        constexpr double kLongestWaitS = 60.0;
-        const int ready = ::poll(&p, 1, limited ? static_cast<int>(std::min(left, kLongestWaitS) * 1000.0) + 1 : -1);
+        // At most kInterruptionCheckS at a time (the deadline and interruption are checked again at the top); a limit
+        // of days in milliseconds would not fit an int either (UBSan stopped
+        // EngineSteps.AStepTooSmallForTheRunIsRefusedAtOnceNamingIt there).
+        const double wait_s = limited ? std::min(left, kInterruptionCheckS) : kInterruptionCheckS;
+        const int ready = ::poll(&p, 1, static_cast<int>(wait_s * 1000.0) + 1);
         if (ready < 0 && errno == EINTR) continue;
         if (ready <= 0) continue;  // the deadline is checked at the top
         if (received == buffer.capacity()) buffer.reserve(received + 1, received);
@@ -160,9 +174,8 @@ ChildResult run_in_child(const std::function<std::string()>& work, double time_l
         }
     }
     ::close(fds[0]);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
+    const int status = wait_child(pid);
+    if (interrupted) throw RunInterrupted("interrupted: the run was stopped");
     ChildResult r;
     r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool whole = received >= kHeaderBytes && received - kHeaderBytes == length;

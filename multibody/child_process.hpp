@@ -8,6 +8,7 @@
 // lock another thread could have held at the fork (malloc and stdio are safe: glibc resets their locks in the child),
 // and it ends with _exit (no atexit handlers, static destructors or stdio flushes of the parent's copy run twice).
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -28,6 +29,20 @@ struct ChildResult {
     int exit_code = 0;
     double time_s = 0.0;  // wall time from fork to the child's end (or the kill)
 };
+
+// The command was interrupted while a child ran (Ctrl-C): the work's caller gets no answer and should stop, not record
+// a failed run. Thrown by run_in_child while interruption is on (interrupt_children), and by worker_process.hpp for
+// a worker ended by SIGINT, SIGTERM or SIGHUP (the terminal's Ctrl-C reaches the whole process group).
+class RunInterrupted : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// On: every run_in_child waiting for its child kills it (within kInterruptionCheckS) and throws RunInterrupted, and a
+// new call throws it before it forks. Off: runs go on as before. For a caller that handles the interruption itself
+// (the Python module's Ctrl-C, python/core.cpp); the program's signal handling ends the whole process instead.
+void interrupt_children(bool on);
+inline constexpr double kInterruptionCheckS = 0.1;  // how soon a waiting caller sees interrupt_children(true)
 
 // Runs `work` in a forked child; time_limit_s > 0 kills it at that limit, 0 waits as long as it runs. Safe to call
 // from several threads at once (each call forks and waits for its own child only). Throws std::runtime_error only

@@ -3,8 +3,10 @@
 #include <dlfcn.h>
 #include <link.h>
 #include <pthread.h>
+#include <sys/stat.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -14,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "multibody/plugin_file_check.hpp"
 #include "vssw_build_id.hpp"  // VSSW_BUILD_ID (the top CMakeLists.txt)
 
 // Fixed at build time (multibody/CMakeLists.txt): the build tree, its plugins folder, the installed plugins folder
@@ -96,9 +99,10 @@ std::string plugin_file(const std::string& stem) { return stem + ".so"; }
 
 std::string find_plugin(const std::string& file) {
     for (const std::string& folder : plugin_folders()) {
-        std::error_code ec;
         const fs::path candidate = fs::path(folder) / file;
-        if (fs::is_regular_file(candidate, ec)) return candidate.string();
+        // Any name there, whatever it is (a dangling symbolic link, a directory): not a reason to look further.
+        struct stat entry {};
+        if (::lstat(candidate.c_str(), &entry) == 0 || (errno != ENOENT && errno != ENOTDIR)) return candidate.string();
     }
     return "";
 }
@@ -115,6 +119,11 @@ OpenedPlugin open_plugin(const std::string& file, const char* entry, const std::
         throw InputError(fmt::format("{}: its plugin {} was not found (looked in {}; the environment variable "
                                      "VSSW_PLUGIN_PATH names more folders to look in first)",
                                      what, file, fmt::join(plugin_folders(), ", ")));
+    // Before dlopen, which would map a cut-short file's missing pages (SIGBUS on first touch, in this process).
+    if (const std::string why = plugin_file_problem(plugin.path); !why.empty())
+        throw InputError(fmt::format("{}: its plugin {} could not be loaded: {} (plugins in later folders are not "
+                                     "looked at: mend or remove it)",
+                                     what, plugin.path, why));
     // RTLD_NOW: a library the plugin needs that is missing or lacks a symbol is reported here, by name, not as a crash
     // in the middle of a run. RTLD_LOCAL: the plugin's symbols and its engine library's stay out of the global
     // namespace, so that no other plugin or library binds to them (docs/architecture.md, "Plugins").
@@ -130,6 +139,11 @@ OpenedPlugin open_plugin(const std::string& file, const char* entry, const std::
                                      plugin.path, entry));
     opened.emplace(key, plugin);
     return plugin;
+}
+
+void refuse_missing_description(const OpenedPlugin& plugin, const std::string& what, const char* entry) {
+    throw InputError(fmt::format("{}: the plugin {} is broken: its entry point {} gave no description", what,
+                                 plugin.path, entry));
 }
 
 void check_plugin_build(const OpenedPlugin& plugin, const std::string& what, std::uint32_t plugin_abi,

@@ -97,16 +97,30 @@ const KnownEngine& require_built(const std::string& name) {
     return *known;
 }
 
+// A list of engines that cannot be read (none where some are counted, one without a name or a factory) refused: the
+// loader would follow its pointers. Bounded, so that a count read from a broken description is not trusted.
+void check_engine_list(const OpenedPlugin& plugin, const std::string& what, const EnginePlugin& description) {
+    constexpr std::size_t kMostEnginesInAPlugin = 64;  // the real plugins hold one or two
+    bool readable = description.engine_count <= kMostEnginesInAPlugin &&
+                    (description.engines != nullptr || description.engine_count == 0);
+    for (std::size_t i = 0; readable && i < description.engine_count; ++i)
+        readable = description.engines[i].name != nullptr && description.engines[i].make != nullptr;
+    if (!readable)
+        throw InputError(fmt::format("{}: the plugin {} is broken: its description lists {} engines it does not give "
+                                     "(a name or a factory missing)",
+                                     what, plugin.path, description.engine_count));
+}
+
 // The plugin holding an engine, checked to be of this build (open_plugin opens each once per process). Its path in
 // `path` when asked.
 const EnginePlugin& engine_plugin(const KnownEngine& engine, std::string* path = nullptr) {
     const std::string what = fmt::format("engine '{}'", engine.name);
     const OpenedPlugin plugin = open_plugin(plugin_file_of(engine), kEnginePluginEntry, what);
-    const auto entry = reinterpret_cast<const EnginePlugin* (*)()>(plugin.entry);
-    const EnginePlugin* description = entry();
-    check_plugin_build(plugin, what, description->abi, kEnginePluginAbi, description->build_id);
+    const EnginePlugin& description = plugin_description<EnginePlugin>(plugin, what, kEnginePluginEntry);
+    check_plugin_build(plugin, what, description.abi, kEnginePluginAbi, description.build_id);
+    check_engine_list(plugin, what, description);
     if (path) *path = plugin.path;
-    return *description;
+    return description;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -70,6 +71,13 @@ std::string_view run_in_worker_process(const std::function<void(std::string&)>& 
         throw EngineFailure(fmt::format("{}: the run was stopped after {:.0f} s of wall time without an answer (its "
                                         "budget is {})",
                                         who, child.time_s, limits.budget));
+    // Ended by a signal of the interrupting kind (the terminal's Ctrl-C reaches the whole process group): the run did
+    // not fail, the command is being stopped.
+    const bool interrupted = child.end == ChildEnd::crashed &&
+                             (child.signal == SIGINT || child.signal == SIGTERM || child.signal == SIGHUP);
+    if (interrupted)
+        throw RunInterrupted(
+            fmt::format("{}: the run was interrupted by signal {} ({})", who, child.signal, ::strsignal(child.signal)));
     if (child.end != ChildEnd::completed)  // answer() catches everything: a signal or an exit of the library's own
         throw EngineFailure(fmt::format("{}: its worker process {}", who, describe_end(child)));
     const char tag = out.empty() ? '\0' : out[0];

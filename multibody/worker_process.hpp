@@ -23,7 +23,8 @@ struct WorkerLimits {
 // Runs `work` in a forked child; what it appends to its string comes back, in a buffer of the calling thread's valid
 // until its next call (child_process.hpp). Errors come back as they were thrown: EngineFailure and InputError with
 // their messages, any other exception as std::runtime_error with its message; a child that dies by a signal, exits
-// without an answer or sends a broken one is an EngineFailure saying so. `who` names the worker in
+// without an answer or sends a broken one is an EngineFailure saying so, but one ended by SIGINT, SIGTERM or SIGHUP
+// (interrupted, not failed) is a RunInterrupted (child_process.hpp), as is every run while interruption is on. `who` names the worker in
 // the message of a child that died.
 std::string_view run_in_worker_process(const std::function<void(std::string&)>& work, const std::string& who,
                                        const WorkerLimits& limits = {});

@@ -9,10 +9,14 @@
 //  - simulate(...), compare(...): one backend's trajectory, one engine against the analytic model, over the library
 //    (multibody/engine.hpp, compare/experiments.hpp), the GIL released around the runs for the same reason. The
 //    Python layer names and documents every parameter; the checks are the library's, each message naming the value.
+// The calls that release the GIL run their work through interruptible(): Ctrl-C raises KeyboardInterrupt within
+// kInterruptionCheckS, their engine runs stopped, rather than when the whole call would have returned.
 // Library errors reach Python as the package's own classes: vssw::InputError as vssw.InputError (a ValueError),
 // multibody::EngineFailure as vssw.SimulationError (a RuntimeError).
+#include <chrono>
 #include <cmath>
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -38,6 +42,7 @@
 #include "compare/metrics.hpp"
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
+#include "multibody/child_process.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/run_budget.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (apps/CMakeLists.txt)
@@ -80,6 +85,32 @@ py::tuple run(const std::vector<std::string>& args) {
     return py::make_tuple(code, text(out.str()), text(err.str()));
 }
 
+// Ctrl-C during a long call: the library's work runs on a thread of its own while this thread, the caller's, waits with
+// the GIL released and looks for Python's signals every kInterruptionCheckS. A signal whose handler raises (Ctrl-C:
+// KeyboardInterrupt) stops every engine run of the process (multibody::interrupt_children: a study ends as an
+// interrupted one, its journal resumable), waits for the work to end and raises it. Python runs signal handlers on
+// its main thread only: called from another thread, the call runs to its end as before.
+template <class Work>
+auto interruptible(Work work) -> decltype(work()) {
+    auto done = std::async(std::launch::async, std::move(work));
+    const std::chrono::duration<double> check(vssw::multibody::kInterruptionCheckS);
+    for (;;) {
+        {
+            const py::gil_scoped_release released;
+            if (done.wait_for(check) == std::future_status::ready) return done.get();
+        }
+        if (PyErr_CheckSignals() != 0) {
+            vssw::multibody::interrupt_children(true);
+            {
+                const py::gil_scoped_release released;
+                done.wait();
+            }
+            vssw::multibody::interrupt_children(false);
+            throw py::error_already_set();
+        }
+    }
+}
+
 // `progress` (None or a callable (done, total, what)) is called from the command's threads, each call holding the
 // GIL; an exception it raises is dropped (a progress bar must not end a study).
 py::tuple run_with_progress(const std::vector<std::string>& args, const py::object& progress) {
@@ -93,13 +124,11 @@ py::tuple run_with_progress(const std::vector<std::string>& args, const py::obje
             } catch (const py::error_already_set&) {
             }
         };
-    const vssw::cli::ScopedProgressHook scoped(progress.is_none() ? nullptr : &hook);
     std::ostringstream out, err;
-    int code = 0;
-    {
-        const py::gil_scoped_release released;
-        code = run_cli(args, out, err);
-    }
+    const int code = interruptible([&] {
+        const vssw::cli::ScopedProgressHook scoped(progress.is_none() ? nullptr : &hook);  // the command's thread's
+        return run_cli(args, out, err);
+    });
     return py::make_tuple(code, text(out.str()), text(err.str()));
 }
 
@@ -290,8 +319,7 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     const ScopedRunBudget budget(run_budget);
     vssw::multibody::Trajectory traj;
     if (engine->runs_concurrently()) {  // every backend make_engine() gives; one that is not keeps the GIL
-        const py::gil_scoped_release released;
-        traj = engine->simulate(scene, ex, settings);
+        traj = interruptible([&] { return engine->simulate(scene, ex, settings); });
     } else {
         traj = engine->simulate(scene, ex, settings);
     }
@@ -340,8 +368,8 @@ py::dict compare(const std::string& engine_name, const WallArgs& wall, double th
     const ScopedRunBudget budget(run_budget);
     vssw::compare::EngineComparison c;
     if (engine->runs_concurrently()) {
-        const py::gil_scoped_release released;
-        c = vssw::compare::compare_with_analytic(*engine, settings, scene, theta0, options);
+        c = interruptible(
+            [&] { return vssw::compare::compare_with_analytic(*engine, settings, scene, theta0, options); });
     } else {
         c = vssw::compare::compare_with_analytic(*engine, settings, scene, theta0, options);
     }
@@ -388,11 +416,10 @@ py::dict compare_response(const std::vector<std::string>& engine_names, const Wa
     }
     const ScopedRunBudget budget(run_budget);
     vssw::study::ResponseComparison result;
-    {
-        std::optional<py::gil_scoped_release> released;
-        if (concurrent) released.emplace();
+    if (concurrent)
+        result = interruptible([&] { return vssw::cli::compare_under_motion(chosen, motion_options, engines); });
+    else
         result = vssw::cli::compare_under_motion(chosen, motion_options, engines);
-    }
     py::list runs;
     py::object reference_run = py::none();
     for (const vssw::study::ResponseRun& r : result.runs) {

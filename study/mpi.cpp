@@ -136,10 +136,9 @@ const MpiModule& open_module() {
     const std::string what = "MPI";
     const multibody::OpenedPlugin plugin =
         multibody::open_plugin(multibody::plugin_file(kMpiModuleStem), kMpiModuleEntry, what);
-    const auto entry = reinterpret_cast<const MpiModule* (*)()>(plugin.entry);
-    const MpiModule* module = entry();
-    multibody::check_plugin_build(plugin, what, module->abi, kMpiModuleAbi, module->build_id);
-    return *module;
+    const MpiModule& module = multibody::plugin_description<MpiModule>(plugin, what, kMpiModuleEntry);
+    multibody::check_plugin_build(plugin, what, module.abi, kMpiModuleAbi, module.build_id);
+    return module;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // An engine plugin for the loader's tests (test_plugins.cpp), built as the real ones are (cmake/plugins.cmake: every
-// symbol hidden but the entry point) and three times over (tests/CMakeLists.txt): as this build's, as another build's
-// (VSSW_FIXTURE_BUILD_ID) and with another interface version (VSSW_FIXTURE_ABI). Its engines throw, from inside the
+// symbol hidden but the entry point) and five times over (tests/CMakeLists.txt): as this build's, as another build's
+// (VSSW_FIXTURE_BUILD_ID), with another interface version (VSSW_FIXTURE_ABI), and broken: no description
+// (VSSW_FIXTURE_NO_DESCRIPTION) or engines counted but not listed (VSSW_FIXTURE_NO_ENGINES). Its engines throw, from inside the
 // plugin, each kind of exception the program catches by type: the tests check that the program still does.
 #include <stdexcept>
 
@@ -39,7 +40,16 @@ std::unique_ptr<Engine> make() {
 
 }  // namespace
 
-#if defined(VSSW_FIXTURE_BUILD_ID) || defined(VSSW_FIXTURE_ABI)
+#if defined(VSSW_FIXTURE_NO_DESCRIPTION)
+// A broken plugin: its entry point gives no description.
+extern "C" __attribute__((visibility("default"))) const EnginePlugin* vssw_engine_plugin_v1() { return nullptr; }
+#elif defined(VSSW_FIXTURE_NO_ENGINES)
+// A broken plugin: its description counts engines it does not list.
+extern "C" __attribute__((visibility("default"))) const EnginePlugin* vssw_engine_plugin_v1() {
+    static const EnginePlugin plugin{kEnginePluginAbi, VSSW_BUILD_ID, nullptr, 3};
+    return &plugin;
+}
+#elif defined(VSSW_FIXTURE_BUILD_ID) || defined(VSSW_FIXTURE_ABI)
 #ifndef VSSW_FIXTURE_BUILD_ID
 #define VSSW_FIXTURE_BUILD_ID VSSW_BUILD_ID
 #endif

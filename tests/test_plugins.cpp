@@ -1,7 +1,10 @@
 // The engines as plugins (multibody/plugin_loader.hpp, multibody/engine_plugin.hpp): found without set-up from the
-// build tree, opened only when a run needs one, refused with a clear message when missing or of another build, and
+// build tree, opened only when a run needs one, refused with a clear message when missing, broken (cut short, not a
+// file, no description) or of another build, and
 // their exceptions caught by type across the module boundary.
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -16,6 +19,7 @@
 #include "multibody/engine.hpp"
 #include "multibody/engine_plugin.hpp"
 #include "multibody/isolated_engine.hpp"
+#include "multibody/plugin_file_check.hpp"
 #include "multibody/plugin_loader.hpp"
 #include "multibody/registry.hpp"
 #include "tests/cli_runner.hpp"
@@ -50,9 +54,10 @@ protected:
     static const multibody::EnginePlugin& open(const std::string& stem) {
         const multibody::OpenedPlugin p =
             multibody::open_plugin(multibody::plugin_file(stem), multibody::kEnginePluginEntry, "the fixture");
-        const auto* plugin = reinterpret_cast<const multibody::EnginePlugin* (*)()>(p.entry)();
-        multibody::check_plugin_build(p, "the fixture", plugin->abi, multibody::kEnginePluginAbi, plugin->build_id);
-        return *plugin;
+        const auto& plugin =
+            multibody::plugin_description<multibody::EnginePlugin>(p, "the fixture", multibody::kEnginePluginEntry);
+        multibody::check_plugin_build(p, "the fixture", plugin.abi, multibody::kEnginePluginAbi, plugin.build_id);
+        return plugin;
     }
     static std::unique_ptr<multibody::Engine> engine(const std::string& name) {
         const multibody::EnginePlugin& plugin = open("vssw_fixture");
@@ -161,6 +166,120 @@ TEST_F(FixturePlugin, AFileThatIsNotALoadableLibraryIsRefusedWithTheLinkersReaso
     } catch (const InputError& e) {
         EXPECT_TRUE(contains(e.what(), "engine 'broken'")) << e.what();
         EXPECT_TRUE(contains(e.what(), "could not be loaded")) << e.what();
+    }
+}
+
+// A copy of `from` cut to `length` bytes, as `to`.
+void copy_cut(const std::filesystem::path& from, const std::filesystem::path& to, std::uintmax_t length) {
+    std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::resize_file(to, length);
+}
+
+std::filesystem::path fixture_file(const std::string& stem) {
+    return std::filesystem::path(VSSW_FIXTURE_PLUGIN_DIR) / multibody::plugin_file(stem);
+}
+
+// A copy or install that stopped part-way: dlopen would map the missing pages and the first touch would kill the
+// process (SIGBUS). Refused before dlopen, at every length that cuts a loadable segment; the whole file passes.
+TEST_F(FixturePlugin, ACutShortPluginIsRefusedBeforeItIsOpened) {
+    const vssw::testing::TempDir dir;
+    const std::filesystem::path whole = fixture_file("vssw_fixture");
+    const std::uintmax_t size = std::filesystem::file_size(whole);
+    copy_cut(whole, dir / "whole.so", size);
+    EXPECT_EQ(multibody::plugin_file_problem((dir / "whole.so").string()), "");
+    ::setenv("VSSW_PLUGIN_PATH", dir.path.c_str(), 1);
+    for (const std::uintmax_t length : {std::uintmax_t{1000}, std::uintmax_t{4096}, size / 2}) {
+        copy_cut(whole, dir / "vssw_engine_cut.so", length);
+        try {
+            (void)multibody::open_plugin("vssw_engine_cut.so", multibody::kEnginePluginEntry, "engine 'cut'");
+            ADD_FAILURE() << "no InputError at " << length << " bytes";
+        } catch (const InputError& e) {
+            const std::string path = (dir / "vssw_engine_cut.so").string();
+            EXPECT_TRUE(contains(e.what(), path + " could not be loaded: the file is cut short")) << e.what();
+            EXPECT_TRUE(contains(e.what(), "it has " + std::to_string(length) + " bytes")) << e.what();
+        }
+    }
+    EXPECT_FALSE(contains(mapped_files(), "vssw_engine_cut.so"));
+}
+
+// A name in a folder searched first that is not a plugin file is an error naming it: never a reason to run on the
+// plugin of the same name in a later folder.
+TEST_F(FixturePlugin, ANameThatIsNotAFileIsAnErrorNotAReasonToLookFurther) {
+    const vssw::testing::TempDir pointed("pointed"), later("later");
+    const std::string file = "vssw_engine_pointed.so";
+    std::filesystem::copy_file(fixture_file("vssw_fixture"), later / file);
+    ::setenv("VSSW_PLUGIN_PATH", (pointed.path.string() + ":" + later.path.string()).c_str(), 1);
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"dangling", "it is a symbolic link to /nowhere/" + file + ", which does not exist"},
+        {"loop", "it is a loop of symbolic links"},
+        {"directory", "it is a directory"},
+        {"device", "it is not a regular file"}};
+    for (const auto& [kind, why] : cases) {
+        std::filesystem::remove_all(pointed / file);
+        if (kind == "dangling") std::filesystem::create_symlink("/nowhere/" + file, pointed / file);
+        if (kind == "loop") std::filesystem::create_symlink(pointed / file, pointed / file);
+        if (kind == "directory") std::filesystem::create_directory(pointed / file);
+        if (kind == "device") std::filesystem::create_symlink("/dev/zero", pointed / file);
+        try {
+            (void)multibody::open_plugin(file, multibody::kEnginePluginEntry, "engine 'pointed'");
+            ADD_FAILURE() << kind << ": opened " << (later / file).string();
+        } catch (const InputError& e) {
+            EXPECT_TRUE(contains(e.what(), (pointed / file).string() + " could not be loaded: " + why)) << e.what();
+        }
+    }
+    // The case the check must pass: nothing of that name in the first folder, the later one's is used.
+    std::filesystem::remove_all(pointed / file);
+    EXPECT_EQ(multibody::find_plugin(file), (later / file).string());
+}
+
+TEST_F(FixturePlugin, APluginWithoutADescriptionIsRefused) {
+    try {
+        (void)open("vssw_fixture_no_description");
+        FAIL() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "vssw_fixture_no_description.so is broken: its entry point "
+                                       "vssw_engine_plugin_v1 gave no description"))
+            << e.what();
+    }
+}
+
+// The same through the registry and the program, as an engine's plugin: exit 2 with one line, never a crash, and the
+// version still printed, saying why. Each case as the plugin of another engine (a plugin is opened once per process,
+// by its file name), all in the folder searched first.
+TEST_F(FixturePlugin, ABrokenEnginePluginIsBadInputInTheProgram) {
+    struct Broken {
+        std::string engine, copied_from, why;
+        bool cut_in_half;
+    };
+    const std::string built = VSSW_PLUGIN_OUTPUT_DIR;
+    const std::vector<Broken> cases = {
+        {"ode", fixture_file("vssw_fixture_no_description").string(), "gave no description", false},
+        {"bullet", fixture_file("vssw_fixture_no_engines").string(), "its description lists 3 engines it does not give",
+         false},
+        {"box2d", built + "/vssw_engine_box2d.so", "the file is cut short", true}};
+    const std::string maps = mapped_files();
+    const vssw::testing::TempDir dir;
+    ::setenv("VSSW_PLUGIN_PATH", dir.path.c_str(), 1);
+    for (const Broken& c : cases) {
+        const std::string file = "vssw_engine_" + c.engine + ".so";
+        if (!vssw::testing::engine_available(c.engine) || contains(maps, file))
+            GTEST_SKIP() << c.engine << " not built, or its plugin is open already (run this test alone)";
+        const std::uintmax_t whole = std::filesystem::file_size(c.copied_from);
+        copy_cut(c.copied_from, dir / file, c.cut_in_half ? whole / 2 : whole);
+    }
+    for (const Broken& c : cases) {
+        const auto compare =
+            run_cli({"compare", "--engine", c.engine, "--height", "4", "--thickness", "0.4", "--hinge", "0.7"});
+        EXPECT_EQ(compare.code, 2) << compare.err;
+        EXPECT_EQ(compare.err.rfind("vssw: error: engine '" + c.engine + "': ", 0), 0u) << compare.err;
+        EXPECT_EQ(std::count(compare.err.begin(), compare.err.end(), '\n'), 1) << compare.err;
+        EXPECT_TRUE(contains(compare.err, c.why)) << compare.err;
+    }
+    const auto version = run_cli({"--version"});
+    EXPECT_EQ(version.code, 0) << version.err;
+    for (const Broken& c : cases) {
+        EXPECT_TRUE(contains(version.out, "not available: engine '" + c.engine + "': ")) << version.out;
+        EXPECT_TRUE(contains(version.out, c.why)) << version.out;
     }
 }
 

@@ -1,27 +1,36 @@
 // Worker processes (multibody/worker_process.hpp): work run in a child gives the caller the very bytes it would have
-// made in its own process (ODE's runs and a study's results.csv are identical with and without them), and each way a
-// child can fail comes back as the error it is.
+// made in its own process (ODE's runs and a study's results.csv are identical with and without them), each way a
+// child can fail comes back as the error it is, and a worker neither outlives its parent nor keeps its parent's signal
+// handlers (analytic/child_fork.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
 #include "validation/suite.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/child_process.hpp"
 #include "multibody/worker_process.hpp"
 #include "study/measure.hpp"
 #include "validation/suite_file.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
+#include "tests/temp_files.hpp"
 
 namespace {
 
@@ -96,6 +105,105 @@ TEST(WorkerProcess, AChildThatDiesIsAnEngineFailureSayingHow) {
     EXPECT_NE(aborted.find("signal 6"), std::string::npos) << aborted;
     const std::string exited = message_of<EngineFailure>(How::exits);
     EXPECT_NE(exited.find("exited with code 3"), std::string::npos) << exited;
+}
+
+// A handler that only sets a flag, as Python's SIGINT handler does.
+volatile sig_atomic_t g_flagged = 0;
+void set_flag(int) { g_flagged = 1; }
+
+// A worker takes the default action of a signal its parent handles: SIGINT ends it (and is an interruption, not a
+// failed run), whatever handler the parent has. With the parent's flag-only handler the work would go on and return.
+TEST(WorkerProcess, AWorkerTakesTheDefaultActionOfTheSignalsItsParentHandles) {
+    struct sigaction flag_only {}, previous {};
+    flag_only.sa_handler = set_flag;
+    sigemptyset(&flag_only.sa_mask);
+    ASSERT_EQ(::sigaction(SIGINT, &flag_only, &previous), 0);
+    try {
+        (void)multibody::run_in_worker_process([](std::string&) { ::raise(SIGINT); }, "scripted");
+        ADD_FAILURE() << "the worker went on after SIGINT";
+    } catch (const multibody::RunInterrupted& e) {
+        EXPECT_NE(std::string(e.what()).find("scripted: the run was interrupted by signal 2"), std::string::npos)
+            << e.what();
+    }
+    ::sigaction(SIGINT, &previous, nullptr);
+    EXPECT_EQ(g_flagged, 0) << "the parent's handler ran";
+}
+
+// How the state letter of a process reads in /proc ('Z': ended, not reaped yet); ' ' when it is gone.
+char process_state(pid_t pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    const std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    const std::size_t close = text.rfind(')');
+    return close == std::string::npos || close + 2 >= text.size() ? ' ' : text[close + 2];
+}
+bool ended(pid_t pid) { return process_state(pid) == ' ' || process_state(pid) == 'Z'; }
+
+// Polled, not timed: a generous bound for a loaded machine, reached only when the promise is broken.
+constexpr int kPolls = 3000, kPollMicroseconds = 10000;  // 30 s
+
+// Work for a worker that tells its pid in `file` (a worker keeps no descriptor of its parent's but its answer pipe)
+// and then waits for ever.
+std::function<void(std::string&)> tell_pid_and_wait(const std::string& file) {
+    return [file](std::string&) {
+        std::ofstream(file + ".part") << ::getpid();
+        std::rename((file + ".part").c_str(), file.c_str());
+        for (;;) ::pause();
+    };
+}
+// The pid the worker told in `file`; 0 when it never did.
+pid_t told_pid(const std::string& file) {
+    for (int i = 0; i < kPolls; ++i, ::usleep(kPollMicroseconds)) {
+        pid_t pid = 0;
+        if (std::ifstream(file) >> pid) return pid;
+    }
+    return 0;
+}
+
+// A parent killed by SIGKILL (it cannot clean up) leaves no worker running: the worker dies with it.
+TEST(WorkerProcess, AWorkerDiesWithItsParentEvenWhenTheParentIsKilled) {
+    const vssw::testing::TempDir dir;
+    const std::string file = (dir / "worker.pid").string();
+    const pid_t parent = ::fork();
+    ASSERT_GE(parent, 0);
+    if (parent == 0) {  // the worker's parent
+        try {
+            (void)multibody::run_in_worker_process(tell_pid_and_wait(file), "scripted");
+        } catch (...) {
+        }
+        ::_exit(0);
+    }
+    const pid_t worker = told_pid(file);
+    ::kill(parent, SIGKILL);
+    ::waitpid(parent, nullptr, 0);
+    ASSERT_NE(worker, 0) << "the worker never started";
+    for (int i = 0; i < kPolls && !ended(worker); ++i) ::usleep(kPollMicroseconds);
+    const bool gone = ended(worker);
+    if (!gone) ::kill(worker, SIGKILL);
+    EXPECT_TRUE(gone) << "the worker " << worker << " outlived its parent";
+}
+
+// While interruption is on (the Python module's Ctrl-C), a worker being waited for is stopped and no new one starts:
+// the caller gets RunInterrupted, not a failed run.
+TEST(WorkerProcess, InterruptionStopsTheRunningWorkerAndStartsNoOther) {
+    const vssw::testing::TempDir dir;
+    const std::string file = (dir / "worker.pid").string();
+    bool interrupted = false;
+    std::thread waiter([&] {
+        try {
+            (void)multibody::run_in_worker_process(tell_pid_and_wait(file), "scripted");
+        } catch (const multibody::RunInterrupted&) {
+            interrupted = true;
+        }
+    });
+    const pid_t worker = told_pid(file);
+    multibody::interrupt_children(true);
+    waiter.join();
+    EXPECT_NE(worker, 0);
+    EXPECT_TRUE(interrupted);
+    EXPECT_TRUE(ended(worker));
+    EXPECT_THROW(run_in_worker(How::returns), multibody::RunInterrupted);
+    multibody::interrupt_children(false);
+    EXPECT_EQ(run_in_worker(How::returns), awkward_bytes());
 }
 
 // theta1 of every sample as its raw bytes: what the comparison below needs, bit for bit.

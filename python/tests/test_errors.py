@@ -1,5 +1,9 @@
 """Errors through the module: the program's exit code as the exception's class, its one error line as the message."""
 import math
+import os
+import pathlib
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -179,3 +183,51 @@ def test_help_is_returned_not_raised():
     assert "--height" in text and "--thickness" in text
     assert text == vssw.help("wall")
     assert "wall" in vssw.run("--help") and "compare" in vssw.run("--help")
+
+
+def _python(code, env_extra, timeout):
+    """`code` in an interpreter of its own (a crash there fails the test, not the test run): (exit code, stdout)."""
+    env = dict(os.environ, **env_extra)
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=timeout,
+                          check=False)
+    return done.returncode, done.stdout + done.stderr
+
+
+@pytest.mark.skipif("ode" not in vssw.engines(), reason="no ODE in this build")
+def test_a_cut_short_plugin_is_an_input_error_not_a_crash(tmp_path):
+    # A copy or install that stopped half-way: opened in the interpreter's process, it once killed it (SIGBUS).
+    real = pathlib.Path(os.environ.get("VSSW_BUILD_DIR", REPO / "build")) / "plugins" / "vssw_engine_ode.so"
+    data = real.read_bytes()
+    (tmp_path / real.name).write_bytes(data[: len(data) // 2])
+    code, out = _python("import vssw\n"
+                        "try:\n"
+                        "    vssw.compare('ode', height=4, thickness=0.4, hinge=0.7)\n"
+                        "except vssw.InputError as e:\n"
+                        "    print('InputError:', e)\n",
+                        {"VSSW_PLUGIN_PATH": str(tmp_path)}, timeout=120)
+    assert code == 0, out
+    assert "InputError: engine 'ode': its plugin" in out and "the file is cut short" in out, out
+
+
+@pytest.mark.skipif("simbody" not in vssw.engines(), reason="no Simbody in this build")
+def test_ctrl_c_stops_a_study_at_once_and_leaves_it_resumable(tmp_path):
+    # Simbody at a stiffness of 1e18 (inside its range) runs for minutes: Ctrl-C (SIGINT to the interpreter, as a
+    # notebook's interrupt sends it) ends the call with KeyboardInterrupt and the runs stopped, the journal kept for
+    # --resume and no results written; the call used to run to its end first, results and all.
+    (tmp_path / "slow.toml").write_text('name = "slow"\nmetrics = ["peak_rotation"]\nengines = ["simbody"]\n'
+                                        '[wall]\nheight = 4\nthickness = 0.4\nhinge = [0.6, 0.7]\n'
+                                        '[excitation]\nkind = "pulse"\nshape = "sine"\namplitude = 0.5\n'
+                                        'pulse_period = 0.5\n[settings.simbody]\nstiffness = 1e18\n')
+    out_dir = tmp_path / "out"
+    code, out = _python("import os, signal, threading, vssw\n"
+                        "threading.Timer(2.0, lambda: os.kill(os.getpid(), signal.SIGINT)).start()\n"
+                        "try:\n"
+                        f"    vssw.study({str(tmp_path / 'slow.toml')!r}, {str(out_dir)!r}, threads=2, plots=False)\n"
+                        "    print('returned')\n"
+                        "except KeyboardInterrupt:\n"
+                        "    children = os.popen(f'ps --ppid {os.getpid()} -o pid=').read().split()\n"
+                        "    print('KeyboardInterrupt;', len(children), 'children (the ps)')\n",
+                        {}, timeout=600)
+    assert code == 0, out
+    assert "KeyboardInterrupt; 1 children (the ps)" in out, out
+    assert (out_dir / "journal.csv").exists() and not (out_dir / "results.csv").exists()

@@ -2,7 +2,8 @@
 # SIGINT and SIGTERM leave no temporary file, folder or lock file behind, and what the run would have replaced as it
 # was; a --resume or another command on its --out while the study still runs is refused naming its process; the
 # interrupted study resumes to the rows of an uninterrupted run. The real program, on jobs long enough to be caught
-# mid-way: a history writing a 30 MB CSV, and a study held in its plot phase by a stand-in for gnuplot that sleeps.
+# mid-way: a history writing a 30 MB CSV, and a study held in its plot phase by a stand-in for gnuplot that sleeps
+# (and ends with the study).
 # usage: out_signals.sh VSSW SOURCE_DIR WORK_DIR
 set -euo pipefail
 set -m  # background jobs keep SIGINT (a script's background jobs otherwise ignore it)
@@ -10,6 +11,8 @@ vssw="$1" src="$2" work="$3"
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 no_leftovers() { if ls -a "$1" | grep -q 'vssw-tmp\|vssw-lock'; then ls -a "$1" >&2; fail "$2: a leftover in $1"; fi; }
+# A process alive (not gone, not a zombie waiting to be reaped).
+running() { local state; state=$(awk '{print $3}' "/proc/$1/stat" 2>/dev/null) && [ "$state" != Z ]; }
 # Waits (up to 60 s) until a path matching the glob exists.
 wait_for() { for _ in $(seq 6000); do compgen -G "$1" >/dev/null && return 0; sleep 0.01; done; fail "never saw $1"; }
 
@@ -61,7 +64,9 @@ for sig in INT TERM; do
   if ls s | grep -q 'motion'; then ls s >&2; fail "motions generate wrote into the study's folder"; fi
   kill -s "$sig" "$pid"
   rc=0; wait "$pid" || rc=$?
-  kill "$(cat mark)" 2>/dev/null || true  # the stand-in for gnuplot, orphaned
+  # The stand-in for gnuplot, a child of the study, ended with it (analytic/child_fork.hpp).
+  for _ in $(seq 3000); do running "$(cat mark)" || break; sleep 0.01; done
+  if running "$(cat mark)"; then kill "$(cat mark)"; fail "study SIG$sig: its gnuplot still runs"; fi
   want=$((128 + $(kill -l "$sig")))
   [ "$rc" = "$want" ] || fail "study SIG$sig: exit $rc, want $want"
   no_leftovers . "study SIG$sig"
