@@ -37,9 +37,10 @@ long sample_every(const EngineSettings& settings, double dt) {
 }
 
 RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt,
-                       FailureLimits limits, bool dt_steps_the_motion)
+                       FailureLimits limits, bool dt_steps_the_motion, double contact_gap)
     : engine_(std::move(engine)),
       b_(block_sizes(scene).b),
+      h_lower_(block_sizes(scene).h_lower),
       friction_(scene.friction),
       collapse_(collapse_angle(scene)),
       // Only a run under a ground motion can end folded (judged once the shaking is over): a free vibration or a
@@ -55,6 +56,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       stop_angle_(ex.stop_angle),
       stop_at_rest_(ex.stop_at_rest),
       limits_(limits),
+      parts_(engine_, scene, ex, limits.penetration * b_, limits.energy_gain, contact_gap),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
       quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))),
@@ -62,22 +64,21 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
     require_step_resolves(engine_, scene, ex, dt, dt_steps_the_motion);
 }
 
-RunMonitor::Verdict RunMonitor::check(double t, double theta, double rate, const BaseCorners& c, double theta2) {
+RunMonitor::Verdict RunMonitor::check(double t, const WallState& s) {
+    const double theta = s.lower.angle, rate = s.lower.omega, theta2 = s.upper.angle;
     if (!std::isfinite(theta) || !std::isfinite(rate))
         throw EngineFailure(fmt::format("{}: the state became NaN at t = {:.6g} s", engine_, t));
     // A rocking wall never turns a hundred times faster than the rate that carries it from rest to alpha.
     if (std::abs(rate) > 100.0 * v_ref_)
         throw EngineFailure(fmt::format("{}: blow-up, theta1' = {:.3g} rad/s at t = {:.6g} s", engine_, rate, t));
     // No sliding: while rocking the pivot corner stays put, at rest both do; the smaller drift of the two base
-    // corners from their places covers both cases.
-    const double drift = std::abs(c.right_dx) < std::abs(c.left_dx) ? c.right_dx : c.left_dx;
+    // corners from their places (+b and -b) covers both cases.
+    const double right_dx = point_of(s.lower, b_, -h_lower_).x - b_, left_dx = point_of(s.lower, -b_, -h_lower_).x + b_;
+    const double drift = std::abs(right_dx) < std::abs(left_dx) ? right_dx : left_dx;
     if (std::abs(drift) > limits_.slide * b_)
         throw EngineFailure(fmt::format("{}: the wall slid {:.3g} m at its base at t = {:.6g} s (friction {})",
                                         engine_, drift, t, friction_));
-    const double sink = -std::min(c.right_y, c.left_y);
-    if (sink > limits_.penetration * b_)
-        throw EngineFailure(
-            fmt::format("{}: the wall sank {:.3g} m into the ground at t = {:.6g} s", engine_, sink, t));
+    parts_.check(t, s);
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
     if (std::abs(theta) >= collapse_) return Verdict::overturned;
     // The upper block past the mechanism's range (NaN compares false: not given).

@@ -1,6 +1,7 @@
 #pragma once
-// What every engine adapter checks after each step, in one place: failures (NaN, blow-up, sliding, sinking), each
-// an EngineFailure naming the engine, the reason and the time; and reasons to stop (a threshold trial's stop angle,
+// What every engine adapter checks after each step, in one place: failures (NaN, blow-up, sliding, and every part of
+// the wall that wall_parts.hpp watches: corners in the ground, through the hinge or the roller, energy not given),
+// each an EngineFailure naming the engine, the reason and the time; and reasons to stop (a threshold trial's stop angle,
 // overturning at the scene's collapse angle, rest once the ground motion is over). Engine-free.
 // Overturning is also a wall that has folded: the two blocks can pass the roller's lock short of the collapse angle
 // and stay there, the upper block against the far guide, swinging between about 3.7 and 4.0 alpha1 (measured on the
@@ -20,15 +21,19 @@
 #include "multibody/engine.hpp"
 #include "multibody/settings_reader.hpp"
 #include "multibody/step_resolution.hpp"  // kMaxStepsPerRun, require_step_resolves
+#include "multibody/wall_parts.hpp"
 
 namespace vssw::multibody {
 
 // When a run counts as failed, in units of b (the engine settings slide_limit and penetration_limit, every adapter's):
 // sliding past `slide` of the pivot corner (measured: the wall "walks" ~1e-2 b over many small impacts in Bullet) or
-// sinking past `penetration` below the ground.
+// any corner sinking past `penetration` into the ground, the other block or a roller guide. energy_gain: the energy
+// a run may gain beyond what the ground motion gave (kEnergyGainShare; not a setting: +infinity only in tests that
+// feed motions no mechanics gave).
 struct FailureLimits {
     double slide = 5e-2;
     double penetration = 5e-2;
+    double energy_gain = kEnergyGainShare;
     // The two settings, read by an adapter whose known names include "slide_limit" and "penetration_limit".
     static FailureLimits read(const SettingsReader& r);
     // An adapter's own settings followed by these two (Engine::setting_descriptions()).
@@ -38,11 +43,6 @@ struct FailureLimits {
 // Record every this many steps for settings.sample_dt (every step when it is 0).
 long sample_every(const EngineSettings& settings, double dt);
 
-// The lower block's base corners after a step, relative to the ground (which may move): horizontal offsets from
-// their places at rest (+b and -b) and heights above the ground's top.
-struct BaseCorners {
-    double right_dx, right_y, left_dx, left_y;
-};
 
 // A wall at rest stays at rest while |a_h| is below its rest threshold (Eq. 12 / 17: no rocking solution leaves
 // rest). Half of the analytic model's threshold, so that an engine whose threshold is off by up to half (every
@@ -53,21 +53,19 @@ constexpr double kRestCannotLiftShare = 0.5;
 // stillness asked for rest, longer than a wall coming back inward takes to cross it (it would be crossing at speed).
 constexpr double kFoldedFor = 0.5;
 
-// An adapter's theta2 for a parapet (RunMonitor::check): no upper block.
-constexpr double kNoTheta2 = std::numeric_limits<double>::quiet_NaN();
-
 class RunMonitor {
 public:
     enum class Verdict { go_on, stop, overturned, at_rest };
 
-    // InputError when dt is not usable for the run (require_step_resolves: too many steps, or too coarse), naming dt. dt_steps_the_motion false: dt is a reporting interval (the integrator picks its own steps).
+    // InputError when dt is not usable for the run (require_step_resolves: too many steps, or too coarse), naming dt.
+    // dt_steps_the_motion false: dt is a reporting interval (the integrator picks its own steps).
+    // contact_gap: WallParts's (Simbody's corner spheres keep the bodies their radius apart).
     RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt, FailureLimits limits,
-               bool dt_steps_the_motion = true);
+               bool dt_steps_the_motion = true, double contact_gap = 0.0);
 
-    // Throws EngineFailure on a failure; otherwise says whether the run goes on. theta2: the upper block's rotation
-    // (NaN for a parapet or an adapter that does not give it).
-    Verdict check(double t, double theta1, double theta1_dot, const BaseCorners& corners,
-                  double theta2 = std::numeric_limits<double>::quiet_NaN());
+    // Throws EngineFailure on a failure; otherwise says whether the run goes on. Call once per step, in time order,
+    // with the blocks relative to the ground (the upper block ignored for a parapet).
+    Verdict check(double t, const WallState& state);
     // True when the verdict ends the run, having marked the trajectory overturned or at rest as it says.
     static bool ends_run(Verdict verdict, Trajectory& out);
     // Whether step i of n is recorded: every `every` steps, the last, and the one that ends the run.
@@ -77,9 +75,11 @@ public:
 
 private:
     std::string engine_;
-    double b_, friction_, collapse_, unstable_, unstable2_, v_ref_, alpha_, motion_end_, quiet_from_, stop_angle_;
+    double b_, h_lower_, friction_, collapse_, unstable_, unstable2_, v_ref_, alpha_, motion_end_, quiet_from_,
+        stop_angle_;
     bool stop_at_rest_;
     FailureLimits limits_;
+    WallParts parts_;
     int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_, folded_needed_;
 };
 

@@ -61,6 +61,9 @@ double mechanism_theta2(const WallScene& scene, double theta1) {
 double rest_threshold(const WallScene& scene) {
     return analytic_model(scene, Kinematics::exact)->rest_threshold(0.0);
 }
+double reference_energy(const WallScene& scene) {
+    return std::abs(analytic_model(scene, Kinematics::exact)->reference_energy());
+}
 double reference_velocity(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->reference_velocity(); }
 
 }  // namespace vssw::multibody

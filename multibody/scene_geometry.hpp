@@ -44,6 +44,10 @@ double mechanism_theta2(const WallScene& scene, double theta1);
 // The smallest |a_h| that tips the scene's wall off rest (Eq. 12 for a VSSW, Eq. 17 for a parapet; exact kinematics).
 double rest_threshold(const WallScene& scene);
 
+// V_r of the scene's analytic model (exact kinematics): the potential energy at the reference angle [J/m], the
+// scale of the energy check (wall_parts.hpp).
+double reference_energy(const WallScene& scene);
+
 // theta1'_r of the scene's analytic model (exact kinematics): the scale engines use for rest and failure checks.
 double reference_velocity(const WallScene& scene);
 

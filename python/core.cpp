@@ -112,16 +112,21 @@ auto interruptible(Work work) -> decltype(work()) {
 }
 
 // `progress` (None or a callable (done, total, what)) is called from the command's threads, each call holding the
-// GIL; an exception it raises is dropped (a progress bar must not end a study).
+// GIL; the first exception it raises is raised from this call once the command has ended.
 py::tuple run_with_progress(const std::vector<std::string>& args, const py::object& progress) {
     if (auto refused = refuse_nul(args)) return *refused;
+    // The first exception the callable raises, raised from this call once the command has ended (it cannot be
+    // stopped halfway: a study's journal and folder stay whole); the callable is not called again after it.
+    auto raised = std::make_shared<std::optional<py::error_already_set>>();
     vssw::cli::ProgressHook hook;
     if (!progress.is_none())
-        hook = [progress](long done, long total, const std::string& what) {
+        hook = [progress, raised](long done, long total, const std::string& what) {
             const py::gil_scoped_acquire gil;
+            if (raised->has_value()) return;
             try {
                 progress(done, total, what);
-            } catch (const py::error_already_set&) {
+            } catch (py::error_already_set& e) {
+                raised->emplace(std::move(e));
             }
         };
     std::ostringstream out, err;
@@ -129,6 +134,7 @@ py::tuple run_with_progress(const std::vector<std::string>& args, const py::obje
         const vssw::cli::ScopedProgressHook scoped(progress.is_none() ? nullptr : &hook);  // the command's thread's
         return run_cli(args, out, err);
     });
+    if (raised->has_value()) throw **raised;
     return py::make_tuple(code, text(out.str()), text(err.str()));
 }
 

@@ -600,6 +600,30 @@ TEST(mujoco, SettingsOutsideTheirRangesAreRefusedByName) {
         {{"solref_steps", 1.0}, {"solimp_dmax", 1.0}, {"integrator", 3.0}, {"tolerance", 0.0}, {"moving_supports", 1.0}});
 }
 
+// The sweep's MuJoCo settings (finding 4 of the second sweep): solimp_dmin at the low end of its documented range
+// lets the upper block fall through the lower one (the top 33 m down). The run fails naming the hinge, in free
+// vibration and under the pulse P, instead of giving a threshold 57 % low and "ok".
+TEST(mujoco, AnUpperBlockFallingThroughTheHingeFailsTheRun) {
+    if (!engine_available("mujoco")) GTEST_SKIP() << "MuJoCo is not compiled in";
+    const auto engine = multibody::make_engine("mujoco");
+    multibody::EngineSettings s = engine->default_settings();
+    s.knobs["solimp_dmin"] = 1e-4;
+    multibody::Excitation free;
+    free.theta0 = 0.5 * fig6_vssw().alpha();
+    free.t_end = 3.0;
+    multibody::Excitation pulse;
+    pulse.horizontal = sine_pulse(0.5 * 9.81, 0.5);
+    pulse.t_end = 3.0;
+    for (const multibody::Excitation& ex : {free, pulse}) {
+        try {
+            (void)engine->simulate(fig6_vssw(), ex, s);
+            ADD_FAILURE() << "the run went on";
+        } catch (const EngineFailure& e) {
+            EXPECT_NE(std::string(e.what()).find("through the hinge"), std::string::npos) << e.what();
+        }
+    }
+}
+
 // MuJoCo answers a bad acceleration with a warning and resets the simulation to its start, then goes on: the
 // adapter fails the run instead, naming MuJoCo's warning.
 TEST(mujoco, AWarningOfMujocoFailsTheRunWithItsText) {
@@ -798,7 +822,7 @@ TEST(UnstableEquilibrium, IsWhereThePotentialPeaks) {
 TEST(RunMonitorRest, RestEndsTheRunOnlyOnceTheShakingCannotLiftTheWall) {
     const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
     const double a_c = analytic_reference(scene)->rest_threshold(0.0), dt = 1e-3;
-    const multibody::BaseCorners corners{0.0, 0.0, 0.0, 0.0};
+    const multibody::WallState still = multibody::still_state_at(scene, 0.0);
     using Verdict = multibody::RunMonitor::Verdict;
     // A wall still at rest from t = 0; the shaking above half the threshold until t = 2 s, below it after, to 10 s.
     const auto rest_ends_at = [&](double tail) {
@@ -807,7 +831,7 @@ TEST(RunMonitorRest, RestEndsTheRunOnlyOnceTheShakingCannotLiftTheWall) {
         ex.t_end = 12.0;
         multibody::RunMonitor monitor("test", scene, ex, dt, {});
         for (int i = 1; i <= 12000; ++i)
-            if (monitor.check(i * dt, 0.0, 0.0, corners) == Verdict::at_rest) return i * dt;
+            if (monitor.check(i * dt, still) == Verdict::at_rest) return i * dt;
         return HUGE_VAL;
     };
     constexpr double kQuiet = 0.1;    // RunMonitor's stillness before rest is declared [s]
@@ -819,6 +843,10 @@ TEST(RunMonitorRest, RestEndsTheRunOnlyOnceTheShakingCannotLiftTheWall) {
     EXPECT_NEAR(rest_ends_at(0.6), 10.0 + kQuiet, kOneStep);
 }
 
+// The verdict tests below feed the lower block's rotation (and theta2) alone, the blocks placed by pose_at whatever
+// the rotation: not a motion of the mechanism, so its contacts and energy are not watched.
+const multibody::FailureLimits kRotationsOnly{multibody::FailureLimits{}.slide, HUGE_VAL, HUGE_VAL};
+
 // An engine's folded wall (the blocks past the roller's lock, swinging short of the collapse angle) has overturned:
 // RunMonitor says so once it has stayed past the unstable equilibrium for kFoldedFor after the shaking; a wall coming
 // back inside it, or there during the shaking, goes on.
@@ -828,15 +856,15 @@ TEST(RunMonitorFold, PastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
     multibody::Excitation ex;
     ex.horizontal = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, 1.0, 0.0}, "pulse");
     ex.t_end = 5.0;
-    const multibody::BaseCorners corners{0.0, 0.0, 0.0, 0.0};
     using Verdict = multibody::RunMonitor::Verdict;
     const int window = static_cast<int>(1.5 * multibody::kFoldedFor / dt);  // steps watched: past kFoldedFor
     // theta1(t) from `start`, checked every step over the window.
     const auto run = [&](double start, const std::function<double(double)>& theta) {
-        multibody::RunMonitor monitor("test", scene, ex, dt, {});
+        multibody::RunMonitor monitor("test", scene, ex, dt, kRotationsOnly);
         for (int i = 0; i < window; ++i) {
             const double t = start + i * dt, rate = (theta(t + dt) - theta(t - dt)) / (2.0 * dt);
-            if (const Verdict v = monitor.check(t, theta(t), rate, corners); v != Verdict::go_on) return v;
+            const multibody::WallState state = multibody::still_state_at(scene, theta(t), rate);
+            if (const Verdict v = monitor.check(t, state); v != Verdict::go_on) return v;
         }
         return Verdict::go_on;
     };
@@ -865,21 +893,74 @@ TEST(RunMonitorFold, AnUpperBlockThatFellIsOverturnedEvenWithTheLowerBlockUprigh
     multibody::Excitation ex;
     ex.horizontal = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, 1.0, 0.0}, "pulse");
     ex.t_end = 5.0;
-    const multibody::BaseCorners corners{0.0, 0.0, 0.0, 0.0};
     using Verdict = multibody::RunMonitor::Verdict;
     // From t = 2.5 s (after the shaking): theta1 still at 0, theta2 as given, every step for 1.5 kFoldedFor.
     const auto verdict = [&](double theta2) {
-        multibody::RunMonitor monitor("test", scene, ex, dt, {});
+        multibody::RunMonitor monitor("test", scene, ex, dt, kRotationsOnly);
+        multibody::WallState state = multibody::still_state_at(scene, 0.0);
+        state.upper.angle = theta2;
         const int window = static_cast<int>(1.5 * multibody::kFoldedFor / dt);
         for (int i = 0; i < window; ++i)
-            if (const Verdict v = monitor.check(2.5 + i * dt, 0.0, 0.0, corners, theta2); v != Verdict::go_on)
-                return v;
+            if (const Verdict v = monitor.check(2.5 + i * dt, state); v != Verdict::go_on) return v;
         return Verdict::go_on;
     };
     EXPECT_EQ(verdict(2.2), Verdict::overturned);   // the block lying past the guide
     EXPECT_EQ(verdict(-2.2), Verdict::overturned);  // on the other side
     EXPECT_EQ(verdict(0.0), Verdict::at_rest);      // a standing wall at rest
-    EXPECT_EQ(verdict(multibody::kNoTheta2), Verdict::at_rest);  // an adapter that does not give theta2: as before
+}
+
+// Every part of the wall is watched (wall_parts.hpp), not only the lower block's base: a synthetic run from the Fig. 6
+// wall at rest, one part moved step by step through a body or given energy, fails naming that part; the wall left
+// still does not fail. The message of the failure, or "" when the run goes on to its end.
+std::string monitor_failure(const std::function<void(multibody::WallState&, double)>& move) {
+    const multibody::WallScene scene = fig6_vssw();
+    multibody::Excitation ex;
+    ex.t_end = 1.0;
+    const double dt = 1e-3;
+    multibody::RunMonitor monitor("test", scene, ex, dt, {});
+    try {
+        for (int i = 1; i <= 1000; ++i) {
+            multibody::WallState state = multibody::still_state_at(scene, 0.0);
+            move(state, i * dt);
+            (void)monitor.check(i * dt, state);
+        }
+    } catch (const EngineFailure& e) {
+        return e.what();
+    }
+    return "";
+}
+
+constexpr double kSinkRate = 0.1;  // [m/s]: 0.1 m in the synthetic second, ten times the Fig. 6 wall's 0.05 b limit
+
+TEST(RunMonitorParts, AStillWallGoesOn) {
+    EXPECT_EQ(monitor_failure([](multibody::WallState&, double) {}), "");
+}
+
+TEST(RunMonitorParts, AnUpperBlockSinkingThroughTheHingeFails) {
+    const std::string why = monitor_failure([](multibody::WallState& s, double t) { s.upper.y -= kSinkRate * t; });
+    EXPECT_NE(why.find("through the hinge"), std::string::npos) << why;
+}
+
+TEST(RunMonitorParts, ABlockSinkingIntoTheGroundFails) {
+    // The whole wall sinking: its lower block reaches into the ground first.
+    const std::string why = monitor_failure([](multibody::WallState& s, double t) {
+        s.lower.y -= kSinkRate * t;
+        s.upper.y -= kSinkRate * t;
+    });
+    EXPECT_NE(why.find("lower block sank"), std::string::npos) << why;
+}
+
+TEST(RunMonitorParts, ATopPushedThroughTheRollerFails) {
+    // The upper block shifted sideways on the lower one (no overlap: their faces only touch), its top past the guide.
+    const std::string why = monitor_failure([](multibody::WallState& s, double t) { s.upper.x += kSinkRate * t; });
+    EXPECT_NE(why.find("through the roller"), std::string::npos) << why;
+}
+
+TEST(RunMonitorParts, EnergyTheGroundMotionDidNotGiveFails) {
+    // The lower block spinning up in place with no ground motion: kinetic energy from nowhere, below the blow-up rate.
+    const double v_ref = multibody::reference_velocity(fig6_vssw());
+    const std::string why = monitor_failure([&](multibody::WallState& s, double t) { s.lower.omega = 10.0 * v_ref * t; });
+    EXPECT_NE(why.find("energy that the ground motion did not give"), std::string::npos) << why;
 }
 
 }  // namespace vssw

@@ -341,13 +341,12 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
         w.step(dt);
         ++out.steps;
         const double t = static_cast<double>(i) * dt;
-        const double theta = clockwise_angle(lower);
-        const double rate = clockwise_rate(lower);
-        const double x_g = w.ground().GetPosition().x;
-        const b2Vec2 right = world_point(lower, s.b, -s.h_lower), left = world_point(lower, -s.b, -s.h_lower);
-        const auto verdict =  // corners relative to the (moving) ground
-            monitor.check(t, theta, rate, {right.x - x_g - s.b, right.y, left.x - x_g + s.b, left.y},
-                          upper ? clockwise_angle(*upper) : kNoTheta2);
+        const double x_g = w.ground().GetPosition().x, v_ground = w.ground().GetLinearVelocity().x;
+        auto state = [&](const b2Body& body) {  // relative to the (moving) ground
+            const b2Vec2 c = body.GetPosition(), v = body.GetLinearVelocity();
+            return BlockState{c.x - x_g, c.y, clockwise_angle(body), v.x - v_ground, v.y, clockwise_rate(body)};
+        };
+        const auto verdict = monitor.check(t, {state(lower), upper ? state(*upper) : kNoBlock});
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

@@ -316,13 +316,12 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
         ++out.steps;
 
         const double t = static_cast<double>(i) * dt;
-        const double theta = clockwise_angle(lower);
-        const double rate = -lower.getAngularVelocity().z();
-        const btVector3 right = lower.getWorldTransform() * btVector3(s.b, -s.h_lower, 0);
-        const btVector3 left = lower.getWorldTransform() * btVector3(-s.b, -s.h_lower, 0);
-        const auto verdict =  // corners relative to the (moving) ground
-            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()},
-                          upper ? clockwise_angle(*upper) : kNoTheta2);
+        auto state = [&](const btRigidBody& body) {  // relative to the (moving) ground
+            const btVector3 c = body.getCenterOfMassPosition(), v = body.getLinearVelocity();
+            return BlockState{c.x() - x_g, c.y(), clockwise_angle(body), v.x() - v_g, v.y(),
+                              -body.getAngularVelocity().z()};
+        };
+        const auto verdict = monitor.check(t, {state(lower), upper ? state(*upper) : kNoBlock});
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

@@ -359,13 +359,12 @@ Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, co
         ++out.steps;
 
         const double t = static_cast<double>(i) * dt;
-        const double theta = clockwise_angle(*lower);
-        const double rate = rate_of(*lower);
         const double x_g = w.ground_x();
-        const Vector3d right = world_point(*lower, s.b, -s.h_lower), left = world_point(*lower, -s.b, -s.h_lower);
-        const auto verdict =  // corners relative to the (moving) ground
-            monitor.check(t, theta, rate, {right.x() - x_g - s.b, right.y(), left.x() - x_g + s.b, left.y()},
-                          upper ? clockwise_angle(*upper) : kNoTheta2);
+        auto state = [&](const dd::BodyNode& body) {  // relative to the (moving) ground
+            const Vector3d c = body.getCOM(), v = body.getCOMLinearVelocity();
+            return BlockState{c.x() - x_g, c.y(), clockwise_angle(body), v.x() - v_g, v.y(), rate_of(body)};
+        };
+        const auto verdict = monitor.check(t, {state(*lower), upper ? state(*upper) : kNoBlock});
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

@@ -367,10 +367,10 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
             if (d->warning[w].number > 0)
                 throw EngineFailure(fmt::format("MuJoCo warned at t = {:.6g} s: {}", t,
                                                 t_last_warning.empty() ? std::string("(no text)") : t_last_warning));
-        const auto right = world(lower, s.b, -s.h_lower), left = world(lower, -s.b, -s.h_lower);
-        const auto verdict =
-            monitor.check(t, angle(lower), d->qvel[lower.q + 2], {right[0] - s.b, right[1], left[0] + s.b, left[1]},
-                          vssw ? angle(upper) : kNoTheta2);
+        auto state = [&](const Block& k) {
+            return BlockState{centre_x(k), centre_y(k), angle(k), d->qvel[k.q], d->qvel[k.q + 1], d->qvel[k.q + 2]};
+        };
+        const auto verdict = monitor.check(t, {state(lower), vssw ? state(upper) : kNoBlock});
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

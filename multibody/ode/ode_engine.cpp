@@ -534,17 +534,16 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
         const double t = static_cast<double>(i) * dt;
         if (g_ode_messages != messages_before)
             throw EngineFailure(fmt::format("ODE: {} at t = {:.6g} s", g_ode_last_message, t));
-        const double theta = clockwise_angle(lower);
-        const double rate = -dBodyGetAngularVel(lower)[2];
         const double tilt = std::max(out_of_plane_tilt(lower), upper ? out_of_plane_tilt(upper) : 0.0);
         if (tilt > 1e-9)  // measured: exactly 0 (see the top of the file)
             throw EngineFailure(
                 fmt::format("ODE: a block turned {:.3g} rad out of the plane at t = {:.6g} s", tilt, t));
         const double x_g = w.ground_x();
-        const Vec2 right = world_point(lower, s.b, -s.h_lower), left = world_point(lower, -s.b, -s.h_lower);
-        const auto verdict =  // corners relative to the (moving) ground
-            monitor.check(t, theta, rate, {right.x - x_g - s.b, right.y, left.x - x_g + s.b, left.y},
-                          upper ? clockwise_angle(upper) : kNoTheta2);
+        auto state = [&](dBodyID body) {  // relative to the (moving) ground
+            const dReal *c = dBodyGetPosition(body), *v = dBodyGetLinearVel(body);
+            return BlockState{c[0] - x_g, c[1], clockwise_angle(body), v[0] - v_g, v[1], -dBodyGetAngularVel(body)[2]};
+        };
+        const auto verdict = monitor.check(t, {state(lower), upper ? state(upper) : kNoBlock});
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

@@ -444,10 +444,12 @@ Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex,
             if (t_solver_failures > 0)
                 throw EngineFailure(
                     fmt::format("Siconos: the one-step contact problem was not solved at t = {:.6g} s", t));
-            const Vec2 right = w.world_point(kLower, {s.b, -s.h_lower}), left = w.world_point(kLower, {-s.b, -s.h_lower});
-            const auto verdict = monitor.check(t, -w.q().getValue(2), -w.v().getValue(2),
-                                               {right.x - s.b, right.y, left.x + s.b, left.y},
-                                               vssw ? -w.q().getValue(5) : kNoTheta2);
+            auto state = [&](int body) {
+                const unsigned k = 3u * static_cast<unsigned>(body);
+                return BlockState{w.q().getValue(k), w.q().getValue(k + 1), -w.q().getValue(k + 2),
+                                  w.v().getValue(k), w.v().getValue(k + 1), -w.v().getValue(k + 2)};
+            };
+            const auto verdict = monitor.check(t, {state(kLower), vssw ? state(kUpper) : kNoBlock});
             if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
             if (RunMonitor::ends_run(verdict, out)) return out;
         }

@@ -341,7 +341,8 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
     const long n_reports = std::lround(ex.t_end / dt);
     record(0.0);
     // dt is the reporting interval: CPodes sees the ground motion between reports at steps of its own choosing.
-    RunMonitor monitor(kName, scene, ex, dt, knobs.limits, false);
+    // The corner spheres keep every contact r apart (the monitor's contact gap).
+    RunMonitor monitor(kName, scene, ex, dt, knobs.limits, false, r);
     for (long i = 1; i <= n_reports; ++i) {
         const double t = std::min(static_cast<double>(i) * dt, ex.t_end);
         // stepTo returns early at the start of the run (StartOfContinuousInterval, nothing integrated) and when the
@@ -367,13 +368,8 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
 
         const SimTK::State& now = integ->getState();
         w.system().realize(now, SimTK::Stage::Velocity);
-        const double theta = clockwise_angle(lower, now);
-        const double rate = -lower.getBodyAngularVelocity(now)[2];
-        // Base corners = sphere centres; their heights above the ground less r (negative: penetration).
-        const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
-        const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
-        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1] - r, left[0] + s.b, left[1] - r},
-                                           vssw ? clockwise_angle(upper, now) : kNoTheta2);
+        const auto verdict =
+            monitor.check(t, {block_state(lower, now), vssw ? block_state(upper, now) : kNoBlock});
         if (RunMonitor::records(i, n_reports, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

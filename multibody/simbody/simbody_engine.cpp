@@ -341,12 +341,8 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
 
         const SimTK::State& now = ts.getState();
         w.system().realize(now, SimTK::Stage::Velocity);
-        const double theta = clockwise_angle(lower, now);
-        const double rate = -lower.getBodyAngularVelocity(now)[2];
-        const SimTK::Vec3 right = world_point(lower, now, s.b, -s.h_lower);
-        const SimTK::Vec3 left = world_point(lower, now, -s.b, -s.h_lower);
-        const auto verdict = monitor.check(t, theta, rate, {right[0] - s.b, right[1], left[0] + s.b, left[1]},
-                                           vssw ? clockwise_angle(upper, now) : kNoTheta2);
+        const auto verdict =
+            monitor.check(t, {block_state(lower, now), vssw ? block_state(upper, now) : kNoBlock});
         if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
         if (RunMonitor::ends_run(verdict, out)) return out;
     }

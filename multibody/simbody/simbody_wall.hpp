@@ -10,6 +10,7 @@
 
 #include "multibody/engine.hpp"
 #include "multibody/scene_geometry.hpp"
+#include "multibody/wall_parts.hpp"
 
 namespace vssw::multibody::simbody_wall {
 
@@ -59,6 +60,12 @@ inline double clockwise_angle(const SimTK::MobilizedBody& body, const SimTK::Sta
 // A point of a body (body coordinates lx, ly) in the world.
 inline SimTK::Vec3 world_point(const SimTK::MobilizedBody& body, const SimTK::State& s, double lx, double ly) {
     return body.findStationLocationInGround(s, SimTK::Vec3(lx, ly, 0));
+}
+
+// A block as RunMonitor reads it (its origin is its centre; the ground does not move in either route).
+inline BlockState block_state(const SimTK::MobilizedBody& body, const SimTK::State& s) {
+    const SimTK::Vec3 c = body.getBodyOriginLocation(s), v = body.getBodyOriginVelocity(s);
+    return {c[0], c[1], clockwise_angle(body, s), v[0], v[1], -body.getBodyAngularVelocity(s)[2]};
 }
 
 // The wall as a sampler of states: its bodies and the heights of its centres and top at rest (from which the

@@ -277,3 +277,86 @@ def test_progress_true_drives_a_tqdm_bar(monkeypatch):
     monkeypatch.setitem(sys.modules, "tqdm.auto", module)
     vssw.compare(["analytic"], **FIG6, progress=True)
     assert updates == [(0, 1), (1, 1), "closed"]
+
+
+# Bad input to the typed API, refused as the command line refuses it (the second sweep's finding 17): one test per
+# class. A study small enough to run in a second: the analytic model's Fig. 6 period.
+SMALL_STUDY = {"name": "small", "wall": FIG6, "excitation": {"kind": "free", "theta0": 0.5}, "metrics": ["period"]}
+
+
+def test_a_list_of_names_refuses_an_empty_list_an_empty_item_and_a_repeated_name():
+    for engine, named in [(["ode", "ode"], "'ode' more than once"), ([], "empty list"), ("ode,", "empty item"),
+                          ("ode,ode", "'ode' more than once")]:
+        with pytest.raises(vssw.InputError, match=named):
+            vssw.compare(engine, **FIG6)
+    with pytest.raises(vssw.InputError, match="cases: an empty list"):
+        vssw.report(cases=[])
+    with pytest.raises(vssw.InputError, match="engines names 'ode' more than once"):
+        vssw.report(engines=["ode", "ode"], cases=["fig6-vssw"])
+
+
+def test_one_engine_that_fails_under_a_ground_motion_raises_as_in_free_vibration():
+    # A slide limit far below the contacts' jitter fails every run at once (multibody/run_monitor.cpp).
+    with pytest.raises(vssw.SimulationError, match="ode: .*slid"):
+        vssw.compare("ode", **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5, settings={"slide_limit": 1e-12})
+    several = vssw.compare(["ode"], **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5,
+                           settings={"slide_limit": 1e-12})
+    assert several[0].engine.status.startswith("failed") and math.isnan(several[0].engine.peak)
+
+
+def test_nan_is_refused_in_every_numeric_argument_even_one_the_call_ignores():
+    with pytest.raises(vssw.InputError, match="hinge: NaN"):
+        vssw.simulate("analytic", model="parapet", height=0.9, thickness=0.11, hinge=math.nan, theta0=0.5)
+    with pytest.raises(vssw.InputError, match="dt: NaN"):
+        vssw.compare("analytic", **FIG6, dt=math.nan)
+    with pytest.raises(vssw.InputError, match="settings.*NaN"):
+        vssw.simulate("ode", **FIG6, theta0=0.5, settings={"erp": "nan"})
+
+
+def test_progress_is_a_callable_or_a_switch_and_what_it_raises_reaches_the_caller(tmp_path):
+    for call in [lambda: vssw.compare("analytic", **FIG6, progress=123),
+                 lambda: vssw.study(SMALL_STUDY, out=tmp_path / "typeerror", progress="yes")]:
+        with pytest.raises(TypeError, match="progress"):
+            call()
+    assert not (tmp_path / "typeerror").exists(), "refused before anything ran"
+
+    class Stop(Exception):
+        pass
+
+    def stop(done, total, what):
+        raise Stop(what)
+
+    for call in [lambda: vssw.compare("analytic", **FIG6, progress=stop),
+                 lambda: vssw.study(SMALL_STUDY, out=tmp_path / "raised", threads=1, progress=stop)]:
+        with pytest.raises(Stop):
+            call()
+
+
+def test_a_study_dict_names_the_key_of_a_value_no_study_file_can_hold():
+    for study, key in [({**SMALL_STUDY, "wall": {**FIG6, "height": math.nan}}, r"study\['wall'\]\['height'\]"),
+                       ({**SMALL_STUDY, "name": "a\udc80b"}, r"study\['name'\]: .*surrogate"),
+                       ({**SMALL_STUDY, "name": "a\x00b"}, r"study\['name'\]: .*NUL"),
+                       ({**SMALL_STUDY, "metrics": [b"period"]}, r"study\['metrics'\]\[0\]: a bytes")]:
+        for function in [vssw.study, vssw.cli.study]:
+            with pytest.raises(vssw.InputError, match=key) as raised:
+                function(study)
+            assert "study.json" not in str(raised.value), "named by its key, not by a temporary file"
+
+
+def test_fraction_and_decimal_are_numbers_taken_as_the_nearest_float():
+    from decimal import Decimal
+    from fractions import Fraction
+
+    plain = vssw.simulate("analytic", **FIG6, theta0=0.5, t_end=0.5)
+    for height in [Fraction(4), Decimal("4")]:
+        r = vssw.simulate("analytic", height=height, thickness=0.4, hinge=0.7, theta0=0.5, t_end=0.5)
+        np.testing.assert_array_equal(r.theta1, plain.theta1)
+    with pytest.raises(vssw.InputError, match="NaN"):
+        vssw.simulate("analytic", height=Decimal("NaN"), thickness=0.4, hinge=0.7, theta0=0.5)
+    s = vssw.study({**SMALL_STUDY, "wall": {**FIG6, "height": Decimal("4")}}, threads=1)
+    try:
+        assert (s.results["status"] == "ok").all()
+    finally:
+        import shutil
+
+        shutil.rmtree(s.folder)

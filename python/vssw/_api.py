@@ -1,6 +1,8 @@
 """The typed API over the library (docs/guide/python.md): simulate, compare, study, report, engines, engine_settings."""
 
+import decimal
 import json
+import math
 import numbers
 import os
 import pathlib
@@ -18,14 +20,39 @@ _DENSITY = 1800.0  # kg/m^3, brick masonry (analytic/wall.hpp kDefaultDensity)
 _GRAVITY = 9.81  # m/s^2 (analytic/wall.hpp kDefaultGravity)
 
 
+def _is_number(value):
+    """A Python, NumPy, Fraction or Decimal number (each taken as the nearest float), not a bool."""
+    return not isinstance(value, bool) and isinstance(value, (numbers.Real, decimal.Decimal))
+
+
 def _number(name, value, optional=False):
-    """A float from a Python or NumPy number; InputError naming the parameter otherwise."""
+    """A float from a number (_is_number); InputError naming the parameter otherwise, and for NaN even where the
+    value would be ignored (as the command line refuses NaN in every option)."""
     if value is None and optional:
         return None
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+    if not _is_number(value):
         raise InputError(f"{name}: a number is expected, got {type(value).__name__} {value!r}",
                          _core.EXIT_BAD_INPUT)
+    if math.isnan(value):
+        raise InputError(f"{name}: NaN is not a number vssw takes", _core.EXIT_BAD_INPUT)
     return float(value)
+
+
+def _names(name, value):
+    """A list of names (a list, or a comma-separated str) as the command line's list options take them: none empty,
+    none repeated, and the list not empty; InputError naming the parameter and the item otherwise."""
+    items = value.split(",") if isinstance(value, str) else list(value)
+    for item in items:
+        if not isinstance(item, str) or "\x00" in item:
+            raise InputError(f"{name}: names are expected, got {type(item).__name__} {item!r}", _core.EXIT_BAD_INPUT)
+    if not items:
+        raise InputError(f"{name}: an empty list; name at least one", _core.EXIT_BAD_INPUT)
+    for i, item in enumerate(items):
+        if item == "":
+            raise InputError(f"{name} has an empty item in {value!r}", _core.EXIT_BAD_INPUT)
+        if item in items[:i]:
+            raise InputError(f"{name} names {item!r} more than once", _core.EXIT_BAD_INPUT)
+    return items
 
 
 def _integer(name, value):
@@ -41,8 +68,8 @@ def _word(name, value, default):
     """A choice as the library reads it ("exact", "eq19", ...); an impact law may also be a number (e = 0.6)."""
     if value is None:
         return default
-    if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        return repr(float(value))
+    if _is_number(value):
+        return repr(_number(name, value))
     if not isinstance(value, str) or value == "" or "\x00" in value:
         raise InputError(f"{name}: a word is expected, got {type(value).__name__} {value!r}", _core.EXIT_BAD_INPUT)
     return value
@@ -150,11 +177,20 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
     return simulation_from(result)
 
 
+def _progress(progress):
+    """progress as given; TypeError unless True, False, None or a callable (checked before anything runs)."""
+    if not (progress is None or isinstance(progress, bool) or callable(progress)):
+        raise TypeError(f"progress: True, False, None or a callable is expected, got {type(progress).__name__} "
+                        f"{progress!r}")
+    return progress
+
+
 class _Bar:
     """progress=True: a tqdm bar where tqdm is installed, else a line on stderr rewritten in place; a callable: called
     as progress(done, total, what); False or None: nothing."""
 
     def __init__(self, progress, description):
+        _progress(progress)
         self.user = progress if callable(progress) else None
         self.bar = None
         self.line = bool(progress) and self.user is None
@@ -195,13 +231,17 @@ class _Bar:
 
 
 def _engine_list(engine):
+    """The engines named and whether several were asked for (a list or a comma-separated str: a list comes back)."""
     if isinstance(engine, str):
         if engine == "all":
             return list(_core.default_compared_engines()), True
         if "," in engine:
-            return [e.strip() for e in engine.split(",") if e.strip()], True
-        return [engine], False
-    return [_word("engine", e, None) for e in engine], True
+            return _names("engine", ",".join(e.strip() for e in engine.split(","))), True
+        return [_word("engine", engine, None)], False
+    if not isinstance(engine, (list, tuple)):
+        raise InputError(f"engine: a name or a list of names is expected, got {type(engine).__name__}",
+                         _core.EXIT_BAD_INPUT)
+    return _names("engine", engine), True
 
 
 def _check_engines(names):
@@ -260,6 +300,7 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
         as progress(done, total, engine).
     A metric that could not be measured is NaN with its reason in `failures` (`vssw compare` exits 3 then).
     Raises InputError naming a bad value before any engine runs; SimulationError when the one engine asked fails."""
+    _progress(progress)
     names, several = _engine_list(engine)
     wall = _wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller)
     motion = dict(scale=scale, pga=pga, amplitude=amplitude, pulse_period=pulse_period, duration=duration)
@@ -288,6 +329,10 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
                 run_budget=_number("run_budget", run_budget, True)))
             bar(1, 1, "done")
         comparisons = response_comparisons_from(result)
+        status = comparisons[0].engine.status
+        if not several and status != "ok":  # one engine: its failure is the call's, as in the free vibration
+            raise SimulationError(f"{names[0]}: {status.partition('failed: ')[2] or status}",
+                                  _core.EXIT_SIMULATION_FAILED)
         return comparisons if several else comparisons[0]
     theta0 = 0.5 if theta0 is None else theta0
     arguments = dict(wall=wall, theta0=_number("theta0", theta0), dt=_number("dt", dt, True),
@@ -372,13 +417,11 @@ def study(file, out=None, *, threads=None, shard=None, resume=False, force=False
     progress: True shows a bar over the tasks (tqdm when installed, else a line on stderr); a callable is called as
         progress(done, total, what).
     Returns a vssw.StudyResult: results (results.csv as a pandas DataFrame), folder, summary (the JSON summary)."""
+    _progress(progress)
     folder = _folder(out, "vssw-study-")
     with tempfile.TemporaryDirectory(prefix="vssw-study-file-") as scratch:
         if isinstance(file, dict):
-            path = os.path.join(scratch, "study.json")
-            with open(path, "w", encoding="utf-8") as f:
-                json.dump({**cli._absolute_record_paths(file), "name": file.get("name", "study")}, f)
-            file = path
+            file = cli._study_file_of(file, scratch)
         options = dict(threads=threads, shard=shard, resume=resume, force=force, strict=strict,
                        no_plots=not (plots if plots is not None else out is not None), gnuplot=gnuplot,
                        run_budget=run_budget)
@@ -387,11 +430,9 @@ def study(file, out=None, *, threads=None, shard=None, resume=False, force=False
     return StudyResult(results=_read_csv(folder / "results.csv"), folder=folder, summary=summary)
 
 
-def _joined(names):
-    """A list of names as one comma-separated option value (a str as it is; None or empty: the option left out)."""
-    if not names:
-        return None
-    return names if isinstance(names, str) else ",".join(names)
+def _joined(name, names):
+    """A list of names (_names) as one comma-separated option value; None: the option left out."""
+    return None if names is None else ",".join(_names(name, names))
 
 
 def report(out=None, *, suite="default", engines=None, cases=None, threads=None, plots=None, earthquake=None,
@@ -412,8 +453,9 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
     each a pandas DataFrame, and the folder, report.md and report.html paths."""
     import pandas as pd
 
+    _progress(progress)
     folder = _folder(out, "vssw-report-")
-    options = dict(suite=suite, engines=_joined(engines), cases=_joined(cases),
+    options = dict(suite=suite, engines=_joined("engines", engines), cases=_joined("cases", cases),
                    threads=threads, no_plots=not (plots if plots is not None else out is not None),
                    earthquake=earthquake, bench=bench, gnuplot=gnuplot, data=data, run_budget=run_budget)
     summary = _run_into(folder, out, ["report", f"--out={folder}", *cli._arguments(options)], progress, "report")

@@ -25,7 +25,9 @@ a failed simulation (3) SimulationError, a RuntimeError; a bound out in `check` 
 from vssw.Error and keep the exit code, the program's stderr and, where the command printed one, its JSON (result).
 """
 
+import decimal as _decimal
 import json as _json
+import math as _math
 import numbers as _numbers
 import os as _os
 import tempfile as _tempfile
@@ -260,6 +262,43 @@ def _absolute_record_paths(spec):
     return spec
 
 
+def _study_value(where, value):
+    """A study dict's value as JSON holds it, checked where the file written from it could not say which key was
+    wrong: NaN, infinities, a NUL or a lone surrogate in a string, a type JSON has no value for. Fraction and Decimal
+    are numbers (the nearest float), as the typed API takes them. InputError naming the key (study['walls']...)."""
+    if value is None or isinstance(value, bool):
+        return value
+    if isinstance(value, str):
+        if "\x00" in value:
+            raise _bad_value(where, f"a string with a NUL character: {value!r}")
+        try:
+            value.encode("utf-8")
+        except UnicodeEncodeError:
+            raise _bad_value(where, f"a string that is not valid Unicode (a lone surrogate): {value!r}") from None
+        return value
+    if isinstance(value, _numbers.Integral):
+        return int(value)
+    if isinstance(value, (_numbers.Real, _decimal.Decimal)):
+        if not _math.isfinite(value):
+            raise _bad_value(where, f"{value!r} is not a finite number")
+        return float(value)
+    if isinstance(value, dict):
+        return {_study_value(f"{where} key", key): _study_value(f"{where}[{key!r}]", item)
+                for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_study_value(f"{where}[{i}]", item) for i, item in enumerate(value)]
+    raise _bad_value(where, f"a {type(value).__name__} is not a value a study file holds: {value!r}")
+
+
+def _study_file_of(spec, folder):
+    """A study given as a dict, checked (_study_value) and written as study.json into `folder`; its path."""
+    spec = _study_value("study", {**_absolute_record_paths(spec), "name": spec.get("name", "study")})
+    path = _os.path.join(folder, "study.json")
+    with open(path, "w", encoding="utf-8") as f:
+        _json.dump(spec, f, allow_nan=False)
+    return path
+
+
 def study(file, out=None, **options):
     """`vssw study`: `file` is a study file (.toml or .json, README "Studies") or a dict of its keys (a relative
     record `file` in it is read from the current directory). Writes the study folder into `out` (plots and prose
@@ -270,11 +309,7 @@ def study(file, out=None, **options):
     _reserved(options, ["json"])
     with _tempfile.TemporaryDirectory(prefix="vssw-study-") as scratch:
         if isinstance(file, dict):
-            name = file.get("name", "study")
-            path = _os.path.join(scratch, "study.json")
-            with open(path, "w", encoding="utf-8") as f:
-                _json.dump({**_absolute_record_paths(file), "name": name}, f)
-            file = path
+            file = _study_file_of(file, scratch)
         folder = _os.fspath(out) if out is not None else _os.path.join(scratch, "out")
         if out is None:
             options.setdefault("no_plots", True)
