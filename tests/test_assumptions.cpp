@@ -70,9 +70,27 @@ TEST(EnergyWatch, ARunPastTheCeilingIsAFailureNamingTimeAndError) {
         const std::string what = e.what();
         EXPECT_NE(what.find("at t = "), std::string::npos) << what;
         EXPECT_NE(what.find("ceiling 1e-12"), std::string::npos) << what;
+        EXPECT_NE(what.find(energy_failure_remedy(o)), std::string::npos) << what;
+        EXPECT_NE(what.find("a tighter one may help"), std::string::npos) << what;  // 1e-5 can leave 1e-12
     }
     o.energy_ceiling = 2.0;
     EXPECT_THROW(free_vibration(*m, 0.5 * m->reference_angle(), o), InputError);
+}
+
+// A tighter tolerance is suggested only where the integrator's error (up to 100 rtol) can reach the ceiling: the
+// micro-rocking failures of the unilateral roller gave the same error at rtol 1e-8 to 1e-12, while the message said
+// a tighter one may help.
+TEST(EnergyWatch, TheFailureSuggestsATighterToleranceOnlyWhereItCanHelp) {
+    SimulationOptions o;  // rtol 1e-10, ceiling 1e-6
+    EXPECT_NE(energy_failure_remedy(o).find("a tighter one gives the same failure"), std::string::npos);
+    for (double rtol : {1e-8, 1e-6, 1e-3}) {
+        o.step.rtol = rtol;
+        EXPECT_NE(energy_failure_remedy(o).find("a tighter one may help"), std::string::npos) << rtol;
+    }
+    o.step.rtol = 1e-9;
+    EXPECT_EQ(energy_failure_remedy(o).find("may help"), std::string::npos);
+    o.energy_ceiling = 1e-8;  // a ceiling as low as the integrator's error at this tolerance: it may help again
+    EXPECT_NE(energy_failure_remedy(o).find("a tighter one may help"), std::string::npos);
 }
 
 // h1/h -> 1 once ended in "step size underflow" (free from 0.5 alpha1 at t = 476 s; history under Rinaldi). Both
