@@ -33,6 +33,7 @@
 #include "apps/compare_response.hpp"
 #include "apps/ground_motion_options.hpp"
 #include "apps/progress.hpp"
+#include "io/text.hpp"
 #include "apps/wall_options.hpp"
 #include "compare/experiments.hpp"
 #include "compare/metrics.hpp"
@@ -443,9 +444,11 @@ py::list engine_settings(const std::string& engine_name) {
 
 // Raises `name` of the vssw package (InputError, SimulationError) with the library's message, as the Python layer
 // raises it for the program's errors: Error(message, code, stderr).
+// The message as the program prints it (io/text.hpp printable): an input's control characters and bytes that are not
+// UTF-8 escaped, so that it is a valid str and shows nothing a terminal would act on.
 void raise_package_error(const char* name, int code, const char* message) {
     const py::object cls = py::module_::import("vssw").attr(name);
-    const py::object exc = cls(message, code, "");
+    const py::object exc = cls(vssw::study::printable(message), code, "");
     PyErr_SetObject(cls.ptr(), exc.ptr());
 }
 
