@@ -9,9 +9,15 @@
 
 namespace vssw::cli {
 
-inline void print_message_line(std::ostream& err, const char* kind, std::string text) {
+// The text of a message as the program shows it (also the Python module's exceptions): its trailing line break
+// dropped, then control characters and bytes that are not UTF-8 escaped.
+inline std::string message_text(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
-    err << "vssw: " << kind << ": " << study::printable(text) << '\n';
+    return study::printable(text);
+}
+
+inline void print_message_line(std::ostream& err, const char* kind, const std::string& text) {
+    err << "vssw: " << kind << ": " << message_text(text) << '\n';
 }
 
 }  // namespace vssw::cli
