@@ -9,6 +9,7 @@
 
 #include "analytic/error.hpp"
 #include "apps/option_values.hpp"
+#include "io/text.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -33,6 +34,22 @@ bool takes_value(const CLI::Option& option) {
            std::min(option.get_type_size_min(), option.get_items_expected_min()) > 0;
 }
 
+// Words that are not UTF-8 are refused before anything runs: a path or a name goes into the JSON outputs, the
+// journal's study and the pages, all UTF-8; such a byte failed only when the JSON was written, after the whole run.
+// `cmd` is the command the words belong to, to name the option whose value the word is.
+void require_utf8_word(const CLI::App& cmd, const char* const* argv, int i) {
+    const std::string word = argv[i];
+    const auto mistake = study::not_utf8(word);
+    if (!mistake) return;
+    const std::size_t equals = word.find('=');
+    const CLI::Option* option = nullptr;
+    if (word.rfind("--", 0) == 0 && equals != std::string::npos) option = cmd.get_option_no_throw(word.substr(0, equals));
+    else if (i > 1) option = cmd.get_option_no_throw(argv[i - 1]);
+    const std::string what = option != nullptr && takes_value(*option) ? "the value of " + option->get_name() + ", "
+                                                                       : "the argument ";
+    throw InputError(fmt::format("{}{}: vssw writes paths and names as UTF-8 (JSON, pages); rename it", what, *mistake));
+}
+
 }  // namespace
 
 void check_argument_words(const CLI::App& app, int argc, const char* const* argv) {
@@ -48,6 +65,7 @@ void check_argument_words(const CLI::App& app, int argc, const char* const* argv
         ++i;
     }
     const std::string help = command + " --help";
+    for (int k = i; k < argc; ++k) require_utf8_word(*cmd, argv, k);
     for (; i < argc; ++i) {
         const std::string word = argv[i];
         if (word == "--") break;  // what follows are positional arguments

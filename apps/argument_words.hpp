@@ -7,6 +7,7 @@ class App;
 namespace vssw::cli {
 
 // InputError naming the word when one of the command's words is
+// - not UTF-8 (a path with the byte 0xff): the JSON outputs and pages hold every path and name as UTF-8;
 // - a single-dash word of several letters ("-height 4"): CLI11 reads it as the short flags -h -e -i ..., so it printed
 //   the help and exited 0; "unknown option -height; did you mean --height?";
 // - an option given without its value before another option ("--height --thickness=0.4"): CLI11 takes the next word as

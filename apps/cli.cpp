@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <new>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -14,20 +15,18 @@
 #include "validation/bounds_violated.hpp"
 #include "apps/commands.hpp"
 #include "apps/early_output.hpp"
+#include "apps/message_line.hpp"
 #include "apps/option_values.hpp"
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/version_text.hpp"
 #include "multibody/run_budget.hpp"
-#include "io/text.hpp"
 
 namespace vssw::cli {
 namespace {
 
-using study::one_line;  // error messages are one line, whatever the text that raised them holds
-
 int fail(std::ostream& err, const char* kind, const std::string& message, int code) {
-    err << "vssw: " << kind << ": " << one_line(message) << '\n';
+    print_message_line(err, kind, message);
     return code;
 }
 
@@ -127,6 +126,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
         return fail(err, "check failed", e.what(), kExitOutOfBounds);
     } catch (const SimulationFailure& e) {
         return fail(err, "simulation failed", e.what(), kExitSimulationFailed);
+    } catch (const std::bad_alloc&) {
+        // Not bad input: the machine (or the process's limit, ulimit -v) had no more memory for this run.
+        return fail(err, "error", "out of memory: the run needed more than this process may allocate", kExitSimulationFailed);
     } catch (const std::exception& e) {
         return fail(err, "error", e.what(), kExitBadInput);
     } catch (...) {

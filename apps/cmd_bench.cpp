@@ -14,10 +14,12 @@
 
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
+#include "apps/message_line.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
 #include "apps/simulation_failure.hpp"
 #include "compare/targets.hpp"
+#include "io/json.hpp"
 #include "validation/work_precision.hpp"
 #include "multibody/engine.hpp"
 #include "validation/bench_files.hpp"
@@ -131,9 +133,9 @@ Command add_bench_command(CLI::App& root) {
                 const study::PlotResult plots =
                     study::write_bench(data, staged.path(), o->no_plots ? std::string() : o->gnuplot);
                 staged.commit();
-                if (!o->no_plots && !plots.note.empty()) err << "vssw: warning: " << plots.note << '\n';
+                if (!o->no_plots && !plots.note.empty()) print_message_line(err, "warning", plots.note);
                 if (o->json) {
-                    out << study::bench_json(data).dump(2) << '\n';
+                    out << study::dump_json(study::bench_json(data), 2) << '\n';
                     return;
                 }
                 out << fmt::format("vssw bench: {} point{}, {} repeat{} each; files in {}\n", data.points.size(),

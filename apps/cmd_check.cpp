@@ -181,7 +181,7 @@ void run_check(const CheckOptions& o, std::ostream& out) {
     verdicts.insert(verdicts.end(), earthquake_verdicts.begin(), earthquake_verdicts.end());
     const auto out_of_bounds = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.held; });
     if (o.json) {
-        out << verdicts_json(verdicts, results, o.bounds, bounds.suite).dump(2) << '\n';
+        out << study::dump_json(verdicts_json(verdicts, results, o.bounds, bounds.suite), 2) << '\n';
     } else {
         out << fmt::format("vssw check: {} ({} cases, engines: analytic{}{}; {:.1f} s on {} threads)\n\n", o.bounds,
                            suite.cases.size(), engines.empty() ? "" : ", ", fmt::join(engines, ", "),

@@ -25,6 +25,7 @@
 #include "apps/wall_options.hpp"
 #include "apps/run_budget_option.hpp"
 #include "compare/experiments.hpp"
+#include "io/json.hpp"
 #include "study/response_comparison.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
@@ -161,7 +162,7 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
         print_compare(out, run, reference);  // as each engine ends: a long run shows its progress
     }
     if (o.json)
-        out << (several ? to_json(runs, reference, seconds_since(start)) : to_json(runs.front(), reference)).dump(2)
+        out << study::dump_json(several ? to_json(runs, reference, seconds_since(start)) : to_json(runs.front(), reference), 2)
             << '\n';
 
     std::vector<std::string> why;

@@ -12,6 +12,7 @@
 #include "apps/model_validity.hpp"
 #include "apps/free_output.hpp"
 #include "apps/trajectory_csv.hpp"
+#include "io/json.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -67,7 +68,7 @@ Command add_free_command(CLI::App& root) {
                 csv.write(out, *run.model, run.result);
                 std::ostream& summary = csv.summary(out, err);
                 if (o->json) {
-                    summary << to_json(run).dump(2) << '\n';
+                    summary << study::dump_json(to_json(run), 2) << '\n';
                 } else {
                     print_free_summary(summary, run, "Free vibration of the " + describe_wall(o->wall, run.kind));
                     print_free_impacts(summary, run, kImpactRowsShown);

@@ -13,6 +13,7 @@
 #include "apps/model_validity.hpp"
 #include "apps/history_output.hpp"
 #include "apps/trajectory_csv.hpp"
+#include "io/json.hpp"
 
 namespace vssw::cli {
 
@@ -70,7 +71,7 @@ Command add_history_command(CLI::App& root) {
                 csv.write(out, *run.chosen.model, run.result);
                 std::ostream& summary = csv.summary(out, err);
                 if (o->json)
-                    summary << to_json(run).dump(2) << '\n';
+                    summary << study::dump_json(to_json(run), 2) << '\n';
                 else
                     print_history_summary(summary, run,
                                           "Time history of the " + describe_wall(o->wall, run.chosen.kind));

@@ -21,6 +21,7 @@
 #include "apps/progress.hpp"
 #include "apps/table.hpp"
 #include "io/csv.hpp"
+#include "io/json.hpp"
 #include "motions/measures.hpp"
 #include "motions/motion_set.hpp"
 
@@ -91,7 +92,7 @@ void run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (o.json) {
         nlohmann::json j = {{"out", o.out}, {"count", rows.size()}, {"seed", request.seed}, {"seconds", seconds}};
-        out << j.dump(2) << '\n';
+        out << study::dump_json(j, 2) << '\n';
         return;
     }
     Table t("Generated motions (Rezaeian & Der Kiureghian model)");
@@ -135,7 +136,7 @@ void run_describe(const DescribeOptions& o, std::ostream& out) {
                             {"t_mid_s", number_or_null(m.t_mid_s)},
                             {"mid_frequency_hz", number_or_null(m.mid_frequency_hz)},
                             {"duration_s", number_or_null(m.duration_s)}, {"dt_s", number_or_null(m.dt_s)}});
-        out << list.dump(2) << '\n';
+        out << study::dump_json(list, 2) << '\n';
         return;
     }
     std::size_t width = 4;  // the file column fits the longest name given (at least "file")

@@ -19,6 +19,7 @@
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
+#include "apps/message_line.hpp"
 #include "apps/commands.hpp"
 #include "apps/option_values.hpp"
 #include "apps/progress.hpp"
@@ -228,7 +229,7 @@ Command add_report_command(CLI::App& root) {
                 staged.commit();
                 for (std::filesystem::path* p : {&files.dir, &files.markdown, &files.html, &files.json})
                     *p = staged.final_path(*p);
-                for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
+                for (const std::string& w : files.warnings) print_message_line(err, "warning", w);
 
                 out << fmt::format("vssw report: suite {}, {} case{}, {} engine{} besides the analytic model, "
                                    "{:.1f} s on {} thread{}\n",

@@ -19,6 +19,7 @@
 #include "apps/option_values.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/stress_output.hpp"
+#include "io/json.hpp"
 #include "multibody/engine.hpp"
 #include "stress/run.hpp"
 #include "io/atomic_file.hpp"
@@ -71,12 +72,12 @@ void run_stress(const StressOptions& o, std::ostream& out) {
     if (!o.out_dir.empty()) {
         study::StagedFolder staged(o.out_dir, study::OutKind::stress);
         staged.create();
-        study::write_file(staged.path() / "stress.json", [&](std::ostream& f) { f << doc.dump(2) << '\n'; });
+        study::write_file(staged.path() / "stress.json", [&](std::ostream& f) { f << study::dump_json(doc, 2) << '\n'; });
         study::write_file(staged.path() / "stress.csv", [&](std::ostream& f) { write_stress_csv(f, report); });
         study::write_file(staged.path() / "stress.md", [&](std::ostream& f) { write_stress_md(f, report); });
         staged.commit();
     }
-    if (o.json) out << doc.dump(2) << '\n';
+    if (o.json) out << study::dump_json(doc, 2) << '\n';
     else write_stress_table(out, report);
     std::vector<std::string> unsafe;
     for (const auto& c : report.cases)

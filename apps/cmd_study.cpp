@@ -19,6 +19,7 @@
 #include <CLI/CLI.hpp>
 
 #include "analytic/error.hpp"
+#include "apps/message_line.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "apps/json.hpp"
@@ -134,13 +135,13 @@ void run_merge(const StudyOptions& o, std::ostream& out, std::ostream& err) {
     options.gnuplot = o.gnuplot;
     const study::OutputFiles files = as_committed(study::write_study_outputs(staged.path(), options), staged);
     staged.commit();
-    for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
+    for (const std::string& w : files.warnings) print_message_line(err, "warning", w);
     if (o.json) {
         Json files_json = Json::array();
         for (const auto& f : files.written) files_json.push_back(f.string());
-        out << Json{{"out", o.out}, {"shards", merged.shards}, {"rows", merged.rows},
-                    {"failed_rows", merged.failed_rows}, {"files", files_json}}
-                   .dump(2)
+        out << study::dump_json(Json{{"out", o.out}, {"shards", merged.shards}, {"rows", merged.rows},
+                                     {"failed_rows", merged.failed_rows}, {"files", files_json}},
+                                2)
             << '\n';
         return;
     }
@@ -216,7 +217,7 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
     options.gnuplot = o.gnuplot;
     const study::OutputFiles files = as_committed(study::write_study_outputs(staged->path(), options), *staged);
     staged->commit();
-    for (const std::string& w : files.warnings) err << "vssw: warning: " << w << '\n';
+    for (const std::string& w : files.warnings) print_message_line(err, "warning", w);
 
     const study::StudySpec& spec = grid->spec();
     const std::size_t cases = grid->shard_case_ids(run.shard.k, run.shard.n).size();
@@ -224,23 +225,22 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
         Json files_json = Json::array();
         files_json.push_back(o.out + "/results.csv");
         for (const auto& f : files.written) files_json.push_back(f.string());
-        out << Json{{"study", spec.name},
-                    {"file", o.file},
-                    {"out", o.out},
-                    {"identity", grid->identity()},
-                    {"shard", {{"k", run.shard.k}, {"n", run.shard.n}}},
-                    {"cases", cases},
-                    {"runs", grid->runs().size()},
-                    {"tasks_run", result.meta.tasks_run},
-                    {"tasks_resumed", result.meta.tasks_resumed},
-                    {"rows", result.rows},
-                    {"failed_rows", result.failed_rows},
-                    {"wall_time_s", result.meta.wall_time_s},
-                    {"threads", result.meta.threads},
-                    {"processes", result.meta.processes},
-                    {"files", files_json}}
-                   .dump(2)
-            << '\n';
+        const Json summary{{"study", spec.name},
+                           {"file", o.file},
+                           {"out", o.out},
+                           {"identity", grid->identity()},
+                           {"shard", {{"k", run.shard.k}, {"n", run.shard.n}}},
+                           {"cases", cases},
+                           {"runs", grid->runs().size()},
+                           {"tasks_run", result.meta.tasks_run},
+                           {"tasks_resumed", result.meta.tasks_resumed},
+                           {"rows", result.rows},
+                           {"failed_rows", result.failed_rows},
+                           {"wall_time_s", result.meta.wall_time_s},
+                           {"threads", result.meta.threads},
+                           {"processes", result.meta.processes},
+                           {"files", files_json}};
+        out << study::dump_json(summary, 2) << '\n';
     } else {
         out << fmt::format("vssw study {}: {} case{} x {} run{}{}, {} task{} run{} in {:.1f} s ({} thread{}{})\n",
                            spec.name, cases, cases == 1 ? "" : "s", grid->runs().size(),

@@ -11,6 +11,7 @@
 #include "apps/free_output.hpp"
 #include "apps/history_output.hpp"
 #include "apps/wall_output.hpp"
+#include "io/json.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -54,7 +55,7 @@ Command add_summary_command(CLI::App& root) {
 
                 if (o->json) {
                     const Json j = {{"wall", to_json(figures)}, {"free", to_json(free)}, {"history", to_json(history)}};
-                    out << j.dump(2) << '\n';
+                    out << study::dump_json(j, 2) << '\n';
                     return;
                 }
                 out << "vssw summary: the wall of Fig. 6 of Sorrentino, Masiani & Griffith (2008)\n\n";

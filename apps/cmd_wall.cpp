@@ -6,6 +6,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/wall_output.hpp"
+#include "io/json.hpp"
 
 namespace vssw::cli {
 
@@ -29,7 +30,7 @@ Command add_wall_command(CLI::App& root) {
     return {cmd, [o](std::ostream& out) {
                 const WallFigures figures = wall_figures(o->wall);
                 if (o->json)
-                    out << to_json(figures).dump(2) << '\n';
+                    out << study::dump_json(to_json(figures), 2) << '\n';
                 else
                     print_wall(out, figures);
             }};

@@ -60,7 +60,7 @@ void print_response_comparison(const study::ResponseComparison& result, const Mo
         }
         j["runs"] = list;
         j["wall_time_s"] = seconds;
-        out << j.dump(2) << '\n';
+        out << study::dump_json(j, 2) << '\n';
     } else {
         Table t(fmt::format("Engines against the analytic model ({}) from rest under {}", model, motion));
         for (const RunResult& r : runs) {

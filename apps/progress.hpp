@@ -14,6 +14,8 @@
 
 #include <fmt/format.h>
 
+#include "io/text.hpp"
+
 namespace vssw::cli {
 
 // done, total, what: called from the command's worker threads, one call at a time.
@@ -41,16 +43,17 @@ public:
           hook_(progress_hook),
           on_(hook_ != nullptr || (&err == &std::cerr && isatty(STDERR_FILENO) == 1)) {}
     bool on() const { return on_; }
+    // `what` names a case from an input: shown with its control characters escaped (a terminal, or Python's bar).
     void show(long done, long total, const std::string& what) {
         const std::lock_guard<std::mutex> lock(mutex_);
         if (hook_ != nullptr) {
-            (*hook_)(done, total, what);
+            (*hook_)(done, total, study::printable(what));
             return;
         }
         const auto now = std::chrono::steady_clock::now();
         if (done < total && now - last_ < kRedraw) return;
         last_ = now;
-        std::string line = fmt::format("[{}/{}] {}", done, total, what);
+        std::string line = fmt::format("[{}/{}] {}", done, total, study::printable(what));
         if (line.size() > kWidth) line.resize(kWidth);
         err_ << '\r' << line << std::string(shown_ > line.size() ? shown_ - line.size() : 0, ' ') << std::flush;
         shown_ = line.size();

@@ -66,7 +66,7 @@ std::string settings_listing(const std::vector<std::string>& engines, bool json)
         if (json) all.push_back(json_of(*engine));
         else text += (text.empty() ? "" : "\n") + text_of(*engine);
     }
-    if (json) return all.dump(2) + "\n";
+    if (json) return study::dump_json(all, 2) + "\n";
     return text +
            "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its range (both\n"
            "ends included; a value outside it is refused), its meaning.\n"

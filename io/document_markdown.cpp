@@ -1,6 +1,5 @@
 #include "io/document_markdown.hpp"
 
-#include <cctype>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -8,16 +7,19 @@
 namespace vssw::study {
 namespace {
 
-// Text shown as text, not read as HTML: a '<' that would open a tag, a comment or a declaration ("<script", "</",
-// "<!", "<?") is backslash-escaped, so that a name such as "<script>" from a study or suite file cannot put markup into
-// a rendered Markdown page. A '<' before anything else ("< 1 %") stays as it is.
-std::string no_html(const std::string& text) {
+// Text shown as text by every Markdown renderer, whatever it holds: '<', '>' and '&' as HTML entities (CommonMark
+// honours a backslash before '<', Python-Markdown, which MkDocs uses, does not, and a name "<img onerror=...>" became
+// a live tag there), and the characters that make links, images, emphasis and code spans backslash-escaped, an escape
+// every renderer honours for them, so that "[x](javascript:...)" in a name stays text.
+std::string as_text(const std::string& text) {
     std::string s;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char next = i + 1 < text.size() ? text[i + 1] : ' ';
-        if (text[i] == '<' && (std::isalpha(static_cast<unsigned char>(next)) || next == '/' || next == '!' || next == '?'))
-            s += '\\';
-        s += text[i];
+    for (char c : text) {
+        if (c == '<') s += "&lt;";
+        else if (c == '>') s += "&gt;";
+        else if (c == '&') s += "&amp;";
+        else if (c == '[' || c == ']' || c == '(' || c == ')' || c == '*' || c == '_' || c == '`' || c == '\\')
+            s += std::string("\\") + c;
+        else s += c;
     }
     return s;
 }
@@ -25,7 +27,7 @@ std::string no_html(const std::string& text) {
 // Text on one line, for a heading, a list item or a table cell: every control character a space (a line break would
 // end the block and start another).
 std::string line_text(const std::string& text) {
-    std::string s = no_html(text);
+    std::string s = as_text(text);
     for (char& c : s)
         if (static_cast<unsigned char>(c) < 0x20 || c == '\x7f') c = ' ';
     return s;
@@ -37,16 +39,6 @@ std::string cell(const std::string& text) {
     for (char c : line_text(text)) {
         if (c == '|') s += "\\|";
         else s += c;
-    }
-    return s;
-}
-
-// The text of a link or an image's description on one line, its brackets escaped (a ']' would end it).
-std::string link_text(const std::string& text) {
-    std::string s;
-    for (char c : cell(text)) {
-        if (c == '[' || c == ']') s += '\\';
-        s += c;
     }
     return s;
 }
@@ -69,7 +61,7 @@ void write_markdown(std::ostream& out, const Document& doc) {
         out << '\n';
         switch (b.kind) {
             case DocBlock::Kind::heading: out << std::string(static_cast<std::size_t>(b.level), '#') << ' ' << line_text(b.text) << '\n'; break;
-            case DocBlock::Kind::paragraph: out << no_html(b.text) << '\n'; break;
+            case DocBlock::Kind::paragraph: out << as_text(b.text) << '\n'; break;
             case DocBlock::Kind::list:
                 for (const std::string& item : b.items) out << "- " << line_text(item) << '\n';
                 break;
@@ -89,11 +81,11 @@ void write_markdown(std::ostream& out, const Document& doc) {
                 for (std::size_t i = 0; i < doc.blocks.size(); ++i) {
                     const DocBlock& h = doc.blocks[i];
                     if (h.kind != DocBlock::Kind::heading || h.level < 2 || h.level > 3) continue;
-                    out << (h.level == 2 ? "- " : "  - ") << '[' << link_text(h.text) << "](#" << anchors[i] << ")\n";
+                    out << (h.level == 2 ? "- " : "  - ") << '[' << cell(h.text) << "](#" << anchors[i] << ")\n";
                 }
                 break;
             case DocBlock::Kind::plot:
-                out << "![" << link_text(b.text) << "](plots/" << b.plot_name << ".svg)\n";
+                out << "![" << cell(b.text) << "](plots/" << b.plot_name << ".svg)\n";
                 break;
         }
     }

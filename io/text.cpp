@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 
 #include <fmt/format.h>
 
@@ -32,6 +33,62 @@ std::string file_stem(const std::string& case_id) {
     for (char& c : s) {
         if (c == '/') c = '_';
         else if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '-';
+    }
+    return s;
+}
+
+namespace {
+
+// The length of the well-formed UTF-8 character at text[i] (1 to 4), or 0 when the bytes there are not one: a stray
+// continuation byte, a truncated sequence, an overlong form, a surrogate or a code point above U+10FFFF. The code
+// point is stored in *code.
+std::size_t utf8_char(std::string_view text, std::size_t i, std::uint32_t* code) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char c = byte(i);
+    const std::size_t n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
+    if (n == 0 || i + n > text.size()) return 0;
+    std::uint32_t cp = n == 1 ? c : c & (0x7Fu >> n);
+    for (std::size_t k = 1; k < n; ++k) {
+        if ((byte(i + k) & 0xC0) != 0x80) return 0;
+        cp = (cp << 6) | (byte(i + k) & 0x3Fu);
+    }
+    constexpr std::uint32_t kLeast[] = {0, 0, 0x80, 0x800, 0x10000};  // below these, a shorter form exists (overlong)
+    if (cp < kLeast[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+    *code = cp;
+    return n;
+}
+
+}  // namespace
+
+std::optional<std::string> not_utf8(std::string_view text) {
+    std::uint32_t code = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t n = utf8_char(text, i, &code);
+        if (n == 0)
+            return fmt::format("'{}' is not UTF-8 (the byte \\x{:02x} at offset {})", printable(text),
+                               static_cast<unsigned char>(text[i]), i);
+        i += n;
+    }
+    return std::nullopt;
+}
+
+std::string printable(std::string_view text) {
+    std::string s;
+    std::uint32_t code = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t n = utf8_char(text, i, &code);
+        if (n == 0) {
+            s += fmt::format("\\x{:02x}", static_cast<unsigned char>(text[i]));
+            ++i;
+            continue;
+        }
+        if (code == '\n') s += "\\n";
+        else if (code == '\r') s += "\\r";
+        else if (code == '\t') s += "\\t";
+        else if (code < 0x20 || code == 0x7F) s += fmt::format("\\x{:02x}", code);
+        else if (code >= 0x80 && code <= 0x9F) s += fmt::format("\\u{:04x}", code);
+        else s.append(text.substr(i, n));
+        i += n;
     }
     return s;
 }

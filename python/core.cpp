@@ -36,6 +36,7 @@
 #include "apps/cli.hpp"
 #include "apps/compare_response.hpp"
 #include "apps/ground_motion_options.hpp"
+#include "apps/message_line.hpp"
 #include "apps/progress.hpp"
 #include "apps/wall_options.hpp"
 #include "compare/experiments.hpp"
@@ -476,9 +477,11 @@ py::list engine_settings(const std::string& engine_name) {
 
 // Raises `name` of the vssw package (InputError, SimulationError) with the library's message, as the Python layer
 // raises it for the program's errors: Error(message, code, stderr).
+// The message as the program prints it (apps/message_line.hpp): an input's control characters and bytes that are not
+// UTF-8 escaped, so that it is a valid str and shows nothing a terminal would act on.
 void raise_package_error(const char* name, int code, const char* message) {
     const py::object cls = py::module_::import("vssw").attr(name);
-    const py::object exc = cls(message, code, "");
+    const py::object exc = cls(vssw::cli::message_text(message), code, "");
     PyErr_SetObject(cls.ptr(), exc.ptr());
 }
 

@@ -37,6 +37,7 @@ packages=(
   pybind11-dev python3-dev           # the Python module (python/, `import vssw`), built for Debian's /usr/bin/python3
   python3-numpy python3-pandas       # its traces (NumPy arrays) and study() as a DataFrame (pandas: optional at run time)
   python3-pytest                     # its tests (the CTest vssw_python)
+  python3-markdown                   # tests/markdown_scan.py: report.md and study.md rendered as MkDocs does
   mkdocs mkdocs-material             # the documentation site (mkdocs.yml; the CTest vssw_docs builds it with --strict)
 )
 # The sanitizer build (test and asan only, so `run` installs none of it): clang, its sanitizer and libFuzzer runtimes

@@ -16,6 +16,8 @@
 #include "analytic/input_file.hpp"
 #include "analytic/specimens.hpp"
 #include "analytic/wall.hpp"
+#include "io/json.hpp"
+#include "study/name_bounds.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/scene_geometry.hpp"
@@ -105,7 +107,7 @@ bool falls_from(const multibody::WallScene& scene, double theta0) {
 }  // namespace
 
 Grid::Grid(const StudySpec& spec) : spec_(spec) {
-    std::string identity_text = spec.as_read.dump();
+    std::string identity_text = dump_json(spec.as_read);
     read_specimens(identity_text);
     size_parts();
     read_records(identity_text);
@@ -667,6 +669,7 @@ std::string Grid::render(const std::string& tmpl, const CaseSpec& c, const char*
         return InputError(fmt::format("{} {}: {}{}: \"{}\": {}", kWhat, spec_.path,
                                       part.where.empty() ? "" : part.where + ".", key, tmpl, why));
     };
+    if (const auto why = template_too_wide(tmpl)) throw fail(*why);  // for a grid not read from a file
     std::string out;
     for (std::size_t i = 0; i < tmpl.size(); ++i) {
         const char ch = tmpl[i];
@@ -702,6 +705,8 @@ std::string Grid::render(const std::string& tmpl, const CaseSpec& c, const char*
         }
         i = close;
     }
+    if (out.size() > kMaxNameBytes)
+        throw fail(fmt::format("names this case with {} bytes, more than {}", out.size(), kMaxNameBytes));
     return out;
 }
 

@@ -14,6 +14,7 @@
 #include "analytic/input_file.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
+#include "io/json.hpp"
 #include "study/outputs.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"
@@ -84,7 +85,7 @@ void check_shard(const fs::path& d, const Json& m, const Json& first, const fs::
                                      first["shard"]["n"].get<int>()));
     if (m.at("engines") != first.at("engines"))
         throw InputError(fmt::format("study merge: '{}' was run by other engine versions than '{}' ({} against {})",
-                                     d.string(), first_dir.string(), m["engines"].dump(), first["engines"].dump()));
+                                     d.string(), first_dir.string(), dump_json(m["engines"]), dump_json(first["engines"])));
     // The file the shard's run wrote: its rows (each once), then byte for byte (a manifest of an older vssw records
     // no "results": its rows are still checked for repeats while merging).
     if (!m.contains("results")) return;
@@ -195,7 +196,7 @@ void write_merged_manifest(const std::vector<Json>& manifests, const fs::path& d
     merged["wall_time_s"] = longest;
     merged["results"] = {{"rows", result.rows}, {"fnv1a64", file_fnv1a(dest / kResultsCsv)}};
     AtomicFile manifest(dest / kManifestFile);
-    manifest.stream() << merged.dump(2) << '\n';
+    manifest.stream() << dump_json(merged, 2) << '\n';
     manifest.commit();
 }
 

@@ -12,6 +12,7 @@
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "io/csv.hpp"
+#include "io/json.hpp"
 #include "study/metric_catalog.hpp"
 
 namespace vssw::study {
@@ -145,7 +146,7 @@ std::string file_fnv1a(const std::filesystem::path& path) {
 void write_results_json(std::ostream& out, const Json& manifest, const std::filesystem::path& csv) {
     // Streamed: the manifest's keys, then "rows" one object at a time, so that a large study needs no large JSON
     // value in memory.
-    std::string head = manifest.dump(2);
+    std::string head = dump_json(manifest, 2);
     head.pop_back();  // the closing brace
     while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
     out << head << ",\n  \"rows\": [";
@@ -167,7 +168,7 @@ void write_results_json(std::ostream& out, const Json& manifest, const std::file
             else if (header[i] == "case_id" || header[i] == "specimen") row[header[i]] = static_cast<long>(x);
             else row[header[i]] = x;
         }
-        out << (first ? "\n    " : ",\n    ") << row.dump();
+        out << (first ? "\n    " : ",\n    ") << dump_json(row);
         first = false;
     }
     out << (first ? "]\n}\n" : "\n  ]\n}\n");

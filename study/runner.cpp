@@ -19,6 +19,7 @@
 #include "analytic/input_file.hpp"
 #include "compare/case_runner.hpp"
 #include "compare/task_pool.hpp"
+#include "io/json.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/run_budget.hpp"
 #include "io/atomic_file.hpp"
@@ -338,7 +339,7 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     if (journal.journal) {
         // The manifest last; the journal goes once the results are in place.
         AtomicFile manifest(results_dir / kManifestFile);
-        manifest.stream() << manifest_json(grid, result.meta).dump(2) << '\n';
+        manifest.stream() << dump_json(manifest_json(grid, result.meta), 2) << '\n';
         manifest.commit();
         if (results_dir == dir) fs::remove(journal_path, ec);
     }

@@ -4,6 +4,7 @@
 // command that ran anyway (the marker files it leaves).
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <system_error>
@@ -22,6 +23,11 @@ inline const std::string kHostileFileName = "r`touch VSSW_MARK_1`$(touch VSSW_MA
 // A name that may hold '/': the same, with markup that a page would run if it were not escaped.
 inline const std::string kHostileName = "w`touch VSSW_MARK_4`$(touch VSSW_MARK_5) 'q' \"dq\"\n!touch VSSW_MARK_6\n"
                                         "@m <script>alert(1)</script> M\xC3\xBCller \xCE\xB5 \xE5\x9C\xB0\xE9\x9C\x87";
+
+// A name made of Markdown and HTML that a renderer would make live if it were not escaped for every renderer: a tag
+// with a handler, a javascript: link, an autolink, emphasis, a code span and entities (tests/markdown_scan.py).
+inline const std::string kMarkupName = "w1\"><img src=x onerror=alert(2)> [click](javascript:alert(10)) "
+                                       "<javascript:alert(3)> *em* _u_ `code` &lt;b&gt; \\<i>";
 
 // The text (UTF-8) as a TOML basic string in ASCII, as study files are: non-ASCII characters as \\uXXXX escapes.
 inline std::string toml_string(const std::string& text) {
@@ -49,6 +55,20 @@ inline std::string toml_string(const std::string& text) {
     return s + '"';
 }
 
+// The text (UTF-8) as a JSON string: quotes, backslashes and control characters escaped.
+inline std::string json_string(const std::string& text) {
+    std::string s = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') s += std::string("\\") + c;
+        else if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+            s += buf;
+        } else s += c;
+    }
+    return s + '"';
+}
+
 // The text as gnuplot's SVG holds it: control characters as spaces (io/gnuplot.hpp), then '&' and '<' as XML
 // escapes them (gnuplot leaves '>' and the quotes as they are).
 inline std::string svg_text(const std::string& text) {
@@ -70,6 +90,28 @@ inline std::vector<std::string> hover_titles(const std::string& svg) {
     for (auto it = std::sregex_iterator(svg.begin(), svg.end(), title); it != std::sregex_iterator(); ++it)
         titles.push_back((*it)[1]);
     return titles;
+}
+
+// What the Markdown page at `page` makes live when MkDocs renders it, and each of `texts` that it does not show as
+// text (tests/markdown_scan.py, Python-Markdown), one per line; "" when it shows them all as text and runs nothing.
+inline std::string markdown_problems(const std::filesystem::path& page, const std::vector<std::string>& texts) {
+    const std::filesystem::path list = page.string() + ".texts.json";
+    {
+        std::ofstream out(list);
+        out << '[';
+        for (std::size_t i = 0; i < texts.size(); ++i) out << (i ? ", " : "") << json_string(texts[i]);
+        out << ']';
+    }
+    // Only paths reach the shell (the names go through the file); the script is in tests/ beside data/.
+    const std::filesystem::path script = std::filesystem::path(VSSW_DATA_DIR).parent_path() / "tests" / "markdown_scan.py";
+    const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + page.string() + "' '" + list.string() + "' 2>&1";
+    std::string report;
+    if (FILE* p = popen(command.c_str(), "r")) {
+        char buf[4096];
+        while (std::fgets(buf, sizeof buf, p) != nullptr) report += buf;
+        if (pclose(p) != 0 && report.empty()) report = "markdown_scan.py failed";
+    }
+    return report;
 }
 
 // The marker files under dir and in the current folder: each is a command that ran.

@@ -16,6 +16,7 @@
 #include "io/csv.hpp"
 #include "io/palette.hpp"  // series_style, series_variants
 #include "validation/report_data.hpp"  // settings_json
+#include "io/json.hpp"
 #include "io/text.hpp"
 
 namespace vssw::study {
@@ -215,7 +216,7 @@ std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
 PlotResult write_bench(const BenchData& d, const fs::path& dir, const std::string& gnuplot) {
     std::error_code ec;
     fs::create_directories(dir, ec);
-    write_file(dir / "bench.json", [&](std::ostream& out) { out << bench_json(d).dump(2) << '\n'; });
+    write_file(dir / "bench.json", [&](std::ostream& out) { out << dump_json(bench_json(d), 2) << '\n'; });
     write_file(dir / "bench.csv", [&](std::ostream& out) {
         const std::vector<std::string> columns = bench_csv_columns();
         out << fmt::format("{}", fmt::join(columns, ",")) << '\n';

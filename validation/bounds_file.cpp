@@ -13,6 +13,7 @@
 
 #include "analytic/error.hpp"
 #include "io/config_file.hpp"
+#include "io/json.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -35,7 +36,7 @@ public:
     std::string text(const char* key) const {
         const json& v = required(key);
         if (!v.is_string() || v.get<std::string>().empty())
-            throw InputError(fmt::format("{}: '{}' must be a non-empty string, got {}", where_, key, v.dump()));
+            throw InputError(fmt::format("{}: '{}' must be a non-empty string, got {}", where_, key, study::dump_json(v)));
         return v.get<std::string>();
     }
     double number(const char* key) const { return finite(required(key), key); }
@@ -49,12 +50,12 @@ public:
         const json& v = required(key);
         if (!v.is_array() || v.empty())
             throw InputError(
-                fmt::format("{}: '{}' must be a non-empty list of {}, got {}", where_, key, what, v.dump()));
+                fmt::format("{}: '{}' must be a non-empty list of {}, got {}", where_, key, what, study::dump_json(v)));
         std::vector<std::string> out;
         for (const json& x : v) {
             if (!x.is_string() || x.get<std::string>().empty())
                 throw InputError(
-                    fmt::format("{}: '{}' holds {}, not one of the {} it lists", where_, key, x.dump(), what));
+                    fmt::format("{}: '{}' holds {}, not one of the {} it lists", where_, key, study::dump_json(x), what));
             out.push_back(x.get<std::string>());
         }
         return out;
@@ -62,7 +63,7 @@ public:
     std::pair<double, double> range(const char* key) const {
         const json& v = required(key);
         if (!v.is_array() || v.size() != 2)
-            throw InputError(fmt::format("{}: '{}' must be [min, max], got {}", where_, key, v.dump()));
+            throw InputError(fmt::format("{}: '{}' must be [min, max], got {}", where_, key, study::dump_json(v)));
         const double lo = finite(v[0], key), hi = finite(v[1], key);
         if (lo > hi) throw InputError(fmt::format("{}: '{}' = [{}, {}] has min > max", where_, key, lo, hi));
         return {lo, hi};
@@ -77,7 +78,7 @@ private:
     double finite(const json& v, const char* key) const {
         // JSON has no NaN; TOML's nan and inf come through the JSON formatter as strings or non-numbers.
         if (!v.is_number() || !std::isfinite(v.get<double>()))
-            throw InputError(fmt::format("{}: '{}' must be a finite number, got {}", where_, key, v.dump()));
+            throw InputError(fmt::format("{}: '{}' must be a finite number, got {}", where_, key, study::dump_json(v)));
         return v.get<double>();
     }
 
@@ -119,7 +120,7 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
     compare::Bounds bounds;
     if (doc.contains("suite")) {
         if (!doc["suite"].is_string())
-            throw InputError(fmt::format("bounds file {}: 'suite' must be a string, got {}", name, doc["suite"].dump()));
+            throw InputError(fmt::format("bounds file {}: 'suite' must be a string, got {}", name, study::dump_json(doc["suite"])));
         bounds.suite = doc["suite"].get<std::string>();
     }
     int i = 0;

@@ -7,6 +7,7 @@
 
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
+#include "io/json.hpp"
 #include "study/ensemble_measures.hpp"
 #include "study/grid.hpp"
 #include "study/outputs.hpp"
@@ -39,7 +40,7 @@ StudySpec with_engines(const std::string& file, const std::vector<std::string>& 
     prune(doc);
     if (doc.contains("part") && doc["part"].is_array())
         for (Json& part : doc["part"]) prune(part);
-    StudySpec spec = study_from_json(nlohmann::json::parse(doc.dump()), file, read.base_dir);
+    StudySpec spec = study_from_json(nlohmann::json::parse(dump_json(doc)), file, read.base_dir);
     spec.path = read.path;
     return spec;
 }

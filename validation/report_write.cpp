@@ -7,6 +7,7 @@
 
 #include "analytic/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/json.hpp"
 #include "validation/bench_files.hpp"
 #include "io/document_html.hpp"
 #include "io/document_markdown.hpp"
@@ -50,7 +51,7 @@ ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite,
     meta.plots_note = options.plots ? plots.note : "not made (--no-plots)";
     const ReportInput in{suite, results, meta, options.earthquake};
 
-    write_file(files.json, [&](std::ostream& out) { out << results_json(in).dump(2) << '\n'; });
+    write_file(files.json, [&](std::ostream& out) { out << dump_json(results_json(in), 2) << '\n'; });
     write_file(dir / "metrics.csv", [&](std::ostream& out) { write_metrics_csv(out, results); });
     write_file(dir / "failures.csv", [&](std::ostream& out) { write_failures_csv(out, results); });
     write_file(dir / "traces.csv", [&](std::ostream& out) { write_traces_csv(out, results); });
