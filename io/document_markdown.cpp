@@ -10,14 +10,15 @@ namespace {
 // Text shown as text by every Markdown renderer, whatever it holds: '<', '>' and '&' as HTML entities (CommonMark
 // honours a backslash before '<', Python-Markdown, which MkDocs uses, does not, and a name "<img onerror=...>" became
 // a live tag there), and the characters that make links, images, emphasis and code spans backslash-escaped, an escape
-// every renderer honours for them, so that "[x](javascript:...)" in a name stays text.
+// every renderer honours for them, so that "[x](javascript:...)" in a name stays text (without its brackets no link
+// starts, so parentheses stay as written and the page's own prose, "Eq. (19)", reads as it is).
 std::string as_text(const std::string& text) {
     std::string s;
     for (char c : text) {
         if (c == '<') s += "&lt;";
         else if (c == '>') s += "&gt;";
         else if (c == '&') s += "&amp;";
-        else if (c == '[' || c == ']' || c == '(' || c == ')' || c == '*' || c == '_' || c == '`' || c == '\\')
+        else if (c == '[' || c == ']' || c == '*' || c == '_' || c == '`' || c == '\\')
             s += std::string("\\") + c;
         else s += c;
     }
