@@ -54,9 +54,13 @@ std::size_t metric_index(const StudyData& d, const std::string& name) {
     return std::string::npos;
 }
 
-// The intensity measure of the study's ensemble: the first of pgv, sa, arias that is a column (stripes) or whose
-// collapse metric the study reports (IDA), else the PGA.
+// The intensity measure of the study's ensemble: the `intensity` column's first word other than pga, else the first of
+// pgv, sa, arias that is a column (stripes) or whose collapse metric the study reports (IDA), else the PGA.
 std::string ensemble_intensity(const StudyData& d) {
+    // The ensemble's own word, when results.csv names it (a part in another measure than the PGA).
+    if (const std::size_t col = d.column("intensity"); col != std::string::npos)
+        for (std::uint32_t l : d.columns[col].order)
+            if (!d.columns[col].texts[l].empty() && d.columns[col].texts[l] != "pga") return d.columns[col].texts[l];
     for (const char* m : {"pgv", "sa", "arias"})
         if (d.column(m) != std::string::npos || metric_index(d, std::string("collapse_") + m) != std::string::npos)
             return m;

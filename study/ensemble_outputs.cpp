@@ -299,10 +299,10 @@ void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const En
         "ratio to the reference's median paired over the records both have. Overturning agreement: the share of "
         "records x levels where the series and the reference agree (95 % Wilson interval). Inside band: the runs "
         "whose peak lies within the reference's own spread under its perturbed repeats.",
-        e.name, e.has_reference ? d.series[e.reference].label : "none (the study ran no analytic series)",
+        e.has_reference ? d.series[e.reference].label : "none (the study ran no analytic series)",
         e.preferred_reference ? "exact kinematics, whole-mechanism impact, unilateral roller"
                               : "the first analytic series: the study did not run exact / whole-mechanism / unilateral",
-        kEnsembleReplicates, kEnsembleSeed)));
+        e.name, kEnsembleReplicates, kEnsembleSeed)));
     DocBlock t = table({"series", "wall", fmt::format("fragility median [{}]", e.unit), "beta", "median / reference's",
                         "overturning agreement", "inside band"},
                        2);

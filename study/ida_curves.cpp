@@ -35,6 +35,8 @@ constexpr int kPeakLevels = 40;
 // The plot's peak axis: an overturned run's peak is its collapse angle, drawn at this height (flatlines, as V&C draw
 // collapse), so that rocking peaks stay readable.
 constexpr double kOverturnedDrawnAt = 1.1;
+// The records' curves: this transparency (gnuplot's alpha byte, 00 opaque to FF invisible), so the fractiles read above.
+constexpr const char* kRecordAlpha = "A0";
 // The fractiles drawn: 16, 50 and 84 %, the median and one lognormal standard deviation either side.
 constexpr double kFractiles[] = {0.16, 0.50, 0.84};
 
@@ -200,6 +202,8 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
                 if (series[i] == sr && wall[i] == w) mine.push_back(&curves[i]);
             if (mine.empty()) continue;
             const std::string colour = fmt::format("lc rgb '{}'", engine_colour(d.series[sr].engine));
+            // The records' curves in the series' colour, mostly transparent (gnuplot's #AARRGGBB), under its fractiles.
+            const std::string faint = fmt::format("lc rgb '#{}{}'", kRecordAlpha, engine_colour(d.series[sr].engine).substr(1));
             for (const IdaCurve* c : mine) {
                 s.dat += fmt::format("# {}: {}: intensity peak_drawn overturned\n", gp_comment(d.series[sr].label),
                                      gp_comment(c->record));
@@ -208,7 +212,7 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
                                          gp_number(c->overturned[k] ? kOverturnedDrawnAt : c->peak[k]),
                                          c->overturned[k] ? 1 : 0);
                 s.dat += "\n\n";
-                add("linespoints " + colour + " lw 0.5 pt 7 ps 0.3", "");
+                add("linespoints " + faint + " lw 0.5 pt 7 ps 0.25", "");
             }
             for (const double q : kFractiles) {
                 s.dat += fmt::format("# {}: {:g} % fractile of the intensity given the peak\n",
