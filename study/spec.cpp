@@ -544,6 +544,20 @@ void check_record_scaling(const Reader& r, const json& ex, const std::string& ex
             r.fail(ex_key + "." + k, "is for 'sa' (the spectral acceleration's oscillator)");
 }
 
+// An ensemble's search reports its collapse intensity in its measure too (collapse_pga stays); a search's Sa
+// oscillator (sa_period, needed; sa_damping) goes with the metric collapse_sa.
+void add_collapse_intensity(const Reader& r, PartSpec& p, const json& ex, const std::string& ex_key) {
+    if (p.ensemble && p.ensemble->collapse && p.ensemble->intensity != "pga" &&
+        !contains(p.metrics, "collapse_" + p.ensemble->intensity))
+        p.metrics.push_back("collapse_" + p.ensemble->intensity);
+    if (p.kind != ExcitationKind::scale_to_collapse) return;
+    const bool sa = contains(p.metrics, "collapse_sa");
+    if (sa && !ex.contains("sa_period"))
+        r.fail(ex_key, "the metric collapse_sa needs 'sa_period' (the oscillator's period, s)");
+    for (const char* k : {"sa_period", "sa_damping"})
+        if (!sa && ex.contains(k)) r.fail(ex_key + "." + k, "is for the metric collapse_sa (the search's Sa)");
+}
+
 PartSpec read_part(const Reader& r, const json& t, const std::string& where, const StudySpec& study) {
     PartSpec p;
     p.where = where;
@@ -611,17 +625,7 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
     if (p.metrics.empty())
         r.fail(where, where.empty() ? "a closed-form study must name its metrics"
                                     : "measures none of the study's metrics: give it its own metrics");
-    // An ensemble's search reports its collapse intensity in its measure too (collapse_pga stays).
-    if (p.ensemble && p.ensemble->collapse && p.ensemble->intensity != "pga" &&
-        !contains(p.metrics, "collapse_" + p.ensemble->intensity))
-        p.metrics.push_back("collapse_" + p.ensemble->intensity);
-    if (p.kind == ExcitationKind::scale_to_collapse) {
-        const bool sa = contains(p.metrics, "collapse_sa");
-        if (sa && !ex.contains("sa_period"))
-            r.fail(ex_key, "the metric collapse_sa needs 'sa_period' (the oscillator's period, s)");
-        for (const char* k : {"sa_period", "sa_damping"})
-            if (!sa && ex.contains(k)) r.fail(ex_key + "." + k, "is for the metric collapse_sa (the search's Sa)");
-    }
+    add_collapse_intensity(r, p, ex, ex_key);
 
     // The study's engines, with this part's settings where it gives them.
     p.engines = study.engines;
