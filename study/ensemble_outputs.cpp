@@ -183,7 +183,7 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
 
 // Fig. 10's rocking curves with the ensemble's spread: one panel per stripe (PGA), per series and size R the median
 // peak over the records against alpha with its quartiles as bars.
-PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& curves) {
+PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const std::vector<RockingCurve>& curves) {
     std::vector<double> stripes;
     for (const RockingCurve& c : curves)
         if (std::find(stripes.begin(), stripes.end(), c.pga) == stripes.end()) stripes.push_back(c.pga);
@@ -221,7 +221,7 @@ PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& cur
                                layout.multiplot() ? "notitle" : "title " + gp_string(label));
             if (pga == stripes.front()) entries.push_back({label, style});
         }
-        gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("PGA {:g} g", pga)) + cmd + "\n";
+        gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("{} {:g} {}", e.name, pga, e.unit)) + cmd + "\n";
     }
     s.gp = gp + layout_end(layout, entries);
     return s;
@@ -286,7 +286,7 @@ void add_ensemble_plots(const StudyData& d, const EnsembleMeasures& e, StudyPlot
     if (fits) out.scripts.push_back(fragility_plot(d, e));
     if (stripes) out.scripts.push_back(stripes_plot(d, e));
     if (const std::vector<RockingCurve> curves = rocking_curves(d); !curves.empty())
-        out.scripts.push_back(rocking_plot(d, curves));
+        out.scripts.push_back(rocking_plot(d, e, curves));
 }
 
 void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const EnsembleMeasures& e) {
