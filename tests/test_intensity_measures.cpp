@@ -112,9 +112,12 @@ TEST(IntensityMeasures, HandCheckedRecordPeaksInTheFreeVibrationAfterIt) {
 
 TEST(IntensityMeasures, PgvOfASinePulseIsItsAnalyticVelocity) {
     // a = A sin(2 pi t / Tp) on [0, Tp]: v = A Tp / (2 pi) (1 - cos(2 pi t / Tp)), largest A Tp / pi at Tp / 2.
-    const double A = 4.0, Tp = 0.5;
-    const Samples s = sampled(Tp, Tp / 1000.0, sine, A, Tp);
-    EXPECT_NEAR(peak_ground_velocity(s.t, s.a) / (A * Tp / kPi), 1.0, kTrapezoidTol);
+    // Either sign: the PGV is the largest |v|.
+    const double Tp = 0.5;
+    for (const double A : {4.0, -4.0}) {
+        const Samples s = sampled(Tp, Tp / 1000.0, sine, A, Tp);
+        EXPECT_NEAR(peak_ground_velocity(s.t, s.a) / (std::abs(A) * Tp / kPi), 1.0, kTrapezoidTol) << A;
+    }
 }
 
 TEST(IntensityMeasures, AriasIntensityOfASine) {

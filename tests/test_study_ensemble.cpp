@@ -19,6 +19,7 @@
 #include "analytic/intensity_measures.hpp"
 #include "io/csv.hpp"
 #include "study/ida_curves.hpp"
+#include "study/merge.hpp"
 #include "study/outputs.hpp"
 #include "study/results_files.hpp"
 #include "study/ensemble_measures.hpp"
@@ -412,6 +413,20 @@ TEST(StudyEnsemble, IdaFractilesReadTheCurvesLowestCrossing) {
     EXPECT_DOUBLE_EQ(study::fractile({3.0, 1.0, 2.0}, 0.5), 2.0);
     EXPECT_DOUBLE_EQ(study::fractile({1.0, 2.0, 3.0, 4.0, 5.0}, 0.16), 1.64);
     EXPECT_TRUE(std::isinf(study::fractile({1.0, 2.0, INFINITY}, 0.84)));
+}
+
+// ida.csv from shards merged is the same bytes as from one run (each task's points in the order run, cases in order).
+TEST(StudyEnsemble, IdaCurvesOfShardsMergeIntoTheOneRunsFile) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kWall + "[excitation]\nkind = \"ensemble\"\nfiles = " + file_list() +
+                                      "\nintensity = \"arias\"\ncollapse = true\nstep = 0.1\ntolerance = 0.01\n"));
+    run_into(grid, dir / "one", 2);
+    run_into(grid, dir / "s1", 1, {1, 2});
+    run_into(grid, dir / "s2", 1, {2, 2});
+    study::merge_studies({dir / "s1", dir / "s2"}, dir / "merged", {});
+    const std::string one = vssw::testing::read_file(dir / "one" / study::kIdaCsv);
+    EXPECT_NE(one.find(",arias,"), std::string::npos);
+    EXPECT_EQ(vssw::testing::read_file(dir / "merged" / study::kIdaCsv), one);
 }
 
 }  // namespace
