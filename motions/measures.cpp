@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "analytic/intensity_measures.hpp"
 
 namespace vssw::motions {
 namespace {
@@ -69,16 +70,13 @@ double husid_time(const std::vector<double>& times, const std::vector<double>& a
 Measures measure(const std::vector<double>& t, const std::vector<double>& a) {
     check_samples(t, a);
     Measures m{};
-    double peak = 0.0, v = 0.0, pgv = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        peak = std::max(peak, std::fabs(a[i]));
-        if (i > 0) v += 0.5 * (t[i] - t[i - 1]) * (a[i - 1] + a[i]);
-        pgv = std::max(pgv, std::fabs(v));
-    }
+    double peak = 0.0;
+    for (const double x : a) peak = std::max(peak, std::fabs(x));
     m.pga_g = peak / kStandardGravity;
-    m.pgv_m_s = pgv;
+    // The same PGV and Arias intensity a study scales records to (analytic/intensity_measures.hpp).
+    m.pgv_m_s = peak_ground_velocity(t, a);
     const std::vector<double> e = cumulative_energy(t, a);
-    m.arias_m_s = M_PI / (2.0 * kStandardGravity) * e.back();
+    m.arias_m_s = arias_intensity(t, a);
     m.d5_95_s = crossing_time(t, e, 0.95) - crossing_time(t, e, 0.05);
     m.t_mid_s = crossing_time(t, e, 0.45);
     const double half = m.d5_95_s / 4.0;

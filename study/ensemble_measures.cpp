@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/intensity_measures.hpp"
 #include "compare/stripe_fragility.hpp"
 #include "study/plot_panels.hpp"
 #include "study/spec.hpp"
@@ -22,9 +23,12 @@ using Key = std::vector<std::uint32_t>;  // a run's levels with engine, settings
 
 // The assumption set the engines share (their impact is the whole mechanism's, their roller unilateral).
 const std::vector<std::string> kPreferredReference = {"exact", "whole-mechanism", "unilateral"};
-// The status of an IDA record that stood up to the search's ceiling (study/measure.cpp, collapse_scale).
-constexpr const char* kCensoredStatus = "failed: does not overturn up to a PGA of ";
-// The status of an IDA record that overturned at the first scale tried, with that PGA in parentheses.
+// The status of an IDA record that stood up to the search's ceiling (study/measure.cpp, collapse_row): "... up to a PGA
+// of X g (...)", "... a PGV of X m/s ...", X the last value run in the row's measure.
+constexpr const char* kCensoredStatus = "failed: does not overturn up to a";
+constexpr const char* kCensoredValue = " of ";
+// The status of an IDA record that overturned at the first scale tried, with that PGA in parentheses ("(0.12 g)"), and
+// in another measure after it ("(0.12 g; 0.034 m/s in PGV)").
 constexpr const char* kAtThresholdStatus = "failed: overturns at the scale where the record's PGA equals the rest";
 
 // What one series ran, keyed by run.
@@ -50,11 +54,27 @@ std::size_t metric_index(const StudyData& d, const std::string& name) {
     return std::string::npos;
 }
 
+// The intensity measure of the study's ensemble: the `intensity` column's first word other than pga, else the first of
+// pgv, sa, arias that is a column (stripes) or whose collapse metric the study reports (IDA), else the PGA.
+std::string ensemble_intensity(const StudyData& d) {
+    // The ensemble's own word, when results.csv names it (a part in another measure than the PGA).
+    if (const std::size_t col = d.column("intensity"); col != std::string::npos)
+        for (std::uint32_t l : d.columns[col].order)
+            if (!d.columns[col].texts[l].empty() && d.columns[col].texts[l] != "pga") return d.columns[col].texts[l];
+    for (const char* m : {"pgv", "sa", "arias"})
+        if (d.column(m) != std::string::npos || metric_index(d, std::string("collapse_") + m) != std::string::npos)
+            return m;
+    return "pga";
+}
+
 Columns columns_of(const StudyData& d) {
-    Columns c{d.column("file"), d.column("pga"), d.column("perturbation"), d.column("max_pga"), {0, d.columns.size() - 1},
-              {}, metric_index(d, "peak_rotation"), metric_index(d, "overturned"), metric_index(d, "collapse_pga")};
+    const std::string im = ensemble_intensity(d);
+    Columns c{d.column("file"), d.column(im), d.column("perturbation"), d.column("max_pga"), {0, d.columns.size() - 1},
+              {}, metric_index(d, "peak_rotation"), metric_index(d, "overturned"), metric_index(d, "collapse_" + im)};
     for (std::size_t a : d.assumption_columns)
         if (a != std::string::npos) c.cleared.push_back(a);
+    // Records scaled to another measure's level: their PGA follows from the file and the level, as the scale does.
+    if (im != "pga" && d.column("pga") != std::string::npos) c.cleared.push_back(d.column("pga"));
     if (c.perturbation != std::string::npos) c.cleared.push_back(c.perturbation);
     // The scale follows from the file and the pga (and differs on a perturbed repeat): not part of a run's key.
     c.scale = d.column("scale");
@@ -109,7 +129,8 @@ std::optional<IdaRecord> ida_record(const StudyData& d, const Columns& c, const 
     const std::string& status = d.statuses[r.status];
     // Stood up to the last PGA run below max_pga: right-censored there.
     if (status.rfind(kCensoredStatus, 0) == 0) {
-        const double cap = std::strtod(status.c_str() + std::string(kCensoredStatus).size(), nullptr);
+        const std::size_t of = status.find(kCensoredValue);
+        const double cap = of == std::string::npos ? NAN : std::strtod(status.c_str() + of + 4, nullptr);
         if (std::isfinite(cap) && cap > 0.0) return IdaRecord{cap, false};
         return std::nullopt;
     }
@@ -117,7 +138,9 @@ std::optional<IdaRecord> ida_record(const StudyData& d, const Columns& c, const 
     // is at most that; taken as collapsing there (an upper bound of a record with the lowest capacity, which leaving it
     // out would bias the median up far more).
     if (status.rfind(kAtThresholdStatus, 0) == 0) {
-        const std::size_t open = status.rfind('(');
+        std::size_t open = status.rfind('(');
+        if (const std::size_t other = status.find("; ", open); open != std::string::npos && other != std::string::npos)
+            open = other + 1;
         const double at = open == std::string::npos ? NAN : std::strtod(status.c_str() + open + 1, nullptr);
         if (std::isfinite(at) && at > 0.0) return IdaRecord{at, true};
     }
@@ -177,7 +200,7 @@ compare::BootstrapOptions bootstrap_options() {
 }
 
 void measure_ida(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
-                 const Columns& c) {
+                 const Columns& c, const std::string& intensity) {
     std::vector<IdaRecord> engine, ref;
     for (const auto& [key, rec] : runs.ida) {
         if (wall_of(c, key) != wall) continue;
@@ -192,7 +215,7 @@ void measure_ida(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* re
         if (wall_of(c, key) == wall) m.left_out += n;
     m.ida = !m.records.empty() || m.left_out > 0;
     if (!m.ida) return;
-    m.intensity = "pga_ida";
+    m.intensity = intensity + "_ida";
     m.fit = compare::bootstrap_fit(m.records, bootstrap_options());
     m.paired = static_cast<long>(engine.size());
     m.ratio.ratio = {NAN, NAN, NAN, 0};
@@ -217,7 +240,7 @@ std::map<Key, compare::StripeOutcomes> stripe_outcomes(const SeriesRuns& runs, c
 
 // The stripes' lognormal fit and, against the reference, the paired ratio of medians over the records both ran.
 void fit_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
-                 const StudyData& d, const Columns& c) {
+                 const StudyData& d, const Columns& c, const std::string& intensity) {
     const std::vector<std::uint32_t>& order = d.columns[c.pga].order;
     std::vector<std::uint32_t> levels;
     std::vector<double> pga;
@@ -237,7 +260,7 @@ void fit_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* re
         ref.push_back(it->second);
     }
     if (records.empty() || pga.size() < 2) return;
-    m.intensity = "pga_stripes";
+    m.intensity = intensity + "_stripes";
     m.fit = compare::bootstrap_stripes(pga, records, bootstrap_options());
     m.paired = static_cast<long>(engine.size());
     m.ratio.ratio = {NAN, NAN, NAN, 0};
@@ -245,14 +268,15 @@ void fit_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* re
         m.ratio = compare::bootstrap_stripe_median_ratio(pga, engine, ref, bootstrap_options());
 }
 
-// A run as a reader finds it: the record's file name and the PGA level ("rinaldi-228.at2 at 0.55 g").
-std::string run_name(const StudyData& d, const Columns& c, const Key& key) {
+// A run as a reader finds it: the record's file name and the level ("rinaldi-228.at2 at 0.55 g", "... at 0.4 m/s").
+std::string run_name(const StudyData& d, const Columns& c, const Key& key, const std::string& unit) {
     const std::string file = std::filesystem::path(d.columns[c.file].texts[key[c.file]]).filename().string();
-    return c.pga == std::string::npos ? file : fmt::format("{} at {:g} g", file, d.columns[c.pga].values[key[c.pga]]);
+    return c.pga == std::string::npos ? file
+                                      : fmt::format("{} at {:g} {}", file, d.columns[c.pga].values[key[c.pga]], unit);
 }
 
 void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
-                     const StudyData& d, const Columns& c) {
+                     const StudyData& d, const Columns& c, const EnsembleMeasures& e) {
     long agree = 0, both = 0;
     std::vector<double> ratios;
     std::vector<compare::BandRun> band;
@@ -296,10 +320,10 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     m.band = !band.empty();
     if (m.band) {
         m.inside = compare::count_inside_band(band);
-        for (std::size_t i : m.inside.outside) m.outside_band.push_back(run_name(d, c, band_runs[i]));
+        for (std::size_t i : m.inside.outside) m.outside_band.push_back(run_name(d, c, band_runs[i], e.unit));
     }
     if (c.pga == std::string::npos) return;
-    if (!m.ida) fit_stripes(m, runs, reference, wall, d, c);
+    if (!m.ida) fit_stripes(m, runs, reference, wall, d, c, e.intensity);
     for (std::uint32_t l : d.columns[c.pga].order) {
         if (!c.is_stripe(l)) continue;
         const auto it = per_level.find(l);
@@ -307,6 +331,25 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         m.levels.push_back({d.columns[c.pga].values[l],
                             compare::wilson_interval(it->second.first, it->second.second, kEnsembleConfidence)});
     }
+}
+
+// The measure's word, unit and axis label; Sa's with its oscillator, from the study's first sa_period and sa_damping.
+void describe_intensity(const StudyData& d, EnsembleMeasures& e) {
+    Intensity im;
+    im.measure = parse_intensity_measure(ensemble_intensity(d));
+    const auto first = [&](const char* name, double fallback) {
+        const std::size_t col = d.column(name);
+        if (col == std::string::npos) return fallback;
+        for (std::uint32_t l : d.columns[col].order)
+            if (std::isfinite(d.columns[col].values[l])) return d.columns[col].values[l];
+        return fallback;
+    };
+    im.sa_period = first("sa_period", NAN);
+    im.sa_damping = first("sa_damping", kDefaultSaDamping);
+    e.intensity = to_string(im.measure);
+    e.unit = intensity_unit(im.measure);
+    e.label = intensity_label(im);
+    e.name = e.label.substr(0, e.label.rfind(" ["));
 }
 
 }  // namespace
@@ -334,6 +377,7 @@ EnsembleMeasures ensemble_measures(const StudyData& d) {
     if (c.file == std::string::npos || d.columns[c.file].order.size() < 2) return e;
     if (c.overturned_metric == std::string::npos && c.collapse_metric == std::string::npos) return e;
     e.applies = true;
+    describe_intensity(d, e);
     e.reference = choose_reference(d, e.preferred_reference);
     e.has_reference = e.reference != std::string::npos;
     const std::vector<SeriesRuns> runs = collect(d, c);
@@ -341,7 +385,9 @@ EnsembleMeasures ensemble_measures(const StudyData& d) {
     std::vector<Key> walls;
     for (const StudyRow& r : d.rows) {
         const Key w = wall_of(c, r.levels);
-        if (wall_index.emplace(w, walls.size()).second) walls.push_back(w);
+        const auto [at, added] = wall_index.emplace(w, walls.size());
+        if (added) walls.push_back(w);
+        e.case_wall[r.case_id] = at->second;
     }
     std::vector<std::size_t> varied_walls;
     for (std::size_t col : c.wall)
@@ -358,8 +404,8 @@ EnsembleMeasures ensemble_measures(const StudyData& d) {
             m.series = s;
             m.wall = w;
             const SeriesRuns* reference = e.has_reference && s != e.reference ? &runs[e.reference] : nullptr;
-            measure_ida(m, runs[s], reference, walls[w], c);
-            measure_stripes(m, runs[s], reference, walls[w], d, c);
+            measure_ida(m, runs[s], reference, walls[w], c, e.intensity);
+            measure_stripes(m, runs[s], reference, walls[w], d, c, e);
             if (m.ida || m.stripes) e.measures.push_back(std::move(m));
         }
     }

@@ -10,15 +10,17 @@
 //    sensitivity band when the study has a `perturbation` column (rows other than "none" only build the band), and
 //    per level the share of runs that overturned (Wilson intervals), and a lognormal fit to those shares with its
 //    bootstrap over records and the paired ratio of its median to the reference's (compare/stripe_fragility.hpp).
-//  - IDA (kind scale-to-collapse): per record its collapse_pga; a record that did not overturn up to max_pga (status
-//    "failed: does not overturn up to a PGA of X g (...)", X the last PGA run, study/measure.cpp) is right-censored
-//    at X; one that overturned at the first scale tried counts as collapsing at that PGA (its status gives it, an
+//  - IDA (kind scale-to-collapse): per record its collapse_pga (collapse_pgv, collapse_sa or collapse_arias when the
+//    study reports one: the ensemble's intensity, EnsembleMeasures::intensity; the stripes' level column likewise);
+//    a record that did not overturn up to max_pga (status "failed: does not overturn up to a PGA of X g (...)", "a PGV
+//    of X m/s", X the last value run in the row's measure, study/measure.cpp) is right-censored at X; one that overturned at the first scale tried counts as collapsing at that PGA (its status gives it, an
 //    upper bound). A lognormal fit with bootstrap intervals, and the paired bootstrap
 //    ratio of its median to the reference's over the records both have. Other failed rows are left out (counted).
 // The bootstrap's seed and replicates are fixed (kEnsembleSeed, kEnsembleReplicates): the outputs are the same bytes
 // on every run, resume and merge.
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,9 +33,10 @@ constexpr std::uint64_t kEnsembleSeed = 20150401;  // std::mt19937_64's seed for
 constexpr int kEnsembleReplicates = 2000;          // bootstrap resamples
 constexpr double kEnsembleConfidence = 0.95;       // of every interval
 
-// A stripe: runs at one PGA level [g] and the share of them that overturned (Wilson interval; n runs).
+// A stripe: runs at one level (PGA [g], or the ensemble's measure) and the share of them that overturned (Wilson
+// interval; n runs).
 struct StripeShare {
-    double pga = 0.0;
+    double pga = 0.0;  // the level, in the ensemble's measure
     compare::Interval share;
 };
 
@@ -43,7 +46,7 @@ struct SeriesMeasures {
     std::size_t wall = 0;    // in EnsembleMeasures::walls
     // The fragility fit: "pga_ida" (each record's collapse PGA), "pga_stripes" (the maximum likelihood over the
     // stripes' overturning counts, compare/stripe_fragility.hpp; when the series has no IDA), "" when none was
-    // attempted.
+    // attempted; "pgv_ida", "sa_stripes", ... in another measure (EnsembleMeasures::intensity).
     std::string intensity;
     bool fitted() const { return !intensity.empty(); }
     compare::FitBootstrap fit;
@@ -67,10 +70,15 @@ struct SeriesMeasures {
 
 struct EnsembleMeasures {
     bool applies = false;            // the study varies `file` over >= 2 records and measures overturning or collapse
+    // The intensity measure of its levels and collapse intensities: "pga", "pgv", "sa", "arias" (a pgv, sa or arias
+    // column, or a collapse_pgv, collapse_sa or collapse_arias metric; else the PGA), its unit and an axis label
+    // ("PGV [m/s]").
+    std::string intensity = "pga", unit = "g", label = "PGA [g]", name = "PGA";  // name: the label without its unit
     std::size_t reference = 0;       // in StudyData::series (meaningless when !has_reference)
     bool has_reference = false;
     bool preferred_reference = false;  // the exact / whole-mechanism / unilateral set (else the first analytic one)
     std::vector<std::string> walls;  // per wall its varied wall parameters ("height 4, hinge 0.7"; "" for one wall)
+    std::map<int, std::size_t> case_wall;  // each case's wall (in walls)
     std::vector<SeriesMeasures> measures;  // wall by wall, series in order
 };
 

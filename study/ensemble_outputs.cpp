@@ -44,7 +44,7 @@ bool is_reference(const EnsembleMeasures& e, const SeriesMeasures& m) {
     return e.has_reference && m.series == e.reference;
 }
 
-std::string pga_text(double pga) { return fmt::format("{:.6g}", pga); }
+std::string level_text(double level) { return fmt::format("{:.6g}", level); }
 
 // A stripe fit's points: each level's share overturned.
 std::vector<std::pair<double, double>> stripe_points(const SeriesMeasures& m) {
@@ -102,12 +102,12 @@ std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::
         xmax = std::max(xmax, std::isfinite(m.fit.median.hi) ? m.fit.median.hi : 0.0);
         const std::string style = styles.of(d, m.series);
         dat += fmt::format("# wall {}: {}: {}\n", gp_comment(e.walls[wall]), gp_comment(d.series[m.series].label),
-                           m.ida ? "collapse PGA [g], ECDF" : "stripe PGA [g], share overturned");
+                           fmt::format(m.ida ? "collapse {}, ECDF" : "stripe {}, share overturned", e.label));
         for (const auto& [x, y] : m.ida ? ecdf(m) : stripe_points(m))
             dat += fmt::format("{} {} {}\n", gp_number(x), gp_number(y),
-                               gp_hover_text(d.series[m.series].label, fmt::format("PGA {:.4g} g", x), y,
+                               gp_hover_text(d.series[m.series].label, fmt::format("{} {:.4g} {}", e.name, x, e.unit), y,
                                              m.ida ? "collapsed (ECDF)" : "overturned"));
-        dat += fmt::format("\n\n# median [g], 0.5, median_lo, median_hi\n{} 0.5 {} {}\n\n\n",
+        dat += fmt::format("\n\n# median [{}], 0.5, median_lo, median_hi\n{} 0.5 {} {}\n\n\n", e.unit,
                            gp_number(m.fit.median.value), gp_number(m.fit.median.lo), gp_number(m.fit.median.hi));
         cmd += fmt::format("{}norm(log(x/{})/{}) with lines {} title {}", cmd.empty() ? "plot " : ", \\\n     ",
                            gp_number(m.fit.fit.median), gp_number(m.fit.fit.beta), style,
@@ -133,7 +133,8 @@ PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
               false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     gp_xlabel("PGA [g]", !layout.multiplot()) + "set ylabel 'P(collapse | PGA)'\nset samples 300\n" +
+                     gp_xlabel(e.label, !layout.multiplot()) +
+                     fmt::format("set ylabel {}\nset samples 300\n", gp_string("P(collapse | " + e.name + ")")) +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w)
@@ -146,11 +147,11 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
     const Styles styles = styles_of(d);
     const PanelLayout layout = panel_layout(e.walls.size());
     PlotScript s;
-    s.plot = {kEnsembleSection, "stripes", "Share of records that overturned at each PGA level (95 % Wilson bars)",
-              false};
+    s.plot = {kEnsembleSection, "stripes",
+              fmt::format("Share of records that overturned at each {} level (95 % Wilson bars)", e.name), false};
     s.dat = "# " + gp_comment(s.plot.title) + "\n";
     std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     gp_xlabel("PGA [g]", !layout.multiplot()) + "set ylabel 'share overturned'\n" +
+                     gp_xlabel(e.label, !layout.multiplot()) + "set ylabel 'share overturned'\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
@@ -158,11 +159,11 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
         for (const SeriesMeasures& m : e.measures) {
             if (m.wall != w || m.levels.empty()) continue;
             const std::string& label = d.series[m.series].label;
-            s.dat += fmt::format("# {}: pga share lo hi runs hover_text\n", gp_comment(label));
+            s.dat += fmt::format("# {}: {} share lo hi runs hover_text\n", gp_comment(label), e.intensity);
             for (const StripeShare& l : m.levels)
                 s.dat += fmt::format("{} {} {} {} {} {}\n", gp_number(l.pga), gp_number(l.share.value),
                                      gp_number(l.share.lo), gp_number(l.share.hi), l.share.n,
-                                     gp_hover_text(label, fmt::format("PGA {:.4g} g, {} runs", l.pga, l.share.n),
+                                     gp_hover_text(label, fmt::format("{} {:.4g} {}, {} runs", e.name, l.pga, e.unit, l.share.n),
                                                    l.share.value, "overturned"));
             s.dat += "\n\n";
             const std::string style = styles.of(d, m.series);
@@ -182,7 +183,7 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
 
 // Fig. 10's rocking curves with the ensemble's spread: one panel per stripe (PGA), per series and size R the median
 // peak over the records against alpha with its quartiles as bars.
-PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& curves) {
+PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const std::vector<RockingCurve>& curves) {
     std::vector<double> stripes;
     for (const RockingCurve& c : curves)
         if (std::find(stripes.begin(), stripes.end(), c.pga) == stripes.end()) stripes.push_back(c.pga);
@@ -220,7 +221,7 @@ PlotScript rocking_plot(const StudyData& d, const std::vector<RockingCurve>& cur
                                layout.multiplot() ? "notitle" : "title " + gp_string(label));
             if (pga == stripes.front()) entries.push_back({label, style});
         }
-        gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("PGA {:g} g", pga)) + cmd + "\n";
+        gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("{} {:g} {}", e.name, pga, e.unit)) + cmd + "\n";
     }
     s.gp = gp + layout_end(layout, entries);
     return s;
@@ -237,7 +238,7 @@ std::string interval_text(const compare::Interval& i, const std::string& format)
 
 void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMeasures& e) {
     out << "engine,assumptions,intensity,median,beta,median_lo,median_hi,beta_lo,beta_hi,records,collapsed,"
-           "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates,failed_replicates\n";
+           "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates,failed_replicates,intensity_unit\n";
     for (const SeriesMeasures& m : e.measures) {
         if (!m.fitted()) continue;
         const compare::FitBootstrap& f = m.fit;
@@ -248,7 +249,8 @@ void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMe
                            csv_number(f.beta.hi), f.fit.records, f.fit.collapsed)
             << fmt::format("{},{},{},", csv_number(ratio ? m.ratio.ratio.value : NAN),
                            csv_number(ratio ? m.ratio.ratio.lo : NAN), csv_number(ratio ? m.ratio.ratio.hi : NAN))
-            << tail_columns(d, e, m) << fmt::format(",{},{},{}\n", kEnsembleSeed, kEnsembleReplicates, f.failed);
+            << tail_columns(d, e, m)
+            << fmt::format(",{},{},{},{}\n", kEnsembleSeed, kEnsembleReplicates, f.failed, csv_field(e.unit));
     }
 }
 
@@ -270,7 +272,8 @@ void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMe
         }
         if (m.fitted() && compared) row("fragility_median_ratio", {m.ratio.ratio.value, m.ratio.ratio.lo,
                                                               m.ratio.ratio.hi, m.paired});
-        for (const StripeShare& l : m.levels) row("overturned_share_pga_" + pga_text(l.pga), l.share);
+        for (const StripeShare& l : m.levels)
+            row("overturned_share_" + e.intensity + "_" + level_text(l.pga), l.share);
     }
 }
 
@@ -283,7 +286,7 @@ void add_ensemble_plots(const StudyData& d, const EnsembleMeasures& e, StudyPlot
     if (fits) out.scripts.push_back(fragility_plot(d, e));
     if (stripes) out.scripts.push_back(stripes_plot(d, e));
     if (const std::vector<RockingCurve> curves = rocking_curves(d); !curves.empty())
-        out.scripts.push_back(rocking_plot(d, curves));
+        out.scripts.push_back(rocking_plot(d, e, curves));
 }
 
 void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const EnsembleMeasures& e) {
@@ -291,7 +294,7 @@ void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const En
     b.push_back(heading(2, "Ensemble"));
     b.push_back(paragraph(fmt::format(
         "Each series against the reference, {} ({}), over the study's records (fragility.csv and agreement.csv hold "
-        "every number). Fragility: a lognormal fit to each record's collapse PGA (IDA), a record still standing at "
+        "every number). Fragility: a lognormal fit to each record's collapse {} (IDA), a record still standing at "
         "max_pga right-censored there, or to the stripes' overturning counts by maximum likelihood; 95 % percentile bootstrap intervals of {} resamples of the records (seed {}), the "
         "ratio to the reference's median paired over the records both have. Overturning agreement: the share of "
         "records x levels where the series and the reference agree (95 % Wilson interval). Inside band: the runs "
@@ -299,8 +302,8 @@ void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const En
         e.has_reference ? d.series[e.reference].label : "none (the study ran no analytic series)",
         e.preferred_reference ? "exact kinematics, whole-mechanism impact, unilateral roller"
                               : "the first analytic series: the study did not run exact / whole-mechanism / unilateral",
-        kEnsembleReplicates, kEnsembleSeed)));
-    DocBlock t = table({"series", "wall", "fragility median [g]", "beta", "median / reference's",
+        e.name, kEnsembleReplicates, kEnsembleSeed)));
+    DocBlock t = table({"series", "wall", fmt::format("fragility median [{}]", e.unit), "beta", "median / reference's",
                         "overturning agreement", "inside band"},
                        2);
     for (const SeriesMeasures& m : e.measures) {

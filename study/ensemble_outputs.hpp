@@ -2,7 +2,8 @@
 // The ensemble measures (study/ensemble_measures.hpp) as a study writes them beside results.csv:
 //   fragility.csv  one row per series and wall with an IDA fit: engine, assumptions, intensity, median, beta,
 //                  median_lo, median_hi, beta_lo, beta_hi, records, collapsed, then median_ratio, ratio_lo,
-//                  ratio_hi (to the reference's median, paired bootstrap), settings, wall, reference, seed, replicates
+//                  ratio_hi (to the reference's median, paired bootstrap), settings, wall, reference, seed, replicates,
+//                  failed_replicates, intensity_unit (the median's: g, or m/s for pgv and arias)
 //   agreement.csv  one row per series, wall and measure: engine, assumptions, measure, value, lo, hi, n, then
 //                  settings, wall, reference
 //   plots/fragility.svg  the fitted curves with the bootstrap band of their medians and the records' collapse PGAs

@@ -35,7 +35,11 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "file",  "scale",     "pga",       "shape",  "amplitude",
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "units", "duration",
-                                                "tolerance", "max_pga", "step", "perturbation"};
+                                                "tolerance", "max_pga", "step", "perturbation", "pgv", "sa", "arias",
+                                                "sa_period", "sa_damping"};
+// After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
+// measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
+const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
 // Then wall_name and record_name when a part names its walls or records, then settings.
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : std::string(); }
@@ -90,6 +94,15 @@ std::string record_key(const std::string& file, const std::string& units) { retu
 std::string dropped_key(const std::string& key) { return key + "\ndrop-first"; }
 
 bool perturbed(const CaseSpec& c) { return !c.perturbation.empty() && c.perturbation != "none"; }
+
+// The intensity measure a part scales its records to or reports its collapse in, when it is not the PGA alone: the
+// ensemble's `intensity`, or a record part's level key; "" otherwise.
+std::string intensity_of(const PartSpec& part) {
+    if (part.ensemble) return part.ensemble->intensity == "pga" ? "" : part.ensemble->intensity;
+    for (const std::string& k : kLevelKeys)
+        if (k != "pga" && part.excitation_axis(k)) return k;
+    return "";
+}
 
 // A file read already (a record, Table 1), again for its bytes: still a regular file, however it changed meanwhile.
 std::string read_bytes(const std::string& path) { return read_input_file(path, "the file", kMaxTextFileBytes); }
@@ -293,6 +306,8 @@ void Grid::list_columns() {
     };
     for (const std::string& k : kExtraColumns)
         if (used(k)) columns_.push_back(k);
+    if (std::any_of(spec_.parts.begin(), spec_.parts.end(), [](const PartSpec& p) { return !intensity_of(p).empty(); }))
+        columns_.insert(columns_.end(), kIntensityColumns.begin(), kIntensityColumns.end());
     const auto named = [&](std::string NameTemplates::*field) {
         return std::any_of(spec_.parts.begin(), spec_.parts.end(),
                            [&](const PartSpec& p) { return !(p.names.*field).empty(); });
@@ -436,12 +451,28 @@ void Grid::set_excitation(CaseSpec& c, const CaseLevels& l) const {
         c.record_key = record_key(c.file, part.excitation_axis("units")
                                               ? as_word(part.excitation_axis("units")->levels.front())
                                               : "");
-        std::optional<double> pga = l.has("pga") ? std::optional(l.num("pga", 0.0)) : std::nullopt;
-        // The band (an ensemble's stripes, so a PGA is given): the level nudged, or the record one sample earlier.
-        if (pga && c.perturbation == "pga+1e-3") *pga *= 1.0 + kBandStep;
-        if (pga && c.perturbation == "pga-1e-3") *pga *= 1.0 - kBandStep;
+        // The level of the measure the record is scaled to (a part gives at most one of kLevelKeys), and Sa's oscillator.
+        std::optional<double> level;
+        for (const std::string& k : kLevelKeys)
+            if (l.has(k.c_str())) {
+                level = l.num(k.c_str(), 0.0);
+                c.intensity.measure = parse_intensity_measure(k);
+            }
+        c.intensity.sa_period = l.num("sa_period", 0.0);
+        c.intensity.sa_damping = l.num("sa_damping", kDefaultSaDamping);
+        // The band (an ensemble's stripes, so a level is given): the level nudged, or the record one sample earlier.
+        if (level && c.perturbation == "pga+1e-3") *level *= 1.0 + kBandStep;
+        if (level && c.perturbation == "pga-1e-3") *level *= 1.0 - kBandStep;
         if (c.perturbation == "drop-first") c.record_key = dropped_key(c.record_key);
-        scale_record(c, record(c), pga, l.num("scale", 1.0));
+        const GroundMotion& motion = record(c);
+        if (c.intensity.measure == IntensityMeasure::pga) {
+            scale_record(c, motion, level, l.num("scale", 1.0));
+        } else {
+            const double at_one = record_intensity(motion, c.intensity);
+            if (!(at_one > 0.0)) throw InputError(fmt::format("'{}' has no {} to scale", c.file, to_string(c.intensity.measure)));
+            scale_record(c, motion, std::nullopt, scale_to_intensity(c.intensity.measure, at_one, *level));
+            c.intensity_value = intensity_at_scale(c.intensity.measure, at_one, c.scale);
+        }
     }
     if (l.has("shape")) c.shape = l.word("shape");
     c.amplitude_g = l.num("amplitude", 0.0);
@@ -566,7 +597,8 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
     for (const std::string& col : columns_) {
         // (hinge "eq15" too: the resolved ratio follows from xi by Eq. 15, and the level groups the rows as the file
         // does.)
-        if (const Level* l = given(col); l && (std::holds_alternative<double>(*l) || col == "hinge") && col != "pga" &&
+        const bool level_key = std::find(kLevelKeys.begin(), kLevelKeys.end(), col) != kLevelKeys.end();
+        if (const Level* l = given(col); l && (std::holds_alternative<double>(*l) || col == "hinge") && !level_key &&
                                          col != "scale") {
             v.push_back(col == "hinge" && !vssw ? "" : to_text(*l));
             continue;
@@ -586,6 +618,12 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
         else if (col == "file") v.push_back(c.file);
         else if (col == "scale") v.push_back(record_kind ? number(c.scale) : "");
         else if (col == "pga") v.push_back(record_kind ? number(c.pga_g) : "");
+        else if (level_key) v.push_back(record_kind && col == to_string(c.intensity.measure) ? number(c.intensity_value) : "");
+        else if (col == "intensity") v.push_back(part.ensemble ? part.ensemble->intensity : intensity_of(part));
+        else if (col == "intensity_unit") {
+            const std::string word = part.ensemble ? part.ensemble->intensity : intensity_of(part);
+            v.push_back(word.empty() ? "" : intensity_unit(parse_intensity_measure(word)));
+        }
         else if (col == "shape") v.push_back(c.shape);
         else if (col == "amplitude") v.push_back(pulse ? number(c.amplitude_g) : "");
         else if (col == "pulse_period") v.push_back(pulse ? number(c.pulse_period) : "");

@@ -14,6 +14,7 @@
 // unilateral roller is not a model (the roller needs Eq. 2) and is not run (Grid::skipped_runs says so); on a parapet
 // only the first kinematics and roller levels run (it has neither). An ensemble's sensitivity band (spec.hpp) is the
 // analytic model's alone: its perturbed cases are not run by engines (run_applies; skipped_runs says so).
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "analytic/ground_motion.hpp"
+#include "analytic/intensity_measures.hpp"
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
 #include "analytic/specimens.hpp"
@@ -57,6 +59,11 @@ struct CaseSpec {
     std::string record_key;         // the record as read (the file and its units): Grid::record
     double scale = 1.0;             // record: the factor applied to it
     double pga_g = 0.0;             // record: its peak ground acceleration after scaling [g]
+    // record, scale-to-collapse: the intensity measure its level is given in (pga, or the part's pgv, sa, arias key)
+    // with Sa's oscillator (sa_period, sa_damping), and the record's value of it after scaling (a record scaled to a
+    // pgv, sa or arias level; NaN otherwise), in the measure's unit.
+    Intensity intensity;
+    double intensity_value = std::numeric_limits<double>::quiet_NaN();
     std::string shape;              // pulse
     double amplitude_g = 0.0, pulse_period = 0.0, duration = 0.0;  // pulse [g], [s], harmonic [s]
     double tolerance = 0.0, max_pga_g = 0.0, step = 0.0;  // scale-to-collapse; 0: the defaults (measure.cpp)

@@ -15,6 +15,7 @@ namespace {
 
 constexpr const char* kMagic = "#vssw-study-journal";
 constexpr const char* kDone = "#done";
+constexpr const char* kIda = "#ida";
 
 std::string header(const std::string& identity, Shard shard) {
     return fmt::format("{},{},{}/{}", kMagic, identity, shard.k, shard.n);
@@ -29,7 +30,8 @@ long parse_long(const std::string& text, const std::filesystem::path& path) {
 
 // Reads the journal's whole tasks (their rows in file order) and the byte offset just past the last whole task.
 std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const std::string* identity,
-                                        const Shard* shard, std::set<TaskKey>* done, std::streamoff* end_of_whole) {
+                                        const Shard* shard, std::set<TaskKey>* done, std::streamoff* end_of_whole,
+                                        std::vector<IdaRow>* ida = nullptr) {
     std::ifstream in = open_input_file(path, "the study journal", kMaxResultsBytes);
     std::string first;
     std::getline(in, first);
@@ -38,6 +40,7 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
         throw InputError(fmt::format("journal {} belongs to another study or shard ({}; this is {})", path.string(),
                                      first, header(*identity, *shard)));
     std::vector<ResultRow> rows, pending;
+    std::vector<IdaRow> pending_ida;
     std::set<TaskKey> seen;
     std::streamoff whole = in.tellg();
     std::vector<std::string> f;
@@ -53,11 +56,23 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
             for (ResultRow& r : pending)
                 if (r.case_id != key.first || r.run != key.second)
                     throw InputError(fmt::format("journal {}: rows of another task before '{}'", path.string(), line));
-            if (seen.insert(key).second)
+            if (seen.insert(key).second) {
                 rows.insert(rows.end(), std::make_move_iterator(pending.begin()), std::make_move_iterator(pending.end()));
+                if (ida) ida->insert(ida->end(), pending_ida.begin(), pending_ida.end());
+            }
             pending.clear();
+            pending_ida.clear();
             if (done) done->insert(key);
             whole = in.tellg();
+            continue;
+        }
+        if (!f.empty() && f[0] == kIda) {
+            if (f.size() != 6) throw InputError(fmt::format("journal {}: a malformed IDA line '{}'", path.string(), line));
+            IdaRow p;
+            p.case_id = static_cast<int>(parse_long(f[1], path));
+            p.run = static_cast<std::size_t>(parse_long(f[2], path));
+            p.point = {std::strtod(f[3].c_str(), nullptr), std::strtod(f[4].c_str(), nullptr), f[5] == "1"};
+            pending_ida.push_back(p);
             continue;
         }
         if (f.size() != 6) throw InputError(fmt::format("journal {}: a malformed row '{}'", path.string(), line));
@@ -76,11 +91,15 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
 
 }  // namespace
 
-std::string journal_text(int case_id, std::size_t run, const std::vector<Measurement>& rows) {
+std::string journal_text(int case_id, std::size_t run, const std::vector<Measurement>& rows,
+                         const std::vector<IdaPoint>& ida) {
     std::string text;
     for (const Measurement& m : rows)
         text += fmt::format("{},{},{},{},{},{}\n", case_id, run, m.metric, csv_number(m.value), csv_field(m.status),
                             csv_field(m.warnings));
+    for (const IdaPoint& p : ida)
+        text += fmt::format("{},{},{},{},{},{}\n", kIda, case_id, run, csv_number(p.scale), csv_number(p.peak),
+                            p.overturned ? 1 : 0);
     text += fmt::format("{},{},{}\n", kDone, case_id, run);
     return text;
 }
@@ -108,8 +127,8 @@ void Journal::append_text(const std::string& text) {
     if (!out_) throw InputError(fmt::format("error while writing the study journal '{}'", path_.string()));
 }
 
-std::vector<ResultRow> read_journal(const std::filesystem::path& path) {
-    return read_whole_tasks(path, nullptr, nullptr, nullptr, nullptr);
+std::vector<ResultRow> read_journal(const std::filesystem::path& path, std::vector<IdaRow>* ida) {
+    return read_whole_tasks(path, nullptr, nullptr, nullptr, nullptr, ida);
 }
 
 void check_journal(const std::filesystem::path& path, const std::string& identity, Shard shard) {

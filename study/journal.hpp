@@ -7,7 +7,8 @@
 //
 // Format: a first line "#vssw-study-journal,<identity>,<k>/<n>" (the study's identity and shard), then per task its
 // rows "case_id,run,metric,value,status,warnings" (run and metric are indices into the grid's runs and the study's metrics;
-// value with 17 significant digits, empty for NaN) and a closing line "#done,case_id,run". A task whose closing line
+// value with 17 significant digits, empty for NaN), a scale-to-collapse search's runs as lines
+// "#ida,case_id,run,scale,peak,overturned" (study/measure.hpp, IdaPoint), and a closing line "#done,case_id,run". A task whose closing line
 // is missing (the study was killed while writing it) is dropped on resume and run again.
 #include <cstddef>
 #include <filesystem>
@@ -29,6 +30,13 @@ struct ResultRow {
     double value = 0.0;  // NaN: empty
     std::string status;
     std::string warnings;
+};
+
+// A scale-to-collapse search's run as the journal holds it: its task and the point.
+struct IdaRow {
+    int case_id = 0;
+    std::size_t run = 0;
+    IdaPoint point;
 };
 
 struct Shard {
@@ -57,9 +65,11 @@ private:
 };
 
 // One task's rows as journal text (what a worker process sends to the one that writes).
-std::string journal_text(int case_id, std::size_t run, const std::vector<Measurement>& rows);
-// The whole tasks' rows of a journal, in file order; a task written twice (two runs on one folder) counts once.
-std::vector<ResultRow> read_journal(const std::filesystem::path& path);
+std::string journal_text(int case_id, std::size_t run, const std::vector<Measurement>& rows,
+                         const std::vector<IdaPoint>& ida = {});
+// The whole tasks' rows of a journal, in file order; a task written twice (two runs on one folder) counts once. With
+// `ida`, their IDA points too, in file order.
+std::vector<ResultRow> read_journal(const std::filesystem::path& path, std::vector<IdaRow>* ida = nullptr);
 // InputError unless the journal at `path` is this study's and shard's and reads (what --resume will continue).
 void check_journal(const std::filesystem::path& path, const std::string& identity, Shard shard);
 

@@ -12,6 +12,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
+#include "analytic/intensity_measures.hpp"
 #include "analytic/wall_scene.hpp"
 #include "compare/experiments.hpp"
 #include "compare/case_runner.hpp"
@@ -185,10 +186,16 @@ Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, co
     return engine.simulate(c.scene, ex, settings);
 }
 
-// The smallest scale of the record that overturns the wall: stepped up from lift-off, then bisected.
+// The smallest scale of the record that overturns the wall: stepped up from lift-off, then bisected. Without one, why
+// not: it overturned at the first scale run (`first`), or stood up to the last scale run below max_pga (`standing`).
 struct Collapse {
     double scale = kNaN;
-    std::string why_not;
+    enum class Miss { none, at_first, standing, failed } miss = Miss::none;
+    double at = kNaN;         // at_first, standing: that scale
+    double max_pga_g = kNaN;  // the search's ceiling [g]
+    double threshold_g = kNaN;  // the wall's rest threshold [g], the PGA of the first scale run
+    std::string why_not;      // failed: the reason
+    std::vector<IdaPoint> points;  // every run of the search, in the order run
 };
 Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine) {
     const GroundMotion& record = grid.record(c);
@@ -196,20 +203,29 @@ Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run,
     const double threshold = analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0);
     const double max_pga = c.max_pga_g > 0.0 ? c.max_pga_g * kStandardGravity : kDefaultMaxPgaOverThreshold * threshold;
     const double tolerance = c.tolerance > 0.0 ? c.tolerance : kDefaultCollapseTolerance;
+    Collapse out;
     const auto overturns = [&](double scale) {
-        return run_from_rest(engine, run, c, case_motion(grid, c, scale)).overturned;
+        const Response r = response_of(run_from_rest(engine, run, c, case_motion(grid, c, scale)), c.scene);
+        out.points.push_back({scale, r.peak / c.scene.alpha(), r.overturned});
+        return r.overturned;
     };
     double lo = threshold / pga, hi = kNaN;
-    if (overturns(lo))
-        return {kNaN, fmt::format("overturns at the scale where the record's PGA equals the rest threshold ({:.6g} g)",
-                                  threshold / kStandardGravity)};
+    out.max_pga_g = max_pga / kStandardGravity;
+    out.threshold_g = threshold / kStandardGravity;
+    if (overturns(lo)) {
+        out.miss = Collapse::Miss::at_first;
+        out.at = lo;
+        return out;
+    }
     const double step = c.step > 0.0 ? c.step : kDefaultCollapseStep;
     for (double s = lo * (1.0 + step);; s *= 1.0 + step) {
-        // The PGA named is the last one run and found standing (the next step would pass max_pga): where a
+        // The scale named is the last one run and found standing (the next step would pass max_pga): where a
         // fragility fit censors the record.
-        if (s * pga > max_pga)
-            return {kNaN, fmt::format("does not overturn up to a PGA of {:.6g} g (the last run below max_pga {:.4g} g)",
-                                      lo * pga / kStandardGravity, max_pga / kStandardGravity)};
+        if (s * pga > max_pga) {
+            out.miss = Collapse::Miss::standing;
+            out.at = lo;
+            return out;
+        }
         if (overturns(s)) {
             hi = s;
             break;
@@ -220,7 +236,58 @@ Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run,
         const double mid = 0.5 * (lo + hi);
         (overturns(mid) ? hi : lo) = mid;
     }
-    return {hi, ""};
+    out.scale = hi;
+    return out;
+}
+
+// A collapse metric's value at `scale`: the scale itself, or the record's intensity measure there (collapse_pga,
+// collapse_pgv, collapse_sa, collapse_arias), with its name and unit for a status.
+struct CollapseMeasure {
+    double value = kNaN;
+    std::string name, unit;
+};
+CollapseMeasure collapse_measure(const std::string& metric, const GroundMotion& record, const CaseSpec& c,
+                                 double scale) {
+    if (metric == "collapse_scale") return {scale, "scale", ""};
+    Intensity im = c.intensity;
+    im.measure = parse_intensity_measure(metric.substr(std::string("collapse_").size()));
+    const std::string name = im.measure == IntensityMeasure::pga     ? "PGA"
+                             : im.measure == IntensityMeasure::pgv   ? "PGV"
+                             : im.measure == IntensityMeasure::arias ? "Arias intensity"
+                                                                     : intensity_name(im);
+    // The PGA as it always was (record.pga() in m/s^2 over g0, times the scale): its rows stay the same bytes.
+    const double value = im.measure == IntensityMeasure::pga
+                             ? scale * record.pga() / kStandardGravity
+                             : intensity_at_scale(im.measure, record_intensity(record, im), scale);
+    return {value, name, intensity_unit(im.measure)};
+}
+
+// A collapse metric's row: its value, or why there is none, in the metric's own measure (the fragility reads a
+// standing record's last value from it: study/ensemble_measures.cpp).
+std::pair<double, std::string> collapse_row(const std::string& metric, const Collapse& k, const GroundMotion& record,
+                                            const CaseSpec& c) {
+    switch (k.miss) {
+        case Collapse::Miss::none: return {collapse_measure(metric, record, c, k.scale).value, kOk};
+        case Collapse::Miss::failed: return {kNaN, failed(k.why_not)};
+        case Collapse::Miss::at_first: {
+            const double threshold_g = k.threshold_g;
+            if (metric == "collapse_pga" || metric == "collapse_scale")
+                return {kNaN, failed(fmt::format("overturns at the scale where the record's PGA equals the rest "
+                                                 "threshold ({:.6g} g)",
+                                                 threshold_g))};
+            const CollapseMeasure m = collapse_measure(metric, record, c, k.at);
+            return {kNaN, failed(fmt::format("overturns at the scale where the record's PGA equals the rest threshold "
+                                             "({:.6g} g; {:.6g} {} in {})",
+                                             threshold_g, m.value, m.unit, m.name))};
+        }
+        case Collapse::Miss::standing: {
+            const CollapseMeasure m = collapse_measure(metric == "collapse_scale" ? "collapse_pga" : metric, record, c, k.at);
+            return {kNaN, failed(fmt::format("does not overturn up to a {} of {:.6g} {} (the last run below max_pga "
+                                             "{:.4g} g)",
+                                             m.name, m.value, m.unit, k.max_pga_g))};
+        }
+    }
+    return {kNaN, kOk};
 }
 
 // Whether measure() gives `metric` a row for this run: the part measures it, the run's backend has it (the analytic
@@ -293,7 +360,7 @@ bool measures_threshold(const Grid& grid, const CaseSpec& c) {
 }
 
 std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_t run_index,
-                                 const multibody::Engine& engine) {
+                                 const multibody::Engine& engine, std::vector<IdaPoint>* ida) {
     const StudySpec& spec = grid.spec();
     const PartSpec& part = spec.parts[c.part];
     const RunSpec& run = grid.runs().at(run_index);
@@ -389,16 +456,19 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 std::string failure;
                 if (!collapse) {
                     guarded([&] { collapse = collapse_scale(grid, c, run, engine); }, failure);
-                    if (!collapse) collapse = Collapse{kNaN, failure};
+                    if (!collapse) {
+                        collapse = Collapse{};
+                        collapse->miss = Collapse::Miss::failed;
+                        collapse->why_not = failure;
+                    }
                 }
-                const double scale = collapse->scale;
-                const double value =
-                    metric == "collapse_scale" ? scale : scale * grid.record(c).pga() / kStandardGravity;
-                add(m, value, collapse->why_not.empty() ? kOk : failed(collapse->why_not));
+                auto [value, status] = collapse_row(metric, *collapse, grid.record(c), c);
+                add(m, value, std::move(status));
                 break;
             }
         }
     }
+    if (ida && collapse) *ida = collapse->points;
     // The analytic model's warnings from the run the rows come from (a threshold's trials have none to report).
     std::vector<std::string> warnings;
     if (free) warnings = free->trajectory.warnings;

@@ -37,10 +37,20 @@ struct Measurement {
     std::string warnings;
 };
 
+// One run of a scale-to-collapse search (incremental dynamic analysis): the scale on the record, the peak |theta1| /
+// alpha1 (|theta| / alpha of a parapet; the collapse angle's when it overturned, as peak_rotation), and whether it
+// overturned. A record's points sorted by scale are its IDA curve (Vamvatsikos & Cornell 2002), a resurrection (a
+// larger scale that stands after one that overturned) kept.
+struct IdaPoint {
+    double scale = 0.0, peak = 0.0;
+    bool overturned = false;
+};
+
 // The metrics of the study that apply to this run on this case, in StudySpec::metrics order, but threshold_g (the
-// analytic model's own metrics are left out for an engine). `run_index` is the run's index in Grid::runs().
+// analytic model's own metrics are left out for an engine). `run_index` is the run's index in Grid::runs(). With
+// `ida`, a scale-to-collapse search's runs in the order run (nothing else leaves it empty).
 std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_t run_index,
-                                 const multibody::Engine& engine);
+                                 const multibody::Engine& engine, std::vector<IdaPoint>* ida = nullptr);
 
 // threshold_g of the case's wall for the run: a property of the wall, not of the excitation, so a study runs it as a
 // task of its own, once per wall and run, and gives it to every case of that wall (study/runner.cpp).

@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/csv.hpp"
 #include "io/json.hpp"
+#include "study/ida_curves.hpp"
 #include "study/outputs.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"
@@ -211,6 +212,7 @@ MergeResult merge_studies(const std::vector<fs::path>& dirs, const fs::path& out
     MergeResult result;
     result.shards = manifests.front()["shard"]["n"].get<int>();
     write_merged_results(dirs, dest / kResultsCsv, result);
+    merge_ida_csv(dirs, dest);
     write_merged_manifest(manifests, dest, result);
     return result;
 }

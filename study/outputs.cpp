@@ -13,6 +13,7 @@
 #include "study/effects.hpp"
 #include "study/ensemble_measures.hpp"
 #include "study/ensemble_outputs.hpp"
+#include "study/ida_curves.hpp"
 #include "study/results_files.hpp"
 #include "study/runner.hpp"
 #include "study/study_data.hpp"
@@ -56,6 +57,7 @@ OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOp
     if (options.plots) {
         scripts = study_plot_scripts(data, effects);
         add_ensemble_plots(data, ensemble, scripts);
+        if (std::filesystem::exists(dir / kIdaCsv)) add_ida_plot(data, ensemble, read_ida_csv(dir / kIdaCsv), scripts);
         plots = draw_plots(scripts.scripts, plots_dir, options.gnuplot);
         if (!plots.note.empty()) files.warnings.push_back("plots: " + plots.note);
         if (!scripts.scripts.empty()) files.written.push_back(plots_dir);

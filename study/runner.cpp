@@ -25,6 +25,7 @@
 #include "io/atomic_file.hpp"
 #include "io/clock.hpp"
 #include "io/folder_swap.hpp"
+#include "study/ida_curves.hpp"
 #include "study/measure.hpp"
 #include "study/mpi.hpp"
 
@@ -230,7 +231,9 @@ void run_tasks(const Grid& grid, const StudyEngines& engines, const StudyTasks& 
             return journal_text(t.case_id, t.run, {measure_threshold(grid, c, t.run, engine)});
         }
         const CaseSpec c = grid.make_case(t.case_id);
-        return journal_text(t.case_id, t.run, measure(grid, c, t.run, engine));
+        std::vector<IdaPoint> ida;
+        const std::vector<Measurement> rows = measure(grid, c, t.run, engine, &ida);
+        return journal_text(t.case_id, t.run, rows, ida);
     };
     if (options.mpi) {
         std::mutex progress_mutex;
@@ -267,7 +270,8 @@ void run_tasks(const Grid& grid, const StudyEngines& engines, const StudyTasks& 
 // results.csv in `results_dir`; counts the rows into `result`.
 void write_results(const Grid& grid, const fs::path& journal_path, const fs::path& results_dir,
                    const StudyRunOptions& options, StudyRunResult& result) {
-    std::vector<ResultRow> rows = read_journal(journal_path);
+    std::vector<IdaRow> ida;
+    std::vector<ResultRow> rows = read_journal(journal_path, &ida);
     for (const ResultRow& row : rows)
         if (row.run >= grid.runs().size() || row.metric >= grid.spec().metrics.size())
             throw InputError(fmt::format("journal {}: a row of run {} and metric {}, which the study does not have",
@@ -281,6 +285,11 @@ void write_results(const Grid& grid, const fs::path& journal_path, const fs::pat
     AtomicFile csv(results_dir / kResultsCsv);
     write_results_csv(csv.stream(), grid, rows);
     csv.commit();
+    if (!ida.empty()) {
+        AtomicFile curves(results_dir / kIdaCsv);
+        write_ida_csv(curves.stream(), grid, std::move(ida));
+        curves.commit();
+    }
     result.meta.result_rows = result.rows;
     result.meta.results_hash = file_fnv1a(results_dir / kResultsCsv);
 }
@@ -293,8 +302,9 @@ void keep_finished_results(const fs::path& dir, const fs::path& results_dir, Stu
     result.rows = static_cast<long>(t.rows.size());
     for (const auto& row : t.rows) result.failed_rows += row[status] == "ok" ? 0 : 1;
     if (results_dir == dir) return;
-    for (const char* name : {kResultsCsv, kManifestFile}) {
+    for (const char* name : {kResultsCsv, kManifestFile, kIdaCsv}) {
         std::error_code ec;
+        if (name == kIdaCsv && !fs::exists(dir / name)) continue;  // a study without searches has none
         fs::copy_file(dir / name, results_dir / name, fs::copy_options::overwrite_existing, ec);
         if (ec)
             throw InputError(

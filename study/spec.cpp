@@ -14,6 +14,7 @@
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "analytic/ground_motion.hpp"
+#include "analytic/intensity_measures.hpp"
 #include "io/config_file.hpp"
 #include "io/csv.hpp"
 #include "io/json.hpp"
@@ -31,9 +32,11 @@ const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thic
                                             "alpha2", "R1",      "hinge",  "xi",        "density", "g"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
-                                                  "pga",          "shape",    "amplitude", "pulse_period",
+                                                  "pga",          "pgv",      "sa",        "arias",
+                                                  "shape",        "amplitude", "pulse_period",
                                                   "duration",     "tolerance", "max_pga",  "step",
-                                                  "perturbation"};
+                                                  "sa_period",    "sa_damping", "perturbation"};
+const std::vector<std::string> kLevelKeys = {"pga", "pgv", "sa", "arias"};
 // The names say the factors: kBandStep is 1e-3.
 const std::vector<std::string> kPerturbations = {"none", "pga+1e-3", "pga-1e-3", "drop-first"};
 
@@ -209,6 +212,11 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
             r.fail(key, fmt::format("must be a relative increment in [{}, 1], got {}", kMinCollapseStep, dump_json(v)));
         return x;
     }
+    if (k == "sa_damping") {
+        const double x = r.number(v, key, "a damping ratio in [0, 1)");
+        if (!(x >= 0.0 && x < 1.0)) r.fail(key, fmt::format("must be a damping ratio in [0, 1), got {}", dump_json(v)));
+        return x;
+    }
     if (k == "tolerance") {
         // From 1e-12: below ~1e-16 the bisection's mid-point rounds onto an end and the width never falls (1e-17 ran
         // without end).
@@ -231,8 +239,10 @@ KindKeys kind_keys(ExcitationKind kind) {
         case ExcitationKind::free: return {{"theta0"}, {"theta0"}};
         case ExcitationKind::pulse:
             return {{"shape", "amplitude", "pulse_period", "duration"}, {"shape", "amplitude", "pulse_period"}};
-        case ExcitationKind::record: return {{"file", "units", "scale", "pga"}, {"file"}};
-        case ExcitationKind::scale_to_collapse: return {{"file", "units", "tolerance", "max_pga", "step"}, {"file"}};
+        case ExcitationKind::record:
+            return {{"file", "units", "scale", "pga", "pgv", "sa", "arias", "sa_period", "sa_damping"}, {"file"}};
+        case ExcitationKind::scale_to_collapse:
+            return {{"file", "units", "tolerance", "max_pga", "step", "sa_period", "sa_damping"}, {"file"}};
     }
     return {};
 }
@@ -308,8 +318,9 @@ std::vector<std::string> ensemble_files(const Reader& r, const std::string& key,
     return out;
 }
 
-const std::vector<std::string> kEnsembleKeys = {"kind",     "files",    "ensemble",  "intensity", "levels", "collapse",
-                                                "band",     "units",    "max_pga",   "tolerance", "step"};
+const std::vector<std::string> kEnsembleKeys = {"kind",  "files",    "ensemble",  "intensity", "levels",    "collapse",
+                                                "band",  "units",    "max_pga",   "tolerance", "step",      "sa_period",
+                                                "sa_damping"};
 
 bool flag(const Reader& r, const json& ex, const std::string& ex_key, const char* name) {
     if (!ex.contains(name)) return false;
@@ -329,6 +340,14 @@ void refuse_one_record_twice(const Reader& r, const std::string& key, const json
         r.fail(key, fmt::format("\"{}\" and \"{}\" are one file (the same device and inode): each record once, or "
                                 "the ensemble would count it as two independent records",
                                 files[twice->first].get<std::string>(), files[twice->second].get<std::string>()));
+}
+
+// What an ensemble's level is, for messages: "a PGA in g, > 0".
+std::string level_rule(const std::string& intensity) {
+    if (intensity == "pgv") return "a PGV in m/s, > 0";
+    if (intensity == "sa") return "an Sa in g, > 0";
+    if (intensity == "arias") return "an Arias intensity in m/s, > 0";
+    return "a PGA in g, > 0";
 }
 
 // kind = "ensemble" read into the record or scale-to-collapse excitation it stands for (spec.hpp): the records as
@@ -359,13 +378,23 @@ json read_ensemble(const Reader& r, const json& ex, const std::string& ex_key, c
     if (out["file"].size() < 2)
         r.fail(files_key,
                fmt::format("an ensemble needs at least two records, got {}", out["file"].size()));
-    if (!ex.contains("intensity")) r.fail(ex_key, "kind ensemble needs 'intensity' (\"pga\")");
-    e.intensity = r.word(ex["intensity"], key("intensity"), {"pga"});
+    if (!ex.contains("intensity")) r.fail(ex_key, "kind ensemble needs 'intensity' (\"pga\", \"pgv\", \"sa\", \"arias\")");
+    e.intensity = r.word(ex["intensity"], key("intensity"), kLevelKeys);
+    const bool sa = e.intensity == "sa";
+    if (sa && !ex.contains("sa_period")) r.fail(ex_key, "intensity \"sa\" needs 'sa_period' (the oscillator's period, s)");
+    for (const char* k : {"sa_period", "sa_damping"}) {
+        if (!ex.contains(k)) continue;
+        if (!sa) r.fail(key(k), "is for intensity = \"sa\" (the spectral acceleration's oscillator)");
+        out[k] = ex[k];
+    }
     e.collapse = flag(r, ex, ex_key, "collapse");
     e.band = flag(r, ex, ex_key, "band");
+    const std::string unit = intensity_unit(parse_intensity_measure(e.intensity));
     if (ex.contains("levels") == e.collapse)
-        r.fail(ex_key, "give 'levels' (g: each record scaled to each level, a stripe analysis) or 'collapse = true' "
-                       "(each record scaled until the wall overturns, incremental dynamic analysis): one of them");
+        r.fail(ex_key, fmt::format("give 'levels' ({}: each record scaled so that its {} equals each level, a stripe "
+                                   "analysis) or 'collapse = true' (each record scaled until the wall overturns, "
+                                   "incremental dynamic analysis): one of them",
+                                   unit, e.intensity));
     if (ex.contains("units")) out["units"] = ex["units"];
     if (e.collapse) {
         if (e.band) r.fail(key("band"), "is for a stripe analysis (levels), not collapse = true");
@@ -378,19 +407,19 @@ json read_ensemble(const Reader& r, const json& ex, const std::string& ex_key, c
         if (ex.contains(k)) r.fail(key(k), "is for collapse = true (a search for the overturning scale)");
     out["kind"] = "record";
     const Axis levels = r.axis(ex["levels"], key("levels"), [&](const json& v) -> Level {
-        return r.positive(v, key("levels"), "a PGA in g, > 0");
+        return r.positive(v, key("levels"), level_rule(e.intensity));
     });
-    // agreement.csv names a column per level by its PGA to 6 significant digits (study/ensemble_outputs.cpp): two
+    // agreement.csv names a column per level by its value to 6 significant digits (study/ensemble_outputs.cpp): two
     // levels that print alike there would share one.
     std::map<std::string, double> printed;
     for (const Level& l : levels.levels) {
-        const double pga = std::get<double>(l);
-        const auto [at, added] = printed.emplace(fmt::format("{:.6g}", pga), pga);
+        const double level = std::get<double>(l);
+        const auto [at, added] = printed.emplace(fmt::format("{:.6g}", level), level);
         if (!added)
             r.fail(key("levels"), fmt::format("{} and {} are one level to 6 significant digits (agreement.csv names "
                                               "its columns by them): give levels that differ there",
-                                              at->second, pga));
-        out["pga"].push_back(pga);
+                                              at->second, level));
+        out[e.intensity].push_back(level);
     }
     if (e.band) out["perturbation"] = kPerturbations;
     return out;
@@ -526,6 +555,38 @@ std::vector<std::string> read_metrics(const Reader& r, const json& m, const std:
 }
 
 // One grid: the whole study's [wall] and [excitation] (where ""), or a [[part]]'s (where "part[N]").
+// A record is scaled one way: by a factor (scale) or to a level of one intensity measure (pga, pgv, sa, arias); Sa's
+// oscillator (sa_period, needed; sa_damping) goes with sa, or with a search that reports collapse_sa.
+void check_record_scaling(const Reader& r, const json& ex, const std::string& ex_key) {
+    std::vector<std::string> given;
+    for (const char* k : {"scale", "pga", "pgv", "sa", "arias"})
+        if (ex.contains(k)) given.push_back(k);
+    if (given.size() > 1)
+        r.fail(ex_key, fmt::format("give one of 'scale', 'pga', 'pgv', 'sa', 'arias' (how the record is scaled), not "
+                                   "'{}' and '{}'",
+                                   given[0], given[1]));
+    const bool record = ex.value("kind", "") == "record";
+    if (record && ex.contains("sa") && !ex.contains("sa_period"))
+        r.fail(ex_key, "'sa' needs 'sa_period' (the oscillator's period, s)");
+    for (const char* k : {"sa_period", "sa_damping"})
+        if (record && ex.contains(k) && !ex.contains("sa"))
+            r.fail(ex_key + "." + k, "is for 'sa' (the spectral acceleration's oscillator)");
+}
+
+// An ensemble's search reports its collapse intensity in its measure too (collapse_pga stays); a search's Sa
+// oscillator (sa_period, needed; sa_damping) goes with the metric collapse_sa.
+void add_collapse_intensity(const Reader& r, PartSpec& p, const json& ex, const std::string& ex_key) {
+    if (p.ensemble && p.ensemble->collapse && p.ensemble->intensity != "pga" &&
+        !contains(p.metrics, "collapse_" + p.ensemble->intensity))
+        p.metrics.push_back("collapse_" + p.ensemble->intensity);
+    if (p.kind != ExcitationKind::scale_to_collapse) return;
+    const bool sa = contains(p.metrics, "collapse_sa");
+    if (sa && !ex.contains("sa_period"))
+        r.fail(ex_key, "the metric collapse_sa needs 'sa_period' (the oscillator's period, s)");
+    for (const char* k : {"sa_period", "sa_damping"})
+        if (!sa && ex.contains(k)) r.fail(ex_key + "." + k, "is for the metric collapse_sa (the search's Sa)");
+}
+
 PartSpec read_part(const Reader& r, const json& t, const std::string& where, const StudySpec& study) {
     PartSpec p;
     p.where = where;
@@ -550,7 +611,7 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
     r.unknown_keys(ex, fmt::format("{} (kind {})", ex_key, to_string(p.kind)), known);
     for (const std::string& k : keys.required)
         if (!ex.contains(k)) r.fail(ex_key, fmt::format("kind {} needs '{}'", to_string(p.kind), k));
-    if (ex.contains("scale") && ex.contains("pga")) r.fail(ex_key, "give 'scale' or 'pga', not both");
+    check_record_scaling(r, ex, ex_key);
     p.excitation = read_axes(r, ex, ex_key, kExcitationKeys, excitation_level);
     if (const Axis* shape = p.excitation_axis("shape")) {
         const bool harmonic = std::find(shape->levels.begin(), shape->levels.end(), Level{"harmonic"}) !=
@@ -593,6 +654,7 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
     if (p.metrics.empty())
         r.fail(where, where.empty() ? "a closed-form study must name its metrics"
                                     : "measures none of the study's metrics: give it its own metrics");
+    add_collapse_intensity(r, p, ex, ex_key);
 
     // The study's engines, with this part's settings where it gives them.
     p.engines = study.engines;

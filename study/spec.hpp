@@ -21,9 +21,11 @@
 //
 // kind = "ensemble" is a record study over many records, read here into the kinds that run it: files = [...] (from the
 // study file's folder) or ensemble = "DIR" (DIR's *.at2 files, any case, and the files a records.csv or motions.csv
-// in DIR lists in its `file` column; each once, in name order), intensity = "pga", and levels = [g, ...] (a stripe
-// analysis: kind record with file x pga) or collapse = true (incremental dynamic analysis: kind scale-to-collapse over
-// the files, with its max_pga, step, tolerance). The ids, runs and rows are those of that study but for the `kind`
+// in DIR lists in its `file` column; each once, in name order), intensity = "pga" | "pgv" | "sa" | "arias" (sa with
+// sa_period and optional sa_damping), and levels = [...] in the measure's unit (a stripe analysis: kind record with
+// file x the measure's key, e.g. pgv) or collapse = true (incremental dynamic analysis: kind scale-to-collapse over
+// the files, with its max_pga, step, tolerance, which stay a PGA ceiling and relative steps of the scale; the
+// metrics gain collapse_<intensity>, collapse_pga stays). The ids, runs and rows are those of that study but for the `kind`
 // column ("ensemble"); PartSpec::ensemble remembers the rest. band = true (stripes only) adds the excitation axis
 // `perturbation` (kPerturbations): the analytic model's repeats of each case at the level x (1 +- 1e-3) and with the
 // record's first sample dropped (GroundMotion::drop_first_sample), which engines do not run (Grid::run_applies).
@@ -66,7 +68,11 @@ struct EngineSpec {
 // alpha2, R1), then hinge, xi, density, g.
 extern const std::vector<std::string> kWallKeys;
 extern const std::vector<std::string> kAssumptionKeys;  // kinematics, impact, roller
-extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, scale, pga, shape, amplitude, ...
+extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, scale, pga, pgv, sa, arias, shape, ...
+// The keys that scale a record to a level of an intensity measure (analytic/intensity_measures.hpp), each the measure's
+// word: pga [g], pgv [m/s], sa [g] at sa_period [s] and sa_damping (default 0.05), arias [m/s]. A record part gives at
+// most one of them or `scale`; an ensemble's `intensity` names one, and its levels become that key's.
+extern const std::vector<std::string> kLevelKeys;
 
 // The sensitivity band's perturbations of an ensemble's stripe case, the `perturbation` axis's levels in order: none,
 // the level x (1 + kBandStep), x (1 - kBandStep), the record without its first sample. Engines run "none" only.
@@ -75,7 +81,7 @@ constexpr double kBandStep = 1e-3;
 
 // What an ensemble part was in the file (kind = "ensemble"), read into a record or scale-to-collapse part.
 struct EnsembleSpec {
-    std::string intensity = "pga";  // the intensity measure of the levels (the only one so far)
+    std::string intensity = "pga";  // the intensity measure of the levels or the collapse: a kLevelKeys word
     bool collapse = false;          // true: incremental dynamic analysis (scale-to-collapse); false: stripes at levels
     bool band = false;              // stripes: the perturbation axis (the analytic model's sensitivity band)
     std::string folder;             // ensemble = "DIR" as given; "" when the file lists its records (files)

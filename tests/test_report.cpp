@@ -1258,4 +1258,14 @@ TEST(ReportEarthquake, NoneOrACaseSubsetRunsNoneAndAStudyThatIsNoEnsembleIsRefus
     EXPECT_EQ(r.code, 2);
     EXPECT_TRUE(contains(r.err, "the reference")) << r.err;
     EXPECT_FALSE(fs::exists(refused));
+    // Stripes in another measure than the PGA: the verdicts read PGA levels.
+    text = read(small_ensemble(tmp.path));
+    text.replace(text.find("intensity = \"pga\""), std::string("intensity = \"pga\"").size(), "intensity = \"pgv\"");
+    std::ofstream(tmp.path / "pgv.toml") << text;
+    r = run_cli({"report", "--engines", "analytic", "--cases", "fig6-pw", "--earthquake",
+                 (tmp.path / "pgv.toml").string(), "--out", refused.string()});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(contains(r.err, "its levels must be PGAs (intensity = \"pga\", not \"pgv\")")) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(refused));
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analytic/closed_forms.hpp"
+#include "analytic/intensity_measures.hpp"
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
@@ -265,6 +266,25 @@ TEST(ShippedStudies, EnsembleFullIsAGridOfEveryMotionOnThreeWallsAtTwoSteps) {
     // Per part: 6 analytic runs (the assumptions that are a model), each engine at two steps but Simbody's two
     // routes (one each).
     EXPECT_EQ(grid.runs().size(), spec.parts.size() * (6u + 2u * (spec.engines.size() - 1u) - 2u));
+}
+
+// The intensity study: read and gridded (a minute of runs is left to docs/earthquakes.md's measurement), in Sa(1 s) with
+// every search reporting the four measures.
+TEST(ShippedStudies, EnsembleIntensityIsTheReferencesIdaInFourMeasures) {
+    const study::StudySpec spec = study::read_study_file(std::string(VSSW_STUDIES_DIR) + "/ensemble-intensity.toml");
+    for (const study::PartSpec& part : spec.parts) {
+        ASSERT_TRUE(part.ensemble.has_value());
+        EXPECT_EQ(part.ensemble->intensity, "sa");
+        EXPECT_TRUE(part.ensemble->collapse);
+    }
+    EXPECT_EQ(spec.metrics, (std::vector<std::string>{"collapse_scale", "collapse_pga", "collapse_pgv", "collapse_sa",
+                                                      "collapse_arias"}));
+    const Grid grid(spec);
+    EXPECT_EQ(grid.case_ids().size(), 26u + 20u);
+    EXPECT_EQ(grid.runs().size(), spec.parts.size());  // the reference alone, once per part
+    const study::CaseSpec c = grid.make_case(grid.case_ids().front());
+    EXPECT_EQ(c.intensity.sa_period, 1.0);
+    EXPECT_EQ(c.intensity.sa_damping, kDefaultSaDamping);
 }
 
 }  // namespace

@@ -6,16 +6,26 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <map>
 #include <utility>
 #include <string>
 #include <vector>
 
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
+#include "analytic/intensity_measures.hpp"
+#include "io/csv.hpp"
+#include "study/ida_curves.hpp"
+#include "study/merge.hpp"
+#include "study/outputs.hpp"
+#include "study/results_files.hpp"
 #include "study/ensemble_measures.hpp"
 #include "study/study_data.hpp"
 #include "tests/engine_available.hpp"
@@ -158,7 +168,15 @@ TEST(StudyEnsemble, EachMalformationIsNamed) {
         {ex + files + pga + "levels = [0.4, 0.4]\n", "excitation.levels: lists 0.4 twice"},
         {ex + files + pga + "levels = [0.4, 0.40000001]\n",
          "excitation.levels: 0.4 and 0.40000001 are one level to 6 significant digits"},
-        {ex + files + "intensity = \"sa\"\nlevels = [0.4]\n", "excitation.intensity: must be one of pga, got \"sa\""},
+        {ex + files + "intensity = \"pgd\"\nlevels = [0.4]\n",
+         "excitation.intensity: must be one of pga, pgv, sa, arias, got \"pgd\""},
+        {ex + files + "intensity = \"sa\"\nlevels = [0.4]\n", "intensity \"sa\" needs 'sa_period'"},
+        {ex + files + "intensity = \"pgv\"\nsa_period = 1\nlevels = [0.4]\n",
+         "excitation.sa_period: is for intensity = \"sa\""},
+        {ex + files + "intensity = \"sa\"\nsa_period = 0\nlevels = [0.4]\n", "excitation.sa_period: must be"},
+        {ex + files + "intensity = \"sa\"\nsa_period = 1\nsa_damping = 1\nlevels = [0.4]\n",
+         "excitation.sa_damping: must be a damping ratio in [0, 1), got 1"},
+        {ex + files + "intensity = \"pgv\"\nlevels = [0.4, 0]\n", "excitation.levels: must be a PGV in m/s, > 0, got 0"},
         {ex + files + "levels = [0.4]\n", "kind ensemble needs 'intensity'"},
         {ex + files + pga + "collapse = \"yes\"\n", "excitation.collapse: must be true or false, got \"yes\""},
         {ex + files + pga + "collapse = true\nband = true\n", "excitation.band: is for a stripe analysis"},
@@ -355,6 +373,144 @@ TEST(StudyEnsemble, RockingCurvesAreTheRecordsPeakQuartilesAtEachAlpha) {
         EXPECT_NEAR(p.peak.q3, 0.5 * (peaks[1] + peaks[2]), kSamePeak * peaks[2]);
         EXPECT_EQ(p.overturned, overturned);
     }
+}
+
+// The record's PGV and Arias intensity computed here, apart from the library: trapezoidal, from rest.
+double pgv_of(const GroundMotion& r) {
+    const std::vector<double>&t = r.sample_times(), &a = r.sample_values();
+    double v = 0.0, peak = 0.0;
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        v += 0.5 * (t[i] - t[i - 1]) * (a[i] + a[i - 1]);
+        peak = std::max(peak, std::abs(v));
+    }
+    return peak;
+}
+double arias_of(const GroundMotion& r) {
+    const std::vector<double>&t = r.sample_times(), &a = r.sample_values();
+    double sum = 0.0;
+    for (std::size_t i = 1; i < t.size(); ++i) sum += 0.5 * (t[i] - t[i - 1]) * (a[i] * a[i] + a[i - 1] * a[i - 1]);
+    return M_PI / (2.0 * kStandardGravity) * sum;
+}
+
+// Stripes in another measure: each record scaled so that its measure equals the level (the Arias intensity by the
+// square root of the ratio), every scale recomputed here from the record file and the level; the rows carry the
+// measure's value, name and unit, and the PGA the scale gives.
+TEST(StudyEnsemble, StripesInPgvSaAndAriasScaleEachRecordToItsLevel) {
+    // Sums in another order than the library's over a few thousand samples, then a ratio: a few ulps of each.
+    constexpr double kRecomputed = 1e-12;
+    const TempDir dir;
+    struct Measure {
+        std::string word, unit, extra;
+        double level;
+    };
+    for (const Measure& m : {Measure{"pgv", "m/s", "", 0.3}, Measure{"sa", "g", "sa_period = 1\n", 0.5},
+                             Measure{"arias", "m/s", "", 0.8}}) {
+        const Grid grid(study_of(dir, "metrics = [\"overturned\"]\n" + kWall + "[excitation]\nkind = \"ensemble\"\n" +
+                                          "files = " + file_list() + "\nintensity = \"" + m.word + "\"\n" + m.extra +
+                                          fmt::format("levels = [{}, {}]\n", m.level, 2.0 * m.level),
+                                 m.word + ".toml"));
+        const ResultsTable t = run_into(grid, dir / m.word, 2);
+        ASSERT_EQ(t.rows.size(), 4u) << m.word;
+        for (const auto& row : t.rows) {
+            const GroundMotion record = read_record(row[t.column("file")]);
+            const double at_one = m.word == "pgv"  ? pgv_of(record)
+                                  : m.word == "sa" ? spectral_acceleration(record.sample_times(),
+                                                                           record.sample_values(), 1.0, 0.05) /
+                                                         kStandardGravity
+                                                   : arias_of(record);
+            const double level = std::stod(row[t.column(m.word)]);
+            const double scale = m.word == "arias" ? std::sqrt(level / at_one) : level / at_one;
+            EXPECT_NEAR(std::stod(row[t.column("scale")]) / scale, 1.0, kRecomputed) << m.word;
+            EXPECT_TRUE(std::abs(level / m.level - 1.0) < kRecomputed || std::abs(level / (2.0 * m.level) - 1.0) < kRecomputed)
+                << m.word << " " << level;
+            EXPECT_NEAR(std::stod(row[t.column("pga")]) / (scale * record.pga() / kStandardGravity), 1.0, kRecomputed);
+            EXPECT_EQ(row[t.column("intensity")], m.word);
+            EXPECT_EQ(row[t.column("intensity_unit")], m.unit);
+        }
+    }
+}
+
+// An IDA in PGV: collapse_pgv is collapse_scale times the record's PGV (collapse_pga stays); ida.csv holds every run
+// of each search, the smallest overturning intensity among them the collapse intensity; fragility.csv's fit is the
+// log-moments of results.csv's collapse_pgv rows, in m/s.
+TEST(StudyEnsemble, IdaInPgvReportsItsCollapseIntensitiesAndCurves) {
+    constexpr double kRecomputed = 1e-12;  // as above
+    const TempDir dir;
+    const Grid grid(study_of(dir, kWall + "[excitation]\nkind = \"ensemble\"\nfiles = " + file_list() +
+                                      "\nintensity = \"pgv\"\ncollapse = true\nstep = 0.1\ntolerance = 0.01\n"));
+    EXPECT_EQ(grid.spec().metrics, (std::vector<std::string>{"collapse_scale", "collapse_pga", "collapse_pgv"}));
+    const ResultsTable t = run_into(grid, dir / "ida", 2);
+    std::map<int, std::map<std::string, double>> by_case;
+    std::map<int, std::string> file;
+    for (const auto& row : t.rows) {
+        by_case[std::stoi(row[t.column("case_id")])][row[t.column("metric")]] = std::stod(row[t.column("value")]);
+        file[std::stoi(row[t.column("case_id")])] = row[t.column("file")];
+        if (row[t.column("metric")] == "collapse_pgv") {
+            EXPECT_EQ(row[t.column("unit")], "m/s");
+        }
+    }
+    ASSERT_EQ(by_case.size(), 2u);
+    std::vector<double> logs;
+    const std::vector<study::IdaCurve> curves = study::read_ida_csv(dir / "ida" / study::kIdaCsv);
+    ASSERT_EQ(curves.size(), 2u);
+    for (const auto& [id, values] : by_case) {
+        const GroundMotion record = read_record(file[id]);
+        EXPECT_NEAR(values.at("collapse_pgv") / (values.at("collapse_scale") * pgv_of(record)), 1.0, kRecomputed);
+        logs.push_back(std::log(values.at("collapse_pgv")));
+        const study::IdaCurve& curve = curves[id == curves[0].case_id ? 0 : 1];
+        EXPECT_EQ(curve.case_id, id);
+        EXPECT_EQ(curve.measure, "pgv");
+        double first_overturning = INFINITY;
+        for (std::size_t i = 0; i < curve.intensity.size(); ++i)
+            if (curve.overturned[i]) first_overturning = std::min(first_overturning, curve.intensity[i]);
+        EXPECT_NEAR(first_overturning / values.at("collapse_pgv"), 1.0, kRecomputed);
+        EXPECT_GT(curve.intensity.size(), 3u);  // the steps and the bisection
+    }
+    study::OutputOptions o;
+    o.plots = false;
+    study::write_study_outputs(dir / "ida", o);
+    std::ifstream in(dir / "ida" / "fragility.csv");
+    std::vector<std::string> header, row, more;
+    ASSERT_TRUE(study::read_csv_record(in, header) && study::read_csv_record(in, row));
+    EXPECT_FALSE(study::read_csv_record(in, more) && !(more.size() == 1 && more[0].empty()));  // one series, one wall
+    const auto field = [&](const std::string& name) {
+        return row.at(static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin()));
+    };
+    EXPECT_EQ(field("intensity"), "pgv_ida");
+    EXPECT_EQ(field("intensity_unit"), "m/s");
+    const double mean = 0.5 * (logs[0] + logs[1]);
+    EXPECT_NEAR(std::log(std::stod(field("median"))), mean, kRecomputed);
+    EXPECT_NEAR(std::stod(field("beta")), std::abs(logs[0] - logs[1]) / std::sqrt(2.0), kRecomputed);
+}
+
+// The fractiles of the IDA curves: the lowest intensity reaching a peak on a curve linear between its runs, and
+// quantiles that stay infinite where a record never reaches the peak.
+TEST(StudyEnsemble, IdaFractilesReadTheCurvesLowestCrossing) {
+    study::IdaCurve c;
+    c.intensity = {0.1, 0.2, 0.3, 0.4};
+    c.peak = {0.1, 0.5, 0.3, 2.0};  // a resurrection: the peak falls at 0.3
+    c.overturned = {false, false, false, true};
+    EXPECT_DOUBLE_EQ(study::intensity_reaching(c, 0.05), 0.05);
+    EXPECT_DOUBLE_EQ(study::intensity_reaching(c, 0.3), 0.15);  // the first crossing, not the one after 0.3
+    EXPECT_DOUBLE_EQ(study::intensity_reaching(c, 1.0), 0.3 + 0.1 * 0.7 / 1.7);
+    EXPECT_TRUE(std::isinf(study::intensity_reaching(c, 3.0)));
+    EXPECT_DOUBLE_EQ(study::fractile({3.0, 1.0, 2.0}, 0.5), 2.0);
+    EXPECT_DOUBLE_EQ(study::fractile({1.0, 2.0, 3.0, 4.0, 5.0}, 0.16), 1.64);
+    EXPECT_TRUE(std::isinf(study::fractile({1.0, 2.0, INFINITY}, 0.84)));
+}
+
+// ida.csv from shards merged is the same bytes as from one run (each task's points in the order run, cases in order).
+TEST(StudyEnsemble, IdaCurvesOfShardsMergeIntoTheOneRunsFile) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kWall + "[excitation]\nkind = \"ensemble\"\nfiles = " + file_list() +
+                                      "\nintensity = \"arias\"\ncollapse = true\nstep = 0.1\ntolerance = 0.01\n"));
+    run_into(grid, dir / "one", 2);
+    run_into(grid, dir / "s1", 1, {1, 2});
+    run_into(grid, dir / "s2", 1, {2, 2});
+    study::merge_studies({dir / "s1", dir / "s2"}, dir / "merged", {});
+    const std::string one = vssw::testing::read_file(dir / "one" / study::kIdaCsv);
+    EXPECT_NE(one.find(",arias,"), std::string::npos);
+    EXPECT_EQ(vssw::testing::read_file(dir / "merged" / study::kIdaCsv), one);
 }
 
 }  // namespace

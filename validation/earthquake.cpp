@@ -53,6 +53,10 @@ void require_stripe_ensemble(const StudySpec& spec, const std::string& file) {
     };
     if (spec.parts.size() != 1) refuse("one part (one wall's ensemble) is what the report judges");
     const PartSpec& p = spec.parts.front();
+    if (p.ensemble && !p.ensemble->collapse && p.ensemble->intensity != "pga")
+        refuse(fmt::format("its levels must be PGAs (intensity = \"pga\", not \"{}\"): the report's verdicts and "
+                           "prose read PGA levels",
+                           p.ensemble->intensity));
     if (!p.ensemble || p.ensemble->collapse || !p.excitation_axis("pga"))
         refuse("it must be an ensemble of stripes (kind = \"ensemble\" with levels): its records' overturning is "
                "what the report judges");
