@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "compare/ensemble_statistics.hpp"
+#include "compare/paired_runs.hpp"
 #include "study/study_data.hpp"
 
 namespace vssw::study {
@@ -59,6 +60,11 @@ struct SeriesMeasures {
                                       // that failed where the reference has a result counts as not agreeing)
     long failed_runs = 0;             // its runs with no overturning value (failed)
     compare::Quartiles peak_ratio{};  // its peak / the reference's where neither overturned
+    // Paired with the reference run by run (compare/paired_runs.hpp): ln(its peak / the reference's) where both
+    // stand, grouped by record, its median with a bootstrap over records; the discordant runs (it overturned and the
+    // reference stood; the reverse) and its failed runs where the reference has a result.
+    compare::MedianBootstrap log_peak_ratio{};
+    long overturned_alone = 0, stood_alone = 0, failed_paired = 0;
     bool band = false;                // the reference had perturbed repeats
     compare::BandCount inside;        // its peaks inside the reference's band
     std::vector<std::string> outside_band;  // the runs outside it ("file at 0.55 g"), in the study's order
