@@ -176,7 +176,9 @@ FitBootstrap bootstrap_stripes(const std::vector<double>& levels, const std::vec
     check(levels, records);
     check_bootstrap_options(options);
     const auto refit = [&levels](const std::vector<StripeOutcomes>& sample) { return fit(levels, sample); };
-    return bootstrap_records(records, fit(levels, records), refit, options);
+    FitBootstrap out = bootstrap_records(records, fit(levels, records), refit, options);
+    unresolve_below(out, out.fit.records, kMinStripeIntervalRecords);
+    return out;
 }
 
 RatioBootstrap bootstrap_stripe_median_ratio(const std::vector<double>& levels,
@@ -189,8 +191,10 @@ RatioBootstrap bootstrap_stripe_median_ratio(const std::vector<double>& levels,
     check(levels, reference);
     check_bootstrap_options(options);
     const auto refit = [&levels](const std::vector<StripeOutcomes>& sample) { return fit(levels, sample); };
-    return bootstrap_paired_ratio(engine, reference, fit(levels, engine), fit(levels, reference), refit, refit,
-                                  options);
+    RatioBootstrap out = bootstrap_paired_ratio(engine, reference, fit(levels, engine), fit(levels, reference), refit,
+                                                refit, options);
+    unresolve_below(out, static_cast<long>(engine.size()), kMinStripeIntervalRecords);
+    return out;
 }
 
 }  // namespace vssw::compare

@@ -237,6 +237,7 @@ std::string interval_text(const compare::Interval& i, const std::string& format)
 
 std::string fit_note(const compare::FitBootstrap& f) {
     if (!f.fit.ok()) return f.fit.reason;
+    if (!f.interval_reason.empty()) return f.interval_reason;
     // A fit whose resamples all give one median: the records cannot move it, so its interval says nothing.
     if (f.median.n > 0 && f.median.lo == f.median.hi) return "not resolved: every resample gives the same median";
     return "";

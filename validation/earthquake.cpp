@@ -146,6 +146,7 @@ EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& 
     if (!m.fitted()) v.fit_note = "no stripes to fit";
     else if (!m.fit.fit.ok()) v.fit_note = m.fit.fit.reason;
     else if (!std::isfinite(v.median_ratio.value)) v.fit_note = "the reference's fragility was not fitted";
+    else if (!m.ratio.reason.empty()) v.fit_note = m.ratio.reason;
     else if (v.median_ratio.lo == v.median_ratio.hi)
         v.fit_note = "not resolved: every resample gives the same ratio (the records cannot move it)";
     v.ratio_failed = m.ratio.failed;
