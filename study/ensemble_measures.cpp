@@ -270,6 +270,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     std::vector<Key> band_runs;  // the run of each band entry, to name the ones outside
     std::map<std::uint32_t, std::pair<long, long>> per_level;  // pga level -> (overturned, runs)
     std::map<Key, std::vector<double>> log_ratios;  // by record (the run's key without its level)
+    std::vector<double> half_widths;                // the band's 0.5 ln(hi / lo) where both stand
     for (const auto& [key, over] : runs.overturned) {
         if (wall_of(c, key) != wall) continue;
         m.stripes = true;
@@ -284,6 +285,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         if (!reference) continue;
         const auto peak = runs.peak.find(key);
         const double own_peak = peak == runs.peak.end() ? NAN : peak->second;
+        bool both_stand = false;
         const auto ref_over = reference->overturned.find(key);
         const auto ref_peak = reference->peak.find(key);
         if (ref_over != reference->overturned.end() && std::isfinite(ref_over->second)) {
@@ -293,8 +295,8 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
             if (over < 0.5 && ref_over->second < 0.5 && ref_peak != reference->peak.end() &&
                 std::isfinite(ref_peak->second) && ref_peak->second != 0.0 && std::isfinite(own_peak)) {
                 ratios.push_back(own_peak / ref_peak->second);
-                if (own_peak > 0.0 && ref_peak->second > 0.0)
-                    log_ratios[record_of(c, key)].push_back(std::log(own_peak / ref_peak->second));
+                both_stand = own_peak > 0.0 && ref_peak->second > 0.0;
+                if (both_stand) log_ratios[record_of(c, key)].push_back(std::log(own_peak / ref_peak->second));
             }
         }
         const auto repeats = reference->perturbed_peak.find(key);
@@ -304,6 +306,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         const auto [lo, hi] = std::minmax_element(repeats->second.begin(), repeats->second.end());
         band.push_back({ref_peak->second, std::min(*lo, ref_peak->second), std::max(*hi, ref_peak->second), own_peak});
         band_runs.push_back(key);
+        if (both_stand && band.back().lo > 0.0) half_widths.push_back(0.5 * std::log(band.back().hi / band.back().lo));
     }
     if (!m.stripes) return;
     m.overturning = both > 0 ? compare::wilson_interval(agree, both, kEnsembleConfidence)
@@ -315,6 +318,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     m.band = !band.empty();
     if (m.band) {
         m.inside = compare::count_inside_band(band);
+        m.band_half_width = compare::quantile(half_widths, 0.5);
         for (std::size_t i : m.inside.outside) m.outside_band.push_back(run_name(d, c, band_runs[i]));
     }
     if (c.pga == std::string::npos) return;

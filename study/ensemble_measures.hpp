@@ -67,6 +67,9 @@ struct SeriesMeasures {
     long overturned_alone = 0, stood_alone = 0, failed_paired = 0;
     bool band = false;                // the reference had perturbed repeats
     compare::BandCount inside;        // its peaks inside the reference's band
+    // The band's median half-width in ln, 0.5 ln(hi / lo), over the runs where both stand (NaN without a band): how
+    // far the reference's peaks move within what the free-vibration targets allow.
+    double band_half_width = NAN;
     std::vector<std::string> outside_band;  // the runs outside it ("file at 0.55 g"), in the study's order
     std::vector<StripeShare> levels;  // by PGA level, in the study's order
 };

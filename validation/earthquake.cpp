@@ -170,7 +170,9 @@ EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& 
     v.mcnemar_p = compare::mcnemar_exact_p(b, c);
     // The interval within the margin (NaN: no run where both stand, or no interval: fails).
     const compare::Interval& d = v.log_peak.median;
-    v.peak_pass = d.lo >= -kPeakLogRatioTarget && d.hi <= kPeakLogRatioTarget;
+    v.band_half_width = m.band_half_width;
+    if (std::isfinite(m.band_half_width)) v.peak_target = std::max(kPeakLogRatioTarget, m.band_half_width);
+    v.peak_pass = d.lo >= -v.peak_target && d.hi <= v.peak_target;
     v.overturning_pass = m.stripes && v.mcnemar_p >= kMcNemarAlpha && v.agreement_pass;
     v.pass = v.peak_pass && v.overturning_pass;
     return v;
@@ -295,6 +297,8 @@ Json verdict_json(const EarthquakeVerdict& v) {
     peak["records"] = v.log_peak.records;
     peak["failed_replicates"] = v.log_peak.failed;
     peak["pass"] = v.peak_pass;
+    peak["target"] = v.peak_target;
+    peak["band_half_width"] = finite_or_null(v.band_half_width);
     return {{"engine", v.engine},
             {"pass", v.pass},
             {"overturning_agreement", agreement},

@@ -22,7 +22,8 @@ namespace vssw::study {
 // An engine passes under records when both its verdicts pass (binary agreement alone never passes it):
 //  - peaks: over the runs where both stand, d = ln(engine peak / reference peak); the 95 % bootstrap interval (over
 //    records) of the median of d lies within +-kPeakLogRatioTarget: the median peak ratio shown to be within
-//    x e^+-0.1 by this ensemble (few runs, wide interval: no pass);
+//    x e^+-0.1 by this ensemble (few runs, wide interval: no pass), or within the sensitivity band's median
+//    half-width where that is wider (EarthquakeVerdict::peak_target);
 //  - overturning: the exact McNemar test of the discordant runs (b: it overturned alone, c: the reference alone; a
 //    run it failed counts on the side of the larger count) at p >= kMcNemarAlpha, and agreement on at least
 //    kOverturningAgreementTarget of the runs.
@@ -65,6 +66,9 @@ struct EarthquakeVerdict {
     compare::MedianBootstrap log_peak{};  // median ln(its peak / the reference's) where both stand, bootstrap 95 %
     long overturned_alone = 0, stood_alone = 0, failed_paired = 0;  // McNemar's b, c and its failed runs
     double mcnemar_p = 1.0;              // b and c with the failed runs counted on the larger side
+    // The peaks' margin: kPeakLogRatioTarget, or the band's median half-width in ln where that is wider (an ensemble
+    // whose response the targets' own tolerances move more than 10 % cannot ask an engine for 10 %).
+    double peak_target = kPeakLogRatioTarget, band_half_width = NAN;
     bool peak_pass = false, overturning_pass = false;
     bool pass = false;  // peak_pass && overturning_pass
 };
