@@ -1244,6 +1244,26 @@ TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
     EXPECT_TRUE(contains(r.out, "Under records: this ensemble ")) << r.out;
 }
 
+// The Engines table and results.json say the settings each engine ran with under records (the ensemble file's
+// [settings.ENGINE]), not only the suite's: an engine at cfm = 1e-5 there was reported as "defaults" (issue 39).
+TEST(ReportEarthquake, EnginesTableListsTheSettingsTheRecordsRanWith) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    TempDir tmp("earthquake_settings");
+    const fs::path out = tmp.path / "report";
+    std::string text = read(small_ensemble(tmp.path));
+    text.replace(text.find("[\"analytic\"]"), std::string("[\"analytic\"]").size(), "[\"analytic\", \"ode\"]");
+    std::ofstream(tmp.path / "small-ensemble.toml") << text << "[settings.ode]\ncfm = 1e-5\n";
+    const CliResult r = run_cli({"report", "--engines", "ode", "--cases", "fig6-pw", "--no-plots", "--earthquake",
+                                 (tmp.path / "small-ensemble.toml").string(), "--out", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Json j = Json::parse(read(out / "results.json"));
+    EXPECT_DOUBLE_EQ(j["earthquake"]["engines"].at(0)["settings"]["cfm"].get<double>(), 1e-5);
+    const std::string md = read(out / "report.md");
+    const std::string engines = md.substr(md.find("## Engines"));
+    EXPECT_TRUE(contains(lines_of(engines).at(2), "under records")) << engines;
+    EXPECT_TRUE(contains(engines, "| cfm=1e-05 |")) << engines;
+}
+
 TEST(ReportEarthquake, NoneOrACaseSubsetRunsNoneAndAStudyThatIsNoEnsembleIsRefused) {
     TempDir tmp("earthquake_none");
     const fs::path none = tmp.path / "none", subset = tmp.path / "subset", refused = tmp.path / "refused";

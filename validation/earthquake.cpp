@@ -84,7 +84,9 @@ void require_judgeable(const StudySpec& spec, const std::string& file) {
 }
 
 EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
-    return judge_series(d.series[m.series].engine, m);
+    EarthquakeVerdict v = judge_series(d.series[m.series].engine, m);
+    v.settings = d.series[m.series].settings;  // as results.csv has them: what the engine ran at
+    return v;
 }
 
 // The report's ensemble for the analytic model and `engine` at `settings` (an object of lists: a series per
@@ -101,13 +103,13 @@ StudySpec settings_spec(const std::string& file, const std::string& engine, cons
 }
 
 // A series' settings text ("dt=0.001 cfm=1e-05") as an object of numbers.
-Json settings_of(const Series& s) {
+Json settings_of(const std::string& text) {
     Json out = Json::object();
     std::size_t at = 0;
-    while (at < s.settings.size()) {
-        std::size_t end = s.settings.find(' ', at);
-        if (end == std::string::npos) end = s.settings.size();
-        const std::string token = s.settings.substr(at, end - at);
+    while (at < text.size()) {
+        std::size_t end = text.find(' ', at);
+        if (end == std::string::npos) end = text.size();
+        const std::string token = text.substr(at, end - at);
         const std::size_t eq = token.find('=');
         if (eq != std::string::npos) out[token.substr(0, eq)] = std::strtod(token.c_str() + eq + 1, nullptr);
         at = end + 1;
@@ -196,7 +198,7 @@ std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const
     for (const SeriesMeasures& m : e.measures) {
         const Series& s = d.series[m.series];
         if (s.engine != engine || (e.has_reference && m.series == e.reference)) continue;
-        out.push_back({settings_of(s), judge_series(engine, m)});
+        out.push_back({settings_of(s.settings), judge_series(engine, m)});
     }
     return out;
 }
@@ -300,6 +302,7 @@ Json verdict_json(const EarthquakeVerdict& v) {
     peak["target"] = v.peak_target;
     peak["band_half_width"] = finite_or_null(v.band_half_width);
     return {{"engine", v.engine},
+            {"settings", settings_of(v.settings)},  // as run under records (finding 6: not the suite's)
             {"pass", v.pass},
             {"overturning_agreement", agreement},
             {"overturning_mcnemar", {{"overturned_alone", v.overturned_alone},

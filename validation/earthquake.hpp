@@ -53,6 +53,7 @@ inline const std::vector<double>& detection_restitution_errors() {
 
 struct EarthquakeVerdict {
     std::string engine;
+    std::string settings;              // the settings it ran under records ("cfm=1e-05"; "" its defaults)
     compare::Interval agreement{};     // overturning agreement with the reference (Wilson 95 %)
     compare::Interval median_ratio{};  // fragility median / the reference's (paired bootstrap 95 %)
     std::string fit_note;              // why the engine's fragility ratio is not resolved (empty when it is)
