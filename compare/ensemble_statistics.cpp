@@ -15,6 +15,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kSqrt2 = 1.41421356237309504880;
 constexpr double kSqrt2Pi = 2.50662827463100050242;  // sqrt(2 pi)
+constexpr double kPi = 3.14159265358979323846;
 
 Interval nan_interval(long n) { return {kNaN, kNaN, kNaN, n}; }
 
@@ -179,7 +180,48 @@ bool any_censored(const std::vector<IdaRecord>& records) {
 
 
 
+// P(|T| <= t) for Student's T with integer dof (Abramowitz & Stegun 26.7.3-4), theta = atan(t / sqrt(dof)):
+// odd dof, (2/pi) (theta + sin cos (1 + 2/3 cos^2 + 2*4/(3*5) cos^4 + ...)) (the sum empty at 1);
+// even dof, sin (1 + 1/2 cos^2 + 1*3/(2*4) cos^4 + ...), up to cos^(dof - 2) in both.
+double student_t_two_sided(double t, long dof) {
+    const double theta = std::atan(t / std::sqrt(static_cast<double>(dof)));
+    const double c2 = std::cos(theta) * std::cos(theta);
+    const bool odd = dof % 2 == 1;
+    double term = 1.0, sum = odd && dof == 1 ? 0.0 : 1.0;
+    for (long k = 1; 2 * k <= dof - (odd ? 3 : 2); ++k) {
+        const double two_k = 2.0 * static_cast<double>(k);
+        term *= c2 * (odd ? two_k / (two_k + 1.0) : (two_k - 1.0) / two_k);
+        sum += term;
+    }
+    return odd ? 2.0 / kPi * (theta + std::sin(theta) * std::cos(theta) * sum) : std::sin(theta) * sum;
+}
+
+// exp(mean -/+ t s / sqrt(n)) of ln values: the t interval of their mean, back in the values' unit.
+Interval log_t_interval(const std::vector<double>& logs, double confidence) {
+    const double n = static_cast<double>(logs.size());
+    double mean = 0.0, squares = 0.0;
+    for (double y : logs) mean += y / n;
+    for (double y : logs) squares += (y - mean) * (y - mean);
+    const long dof = static_cast<long>(logs.size()) - 1;
+    const double half = student_t_quantile(0.5 * (1.0 + confidence), dof) * std::sqrt(squares / (n - 1.0) / n);
+    return {std::exp(mean), std::exp(mean - half), std::exp(mean + half), static_cast<long>(logs.size())};
+}
+
 }  // namespace
+
+double student_t_quantile(double p, long dof) {
+    require(dof >= 1, "Student's t degrees of freedom", "at least 1", static_cast<double>(dof));
+    require(p > 0.0 && p < 1.0, "Student's t probability", "in (0, 1)", p);
+    if (p < 0.5) return -student_t_quantile(1.0 - p, dof);
+    const double target = 2.0 * p - 1.0;  // P(|T| <= t)
+    double lo = 0.0, hi = 1.0;
+    while (student_t_two_sided(hi, dof) < target) hi *= 2.0;
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {  // bisection to the last bits
+        const double mid = 0.5 * (lo + hi);
+        (student_t_two_sided(mid, dof) < target ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / kSqrt2); }
 
@@ -294,8 +336,18 @@ FitBootstrap bootstrap_fit(const std::vector<IdaRecord>& records, const Bootstra
     check_records(records);
     check_bootstrap_options(options);
     const bool mle = any_censored(records);
-    return bootstrap_records(records, fit_impl(records, false),
-                             [mle](const std::vector<IdaRecord>& sample) { return fit_impl(sample, mle); }, options);
+    FitBootstrap out = bootstrap_records(
+        records, fit_impl(records, false), [mle](const std::vector<IdaRecord>& sample) { return fit_impl(sample, mle); },
+        options);
+    if (mle) {
+        unresolve_below(out, static_cast<long>(records.size()), kMinCensoredIntervalRecords);
+    } else if (out.fit.ok()) {
+        std::vector<double> logs;
+        for (const IdaRecord& r : records) logs.push_back(std::log(r.im));
+        out.median = log_t_interval(logs, options.confidence);
+        out.median.value = out.fit.median;  // the same number; the fit's own, to the bit
+    }
+    return out;
 }
 
 RatioBootstrap bootstrap_median_ratio(const std::vector<IdaRecord>& engine, const std::vector<IdaRecord>& reference,
@@ -306,10 +358,20 @@ RatioBootstrap bootstrap_median_ratio(const std::vector<IdaRecord>& engine, cons
     check_records(reference);
     check_bootstrap_options(options);
     const bool engine_mle = any_censored(engine), reference_mle = any_censored(reference);
-    return bootstrap_paired_ratio(
+    RatioBootstrap out = bootstrap_paired_ratio(
         engine, reference, fit_impl(engine, false), fit_impl(reference, false),
         [engine_mle](const std::vector<IdaRecord>& sample) { return fit_impl(sample, engine_mle); },
         [reference_mle](const std::vector<IdaRecord>& sample) { return fit_impl(sample, reference_mle); }, options);
+    if (engine_mle || reference_mle) {
+        unresolve_below(out, static_cast<long>(engine.size()), kMinCensoredIntervalRecords);
+    } else if (std::isfinite(out.ratio.value)) {
+        std::vector<double> d;
+        for (std::size_t i = 0; i < engine.size(); ++i) d.push_back(std::log(engine[i].im / reference[i].im));
+        const double value = out.ratio.value;
+        out.ratio = log_t_interval(d, options.confidence);
+        out.ratio.value = value;  // the two fits' ratio, to the bit
+    }
+    return out;
 }
 
 double quantile(const std::vector<double>& values, double p) {

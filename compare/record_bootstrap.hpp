@@ -6,12 +6,32 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "compare/ensemble_statistics.hpp"
 
 namespace vssw::compare {
+
+// Leaves a percentile interval's ends out below `min_records` records (compare/ensemble_statistics.hpp: its coverage
+// there is far below nominal). The values stay: they are the fit's.
+inline std::string too_few_records(long records, long min_records) {
+    return "not resolved: " + std::to_string(records) + " records (a percentile interval needs " +
+           std::to_string(min_records) + ": below, it covers well under 95 %)";
+}
+inline void leave_out_ends(Interval& i) { i.lo = i.hi = NAN; }
+inline void unresolve_below(FitBootstrap& f, long records, long min_records) {
+    if (!f.fit.ok() || records >= min_records) return;
+    f.interval_reason = too_few_records(records, min_records);
+    leave_out_ends(f.median);
+    leave_out_ends(f.beta);
+}
+inline void unresolve_below(RatioBootstrap& r, long records, long min_records) {
+    if (!std::isfinite(r.ratio.value) || records >= min_records) return;
+    r.reason = too_few_records(records, min_records);
+    leave_out_ends(r.ratio);
+}
 
 // `full` is the fit to all records (the intervals' values); refit(sample) fits a resample.
 template <class Record, class Refit>

@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "analytic/error.hpp"
 #include "compare/record_bootstrap.hpp"
 
@@ -19,6 +21,15 @@ constexpr double kDecrement = 1e-12;
 // Backtracking halves a Newton step down to this fraction of it: 40 halvings, past any step that could still raise
 // a concave ln L in doubles.
 constexpr double kSmallestStep = 1e-12;
+// A fit the data do not support is "not resolved", never a number (issue 39). beta above this: the shares hardly
+// change over the levels (flat stripes gave beta 2e7); between 16 % and 84 % collapse the intensity would grow
+// e^(2 beta) = 55-fold, where the rocking walls measured span beta 0.25-0.6 (PGA, PGV) and 1.2 at most (Arias).
+constexpr double kMaxResolvedBeta = 2.0;
+// beta below this: the shares jump from 16 % to 84 % within +-2 % of the intensity, finer than the intensity's own
+// uncertainty (+-1 %, docs/earthquakes.md) and than any ensemble's levels (beta 7e-17 was fitted).
+constexpr double kMinResolvedBeta = 0.02;
+// Fewer records than this: a median and beta from two records are no fit (the median's standard error beta/sqrt(n)).
+constexpr long kMinResolvedRecords = 3;
 constexpr const char* kFalling = "the share collapsed falls as the intensity rises";
 constexpr const char* kSeparated =
     "the stripes do not overlap (no run stands at a level above one where a run collapsed): no finite beta";
@@ -68,7 +79,7 @@ Local local(const Stripes& s, double gamma, double delta) {
 
 LognormalFit not_fitted(LognormalFit fit, const std::string& why) {
     fit.median = fit.beta = kNaN;
-    fit.reason = why;
+    fit.reason = "not resolved: " + why;  // every stripe fit not made is one the data do not support
     return fit;
 }
 
@@ -89,6 +100,9 @@ LognormalFit fit(const std::vector<double>& levels, const std::vector<StripeOutc
                 break;
             }
     out.collapsed = static_cast<long>(collapsed);
+    if (out.records < kMinResolvedRecords)
+        return not_fitted(out, fmt::format("{} records (a fit needs {})", out.records,
+                                           kMinResolvedRecords));
     if (collapsed == 0.0 || collapsed == runs)
         return not_fitted(out, collapsed == 0.0 ? "no run collapsed" : "every run collapsed");
     // A finite maximum needs the outcomes to overlap: some run standing at a higher level than some run collapsing.
@@ -120,6 +134,10 @@ LognormalFit fit(const std::vector<double>& levels, const std::vector<StripeOutc
         const double decrement = 0.5 * (l.g_gamma * step_g + l.g_delta * step_d);
         if (decrement < kDecrement) {
             if (!(gamma > 0.0)) return not_fitted(out, kFalling);
+            if (1.0 / gamma > kMaxResolvedBeta || 1.0 / gamma < kMinResolvedBeta)
+                return not_fitted(out, fmt::format("beta {:.3g} outside [{:g}, {:g}] (the stripes {})",
+                                                   1.0 / gamma, kMinResolvedBeta, kMaxResolvedBeta,
+                                                   1.0 / gamma > kMaxResolvedBeta ? "are flat" : "barely overlap"));
             out.median = std::exp(delta / gamma);
             out.beta = 1.0 / gamma;
             return out;
@@ -158,7 +176,9 @@ FitBootstrap bootstrap_stripes(const std::vector<double>& levels, const std::vec
     check(levels, records);
     check_bootstrap_options(options);
     const auto refit = [&levels](const std::vector<StripeOutcomes>& sample) { return fit(levels, sample); };
-    return bootstrap_records(records, fit(levels, records), refit, options);
+    FitBootstrap out = bootstrap_records(records, fit(levels, records), refit, options);
+    unresolve_below(out, out.fit.records, kMinStripeIntervalRecords);
+    return out;
 }
 
 RatioBootstrap bootstrap_stripe_median_ratio(const std::vector<double>& levels,
@@ -171,8 +191,10 @@ RatioBootstrap bootstrap_stripe_median_ratio(const std::vector<double>& levels,
     check(levels, reference);
     check_bootstrap_options(options);
     const auto refit = [&levels](const std::vector<StripeOutcomes>& sample) { return fit(levels, sample); };
-    return bootstrap_paired_ratio(engine, reference, fit(levels, engine), fit(levels, reference), refit, refit,
-                                  options);
+    RatioBootstrap out = bootstrap_paired_ratio(engine, reference, fit(levels, engine), fit(levels, reference), refit,
+                                                refit, options);
+    unresolve_below(out, static_cast<long>(engine.size()), kMinStripeIntervalRecords);
+    return out;
 }
 
 }  // namespace vssw::compare

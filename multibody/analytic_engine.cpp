@@ -20,9 +20,15 @@ namespace {
 constexpr const char* kRtol = "rtol";
 constexpr double kDefaultRtol = 1e-10;
 constexpr double kDefaultOutputDt = 1e-4;  // [s] the engines' default step (EngineSettings::dt)
+// A stand-in engine's error (the report's detection limit, validation/earthquake.hpp): every impact's velocity ratio
+// times (1 + this), the law's own ratio (Eq. 19, the whole mechanism's, a given one) changed alike; the off-roller
+// landings are plastic and stay so. Up to +-0.5: a ratio changed by half is far past any target, and the result
+// must stay an impact ratio in [0, 1].
+constexpr double kMaxRestitutionError = 0.5;
 
 struct Knobs {
     double rtol = kDefaultRtol;
+    double restitution_error = 0.0;
     AnalyticAssumptions assumptions;
 };
 
@@ -36,13 +42,20 @@ std::vector<SettingDescription> setting_table() {
         {kRestitutionKnob, "Eq. (19)", "", "when given: this impact ratio in [0, 1] instead of Eq. (19) / Housner's", 0.0, 1.0},
         {kWholeMechanismKnob, "0", "0/1", "1: the whole mechanism's plastic impact (the roller's impulse kept)", 0.0, 1.0},
         {kUnilateralRollerKnob, "0", "0/1", "1: a roller that can only push (exact kinematics)", 0.0, 1.0},
+        {kRestitutionErrorKnob, "0", "",
+         "a stand-in engine's error: every impact's velocity ratio times (1 + this); 0 is the model itself",
+         -kMaxRestitutionError, kMaxRestitutionError},
     };
 }
 
 Knobs read_knobs(const EngineSettings& settings) {
     Knobs k;
     k.assumptions = read_assumptions(settings);  // first, as the unknown knobs are refused there
-    k.rtol = SettingsReader("analytic", settings, setting_table()).number(kRtol, kDefaultRtol);  // range: simulate()
+    const SettingsReader r("analytic", settings, setting_table());
+    k.rtol = r.number(kRtol, kDefaultRtol);  // range: simulate()
+    k.restitution_error = r.number(kRestitutionErrorKnob, 0.0);
+    require(std::abs(k.restitution_error) <= kMaxRestitutionError, "analytic setting restitution_error",
+            fmt::format("a number in [-{0:g}, {0:g}]", kMaxRestitutionError), k.restitution_error);
     return k;
 }
 
@@ -76,6 +89,12 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     const Knobs knobs = read_knobs(settings);
     std::unique_ptr<RockingModel> model =
         with_impact_law(analytic_model(scene, knobs.assumptions.kinematics), knobs.assumptions.impact);
+    if (knobs.restitution_error != 0.0) {  // 0: the model itself, untouched (the same numbers to the bit)
+        const double e = model->restitution() * (1.0 + knobs.restitution_error);
+        require(e <= 1.0, "analytic impact ratio with restitution_error", "at most 1 (no impact that creates energy)",
+                e);
+        model = with_restitution(std::move(model), e);
+    }
     // A stop angle (a threshold trial) ends the run there, as it ends an engine's (RunMonitor): the trial's question is
     // answered, and the rest of its hold, with the wall flying towards its collapse, is not integrated (with the
     // unilateral roller such a flight may fail the energy ceiling it has no need to meet).

@@ -9,7 +9,9 @@
 //  - knobs: "paper_kinematics" (0: exact kinematics of Eq. 2, the default, as every comparison with an engine uses;
 //    1: the paper's Eq. 3), "rtol" (DOP853's relative tolerance, default 1e-10), "restitution" (given: this impact
 //    ratio in [0, 1] instead of Eq. (19) / Housner's, 0 included), "whole_mechanism_impact" (1: the whole mechanism's
-//    plastic impact), "unilateral_roller" (1: a roller that can only push; exact kinematics only). Any other knob is
+//    plastic impact), "unilateral_roller" (1: a roller that can only push; exact kinematics only), "restitution_error" (a stand-in
+//    engine's error: every impact's velocity ratio times 1 + this, in [-0.5, 0.5]; 0, the default, leaves the model
+//    untouched). Any other knob is
 //    an InputError: a misspelt knob must not be ignored silently.
 //  - iterations: unused.
 // The integrator's own failures (step size underflow, step limit, a non-finite state) are reported as EngineFailure;
@@ -52,6 +54,8 @@ inline constexpr const char* kPaperKinematicsKnob = "paper_kinematics";  // 1: E
 inline constexpr const char* kRestitutionKnob = "restitution";  // when given: this impact ratio in [0, 1]
 inline constexpr const char* kWholeMechanismKnob = "whole_mechanism_impact";  // 1: the whole mechanism's plastic impact
 inline constexpr const char* kUnilateralRollerKnob = "unilateral_roller";  // 1: a roller that can only push
+// Not an assumption: a stand-in engine's error, every impact's velocity ratio times (1 + this) (validation/earthquake).
+inline constexpr const char* kRestitutionErrorKnob = "restitution_error";
 inline const std::vector<std::string>& assumption_knobs() {
     static const std::vector<std::string> names = {kPaperKinematicsKnob, kRestitutionKnob, kWholeMechanismKnob,
                                                    kUnilateralRollerKnob};

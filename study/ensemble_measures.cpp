@@ -222,6 +222,12 @@ void measure_ida(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* re
     if (reference && !engine.empty()) m.ratio = compare::bootstrap_median_ratio(engine, ref, bootstrap_options());
 }
 
+// A run's record: its key without the level.
+Key record_of(const Columns& c, Key key) {
+    if (c.pga != std::string::npos) key[c.pga] = kEmptyLevel;
+    return key;
+}
+
 // Each record's overturning at each nominal PGA level of the wall (1, 0, or -1 for no result), keyed by the run with
 // its pga cleared.
 std::map<Key, compare::StripeOutcomes> stripe_outcomes(const SeriesRuns& runs, const Key& wall,
@@ -229,9 +235,7 @@ std::map<Key, compare::StripeOutcomes> stripe_outcomes(const SeriesRuns& runs, c
     std::map<Key, compare::StripeOutcomes> out;
     for (const auto& [key, over] : runs.overturned) {
         if (wall_of(c, key) != wall) continue;
-        Key record = key;  // the run without its level
-        record[c.pga] = kEmptyLevel;
-        compare::StripeOutcomes& o = out.try_emplace(record, levels.size(), -1).first->second;
+        compare::StripeOutcomes& o = out.try_emplace(record_of(c, key), levels.size(), -1).first->second;
         const auto at = std::find(levels.begin(), levels.end(), key[c.pga]);
         if (at != levels.end() && std::isfinite(over)) o[static_cast<std::size_t>(at - levels.begin())] = over > 0.5;
     }
@@ -275,6 +279,13 @@ std::string run_name(const StudyData& d, const Columns& c, const Key& key, const
                                       : fmt::format("{} at {:g} {}", file, d.columns[c.pga].values[key[c.pga]], unit);
 }
 
+// One run against the reference's result (finite): discordant either way, or failed where the reference has one.
+void count_discordant(SeriesMeasures& m, double over, double reference_over) {
+    if (!std::isfinite(over)) ++m.failed_paired;
+    else if (over > 0.5 && reference_over < 0.5) ++m.overturned_alone;
+    else if (over < 0.5 && reference_over > 0.5) ++m.stood_alone;
+}
+
 void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns* reference, const Key& wall,
                      const StudyData& d, const Columns& c, const EnsembleMeasures& e) {
     long agree = 0, both = 0;
@@ -282,6 +293,8 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     std::vector<compare::BandRun> band;
     std::vector<Key> band_runs;  // the run of each band entry, to name the ones outside
     std::map<std::uint32_t, std::pair<long, long>> per_level;  // pga level -> (overturned, runs)
+    std::map<Key, std::vector<double>> log_ratios;  // by record (the run's key without its level)
+    std::vector<double> half_widths;                // the band's 0.5 ln(hi / lo) where both stand
     for (const auto& [key, over] : runs.overturned) {
         if (wall_of(c, key) != wall) continue;
         m.stripes = true;
@@ -296,14 +309,19 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         if (!reference) continue;
         const auto peak = runs.peak.find(key);
         const double own_peak = peak == runs.peak.end() ? NAN : peak->second;
+        bool both_stand = false;
         const auto ref_over = reference->overturned.find(key);
         const auto ref_peak = reference->peak.find(key);
         if (ref_over != reference->overturned.end() && std::isfinite(ref_over->second)) {
             ++both;
             agree += std::isfinite(over) && (over > 0.5) == (ref_over->second > 0.5) ? 1 : 0;
+            count_discordant(m, over, ref_over->second);
             if (over < 0.5 && ref_over->second < 0.5 && ref_peak != reference->peak.end() &&
-                std::isfinite(ref_peak->second) && ref_peak->second != 0.0 && std::isfinite(own_peak))
+                std::isfinite(ref_peak->second) && ref_peak->second != 0.0 && std::isfinite(own_peak)) {
                 ratios.push_back(own_peak / ref_peak->second);
+                both_stand = own_peak > 0.0 && ref_peak->second > 0.0;
+                if (both_stand) log_ratios[record_of(c, key)].push_back(std::log(own_peak / ref_peak->second));
+            }
         }
         const auto repeats = reference->perturbed_peak.find(key);
         if (repeats == reference->perturbed_peak.end() || ref_peak == reference->peak.end() ||
@@ -312,14 +330,19 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         const auto [lo, hi] = std::minmax_element(repeats->second.begin(), repeats->second.end());
         band.push_back({ref_peak->second, std::min(*lo, ref_peak->second), std::max(*hi, ref_peak->second), own_peak});
         band_runs.push_back(key);
+        if (both_stand && band.back().lo > 0.0) half_widths.push_back(0.5 * std::log(band.back().hi / band.back().lo));
     }
     if (!m.stripes) return;
     m.overturning = both > 0 ? compare::wilson_interval(agree, both, kEnsembleConfidence)
                              : compare::Interval{NAN, NAN, NAN, 0};
     m.peak_ratio = compare::quartiles(ratios);
+    std::vector<std::vector<double>> by_record;
+    for (auto& [record, d_values] : log_ratios) by_record.push_back(std::move(d_values));
+    m.log_peak_ratio = compare::bootstrap_record_median(by_record, bootstrap_options());
     m.band = !band.empty();
     if (m.band) {
         m.inside = compare::count_inside_band(band);
+        m.band_half_width = compare::quantile(half_widths, 0.5);
         for (std::size_t i : m.inside.outside) m.outside_band.push_back(run_name(d, c, band_runs[i], e.unit));
     }
     if (c.pga == std::string::npos) return;

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "compare/ensemble_statistics.hpp"
+#include "compare/paired_runs.hpp"
 #include "study/study_data.hpp"
 
 namespace vssw::study {
@@ -62,8 +63,16 @@ struct SeriesMeasures {
                                       // that failed where the reference has a result counts as not agreeing)
     long failed_runs = 0;             // its runs with no overturning value (failed)
     compare::Quartiles peak_ratio{};  // its peak / the reference's where neither overturned
+    // Paired with the reference run by run (compare/paired_runs.hpp): ln(its peak / the reference's) where both
+    // stand, grouped by record, its median with a bootstrap over records; the discordant runs (it overturned and the
+    // reference stood; the reverse) and its failed runs where the reference has a result.
+    compare::MedianBootstrap log_peak_ratio{};
+    long overturned_alone = 0, stood_alone = 0, failed_paired = 0;
     bool band = false;                // the reference had perturbed repeats
     compare::BandCount inside;        // its peaks inside the reference's band
+    // The band's median half-width in ln, 0.5 ln(hi / lo), over the runs where both stand (NaN without a band): how
+    // far the reference's peaks move within what the free-vibration targets allow.
+    double band_half_width = NAN;
     std::vector<std::string> outside_band;  // the runs outside it ("file at 0.55 g"), in the study's order
     std::vector<StripeShare> levels;  // by PGA level, in the study's order
 };

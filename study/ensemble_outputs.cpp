@@ -236,9 +236,18 @@ std::string interval_text(const compare::Interval& i, const std::string& format)
 
 }  // namespace
 
+std::string fit_note(const compare::FitBootstrap& f) {
+    if (!f.fit.ok()) return f.fit.reason;
+    if (!f.interval_reason.empty()) return f.interval_reason;
+    // A fit whose resamples all give one median: the records cannot move it, so its interval says nothing.
+    if (f.median.n > 0 && f.median.lo == f.median.hi) return "not resolved: every resample gives the same median";
+    return "";
+}
+
 void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMeasures& e) {
     out << "engine,assumptions,intensity,median,beta,median_lo,median_hi,beta_lo,beta_hi,records,collapsed,"
-           "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates,failed_replicates,intensity_unit\n";
+           "median_ratio,ratio_lo,ratio_hi,settings,wall,reference,seed,replicates,failed_replicates,"
+           "ratio_failed_replicates,note,intensity_unit\n";
     for (const SeriesMeasures& m : e.measures) {
         if (!m.fitted()) continue;
         const compare::FitBootstrap& f = m.fit;
@@ -250,7 +259,9 @@ void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMe
             << fmt::format("{},{},{},", csv_number(ratio ? m.ratio.ratio.value : NAN),
                            csv_number(ratio ? m.ratio.ratio.lo : NAN), csv_number(ratio ? m.ratio.ratio.hi : NAN))
             << tail_columns(d, e, m)
-            << fmt::format(",{},{},{},{}\n", kEnsembleSeed, kEnsembleReplicates, f.failed, csv_field(e.unit));
+            << fmt::format(",{},{},{},{},{},{}\n", kEnsembleSeed, kEnsembleReplicates, f.failed,
+                           ratio ? std::to_string(m.ratio.failed) : std::string(), csv_field(fit_note(f)),
+                           csv_field(e.unit));
     }
 }
 
@@ -269,6 +280,12 @@ void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMe
             row("peak_ratio_q1", {q.q1, NAN, NAN, q.n});
             row("peak_ratio_q3", {q.q3, NAN, NAN, q.n});
             if (m.band) row("inside_band", {static_cast<double>(m.inside.inside), NAN, NAN, m.inside.runs});
+            // The paired measures (issue 39): the median ln peak ratio (n: its runs) and McNemar's counts.
+            const compare::Interval& d_median = m.log_peak_ratio.median;
+            row("peak_log_ratio_median", {d_median.value, d_median.lo, d_median.hi, m.log_peak_ratio.values});
+            row("overturned_alone", {static_cast<double>(m.overturned_alone), NAN, NAN, m.overturning.n});
+            row("stood_alone", {static_cast<double>(m.stood_alone), NAN, NAN, m.overturning.n});
+            row("failed_paired", {static_cast<double>(m.failed_paired), NAN, NAN, m.overturning.n});
         }
         if (m.fitted() && compared) row("fragility_median_ratio", {m.ratio.ratio.value, m.ratio.ratio.lo,
                                                               m.ratio.ratio.hi, m.paired});

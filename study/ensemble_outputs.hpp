@@ -10,6 +10,7 @@
 //                  (a panel per wall); plots/stripes.svg the share overturned per PGA level with Wilson bars
 //   an "Ensemble" section in study.md and study.html
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "io/document.hpp"
@@ -23,6 +24,8 @@ constexpr const char* kFragilityCsv = "fragility.csv";
 constexpr const char* kAgreementCsv = "agreement.csv";
 extern const char* const kEnsembleSection;
 
+// Why a fit is "not resolved" (the fit's reason, or every bootstrap resample giving the same median), "" when it is.
+std::string fit_note(const compare::FitBootstrap& f);
 void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMeasures& e);
 void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMeasures& e);
 // The fragility and stripe plots (nothing when the measures do not apply or hold no fit / stripe).

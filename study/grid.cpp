@@ -88,10 +88,8 @@ std::string settings_text(const std::vector<Axis>& axes, const std::vector<Level
     return text;
 }
 
-// The key of a record read with given units ("" for the file's own): one file may be read in two parts' units. The
-// band's record without its first sample is a record of its own.
+// The key of a record read with given units ("" for the file's own): one file may be read in two parts' units.
 std::string record_key(const std::string& file, const std::string& units) { return file + "\n" + units; }
-std::string dropped_key(const std::string& key) { return key + "\ndrop-first"; }
 
 bool perturbed(const CaseSpec& c) { return !c.perturbation.empty() && c.perturbation != "none"; }
 
@@ -190,22 +188,12 @@ void Grid::read_records(std::string& identity_text) {
             units = parse_units(as_word(u->levels.front()));
         }
         const std::string units_text = units ? as_word(part.excitation_axis("units")->levels.front()) : "";
-        const bool band = part.excitation_axis("perturbation") != nullptr;
         for (const Level& f : files->levels) {
             const std::string key = record_key(as_word(f), units_text);
-            if (records_.count(key)) {
-                if (band && !records_.count(dropped_key(key)))
-                    records_.emplace(dropped_key(key), records_.at(key).drop_first_sample());
-                continue;
-            }
+            if (records_.count(key)) continue;
             try {
                 GroundMotion r = read_record(record_path(as_word(f)), units ? &*units : nullptr);
                 require_shakes(r, as_word(f));
-                if (band) {
-                    GroundMotion dropped = r.drop_first_sample();
-                    require_shakes(dropped, as_word(f) + " without its first sample");
-                    records_.emplace(dropped_key(key), std::move(dropped));
-                }
                 records_.emplace(key, std::move(r));
             } catch (const InputError& e) {
                 throw InputError(fmt::format("{}: {}", where(part, "excitation.file"), e.what()));
@@ -258,9 +246,9 @@ void Grid::build_runs() {
         if (part.excitation_axis("perturbation") &&
             std::any_of(part.engines.begin(), part.engines.end(), [](const EngineSpec& e) { return e.name != "analytic"; }))
             skipped_runs_.push_back(fmt::format(
-                "the sensitivity band's perturbed cases (PGA x (1 +- {:g}), the record without its first sample): the "
-                "analytic model's only; engines run each case unperturbed",
-                kBandStep));
+                "the sensitivity band's perturbed cases (PGA x (1 +- {:g}), restitution x (1 +- {:g}), the wall's size "
+                "x (1 +- {:g})): the analytic model's only; engines run each case unperturbed",
+                kBandIntensityStep, kBandRestitutionStep, kBandSizeStep));
     std::sort(skipped_runs_.begin(), skipped_runs_.end());
     skipped_runs_.erase(std::unique(skipped_runs_.begin(), skipped_runs_.end()), skipped_runs_.end());
     if (runs_.empty())
@@ -366,6 +354,14 @@ CaseSpec Grid::make_case(int id) const {
     } catch (const InputError& e) {
         throw refused(e.what());
     }
+    // The band's wall of another size, the same shape: built after the wall's columns were described, which stay the
+    // nominal wall's (the perturbed run is a repeat of the nominal case).
+    if (const double f = band_factors(c.perturbation).size; f != 1.0) {
+        if (c.model == "parapet")
+            c.scene = multibody::WallScene::of(make_parapet(c.height * f, c.thickness * f, c.xi, c.density, c.g));
+        else
+            c.scene = multibody::WallScene::of(make_vssw(c.height * f, c.thickness * f, c.hinge, c.xi, c.density, c.g));
+    }
     if (part.kind == ExcitationKind::scale_to_collapse && c.max_pga_g > 0.0) {
         // The search steps up from lift-off: a max_pga at or below the wall's rest threshold leaves nothing to search.
         const double threshold_g = analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0) / kStandardGravity;
@@ -460,10 +456,9 @@ void Grid::set_excitation(CaseSpec& c, const CaseLevels& l) const {
             }
         c.intensity.sa_period = l.num("sa_period", 0.0);
         c.intensity.sa_damping = l.num("sa_damping", kDefaultSaDamping);
-        // The band (an ensemble's stripes, so a level is given): the level nudged, or the record one sample earlier.
-        if (level && c.perturbation == "pga+1e-3") *level *= 1.0 + kBandStep;
-        if (level && c.perturbation == "pga-1e-3") *level *= 1.0 - kBandStep;
-        if (c.perturbation == "drop-first") c.record_key = dropped_key(c.record_key);
+        // The band (an ensemble's stripes, so a level is given): the level nudged (the other factors: make_case, and
+        // the restitution's in the run, study/measure.cpp).
+        if (level) *level *= band_factors(c.perturbation).intensity;
         const GroundMotion& motion = record(c);
         if (c.intensity.measure == IntensityMeasure::pga) {
             scale_record(c, motion, level, l.num("scale", 1.0));

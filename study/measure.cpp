@@ -16,6 +16,7 @@
 #include "analytic/wall_scene.hpp"
 #include "compare/experiments.hpp"
 #include "compare/case_runner.hpp"
+#include "multibody/analytic_engine.hpp"
 #include "multibody/scene_geometry.hpp"
 #include "multibody/settings_reader.hpp"
 #include "multibody/step_resolution.hpp"
@@ -183,6 +184,9 @@ Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, co
     ex.motion_only = true;  // the response metrics are read from theta1 alone
     multibody::EngineSettings settings = run.settings;
     if (run.engine == "analytic") settings.sample_dt = kAnalyticResponseSampleDt;
+    // The band's impact ratio changed (a perturbation only the analytic model runs: Grid::run_applies).
+    if (const double e = band_factors(c.perturbation).restitution_error; e != 0.0)
+        settings.knobs[multibody::kRestitutionErrorKnob] = e;
     return engine.simulate(c.scene, ex, settings);
 }
 

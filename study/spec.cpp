@@ -37,8 +37,20 @@ const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "u
                                                   "duration",     "tolerance", "max_pga",  "step",
                                                   "sa_period",    "sa_damping", "perturbation"};
 const std::vector<std::string> kLevelKeys = {"pga", "pgv", "sa", "arias"};
-// The names say the factors: kBandStep is 1e-3.
-const std::vector<std::string> kPerturbations = {"none", "pga+1e-3", "pga-1e-3", "drop-first"};
+// The names say the factors (kBandIntensityStep, kBandRestitutionStep, kBandSizeStep).
+const std::vector<std::string> kPerturbations = {"none",          "pga+1e-2", "pga-1e-2", "restitution+2e-2",
+                                                 "restitution-2e-2", "size+1e-2", "size-1e-2"};
+
+BandFactors band_factors(const std::string& perturbation) {
+    BandFactors f;
+    if (perturbation == "pga+1e-2") f.intensity = 1.0 + kBandIntensityStep;
+    if (perturbation == "pga-1e-2") f.intensity = 1.0 - kBandIntensityStep;
+    if (perturbation == "restitution+2e-2") f.restitution_error = kBandRestitutionStep;
+    if (perturbation == "restitution-2e-2") f.restitution_error = -kBandRestitutionStep;
+    if (perturbation == "size+1e-2") f.size = 1.0 + kBandSizeStep;
+    if (perturbation == "size-1e-2") f.size = 1.0 - kBandSizeStep;
+    return f;
+}
 
 namespace {
 

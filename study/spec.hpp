@@ -27,8 +27,8 @@
 // the files, with its max_pga, step, tolerance, which stay a PGA ceiling and relative steps of the scale; the
 // metrics gain collapse_<intensity>, collapse_pga stays). The ids, runs and rows are those of that study but for the `kind`
 // column ("ensemble"); PartSpec::ensemble remembers the rest. band = true (stripes only) adds the excitation axis
-// `perturbation` (kPerturbations): the analytic model's repeats of each case at the level x (1 +- 1e-3) and with the
-// record's first sample dropped (GroundMotion::drop_first_sample), which engines do not run (Grid::run_applies).
+// `perturbation` (kPerturbations): the analytic model's repeats of each case perturbed as the free-vibration targets
+// allow (band_factors below), which engines do not run (Grid::run_applies).
 //
 // Everything is checked here or when the grid is built, before any case runs: an unknown key, a value of the wrong
 // type, an empty list, an engine not built, a metric the excitation cannot measure, a record that does not read:
@@ -75,9 +75,19 @@ extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, 
 extern const std::vector<std::string> kLevelKeys;
 
 // The sensitivity band's perturbations of an ensemble's stripe case, the `perturbation` axis's levels in order: none,
-// the level x (1 + kBandStep), x (1 - kBandStep), the record without its first sample. Engines run "none" only.
+// "as close as the free-vibration targets allow" (issue 39): the intensity x (1 +- kBandIntensityStep), every impact's
+// velocity ratio x (1 +- kBandRestitutionStep) (the analytic backend's restitution_error) and the wall's height and
+// thickness x (1 +- kBandSizeStep) at the same slenderness and hinge (R x (1 +- 1 %): the rocking frequency
+// p ~ R^-1/2 moves -+0.5 %, the threshold stays). Engines run "none" only.
 extern const std::vector<std::string> kPerturbations;
-constexpr double kBandStep = 1e-3;
+constexpr double kBandIntensityStep = 1e-2;    // the intensity's own uncertainty (docs/earthquakes.md)
+constexpr double kBandRestitutionStep = 2e-2;  // the free-vibration restitution target, +-2 %
+constexpr double kBandSizeStep = 1e-2;         // the period target +-0.5 %, as R +-1 %
+// A perturbation's factors: on the PGA, on every impact's ratio (1 + restitution_error), on the wall's size.
+struct BandFactors {
+    double intensity = 1.0, restitution_error = 0.0, size = 1.0;
+};
+BandFactors band_factors(const std::string& perturbation);
 
 // What an ensemble part was in the file (kind = "ensemble"), read into a record or scale-to-collapse part.
 struct EnsembleSpec {

@@ -1181,7 +1181,7 @@ std::string small_ensemble(const fs::path& dir) {
     return file.string();
 }
 
-TEST(ReportEarthquake, VerdictIsTheEnsemblesOverturningCountAgainstTheTarget) {
+TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
     if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
     TempDir tmp("earthquake");
     const fs::path out = tmp.path / "report";
@@ -1219,16 +1219,50 @@ TEST(ReportEarthquake, VerdictIsTheEnsemblesOverturningCountAgainstTheTarget) {
     EXPECT_TRUE(contains(md, "## Under earthquake records")) << md;
     // The verdict is a column of the matrix at a glance, with its target in the header.
     const std::string matrix_header = lines_of(md.substr(md.find("## At a glance"))).at(2);
-    EXPECT_TRUE(contains(matrix_header, "records: overturning agreement (target &gt;= 0.9)")) << matrix_header;
-    EXPECT_TRUE(contains(matrix_header, "records: fragility median / reference (target 1 +- 0.1)")) << matrix_header;
+    EXPECT_TRUE(contains(matrix_header, "records: peak ratio where both stand")) << matrix_header;
+    EXPECT_TRUE(contains(matrix_header, "records: overturning: discordant b/c, McNemar p")) << matrix_header;
+    // The paired measures from the rows: McNemar's counts, and an engine passes only when both verdicts do.
+    int b = 0, c = 0;
+    for (const auto& [run, by_engine] : overturned) {
+        b += by_engine.at("ode") == "1" && by_engine.at("analytic") == "0" ? 1 : 0;
+        c += by_engine.at("ode") == "0" && by_engine.at("analytic") == "1" ? 1 : 0;
+    }
+    EXPECT_EQ(ode["overturning_mcnemar"]["overturned_alone"], b);
+    EXPECT_EQ(ode["overturning_mcnemar"]["stood_alone"], c);
+    EXPECT_EQ(ode["pass"].get<bool>(),
+              ode["peak_log_ratio"]["pass"].get<bool>() && ode["overturning_mcnemar"]["pass"].get<bool>());
+    EXPECT_EQ(j["earthquake"]["stand_ins"].size(), 8u);
+    EXPECT_TRUE(contains(md, "Detection limit: this ensemble")) << md;
     const std::vector<std::string> lines = lines_of(md);
     const auto ode_row = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
         return l.rfind("| ODE | impulse stepping |", 0) == 0;
     });
     ASSERT_NE(ode_row, lines.end()) << md;
-    EXPECT_TRUE(contains(*ode_row, fmt::format("| {:.3f} \\[", agree / 4.0))) << *ode_row;
+    EXPECT_TRUE(contains(*ode_row, fmt::format("{}/{}, p ", b, c))) << *ode_row;
     EXPECT_TRUE(contains(md, "| ODE | ")) << md;
-    EXPECT_TRUE(contains(r.out, fmt::format("ODE under records: overturning agrees on {}/4", agree))) << r.out;
+    EXPECT_TRUE(contains(r.out, "ODE under records: ")) << r.out;
+    EXPECT_TRUE(contains(r.out, fmt::format("overturning b/c {}/{}, p ", b, c))) << r.out;
+    EXPECT_TRUE(contains(r.out, "Under records: this ensemble ")) << r.out;
+}
+
+// The Engines table and results.json say the settings each engine ran with under records (the ensemble file's
+// [settings.ENGINE]), not only the suite's: an engine at cfm = 1e-5 there was reported as "defaults" (issue 39).
+TEST(ReportEarthquake, EnginesTableListsTheSettingsTheRecordsRanWith) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    TempDir tmp("earthquake_settings");
+    const fs::path out = tmp.path / "report";
+    std::string text = read(small_ensemble(tmp.path));
+    text.replace(text.find("[\"analytic\"]"), std::string("[\"analytic\"]").size(), "[\"analytic\", \"ode\"]");
+    std::ofstream(tmp.path / "small-ensemble.toml") << text << "[settings.ode]\ncfm = 1e-5\n";
+    const CliResult r = run_cli({"report", "--engines", "ode", "--cases", "fig6-pw", "--no-plots", "--earthquake",
+                                 (tmp.path / "small-ensemble.toml").string(), "--out", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Json j = Json::parse(read(out / "results.json"));
+    EXPECT_DOUBLE_EQ(j["earthquake"]["engines"].at(0)["settings"]["cfm"].get<double>(), 1e-5);
+    const std::string md = read(out / "report.md");
+    const std::string engines = md.substr(md.find("## Engines"));
+    EXPECT_TRUE(contains(lines_of(engines).at(2), "under records")) << engines;
+    EXPECT_TRUE(contains(engines, "| cfm=1e-05 |")) << engines;
 }
 
 TEST(ReportEarthquake, NoneOrACaseSubsetRunsNoneAndAStudyThatIsNoEnsembleIsRefused) {

@@ -231,7 +231,7 @@ TEST(ShippedStudies, EnsembleDefaultRunsItsBandOnTheAnalyticModelAlone) {
     const ResultsTable t = run_shipped(dir, "ensemble-default");
     EXPECT_EQ(levels(t, "kind"), std::vector<std::string>{"ensemble"});
     EXPECT_EQ(levels(t, "file").size(), 8u);
-    EXPECT_EQ(levels(t, "perturbation"), (std::vector<std::string>{"none", "pga+1e-3", "pga-1e-3", "drop-first"}));
+    EXPECT_EQ(levels(t, "perturbation"), study::kPerturbations);
     const std::size_t engine = t.column("engine"), perturbation = t.column("perturbation");
     for (const auto& row : t.rows)
         if (row[perturbation] != "none") {

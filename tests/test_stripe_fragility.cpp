@@ -127,3 +127,24 @@ TEST(StripeFragility, BootstrapHoldsTheFitAndAFitAgainstItselfIsOne) {
 
 }  // namespace
 }  // namespace vssw::compare
+
+namespace vssw::compare {
+namespace {
+
+// Fits the data do not support are "not resolved" with the reason, never a number (issue 39): flat stripes (the
+// share the same at every level: beta runs away), too few records; a resolved fit on the same levels for contrast.
+TEST(StripeFragility, FitsTheStripesDoNotSupportAreNotResolved) {
+    const std::vector<double> levels = {0.4, 0.8};
+    const auto not_resolved = [](const LognormalFit& f) { return f.reason.rfind("not resolved: ", 0) == 0; };
+    const LognormalFit flat = fit_lognormal_stripes(levels, {{0, 0}, {1, 1}, {0, 0}, {1, 1}});
+    EXPECT_TRUE(not_resolved(flat)) << flat.reason;
+    EXPECT_TRUE(std::isnan(flat.median));
+    const LognormalFit two = fit_lognormal_stripes(levels, {{0, 1}, {1, 1}});
+    EXPECT_TRUE(not_resolved(two)) << two.reason;
+    EXPECT_NE(two.reason.find("2 records"), std::string::npos) << two.reason;
+    const LognormalFit resolved = fit_lognormal_stripes(levels, {{0, 1}, {1, 1}, {0, 0}, {0, 1}});
+    EXPECT_TRUE(resolved.ok()) << resolved.reason;
+}
+
+}  // namespace
+}  // namespace vssw::compare

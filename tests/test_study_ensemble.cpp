@@ -26,6 +26,9 @@
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
 #include "study/results_files.hpp"
+#include "analytic/model.hpp"
+#include "analytic/wall.hpp"
+#include "analytic/wall_scene.hpp"
 #include "study/ensemble_measures.hpp"
 #include "study/study_data.hpp"
 #include "tests/engine_available.hpp"
@@ -46,8 +49,8 @@ using vssw::testing::write_file;
 constexpr double kScaledPga = 1e-14;
 // Times shifted by a subtraction (t - t1) are the originals' differences to rounding of numbers below 100 s.
 constexpr double kShiftedTime = 1e-12;
-// Picks a level's rows out of a band: theirs are within 1e-3 (kBandStep) of it, the other levels' 50 % away.
-constexpr double kNearLevel = 2e-3;
+// Picks a level's rows out of a band: theirs are within 1e-2 (kBandIntensityStep) of it, the other levels' 50 % away.
+constexpr double kNearLevel = 2e-2;
 
 const std::string kRecords = std::string(VSSW_DATA_DIR) + "/records";
 // Two of the shortest shipped records (20 s each), so that the runs stay quick.
@@ -272,8 +275,8 @@ TEST(StudyEnsemble, AFolderEntryThatIsNoFileIsRefusedByName) {
         << message;
 }
 
-// The band: each stripe case again at the level x (1 +- 1e-3) and with the record's first sample dropped, run by the
-// analytic model alone, each row saying which in its `perturbation` column.
+// The band: each stripe case again as the free-vibration targets allow (PGA x (1 +- 1e-2), restitution x (1 +- 2e-2),
+// the wall's size x (1 +- 1e-2)), run by the analytic model alone, each row saying which in its `perturbation` column.
 TEST(StudyEnsemble, TheBandIsTheAnalyticModelsAlone) {
     const TempDir dir;
     const std::vector<double> levels = {0.4, 0.6};
@@ -287,6 +290,9 @@ TEST(StudyEnsemble, TheBandIsTheAnalyticModelsAlone) {
         for (const study::RunSpec& run : grid.runs())
             EXPECT_EQ(grid.run_applies(run, c), run.engine == "analytic" || c.perturbation == "none")
                 << c.perturbation << " " << run.engine;
+        // The wall's columns stay the nominal wall's; its scene is the perturbed one.
+        EXPECT_EQ(c.height, 4.0);
+        EXPECT_EQ(2.0 * c.scene.vssw->h(), 4.0 * study::band_factors(c.perturbation).size) << c.perturbation;
     }
     if (!engines.empty()) {
         EXPECT_EQ(grid.skipped_runs().size(), 1u);
@@ -304,17 +310,48 @@ TEST(StudyEnsemble, TheBandIsTheAnalyticModelsAlone) {
     constexpr std::size_t kRecordsRun = 2;
     EXPECT_EQ(band_rows, kRecordsRun * levels.size() * (study::kPerturbations.size() - 1));
     EXPECT_EQ(t.rows.size(), kRecordsRun * levels.size() * (study::kPerturbations.size() + (engines.empty() ? 0 : 1)));
-    // The level's rows: none and drop-first at the level, the nudged ones at level x (1 +- 1e-3).
-    for (const double level : levels)
-        for (const auto& [name, factor] : std::vector<std::pair<std::string, double>>{
-                 {"none", 1.0}, {"pga+1e-3", 1.0 + 1e-3}, {"pga-1e-3", 1.0 - 1e-3}, {"drop-first", 1.0}}) {
+    // The level's rows: at the level but for the nudged ones at level x (1 +- 1e-2); at 0.4 g, where the wall stands,
+    // each perturbation moves the peak (each a different run from the nominal one; at 0.6 g every one overturns).
+    for (const double level : levels) {
+        std::map<std::string, double> peak;
+        for (const std::string& name : study::kPerturbations) {
             const auto row = std::find_if(t.rows.begin(), t.rows.end(), [&](const auto& r) {
                 return r[perturbation] == name && r[engine] == "analytic" &&
-                       std::abs(std::stod(r[pga]) / level - 1.0) < kNearLevel;
+                       std::abs(std::stod(r[pga]) / level - 1.0) < kNearLevel && r[t.column("file")] == kRinaldi;
             });
             ASSERT_NE(row, t.rows.end()) << name << " at " << level;
-            EXPECT_NEAR(std::stod((*row)[pga]), level * factor, kScaledPga * level) << name;
+            EXPECT_NEAR(std::stod((*row)[pga]), level * study::band_factors(name).intensity, kScaledPga * level)
+                << name;
+            peak[name] = std::stod((*row)[t.column("value")]);
         }
+        for (const std::string& name : study::kPerturbations)
+            if (name != "none" && level == levels.front()) {
+                EXPECT_NE(peak[name], peak["none"]) << name << " at " << level;
+            }
+    }
+}
+
+// The band's size perturbation is the period target's +-0.5 % at the same threshold: height and thickness x (1 +- 1 %)
+// keep the slenderness (and the hinge ratio), so the rest threshold (a function of the angles) stays, and the
+// rocking frequency p = sqrt(|V_r| / M(0)) up to a constant of the shape (V ~ m g R ~ R^3, M ~ m R^2 ~ R^4) scales as
+// R^-1/2 (Housner's p = sqrt(3 g / 4R) for a block).
+TEST(StudyEnsemble, TheBandsSizeIsThePeriodTargetAtTheSameThreshold) {
+    constexpr double kRoundOff = 1e-12;  // ratios of closed forms of the same angles
+    constexpr double kPeriodTarget = 5e-3;  // the free-vibration period target, +-0.5 %
+    const auto model = [](double f) {
+        return analytic_model(Wall::of(make_vssw(4.0 * f, 0.4 * f, 0.7)), Kinematics::exact);
+    };
+    const auto p = [](const RockingModel& m) {
+        return std::sqrt(std::abs(m.reference_energy()) / (2.0 * m.kinetic(0.0, 1.0)));  // kinetic(0, 1) = M(0) / 2
+    };
+    const auto nominal = model(1.0);
+    for (const double f : {1.0 + study::kBandSizeStep, 1.0 - study::kBandSizeStep}) {
+        const auto scaled = model(f);
+        EXPECT_NEAR(scaled->rest_threshold(0.0) / nominal->rest_threshold(0.0), 1.0, kRoundOff) << f;
+        EXPECT_NEAR(p(*scaled) / p(*nominal), 1.0 / std::sqrt(f), kRoundOff) << f;
+        // 1 -+ 0.5 %, to the first order's 1 % (0.4975 % and 0.5038 %).
+        EXPECT_NEAR(std::abs(p(*scaled) / p(*nominal) - 1.0), kPeriodTarget, 0.01 * kPeriodTarget) << f;
+    }
 }
 
 // Dropping the first sample: one sample fewer, the old second sample at t = 0, the same accelerations one sample

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include <fmt/format.h>
 
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "io/json.hpp"
+#include "multibody/analytic_engine.hpp"
 #include "study/ensemble_measures.hpp"
+#include "study/ensemble_outputs.hpp"
 #include "study/grid.hpp"
 #include "study/outputs.hpp"
 #include "study/runner.hpp"
@@ -86,13 +89,75 @@ void require_judgeable(const StudySpec& spec, const std::string& file) {
 }
 
 EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
+    EarthquakeVerdict v = judge_series(d.series[m.series].engine, m);
+    v.settings = d.series[m.series].settings;  // as results.csv has them: what the engine ran at
+    return v;
+}
+
+// The report's ensemble for the analytic model and `engine` at `settings` (an object of lists: a series per
+// combination), without the band.
+StudySpec settings_spec(const std::string& file, const std::string& engine, const Json& settings) {
+    const StudySpec read = read_study_file(file);
+    Json doc = read.as_read;
+    doc["engines"] = engine == "analytic" ? Json::array({"analytic"}) : Json::array({"analytic", engine});
+    doc["settings"] = Json{{engine, settings}};
+    if (doc.contains("excitation") && doc["excitation"].is_object()) doc["excitation"].erase("band");
+    StudySpec spec = study_from_json(nlohmann::json::parse(doc.dump()), file, read.base_dir);
+    spec.path = read.path;
+    return spec;
+}
+
+// A series' settings text ("dt=0.001 cfm=1e-05") as an object of numbers.
+Json settings_of(const std::string& text) {
+    Json out = Json::object();
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.find(' ', at);
+        if (end == std::string::npos) end = text.size();
+        const std::string token = text.substr(at, end - at);
+        const std::size_t eq = token.find('=');
+        if (eq != std::string::npos) out[token.substr(0, eq)] = std::strtod(token.c_str() + eq + 1, nullptr);
+        at = end + 1;
+    }
+    return out;
+}
+
+// The smallest |error| from which on every stand-in fails; NaN when the largest does not.
+double detection_limit(const std::vector<std::pair<double, EarthquakeVerdict>>& stand_ins) {
+    std::vector<double> magnitudes;
+    for (const auto& [error, v] : stand_ins) magnitudes.push_back(std::abs(error));
+    std::sort(magnitudes.begin(), magnitudes.end());
+    double limit = kNaN;
+    for (auto m = magnitudes.rbegin(); m != magnitudes.rend(); ++m) {
+        const bool all_fail = std::all_of(stand_ins.begin(), stand_ins.end(), [&](const auto& s) {
+            return std::abs(s.first) < *m || !s.second.pass;
+        });
+        if (!all_fail) break;
+        limit = *m;
+    }
+    return limit;
+}
+
+Json interval_json(const compare::Interval& i) {
+    return Json{{"value", finite_or_null(i.value)}, {"lo", finite_or_null(i.lo)}, {"hi", finite_or_null(i.hi)},
+                {"n", i.n}};
+}
+
+}  // namespace
+
+EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& m) {
     EarthquakeVerdict v;
-    v.engine = d.series[m.series].engine;
+    v.engine = engine;
     v.agreement = m.stripes ? m.overturning : compare::Interval{kNaN, kNaN, kNaN, 0};
     v.median_ratio = m.fitted() ? m.ratio.ratio : compare::Interval{kNaN, kNaN, kNaN, 0};
     if (!m.fitted()) v.fit_note = "no stripes to fit";
     else if (!m.fit.fit.ok()) v.fit_note = m.fit.fit.reason;
     else if (!std::isfinite(v.median_ratio.value)) v.fit_note = "the reference's fragility was not fitted";
+    else if (!m.ratio.reason.empty()) v.fit_note = m.ratio.reason;
+    else if (v.median_ratio.lo == v.median_ratio.hi)
+        v.fit_note = "not resolved: every resample gives the same ratio (the records cannot move it)";
+    v.ratio_failed = m.ratio.failed;
+    if (!v.fit_note.empty()) v.median_ratio = {kNaN, kNaN, kNaN, v.median_ratio.n};  // never a number
     v.peak_ratio = m.peak_ratio;
     if (m.band) {
         v.inside = m.inside.inside;
@@ -102,15 +167,46 @@ EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
     v.failed_runs = m.failed_runs;
     v.agreement_pass = v.agreement.value >= kOverturningAgreementTarget;
     v.fragility_pass = std::abs(v.median_ratio.value - 1.0) <= kFragilityMedianTarget;
+    v.log_peak = m.log_peak_ratio;
+    v.overturned_alone = m.overturned_alone;
+    v.stood_alone = m.stood_alone;
+    v.failed_paired = m.failed_paired;
+    // A failed run counts against the engine: on the side of the larger discordant count.
+    const long b = m.overturned_alone + (m.overturned_alone >= m.stood_alone ? m.failed_paired : 0);
+    const long c = m.stood_alone + (m.overturned_alone >= m.stood_alone ? 0 : m.failed_paired);
+    v.mcnemar_p = compare::mcnemar_exact_p(b, c);
+    // The interval within the margin (NaN: no run where both stand, or no interval: fails).
+    const compare::Interval& d = v.log_peak.median;
+    v.band_half_width = m.band_half_width;
+    if (std::isfinite(m.band_half_width)) v.peak_target = std::max(kPeakLogRatioTarget, m.band_half_width);
+    v.peak_pass = d.lo >= -v.peak_target && d.hi <= v.peak_target;
+    v.overturning_pass = m.stripes && v.mcnemar_p >= kMcNemarAlpha && v.agreement_pass;
+    v.pass = v.peak_pass && v.overturning_pass;
     return v;
 }
 
-Json interval_json(const compare::Interval& i) {
-    return Json{{"value", finite_or_null(i.value)}, {"lo", finite_or_null(i.lo)}, {"hi", finite_or_null(i.hi)},
-                {"n", i.n}};
+std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const std::string& engine,
+                                            const Json& settings, const std::filesystem::path& dir,
+                                            const EarthquakeRunOptions& options) {
+    const Grid grid(settings_spec(study_file, engine, settings));
+    StudyRunOptions run;
+    run.threads = options.threads;
+    run.commit = options.commit;
+    run.progress = options.progress;
+    {
+        const FolderLock lock = prepare_study_dir(grid, dir, run);
+        run_study(grid, dir, run);
+    }
+    const StudyData d = read_study_data(dir);
+    const EnsembleMeasures e = ensemble_measures(d);
+    std::vector<SettingsVerdict> out;
+    for (const SeriesMeasures& m : e.measures) {
+        const Series& s = d.series[m.series];
+        if (s.engine != engine || (e.has_reference && m.series == e.reference)) continue;
+        out.push_back({settings_of(s.settings), judge_series(engine, m)});
+    }
+    return out;
 }
-
-}  // namespace
 
 std::string earthquake_study_file(const std::string& name_or_path, const std::vector<std::string>& engines) {
     if (name_or_path == "none") return "";
@@ -156,7 +252,11 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
         part.levels = std::max(part.levels, p.excitation_axis("pga")->levels.size());
     }
     for (const SeriesMeasures& m : e.measures)
-        if (e.has_reference && m.series == e.reference) part.reference_median = m.fit.median;
+        if (e.has_reference && m.series == e.reference) {
+            part.reference_median = m.fit.median;
+            part.reference_note = fit_note(m.fit);
+            if (!part.reference_note.empty()) part.reference_median = {kNaN, kNaN, kNaN, m.fit.median.n};
+        }
     part.preferred_reference = e.preferred_reference;
     part.band = d.column("perturbation") != std::string::npos;
     for (const std::string& engine : engines) {
@@ -170,39 +270,87 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
         none.engine = engine;
         none.agreement = none.median_ratio = {kNaN, kNaN, kNaN, 0};
         none.fit_note = "no result on any run";
+        none.log_peak.median = none.agreement;
         part.engines.push_back(none);
     }
+    Json errors = Json::array({0.0});  // the reference first: the unchanged model
+    for (double error : detection_restitution_errors()) errors.push_back(error);
+    const std::vector<SettingsVerdict> stand_ins =
+        judge_settings(study_file, "analytic", Json{{multibody::kRestitutionErrorKnob, errors}}, dir / "stand-ins", options);
+    for (const SettingsVerdict& s : stand_ins) {
+        EarthquakeVerdict v = s.verdict;
+        v.engine = fmt::format("analytic, restitution {:+g} %", 100.0 * s.settings.value(multibody::kRestitutionErrorKnob, 0.0));
+        part.stand_ins.emplace_back(s.settings.value(multibody::kRestitutionErrorKnob, 0.0), v);
+    }
+    part.detection_limit = detection_limit(part.stand_ins);
     return part;
 }
 
+namespace {
+
+// One engine's (or stand-in's) verdicts: the keys of before (overturning_agreement, fragility_median_ratio,
+// peak_ratio, inside_band) and the paired ones.
+Json verdict_json(const EarthquakeVerdict& v) {
+    Json agreement = interval_json(v.agreement), ratio = interval_json(v.median_ratio);
+    agreement["pass"] = v.agreement_pass;
+    agreement["failed_runs"] = v.failed_runs;
+    ratio["pass"] = v.fragility_pass;
+    ratio["note"] = v.fit_note;
+    ratio["verdict"] = false;  // information: not part of the engine's pass
+    ratio["failed_replicates"] = v.ratio_failed;  // resamples without a fit (left out of the interval)
+    Json peak = interval_json(v.log_peak.median);
+    peak["median_ratio"] = finite_or_null(std::exp(v.log_peak.median.value));
+    peak["runs"] = v.log_peak.values;
+    peak["records"] = v.log_peak.records;
+    peak["failed_replicates"] = v.log_peak.failed;
+    peak["pass"] = v.peak_pass;
+    peak["target"] = v.peak_target;
+    peak["band_half_width"] = finite_or_null(v.band_half_width);
+    return {{"engine", v.engine},
+            {"settings", settings_of(v.settings)},  // as run under records (finding 6: not the suite's)
+            {"pass", v.pass},
+            {"overturning_agreement", agreement},
+            {"overturning_mcnemar", {{"overturned_alone", v.overturned_alone},
+                                     {"stood_alone", v.stood_alone},
+                                     {"failed_runs", v.failed_paired},
+                                     {"p", v.mcnemar_p},
+                                     {"pass", v.overturning_pass}}},
+            {"peak_log_ratio", peak},
+            {"fragility_median_ratio", ratio},
+            {"peak_ratio", {{"median", finite_or_null(v.peak_ratio.median)},
+                            {"q1", finite_or_null(v.peak_ratio.q1)},
+                            {"q3", finite_or_null(v.peak_ratio.q3)},
+                            {"n", v.peak_ratio.n}}},
+            {"inside_band", {{"inside", v.inside}, {"runs", v.band_runs}, {"outside", v.outside}}}};
+}
+
+}  // namespace
+
 Json earthquake_json(const EarthquakePart& part) {
     Json engines = Json::array();
-    for (const EarthquakeVerdict& v : part.engines) {
-        Json agreement = interval_json(v.agreement), ratio = interval_json(v.median_ratio);
-        agreement["pass"] = v.agreement_pass;
-        ratio["pass"] = v.fragility_pass;
-        ratio["note"] = v.fit_note;
-        agreement["failed_runs"] = v.failed_runs;
-        engines.push_back({{"engine", v.engine},
-                           {"overturning_agreement", agreement},
-                           {"fragility_median_ratio", ratio},
-                           {"peak_ratio", {{"median", finite_or_null(v.peak_ratio.median)},
-                                           {"q1", finite_or_null(v.peak_ratio.q1)},
-                                           {"q3", finite_or_null(v.peak_ratio.q3)},
-                                           {"n", v.peak_ratio.n}}},
-                           {"inside_band", {{"inside", v.inside}, {"runs", v.band_runs}, {"outside", v.outside}}}});
+    for (const EarthquakeVerdict& v : part.engines) engines.push_back(verdict_json(v));
+    Json stand_ins = Json::array();
+    for (const auto& [error, v] : part.stand_ins) {
+        Json s = verdict_json(v);
+        s["restitution_error"] = error;
+        stand_ins.push_back(s);
     }
     return Json{{"study", part.study_name},
                 {"folder", part.folder.filename().string()},
                 {"reference", part.reference},
                 {"reference_median_g", interval_json(part.reference_median)},
+                {"reference_median_note", part.reference_note},
                 {"targets", {{"overturning_agreement_min", kOverturningAgreementTarget},
-                             {"fragility_median_within", kFragilityMedianTarget}}},
+                             {"fragility_median_within", kFragilityMedianTarget},
+                             {"peak_log_ratio_within", kPeakLogRatioTarget},
+                             {"mcnemar_alpha", kMcNemarAlpha}}},
                 {"records", part.records},
                 {"levels", part.levels},
                 {"rows", part.rows},
                 {"failed_rows", part.failed_rows},
-                {"engines", engines}};
+                {"engines", engines},
+                {"stand_ins", stand_ins},
+                {"detection_limit_restitution_error", finite_or_null(part.detection_limit)}};
 }
 
 }  // namespace vssw::study

@@ -171,17 +171,24 @@ void add_engines(Blocks& b, const ReportInput& in) {
     std::vector<std::string> header = {"engine", "version", "dt [s]"};
     if (any_iterations) header.push_back("iterations");
     header.push_back("settings");
+    // The earthquake part runs its ensemble file's settings ([settings.ENGINE]), which may differ from the suite's.
+    if (in.earthquake) header.push_back("under records");
     DocBlock engines = table(header, header.size());
     for (const compare::EngineRunInfo& e : in.results.engines) {
         std::vector<DocCell> row = {{e.name}, {e.version}, {fmt::format("{:g}", e.settings.dt)}};
         if (any_iterations)
             row.push_back({e.settings.iterations > 0 ? std::to_string(e.settings.iterations) : "-"});
         row.push_back({settings_text(e.settings)});
+        if (in.earthquake) {
+            const auto& v = in.earthquake->engines;
+            const auto it = std::find_if(v.begin(), v.end(), [&](const EarthquakeVerdict& x) { return x.engine == e.name; });
+            row.push_back({it == v.end() ? "-" : it->settings.empty() ? "defaults" : it->settings});
+        }
         engines.rows.push_back(std::move(row));
     }
     b.push_back(engines);
     b.push_back(paragraph("The step cases of the error-against-step study override dt; everything else runs at the "
-                          "settings above."));
+                          "settings above (under records: the settings the earthquake ensemble file gives)."));
 }
 
 void add_summary(Blocks& b, const ReportInput& in) {
