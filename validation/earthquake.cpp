@@ -102,7 +102,7 @@ StudySpec settings_spec(const std::string& file, const std::string& engine, cons
     doc["engines"] = engine == "analytic" ? Json::array({"analytic"}) : Json::array({"analytic", engine});
     doc["settings"] = Json{{engine, settings}};
     if (doc.contains("excitation") && doc["excitation"].is_object()) doc["excitation"].erase("band");
-    StudySpec spec = study_from_json(nlohmann::json::parse(doc.dump()), file, read.base_dir);
+    StudySpec spec = study_from_json(nlohmann::json::parse(dump_json(doc)), file, read.base_dir);
     spec.path = read.path;
     return spec;
 }
