@@ -104,8 +104,8 @@ def gen_ensemble_study(rng, case_class, to_toml):
         bad = ["one record twice: %s" % doc["excitation"]["files"]]
     elif roll < 0.50:
         doc["excitation"]["levels" if "levels" in doc["excitation"] else "max_pga"] = rng.choice(
-            [[1e308], [0.3, 1e308], 1e308] if "levels" in doc["excitation"] else [1e308, 1e-310])
-        bad = ["an intensity no record reaches"]
+            [[1e308], [0.3, 1e308], 1e308] if "levels" in doc["excitation"] else [1e-310, 0.1])
+        bad = ["a level no record can be scaled to, or a ceiling below the wall's threshold"]
 
     def setup(folder):
         ensemble_folder(folder, extra)

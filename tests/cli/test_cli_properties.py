@@ -394,14 +394,24 @@ def finish(rng, command, opts, spec, positional=(), json_flag=True, files=None, 
 def valid_as_drawn(command, opts):
     """Whether an unmutated draw is valid input: the generators draw each option from its valid values, but a few
     draws combine into what the docs refuse (the paper's kinematics with the unilateral roller; a parapet has no
-    roller or kinematics of a VSSW to choose) or into a run that may fail for a stated reason (an engine's compare
-    measures metrics that may be unmeasurable, exit 3)."""
+    roller or kinematics of a VSSW to choose; `--csv -` with `--json`) or into a run that may fail for a stated
+    reason (an engine's compare measures metrics that may be unmeasurable, exit 3)."""
     given = dict((o, v) for o, v in opts)
+    names = [o for o, _ in opts]
+    if len(set(names)) < len(names):
+        return False  # an option drawn twice (history's harmonic adds a second --pulse)
+    if given.get("--csv") == "-":
+        return False  # --json, added to most runs, writes to standard output too: refused
+    if "--record" in given and "--pulse" in given:
+        return False  # history's harmonic added beside a record: one ground motion at a time
+    if given.get("--impact") == "1":
+        return False  # elastic impacts: a free vibration never comes to rest (exit 3 with that reason)
     if given.get("--roller") == "unilateral" and given.get("--kinematics", "paper") == "paper":
         return False
     if given.get("--model") == "parapet" and any(k in given for k in ("--roller", "--kinematics", "--hinge")):
         return False
-    return command not in ("compare", "check")
+    # compare may measure nothing (exit 3); check may find a bound out (exit 1); describe draws odd paths on purpose.
+    return command not in ("compare", "check", "motions describe")
 
 
 def helped(args):
