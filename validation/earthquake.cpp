@@ -175,11 +175,10 @@ EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& 
     const long b = m.overturned_alone + (m.overturned_alone >= m.stood_alone ? m.failed_paired : 0);
     const long c = m.stood_alone + (m.overturned_alone >= m.stood_alone ? 0 : m.failed_paired);
     v.mcnemar_p = compare::mcnemar_exact_p(b, c);
-    // The interval within the margin (NaN: no run where both stand, or no interval: fails).
+    // The median within the margin (NaN: no run where both stand: fails).
     const compare::Interval& d = v.log_peak.median;
     v.band_half_width = m.band_half_width;
-    if (std::isfinite(m.band_half_width)) v.peak_target = std::max(kPeakLogRatioTarget, m.band_half_width);
-    v.peak_pass = d.lo >= -v.peak_target && d.hi <= v.peak_target;
+    v.peak_pass = std::abs(d.value) <= v.peak_target;
     v.overturning_pass = m.stripes && v.mcnemar_p >= kMcNemarAlpha && v.agreement_pass;
     v.pass = v.peak_pass && v.overturning_pass;
     return v;
