@@ -700,18 +700,6 @@ GroundMotion GroundMotion::scaled_to_pga(double pga_m_s2) const {
     return scaled(pga_m_s2 / current);
 }
 
-GroundMotion GroundMotion::drop_first_sample() const {
-    if (times_.empty())
-        throw InputError(fmt::format("ground motion '{}': only a sampled record has a first sample to drop", name_));
-    if (times_.size() < 3)
-        throw InputError(fmt::format("record '{}': {} samples; dropping the first leaves fewer than 2", name_,
-                                     times_.size()));
-    const double t1 = times_[1];
-    std::vector<double> times(times_.begin() + 1, times_.end()), values(values_.begin() + 1, values_.end());
-    for (double& t : times) t -= t1;
-    return sampled(std::move(times), std::move(values), name_ + " without its first sample");
-}
-
 // --- records --------------------------------------------------------------------------------------------------------
 
 GroundMotion read_peer_at2(const std::string& path, const AccelUnits* units_override) {

@@ -73,13 +73,6 @@ public:
 
     GroundMotion scaled(double factor) const;           // a(t) * factor; factor must be finite
     GroundMotion scaled_to_pga(double pga_m_s2) const;  // scaled so that pga() == target; target must be > 0
-    // A sampled record without its first sample, its times shifted so that the old second sample is at t = 0: the
-    // same accelerations one sample earlier (a study's sensitivity band, study/spec.hpp). Shifted rather than left
-    // starting at the old second time because a record is zero before its first sample: unshifted, it would differ
-    // from the original only over the first interval (a ramp from 0), no perturbation of the motion's phase.
-    // InputError for an analytic signal, no motion, or a record of fewer than 3 samples (2 must remain).
-    GroundMotion drop_first_sample() const;
-
     // Only for sampled records (empty otherwise).
     const std::vector<double>& sample_times() const { return times_; }
     const std::vector<double>& sample_values() const { return values_; }

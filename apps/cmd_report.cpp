@@ -126,11 +126,12 @@ std::string report_footer() {
         "results.json, metrics.csv, failures.csv, traces.csv and plots/ (gnuplot .svg, with the .gp script and .dat\n"
         "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; "
         "targets:\n" +
-        fmt::format("threshold {:g} %, period {:g} %, restitution {:g} %; under records (earthquake/): overturning "
-                    "agreement >= {:g},\nfragility median within {:g} % of the reference's.\n",
+        fmt::format("threshold {:g} %, period {:g} %, restitution {:g} %; under records (earthquake/), run by run\n"
+                    "against the reference: the median ln(peak / reference's) where both stand within +-{:g}, and\n"
+                    "overturning with McNemar's p >= {:g} and agreement >= {:g} (the fragility median is information).\n",
                     100.0 * compare::kThresholdTarget, 100.0 * compare::kPeriodTarget,
-                    100.0 * compare::kRestitutionTarget, study::kOverturningAgreementTarget,
-                    100.0 * study::kFragilityMedianTarget) +
+                    100.0 * compare::kRestitutionTarget, study::kPeakLogRatioTarget, study::kMcNemarAlpha,
+                    study::kOverturningAgreementTarget) +
         "results.json keys: vssw {commit, report_format}, date, suite {name, walls, records, cases [{id, kind, wall,\n"
         "r, record, dt}]}, engines [{name, version, contact_scheme, settings {dt, iterations (where set), knobs}}],\n"
         "targets, rows [{case_id, engine, metric, unit, reference, analytic, engine_value, rel_error, target,\n"
@@ -138,8 +139,12 @@ std::string report_footer() {
         "failures [{case_id, engine, message}], summary [{engine, line, within, with_target, not_measured, failures,\n"
         "max_error}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],\n"
         "findings, step_study [{engine, case_id, metric, dt, rel_error, order}], traces [{case_id, engine,\n"
-        "assumption, samples}], earthquake {study, reference, targets, records, levels, engines [{engine,\n"
-        "overturning_agreement {value, lo, hi, n, pass}, fragility_median_ratio {..., note}, peak_ratio, inside_band}]}\n"
+        "assumption, samples}], earthquake {study, folder, reference, reference_median_g, reference_median_note,\n"
+        "targets, records, levels, rows, failed_rows, engines [{engine, settings, pass, overturning_agreement {value,\n"
+        "lo, hi, n, pass, failed_runs}, overturning_mcnemar {overturned_alone, stood_alone, failed_runs, p, pass},\n"
+        "peak_log_ratio {value, lo, hi, n, median_ratio, runs, records, failed_replicates, pass, target,\n"
+        "band_half_width}, fragility_median_ratio {..., note, verdict, failed_replicates}, peak_ratio, inside_band}],\n"
+        "stand_ins [the same, with restitution_error], detection_limit_restitution_error}\n"
         "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"
         "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
         "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"

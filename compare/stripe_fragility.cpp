@@ -21,7 +21,7 @@ constexpr double kDecrement = 1e-12;
 // Backtracking halves a Newton step down to this fraction of it: 40 halvings, past any step that could still raise
 // a concave ln L in doubles.
 constexpr double kSmallestStep = 1e-12;
-// A fit the data do not support is "not resolved", never a number (issue 39). beta above this: the shares hardly
+// A fit the data do not support is "not resolved", never a number (docs/earthquakes.md, "Verdicts"). beta above this: the shares hardly
 // change over the levels (flat stripes gave beta 2e7); between 16 % and 84 % collapse the intensity would grow
 // e^(2 beta) = 55-fold, where the rocking walls measured span beta 0.25-0.6 (PGA, PGV) and 1.2 at most (Arias).
 constexpr double kMaxResolvedBeta = 2.0;

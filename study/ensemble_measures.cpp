@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -92,9 +93,9 @@ bool nominal(const StudyData& d, const Columns& c, const StudyRow& r) {
 
 // Each PGA level as the level of the stripe it belongs to: a nominal run's as the first nominal level within round-off
 // of it (a record scaled to 0.85 g can read 0.8500000000000001 or ...02 in results.csv, the record's PGA times the
-// scale), a perturbed run's as the nearest nominal one (a perturbation shifts the column by 1e-3).
+// scale), a perturbed run's as the nearest nominal one (a perturbation shifts the level by kBandIntensityStep, 1e-2, or not at all).
 std::vector<std::uint32_t> nominal_pga(const StudyData& d, const Columns& c) {
-    constexpr double kSameLevel = 1e-9;  // relative: round-off of a product, far below the band's 1e-3
+    constexpr double kSameLevel = 1e-9;  // relative: round-off of a product, far below kBandIntensityStep
     if (c.pga == std::string::npos) return {};
     const ColumnLevels& col = d.columns[c.pga];
     std::vector<bool> is_nominal(col.texts.size(), false);
@@ -130,7 +131,7 @@ std::optional<IdaRecord> ida_record(const StudyData& d, const Columns& c, const 
     // Stood up to the last PGA run below max_pga: right-censored there.
     if (status.rfind(kCensoredStatus, 0) == 0) {
         const std::size_t of = status.find(kCensoredValue);
-        const double cap = of == std::string::npos ? NAN : std::strtod(status.c_str() + of + 4, nullptr);
+        const double cap = of == std::string::npos ? NAN : std::strtod(status.c_str() + of + std::strlen(kCensoredValue), nullptr);
         if (std::isfinite(cap) && cap > 0.0) return IdaRecord{cap, false};
         return std::nullopt;
     }

@@ -280,7 +280,7 @@ void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMe
             row("peak_ratio_q1", {q.q1, NAN, NAN, q.n});
             row("peak_ratio_q3", {q.q3, NAN, NAN, q.n});
             if (m.band) row("inside_band", {static_cast<double>(m.inside.inside), NAN, NAN, m.inside.runs});
-            // The paired measures (issue 39): the median ln peak ratio (n: its runs) and McNemar's counts.
+            // The paired measures (docs/earthquakes.md, "Verdicts"): the median ln peak ratio (n: its runs) and McNemar's counts.
             const compare::Interval& d_median = m.log_peak_ratio.median;
             row("peak_log_ratio_median", {d_median.value, d_median.lo, d_median.hi, m.log_peak_ratio.values});
             row("overturned_alone", {static_cast<double>(m.overturned_alone), NAN, NAN, m.overturning.n});

@@ -75,7 +75,7 @@ extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, 
 extern const std::vector<std::string> kLevelKeys;
 
 // The sensitivity band's perturbations of an ensemble's stripe case, the `perturbation` axis's levels in order: none,
-// "as close as the free-vibration targets allow" (issue 39): the intensity x (1 +- kBandIntensityStep), every impact's
+// "as close as the free-vibration targets allow" (docs/earthquakes.md, "Verdicts": the band): the intensity x (1 +- kBandIntensityStep), every impact's
 // velocity ratio x (1 +- kBandRestitutionStep) (the analytic backend's restitution_error) and the wall's height and
 // thickness x (1 +- kBandSizeStep) at the same slenderness and hinge (R x (1 +- 1 %): the rocking frequency
 // p ~ R^-1/2 moves -+0.5 %, the threshold stays). Engines run "none" only.

@@ -1,4 +1,4 @@
-// The detection study (issue 39): deliberately wrong backends run through the earthquake verdicts
+// The detection study (docs/earthquakes.md, "Verdicts"): deliberately wrong backends run through the earthquake verdicts
 // (validation/earthquake.hpp) on the report's own ensemble (studies/ensemble-report.toml, 4 records x 4 PGAs), without
 // its band. Proves the verdicts' rules: every variant whose free-vibration error exceeds twice its target (threshold
 // 0.5 %, period 0.5 %, restitution 2 %) or whose peaks differ from the reference's by more than 25 % in median fails,

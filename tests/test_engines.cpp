@@ -600,7 +600,7 @@ TEST(mujoco, SettingsOutsideTheirRangesAreRefusedByName) {
         {{"solref_steps", 1.0}, {"solimp_dmax", 1.0}, {"integrator", 3.0}, {"tolerance", 0.0}, {"moving_supports", 1.0}});
 }
 
-// The sweep's MuJoCo settings (finding 4 of the second sweep): solimp_dmin at the low end of its documented range
+// The sweep's MuJoCo settings: solimp_dmin at the low end of its documented range
 // lets the upper block fall through the lower one (the top 33 m down). The run fails naming the hinge, in free
 // vibration and under the pulse P, instead of giving a threshold 57 % low and "ok".
 TEST(mujoco, AnUpperBlockFallingThroughTheHingeFailsTheRun) {

@@ -1,4 +1,4 @@
-// Coverage of the fragility median's 95 % intervals, by simulation (issue 39): records' collapse intensities drawn
+// Coverage of the fragility median's 95 % intervals, by simulation: records' collapse intensities drawn
 // from a known lognormal, fitted (IDA and stripes), the interval computed; over many repetitions the share holding
 // the true median. The IDA interval without censoring (Student's t on ln IM) must cover 95 %; the percentile
 // bootstrap's (stripes, censored IDA) falls short at few records, which is why it is "not resolved" below
@@ -18,7 +18,7 @@ namespace vssw::compare {
 namespace {
 
 // The report's wall and ensemble: its reference's median collapse PGA, the dispersion measured in PGA over 46
-// motions (issue 39) and its four levels.
+// motions and its four levels.
 constexpr double kTheta = 0.77, kBeta = 0.6;
 const std::vector<double> kLevels = {0.4, 0.55, 0.7, 0.85};
 constexpr int kRepetitions = 600;  // coverage's standard error sqrt(0.95 * 0.05 / 600) = 0.009

@@ -223,7 +223,7 @@ TEST(ParameterDraws, EveryMedianInsideItsRangeIsHonouredAndOutsideRefused) {
             }
         }
     }
-    // The clamps the sweep found (issue 38): Arias 1e6 and f_mid 100 Hz were held at the 8-sigma quantile silently.
+    // The clamps the sweep found: Arias 1e6 and f_mid 100 Hz were held at the 8-sigma quantile silently.
     EXPECT_LT(median_range(kArias).hi, 1e4);
     EXPECT_LT(median_range(kMidFrequency).hi, 100.0);
 }

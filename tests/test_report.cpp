@@ -1246,7 +1246,7 @@ TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
 }
 
 // The Engines table and results.json say the settings each engine ran with under records (the ensemble file's
-// [settings.ENGINE]), not only the suite's: an engine at cfm = 1e-5 there was reported as "defaults" (issue 39).
+// [settings.ENGINE]), not only the suite's: an engine at cfm = 1e-5 there was reported as "defaults".
 TEST(ReportEarthquake, EnginesTableListsTheSettingsTheRecordsRanWith) {
     if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
     TempDir tmp("earthquake_settings");

@@ -131,7 +131,7 @@ TEST(StripeFragility, BootstrapHoldsTheFitAndAFitAgainstItselfIsOne) {
 namespace vssw::compare {
 namespace {
 
-// Fits the data do not support are "not resolved" with the reason, never a number (issue 39): flat stripes (the
+// Fits the data do not support are "not resolved" with the reason, never a number: flat stripes (the
 // share the same at every level: beta runs away), too few records; a resolved fit on the same levels for contrast.
 TEST(StripeFragility, FitsTheStripesDoNotSupportAreNotResolved) {
     const std::vector<double> levels = {0.4, 0.8};

@@ -455,7 +455,7 @@ dt = [0.001, 1000.0]
 }
 
 // Every class of value a study's runs cannot honour is refused while the file is read, exit 2 naming the key (or
-// engine and setting) and value, before the folder exists (issue 38): a step of more than 1e8 steps in a free
+// engine and setting) and value, before the folder exists: a step of more than 1e8 steps in a free
 // vibration, a threshold and under a pulse; a setting for a parapet only on a VSSW; a PGA, scale or ensemble level
 // whose scale factor overflows; a collapse search's max_pga below the wall's threshold; a fractional iteration count.
 TEST(StudyCli, EveryValueARunCannotHonourIsRefusedBeforeTheFolder) {

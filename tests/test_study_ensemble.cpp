@@ -1,7 +1,7 @@
 // Ensembles in study files (kind = "ensemble", study/spec.hpp): read into the record or scale-to-collapse study they
 // stand for (the same ids and rows but for the kind), a folder's records listed in name order, every malformed key
-// named, and the sensitivity band: the analytic model's perturbed repeats of each stripe case, which engines do not
-// run, with a record one sample shorter (GroundMotion::drop_first_sample).
+// named, and the sensitivity band: the analytic model's perturbed repeats of each stripe case (PGA x (1 +- 1e-2),
+// every impact's ratio x (1 +- 2e-2), the wall's size x (1 +- 1e-2)), which engines do not run.
 #include <sys/stat.h>
 
 #include <gtest/gtest.h>
@@ -47,8 +47,6 @@ using vssw::testing::write_file;
 
 // A PGA set by scaling the record (scale = level g / PGA, then PGA x scale / g) is the level to rounding: a few ulps.
 constexpr double kScaledPga = 1e-14;
-// Times shifted by a subtraction (t - t1) are the originals' differences to rounding of numbers below 100 s.
-constexpr double kShiftedTime = 1e-12;
 // Picks a level's rows out of a band: theirs are within 1e-2 (kBandIntensityStep) of it, the other levels' 50 % away.
 constexpr double kNearLevel = 2e-2;
 
@@ -353,31 +351,6 @@ TEST(StudyEnsemble, TheBandsSizeIsThePeriodTargetAtTheSameThreshold) {
         EXPECT_NEAR(std::abs(p(*scaled) / p(*nominal) - 1.0), kPeriodTarget, 0.01 * kPeriodTarget) << f;
     }
 }
-
-// Dropping the first sample: one sample fewer, the old second sample at t = 0, the same accelerations one sample
-// earlier. Shifted to 0 (not left to start at the old second time) because a record is zero before its first sample:
-// unshifted it would be the original with its first interval ramped from 0, no perturbation of the motion's phase.
-TEST(StudyEnsemble, DroppingTheFirstSampleShiftsTheRecordOneSampleEarlier) {
-    const GroundMotion original = read_record(kRinaldi);
-    const GroundMotion dropped = original.drop_first_sample();
-    ASSERT_EQ(dropped.sample_times().size() + 1, original.sample_times().size());
-    const double t1 = original.sample_times()[1];
-    EXPECT_EQ(dropped.sample_times().front(), 0.0);
-    for (std::size_t i = 0; i < dropped.sample_times().size(); i += 97) {
-        EXPECT_NEAR(dropped.sample_times()[i], original.sample_times()[i + 1] - t1, kShiftedTime) << i;
-        EXPECT_EQ(dropped.sample_values()[i], original.sample_values()[i + 1]) << i;
-    }
-    EXPECT_NEAR(dropped.duration(), original.duration() - t1, kShiftedTime);
-
-    const GroundMotion three = GroundMotion::sampled({0.5, 0.6, 0.8}, {1.0, -2.0, 3.0}, "three");
-    const GroundMotion two = three.drop_first_sample();
-    EXPECT_EQ(two.sample_times(), (std::vector<double>{0.0, 0.8 - 0.6}));
-    EXPECT_EQ(two.sample_values(), (std::vector<double>{-2.0, 3.0}));
-    EXPECT_THROW((void)two.drop_first_sample(), InputError);  // one sample cannot be a record
-    EXPECT_THROW((void)sine_pulse(1.0, 0.5).drop_first_sample(), InputError);
-    EXPECT_THROW((void)GroundMotion::none().drop_first_sample(), InputError);
-}
-
 
 // Fig. 10's rocking curves over an ensemble (study::rocking_curves): at each alpha the median and quartiles of the
 // records' peaks as results.csv holds them, computed here from the rows; the overturned runs counted.

@@ -67,9 +67,9 @@ struct EarthquakeVerdict {
     compare::MedianBootstrap log_peak{};  // median ln(its peak / the reference's) where both stand, bootstrap 95 %
     long overturned_alone = 0, stood_alone = 0, failed_paired = 0;  // McNemar's b, c and its failed runs
     double mcnemar_p = 1.0;              // b and c with the failed runs counted on the larger side
-    // The peaks' margin (kPeakLogRatioTarget), and the band's median half-width in ln: how far the targets' own
-    // tolerances move one run's peak (information: a run's scatter, not the median's bias the verdict reads).
-    double peak_target = kPeakLogRatioTarget, band_half_width = NAN;
+    // The band's median half-width in ln: how far the targets' own tolerances move one run's peak (information: a
+    // run's scatter, not the median's bias the verdict reads against kPeakLogRatioTarget).
+    double band_half_width = NAN;
     bool peak_pass = false, overturning_pass = false;
     bool pass = false;  // peak_pass && overturning_pass
 };
@@ -126,13 +126,14 @@ std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const
                                             const Json& settings, const std::filesystem::path& dir,
                                             const EarthquakeRunOptions& options);
 
-// The part as results.json holds it: study, reference, targets, records, levels, engines [{engine,
-// overturning_agreement {value, lo, hi, n, pass}, fragility_median_ratio {value, lo, hi, n, pass, note},
-// peak_ratio {median, q1, q3, n}, inside_band {inside, runs}}].
+// The part as results.json holds it (`vssw report --help` lists the keys): study, reference, targets, records,
+// levels, engines [{engine, settings, pass, overturning_agreement, overturning_mcnemar, peak_log_ratio,
+// fragility_median_ratio (information), peak_ratio, inside_band}], stand_ins, detection_limit_restitution_error.
 Json earthquake_json(const EarthquakePart& part);
 
-// One line per engine for the report's standard output: "ODE under records: overturning agrees on 16/16 (target
-// >= 0.9) pass; fragility median x 1.000 [1.000, 1.000] (target 1 +- 0.1) pass".
+// One line per engine for the report's standard output: "ODE under records: pass; peaks x 0.988 [0.973, 1.000]
+// (target: median within x 1.046^+-1) pass; overturning b/c 0/0, p 1.000, 16/16 (...) pass; fragility median ...
+// (information)", then the detection limit.
 std::vector<std::string> earthquake_summary_lines(const EarthquakePart& part);
 
 // The report's blocks (validation/earthquake_document.cpp). Under "At a glance": the two ensemble measures as

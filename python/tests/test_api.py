@@ -279,7 +279,7 @@ def test_progress_true_drives_a_tqdm_bar(monkeypatch):
     assert updates == [(0, 1), (1, 1), "closed"]
 
 
-# Bad input to the typed API, refused as the command line refuses it (the second sweep's finding 17): one test per
+# Bad input to the typed API, refused as the command line refuses it: one test per
 # class. A study small enough to run in a second: the analytic model's Fig. 6 period.
 SMALL_STUDY = {"name": "small", "wall": FIG6, "excitation": {"kind": "free", "theta0": 0.5}, "metrics": ["period"]}
 
