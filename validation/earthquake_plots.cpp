@@ -119,8 +119,9 @@ PlotScript peaks_plot(const StudyData& d, const std::vector<const SeriesMeasures
         entries.push_back({d.series[m->series].label, series_style(d.series[m->series].engine, variants[m->series])});
     s.gp = gp + "unset logscale\n" + layout_end(layout, entries,
                            fmt::format("NaN with lines lc rgb '#888888' title 'identity', NaN with points {} title "
+                                       "\"the reference's band (bar)\", NaN with points {} title "
                                        "'overturned or failed (at the edge)'",
-                                       kOverturnedStyle));
+                                       kReferencePoints, kOverturnedStyle));
     return s;
 }
 
