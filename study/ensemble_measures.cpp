@@ -313,7 +313,12 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         bool both_stand = false;
         const auto ref_over = reference->overturned.find(key);
         const auto ref_peak = reference->peak.find(key);
+        PairedRun* paired = nullptr;
         if (ref_over != reference->overturned.end() && std::isfinite(ref_over->second)) {
+            m.paired_runs.push_back({run_name(d, c, key, e.unit), own_peak,
+                                     ref_peak == reference->peak.end() ? NAN : ref_peak->second, NAN, NAN, over,
+                                     ref_over->second});
+            paired = &m.paired_runs.back();
             ++both;
             agree += std::isfinite(over) && (over > 0.5) == (ref_over->second > 0.5) ? 1 : 0;
             count_discordant(m, over, ref_over->second);
@@ -331,6 +336,10 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
         const auto [lo, hi] = std::minmax_element(repeats->second.begin(), repeats->second.end());
         band.push_back({ref_peak->second, std::min(*lo, ref_peak->second), std::max(*hi, ref_peak->second), own_peak});
         band_runs.push_back(key);
+        if (paired) {
+            paired->band_lo = band.back().lo;
+            paired->band_hi = band.back().hi;
+        }
         if (both_stand && band.back().lo > 0.0) half_widths.push_back(0.5 * std::log(band.back().hi / band.back().lo));
     }
     if (!m.stripes) return;

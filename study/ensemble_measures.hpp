@@ -41,6 +41,15 @@ struct StripeShare {
     compare::Interval share;
 };
 
+// One run of a series paired with the reference's (stripes, where the reference has a result), for the plots that
+// show each run: both peaks, the reference's band [lo, hi] (NaN without perturbed repeats) and whether each
+// overturned (1 or 0; NaN for a failed run).
+struct PairedRun {
+    std::string name;  // "rinaldi-228.at2 at 0.55 g"
+    double peak = NAN, reference_peak = NAN, band_lo = NAN, band_hi = NAN;
+    double overturned = NAN, reference_overturned = NAN;
+};
+
 // One series on one wall.
 struct SeriesMeasures {
     std::size_t series = 0;  // in StudyData::series
@@ -73,6 +82,7 @@ struct SeriesMeasures {
     // The band's median half-width in ln, 0.5 ln(hi / lo), over the runs where both stand (NaN without a band): how
     // far the reference's peaks move within what the free-vibration targets allow.
     double band_half_width = NAN;
+    std::vector<PairedRun> paired_runs;     // every run paired with the reference's, in the study's order
     std::vector<std::string> outside_band;  // the runs outside it ("file at 0.55 g"), in the study's order
     std::vector<StripeShare> levels;  // by PGA level, in the study's order
 };

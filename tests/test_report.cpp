@@ -1303,3 +1303,85 @@ TEST(ReportEarthquake, NoneOrACaseSubsetRunsNoneAndAStudyThatIsNoEnsembleIsRefus
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(refused));
 }
+
+// The earthquake part's figures (validation/earthquake_plots.hpp): a panel per engine on the peaks plot and on the
+// fragility plot, each paired run's two peaks in the data (checked against results.csv's rows), the identity line,
+// and a hostile record name that reaches gnuplot only as quoted text.
+TEST(ReportEarthquake, PeakAndFragilityPanelsHoldEachEnginesPairedRuns) {
+    std::vector<std::string> engines;
+    for (const char* e : {"ode", "bullet"})
+        if (vssw::testing::engine_available(e)) engines.push_back(e);
+    if (engines.empty()) GTEST_SKIP() << "no engine in this build";
+    // gp_number writes 10 significant digits: a peak read back from the data file is within this of the row's.
+    constexpr double kDataDigits = 1e-9;
+    TempDir tmp("earthquake_plots");
+    const std::string rinaldi = std::string(VSSW_DATA_DIR) + "/records/northridge1994-rinaldi-228.at2";
+    const fs::path hostile = tmp.path / vssw::testing::kHostileFileName;
+    fs::copy_file(rinaldi, hostile);
+    std::string study = read(small_ensemble(tmp.path));
+    study.replace(study.find('"' + rinaldi + '"'), rinaldi.size() + 2, vssw::testing::toml_string(hostile.string()));
+    std::ofstream(tmp.path / "hostile.toml") << study;
+    const fs::path out = tmp.path / "report";
+    std::string engine_list;
+    for (const std::string& e : engines) engine_list += (engine_list.empty() ? "" : ",") + e;
+    const CliResult r = run_cli({"report", "--engines", engine_list, "--cases", "fig6-pw", "--earthquake",
+                                 (tmp.path / "hostile.toml").string(), "--out", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const fs::path plots = out / "earthquake" / "plots";
+    const std::string peaks_gp = read(plots / "engine_peaks.gp"), fragility_gp = read(plots / "fragility_by_engine.gp");
+    EXPECT_TRUE(contains(peaks_gp, "plot x with lines")) << "the identity line\n" << peaks_gp;
+    EXPECT_TRUE(contains(peaks_gp, "set logscale xy")) << peaks_gp;
+    for (const std::string& e : engines) {
+        const std::string title = "set title " + vssw::study::gp_string(vssw::multibody::engine_display_name(e));
+        EXPECT_TRUE(contains(peaks_gp, title)) << e << "\n" << peaks_gp;
+        // Resolved or not, its panel (two records: not resolved, its stripes only and the note in its title).
+        EXPECT_TRUE(contains(fragility_gp, title.substr(0, title.size() - 1) + " (not resolved: stripes only)'"))
+            << e << "\n" << fragility_gp;
+    }
+    EXPECT_FALSE(contains(fragility_gp, "norm(log(x/")) << "no curve for a fit that is not resolved";
+    // The runs where both stand, from the rows: (reference peak, engine peak) per engine.
+    std::map<std::pair<std::string, std::string>, std::map<std::string, std::pair<double, double>>> runs;
+    std::istringstream rows(read(out / "earthquake" / "results.csv"));
+    std::vector<std::string> header, f;
+    ASSERT_TRUE(vssw::study::read_csv_record(rows, header));
+    const auto col = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    while (vssw::study::read_csv_record(rows, f)) {
+        auto& [peak, over] = runs[{f.at(col("file")), f.at(col("pga"))}][f.at(col("engine"))];
+        const double value = f.at(col("value")).empty() ? NAN : std::stod(f.at(col("value")));
+        (f.at(col("metric")) == "overturned" ? over : peak) = value;
+    }
+    for (const std::string& e : engines) {
+        // The engine's first block of engine_peaks.dat: "reference_peak engine_peak band_lo band_hi hover".
+        const std::string dat = read(plots / "engine_peaks.dat");
+        const std::string head = "# " + vssw::multibody::engine_display_name(e) + ": reference_peak engine_peak";
+        const std::size_t at = dat.find(head);
+        ASSERT_NE(at, std::string::npos) << e << "\n" << dat;
+        std::istringstream block(dat.substr(dat.find('\n', at) + 1, dat.find("\n\n", at) - dat.find('\n', at)));
+        std::vector<std::pair<double, double>> drawn;
+        for (std::string line; std::getline(block, line) && !line.empty();)
+            drawn.push_back({std::stod(line), std::stod(line.substr(line.find(' ') + 1))});
+        std::size_t expected = 0;
+        for (const auto& [run, by_engine] : runs) {
+            const auto& [ref_peak, ref_over] = by_engine.at("analytic");
+            const auto& [peak, over] = by_engine.at(e);
+            if (!(ref_over == 0.0 && over == 0.0)) continue;
+            ++expected;
+            EXPECT_TRUE(std::any_of(drawn.begin(), drawn.end(), [&](const std::pair<double, double>& d) {
+                return std::abs(d.first / ref_peak - 1) < kDataDigits && std::abs(d.second / peak - 1) < kDataDigits;
+            })) << e << " " << run.first << " at " << run.second;
+        }
+        EXPECT_EQ(drawn.size(), expected) << e << "\n" << dat;
+        EXPECT_GT(expected, 0u) << "the pacoima runs stand";
+    }
+    // The record's name reached gnuplot's data only as a label column and ran nothing.
+    EXPECT_TRUE(fs::exists(plots / "engine_peaks.svg"));
+    EXPECT_TRUE(vssw::testing::markers_made(tmp.path).empty());
+    EXPECT_FALSE(contains(read(plots / "engine_peaks.dat"), "\n!touch")) << read(plots / "engine_peaks.dat");
+    EXPECT_FALSE(contains(read(plots / "fragility_by_engine.dat"), "\n!touch"));
+    // The per-engine fragility is among the figures at the top, the peaks plot in the section.
+    const std::string md = read(out / "report.md");
+    EXPECT_TRUE(contains(md, "earthquake/plots/fragility_by_engine.svg")) << md;
+    EXPECT_TRUE(contains(md, "earthquake/plots/engine_peaks.svg")) << md;
+}

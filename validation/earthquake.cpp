@@ -17,6 +17,7 @@
 #include "study/runner.hpp"
 #include "study/spec.hpp"
 #include "study/study_data.hpp"
+#include "validation/earthquake_plots.hpp"
 
 namespace vssw::study {
 namespace {
@@ -241,6 +242,8 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     part.wall_time_s = result.meta.wall_time_s;
     const StudyData d = read_study_data(dir);
     const EnsembleMeasures e = ensemble_measures(d);
+    // Its own plots beside the study's (a missing gnuplot leaves their scripts and data, as the study's).
+    if (options.plots) draw_plots(earthquake_plot_scripts(d, e), dir / "plots", options.gnuplot);
     if (e.has_reference) {
         const Series& ref = d.series[e.reference];
         part.reference = fmt::format("the analytic model ({})", assumptions_text(ref));

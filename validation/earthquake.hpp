@@ -138,8 +138,8 @@ std::vector<std::string> earthquake_summary_lines(const EarthquakePart& part);
 
 // The report's blocks (validation/earthquake_document.cpp). Under "At a glance": the two ensemble measures as
 // columns of the engine x measure matrix (their headers; an engine's two verdict cells, "-" where the part has no
-// verdict for it) and a paragraph saying what they are; the fragility plot among the figures per measure (none when
-// it was not drawn); then the section with every number.
+// verdict for it) and a paragraph saying what they are; the per-engine fragility plot among the figures per measure
+// (none when it was not drawn); then the section with every number and the other plots.
 std::vector<std::string> earthquake_matrix_header();
 std::vector<DocCell> earthquake_matrix_cells(const EarthquakePart& part, const std::string& engine);
 std::vector<DocBlock> earthquake_glance(const EarthquakePart& part);

@@ -82,7 +82,7 @@ DocCell fragility_cell(const EarthquakeVerdict& v) {
 
 // The ensemble's plots that were drawn, in the order the report shows them.
 struct EnsemblePlot {
-    std::string kind;  // "fragility" or "stripes": the file stem in the ensemble's plots/
+    std::string kind;  // "fragility_by_engine", "engine_peaks", "fragility" or "stripes": the stem in its plots/
     std::string name;  // for plot(): the path from the report's plots/ without ".svg"
     std::string title;
 };
@@ -90,8 +90,12 @@ std::vector<EnsemblePlot> drawn_plots(const EarthquakePart& p) {
     std::vector<EnsemblePlot> out;
     const std::filesystem::path plots = p.folder / "plots";
     for (const auto& [kind, title] :
-         {std::pair<const char*, const char*>{"fragility",
-                                              "Under records: lognormal fragility fits and the stripes' shares"},
+         {std::pair<const char*, const char*>{"fragility_by_engine",
+                                              "Under records: each engine's fragility against the reference's, a "
+                                              "panel per engine (a fit not resolved: its stripes only)"},
+          {"engine_peaks", "Under records: each engine's peak against the reference's, run by run (log-log; the "
+                           "identity line, the reference's band as a bar, overturned runs at the edge)"},
+          {"fragility", "Under records: lognormal fragility fits and the stripes' shares, every series overlaid"},
           {"stripes", "Under records: share overturned at each PGA level (95 % Wilson bars)"}})
         if (std::filesystem::exists(plots / (std::string(kind) + ".svg")))
             out.push_back({kind, "../" + p.folder.filename().string() + "/plots/" + kind, title});
@@ -164,7 +168,7 @@ std::vector<DocBlock> earthquake_glance(const EarthquakePart& p) {
 std::vector<DocBlock> earthquake_figure(const EarthquakePart& p) {
     std::vector<DocBlock> b;
     for (const EnsemblePlot& e : drawn_plots(p))
-        if (e.kind == "fragility") b.push_back(plot(e.title, e.name));
+        if (e.kind == "fragility_by_engine") b.push_back(plot(e.title, e.name));
     return b;
 }
 
@@ -219,9 +223,9 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
                               "error):"));
         b.push_back(list(outside));
     }
-    // The fragility plot is among the figures per measure at the top (earthquake_figure): the rest here.
+    // The fragility per engine is among the figures per measure at the top (earthquake_figure): the rest here.
     for (const EnsemblePlot& e : drawn_plots(p))
-        if (e.kind != "fragility") b.push_back(plot(e.title, e.name));
+        if (e.kind != "fragility_by_engine") b.push_back(plot(e.title, e.name));
     b.push_back(paragraph(fmt::format(
         "Every number is in {0}/agreement.csv and {0}/fragility.csv, every run in {0}/results.csv; {0}/study.html "
         "is the ensemble's own study report.",
