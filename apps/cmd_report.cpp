@@ -178,7 +178,8 @@ Command add_report_command(CLI::App& root) {
     o->earthquake_option = cmd->add_option(
         "--earthquake", o->earthquake,
         "the record ensemble judged under \"Under earthquake records\": default (studies/ensemble-report.toml: 4 "
-        "records x 4 PGAs on the Fig. 6 VSSW), a study file of kind \"ensemble\" with levels, or none (default: "
+        "records x 4 PGAs on the Fig. 6 VSSW), full (studies/ensemble-report-full.toml: the 26 shipped records x the "
+        "same PGAs), a study file of kind \"ensemble\" with levels, or none (default: full with --suite full, else "
         "default; none with --cases)");
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_option("--data", o->data, "folder of the ground-motion records (default: $VSSW_DATA_DIR, else <prefix>/share/vssw/data beside an installed vssw, else the source tree's data/)");
@@ -193,8 +194,11 @@ Command add_report_command(CLI::App& root) {
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
                 require_records_readable(suite);
                 const bool earthquake_asked = o->earthquake_option->count() > 0 || o->cases.empty();
+                const std::string earthquake_name = o->earthquake_option->count() > 0
+                                                        ? o->earthquake
+                                                        : study::default_earthquake_for_suite(o->suite);
                 const std::string earthquake_file =
-                    earthquake_asked ? study::earthquake_study_file(o->earthquake, engines) : std::string();
+                    earthquake_asked ? study::earthquake_study_file(earthquake_name, engines) : std::string();
                 const std::filesystem::path dir = o->out;
                 // After every other check, before the suite runs. Nothing is made in --out until the report is
                 // complete: it is written into a staging folder that then replaces --out whole (a failed run leaves

@@ -37,6 +37,9 @@
 #include "validation/report_data.hpp"
 #include "validation/report_plots.hpp"
 #include "validation/report_write.hpp"
+#include "validation/earthquake.hpp"
+#include "study/spec.hpp"
+#include "compare/ensemble_statistics.hpp"
 
 namespace {
 
@@ -1263,6 +1266,24 @@ TEST(ReportEarthquake, EnginesTableListsTheSettingsTheRecordsRanWith) {
     const std::string engines = md.substr(md.find("## Engines"));
     EXPECT_TRUE(contains(lines_of(engines).at(2), "under records")) << engines;
     EXPECT_TRUE(contains(engines, "| cfm=1e-05 |")) << engines;
+}
+
+// `vssw report --suite full` judges on the 26 shipped records (studies/ensemble-report-full.toml), enough for the
+// fragility's intervals (shown from kMinStripeIntervalRecords records) and for the 20; other suites on the
+// default report's 4. Read and checked as the report checks a file, without running it (an hour of engine runs).
+TEST(ReportEarthquake, TheFullSuiteIsJudgedOnTwentyRecordsOrMore) {
+    constexpr std::size_t kFullSuiteRecords = 20;  // a verdict's power: the records needed grow as beta^2
+    EXPECT_EQ(vssw::study::default_earthquake_for_suite("full"), "full");
+    EXPECT_EQ(vssw::study::default_earthquake_for_suite("default"), "default");
+    EXPECT_EQ(vssw::study::default_earthquake_for_suite("my-suite.toml"), "default");
+    const std::string file = vssw::study::earthquake_study_file("full", {"ode"});
+    const vssw::study::StudySpec spec = vssw::study::read_study_file(file);
+    ASSERT_EQ(spec.parts.size(), 1u);
+    const std::size_t records = spec.parts.front().excitation_axis("file")->levels.size();
+    EXPECT_GE(records, kFullSuiteRecords) << file;
+    EXPECT_GE(static_cast<long>(records), vssw::compare::kMinStripeIntervalRecords);
+    const std::string small = vssw::study::earthquake_study_file("default", {"ode"});
+    EXPECT_LT(vssw::study::read_study_file(small).parts.front().excitation_axis("file")->levels.size(), records);
 }
 
 TEST(ReportEarthquake, NoneOrACaseSubsetRunsNoneAndAStudyThatIsNoEnsembleIsRefused) {

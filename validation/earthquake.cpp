@@ -24,6 +24,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kShippedStudy = "ensemble-report.toml";
+constexpr const char* kShippedFullStudy = "ensemble-report-full.toml";
 
 // The study file with its engines replaced by the analytic model (the reference) and the report's; the settings it
 // gives engines that are not run are dropped (the report chooses the engines, at the file's settings for those it
@@ -210,11 +211,14 @@ std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const
 
 std::string earthquake_study_file(const std::string& name_or_path, const std::vector<std::string>& engines) {
     if (name_or_path == "none") return "";
-    const std::string file =
-        name_or_path == "default" ? shipped_studies_dir() + "/" + kShippedStudy : name_or_path;
+    const std::string file = name_or_path == "default" ? shipped_studies_dir() + "/" + kShippedStudy
+                             : name_or_path == "full"  ? shipped_studies_dir() + "/" + kShippedFullStudy
+                                                       : name_or_path;
     require_judgeable(with_engines(file, engines), file);
     return file;
 }
+
+std::string default_earthquake_for_suite(const std::string& suite) { return suite == "full" ? "full" : "default"; }
 
 EarthquakePart run_earthquake_part(const std::string& study_file, const std::vector<std::string>& engines,
                                    const std::filesystem::path& dir, const EarthquakeRunOptions& options) {

@@ -96,10 +96,14 @@ struct EarthquakePart {
 };
 
 // The ensemble study the report runs for `engines`: FILE as given, or "" for none when it is "none"; "default" names
-// the shipped studies/ensemble-report.toml. InputError, before anything runs, for a file that does not read with
+// the shipped studies/ensemble-report.toml (4 records x 4 PGAs), "full" studies/ensemble-report-full.toml (the 26
+// shipped records x the same PGAs). InputError, before anything runs, for a file that does not read with
 // those engines or that the report cannot judge: one part of one wall, stripes of >= 2 records measuring overturned
 // and peak_rotation, one run per engine, the reference (exact, whole-mechanism, unilateral) among its runs.
 std::string earthquake_study_file(const std::string& name_or_path, const std::vector<std::string>& engines);
+// The ensemble a suite is judged on when --earthquake is not given: "full" for the full suite (a verdict on >= 20
+// records), "default" otherwise.
+std::string default_earthquake_for_suite(const std::string& suite);
 
 struct EarthquakeRunOptions {
     int threads = 0;  // 0: the available cores
