@@ -31,6 +31,7 @@ packages=(
   libmujoco-dev libqhull-dev         # the MuJoCo adapter (found by header and library; libqhull-dev makes its CMake config usable)
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
   libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
+  hyperfine                          # timing whole commands side by side (medians; docs/measurements/speed.md)
   gnuplot-nox                        # the plots of `vssw report` and `vssw study` (SVG; without it: no plots)
   libopenmpi-dev openmpi-bin         # `mpirun -n P vssw study` (optional at build time; the MPI test needs it)
   parallel                           # GNU parallel: scripts/study_parallel.sh runs a study's shards (and its test)

@@ -131,7 +131,7 @@ Knobs read_knobs(const EngineSettings& s) {
     // ms (1.15e-4 at 2 ms, 1.58e-4 at 1 ms: CrossEngine.QuarterPeriodErrorFallsAsTheStepFalls fails with 1 ms reports).
     // With the 2 ms reports (the default since 2026-11-25) that test holds at 1e-5 (8.1e-4, 4.1e-4, 1.6e-4 at 8, 4, 2
     // ms), but 1e-5 bought no clear saving: the default report 0.94 of the CPU, the free vibration of the Fig. 6 VSSW
-    // 1.05 (both farm-bench, paired; docs/engines.md), and its error is then the sampling's size (1.6e-4 against
+    // 1.05 (both hyperfine, paired; docs/engines.md), and its error is then the sampling's size (1.6e-4 against
     // 1.1e-4 at 3e-6). It stays 3e-6.
     k.accuracy = r.positive("accuracy", 3e-6);
     // integrator 1 (CPodes, BDF): the contacts are stiff (friction slope mu N / vt); Runge-Kutta-Merson took 881k
