@@ -96,7 +96,10 @@ double WallParts::energy(const WallState& s) const {
 // the largest |a_h| at the interval's ends and middle) times how far each centre moved along it.
 double WallParts::input_bound(double t, const WallState& s) {
     const GroundMotion& a = *motion_;
-    const double a_max = std::max({std::abs(a(t_last_)), std::abs(a(0.5 * (t_last_ + t))), std::abs(a(t))});
+    if (std::isnan(a_last_)) a_last_ = std::abs(a(t_last_));
+    const double a_now = std::abs(a(t));
+    const double a_max = std::max({a_last_, std::abs(a(0.5 * (t_last_ + t))), a_now});
+    a_last_ = a_now;
     double moved = sizes_.m_lower * std::abs(s.lower.x - last_.lower.x);
     if (vssw_) moved += sizes_.m_upper * std::abs(s.upper.x - last_.upper.x);
     return a_max * moved;

@@ -11,6 +11,7 @@
 // jumping off the hinge or leaving the roller, the whole wall folding and falling) and is a response, judged by
 // RunMonitor's verdicts. A block that falls through the hinge or the ground, or a top lower than the blocks allow, is
 // not: it shows as a corner inside a body. The top's lowest possible height is thus bounded by the corner checks.
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -75,6 +76,7 @@ private:
     const GroundMotion* motion_;
     WallState rest_, last_;
     double e0_, input_ = 0.0, t_last_ = 0.0;
+    double a_last_ = NAN;  // |a_h(t_last_)|, the last check's end: evaluated once per step, not twice
 };
 
 }  // namespace vssw::multibody
