@@ -36,17 +36,9 @@ namespace {
 
 using compare::kMinRelease;  // compare/experiments.hpp says why 0.01
 
-// The reference of every comparison with an engine is the exact kinematics (docs/model/engines-and-metrics.md): the
-// default here, unlike the other commands'.
-ModelOptions exact_by_default() {
-    ModelOptions m;
-    m.kinematics = "exact";
-    return m;
-}
-
 struct CompareOptions {
     WallOptions wall;
-    ModelOptions model = exact_by_default();
+    ModelOptions model;  // the reference's: the set `mechanism` unless --assumptions says otherwise
     std::vector<std::string> engines;  // as given, comma-separated lists split
     double theta0 = 0.5;
     std::optional<double> dt;
@@ -96,7 +88,7 @@ CompareReference reference_of(const CompareOptions& o, const ChosenModel& chosen
     // What an engine's impact should give: every constraint of the new mechanism acting at once.
     const double whole = vssw ? restitution_whole_mechanism(*scene.vssw) : housner_restitution(scene.parapet->alpha);
     return {o.wall, chosen.kind, chosen.kinematics, chosen.impact, vssw ? std::optional(chosen.roller) : std::nullopt,
-            o.theta0, whole};
+            chosen.set_name, o.theta0, whole};
 }
 
 // Under a ground motion: the engines and the analytic model from rest, peak against peak (a one-case study).
@@ -109,13 +101,12 @@ void run_compare_response(const CompareOptions& o, std::ostream& out) {
     for (const std::string& name : parse_engine_list("--engine", o.engines))
         engines.push_back({name, settings_of(*multibody::make_engine(name), o)});
     const study::ResponseMotion motion = response_motion(o.motion, std::move(loaded));
-    // The reference's assumptions as given: a parapet ignores its kinematics and roller.
-    const multibody::AnalyticAssumptions reference{parse_kinematics(o.model.kinematics), chosen.impact,
-                                                   parse_roller(o.model.roller)};
+    // The reference's assumptions as resolved: a parapet ignores its kinematics and roller.
+    const multibody::AnalyticAssumptions& reference = chosen.assumptions;
     const auto start = std::chrono::steady_clock::now();
     const study::ResponseComparison result =
         study::compare_response(multibody::WallScene(chosen.wall), reference, motion, engines);
-    print_response_comparison(result, o.model, seconds_since(start), o.json, o.strict, out);
+    print_response_comparison(result, chosen, seconds_since(start), o.json, o.strict, out);
 }
 
 void run_compare(const CompareOptions& o, std::ostream& out) {
@@ -128,8 +119,7 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
     const ChosenModel chosen = choose_model(o.wall, o.model);
     const multibody::WallScene scene(chosen.wall);
     compare::ComparisonOptions options;
-    options.reference =
-        multibody::analytic_settings(chosen.kinematics.value_or(Kinematics::exact), chosen.impact, chosen.roller);
+    options.reference = multibody::analytic_settings(chosen.assumptions);
     std::vector<std::unique_ptr<multibody::Engine>> engines;
     std::vector<EngineCompareRun> runs;
     for (const std::string& name : parse_engine_list("--engine", o.engines)) {
@@ -178,7 +168,7 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
 Command add_compare_command(CLI::App& root) {
     auto o = std::make_shared<CompareOptions>();
     CLI::App* cmd = root.add_subcommand(
-        "compare", "Engines against the analytic model (exact kinematics): threshold, period, restitution");
+        "compare", "Engines against the analytic model (the set 'mechanism'): threshold, period, restitution");
     add_list_option(*cmd, "--engine", o->engines,
                     fmt::format("backends to compare, comma-separated, or all ({}) (available: {}) (required)",
                                 fmt::join(multibody::default_compared_engines(), ", "),
@@ -218,12 +208,13 @@ Command add_compare_command(CLI::App& root) {
     // A function, so that the backends are built for the listing only when the help is printed.
     cmd->footer([]() -> std::string {
         return std::string(
-               "The analytic reference is the model of --kinematics (default exact, what every engine realises), --impact\n"
-               "and --roller; the engines' options (--dt, --iterations, --set) do not reach it.\n"
+               "The analytic reference is the model of --assumptions (default mechanism: the exact kinematics, the whole\n"
+               "mechanism's impact and the unilateral roller, what every engine realises), with --kinematics, --impact\n"
+               "and --roller overriding one of them; the engines' options (--dt, --iterations, --set) do not reach it.\n"
                "The threshold (in g) is the smallest constant ground acceleration that lifts the wall off rest, by bisection\n"
                "to 1e-4; the period is 4x the time from release at theta0 to the first impact; the restitution is the ratio\n"
                "of theta1' after and before the first impact. rel_error = engine / analytic - 1; targets 0.5 %, 0.5 %, 2 %.\n"
-               "JSON keys (one engine): engine, version, analytic_model {kinematics, impact, roller}, threshold, period,\n"
+               "JSON keys (one engine): engine, version, analytic_model {assumptions, kinematics, impact, roller}, threshold, period,\n"
                "restitution, restitution_amplitude (each {analytic, engine, rel_error, target, within_target}), closed_forms\n"
                "{threshold_g, restitution, restitution_whole_mechanism, period_linearised}, theta0, settings {dt,\n"
                "iterations, knobs}, wall_time_s, failures, analytic_warnings, wall {...}.\n"

@@ -16,7 +16,8 @@
 namespace vssw::cli {
 namespace {
 
-// Release of the free-vibration part: half of alpha1, well inside the range where the paper's kinematics hold.
+// Release of the free-vibration part: half of alpha1, well inside the range where the paper's kinematics hold
+// (so that --assumptions paper gives the paper's figures).
 constexpr double kSummaryTheta0 = 0.5;
 const char* const kDefaultRecordFile = "NGA_no_1063_RRS228.AT2";  // Northridge 1994, Rinaldi 228, in the shipped data
 
@@ -25,15 +26,17 @@ const char* const kDefaultRecordFile = "NGA_no_1063_RRS228.AT2";  // Northridge 
 Command add_summary_command(CLI::App& root) {
     struct Options {
         std::string record = shipped_data_dir() + "/" + kDefaultRecordFile;
+        ModelOptions model;  // a VSSW under the default assumptions unless --assumptions says otherwise
         bool json = false;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = root.add_subcommand(
         "summary",
         "The wall of Fig. 6 (height 4 m, thickness 0.4 m, hinge h1/h 0.7, xi 0, density 1800 kg/m^3, "
-        "g 9.81 m/s^2, paper kinematics): closed forms, free vibration from 0.5 alpha1, response to a record");
+        "g 9.81 m/s^2): closed forms, free vibration from 0.5 alpha1, response to a record");
     cmd->add_option("--record", o->record, "ground-motion file, used unscaled (default: the shipped Rinaldi record)")
         ->capture_default_str();
+    add_assumption_options(*cmd, o->model);
     cmd->footer(
         fmt::format("Units as in 'vssw wall', 'vssw free' and 'vssw history'. The record is used unscaled, with its "
                     "own units; the\n"
@@ -44,7 +47,7 @@ Command add_summary_command(CLI::App& root) {
                   "commands print them)");
     return {cmd, [o](std::ostream& out) {
                 const WallOptions wall = fig6_wall();
-                const ModelOptions model;  // VSSW, paper kinematics
+                const ModelOptions& model = o->model;
                 GroundMotionOptions motion;
                 motion.record = o->record;
 

@@ -28,18 +28,19 @@ std::string verdict(const compare::MetricComparison& m, double target) {
     return std::abs(m.rel_error) <= target ? "within target" : fmt::format("OUTSIDE {:.1f} %", 100.0 * target);
 }
 
-// "exact kinematics, impact eq19, bilateral roller" (a parapet: "impact eq19").
+// "mechanism: exact kinematics, impact whole-mechanism, unilateral roller" (a parapet: "mechanism: impact ...").
 std::string describe_model(const CompareReference& r) {
     const std::string impact = "impact " + to_string(r.impact);
-    if (!r.kinematics) return impact;
-    return fmt::format("{} kinematics, {}, {} roller", to_string(*r.kinematics), impact,
+    if (!r.kinematics) return r.set_name + ": " + impact;
+    return fmt::format("{}: {} kinematics, {}, {} roller", r.set_name, to_string(*r.kinematics), impact,
                        r.roller ? to_string(*r.roller) : "no");
 }
 
 }  // namespace
 
 Json analytic_model_json(const CompareReference& r) {
-    return {{"kinematics", r.kinematics ? Json(to_string(*r.kinematics)) : Json(nullptr)},
+    return {{"assumptions", r.set_name},
+            {"kinematics", r.kinematics ? Json(to_string(*r.kinematics)) : Json(nullptr)},
             {"impact", to_string(r.impact)},
             {"roller", r.roller ? Json(to_string(*r.roller)) : Json(nullptr)}};
 }

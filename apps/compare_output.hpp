@@ -21,6 +21,7 @@ struct CompareReference {
     std::optional<Kinematics> kinematics;  // the analytic model's; none for a parapet
     ImpactLaw impact;
     std::optional<Roller> roller;          // none for a parapet (it has no roller)
+    std::string set_name;                  // "paper", "mechanism" or "custom" (ChosenModel::set_name)
     double theta0;                         // release for the period and restitution, a fraction r of alpha
     double restitution_whole_mechanism;    // what an engine's impact should give (docs/measurements/findings.md)
 };

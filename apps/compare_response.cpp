@@ -20,7 +20,7 @@ Json number_or_null(double x) { return finite_or_null(x); }
 
 }  // namespace
 
-void print_response_comparison(const study::ResponseComparison& result, const ModelOptions& options, double seconds,
+void print_response_comparison(const study::ResponseComparison& result, const ChosenModel& chosen, double seconds,
                                bool json, bool strict, std::ostream& out) {
     const study::CaseSpec& c = result.the_case;
     const std::vector<RunResult>& runs = result.runs;
@@ -29,9 +29,7 @@ void print_response_comparison(const study::ResponseComparison& result, const Mo
                                    ? fmt::format("{} pulse, amplitude {} g, period {} s", c.shape, c.amplitude_g,
                                                  c.pulse_period)
                                    : fmt::format("{} scaled by {:.6g} (PGA {:.4g} g)", c.file, c.scale, c.pga_g);
-    const std::string model = c.scene.vssw ? fmt::format("{} kinematics, impact {}, {} roller", options.kinematics,
-                                                         options.impact, options.roller)
-                                           : fmt::format("parapet, impact {}", options.impact);
+    const std::string model = describe_assumptions(chosen);
 
     if (json) {
         Json j;
@@ -39,9 +37,7 @@ void print_response_comparison(const study::ResponseComparison& result, const Mo
                               {"record", c.file.empty() ? Json(nullptr) : Json(c.file)},
                               {"scale", c.file.empty() ? Json(nullptr) : Json(c.scale)},
                               {"pga_g", c.file.empty() ? Json(c.amplitude_g) : Json(c.pga_g)}};
-        j["analytic_model"] = {{"kinematics", c.scene.vssw ? Json(options.kinematics) : Json(nullptr)},
-                               {"impact", options.impact},
-                               {"roller", c.scene.vssw ? Json(options.roller) : Json(nullptr)}};
+        j["analytic_model"] = assumptions_json(chosen);
         Json list = Json::array();
         for (const RunResult& r : runs) {
             Json e = {{"engine", r.engine},
@@ -129,9 +125,7 @@ study::ResponseMotion response_motion(const GroundMotionOptions& m, LoadedMotion
 study::ResponseComparison compare_under_motion(const ChosenModel& chosen, const GroundMotionOptions& motion,
                                                const std::vector<study::ResponseEngine>& engines) {
     const study::ResponseMotion m = response_motion(motion, load_ground_motion(motion));
-    const multibody::AnalyticAssumptions reference{chosen.kinematics.value_or(Kinematics::exact), chosen.impact,
-                                                   chosen.roller};
-    return study::compare_response(multibody::WallScene(chosen.wall), reference, m, engines);
+    return study::compare_response(multibody::WallScene(chosen.wall), chosen.assumptions, m, engines);
 }
 
 }  // namespace vssw::cli

@@ -24,7 +24,7 @@ study::ResponseComparison compare_under_motion(const ChosenModel& chosen, const 
 
 // Prints the comparison (table or JSON); `options` names the reference's assumptions as given. SimulationFailure
 // (exit 3) when any run failed, or with `strict` when the analytic run warns (after printing).
-void print_response_comparison(const study::ResponseComparison& result, const ModelOptions& options, double seconds,
+void print_response_comparison(const study::ResponseComparison& result, const ChosenModel& chosen, double seconds,
                                bool json, bool strict, std::ostream& out);
 
 }  // namespace vssw::cli

@@ -65,7 +65,7 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     const ImpactLaw impact = chosen.impact;
     const double restitution = chosen.model->restitution();
     return {wall,   chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings), impact,
-            restitution, chosen.roller, std::move(chosen.model)};
+            restitution, chosen.roller, chosen.set_name, std::move(chosen.model)};
 }
 
 Json to_json(const FreeRun& run) {
@@ -81,6 +81,7 @@ Json to_json(const FreeRun& run) {
     }
     Json j;
     j["model"] = to_string(run.kind);
+    j["assumptions"] = run.set_name;
     j["kinematics"] = run.kinematics ? Json(to_string(*run.kinematics)) : Json(nullptr);
     j["theta0"] = run.theta0_over_alpha;
     j["alpha"] = run.alpha;
@@ -106,9 +107,9 @@ void print_free_summary(std::ostream& out, const FreeRun& run, const std::string
     const char* alpha_name = reference_angle_name(run.kind);
     Table table(title);
     table
-        .text("model", run.kinematics
-                           ? fmt::format("{}, {} kinematics", to_string(run.kind), to_string(*run.kinematics))
-                           : to_string(run.kind))
+        .text("model", run.kinematics ? fmt::format("{}, {} kinematics ({} assumptions)", to_string(run.kind),
+                                                    to_string(*run.kinematics), run.set_name)
+                                      : fmt::format("{} ({} assumptions)", to_string(run.kind), run.set_name))
         .text("release from rest at", fmt::format("theta0 = {} {} = {} rad", num(run.theta0_over_alpha), alpha_name,
                                                   num(run.theta0_over_alpha * run.alpha)))
         .text("impact law", fmt::format("{} (restitution {})", to_string(run.impact), num(run.restitution)))

@@ -31,6 +31,7 @@ struct FreeRun {
     ImpactLaw impact;
     double restitution = 0.0;           // the impact ratio that law gives
     Roller roller = Roller::bilateral;
+    std::string set_name;  // the assumptions' set: "paper", "mechanism" or "custom"
     std::shared_ptr<const RockingModel> model;  // for the trajectory's reference units
 
     std::optional<double> stop_time() const;     // the last rest time; none if the wall overturned

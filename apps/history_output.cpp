@@ -54,6 +54,7 @@ Json to_json(const HistoryRun& run) {
     j["pga_g"] = run.input.motion.pga() / kStandardGravity;
     j["duration"] = run.input.motion.duration();
     j["model"] = to_string(run.chosen.kind);
+    j["assumptions"] = run.chosen.set_name;
     j["kinematics"] = run.chosen.kinematics ? Json(to_string(*run.chosen.kinematics)) : Json(nullptr);
     j["vertical_record"] = run.vertical_record ? Json(*run.vertical_record) : Json(nullptr);
     j["vertical_pga_g"] = run.vertical_record ? Json(run.input.vertical.pga() / kStandardGravity) : Json(nullptr);
@@ -91,9 +92,7 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
             .add("its peak acceleration", num(run.input.vertical.pga() / kStandardGravity), "g");
     table
         .add("duration", num(run.input.motion.duration()), "s")
-        .text("model", run.chosen.kinematics ? fmt::format("{}, {} kinematics", to_string(run.chosen.kind),
-                                                           to_string(*run.chosen.kinematics))
-                                             : to_string(run.chosen.kind))
+        .text("model", fmt::format("{} ({})", to_string(run.chosen.kind), describe_assumptions(run.chosen)))
         .text("impact law",
               fmt::format("{} (restitution {})", to_string(run.chosen.impact), num(run.chosen.model->restitution())))
         .add("lift-offs", std::to_string(res.lift_offs.size()))

@@ -40,23 +40,47 @@ void add_wall_options(CLI::App& cmd, WallOptions& o, bool model_choice) {
 
 void add_model_options(CLI::App& cmd, ModelOptions& o) {
     cmd.add_option("--model", o.model, "vssw (two blocks with a top roller) or parapet (one block) (default vssw)");
-    cmd.add_option("--kinematics", o.kinematics,
-                   fmt::format("VSSW kinematics: paper (Eq. 3 inside Eq. 10-11, as printed) or exact (Eq. 2) (default "
-                               "{}; ignored for a parapet)",
-                               o.kinematics));
 }
 
 void add_assumption_options(CLI::App& cmd, ModelOptions& o) {
+    cmd.add_option("--assumptions", o.assumptions,
+                   fmt::format("the analytic model's assumptions, a named set: {}, or {} (default {}: what every "
+                               "engine is compared against)",
+                               describe(AssumptionSet::paper), describe(AssumptionSet::mechanism),
+                               to_string(kDefaultAssumptionSet)));
+    cmd.add_option("--kinematics", o.kinematics,
+                   "overrides the set's VSSW kinematics: paper (Eq. 3 inside Eq. 10-11, as printed) or exact (Eq. 2) "
+                   "(ignored for a parapet)");
     cmd.add_option("--impact", o.impact,
-                   "impact law: eq19 (the paper's Eq. 19; Housner's e for a parapet), whole-mechanism (the plastic "
-                   "impact with every constraint of the new mechanism acting, the roller's too: what the engines do), "
-                   "or a restitution e in [0, 1] (default eq19)");
+                   "overrides the set's impact law: eq19 (the paper's Eq. 19; Housner's e for a parapet), "
+                   "whole-mechanism (the plastic impact with every constraint of the new mechanism acting, the "
+                   "roller's too: what the engines do), or a restitution e in [0, 1]");
     cmd.add_option("--roller", o.roller,
-                   "VSSW top roller: bilateral (holds the top corner on its line, pulling if it must: the paper's "
-                   "assumption) or unilateral (can only push: where it would pull the top leaves it and the wall moves "
-                   "with two degrees of freedom, against the other face's guide or free, until it lands back; needs "
-                   "--kinematics exact) (default bilateral; ignored for a parapet)");
+                   "overrides the set's VSSW top roller: bilateral (holds the top corner on its line, pulling if it "
+                   "must) or unilateral (can only push: where it would pull the top leaves it and the wall moves with "
+                   "two degrees of freedom, against the other face's guide or free, until it lands back; needs exact "
+                   "kinematics) (ignored for a parapet)");
 }
+
+Assumptions resolve_assumptions(const ModelOptions& o) {
+    Assumptions a = assumptions_of(parse_assumption_set(o.assumptions));
+    if (o.kinematics) a.kinematics = parse_kinematics(*o.kinematics);
+    if (o.impact) a.impact = parse_impact_law(*o.impact);
+    if (o.roller) a.roller = parse_roller(*o.roller);
+    return a;
+}
+
+namespace {
+
+// How the user came to a unilateral roller with the paper's kinematics, for the one line that refuses it.
+std::string unilateral_with_paper_kinematics(const ModelOptions& o) {
+    if (o.roller) return "--roller unilateral needs --kinematics exact";
+    return fmt::format("--kinematics paper with --assumptions {} (its unilateral roller) needs --roller bilateral, or "
+                       "--assumptions paper",
+                       o.assumptions);
+}
+
+}  // namespace
 
 VsswGeometry vssw_geometry(const WallOptions& o) {
     if (!o.hinge) throw InputError("--hinge (the hinge height ratio h1/h) is required for a VSSW");
@@ -69,19 +93,31 @@ ParapetGeometry parapet_geometry(const WallOptions& o) {
 
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
     const WallKind kind = parse_wall_kind(options.model);
-    const Kinematics kinematics = parse_kinematics(options.kinematics);  // checked even when a parapet ignores it
-    const ImpactLaw impact = parse_impact_law(options.impact);
-    const Roller roller = parse_roller(options.roller);
+    const Assumptions a = resolve_assumptions(options);  // checked even where a parapet ignores a part
+    const std::string set = set_name(a);
     if (kind == WallKind::parapet) {
         const ParapetGeometry p = parapet_geometry(wall);
-        return {kind, Wall::of(p), std::nullopt, with_impact_law(make_parapet_model(p), impact), impact,
-                Roller::bilateral};
+        return {kind, Wall::of(p), std::nullopt, with_impact_law(make_parapet_model(p), a.impact), a.impact,
+                Roller::bilateral, a, set};
     }
     const VsswGeometry w = vssw_geometry(wall);
-    if (roller == Roller::unilateral && kinematics != Kinematics::exact)
-        throw InputError("--roller unilateral needs --kinematics exact: the paper's Eq. (3) does not keep the top "
-                         "corner on the roller's line, so the top can neither leave the roller nor land back on it");
-    return {kind, Wall::of(w), kinematics, with_impact_law(make_vssw_model(w, kinematics), impact), impact, roller};
+    require_a_model(a, unilateral_with_paper_kinematics(options));
+    return {kind, Wall::of(w), a.kinematics, with_impact_law(make_vssw_model(w, a.kinematics), a.impact), a.impact,
+            a.roller, a, set};
+}
+
+Json assumptions_json(const ChosenModel& c) {
+    const bool vssw = c.kind == WallKind::vssw;
+    return {{"assumptions", c.set_name},
+            {"kinematics", vssw ? Json(to_string(c.assumptions.kinematics)) : Json(nullptr)},
+            {"impact", to_string(c.impact)},
+            {"roller", vssw ? Json(to_string(c.roller)) : Json(nullptr)}};
+}
+
+std::string describe_assumptions(const ChosenModel& c) {
+    if (c.kind != WallKind::vssw) return fmt::format("{}: impact {}", c.set_name, to_string(c.impact));
+    return fmt::format("{}: {} kinematics, impact {}, {} roller", c.set_name, to_string(c.assumptions.kinematics),
+                       to_string(c.impact), to_string(c.roller));
 }
 
 Json wall_inputs_json(const WallOptions& o, WallKind kind) {

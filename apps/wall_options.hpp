@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
@@ -42,19 +43,25 @@ const char* reference_angle_name(WallKind kind);
 
 struct ModelOptions {
     std::string model = "vssw";
-    std::string kinematics = "paper";
-    std::string impact = "eq19";        // the impact law (analytic/model.hpp ImpactLaw)
-    std::string roller = "bilateral";   // bilateral (the paper's) | unilateral (can only push)
+    // The analytic model's assumptions: a named set (analytic/assumption_sets.hpp), the same default in every entry
+    // point, and any of its three overridden one by one (as typed; parsed by resolve_assumptions).
+    std::string assumptions = to_string(kDefaultAssumptionSet);
+    std::optional<std::string> kinematics;  // paper | exact
+    std::optional<std::string> impact;      // the impact law (analytic/model.hpp ImpactLaw)
+    std::optional<std::string> roller;      // bilateral | unilateral
 };
+// The set with the overrides applied; InputError on a bad word or on assumptions that are no model (a unilateral
+// roller with the paper's kinematics), naming the options that made them.
+Assumptions resolve_assumptions(const ModelOptions& options);
 
 // --height, --thickness (required), --hinge, --xi, --density, --g. `model_choice` (the command also takes --model)
 // only changes the help of --hinge: whether a hinge is required is decided by vssw_geometry(), so that a parapet
 // can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
-// --model, --kinematics; the help names options.kinematics as the default (paper, but exact for compare).
+// --model.
 void add_model_options(CLI::App& cmd, ModelOptions& options);
-// --impact, --roller: the analytic model's assumptions that `free`, `history` and `compare` (its reference) let a
-// user change.
+// --assumptions (paper | mechanism) and the overrides --kinematics, --impact, --roller: the analytic model's
+// assumptions, which `free`, `history`, `summary` and `compare` (its reference) let a user choose.
 void add_assumption_options(CLI::App& cmd, ModelOptions& options);
 
 VsswGeometry vssw_geometry(const WallOptions& options);  // InputError when --hinge is missing
@@ -68,8 +75,16 @@ struct ChosenModel {
     std::unique_ptr<RockingModel> model;   // with the chosen impact law
     ImpactLaw impact;
     Roller roller = Roller::bilateral;     // always bilateral for a parapet (it has no roller)
+    Assumptions assumptions;               // as resolved (a parapet's too: its kinematics and roller unused)
+    std::string set_name;                  // "paper", "mechanism" or "custom" (set_name of `assumptions`)
 };
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options);
+
+// The model's assumptions for the JSON outputs: {assumptions (the set's name or "custom"), kinematics, impact,
+// roller}, kinematics and roller null for a parapet; and the same as one line, e.g. "mechanism: exact kinematics,
+// impact whole-mechanism, unilateral roller" ("paper: impact eq19" for a parapet).
+Json assumptions_json(const ChosenModel& chosen);
+std::string describe_assumptions(const ChosenModel& chosen);
 
 // The wall as given, for the JSON outputs: height, thickness, hinge_ratio (null for a parapet), xi, density, g.
 Json wall_inputs_json(const WallOptions& options, WallKind kind);

@@ -39,9 +39,10 @@ std::vector<SettingDescription> setting_table() {
         {"iterations", "none", "", "not used"},
         {kPaperKinematicsKnob, "0", "0/1", "1: the paper's linearised kinematics (Eq. 3); 0: the exact ones (Eq. 2)", 0.0, 1.0},
         {kRtol, fmt::format("{:g}", kDefaultRtol), "", "DOP853's relative tolerance (impact times within 1e-8 s)"},
-        {kRestitutionKnob, "Eq. (19)", "", "when given: this impact ratio in [0, 1] instead of Eq. (19) / Housner's", 0.0, 1.0},
-        {kWholeMechanismKnob, "0", "0/1", "1: the whole mechanism's plastic impact (the roller's impulse kept)", 0.0, 1.0},
-        {kUnilateralRollerKnob, "0", "0/1", "1: a roller that can only push (exact kinematics)", 0.0, 1.0},
+        {kRestitutionKnob, "none", "", "when given: this impact ratio in [0, 1] instead of the impact law", 0.0, 1.0},
+        {kWholeMechanismKnob, "1", "0/1",
+         "1: the whole mechanism's plastic impact (the roller's impulse kept); 0: Eq. (19) / Housner's", 0.0, 1.0},
+        {kUnilateralRollerKnob, "1", "0/1", "1: a roller that can only push (exact kinematics); 0: bilateral", 0.0, 1.0},
         {kRestitutionErrorKnob, "0", "",
          "a stand-in engine's error: every impact's velocity ratio times (1 + this); 0 is the model itself",
          -kMaxRestitutionError, kMaxRestitutionError},
@@ -72,7 +73,9 @@ double upper_rotation(const WallScene& scene, Kinematics kinematics, double thet
 EngineSettings AnalyticEngine::default_settings() const {
     EngineSettings s;
     s.dt = kDefaultOutputDt;
-    s.knobs = {{kPaperKinematicsKnob, 0.0}, {kRtol, kDefaultRtol}};
+    // The assumptions are the set `mechanism` when no knob says otherwise (read_assumptions): none is written here,
+    // so that a restitution given alone is not two impact laws.
+    s.knobs = {{kRtol, kDefaultRtol}};
     return s;
 }
 
@@ -179,36 +182,39 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
 void set_assumptions(EngineSettings& settings, const AnalyticAssumptions& a) {
     std::map<std::string, double>& knobs = settings.knobs;
     knobs[kPaperKinematicsKnob] = a.kinematics == Kinematics::paper ? 1.0 : 0.0;
-    // Present only when they hold: a restitution given is used, 0 included.
+    knobs[kUnilateralRollerKnob] = a.roller == Roller::unilateral ? 1.0 : 0.0;
+    // A restitution present is used, 0 included; absent, whole_mechanism_impact chooses the law.
     knobs.erase(kRestitutionKnob);
     knobs.erase(kWholeMechanismKnob);
-    knobs.erase(kUnilateralRollerKnob);
     if (a.impact.kind == ImpactLaw::Kind::ratio) knobs[kRestitutionKnob] = a.impact.ratio;
-    if (a.impact.kind == ImpactLaw::Kind::whole_mechanism) knobs[kWholeMechanismKnob] = 1.0;
-    if (a.roller == Roller::unilateral) knobs[kUnilateralRollerKnob] = 1.0;
+    else knobs[kWholeMechanismKnob] = a.impact.kind == ImpactLaw::Kind::whole_mechanism ? 1.0 : 0.0;
 }
 
 AnalyticAssumptions read_assumptions(const EngineSettings& settings) {
     const SettingsReader r("analytic", settings, setting_table());
-    AnalyticAssumptions a;
-    a.kinematics = r.flag(kPaperKinematicsKnob) ? Kinematics::paper : Kinematics::exact;
-    const bool ratio_given = settings.knobs.count(kRestitutionKnob) > 0;  // given means used: 0 is a plastic impact
-    if (ratio_given && r.flag(kWholeMechanismKnob))
-        throw InputError("analytic settings restitution and whole_mechanism_impact are two impact laws: give one");
-    if (ratio_given) {
+    const auto given = [&](const char* knob) { return settings.knobs.count(knob) > 0; };
+    AnalyticAssumptions a;  // the set `mechanism` where no knob says otherwise
+    if (given(kPaperKinematicsKnob)) a.kinematics = r.flag(kPaperKinematicsKnob) ? Kinematics::paper : Kinematics::exact;
+    if (given(kRestitutionKnob)) {  // given means used: 0 is a plastic impact
+        if (given(kWholeMechanismKnob) && r.flag(kWholeMechanismKnob))
+            throw InputError("analytic settings restitution and whole_mechanism_impact=1 are two impact laws: give one");
         const double e = r.non_negative(kRestitutionKnob, 0.0);
         require(e <= 1.0, "analytic setting restitution", "a number in [0, 1]", e);
         a.impact = {ImpactLaw::Kind::ratio, e};
-    } else if (r.flag(kWholeMechanismKnob)) {
-        a.impact = {ImpactLaw::Kind::whole_mechanism, 0.0};
+    } else if (given(kWholeMechanismKnob) && !r.flag(kWholeMechanismKnob)) {
+        a.impact = {};  // Eq. (19) / Housner's
     }
-    if (r.flag(kUnilateralRollerKnob)) a.roller = Roller::unilateral;  // the simulator refuses it with paper kinematics
+    if (given(kUnilateralRollerKnob)) a.roller = r.flag(kUnilateralRollerKnob) ? Roller::unilateral : Roller::bilateral;
+    require_a_model(a, a.roller == Roller::unilateral && !given(kUnilateralRollerKnob)
+                           ? "analytic setting paper_kinematics=1 with the default unilateral roller (the set "
+                             "'mechanism') needs unilateral_roller=0"
+                           : "analytic setting unilateral_roller=1 needs paper_kinematics=0");
     return a;
 }
 
-EngineSettings analytic_settings(Kinematics kinematics, const ImpactLaw& impact, Roller roller) {
+EngineSettings analytic_settings(const AnalyticAssumptions& assumptions) {
     EngineSettings s = AnalyticEngine().default_settings();
-    set_assumptions(s, {kinematics, impact, roller});
+    set_assumptions(s, assumptions);
     return s;
 }
 

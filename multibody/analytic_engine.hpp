@@ -6,10 +6,12 @@
 //  - dt: the output interval of the trajectory [s] (the integrator's steps are its own, set by rtol); sample_dt, when
 //    > 0, takes precedence, as for an engine. Default 1e-4 s, the engines' default step, so that both sides of a
 //    comparison are sampled alike unless the caller says otherwise.
-//  - knobs: "paper_kinematics" (0: exact kinematics of Eq. 2, the default, as every comparison with an engine uses;
-//    1: the paper's Eq. 3), "rtol" (DOP853's relative tolerance, default 1e-10), "restitution" (given: this impact
-//    ratio in [0, 1] instead of Eq. (19) / Housner's, 0 included), "whole_mechanism_impact" (1: the whole mechanism's
-//    plastic impact), "unilateral_roller" (1: a roller that can only push; exact kinematics only), "restitution_error" (a stand-in
+//  - knobs: the assumptions, defaulting to the set `mechanism` (analytic/assumption_sets.hpp), as every comparison
+//    with an engine uses: "paper_kinematics" (0: exact kinematics of Eq. 2, the default; 1: the paper's Eq. 3),
+//    "whole_mechanism_impact" (1, the default: the whole mechanism's plastic impact; 0: Eq. 19 / Housner's),
+//    "restitution" (given: this impact ratio in [0, 1] instead, 0 included), "unilateral_roller" (1, the default: a
+//    roller that can only push, exact kinematics only; 0: bilateral); "rtol" (DOP853's relative tolerance, default
+//    1e-10), "restitution_error" (a stand-in
 //    engine's error: every impact's velocity ratio times 1 + this, in [-0.5, 0.5]; 0, the default, leaves the model
 //    untouched). Any other knob is
 //    an InputError: a misspelt knob must not be ignored silently.
@@ -20,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"      // Roller
 #include "analytic/wall_scene.hpp"    // analytic_model
@@ -43,11 +46,8 @@ public:
 // The analytic model's assumptions, which the backend takes as knobs: the one encoder (set_assumptions) and decoder
 // (read_assumptions) of them, and the one list of their knobs' names, for every caller that runs the model through the
 // Engine interface (vssw compare's reference, a study's analytic runs).
-struct AnalyticAssumptions {
-    Kinematics kinematics = Kinematics::exact;
-    ImpactLaw impact;  // Eq. (19) / Housner's
-    Roller roller = Roller::bilateral;
-};
+// Default-constructed: the set `mechanism`.
+using AnalyticAssumptions = Assumptions;
 // The knobs that stand for them (a study gives these in [assumptions], not as settings). In the header, so that a
 // reader of study files needs no engine to know them.
 inline constexpr const char* kPaperKinematicsKnob = "paper_kinematics";  // 1: Eq. (3); 0: Eq. (2)
@@ -63,13 +63,12 @@ inline const std::vector<std::string>& assumption_knobs() {
 }
 // Writes the knobs that stand for `assumptions` into `settings`, replacing any it held.
 void set_assumptions(EngineSettings& settings, const AnalyticAssumptions& assumptions);
-// The assumptions the knobs stand for (the defaults where none is given); InputError on a value out of range or on
-// two impact laws at once.
+// The assumptions the knobs stand for (the set `mechanism`'s where none is given); InputError on a value out of
+// range, on two impact laws at once, or on assumptions that are not a model (require_a_model).
 AnalyticAssumptions read_assumptions(const EngineSettings& settings);
 
-// The settings that run the model chosen by name (vssw compare's --kinematics, --impact, --roller for its
-// reference): default_settings() with the assumptions' knobs set. The defaults (exact, Eq. 19, bilateral) give
-// default_settings() itself.
-EngineSettings analytic_settings(Kinematics kinematics, const ImpactLaw& impact, Roller roller);
+// The settings that run the model under `assumptions` (vssw compare's reference): default_settings() with the
+// assumptions' knobs set.
+EngineSettings analytic_settings(const Assumptions& assumptions);
 
 }  // namespace vssw::multibody

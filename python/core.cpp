@@ -145,7 +145,8 @@ struct WallArgs {
     double height, thickness;
     std::optional<double> hinge;
     double xi, density, g;
-    std::string kinematics, impact, roller;
+    std::string assumptions;                                // a named set: paper | mechanism
+    std::optional<std::string> kinematics, impact, roller;  // each overrides the set's
 };
 
 vssw::cli::ChosenModel chosen_model(const WallArgs& a) {
@@ -158,10 +159,18 @@ vssw::cli::ChosenModel chosen_model(const WallArgs& a) {
     w.g = a.g;
     vssw::cli::ModelOptions m;
     m.model = a.model;
+    m.assumptions = a.assumptions;
     m.kinematics = a.kinematics;
     m.impact = a.impact;
     m.roller = a.roller;
     return vssw::cli::choose_model(w, m);
+}
+
+// The same wall under the default assumptions: what an engine's settings are built from (its physics is its own).
+WallArgs with_default_assumptions(WallArgs wall) {
+    wall.assumptions = vssw::to_string(vssw::kDefaultAssumptionSet);
+    wall.kinematics = wall.impact = wall.roller = std::nullopt;
+    return wall;
 }
 
 // The engine's settings: the analytic model's assumptions for "analytic", else the engine's defaults; then the step,
@@ -173,8 +182,7 @@ vssw::multibody::EngineSettings settings_of(const vssw::multibody::Engine& engin
     using vssw::require;
     vssw::multibody::EngineSettings s =
         engine.name() == "analytic"
-            ? vssw::multibody::analytic_settings(chosen.kinematics.value_or(vssw::Kinematics::exact), chosen.impact,
-                                                 chosen.roller)
+            ? vssw::multibody::analytic_settings(chosen.assumptions)
             : engine.default_settings();
     if (dt) {
         require(std::isfinite(*dt) && *dt > 0.0, "dt (engine step, s)", "a positive finite number", *dt);
@@ -289,10 +297,10 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
                   const std::map<std::string, double>& knobs, const vssw::cli::GroundMotionOptions& motion_options,
                   bool stop_at_rest, std::optional<double> friction, std::optional<double> run_budget) {
     using vssw::require;
-    if (engine_name != "analytic" &&
-        (wall.kinematics != "exact" || wall.impact != "eq19" || wall.roller != "bilateral"))
+    if (engine_name != "analytic" && (wall.assumptions != vssw::to_string(vssw::kDefaultAssumptionSet) ||
+                                      wall.kinematics || wall.impact || wall.roller))
         throw vssw::InputError(fmt::format(
-            "kinematics, impact and roller are the analytic model's assumptions; engine '{}' realises its own "
+            "assumptions, kinematics, impact and roller are the analytic model's; engine '{}' realises its own "
             "physics (its settings are its knobs: vssw.engine_settings('{}'))",
             engine_name, engine_name));
     const vssw::cli::ChosenModel chosen = chosen_model(wall);
@@ -337,6 +345,7 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     d["alpha"] = scene.alpha();
     d["theta0"] = ex.theta0;
     d["t_end"] = ex.t_end;
+    d["assumptions"] = engine_name == "analytic" ? py::cast(chosen.set_name) : py::none();
     d["kinematics"] = engine_name == "analytic" && chosen.kinematics
                           ? py::cast(chosen.kinematics == vssw::Kinematics::exact ? "exact" : "paper")
                           : py::none();
@@ -363,13 +372,10 @@ py::dict compare(const std::string& engine_name, const WallArgs& wall, double th
             "theta0 (release for the period and restitution, a fraction of alpha)",
             fmt::format("from {:g} to below 1", vssw::compare::kMinRelease), theta0);
     vssw::compare::ComparisonOptions options;
-    options.reference =
-        vssw::multibody::analytic_settings(chosen.kinematics.value_or(vssw::Kinematics::exact), chosen.impact,
-                                           chosen.roller);
+    options.reference = vssw::multibody::analytic_settings(chosen.assumptions);
     const std::unique_ptr<vssw::multibody::Engine> engine = vssw::multibody::make_engine(engine_name);
     // The engine's own settings: the analytic model's assumptions belong to the reference, not to the engine.
-    vssw::cli::ChosenModel engine_model = chosen_model({wall.model, wall.height, wall.thickness, wall.hinge, wall.xi,
-                                                        wall.density, wall.g, "exact", "eq19", "bilateral"});
+    vssw::cli::ChosenModel engine_model = chosen_model(with_default_assumptions(wall));
     const vssw::multibody::EngineSettings settings =
         settings_of(*engine, engine_model, dt, std::nullopt, iterations, knobs);
     const ScopedRunBudget budget(run_budget);
@@ -411,9 +417,7 @@ py::dict compare_response(const std::vector<std::string>& engine_names, const Wa
                           std::optional<double> run_budget) {
     const vssw::cli::ChosenModel chosen = chosen_model(wall);
     // The engines' own settings: the analytic model's assumptions belong to the reference, as in compare().
-    const vssw::cli::ChosenModel engine_model = chosen_model({wall.model, wall.height, wall.thickness, wall.hinge,
-                                                              wall.xi, wall.density, wall.g, "exact", "eq19",
-                                                              "bilateral"});
+    const vssw::cli::ChosenModel engine_model = chosen_model(with_default_assumptions(wall));
     std::vector<vssw::study::ResponseEngine> engines;
     bool concurrent = true;  // every engine may run beside another thread's (else the GIL serialises them, as compare)
     for (const std::string& name : engine_names) {
@@ -448,7 +452,7 @@ py::dict compare_response(const std::vector<std::string>& engine_names, const Wa
     // engine's peak would have nothing to be compared with.
     if (reference_run.is_none())
         throw vssw::InputError("the analytic reference did not run (its assumptions are not a model): give other "
-                               "kinematics, impact or roller");
+                               "assumptions, kinematics, impact or roller");
     const vssw::study::CaseSpec& c = result.the_case;
     py::dict out;
     out["ground_motion"] = c.file.empty() ? fmt::format("{} pulse, amplitude {} g, period {} s", c.shape,
@@ -512,9 +516,10 @@ PYBIND11_MODULE(_core, m) {
           "run(args) with the GIL released and the command's progress lines given to progress(done, total, what).");
     py::class_<WallArgs>(m, "WallArgs")
         .def(py::init<std::string, double, double, std::optional<double>, double, double, double, std::string,
-                      std::string, std::string>(),
+                      std::optional<std::string>, std::optional<std::string>, std::optional<std::string>>(),
              py::arg("model"), py::arg("height"), py::arg("thickness"), py::arg("hinge"), py::arg("xi"),
-             py::arg("density"), py::arg("g"), py::arg("kinematics"), py::arg("impact"), py::arg("roller"));
+             py::arg("density"), py::arg("g"), py::arg("assumptions"), py::arg("kinematics"), py::arg("impact"),
+             py::arg("roller"));
     m.def(
         "simulate",
         [](const std::string& engine, const WallArgs& wall, double theta0, std::optional<double> t_end,

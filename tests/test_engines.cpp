@@ -651,7 +651,7 @@ TEST(AnalyticBackend, StopAngleEndsTheRunThere) {
         SCOPED_TRACE(roller == Roller::bilateral ? "bilateral" : "unilateral");
         const WallScene scene = WallScene::of(make_vssw(table1(14), 0.5));
         const multibody::AnalyticEngine analytic;
-        const auto settings = multibody::analytic_settings(Kinematics::exact, {}, roller);
+        const auto settings = multibody::analytic_settings({Kinematics::exact, {}, roller});
         const double threshold = vssw::analytic_model(scene, Kinematics::exact)->rest_threshold(0.0);
         multibody::Excitation ex;
         ex.horizontal = compare::ramp_and_hold(kAboveThreshold * threshold, 0.1, 3.0);
@@ -700,7 +700,7 @@ TEST(UnilateralRoller, ExplainsTheEnginesPeriodsWhereThePapersRollerPulls) {
     options.r = 0.8;
     options.impacts = 1;
     const multibody::AnalyticEngine analytic;
-    const EngineSettings unilateral = multibody::analytic_settings(Kinematics::exact, {}, Roller::unilateral);
+    const EngineSettings unilateral = multibody::analytic_settings({Kinematics::exact, {}, Roller::unilateral});
     const auto reference = compare::run_free_vibration(analytic, unilateral, scene, options);
     const auto paper_roller = compare::run_free_vibration(analytic, analytic.default_settings(), scene, options);
     ASSERT_TRUE(reference.period && paper_roller.period);
@@ -731,7 +731,7 @@ TEST(BulletOffRoller, OverburdenTorqueDoesNotSlideTheHingeAtOneMillisecond) {
     options.impacts = 1;
     const multibody::AnalyticEngine analytic;
     const auto reference = compare::run_free_vibration(
-        analytic, multibody::analytic_settings(Kinematics::exact, {}, Roller::unilateral), scene, options);
+        analytic, multibody::analytic_settings({Kinematics::exact, {}, Roller::unilateral}), scene, options);
     const auto engine = multibody::make_engine("bullet");
     multibody::EngineSettings settings = engine->default_settings();
     settings.dt = 1e-3;
