@@ -382,8 +382,10 @@ std::unique_ptr<RockingModel> with_impact_law(std::unique_ptr<RockingModel> mode
         case ImpactLaw::Kind::eq19: return model;
         case ImpactLaw::Kind::whole_mechanism:
             // A single block has one mechanism: its plastic impact is Housner's, the model's own.
+            // On a squat wall the projection is negative (t/h 0.5: -0.30): contacts that can only push cannot
+            // reverse the wall at its landing, so the plastic impact leaves it at rest.
             if (const VsswGeometry* w = model->vssw_geometry())
-                return with_restitution(std::move(model), restitution_whole_mechanism(*w));
+                return with_restitution(std::move(model), std::max(0.0, restitution_whole_mechanism(*w)));
             return model;
         case ImpactLaw::Kind::ratio: break;
     }

@@ -567,6 +567,8 @@ PYBIND11_MODULE(_core, m) {
     m.attr("EXIT_OUT_OF_BOUNDS") = vssw::cli::kExitOutOfBounds;
     m.attr("EXIT_BAD_INPUT") = vssw::cli::kExitBadInput;
     m.attr("EXIT_SIMULATION_FAILED") = vssw::cli::kExitSimulationFailed;
+    // The analytic model's default assumption set, the same in the module as in every command.
+    m.attr("DEFAULT_ASSUMPTIONS") = vssw::to_string(vssw::kDefaultAssumptionSet);
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);

@@ -89,7 +89,8 @@ TEST(CliRecords, TheSameRecordInEveryFormatGivesTheSameResponse) {
         EXPECT_EQ(single[key], at2[key]);
         EXPECT_EQ(csv[key], at2[key]);
     }
-    EXPECT_GT(at2["impacts"].get<int>(), 100);  // the scaled record rocks the wall (139 impacts): the comparison means something
+    // The scaled record rocks the wall (56 impacts under the default assumptions): the comparison means something.
+    EXPECT_GT(at2["impacts"].get<int>(), 40);
 }
 
 TEST(CliRecords, AnUpwardVerticalAccelerationRaisesTheThresholdAsGPlusAv) {
@@ -122,7 +123,7 @@ TEST(CliRecords, AnUpwardVerticalAccelerationRaisesTheThresholdAsGPlusAv) {
 TEST(CliRecords, ThePeakIsReportedInRadiansWithItsTime) {
     const Json j = history_json({"--record", kRinaldi, "--scale", "0.5"});
     ASSERT_FALSE(j["overturned"].get<bool>());
-    ASSERT_GT(j["max_theta_over_alpha"].get<double>(), 0.5);  // it rocks (0.81 alpha1): a peak to find
+    ASSERT_GT(j["max_theta_over_alpha"].get<double>(), 0.3);  // it rocks (0.40 alpha1): a peak to find
     EXPECT_DOUBLE_EQ(j["max_theta"].get<double>() / j["alpha"].get<double>(), j["max_theta_over_alpha"].get<double>());
     // The CSV sample nearest the peak's time is close to the peak (10 ms samples around a turning point).
     const auto r = run_cli(std::vector<std::string>{"history"} + kFig6 +

@@ -60,10 +60,10 @@ BenchSetting with_dt(const multibody::Engine& engine, double dt, int iterations,
     return {std::move(label), s};
 }
 
-multibody::EngineSettings analytic_at(double rtol, bool whole_mechanism) {
+// The analytic model at its defaults (the set `mechanism`: what the engines are measured against) and this tolerance.
+multibody::EngineSettings analytic_at(double rtol) {
     multibody::EngineSettings s = multibody::AnalyticEngine{}.default_settings();
     s.knobs["rtol"] = rtol;
-    if (whole_mechanism) s.knobs["whole_mechanism_impact"] = 1.0;
     return s;
 }
 
@@ -89,42 +89,35 @@ multibody::Excitation record_excitation(const std::string& record_path) {
 }
 
 // One problem as the sweep runs it, prepared once per bench before any point is timed: its wall, the record's
-// excitation (read and parsed here, not inside a timed run) and its converged references by metric (they depend on
-// the backend only through which impact law it is measured against).
+// excitation (read and parsed here, not inside a timed run) and its converged references by metric: the analytic
+// model's under the set `mechanism`, what every backend, the analytic model at its defaults included, is measured
+// against.
 struct Problem {
     std::string name;
     multibody::WallScene scene;
     multibody::Excitation record;  // the record problem's only
-    std::map<std::string, double> engine_refs, analytic_refs;
+    std::map<std::string, double> refs;
 };
 
 Problem prepare_problem(const std::string& name, const BenchOptions& options) {
-    Problem p{name, problem_scene(name), {}, {}, {}};
+    Problem p{name, problem_scene(name), {}, {}};
     const multibody::AnalyticEngine analytic;
     if (name == "threshold") {
         const double closed = eq12_threshold(*p.scene.vssw) / p.scene.vssw->g;  // Eq. (12)
-        p.engine_refs["threshold"] = p.analytic_refs["threshold"] = closed;
+        p.refs["threshold"] = closed;
     } else if (name == "record") {
         p.record = record_excitation(options.record_path);
         const double alpha = p.scene.alpha();
-        p.engine_refs["peak"] =
-            peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol, true)), alpha);
-        p.analytic_refs["peak"] =
-            peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol, false)), alpha);
+        p.refs["peak"] = peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol)), alpha);
     } else {
         FreeVibrationOptions free;
         free.r = kRelease;
-        const FreeVibrationResult ref = run_free_vibration(analytic, analytic_at(kReferenceRtol, false), p.scene, free);
-        p.engine_refs["period"] = p.analytic_refs["period"] = ref.period.value_or(kNaN);
-        if (p.scene.is_vssw()) {
-            p.engine_refs["restitution"] = restitution_whole_mechanism(*p.scene.vssw);
-            p.analytic_refs["restitution"] = eq19_restitution(*p.scene.vssw);  // Eq. (19)
-        } else {
-            p.engine_refs["restitution"] = p.analytic_refs["restitution"] = housner_restitution(p.scene.parapet->alpha);
-        }
+        const FreeVibrationResult ref = run_free_vibration(analytic, analytic_at(kReferenceRtol), p.scene, free);
+        p.refs["period"] = ref.period.value_or(kNaN);
+        p.refs["restitution"] = p.scene.is_vssw() ? restitution_whole_mechanism(*p.scene.vssw)
+                                                  : housner_restitution(p.scene.parapet->alpha);
     }
-    require_measured_references(name, p.engine_refs);
-    require_measured_references(name, p.analytic_refs);
+    require_measured_references(name, p.refs);
     return p;
 }
 
@@ -189,7 +182,7 @@ std::vector<BenchSetting> bench_sweep(const multibody::Engine& engine, bool quic
     if (name == "analytic") {
         const std::vector<double> rtols =
             quick ? std::vector<double>{1e-6, 1e-10} : std::vector<double>{1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
-        for (double rtol : rtols) sweep.push_back({"rtol=" + sci(rtol), analytic_at(rtol, false)});
+        for (double rtol : rtols) sweep.push_back({"rtol=" + sci(rtol), analytic_at(rtol)});
         return sweep;
     }
     if (quick) return {{"defaults", defaults}};  // known to work: the CTest checks the files, not the engines
@@ -286,7 +279,6 @@ std::vector<BenchPoint> run_bench(const BenchOptions& options, const std::functi
             // In this process: a point's cost is this process's CPU time (a child's would not be counted). The sweep's
             // settings are the program's own, never the user's, so no setting of the user's reaches the library here.
             const std::unique_ptr<multibody::Engine> engine = multibody::make_engine_in_process(engine_name);
-            const bool analytic = engine->name() == "analytic";
             for (const BenchSetting& setting : bench_sweep(*engine, options.quick)) {
                 std::map<std::string, double> values;
                 std::string failure;
@@ -302,7 +294,7 @@ std::vector<BenchPoint> run_bench(const BenchOptions& options, const std::functi
                 for (const std::string& metric : bench_problem_metrics(problem.name)) {
                     BenchPoint p{engine_name, problem.name, metric, setting.label, setting.settings, cpu,
                                  kNaN, kNaN, kNaN, failure};
-                    p.reference = (analytic ? problem.analytic_refs : problem.engine_refs).at(metric);
+                    p.reference = problem.refs.at(metric);
                     if (failure.empty()) {
                         p.value = values.count(metric) ? values.at(metric) : kNaN;
                         p.error = relative_error(p.value, p.reference);

@@ -83,11 +83,12 @@ def test_a_failed_simulation_is_a_simulation_error_with_the_programs_message(cli
 
 
 def test_strict_turns_a_warning_into_a_simulation_error(cli):
-    # Table 1 #7 (data/table1.csv) at xi 0.5 released from 0.8 alpha1: the exact kinematics need the roller to pull
-    # (one warning). Without strict the JSON carries the warning; with it, the program's exit 3 and its message.
-    kwargs = dict(height=4.88, thickness=0.2, hinge=0.5, xi=0.5, theta0=0.8, kinematics="exact")
+    # Table 1 #7 (data/table1.csv) at xi 0.5 released from 0.8 alpha1: the exact kinematics need the bilateral
+    # roller to pull (one warning). Without strict the JSON carries the warning; with it, the program's exit 3 and its
+    # message.
+    kwargs = dict(height=4.88, thickness=0.2, hinge=0.5, xi=0.5, theta0=0.8, roller="bilateral")
     flags = ["--height", "4.88", "--thickness", "0.2", "--hinge", "0.5", "--xi", "0.5", "--theta0", "0.8",
-             "--kinematics", "exact", "--strict"]
+             "--roller", "bilateral", "--strict"]
     assert len(vssw.free(**kwargs)["warnings"]) == 1
     code, line = cli.error_line(["free", *flags])
     assert code == 3

@@ -101,13 +101,17 @@ def _knobs(settings):
     return out
 
 
-def _wall(model, height, thickness, hinge, xi, density, g, kinematics="exact", impact=None, roller=None):
+def _wall(model, height, thickness, hinge, xi, density, g, assumptions=None, kinematics=None, impact=None,
+          roller=None):
+    """The wall and the analytic model's assumptions: a named set (default "mechanism", as every command's), any of
+    kinematics, impact, roller overriding one part of it."""
     return _core.WallArgs(
         model=_word("model", model, "vssw"), height=_number("height", height),
         thickness=_number("thickness", thickness), hinge=_number("hinge", hinge, optional=True),
         xi=_number("xi", xi), density=_number("density", density), g=_number("g", g),
-        kinematics=_word("kinematics", kinematics, "exact"), impact=_word("impact", impact, "eq19"),
-        roller=_word("roller", roller, "bilateral"))
+        assumptions=_word("assumptions", assumptions, _core.DEFAULT_ASSUMPTIONS),
+        kinematics=_word("kinematics", kinematics, None), impact=_word("impact", impact, None),
+        roller=_word("roller", roller, None))
 
 
 def _record_path(record):
@@ -128,7 +132,8 @@ def _record_path(record):
 def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY,
              g=_GRAVITY, theta0=0.0, t_end=None, record=None, scale=None, pga=None, pulse=None, amplitude=None,
              pulse_period=None, duration=None, dt=None, sample_dt=None, iterations=None, settings=None,
-             kinematics=None, impact=None, roller=None, friction=None, stop_at_rest=True, run_budget=None):
+             assumptions=None, kinematics=None, impact=None, roller=None, friction=None, stop_at_rest=True,
+             run_budget=None):
     """One backend's run of one wall: its trajectory as NumPy arrays (a vssw.Simulation).
 
     engine: "analytic" (the two-block model, this project's own DOP853 integration) or an engine of this build
@@ -158,15 +163,18 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
         iterations: solver iterations (Bullet, ODE; default the engine's own).
         settings: the engine's knobs, {name: value} (vssw.engine_settings(engine) lists each with its default,
             unit, range and meaning), e.g. {"erp": 0.2} for ODE. A knob the engine does not know is an InputError.
-        kinematics, impact, roller (analytic only): "exact" (Eq. 2, the default here: what the engines realise) or
-            "paper" (Eq. 3); "eq19" (the default), "whole-mechanism" or a number e in [0, 1]; "bilateral" (the
-            default) or "unilateral" (a roller that can only push).
+        assumptions (analytic only): the model's assumptions as a named set, the same default as every command's:
+            "mechanism" (the default: the exact kinematics of Eq. 2, the whole mechanism's plastic impact, a roller
+            that can only push; what the engines realise and are compared against) or "paper" (the paper as
+            printed: Eq. 3, Eq. 19, a bilateral roller).
+        kinematics, impact, roller (analytic only): override one part of the set: "exact" (Eq. 2) or "paper"
+            (Eq. 3); "eq19", "whole-mechanism" or a number e in [0, 1]; "bilateral" or "unilateral".
         friction: Coulomb friction of the engines' contacts (default 2: nothing slides; sliding is a failure).
         run_budget: CPU seconds one engine run may take (default 30 s + 1 ms per step).
     Raises InputError (a ValueError) naming a bad value, SimulationError (a RuntimeError) when the run fails."""
     result = _with_python_names(lambda: _core.simulate(
         engine=_word("engine", engine, "analytic"),
-        wall=_wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller),
+        wall=_wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller),
         theta0=_number("theta0", theta0), t_end=_number("t_end", t_end, True), dt=_number("dt", dt, True),
         sample_dt=_number("sample_dt", sample_dt, True), iterations=_integer("iterations", iterations),
         knobs=_knobs(settings), record=_record_path(record), scale=_number("scale", scale, True),
@@ -255,7 +263,8 @@ def _check_engines(names):
 # Python functions' parameters are these.
 _OPTION_NAMES = {f"--{name.replace('_', '-')}": name
                  for name in ["record", "scale", "pga", "pulse", "amplitude", "pulse_period", "duration", "model",
-                              "height", "thickness", "hinge", "xi", "density", "g", "kinematics", "impact", "roller"]}
+                              "height", "thickness", "hinge", "xi", "density", "g", "assumptions", "kinematics", "impact",
+                              "roller"]}
 
 
 def _with_python_names(call):
@@ -273,8 +282,8 @@ def _with_python_names(call):
 
 def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY, g=_GRAVITY,
             theta0=None, record=None, scale=None, pga=None, pulse=None, amplitude=None, pulse_period=None,
-            duration=None, kinematics="exact", impact=None, roller=None, dt=None, iterations=None, settings=None,
-            run_budget=None, progress=False):
+            duration=None, assumptions=None, kinematics=None, impact=None, roller=None, dt=None, iterations=None,
+            settings=None, run_budget=None, progress=False):
     """Engines against the analytic model on the metrics the project holds them to (`vssw compare`, over the
     library): the threshold acceleration [g] (the smallest constant ground acceleration that lifts the wall off
     rest, by bisection on simulations to 1e-4), the period [s] (4 x the time from the release at theta0 to the first
@@ -292,8 +301,8 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
         returns a vssw.ResponseComparison (a list of them for several engines): each run's peak |theta1| / alpha, its
         time and overturning, and peak_ratio. Not with theta0. A single run's peak is no verdict: judge engines
         under records on an ensemble (vssw.study, vssw.report).
-    kinematics, impact, roller: the analytic reference's assumptions (default exact, Eq. 19, bilateral); the engines'
-        settings do not reach it.
+    assumptions: the analytic reference's assumptions, "mechanism" (the default) or "paper", as vssw.simulate takes
+        them; kinematics, impact, roller override one part. The engines' settings do not reach it.
     dt [s], iterations, settings ({knob: value}): every engine's step, solver iterations and knobs.
     run_budget: CPU seconds one engine run may take.
     progress: True shows a bar over the engines (tqdm when installed, else a line on stderr); a callable is called
@@ -302,7 +311,7 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     Raises InputError naming a bad value before any engine runs; SimulationError when the one engine asked fails."""
     _progress(progress)
     names, several = _engine_list(engine)
-    wall = _wall(model, height, thickness, hinge, xi, density, g, kinematics, impact, roller)
+    wall = _wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller)
     motion = dict(scale=scale, pga=pga, amplitude=amplitude, pulse_period=pulse_period, duration=duration)
     if record is None and pulse is None:
         given = [name for name, value in motion.items() if value is not None]

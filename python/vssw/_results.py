@@ -39,8 +39,9 @@ class Simulation:
     of a VSSW, alpha of a parapet), theta0 [rad] (the release), t_end [s] (asked; the run may stop earlier at rest),
     overturned, at_rest_at_end, steps (engine or integrator steps), warnings (the analytic model's own assumptions
     failing along the run), impacts (list of Impact), peaks (list of (t [s], theta1 [rad]) turning points), period
-    [s] (4 x release to first impact; None without a release or an impact), max_abs_theta1 [rad], kinematics
-    (analytic: "exact" or "paper"; None for an engine or a parapet), ground_motion (its name, None in free
+    [s] (4 x release to first impact; None without a release or an impact), max_abs_theta1 [rad], assumptions
+    (analytic: "mechanism", "paper" or "custom"; None for an engine), kinematics (analytic: "exact" or "paper"; None
+    for an engine or a parapet), ground_motion (its name, None in free
     vibration)."""
 
     engine: str
@@ -66,6 +67,7 @@ class Simulation:
     peaks: List[Tuple[float, float]]
     period: Optional[float]
     max_abs_theta1: float
+    assumptions: Optional[str]
     kinematics: Optional[str]
     ground_motion: Optional[str]
 

@@ -179,7 +179,8 @@ def wall(**options):
 
 def free(trace=False, **options):
     """`vssw free`: free vibration released from rest at theta0 (a fraction of alpha). Options: height, thickness,
-    hinge, theta0 (required), model, kinematics, impact, roller, xi, density, g, rtol, output_dt, csv, strict (True:
+    hinge, theta0 (required), model, assumptions ("mechanism", the default, or "paper"),
+    kinematics, impact, roller (each overriding one part of the set), xi, density, g, rtol, output_dt, csv, strict (True:
     SimulationError when the model's own assumptions fail along the run, i.e. any warning). Returns the
     JSON: impacts [{t, theta_dot_before, theta_dot_after}], peaks, peak_times, stop_time, falls, warnings, roller,
     ...; with trace=True also "trace", as for history()."""
@@ -224,7 +225,7 @@ def _with_trace(command, trace, options):
 
 def compare(**options):
     """`vssw compare`: engine (a name, a list of names or "all"; required) against the analytic model, on the wall
-    of height, thickness, hinge (and xi, density, g, model, kinematics, impact, roller): threshold, period (theta0),
+    of height, thickness, hinge (and xi, density, g, model, assumptions, kinematics, impact, roller): threshold, period (theta0),
     restitution; or, with record= or pulse=, the response from rest. Engine options: dt, iterations, set (a dict
     {knob: value} or a list of "knob=value"), run_budget (CPU seconds one engine run may take; each runs in a child
     process, so an engine library that crashes or passes its budget raises SimulationError, never ends Python). Returns the JSON (one engine: {engine, threshold {analytic, engine,
