@@ -200,6 +200,7 @@ WALL = {
     "--density": Num(1200.0, 2400.0, edges=(1.0, 100000.0)),
     "--g": Num(9.0, 10.0, edges=(0.01, 1000.0)),
     "--model": Word(["vssw", "parapet"]),
+    "--assumptions": Word(["paper", "mechanism"]),
     "--kinematics": Word(["paper", "exact"]),
     "--impact": Word(["eq19", "whole-mechanism", "0.5", "0", "1"]),
     "--roller": Word(["bilateral", "unilateral"]),
@@ -404,9 +405,15 @@ def valid_as_drawn(command, opts):
         return False  # --json, added to most runs, writes to standard output too: refused
     if "--record" in given and "--pulse" in given:
         return False  # history's harmonic added beside a record: one ground motion at a time
+    if "--strict" in given:
+        return False  # a warning of the model's own checks (e.g. friction needed above 0.6) is exit 3 by design
     if given.get("--impact") == "1":
         return False  # elastic impacts: a free vibration never comes to rest (exit 3 with that reason)
-    if given.get("--roller") == "unilateral" and given.get("--kinematics", "paper") == "paper":
+    # The set's parts (default mechanism: exact kinematics, unilateral roller), each overridden when drawn.
+    paper_set = given.get("--assumptions", "mechanism") == "paper"
+    kinematics = given.get("--kinematics", "paper" if paper_set else "exact")
+    roller = given.get("--roller", "bilateral" if paper_set else "unilateral")
+    if roller == "unilateral" and kinematics == "paper" and given.get("--model") != "parapet":
         return False
     if given.get("--model") == "parapet" and any(k in given for k in ("--roller", "--kinematics", "--hinge")):
         return False
@@ -415,8 +422,9 @@ def valid_as_drawn(command, opts):
 
 
 def helped(args):
-    """Whether the user asked for help (then anything before it goes unchecked, as CLI11 does: exit 0)."""
-    return any(a in ("-h", "--help") or a.startswith("--help=") for a in args)
+    """Whether the user asked for help or for compare's settings listing (an early output like --help: the words
+    around it go unchecked, as CLI11 does for --help: exit 0)."""
+    return any(a in ("-h", "--help", "--list-settings") or a.startswith("--help=") for a in args)
 
 
 # `vssw wall` takes the geometry alone (no model, kinematics, impact or roller).
