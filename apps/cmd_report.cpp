@@ -142,7 +142,7 @@ std::string report_footer() {
         "assumption, samples}], earthquake {study, folder, reference, reference_median_g, reference_median_note,\n"
         "targets, records, levels, rows, failed_rows, engines [{engine, settings, pass, overturning_agreement {value,\n"
         "lo, hi, n, pass, failed_runs}, overturning_mcnemar {overturned_alone, stood_alone, failed_runs, p, pass},\n"
-        "peak_log_ratio {value, lo, hi, n, median_ratio, runs, records, failed_replicates, pass, target,\n"
+        "peak_log_ratio {value, lo, hi, n, median_ratio, runs, records, note, pass, target,\n"
         "band_half_width}, fragility_median_ratio {..., note, verdict, failed_replicates}, peak_ratio, inside_band}],\n"
         "stand_ins [the same, with restitution_error], detection_limit_restitution_error}\n"
         "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"

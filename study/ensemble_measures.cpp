@@ -348,7 +348,7 @@ void measure_stripes(SeriesMeasures& m, const SeriesRuns& runs, const SeriesRuns
     m.peak_ratio = compare::quartiles(ratios);
     std::vector<std::vector<double>> by_record;
     for (auto& [record, d_values] : log_ratios) by_record.push_back(std::move(d_values));
-    m.log_peak_ratio = compare::bootstrap_record_median(by_record, bootstrap_options());
+    m.log_peak_ratio = compare::record_median_interval(by_record, kEnsembleConfidence);
     m.band = !band.empty();
     if (m.band) {
         m.inside = compare::count_inside_band(band);

@@ -73,9 +73,9 @@ struct SeriesMeasures {
     long failed_runs = 0;             // its runs with no overturning value (failed)
     compare::Quartiles peak_ratio{};  // its peak / the reference's where neither overturned
     // Paired with the reference run by run (compare/paired_runs.hpp): ln(its peak / the reference's) where both
-    // stand, grouped by record, its median with a bootstrap over records; the discordant runs (it overturned and the
+    // stand, grouped by record, its median with an interval over records; the discordant runs (it overturned and the
     // reference stood; the reverse) and its failed runs where the reference has a result.
-    compare::MedianBootstrap log_peak_ratio{};
+    compare::RecordMedian log_peak_ratio{};
     long overturned_alone = 0, stood_alone = 0, failed_paired = 0;
     bool band = false;                // the reference had perturbed repeats
     compare::BandCount inside;        // its peaks inside the reference's band

@@ -13,6 +13,7 @@
 #include "analytic/error.hpp"
 #include "compare/ensemble_statistics.hpp"
 #include "compare/stripe_fragility.hpp"
+#include "tests/interval_coverage.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -26,10 +27,7 @@ constexpr int kReplicates = 300;   // a percentile interval's ends move ~0.01 in
 // Four standard errors of a coverage at 600 repetitions: a true 95 % is never outside, a 90 % seldom inside.
 constexpr double kCoverageTolerance = 0.036;
 
-struct Coverage {
-    int covered = 0, shown = 0;
-    double share() const { return shown > 0 ? static_cast<double>(covered) / shown : NAN; }
-};
+using vssw::testing::Coverage;
 
 // One simulated ensemble: n lognormal capacities.
 std::vector<double> capacities(std::mt19937_64& rng, int n) {
@@ -39,11 +37,7 @@ std::vector<double> capacities(std::mt19937_64& rng, int n) {
     return c;
 }
 
-void count(Coverage& c, const Interval& i) {
-    if (!std::isfinite(i.lo) || !std::isfinite(i.hi)) return;  // not resolved: claims nothing
-    ++c.shown;
-    c.covered += i.lo <= kTheta && kTheta <= i.hi ? 1 : 0;
-}
+void count(Coverage& c, const Interval& i) { vssw::testing::count_coverage(c, i, kTheta); }
 
 enum class Fit { ida, censored_ida, stripes };
 

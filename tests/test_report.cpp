@@ -1172,16 +1172,55 @@ TEST(ReportCommand, SuiteSettingsTheReportCannotHonourAreRefused) {
 // The earthquake part (validation/earthquake.hpp) on a small ensemble: ODE against the reference on 2 records x 2
 // PGAs. Its verdict is the count of runs on which ODE and the reference agree whether the wall overturns, taken here
 // from the ensemble's own results.csv, against the target; the document and the standard output say it.
-std::string small_ensemble(const fs::path& dir) {
-    const std::string data = VSSW_DATA_DIR;
-    const fs::path file = dir / "small-ensemble.toml";
+std::string ensemble_file(const fs::path& file, const std::vector<std::string>& records, const std::string& levels) {
+    std::string files;
+    for (const std::string& r : records)
+        files += (files.empty() ? "\"" : ", \"") + std::string(VSSW_DATA_DIR) + "/records/" + r + ".at2\"";
     std::ofstream(file) << "name = \"small-ensemble\"\nmetrics = [\"peak_rotation\", \"overturned\"]\n"
                            "engines = [\"analytic\"]\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
                            "[assumptions]\nkinematics = \"exact\"\nimpact = \"whole-mechanism\"\n"
-                           "roller = \"unilateral\"\n[excitation]\nkind = \"ensemble\"\nfiles = [\""
-                        << data << "/records/northridge1994-rinaldi-228.at2\", \"" << data
-                        << "/records/northridge1994-pacoimadam-ew.at2\"]\nintensity = \"pga\"\nlevels = [0.55, 0.85]\n";
+                           "roller = \"unilateral\"\n[excitation]\nkind = \"ensemble\"\nfiles = ["
+                        << files << "]\nintensity = \"pga\"\nlevels = " << levels << "\n";
     return file.string();
+}
+std::string small_ensemble(const fs::path& dir) {
+    return ensemble_file(dir / "small-ensemble.toml", {"northridge1994-rinaldi-228", "northridge1994-pacoimadam-ew"},
+                         "[0.55, 0.85]");
+}
+
+// An ensemble's runs from its results.csv: per (file, pga), per engine, its (peak, overturned).
+using PairedRows = std::map<std::pair<std::string, std::string>, std::map<std::string, std::pair<double, double>>>;
+PairedRows paired_rows(const fs::path& results_csv) {
+    PairedRows runs;
+    std::istringstream rows(read(results_csv));
+    std::vector<std::string> header, f;
+    EXPECT_TRUE(vssw::study::read_csv_record(rows, header));
+    const auto col = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    while (vssw::study::read_csv_record(rows, f)) {
+        auto& [peak, over] = runs[{f.at(col("file")), f.at(col("pga"))}][f.at(col("engine"))];
+        const double value = f.at(col("value")).empty() ? NAN : std::stod(f.at(col("value")));
+        (f.at(col("metric")) == "overturned" ? over : peak) = value;
+    }
+    return runs;
+}
+
+// d = ln(engine peak / reference peak) of every run where both stand, by record.
+std::map<std::string, std::vector<double>> log_peak_ratios(const PairedRows& runs, const std::string& engine) {
+    std::map<std::string, std::vector<double>> by_record;
+    for (const auto& [run, by_engine] : runs) {
+        const auto& [ref_peak, ref_over] = by_engine.at("analytic");
+        const auto& [peak, over] = by_engine.at(engine);
+        if (ref_over == 0.0 && over == 0.0) by_record[run.first].push_back(std::log(peak / ref_peak));
+    }
+    return by_record;
+}
+
+// The middle of a list (the mean of the two middle ones for an even count).
+double middle(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 == 1 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
@@ -1209,6 +1248,8 @@ TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
         agree += by_engine.at("ode") == by_engine.at("analytic") ? 1 : 0;
     }
     ASSERT_EQ(runs, 4);
+    // results.csv writes 17 significant digits; the median of the logs is computed here from them.
+    constexpr double kCsvDigits = 1e-12;
     const Json j = Json::parse(read(out / "results.json"));
     const Json& ode = j["earthquake"]["engines"].at(0);
     EXPECT_EQ(ode["engine"], "ode");
@@ -1242,10 +1283,60 @@ TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
     });
     ASSERT_NE(ode_row, lines.end()) << md;
     EXPECT_TRUE(contains(*ode_row, fmt::format("{}/{}, p ", b, c))) << *ode_row;
+    // The peaks' median from the rows; on 2 records its interval is not resolved, and the cell and JSON say so.
+    std::vector<double> pooled;
+    for (const auto& [record, d] : log_peak_ratios(paired_rows(out / "earthquake" / "results.csv"), "ode"))
+        pooled.insert(pooled.end(), d.begin(), d.end());
+    ASSERT_FALSE(pooled.empty()) << "the pacoima runs stand";
+    const Json& peak = ode["peak_log_ratio"];
+    EXPECT_NEAR(peak["value"].get<double>(), middle(pooled), kCsvDigits);
+    EXPECT_EQ(peak["runs"], pooled.size());
+    EXPECT_TRUE(peak["lo"].is_null() && peak["hi"].is_null()) << peak;
+    EXPECT_TRUE(contains(peak["note"].get<std::string>(), "not resolved: ")) << peak;
+    EXPECT_TRUE(contains(*ode_row, fmt::format("{:.3f} \\[n.r.\\]", std::exp(middle(pooled))))) << *ode_row;
+    EXPECT_TRUE(contains(md, "\\[n.r.\\]: the peak ratio's interval is not resolved: ")) << md;
     EXPECT_TRUE(contains(md, "| ODE | ")) << md;
     EXPECT_TRUE(contains(r.out, "ODE under records: ")) << r.out;
     EXPECT_TRUE(contains(r.out, fmt::format("overturning b/c {}/{}, p ", b, c))) << r.out;
     EXPECT_TRUE(contains(r.out, "Under records: this ensemble ")) << r.out;
+}
+
+// From 6 records the peaks' interval is resolved: the lowest and highest of the records' own medians of d (the sign
+// test's interval at 6: 2 P(X <= 0) = 2/64 <= 0.05 < 2 P(X <= 1)), computed here from results.csv's rows; the value
+// stays the pooled runs' median. Six records at 0.4 g, where the Fig. 6 wall stands under each.
+TEST(ReportEarthquake, PeakIntervalIsTheRecordsMediansExtremesFromTheRows) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    constexpr double kCsvDigits = 1e-12;  // results.csv's 17 significant digits, logs taken here
+    TempDir tmp("earthquake_interval");
+    const fs::path out = tmp.path / "report";
+    const std::string file = ensemble_file(tmp.path / "six.toml",
+                                           {"northridge1994-rinaldi-228", "northridge1994-pacoimadam-ew",
+                                            "kern1952-taft-021", "landers1992-yermo-ew", "borrego1968-elcentro9-180",
+                                            "lomaprieta1989-gavilan-067"},
+                                           "[0.4, 0.45]");
+    const CliResult r = run_cli({"report", "--engines", "ode", "--cases", "fig6-pw", "--no-plots", "--earthquake", file,
+                                 "--out", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::vector<double> pooled, medians;
+    for (const auto& [record, d] : log_peak_ratios(paired_rows(out / "earthquake" / "results.csv"), "ode")) {
+        pooled.insert(pooled.end(), d.begin(), d.end());
+        medians.push_back(middle(d));
+    }
+    ASSERT_EQ(medians.size(), 6u) << "every record has a run where both stand";
+    const Json peak = Json::parse(read(out / "results.json"))["earthquake"]["engines"].at(0)["peak_log_ratio"];
+    EXPECT_NEAR(peak["value"].get<double>(), middle(pooled), kCsvDigits);
+    EXPECT_NEAR(peak["lo"].get<double>(), *std::min_element(medians.begin(), medians.end()), kCsvDigits);
+    EXPECT_NEAR(peak["hi"].get<double>(), *std::max_element(medians.begin(), medians.end()), kCsvDigits);
+    EXPECT_EQ(peak["records"], 6);
+    EXPECT_EQ(peak["note"], "");
+    const std::string md = read(out / "report.md");
+    EXPECT_TRUE(contains(md, fmt::format("{:.3f} \\[{:.3f}, {:.3f}\\]", std::exp(middle(pooled)),
+                                         std::exp(peak["lo"].get<double>()), std::exp(peak["hi"].get<double>()))))
+        << md;
+    const std::vector<std::string> lines = lines_of(md);
+    EXPECT_FALSE(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+        return l.rfind("| ODE | ", 0) == 0 && contains(l, "n.r.");
+    })) << md;
 }
 
 // The Engines table and results.json say the settings each engine ran with under records (the ensemble file's
@@ -1361,18 +1452,7 @@ TEST(ReportEarthquake, PeakAndFragilityPanelsHoldEachEnginesPairedRuns) {
     }
     EXPECT_FALSE(contains(fragility_gp, "norm(log(x/")) << "no curve for a fit that is not resolved";
     // The runs where both stand, from the rows: (reference peak, engine peak) per engine.
-    std::map<std::pair<std::string, std::string>, std::map<std::string, std::pair<double, double>>> runs;
-    std::istringstream rows(read(out / "earthquake" / "results.csv"));
-    std::vector<std::string> header, f;
-    ASSERT_TRUE(vssw::study::read_csv_record(rows, header));
-    const auto col = [&](const std::string& name) {
-        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
-    };
-    while (vssw::study::read_csv_record(rows, f)) {
-        auto& [peak, over] = runs[{f.at(col("file")), f.at(col("pga"))}][f.at(col("engine"))];
-        const double value = f.at(col("value")).empty() ? NAN : std::stod(f.at(col("value")));
-        (f.at(col("metric")) == "overturned" ? over : peak) = value;
-    }
+    const PairedRows runs = paired_rows(out / "earthquake" / "results.csv");
     for (const std::string& e : engines) {
         // The engine's first block of engine_peaks.dat: "reference_peak engine_peak band_lo band_hi hover".
         const std::string dat = read(plots / "engine_peaks.dat");

@@ -308,7 +308,7 @@ Json verdict_json(const EarthquakeVerdict& v) {
     peak["median_ratio"] = finite_or_null(std::exp(v.log_peak.median.value));
     peak["runs"] = v.log_peak.values;
     peak["records"] = v.log_peak.records;
-    peak["failed_replicates"] = v.log_peak.failed;
+    peak["note"] = v.log_peak.reason;  // why its interval is not resolved ("" when it is)
     peak["pass"] = v.peak_pass;
     peak["target"] = kPeakLogRatioTarget;
     peak["band_half_width"] = finite_or_null(v.band_half_width);

@@ -21,8 +21,8 @@ namespace vssw::study {
 
 // An engine passes under records when both its verdicts pass (binary agreement alone never passes it):
 //  - peaks: over the runs where both stand, d = ln(engine peak / reference peak); the median of d lies within
-//    +-kPeakLogRatioTarget (the 95 % bootstrap interval over records is printed beside it: on 4 records it is about
-//    the spread of the records' own medians, and a rule on it failed a sound engine, Siconos, by 0.001);
+//    +-kPeakLogRatioTarget (a 95 % interval over records is printed beside it, not judged: the records' medians'
+//    order statistics, from 6 records; on fewer "not resolved", compare/paired_runs.hpp);
 //  - overturning: the exact McNemar test of the discordant runs (b: it overturned alone, c: the reference alone; a
 //    run it failed counts on the side of the larger count) at p >= kMcNemarAlpha, and agreement on at least
 //    kOverturningAgreementTarget of the runs.
@@ -64,7 +64,7 @@ struct EarthquakeVerdict {
     std::vector<std::string> outside;  // the runs outside it ("file at 0.55 g")
     bool agreement_pass = false, fragility_pass = false;  // fragility_pass: information (not part of `pass`)
     // The paired verdicts.
-    compare::MedianBootstrap log_peak{};  // median ln(its peak / the reference's) where both stand, bootstrap 95 %
+    compare::RecordMedian log_peak{};  // median ln(its peak / the reference's) where both stand, 95 % over records
     long overturned_alone = 0, stood_alone = 0, failed_paired = 0;  // McNemar's b, c and its failed runs
     double mcnemar_p = 1.0;              // b and c with the failed runs counted on the larger side
     // The band's median half-width in ln: how far the targets' own tolerances move one run's peak (information: a
@@ -131,8 +131,9 @@ std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const
                                             const EarthquakeRunOptions& options);
 
 // The part as results.json holds it (`vssw report --help` lists the keys): study, reference, targets, records,
-// levels, engines [{engine, settings, pass, overturning_agreement, overturning_mcnemar, peak_log_ratio,
-// fragility_median_ratio (information), peak_ratio, inside_band}], stand_ins, detection_limit_restitution_error.
+// levels, engines [{engine, settings, pass, overturning_agreement, overturning_mcnemar, peak_log_ratio (lo and
+// hi null, note the reason, when not resolved), fragility_median_ratio (information), peak_ratio, inside_band}],
+// stand_ins, detection_limit_restitution_error.
 Json earthquake_json(const EarthquakePart& part);
 
 // One line per engine for the report's standard output: "ODE under records: pass; peaks x 0.988 [0.973, 1.000]

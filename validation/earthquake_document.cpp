@@ -48,10 +48,18 @@ std::string overturning_header() {
 }
 std::string fragility_header() { return "fragility median / reference (information)"; }
 
-// exp of the median ln ratio with its interval: the median peak ratio.
+// exp of the median ln ratio with its interval: the median peak ratio ("0.965 [n.r.]": too few records for one).
 std::string peak_ratio_text(const EarthquakeVerdict& v) {
     const compare::Interval& d = v.log_peak.median;
+    if (!v.log_peak.reason.empty() && std::isfinite(d.value)) return fmt::format("{:.3f} [n.r.]", std::exp(d.value));
     return interval_text({std::exp(d.value), std::exp(d.lo), std::exp(d.hi), d.n}, "{:.3f}");
+}
+// What "[n.r.]" says, for the paragraphs under the tables ("" when every interval is resolved).
+std::string unresolved_peak_text(const EarthquakePart& p) {
+    for (const EarthquakeVerdict& v : p.engines)
+        if (!v.log_peak.reason.empty())
+            return fmt::format(" [n.r.]: the peak ratio's interval is {}.", v.log_peak.reason);
+    return "";
 }
 std::string overturning_text(const EarthquakeVerdict& v) {
     return fmt::format("{}/{}{}, p {:.3f}, {}/{}", v.overturned_alone, v.stood_alone,
@@ -64,9 +72,10 @@ std::string overturning_text(const EarthquakeVerdict& v) {
 
 DocCell peak_cell(const EarthquakeVerdict& v) {
     return verdict_cell(peak_ratio_text(v), v.peak_pass,
-                        fmt::format("{} runs of {} records; 95 % bootstrap interval over records ({} resamples "
-                                    "without a run left out)",
-                                    v.log_peak.values, v.log_peak.records, v.log_peak.failed));
+                        fmt::format("{} runs of {} records; {}", v.log_peak.values, v.log_peak.records,
+                                    v.log_peak.reason.empty()
+                                        ? "95 % interval: order statistics of the records' medians"
+                                        : v.log_peak.reason));
 }
 DocCell overturning_cell(const EarthquakeVerdict& v) {
     return verdict_cell(overturning_text(v), v.overturning_pass,
@@ -161,8 +170,8 @@ std::vector<DocBlock> earthquake_glance(const EarthquakePart& p) {
         "The two \"records\" columns judge the engines under earthquake records ({}; the reference is {}), run by "
         "run against the reference: the median ratio of its peak to the reference's where both stand (95 % interval "
         "over records), and the runs where only it or only the reference overturned (an exact McNemar test). An "
-        "engine passes only when both pass; {}. Details under \"Under earthquake records\".",
-        ensemble_text(p), p.reference, detection_text(p)))};
+        "engine passes only when both pass; {}. Details under \"Under earthquake records\".{}",
+        ensemble_text(p), p.reference, detection_text(p), unresolved_peak_text(p)))};
 }
 
 std::vector<DocBlock> earthquake_figure(const EarthquakePart& p) {
@@ -190,8 +199,9 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
         "An engine passes when both verdicts pass. Peaks: over the runs where both stand, the median of ln(its peak / "
         "the reference's) within +-{:g} (the median peak ratio within x {:.3f}^+-1; every engine at its defaults and "
         "at a quarter of its step measured within 0.036, a restitution error of 5 % at 0.052 or more: thin margins on "
-        "this ensemble, docs/earthquakes.md; the bracket is a bootstrap over records, about the spread of the "
-        "records' own medians on a few records). Overturning: b runs where only it overturned, c where "
+        "this ensemble, docs/earthquakes.md; the bracket, not judged, is the distribution-free 95 % interval from the "
+        "records' own medians, shown from 6 records with a run where both stand, else n.r.: not resolved). "
+        "Overturning: b runs where only it overturned, c where "
         "only the reference did; the exact McNemar p of b against c at least {:g}, and agreement on at least {:g} of "
         "the runs. The fragility median's ratio is information: on a few records its interval spans tens of percent.",
         kPeakLogRatioTarget, std::exp(kPeakLogRatioTarget), kMcNemarAlpha, kOverturningAgreementTarget)));
