@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/error.hpp"
 #include "apps/message_line.hpp"
 #include "apps/cli.hpp"
@@ -297,6 +298,10 @@ Command add_study_command(CLI::App& root) {
         "input, before anything runs: an unknown key, a wrong type, an empty list, a record that does not read, an\n"
         "engine not built, a metric the excitation cannot measure, too many tasks without --force.\n"
         "Under 'mpirun -n P' the processes share the tasks (one at a time each) and rank 0 writes one result.\n"
+        "The analytic model's assumptions: [assumptions] set = \"paper\" | \"mechanism\" (default mechanism, as in\n"
+        "every command: what the engines are compared against), one set a study; kinematics, impact and roller\n"
+        "override one part each (a value, or a list that varies):\n  " +
+        describe(AssumptionSet::paper) + "\n  " + describe(AssumptionSet::mechanism) + "\n"
         "Metrics:\n" +
         metrics_help());
 

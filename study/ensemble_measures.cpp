@@ -396,7 +396,7 @@ bool repeats_earlier(const StudyData& d, std::size_t s) {
 }
 
 std::string assumptions_text(const Series& s) {
-    std::string out;
+    std::string out = s.analytic() && !s.set.empty() ? "set=" + s.set : std::string();
     for (std::size_t i = 0; i < kAssumptionKeys.size() && s.analytic(); ++i)
         if (!s.assumptions[i].empty()) out += fmt::format("{}{}={}", out.empty() ? "" : " ", kAssumptionKeys[i],
                                                           s.assumptions[i]);

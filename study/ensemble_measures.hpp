@@ -3,8 +3,9 @@
 // engine with its settings, the analytic model under one assumption set) against a reference series, per wall, from
 // the study's results alone (study/study_data.hpp), with the statistics of compare/ensemble_statistics.hpp.
 //
-//  - The reference: the analytic model with kinematics=exact, impact=whole-mechanism, roller=unilateral when the
-//    study ran it (the assumptions the engines' physics shares), else the study's first analytic series.
+//  - The reference: the analytic model under the set mechanism (kinematics=exact, impact=whole-mechanism,
+//    roller=unilateral: the assumptions the engines' physics shares) when the study ran it, else the study's first
+//    analytic series.
 //  - Stripes (kind record, file x pga): overturning agreement with the reference over records x levels (Wilson 95 %),
 //    the engine peak / reference peak where both stand (median, quartiles), the runs inside the reference's
 //    sensitivity band when the study has a `perturbation` column (rows other than "none" only build the band), and
@@ -123,8 +124,9 @@ std::vector<RockingCurve> rocking_curves(const StudyData& d);
 // each part's runs; the measures and plots hold each series once.
 bool repeats_earlier(const StudyData& d, std::size_t s);
 
-// The series' label columns: the engine, its assumptions ("kinematics=exact impact=whole-mechanism roller=unilateral"
-// for the analytic model, "" for an engine), its settings.
+// The series' label columns: the engine, its assumptions ("set=mechanism kinematics=exact impact=whole-mechanism
+// roller=unilateral" for the analytic model: the set's name, custom when the parts are neither set's, then the parts;
+// "" for an engine), its settings.
 std::string assumptions_text(const Series& s);
 
 }  // namespace vssw::study

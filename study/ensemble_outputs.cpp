@@ -317,8 +317,9 @@ void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const En
         "records x levels where the series and the reference agree (95 % Wilson interval). Inside band: the runs "
         "whose peak lies within the reference's own spread under its perturbed repeats.",
         e.has_reference ? d.series[e.reference].label : "none (the study ran no analytic series)",
-        e.preferred_reference ? "exact kinematics, whole-mechanism impact, unilateral roller"
-                              : "the first analytic series: the study did not run exact / whole-mechanism / unilateral",
+        e.preferred_reference ? "the set mechanism: exact kinematics, whole-mechanism impact, unilateral roller"
+                              : "the first analytic series: the study did not run the set mechanism (exact / "
+                                "whole-mechanism / unilateral)",
         e.name, kEnsembleReplicates, kEnsembleSeed)));
     DocBlock t = table({"series", "wall", fmt::format("fragility median [{}]", e.unit), "beta", "median / reference's",
                         "overturning agreement", "inside band"},

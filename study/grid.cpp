@@ -119,6 +119,10 @@ bool falls_from(const multibody::WallScene& scene, double theta0) {
 
 Grid::Grid(const StudySpec& spec) : spec_(spec) {
     std::string identity_text = dump_json(spec.as_read);
+    // The assumptions as resolved, not only as written: a file without them runs the default set, which a build may
+    // change, and a journal or a shard of the old default must not join the new one's.
+    for (const Axis& a : spec.assumptions)
+        for (const Level& l : a.levels) identity_text += "\n" + a.key + "=" + to_text(l);
     read_specimens(identity_text);
     size_parts();
     read_records(identity_text);
@@ -204,6 +208,16 @@ void Grid::read_records(std::string& identity_text) {
     }
 }
 
+// Where the study's roller comes from when the file does not give it: the set's (only the set mechanism's is
+// unilateral), named in the reason a run of the paper's kinematics with it is left out. "" when the file gives it.
+std::string Grid::roller_source() const {
+    const std::vector<std::string>& given = spec_.assumptions_given;
+    if (std::find(given.begin(), given.end(), "roller") != given.end()) return "";
+    return fmt::format("the set {}'s roller: give roller = \"bilateral\" with kinematics = \"paper\", or set = "
+                       "\"paper\"",
+                       to_string(spec_.assumption_set));
+}
+
 // Runs, per part: the analytic model under each combination of assumptions and settings, each engine under each of
 // its settings' combinations (a closed-form part runs the analytic model only).
 void Grid::build_runs() {
@@ -229,7 +243,8 @@ void Grid::build_runs() {
                         else run.settings.knobs[key] = v;
                     }
                     run.assumptions = assumptions;
-                    if (e.name == "analytic" && !apply_assumptions(run, assumptions_of(assumptions), skipped_runs_))
+                    if (e.name == "analytic" &&
+                        !apply_assumptions(run, assumptions_of(assumptions), skipped_runs_, roller_source()))
                         continue;
                     try {
                         engine->check_settings(run.settings);
@@ -536,14 +551,15 @@ std::vector<Level> assumption_levels(const multibody::AnalyticAssumptions& a) {
 }
 
 bool apply_assumptions(RunSpec& run, const multibody::AnalyticAssumptions& a,
-                       std::vector<std::string>& skipped) {
+                       std::vector<std::string>& skipped, const std::string& roller_source) {
     run.kinematics = a.kinematics;
     run.impact = a.impact;
     run.roller = a.roller;
     if (run.roller == Roller::unilateral && run.kinematics == Kinematics::paper) {
-        skipped.push_back("the paper's kinematics with the unilateral roller: not a model (Eq. 3 does not keep the top "
-                          "corner on the roller's line, so it can neither leave the roller nor land back on it); not "
-                          "run");
+        skipped.push_back(fmt::format("the paper's kinematics with the unilateral roller{}: not a model (Eq. 3 does "
+                                      "not keep the top corner on the roller's line, so it can neither leave the "
+                                      "roller nor land back on it); not run",
+                                      roller_source.empty() ? "" : " (" + roller_source + ")"));
         return false;
     }
     multibody::set_assumptions(run.settings, a);

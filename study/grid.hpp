@@ -85,12 +85,13 @@ GroundMotion pulse_motion(const CaseSpec& c);
 // the wall's columns from its scene (model, height, thickness, hinge, xi, density, g, alpha, R); a record's scale
 // (the factor given, or the one that brings it to pga_g) and its PGA after scaling; InputError naming the file when
 // a record is zero everywhere; an analytic run's assumptions set in its RunSpec and its settings, false (and why in
-// `skipped`) when they are not a model; the assumptions of a run's levels (kinematics, impact, roller) and back.
+// `skipped`, with `roller_source` when given: how the unilateral roller came to be chosen) when they are not a model;
+// the assumptions of a run's levels (kinematics, impact, roller) and back.
 void describe_wall(CaseSpec& c);
 void scale_record(CaseSpec& c, const GroundMotion& record, std::optional<double> pga_g, double scale);
 void require_shakes(const GroundMotion& record, const std::string& file);
 bool apply_assumptions(RunSpec& run, const multibody::AnalyticAssumptions& assumptions,
-                       std::vector<std::string>& skipped);
+                       std::vector<std::string>& skipped, const std::string& roller_source = "");
 multibody::AnalyticAssumptions assumptions_of(const std::vector<Level>& levels);
 std::vector<Level> assumption_levels(const multibody::AnalyticAssumptions& assumptions);
 
@@ -153,6 +154,7 @@ private:
     void size_parts();
     void read_records(std::string& identity_text);
     void build_runs();
+    std::string roller_source() const;
     void list_cases();
     void list_columns();
     // make_case's steps.

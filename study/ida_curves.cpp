@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "analytic/intensity_measures.hpp"
@@ -50,7 +51,10 @@ Intensity case_intensity(const Grid& grid, const CaseSpec& c) {
 }
 
 std::string assumptions_of(const RunSpec& run) {
-    std::string out;
+    // As assumptions_text (study/ensemble_measures.hpp) writes a series': the set first, then its three parts.
+    std::string out = run.engine == "analytic"
+                          ? "set=" + set_name(Assumptions{run.kinematics, run.impact, run.roller})
+                          : std::string();
     for (std::size_t i = 0; i < run.assumptions.size() && i < kAssumptionKeys.size(); ++i)
         out += fmt::format("{}{}={}", out.empty() ? "" : " ", kAssumptionKeys[i], to_text(run.assumptions[i]));
     return out;

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "io/csv.hpp"
@@ -65,9 +66,11 @@ Json manifest_json(const Grid& grid, const StudyMeta& meta) {
     Json runs = Json::array();
     for (const RunSpec& r : grid.runs()) {
         Json j = {{"engine", r.engine}, {"settings", r.settings_text}};
-        if (r.engine == "analytic")
+        if (r.engine == "analytic") {
+            j["set"] = set_name(Assumptions{r.kinematics, r.impact, r.roller});  // paper, mechanism or custom
             for (std::size_t i = 0; i < spec.assumptions.size(); ++i)
                 j[spec.assumptions[i].key] = to_text(r.assumptions[i]);
+        }
         runs.push_back(j);
     }
     Json metrics = Json::array();

@@ -192,6 +192,42 @@ Level assumption_level(const Reader& r, const std::string& key, const json& v) {
     return e;
 }
 
+// A set's three parts as a study file writes them (analytic/assumption_sets.hpp defines the sets; a test holds these
+// words to assumptions_of(set)). Words, not the model's to_string: the file reader links no model.
+std::vector<Axis> set_levels(AssumptionSet set) {
+    const bool paper = set == AssumptionSet::paper;
+    return {{"kinematics", {std::string(paper ? "paper" : "exact")}},
+            {"impact", {std::string(paper ? "eq19" : "whole-mechanism")}},
+            {"roller", {std::string(paper ? "bilateral" : "unilateral")}}};
+}
+
+// [assumptions]: the set (one name) gives every key's default; a key the file gives overrides the set's, as a value or
+// an axis. A list of sets is refused: the keys vary one part at a time, and the product of all three holds both sets.
+void read_assumptions(const Reader& r, const json& doc, StudySpec& s) {
+    static const std::vector<std::string> known = [] {
+        std::vector<std::string> k = {"set"};
+        k.insert(k.end(), kAssumptionKeys.begin(), kAssumptionKeys.end());
+        return k;
+    }();
+    const json empty = json::object();
+    const json& a = doc.contains("assumptions") ? r.table(doc, "assumptions", known) : empty;
+    if (a.contains("set")) {
+        const json& set = a["set"];
+        if (set.is_array())
+            r.fail("assumptions.set", fmt::format("one set per study, got {}: vary kinematics, impact or roller (the "
+                                                  "three varied hold both sets), or run one study per set",
+                                                  dump_json(set)));
+        s.assumption_set = parse_assumption_set(r.word(set, "assumptions.set", {"paper", "mechanism"}));
+    }
+    s.assumptions = set_levels(s.assumption_set);
+    for (Axis& axis : s.assumptions)
+        if (a.contains(axis.key)) {
+            const std::string key = "assumptions." + axis.key;
+            axis = r.axis(a[axis.key], key, [&](const json& v) { return assumption_level(r, key, v); });
+            s.assumptions_given.push_back(axis.key);
+        }
+}
+
 Level excitation_level(const Reader& r, const std::string& key, const json& v) {
     const std::string k = key.substr(key.rfind('.') + 1);
     if (k == "file") {
@@ -775,17 +811,7 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
         s.description = doc["description"].get<std::string>();
     }
 
-    s.assumptions = {{"kinematics", {std::string("paper")}},
-                     {"impact", {std::string("eq19")}},
-                     {"roller", {std::string("bilateral")}}};
-    if (doc.contains("assumptions")) {
-        const json& a = r.table(doc, "assumptions", kAssumptionKeys);
-        for (Axis& axis : s.assumptions)
-            if (a.contains(axis.key)) {
-                const std::string key = "assumptions." + axis.key;
-                axis = r.axis(a[axis.key], key, [&](const json& v) { return assumption_level(r, key, v); });
-            }
-    }
+    read_assumptions(r, doc, s);
     s.engines = read_engines(r, doc);
     if (doc.contains("metrics")) s.metrics = read_metrics(r, doc["metrics"], "metrics");
     const bool analytic = std::any_of(s.engines.begin(), s.engines.end(),

@@ -8,8 +8,9 @@
 //   engines = ["analytic", "ode"]            # or [engines.ode] dt = 2e-4 (a table of engines with their settings)
 //   [wall]          model, height, thickness, hinge, xi, density, g   (or alpha and R; alpha1, alpha2 and R1;
 //                   specimen: a Table 1 number, data/table1.csv)
-//   [assumptions]   kinematics (paper | exact), impact (eq19 | whole-mechanism | a number in [0, 1]),
-//                   roller (bilateral | unilateral): the analytic model's; engines ignore them
+//   [assumptions]   set (paper | mechanism, default mechanism: analytic/assumption_sets.hpp), one name, never a list;
+//                   kinematics (paper | exact), impact (eq19 | whole-mechanism | a number in [0, 1]), roller
+//                   (bilateral | unilateral), each the set's unless given: the analytic model's; engines ignore them
 //   [excitation]    kind = closed-form | threshold | free | pulse | record | scale-to-collapse | ensemble, and its keys
 //   [settings.ode]  dt = 2e-4, iterations, knobs by name (a list varies them)
 //
@@ -39,6 +40,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "analytic/assumption_sets.hpp"
 
 namespace vssw::study {
 
@@ -130,7 +133,9 @@ struct StudySpec {
     nlohmann::json as_read;  // the file's content as read (TOML as the JSON it stands for): results.json keeps it
     std::vector<std::string> metrics;  // every part's, the study's own list first
     std::vector<EngineSpec> engines;   // in the file's order, with the study-wide settings
-    std::vector<Axis> assumptions;     // every key of kAssumptionKeys, defaulted (paper, eq19, bilateral)
+    AssumptionSet assumption_set = kDefaultAssumptionSet;  // [assumptions] set: the defaults of the keys below
+    std::vector<Axis> assumptions;     // every key of kAssumptionKeys, the set's where the file gives none
+    std::vector<std::string> assumptions_given;  // the keys of kAssumptionKeys the file gives (the rest: the set's)
     std::vector<PartSpec> parts;       // one for a study of one grid
 
     // The excitation kind of every part ("free", "ensemble"), or "mixed".

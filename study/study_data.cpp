@@ -123,6 +123,7 @@ void read_series(StudyData& d) {
         Series s;
         s.engine = run.at("engine").get<std::string>();
         s.settings = run.value("settings", std::string());
+        s.set = run.value("set", std::string());  // "" in a folder written before the sets had names
         for (const std::string& key : kAssumptionKeys)
             s.assumptions.push_back(run.contains(key) ? canonical_level(run.at(key).get<std::string>())
                                                       : std::string());

@@ -41,6 +41,7 @@ struct MetricMeta {
 struct Series {
     std::string engine, settings;
     std::vector<std::string> assumptions;  // one per kAssumptionKeys; all "" for an engine
+    std::string set;                       // the manifest's: paper, mechanism or custom; "" for an engine
     std::string label;                     // "analytic kinematics=exact", "ODE dt=0.0002"
     bool analytic() const { return engine == "analytic"; }
 };

@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
@@ -112,6 +113,35 @@ TEST(StudyFile, TheIssuesExampleReadsAsWritten) {
     EXPECT_TRUE(std::search(header.begin(), header.end(), tail.begin(), tail.end()) != header.end());
 }
 
+// [assumptions] set: the set's three parts are the study's, the default set when the file names none (every command's
+// default, analytic/assumption_sets.hpp), and a key the file gives replaces its part alone.
+TEST(StudyFile, TheSetGivesEveryAssumptionAndAKeyOverridesItsPart) {
+    const TempDir dir;
+    const std::string rest = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n[excitation]\nkind = \"threshold\"\n";
+    const auto read = [&](const std::string& assumptions) {
+        const study::StudySpec spec = study_of(dir, assumptions + rest);
+        std::vector<study::Level> levels;
+        for (const study::Axis& a : spec.assumptions) {
+            EXPECT_EQ(a.levels.size(), 1u) << a.key;
+            levels.push_back(a.levels.front());
+        }
+        return study::assumptions_of(levels);
+    };
+    const Assumptions mechanism = assumptions_of(AssumptionSet::mechanism), paper = assumptions_of(AssumptionSet::paper);
+    EXPECT_TRUE(read("") == assumptions_of(kDefaultAssumptionSet));
+    EXPECT_TRUE(read("") == mechanism) << "the one default of every entry point";
+    EXPECT_TRUE(read("[assumptions]\nset = \"mechanism\"\n") == mechanism);
+    EXPECT_TRUE(read("[assumptions]\nset = \"paper\"\n") == paper);
+    EXPECT_FALSE(paper == mechanism) << "two sets that differ, or the checks above tell nothing";
+    Assumptions paper_whole = paper;
+    paper_whole.impact = ImpactLaw{ImpactLaw::Kind::whole_mechanism, 0.0};
+    EXPECT_TRUE(read("[assumptions]\nset = \"paper\"\nimpact = \"whole-mechanism\"\n") == paper_whole);
+    EXPECT_EQ(set_name(paper_whole), "custom");
+    Assumptions mechanism_bilateral = mechanism;
+    mechanism_bilateral.roller = Roller::bilateral;
+    EXPECT_TRUE(read("[assumptions]\nroller = \"bilateral\"\n") == mechanism_bilateral);
+}
+
 TEST(StudyFile, TomlAndJsonSayTheSame) {
     const TempDir dir;
     const std::string toml = "[wall]\nheight = 4\nthickness = [0.2, 0.4]\nhinge = 0.7\n[excitation]\nkind = \"threshold\"\n";
@@ -173,6 +203,12 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {"metrics = [\"wobble\"]\n" + wall + threshold, "unknown metric 'wobble'"},
         {"[assumptions]\nimpact = 1.5\n" + wall + threshold, "an impact ratio must be in [0, 1]"},
         {"[assumptions]\nkinematics = \"approximate\"\n" + wall + threshold, "assumptions.kinematics: must be one of"},
+        {"[assumptions]\nset = \"linear\"\n" + wall + threshold,
+         "assumptions.set: must be one of paper, mechanism, got \"linear\""},
+        {"[assumptions]\nset = [\"paper\", \"mechanism\"]\n" + wall + threshold,
+         "assumptions.set: one set per study, got [\"paper\",\"mechanism\"]: vary kinematics, impact or roller"},
+        {"[assumptions]\nsets = \"paper\"\n" + wall + threshold,
+         "assumptions: unknown key 'sets' (known: set, kinematics, impact, roller)"},
         {"speed = 3\n" + wall + threshold, "unknown key 'speed'"},
         {"[wall]\nalpha1 = 0.1\nalpha2 = 0.2\nR1 = 1.5\nhinge = 0.6\n" + threshold, "fix the hinge"},
         {"[wall]\nspecimen = 1e10\n" + threshold, "must be a Table 1 specimen number"},
@@ -218,6 +254,23 @@ TEST(StudyGrid, ThePapersKinematicsWithAUnilateralRollerIsNotAModel) {
         EXPECT_FALSE(r.kinematics == Kinematics::paper && r.roller == Roller::unilateral);
     ASSERT_EQ(grid.skipped_runs().size(), 1u);
     EXPECT_NE(grid.skipped_runs()[0].find("not a model"), std::string::npos);
+}
+
+// Under the set mechanism the roller is unilateral unless the file gives it: the paper's kinematics with it is no model,
+// and the reason names the set that chose the roller (and how to choose another). A roller the file gives is its own.
+TEST(StudyGrid, ThePapersKinematicsUnderTheSetMechanismNamesTheSetsRoller) {
+    const TempDir dir;
+    const std::string wall = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n[excitation]\nkind = \"threshold\"\n";
+    const std::string by_set = refusal(dir, "[assumptions]\nkinematics = \"paper\"\n" + wall);
+    EXPECT_NE(by_set.find("no run left: the paper's kinematics with the unilateral roller (the set mechanism's roller: "
+                          "give roller = \"bilateral\" with kinematics = \"paper\", or set = \"paper\"): not a model"),
+              std::string::npos)
+        << by_set;
+    const std::string given = refusal(dir, "[assumptions]\nkinematics = \"paper\"\nroller = \"unilateral\"\n" + wall);
+    EXPECT_NE(given.find("no run left: the paper's kinematics with the unilateral roller: not a model"),
+              std::string::npos)
+        << given;
+    EXPECT_EQ(refusal(dir, "[assumptions]\nset = \"paper\"\n" + wall), "") << "the set paper's roller is bilateral";
 }
 
 TEST(StudyGrid, WallsGivenBySlendernessAndSizeAreTheWallsOfThatShape) {
@@ -267,14 +320,15 @@ TEST(StudyMeasure, FreeVibrationGivesTheModelsImpactLawAndPeriod) {
     EXPECT_DOUBLE_EQ(value_of(t, "peak_rotation", {{"impact", "eq19"}}), 0.5) << "the release is the largest rotation";
 }
 
-// Under a record, the study's analytic peak is the model's own (the same run `vssw history` makes).
+// Under a record, the study's analytic peak is the model's own (the same run `vssw history` makes): the set paper with
+// the exact kinematics, so Eq. (19) and the bilateral roller, as the simulation's defaults below.
 TEST(StudyMeasure, RecordPeakIsTheModelsRunDirectly) {
     const TempDir dir;
     const std::string record = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
     const Grid grid(study_of(dir, "metrics = [\"peak_rotation\", \"overturned\", \"energy_balance_error\"]\n"
                                   "[wall]\nheight = 3.05\nthickness = 0.143\nhinge = 0.6\nxi = 0.1\n"
-                                  "[assumptions]\nkinematics = \"exact\"\n[excitation]\nkind = \"record\"\nfile = \"" +
-                                      record + "\"\nscale = 0.25\n"));
+                                  "[assumptions]\nset = \"paper\"\nkinematics = \"exact\"\n[excitation]\nkind = "
+                                  "\"record\"\nfile = \"" + record + "\"\nscale = 0.25\n"));
     const ResultsTable t = run_into(grid, dir / "out");
     const VsswGeometry w = make_vssw(3.05, 0.143, 0.6, 0.1);
     const GroundMotion motion = read_record(record).scaled(0.25);  // rocks through the whole record (docs/measurements/speed.md)

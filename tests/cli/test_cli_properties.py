@@ -709,8 +709,13 @@ def study_doc(rng):
         ex = {"kind": kind, "file": "elc.txt", "step": 0.5, "tolerance": 0.1, "max_pga": 1.0}
     doc["engines"] = engines
     if rng.random() < 0.3:
-        doc["assumptions"] = {"kinematics": levels(rng, lambda: rng.choice(["paper", "exact"])),
+        kinematics = levels(rng, lambda: rng.choice(["paper", "exact"]))
+        doc["assumptions"] = {"kinematics": kinematics,
                               "impact": levels(rng, lambda: rng.choice(["eq19", "whole-mechanism", 0.5]))}
+        if rng.random() < 0.7:
+            # The paper's kinematics need the set paper's bilateral roller (the default set's roller only pushes).
+            paper = "paper" in (kinematics if isinstance(kinematics, list) else [kinematics])
+            doc["assumptions"]["set"] = "paper" if paper else rng.choice(["paper", "mechanism"])
     if len(engines) > 1 and rng.random() < 0.5:
         doc["settings"] = {engines[1]: {"dt": rng.choice([1e-3, 2e-3])}}
     doc["wall"], doc["excitation"] = wall, ex
@@ -795,11 +800,12 @@ def break_study(rng, doc):
             note("engines", None)
             note("settings", why)
         elif op < 0.86:
-            key = rng.choice(["impact", "kinematics", "roller", "x"])
-            value = rng.choice([0, 1, 1.0, 0.0, -0.0, 1.5, "eq19", "", ["eq19", "eq19"], "exact"])
+            key = rng.choice(["impact", "kinematics", "roller", "set", "x"])
+            value = rng.choice([0, 1, 1.0, 0.0, -0.0, 1.5, "eq19", "", ["eq19", "eq19"], "exact", "paper",
+                                ["paper", "mechanism"]])
             doc["assumptions"] = {key: value}
             words = {"impact": ("eq19", "whole-mechanism"), "kinematics": ("paper", "exact"),
-                     "roller": ("bilateral", "unilateral")}.get(key, ())
+                     "roller": ("bilateral", "unilateral"), "set": ("paper", "mechanism")}.get(key, ())
             ok = key == "impact" and isinstance(value, (int, float)) and 0 <= value <= 1 or value in words
             note("assumptions", None if ok else "assumptions.%s = %r" % (key, value))
         elif op < 0.93:
