@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
@@ -55,7 +56,27 @@ struct ReportCommandOptions {
     // the shipped one, "none" runs none. Not given with --cases: none (a case subset is a quick run).
     std::string earthquake = "default";
     CLI::Option* earthquake_option = nullptr;
+    // --assumptions: the reference's set (analytic/assumption_sets.hpp); the other set gets its own row.
+    std::string assumptions = to_string(kDefaultAssumptionSet);
+    CLI::Option* assumptions_option = nullptr;
 };
+
+// The suite's reference: --assumptions, else the suite file's set, else the default. A suite file that names one set
+// and an --assumptions that names the other are refused: the engines are measured against one model.
+void choose_reference(const ReportCommandOptions& o, compare::Suite& suite) {
+    AssumptionSet set = kDefaultAssumptionSet;
+    try {
+        set = parse_assumption_set(o.assumptions);
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("--assumptions {}: {}", o.assumptions, e.what()));
+    }
+    if (o.assumptions_option->count() == 0) return;  // the file's set, or the default
+    if (suite.reference_named && suite.reference != set)
+        throw InputError(fmt::format("--assumptions {}: the suite file {} names the reference {} ([assumptions]); "
+                                     "give one",
+                                     o.assumptions, o.suite, to_string(suite.reference)));
+    suite.reference = set;
+}
 
 // Without --engines: multibody::default_compared_engines() (all but the analytic model, which always runs as the
 // reference, and simbody-rigid). "analytic" is the reference anyway; a name given twice is refused (list_items).
@@ -138,6 +159,7 @@ std::string report_footer() {
         "within_target}],\n"
         "failures [{case_id, engine, message}], summary [{engine, line, within, with_target, not_measured, failures,\n"
         "max_error}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],\n"
+        "reference_assumptions, other_set {engine, assumptions, label, finding, matrix (no pass), rows, failures},\n"
         "findings, step_study [{engine, case_id, metric, dt, rel_error, order}], traces [{case_id, engine,\n"
         "assumption, samples}], earthquake {study, folder, reference, reference_median_g, reference_median_note,\n"
         "targets, records, levels, rows, failed_rows, engines [{engine, settings, pass, overturning_agreement {value,\n"
@@ -149,7 +171,7 @@ std::string report_footer() {
         "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
         "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"
         "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha,assumption (t to 6,\n"
-        "theta1/alpha to 4 significant digits; assumption: the analytic model's, paper or whole_mechanism_impact).\n"
+        "theta1/alpha to 4 significant digits; assumption: the analytic model's set, mechanism or paper).\n"
         "An engine failing on a case is reported (exit 0). Exit 2 on bad input (unknown suite, engine or case, an\n"
         "--out that is not a writable folder). Without gnuplot the report is written without plots (a warning).";
 }
@@ -175,6 +197,12 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--bench", o->bench,
                     "a finished `vssw bench --out DIR` folder: its cheapest settings and work-precision plots end the "
                     "report (the report does not run the sweep)");
+    o->assumptions_option = cmd->add_option(
+        "--assumptions", o->assumptions,
+        fmt::format("the reference: the analytic model under the set {} or {} (default {}); the analytic model under "
+                    "the other set is measured like an engine in a row of its own, with no verdict",
+                    describe(AssumptionSet::mechanism), describe(AssumptionSet::paper),
+                    to_string(kDefaultAssumptionSet)));
     o->earthquake_option = cmd->add_option(
         "--earthquake", o->earthquake,
         "the record ensemble judged under \"Under earthquake records\": default (studies/ensemble-report.toml: 4 "
@@ -192,6 +220,7 @@ Command add_report_command(CLI::App& root) {
                 if (!o->bench.empty()) study::check_bench_dir(o->bench);
                 compare::Suite suite = study::read_suite(o->suite, o->data);
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
+                choose_reference(*o, suite);
                 require_records_readable(suite);
                 const bool earthquake_asked = o->earthquake_option->count() > 0 || o->cases.empty();
                 const std::string earthquake_name = o->earthquake_option->count() > 0
@@ -209,6 +238,7 @@ Command add_report_command(CLI::App& root) {
                 Progress progress(err);
                 compare::RunOptions run;
                 run.threads = o->threads;
+                run.other_set = true;
                 if (progress.on())
                     run.progress = [&progress](int done, int total, const std::string& what) {
                         progress.show(done, total, what);

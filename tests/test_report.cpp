@@ -119,8 +119,6 @@ vssw::compare::SuiteResults hand_results() {
         row("fig6-vssw/r0.5", "bullet", "period", 2.0, 1.9994, "s"),
         row("fig6-vssw/r0.5", "ode", "restitution", 0.95, 0.8246, ""),  // -13.2 %: outside 2 %
         row("fig6-vssw/r0.5", "bullet", "restitution", 0.95, kNaN, ""),  // not measured
-        row("fig6-vssw/r0.5", "ode", "restitution_whole_mechanism", 0.8252, 0.8246, "",
-            "whole-mechanism plastic impact (roller acting)"),  // -0.07 %
         row("fig6-pw", "ode", "threshold_g", 0.1, 0.1001, "g"),
         row("fig6-pw/rinaldi-x0.17", "ode", "peak_rotation", 0.40, 0.42, "alpha"),  // +5 %, no target
         {"fig6-pw/rinaldi-x0.17", "ode", "overturned", 0.0, 0.0, 0.0, "analytic model", ""},
@@ -132,7 +130,7 @@ vssw::compare::SuiteResults hand_results() {
         row("fig6-vssw/r0.5/dt0.0002/ode", "ode", "restitution", 0.95, 0.95 * (1 - 0.132), ""),
     };
     r.failures = {{"fig6-pw", "bullet", kFailureMessage}};
-    vssw::compare::Trace a{"fig6-vssw/r0.5", "analytic", {}, {}, vssw::compare::kPaperModel},
+    vssw::compare::Trace a{"fig6-vssw/r0.5", "analytic", {}, {}, "mechanism"},
         o{"fig6-vssw/r0.5", "ode", {}, {}, ""};
     for (int i = 0; i <= 50; ++i) {
         const double t = 0.01 * i;
@@ -216,12 +214,11 @@ TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
     ASSERT_EQ(summaries.size(), 2u);  // ode, bullet: the analytic model is the reference
     const vssw::study::EngineSummary& ode = summaries[0];
     EXPECT_EQ(ode.engine, "ode");
-    // threshold x2, period, restitution (outside), whole mechanism; the three step rows are not counted.
-    EXPECT_EQ(ode.with_target, 5);
-    EXPECT_EQ(ode.within, 4);
-    EXPECT_EQ(ode.line.rfind("ODE: 4/5 metrics within target; max |error| threshold +0.10 %, period -0.02 %, "
-                             "restitution -13.2 % (vs Eq. 19/Housner) / -0.07 % (vs whole mechanism), overturning "
-                             "agrees on 1/1; 0 failures",
+    // threshold x2, period, restitution (outside); the three step rows are not counted.
+    EXPECT_EQ(ode.with_target, 4);
+    EXPECT_EQ(ode.within, 3);
+    EXPECT_EQ(ode.line.rfind("ODE: 3/4 metrics within target; max |error| threshold +0.10 %, period -0.02 %, "
+                             "restitution -13.2 %, overturning agrees on 1/1; 0 failures",
                              0),
               0u)
         << ode.line;
@@ -274,17 +271,14 @@ TEST(ReportAnalysis, FindingsSayOnlyWhatTheNumbersShow) {
             if (contains(f, a) && contains(f, b)) return true;
         return false;
     };
-    // The restitution gap explained by the whole-mechanism impact, with the measured numbers.
-    EXPECT_TRUE(any("ODE's restitution is -13.2 % from the analytic model's impact (Eq. 19)",
-                    "within 0.073 % of the whole-mechanism plastic impact"));
     // The step study: 1.2e-3, 6e-4, 2.4e-4 at 1, 0.5, 0.2 ms is first order.
     EXPECT_TRUE(any("ODE's period error on fig6-vssw/r0.5", "roughly as dt^1.0 (1 ms: -0.12 %, 0.5 ms: -0.06 %"));
-    EXPECT_TRUE(any("ODE's restitution (vs Eq. 19/Housner) error on fig6-vssw/r0.5 hardly changes with the step",
+    EXPECT_TRUE(any("ODE's restitution error on fig6-vssw/r0.5 hardly changes with the step",
                     "it is not discretisation error"));
     EXPECT_TRUE(any("ODE's restitution (first impact) is outside the 2 % target on 1 of 1 case", "-13.2 %"));
     EXPECT_TRUE(any("Bullet failed on 1 of", kFailureMessage));
-    // Bullet's restitution was not measured: nothing is said about its impact law.
-    EXPECT_FALSE(any("Bullet's restitution is", "whole-mechanism"));
+    // Bullet's restitution was not measured: nothing is said about it.
+    EXPECT_FALSE(any("Bullet's restitution", ""));
 }
 
 // --- the files ----------------------------------------------------------------------------------------------------
@@ -292,7 +286,7 @@ TEST(ReportAnalysis, FindingsSayOnlyWhatTheNumbersShow) {
 TEST(ReportFiles, MarkdownHasSummaryLinesAndARowPerCaseWithItsError) {
     const Written w = write_hand_report("md", no_plots());
     EXPECT_TRUE(contains(w.md, "# vssw validation report: suite 'default'"));
-    EXPECT_TRUE(contains(w.md, "- ODE: 4/5 metrics within target;"));
+    EXPECT_TRUE(contains(w.md, "- ODE: 3/4 metrics within target;"));
     EXPECT_TRUE(contains(w.md, "### ODE\n\n- ODE's threshold acceleration is within the 0.5 % target on all 2 cases"));
     EXPECT_TRUE(contains(w.md, "- Bullet: 2/3 metrics within target (1 not measured)"));
     // Iterations only where an engine's settings set them (Bullet's 10): '-' for the analytic model and ODE.
@@ -355,10 +349,10 @@ TEST(ReportFiles, JsonRoundTripsWithNaNAsNull) {
     }
     EXPECT_EQ(j["rows"][5]["within_target"], false);  // ODE's restitution, -13.2 %
     EXPECT_EQ(j["rows"][3]["within_target"], true);   // ODE's period, -0.02 %
-    EXPECT_TRUE(j["rows"][9]["target"].is_null());    // peak rotation: no target
+    EXPECT_TRUE(j["rows"][8]["target"].is_null());    // peak rotation: no target
     ASSERT_EQ(j["failures"].size(), 1u);
     EXPECT_EQ(j["failures"][0]["message"], kFailureMessage);
-    EXPECT_EQ(j["summary"][0]["within"], 4);
+    EXPECT_EQ(j["summary"][0]["within"], 3);
     EXPECT_EQ(j["traces"][1]["samples"], 51);
     ASSERT_EQ(j["step_study"].size(), 2u);  // ODE's period and restitution, in that order
     EXPECT_NEAR(j["step_study"][0]["order"].get<double>(), 1.0, 1e-9);  // errors exactly proportional to dt
@@ -388,9 +382,9 @@ TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
     const auto traces = lines_of(read(w.dir.path / "traces.csv"));
     EXPECT_EQ(traces.size(), 2u * 51u + 1u);
     EXPECT_EQ(traces[0], "case_id,engine,t,theta1_over_alpha,assumption");
-    EXPECT_EQ(traces[1], "fig6-vssw/r0.5,analytic,0,0.5,paper");
+    EXPECT_EQ(traces[1], "fig6-vssw/r0.5,analytic,0,0.5,mechanism");
     EXPECT_EQ(traces[52], "fig6-vssw/r0.5,ode,0,0.5,");
-    EXPECT_EQ(traces[2], "fig6-vssw/r0.5,analytic,0.01,0.4998,paper");  // 0.499775... to 4 digits
+    EXPECT_EQ(traces[2], "fig6-vssw/r0.5,analytic,0.01,0.4998,mechanism");  // 0.499775... to 4 digits
     // Every value is the trace's to kTraceTimeDigits / kTraceValueDigits significant digits.
     const vssw::compare::Trace& ode = results.traces[1];
     for (std::size_t i = 0; i < ode.t.size(); ++i) {
@@ -414,7 +408,7 @@ TEST(ReportFiles, HtmlEscapesTextAndShowsTheFailure) {
     EXPECT_TRUE(contains(w.html, "slid past 0.05 b at t = 1.2 s &lt;x, &quot;y&quot;&gt; &amp; more"));
     EXPECT_FALSE(contains(w.html, "<x,"));
     EXPECT_TRUE(contains(w.html, "<td class=\"flag\">-13.2 %</td>"));
-    EXPECT_TRUE(contains(w.html, "<li>ODE: 4/5 metrics within target;"));
+    EXPECT_TRUE(contains(w.html, "<li>ODE: 3/4 metrics within target;"));
     EXPECT_FALSE(contains(w.html, "<svg")) << "no plots asked";
     EXPECT_EQ(vssw::study::html_escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
 }
@@ -449,7 +443,7 @@ TEST(ReportFiles, AFigurePerMeasureFollowsTheMatrix) {
     EXPECT_LT(glance, figures);
     EXPECT_LT(figures, contents);
     std::size_t previous = figures;
-    for (const char* metric : {"threshold_g", "period", "restitution", "restitution_whole_mechanism"}) {
+    for (const char* metric : {"threshold_g", "period", "restitution"}) {
         const std::size_t f = at(std::string("](plots/error_") + metric + ".svg)");
         EXPECT_GT(f, previous) << metric << ": in the matrix's order, after the matrix";
         EXPECT_LT(f, contents) << metric;
@@ -515,7 +509,7 @@ TEST(ReportFiles, WithoutGnuplotTheReportIsStillWritten) {
     ASSERT_EQ(w.files.warnings.size(), 1u);
     EXPECT_TRUE(contains(w.files.warnings[0], "could not be run")) << w.files.warnings[0];
     EXPECT_TRUE(contains(w.md, "Plots: gnuplot ('/nonexistent/vssw-test/gnuplot') could not be run"));
-    EXPECT_TRUE(contains(w.md, "- ODE: 4/5 metrics within target;"));
+    EXPECT_TRUE(contains(w.md, "- ODE: 3/4 metrics within target;"));
     EXPECT_FALSE(contains(w.html, "<svg"));
     EXPECT_EQ(w.json["plots"]["made"], false);
     // The scripts and data are there to draw them later; no SVG, no stray log.
@@ -656,10 +650,9 @@ TEST(ReportAtAGlance, MatrixCellsAreTheWorstErrorOfMetricsCsvAndPassIffWithinTar
             EXPECT_EQ(text.rfind(vssw::study::percent(e.worst), 0), 0u) << engine << ' ' << metric << ": " << text;
         }
     }
-    // The hand data's verdicts, spelled out: ODE passes threshold, period and the whole-mechanism restitution and
-    // fails Eq. (19)'s; Bullet fails the threshold (it failed on fig6-pw) and the restitution (not measured).
-    EXPECT_TRUE(contains(
-        w.md, "| ODE | impulse stepping | +0.10 % \u2713 | -0.02 % \u2713 | **-13.2 % \u2717** | -0.07 % \u2713 |"))
+    // The hand data's verdicts, spelled out: ODE passes threshold and period and fails the restitution; Bullet fails
+    // the threshold (it failed on fig6-pw) and the restitution (not measured).
+    EXPECT_TRUE(contains(w.md, "| ODE | impulse stepping | +0.10 % \u2713 | -0.02 % \u2713 | **-13.2 % \u2717** |"))
         << w.md;
     EXPECT_TRUE(contains(w.md, "| Bullet | impulse stepping | **-0.07 % (1 failed) \u2717** |")) << w.md;
     // Both in one contact scheme: the report says their agreement is one piece of evidence.
@@ -691,20 +684,6 @@ TEST(ReportAtAGlance, CasesThatDidNotRunAreNotListed) {
     EXPECT_TRUE(contains(md, "| fig6-vssw/r0.5/dt0.0005/ode | step |")) << md;
     EXPECT_FALSE(contains(md, "fig6-vssw/r0.5/dt0.0005/bullet")) << md;
     EXPECT_TRUE(contains(md, "1 more case of the suite did not run")) << md;
-}
-
-TEST(ReportAnalysis, TheWholeMechanismPeakIsQuotedAsEngineOverReferenceMinusOne) {
-    // The engine rocks much less under a record (-55.6 %) and loses more at each impact (-13.2 %): the finding quotes
-    // the analytic model with the whole-mechanism impact, and the engine against it with the report's sign.
-    const vssw::compare::Suite suite = hand_suite();
-    vssw::compare::SuiteResults results = hand_results();
-    results.rows.push_back(row("fig6-vssw/rinaldi-x0.45", "ode", "peak_rotation", 0.27, 0.12, "alpha"));
-    results.rows.push_back(row("fig6-vssw/rinaldi-x0.45", "ode", "peak_rotation_whole_mechanism", 0.125, 0.12,
-                               "alpha", "analytic model with the whole-mechanism impact"));
-    const std::vector<std::string> found = vssw::study::findings({suite, results, {}}, "ode");
-    const auto f = std::find_if(found.begin(), found.end(), [](const std::string& x) { return contains(x, "rocks"); });
-    ASSERT_NE(f, found.end());
-    EXPECT_TRUE(contains(*f, "0.125 alpha, the engine's -4.0 % from it")) << *f;  // 0.12 / 0.125 - 1
 }
 
 // --- the plots ------------------------------------------------------------------------------------------------------
@@ -746,8 +725,7 @@ TEST(ReportPlots, SimplifiedTracesKeepCornersAndGaps) {
 TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
     const vssw::compare::Suite suite = hand_suite();
     vssw::compare::SuiteResults results = hand_results();
-    results.traces = {rocking_trace("analytic", vssw::compare::kPaperModel, 0.27, 5.0, 12.0, 45.0),
-                      rocking_trace("analytic", vssw::compare::kWholeMechanismImpact, 0.145, 5.0, 9.0, 45.0),
+    results.traces = {rocking_trace("analytic", "mechanism", 0.27, 5.0, 12.0, 45.0),
                       rocking_trace("ode", "", 0.14, 5.0, 9.5, 45.0)};
     const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
     const vssw::study::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
@@ -759,10 +737,9 @@ TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
     EXPECT_LT(x->first, 5.1);
     EXPECT_GT(x->second, 11.9);
     EXPECT_LT(x->second, 12.5);
-    // The three models in the legend, each in its engine's colour and marker; the legend below the frame, where it
-    // hides no line.
-    EXPECT_TRUE(contains(s->gp, "title 'analytic, Eq. (19) impact (reference)'")) << s->gp;
-    EXPECT_TRUE(contains(s->gp, "title 'analytic, whole-mechanism impact'")) << s->gp;
+    // Both models in the legend, each in its engine's colour and marker, the reference named by its assumption set;
+    // the legend below the frame, where it hides no line.
+    EXPECT_TRUE(contains(s->gp, "title 'analytic, mechanism (reference)'")) << s->gp;
     EXPECT_TRUE(contains(s->gp, "lc rgb '" + vssw::study::engine_colour("ode") + "' title 'ODE'")) << s->gp;
     EXPECT_TRUE(contains(s->gp, fmt::format("pt {} ", vssw::study::engine_point("ode")))) << s->gp;
     EXPECT_TRUE(contains(s->gp, "set key below")) << s->gp;
@@ -772,8 +749,8 @@ TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
 TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
     const vssw::compare::Suite suite = hand_suite();
     vssw::compare::SuiteResults results = hand_results();
-    results.traces = {rocking_trace("analytic", vssw::compare::kPaperModel, 0.47, 1.0, 30.0, 45.0),
-                      rocking_trace("analytic", vssw::compare::kWholeMechanismImpact, 0.027, 1.0, 4.0, 45.0),
+    results.traces = {rocking_trace("analytic", "mechanism", 0.47, 1.0, 30.0, 45.0),
+                      rocking_trace("bullet", "", 0.027, 1.0, 4.0, 45.0),
                       rocking_trace("ode", "", 0.03, 1.5, 3.5, 45.0)};
     const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
     ASSERT_NE(script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45"), nullptr);
@@ -786,7 +763,7 @@ TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
     EXPECT_LT(y->second, 0.04);
     EXPECT_GT(y->first, -0.04);
     EXPECT_FALSE(contains(zoom->gp, "(reference)")) << "the reference is in the first plot: " << zoom->gp;
-    EXPECT_TRUE(contains(zoom->gp, "title 'analytic, whole-mechanism impact'")) << zoom->gp;
+    EXPECT_TRUE(contains(zoom->gp, "title 'Bullet'")) << zoom->gp;
     // Engines that rock like the reference get none.
     results.traces[2] = rocking_trace("ode", "", 0.4, 1.0, 30.0, 45.0);
     EXPECT_EQ(script_named(vssw::study::report_plot_scripts({suite, results, {}}), "trace_fig6-vssw_rinaldi-x0.45_zoom"),
@@ -797,7 +774,7 @@ TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
 TEST(ReportPlots, TracePlotDataShowWhatEverySampleWould) {
     const vssw::compare::Suite suite = hand_suite();
     vssw::compare::SuiteResults results = hand_results();
-    results.traces = {rocking_trace("analytic", vssw::compare::kPaperModel, 0.27, 5.0, 12.0, 45.0),
+    results.traces = {rocking_trace("analytic", "mechanism", 0.27, 5.0, 12.0, 45.0),
                       rocking_trace("ode", "", 0.14, 5.0, 9.5, 45.0)};
     const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
     const vssw::study::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
@@ -1159,8 +1136,11 @@ TEST(ReportCommand, SuiteSettingsTheReportCannotHonourAreRefused) {
         EXPECT_FALSE(fs::exists(out)) << name;
     };
     refused("analytic", suite_with("[settings.analytic]\nrtol = 1e-8\n", ""), "settings.analytic");
-    refused("assumption", suite_with("[assumptions]\nimpact = \"whole-mechanism\"\n", ""),
-            "assumptions.impact: the report's reference is the analytic model with impact eq19");
+    // Assumptions that are no set's (exact kinematics of the default set with Eq. 19's impact), or that vary.
+    refused("assumption", suite_with("[assumptions]\nkinematics = \"exact\"\nimpact = \"eq19\"\nroller = \"unilateral\"\n", ""),
+            "are neither set paper nor mechanism: a suite's reference is one assumption set");
+    refused("varied", suite_with("[assumptions]\nkinematics = [\"exact\", \"paper\"]\nroller = \"bilateral\"\n", ""),
+            "assumptions.kinematics varies");
     if (!vssw::testing::engine_available("ode")) return;
     refused("knob", suite_with("", "[part.settings.ode]\nerp = [0.1, 0.2]\n"), "the settings of ode vary (erp)");
     const std::string threshold = "name = \"s\"\nengines = [\"analytic\", \"ode\"]\n[[part]]\nwall_name = \"w\"\n"
@@ -1485,4 +1465,151 @@ TEST(ReportEarthquake, PeakAndFragilityPanelsHoldEachEnginesPairedRuns) {
     const std::string md = read(out / "report.md");
     EXPECT_TRUE(contains(md, "earthquake/plots/fragility_by_engine.svg")) << md;
     EXPECT_TRUE(contains(md, "earthquake/plots/engine_peaks.svg")) << md;
+}
+
+// --- the analytic model under the other assumption set --------------------------------------------------------------
+
+namespace {
+
+// The hand results with the paper's model far off the reference: threshold -65 %, restitution +80 %, overturning
+// differing on the one record, and a failure. Far outside every target, so that counting it anywhere would show.
+vssw::compare::SuiteResults with_far_off_paper_model() {
+    vssw::compare::SuiteResults r = hand_results();
+    r.other_set = vssw::compare::OtherSetRun{
+        vssw::AssumptionSet::paper,
+        "paper-model",
+        {row("fig6-vssw", "paper-model", "threshold_g", 0.286, 0.1001, "g"),
+         row("fig6-vssw/r0.5", "paper-model", "restitution", 0.95, 1.71, ""),
+         {"fig6-pw/rinaldi-x0.17", "paper-model", "overturned", 0.0, 1.0, 1.0, "analytic model", ""}},
+        {{"fig6-pw", "paper-model", "a far-off failure"}}};
+    return r;
+}
+
+std::string matrix_line(const std::vector<vssw::study::MatrixCell>& cells) {
+    std::string text;
+    for (const auto& c : cells)
+        text += fmt::format("{} {} {} {} {} {}|", c.engine, c.metric, c.worst_rel_error, c.pass, c.outside, c.failed);
+    return text;
+}
+
+double first_impact(const Json& free, const char* key) { return free["impacts"][0][key].get<double>(); }
+
+}  // namespace
+
+// However far off the other set is, no engine's cell, summary line or finding moves, and its row carries no verdict:
+// no mark in report.md, neither class pass nor fail in report.html; the report is written (the command exits 0 after
+// it: it fails only on bad input). Must fail: the same rows given as an engine's fail that engine's cells.
+TEST(ReportOtherSet, AFarOffPaperModelChangesNoVerdictAndHasNone) {
+    const vssw::compare::Suite suite = hand_suite();
+    const vssw::compare::SuiteResults plain = hand_results(), far = with_far_off_paper_model();
+    const vssw::study::ReportInput a{suite, plain, {}}, b{suite, far, {}};
+    EXPECT_EQ(matrix_line(vssw::study::error_matrix(a)), matrix_line(vssw::study::error_matrix(b)));
+    const auto sa = vssw::study::summarize(a), sb = vssw::study::summarize(b);
+    ASSERT_EQ(sa.size(), sb.size());
+    for (std::size_t i = 0; i < sa.size(); ++i) EXPECT_EQ(sa[i].line, sb[i].line);
+    for (const char* engine : {"ode", "bullet"})
+        EXPECT_EQ(vssw::study::findings(a, engine), vssw::study::findings(b, engine)) << engine;
+
+    // Its own cells: the worst difference, as an engine's would be.
+    const auto other = vssw::study::other_set_matrix(b);
+    const auto cell = [&](const std::string& metric) {
+        return *std::find_if(other.begin(), other.end(), [&](const auto& c) { return c.metric == metric; });
+    };
+    EXPECT_DOUBLE_EQ(cell("restitution").worst_rel_error, 1.71 / 0.95 - 1.0);
+    EXPECT_DOUBLE_EQ(cell("threshold_g").worst_rel_error, 0.1001 / 0.286 - 1.0);
+    EXPECT_EQ(cell("overturned").outside, 1);
+
+    TempDir dir("other_set");
+    vssw::study::ReportMeta meta;
+    const auto files = vssw::study::write_suite_report(dir.path, suite, far, meta, no_plots());
+    const std::string md = read(files.markdown), html = read(files.html);
+    const auto start = md.find("| analytic, paper's assumptions |");
+    ASSERT_NE(start, std::string::npos) << md;
+    const std::string line = md.substr(start, md.find('\n', start) - start);
+    EXPECT_TRUE(contains(line, "+80.0 %")) << line;
+    EXPECT_FALSE(contains(line, "\u2713") || contains(line, "\u2717")) << line;
+    EXPECT_TRUE(contains(md, "not an error of any engine")) << md;
+    const HtmlTable t = matrix_of(html);
+    const auto r = std::find_if(t.rows.begin(), t.rows.end(),
+                                [](const auto& x) { return x[0].second == "analytic, paper's assumptions"; });
+    ASSERT_NE(r, t.rows.end()) << html;
+    for (const auto& [classes, text] : *r)
+        EXPECT_FALSE(has_class(classes, "pass") || has_class(classes, "fail")) << classes << " " << text;
+    const Json j = Json::parse(read(files.json));
+    EXPECT_EQ(j["other_set"]["assumptions"], "paper");
+    EXPECT_EQ(j["other_set"]["rows"].size(), 3u);
+    EXPECT_EQ(j["other_set"]["failures"].size(), 1u);
+    for (const Json& c : j["other_set"]["matrix"]) EXPECT_FALSE(c.contains("pass")) << c;
+
+    // Must fail: the same rows as an engine's are judged, and fail.
+    vssw::compare::SuiteResults judged = hand_results();
+    for (const auto& x : far.other_set->rows) judged.rows.push_back(x);
+    const auto cells = vssw::study::error_matrix({suite, judged, {}});
+    EXPECT_TRUE(std::any_of(cells.begin(), cells.end(), [](const auto& c) {
+        return c.engine == "paper-model" && c.metric == "restitution" && !c.pass;
+    }));
+}
+
+// The paper row's numbers are a direct run's: `vssw free` under each set locates the first impact itself (an event,
+// no sampling), and its times and velocity ratios give the period and restitution ratios the report shows.
+TEST(ReportOtherSet, ThePaperRowIsWhatDirectRunsUnderEachSetGive) {
+    // The report reads period and restitution from the trajectory sampled every 0.1 ms (the crossing interpolated,
+    // the velocities extrapolated from samples 2 steps out); `vssw free` from located events: they agree this well.
+    constexpr double kSampledAgainstLocated = 2e-4;
+    const std::vector<std::string> wall = {"--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--theta0", "0.5",
+                                           "--json"};
+    std::vector<std::string> paper_args = {"free", "--assumptions", "paper"}, mech_args = {"free", "--assumptions",
+                                                                                           "mechanism"};
+    paper_args.insert(paper_args.end(), wall.begin(), wall.end());
+    mech_args.insert(mech_args.end(), wall.begin(), wall.end());
+    const CliResult p = run_cli(paper_args), m = run_cli(mech_args);
+    ASSERT_EQ(p.code, 0) << p.err;
+    ASSERT_EQ(m.code, 0) << m.err;
+    const Json paper = Json::parse(p.out), mech = Json::parse(m.out);
+    const double period_ratio = first_impact(paper, "t") / first_impact(mech, "t");
+    const double restitution_ratio = (first_impact(paper, "theta_dot_after") / first_impact(paper, "theta_dot_before")) /
+                                     (first_impact(mech, "theta_dot_after") / first_impact(mech, "theta_dot_before"));
+
+    TempDir tmp("other_set_cli");
+    const fs::path out = tmp.path / "r";
+    const CliResult r = run_cli({"report", "--engines", "analytic", "--cases", "fig6-vssw/r0.5", "--no-plots", "--out",
+                                 out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Json j = Json::parse(read(out / "results.json"));
+    EXPECT_EQ(j["reference_assumptions"], "mechanism");
+    std::map<std::string, double> rel;
+    for (const Json& x : j["other_set"]["rows"]) rel[x["metric"].get<std::string>()] = x["rel_error"].get<double>();
+    EXPECT_NEAR(rel.at("period") + 1.0, period_ratio, kSampledAgainstLocated);
+    EXPECT_NEAR(rel.at("restitution") + 1.0, restitution_ratio, kSampledAgainstLocated);
+    // The sets differ (Eq. 19 0.951 against the whole mechanism's 0.825): the check has something to find.
+    EXPECT_GT(restitution_ratio - 1.0, 100 * kSampledAgainstLocated);
+}
+
+// --assumptions chooses the reference; the other set gets the row. A word that names no set, and a set the suite
+// file contradicts, are refused in one line before anything is written.
+TEST(ReportOtherSet, AssumptionsChooseTheReference) {
+    TempDir tmp("other_set_choose");
+    const fs::path out = tmp.path / "paper";
+    CliResult r = run_cli({"report", "--engines", "analytic", "--cases", "fig6-vssw/r0.5", "--no-plots",
+                           "--assumptions", "paper", "--out", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Json j = Json::parse(read(out / "results.json"));
+    EXPECT_EQ(j["reference_assumptions"], "paper");
+    EXPECT_EQ(j["other_set"]["engine"], "mechanism-model");
+    EXPECT_TRUE(contains(read(out / "report.md"), "| analytic, mechanism's assumptions |"));
+    const fs::path bad = tmp.path / "bad";
+    r = run_cli({"report", "--engines", "analytic", "--assumptions", "exact", "--out", bad.string()});
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_TRUE(contains(r.err, "vssw: error: --assumptions exact")) << r.err;
+    EXPECT_FALSE(fs::exists(bad));
+    const fs::path file = tmp.path / "paper-suite.toml";
+    std::ofstream(file) << suite_with("[assumptions]\nkinematics = \"paper\"\nimpact = \"eq19\"\nroller = \"bilateral\"\n",
+                                      "");
+    r = run_cli({"report", "--suite", file.string(), "--engines", "analytic", "--assumptions", "mechanism", "--out",
+                 bad.string()});
+    EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_TRUE(contains(r.err, "names the reference paper")) << r.err;
+    EXPECT_FALSE(fs::exists(bad));
 }

@@ -131,22 +131,7 @@ std::vector<EngineSummary> summarize(const ReportInput& in) {
             if (c.rows > 0) s.extremes.push_back({c.metric, c.worst_rel_error, c.case_id, c.rows, c.outside});
         }
         std::vector<std::string> parts;
-        const MetricExtreme* whole = nullptr;
-        for (const MetricExtreme& x : s.extremes)
-            if (x.metric == "restitution_whole_mechanism") whole = &x;
         for (const MetricExtreme& x : s.extremes) {
-            if (x.metric == "restitution_whole_mechanism") {
-                if (std::none_of(s.extremes.begin(), s.extremes.end(),
-                                 [](const MetricExtreme& y) { return y.metric == "restitution"; }))
-                    parts.push_back(fmt::format("restitution {} (vs whole mechanism)", percent(x.rel_error)));
-                continue;
-            }
-            if (x.metric == "restitution") {
-                std::string text = fmt::format("restitution {} (vs Eq. 19/Housner)", percent(x.rel_error));
-                if (whole != nullptr) text += fmt::format(" / {} (vs whole mechanism)", percent(whole->rel_error));
-                parts.push_back(text);
-                continue;
-            }
             if (x.metric == "overturned") {
                 parts.push_back(x.outside == 0 ? fmt::format("overturning agrees on {}/{}", x.rows, x.rows)
                                                : fmt::format("overturning differs on {}/{}", x.outside, x.rows));

@@ -55,7 +55,7 @@ double case_step(const ReportInput& in, const std::string& case_id);
 
 // Whether a case belongs to the error-against-step study (summaries and tables leave those out).
 bool is_step_case(const ReportInput& in, const std::string& case_id);
-// A metric's name in a summary line ("threshold", "restitution (vs Eq. 19/Housner)").
+// A metric's name in a summary line ("threshold", "restitution").
 std::string short_title(const std::string& metric);
 // |rel_error| <= target; false when it was not measured.
 bool within(double rel_error, double target);
@@ -97,7 +97,7 @@ struct MetricTable {
     std::vector<std::string> engines;
     std::vector<MetricTableRow> rows;
 };
-// The metrics in report order: threshold_g, period, restitution, restitution_whole_mechanism, then the others by name.
+// The metrics in report order: threshold_g, period, restitution, the history metrics, then the others by name.
 std::vector<std::string> metric_order(const compare::SuiteResults& results);
 std::vector<MetricTable> metric_tables(const ReportInput& in);
 
@@ -118,6 +118,16 @@ struct MatrixCell {
 // Engines in compared_engines order, metrics in metric_order; a cell for every pair where the engine has a row or a
 // failure of that metric.
 std::vector<MatrixCell> error_matrix(const ReportInput& in);
+
+// The analytic model under the set that is not the reference (compare::SuiteResults::other_set), measured as an engine
+// is: its cells as error_matrix computes an engine's, none when it did not run. Their `pass` is no verdict: the report
+// shows the numbers with no mark, and no engine's verdict, summary or exit status reads them
+// (validation/report_other_set.cpp).
+std::vector<MatrixCell> other_set_matrix(const ReportInput& in);
+// Its row's name, "analytic, paper's assumptions"; empty when it did not run.
+std::string other_set_label(const compare::SuiteResults& results);
+// One sentence: what the other set's assumptions change against the reference, in numbers; empty when it did not run.
+std::string other_set_finding(const ReportInput& in);
 
 // The error-against-step study: per engine, per free-vibration case it belongs to ("<wall>/r<r>"), per metric, the
 // points (dt, rel_error) in increasing dt.

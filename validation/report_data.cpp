@@ -56,21 +56,9 @@ Json suite_json(const ReportInput& in) {
             {"cases", cases}};
 }
 
-}  // namespace
-
-Json results_json(const ReportInput& in) {
-    const compare::SuiteResults& res = in.results;
-    Json engines = Json::array();
-    for (const compare::EngineRunInfo& e : res.engines)
-        engines.push_back({{"name", e.name}, {"version", e.version}, {"contact_scheme", multibody::contact_scheme(e.name).key},
-                           {"settings", settings_json(e.settings)}});
-
-    Json targets = Json::object();
-    for (const std::string& metric : metric_order(res))
-        if (const auto t = target_of(metric)) targets[metric] = *t;
-
+Json rows_json(const std::vector<compare::MetricRow>& metric_rows) {
     Json rows = Json::array();
-    for (const compare::MetricRow& r : res.rows) {
+    for (const compare::MetricRow& r : metric_rows) {
         const std::optional<double> target = target_of(r.metric);
         rows.push_back({{"case_id", r.case_id},
                         {"engine", r.engine},
@@ -84,10 +72,59 @@ Json results_json(const ReportInput& in) {
                         {"within_target", target ? Json(std::isfinite(r.rel_error) && std::abs(r.rel_error) <= *target)
                                                  : Json(nullptr)}});
     }
+    return rows;
+}
 
+Json failures_json(const std::vector<compare::CaseFailure>& case_failures) {
     Json failures = Json::array();
-    for (const compare::CaseFailure& f : res.failures)
+    for (const compare::CaseFailure& f : case_failures)
         failures.push_back({{"case_id", f.case_id}, {"engine", f.engine}, {"message", f.message}});
+    return failures;
+}
+
+// A matrix cell without its verdict (the caller adds `pass` where the cell has one).
+Json matrix_cell_json(const MatrixCell& c) {
+    return {{"engine", c.engine},
+            {"metric", c.metric},
+            {"worst_rel_error", finite_or_null(c.worst_rel_error)},
+            {"case_id", c.case_id},
+            {"target", c.target ? Json(*c.target) : Json(nullptr)},
+            {"rows", c.rows},
+            {"not_measured", c.not_measured},
+            {"failed", c.failed}};
+}
+
+// The analytic model under the other set (compare::OtherSetRun): its rows and cells, no verdict; null when it did not
+// run.
+Json other_set_json(const ReportInput& in) {
+    if (!in.results.other_set) return nullptr;
+    const compare::OtherSetRun& other = *in.results.other_set;
+    Json matrix = Json::array();
+    for (const MatrixCell& c : other_set_matrix(in)) matrix.push_back(matrix_cell_json(c));
+    return {{"engine", other.engine},
+            {"assumptions", to_string(other.set)},
+            {"label", other_set_label(in.results)},
+            {"finding", other_set_finding(in)},
+            {"matrix", matrix},
+            {"rows", rows_json(other.rows)},
+            {"failures", failures_json(other.failures)}};
+}
+
+}  // namespace
+
+Json results_json(const ReportInput& in) {
+    const compare::SuiteResults& res = in.results;
+    Json engines = Json::array();
+    for (const compare::EngineRunInfo& e : res.engines)
+        engines.push_back({{"name", e.name}, {"version", e.version}, {"contact_scheme", multibody::contact_scheme(e.name).key},
+                           {"settings", settings_json(e.settings)}});
+
+    Json targets = Json::object();
+    for (const std::string& metric : metric_order(res))
+        if (const auto t = target_of(metric)) targets[metric] = *t;
+
+    const Json rows = rows_json(res.rows);
+    const Json failures = failures_json(res.failures);
 
     Json model_warnings = Json::array();
     for (const compare::ModelWarning& w : res.model_warnings)
@@ -121,16 +158,11 @@ Json results_json(const ReportInput& in) {
     }
 
     Json matrix = Json::array();
-    for (const MatrixCell& c : error_matrix(in))
-        matrix.push_back({{"engine", c.engine},
-                          {"metric", c.metric},
-                          {"worst_rel_error", finite_or_null(c.worst_rel_error)},
-                          {"case_id", c.case_id},
-                          {"target", c.target ? Json(*c.target) : Json(nullptr)},
-                          {"pass", c.target ? Json(c.pass) : Json(nullptr)},
-                          {"rows", c.rows},
-                          {"not_measured", c.not_measured},
-                          {"failed", c.failed}});
+    for (const MatrixCell& c : error_matrix(in)) {
+        Json j = matrix_cell_json(c);
+        j["pass"] = c.target ? Json(c.pass) : Json(nullptr);
+        matrix.push_back(j);
+    }
 
     Json traces = Json::array();
     for (const compare::Trace& t : res.traces)
@@ -141,6 +173,7 @@ Json results_json(const ReportInput& in) {
                       {"report_format", kReportFormat}}},
             {"date", in.meta.date},
             {"suite", suite_json(in)},
+            {"reference_assumptions", to_string(res.reference)},
             {"engines", engines},
             {"targets", targets},
             {"rows", rows},
@@ -148,6 +181,7 @@ Json results_json(const ReportInput& in) {
             {"model_warnings", model_warnings},
             {"summary", summary},
             {"matrix", matrix},
+            {"other_set", other_set_json(in)},
             {"findings", findings(in)},
             {"step_study", steps},
             {"traces", traces},

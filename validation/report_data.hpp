@@ -11,7 +11,9 @@
 //   with_target, not_measured, failures, max_error {metric: {rel_error, case_id}}}], findings [text],
 //   step_study [{engine, case_id, metric, dt [], rel_error [], order}], traces [{case_id, engine, assumption,
 //   samples}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],
-//   plots {made, note}, wall_time_s, threads. Every NaN is null.
+//   reference_assumptions ("mechanism" or "paper"), other_set {engine, assumptions, label, finding, matrix [as
+//   matrix, no pass], rows [as rows], failures} (the analytic model under the other set, no verdict; null when it did
+//   not run), plots {made, note}, wall_time_s, threads. Every NaN is null.
 // metrics.csv:  case_id,engine,metric,unit,reference,analytic,engine_value,rel_error   (one line per row)
 // failures.csv: case_id,engine,message
 // traces.csv:   case_id,engine,t,theta1_over_alpha,assumption   (every trace, one line per sample; t to

@@ -60,11 +60,12 @@ DocBlock introduction(const ReportInput& in) {
     const std::set<std::string> case_ids = cases_that_ran(res);
     return paragraph(fmt::format(
         "Made {} by vssw{} on {} case{} ({} thread{}, {:.1f} s). Every engine is measured against the analytic model "
-        "of Sorrentino, Masiani & Griffith (2008) with exact kinematics, every metric by the same code for every "
-        "backend; relative error = engine / reference - 1. Targets: threshold {:g} %, period {:g} %, restitution "
-        "{:g} %.",
+        "of Sorrentino, Masiani & Griffith (2008) under the assumption set {}, every metric by the same code for "
+        "every backend; relative error = engine / reference - 1. Targets: threshold {:g} %, period {:g} %, "
+        "restitution {:g} %.",
         in.meta.date, in.meta.commit.empty() ? "" : " " + in.meta.commit, case_ids.size(),
         case_ids.size() == 1 ? "" : "s", res.threads, res.threads == 1 ? "" : "s", res.wall_time_s,
+        describe(res.reference),
         100.0 * kReportThresholdTarget, 100.0 * kReportPeriodTarget, 100.0 * kReportRestitutionTarget));
 }
 
@@ -114,16 +115,37 @@ std::vector<std::string> matrix_metrics(const ReportInput& in, const std::vector
     return metrics;
 }
 
+// The analytic model under the other set, in the matrix's columns: its numbers with no verdict mark (no pass, no
+// fail), the earthquake columns empty (the record ensemble runs the engines only).
+std::vector<DocCell> other_set_row(const ReportInput& in, const std::vector<std::string>& metrics) {
+    const std::vector<MatrixCell> cells = other_set_matrix(in);
+    std::vector<DocCell> row = {{other_set_label(in.results)}, {"- (a model, no contacts)"}};
+    for (const std::string& m : metrics) {
+        const auto c = std::find_if(cells.begin(), cells.end(), [&](const MatrixCell& x) { return x.metric == m; });
+        DocCell cell{c == cells.end() ? "-" : matrix_text(*c)};
+        if (c != cells.end() && !c->case_id.empty())
+            cell.note = fmt::format("largest difference on {}; what the {} set's assumptions change, no verdict",
+                                    c->case_id, to_string(in.results.other_set->set));
+        row.push_back(std::move(cell));
+    }
+    if (in.earthquake)
+        for (std::size_t i = 0; i < earthquake_matrix_header().size(); ++i) row.push_back({"-"});
+    return row;
+}
+
 void add_matrix(Blocks& b, const ReportInput& in) {
     b.push_back(heading(2, "At a glance"));
     const std::vector<MatrixCell> cells = error_matrix(in);
     // Grouped by contact scheme: engines of one scheme share their dominant error (multibody/contact_schemes.hpp).
     const std::vector<std::string> engines = multibody::ordered_by_scheme(compared_engines(in.results));
-    if (cells.empty() || engines.empty()) {
+    // The columns: the metrics some engine, or the other set, was measured on.
+    std::vector<MatrixCell> all = cells;
+    for (MatrixCell& c : other_set_matrix(in)) all.push_back(std::move(c));
+    const std::vector<std::string> metrics = matrix_metrics(in, all);
+    if (metrics.empty()) {
         b.push_back(paragraph("No engine was compared (the analytic model only)."));
         return;
     }
-    const std::vector<std::string> metrics = matrix_metrics(in, cells);
     std::vector<std::string> header = {"engine", "contact scheme"};
     for (const std::string& m : metrics)  // each has a target (matrix_metrics)
         header.push_back(fmt::format("{} (target {:g} %)", short_title(m), 100.0 * *target_of(m)));
@@ -152,11 +174,20 @@ void add_matrix(Blocks& b, const ReportInput& in) {
             for (DocCell& c : earthquake_matrix_cells(*in.earthquake, e)) row.push_back(std::move(c));
         t.rows.push_back(std::move(row));
     }
+    if (in.results.other_set) t.rows.push_back(other_set_row(in, metrics));
     b.push_back(t);
     b.push_back(paragraph(
         "Each cell: the engine's error of largest magnitude over the cases of that metric (engine / reference - 1; the "
         "step study left out), passed when every case is measured and within the target, failed otherwise. The "
         "tables under \"Metrics\" give every case, the single runs under records too (no target, no verdict)."));
+    if (in.results.other_set)
+        b.push_back(paragraph(fmt::format(
+            "The last row, {}, is the analytic model under the set {}, measured exactly as an engine against the "
+            "reference (the set {}): its numbers are the cost of the {} set's assumptions, not an error of any "
+            "engine, and carry no verdict (no mark, and no effect on any engine's cells or on the report's exit "
+            "status).",
+            other_set_label(in.results), describe(in.results.other_set->set), to_string(in.results.reference),
+            to_string(in.results.other_set->set))));
     b.push_back(paragraph(schemes_text(engines)));
     if (in.earthquake)
         for (DocBlock& block : earthquake_glance(*in.earthquake)) b.push_back(std::move(block));
@@ -209,6 +240,11 @@ void add_findings(Blocks& b, const ReportInput& in) {
         if (found.empty()) continue;
         b.push_back(heading(3, multibody::engine_display_name(engine)));
         b.push_back(list(found));
+        any_finding = true;
+    }
+    if (const std::string other = other_set_finding(in); !other.empty()) {
+        b.push_back(heading(3, other_set_label(in.results)));
+        b.push_back(list({other}));
         any_finding = true;
     }
     if (!any_finding) b.push_back(paragraph("Nothing to say: no engine results."));

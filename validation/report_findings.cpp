@@ -1,7 +1,6 @@
 // The findings of `vssw report` in plain words (validation/report.hpp): per engine, each metric against its target, the
-// restitution gap the whole-mechanism impact explains, the records a wall rocks much less under, the restitution gaps
-// nothing explains, the error against the step, the failures. Each sentence is built from the numbers and says only
-// what they show.
+// records a wall rocks much less under, the error against the step, the failures. Each sentence is built from the
+// numbers and says only what they show.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,8 +27,6 @@ constexpr double kRegularFit = 0.9;
 constexpr double kFlatSpread = 1.5;
 
 using Rows = std::vector<const compare::MetricRow*>;
-// A case's restitution against Eq. (19) and against the whole-mechanism impact.
-using RestitutionPair = std::pair<const compare::MetricRow*, const compare::MetricRow*>;
 
 std::string possessive(const std::string& engine) { return multibody::engine_display_name(engine) + "'s"; }
 
@@ -87,9 +84,7 @@ std::string metric_finding(const std::string& who, const std::string& metric, co
         return fmt::format("{} time histories differ from the analytic model's by an rms of up to {:.2g} % of the "
                            "analytic peak rotation ({}); no target is set on it.",
                            who, 100.0 * std::abs(worst->rel_error), worst->case_id);
-    const std::string title = metric == "restitution_whole_mechanism"
-                                  ? "restitution against the whole-mechanism plastic impact"
-                                  : metric_title(metric);
+    const std::string title = metric_title(metric);
     const std::optional<double> target = target_of(metric);
     if (!target)
         return fmt::format("{} {} differs from the analytic model's by up to {} ({}, {} case{}); the project sets no "
@@ -106,56 +101,8 @@ std::string metric_finding(const std::string& who, const std::string& metric, co
                        worst->case_id);
 }
 
-// The VSSW restitutions outside the target against Eq. (19): those within it against the whole-mechanism impact
-// (explained: the roller's impulse) and the others.
-struct RestitutionGaps {
-    std::vector<RestitutionPair> explained, unexplained;
-};
-
-RestitutionGaps restitution_gaps(const ReportInput& in, const std::string& engine) {
-    std::vector<RestitutionPair> pairs;
-    for (const compare::MetricRow* w : rows_of(in, engine, "restitution_whole_mechanism"))
-        for (const compare::MetricRow* e : rows_of(in, engine, "restitution"))
-            if (e->case_id == w->case_id) pairs.emplace_back(e, w);
-    RestitutionGaps gaps;
-    for (const auto& p : pairs) {
-        if (within(p.first->rel_error, kReportRestitutionTarget)) continue;
-        (within(p.second->rel_error, kReportRestitutionTarget) ? gaps.explained : gaps.unexplained).push_back(p);
-    }
-    return gaps;
-}
-
-// Is the gap to Eq. (19) the roller's impulse? Said only where the numbers say so (explained is not empty).
-std::string explained_restitution_finding(const std::string& who, const std::vector<RestitutionPair>& explained) {
-    double lo = explained[0].first->rel_error, hi = lo, whole = 0.0;
-    const compare::MetricRow* example = explained[0].first;
-    for (const auto& p : explained) {
-        lo = std::min(lo, p.first->rel_error);
-        hi = std::max(hi, p.first->rel_error);
-        whole = std::max(whole, std::abs(p.second->rel_error));
-        if (p.first->case_id.rfind("fig6-vssw", 0) == 0) example = p.first;
-    }
-    const std::string range = explained.size() == 1 ? percent(lo) : fmt::format("{} to {}", percent(lo), percent(hi));
-    return fmt::format(
-        "{} restitution is {} from the analytic model's impact (Eq. 19) on {} VSSW case{} (e.g. {} on {}), yet within "
-        "{:.2g} % of the whole-mechanism plastic impact on {}: its impact acts with every constraint of the new "
-        "mechanism, the roller included, and the roller's impulse, which Eq. (19) leaves out, accounts for the gap.",
-        who, range, explained.size(), explained.size() == 1 ? "" : "s", percent(example->rel_error),
-        example->case_id, 100.0 * whole, explained.size() == 1 ? "it" : "each of them");
-}
-
-std::string unexplained_restitution_finding(const std::string& who, const RestitutionPair& p) {
-    return fmt::format(
-        "{} restitution on {} is {} from Eq. (19) and {} from the whole-mechanism plastic impact: {}, but outside the "
-        "{:g} % target against both.",
-        who, p.first->case_id, percent(p.first->rel_error), percent(p.second->rel_error),
-        std::abs(p.second->rel_error) < std::abs(p.first->rel_error) ? "nearer the whole-mechanism value"
-                                                                      : "nearer Eq. (19)",
-        100.0 * kReportRestitutionTarget);
-}
-
 // Under the records: a wall that rocks much less than the analytic model, on which the engine's impacts keep less
-// energy than Eq. (19) in free vibration. Said only when both numbers are there.
+// energy than the reference's in free vibration. Said only when both numbers are there.
 std::vector<std::string> record_peak_findings(const ReportInput& in, const std::string& engine) {
     const std::string who = possessive(engine);
     std::map<std::string, Rows> low_peaks;  // by wall id
@@ -173,23 +120,14 @@ std::vector<std::string> record_peak_findings(const ReportInput& in, const std::
                 ++n;
             }
         if (n == 0 || sum / n > -kReportRestitutionTarget) continue;
-        std::vector<std::string> listed, whole;
-        for (const compare::MetricRow* r : peaks) {
+        std::vector<std::string> listed;
+        for (const compare::MetricRow* r : peaks)
             listed.push_back(fmt::format("{:.3g} alpha against {:.3g} on {}", r->engine_value, r->analytic,
                                          r->case_id));
-            for (const compare::MetricRow* w : rows_of(in, engine, "peak_rotation_whole_mechanism"))
-                if (w->case_id == r->case_id && std::isfinite(w->rel_error))
-                    whole.push_back(fmt::format("{:.3g} alpha, the engine's {} from it", w->analytic,
-                                                percent(w->rel_error)));
-        }
         out.push_back(fmt::format(
             "{} {} rocks much less than the analytic model under the records ({}): on the same wall its impacts keep "
-            "less energy than Eq. (19) (first-impact restitution {} on average over its free vibrations){}.",
-            who, wall_id, fmt::join(listed, "; "), percent(sum / n),
-            whole.empty() ? ""
-                          : fmt::format(", and the analytic model with the whole-mechanism impact in place of Eq. (19) "
-                                        "rocks as little ({})",
-                                        fmt::join(whole, "; "))));
+            "less energy than the reference's (first-impact restitution {} on average over its free vibrations).",
+            who, wall_id, fmt::join(listed, "; "), percent(sum / n)));
     }
     return out;
 }
@@ -242,10 +180,7 @@ std::vector<std::string> engine_findings(const ReportInput& in, const std::strin
         const Rows rows = rows_of(in, engine, metric);
         if (!rows.empty()) out.push_back(metric_finding(who, metric, rows));
     }
-    const RestitutionGaps gaps = restitution_gaps(in, engine);
-    if (!gaps.explained.empty()) out.push_back(explained_restitution_finding(who, gaps.explained));
     for (std::string& s : record_peak_findings(in, engine)) out.push_back(std::move(s));
-    for (const RestitutionPair& p : gaps.unexplained) out.push_back(unexplained_restitution_finding(who, p));
     for (const StepSeries& s : step_series(in))
         if (s.engine == engine && std::isfinite(s.order)) out.push_back(step_finding(engine, s));
     if (std::string failed = failure_finding(in, engine); !failed.empty()) out.push_back(std::move(failed));

@@ -46,7 +46,7 @@ constexpr double kBandRoom = 1.2;
 constexpr double kSmallestTarget = std::min({compare::kThresholdTarget, compare::kPeriodTarget,
                                              compare::kRestitutionTarget});
 
-// A case whose other traces (engines, the whole-mechanism model) all peak below this share of the reference's gets a
+// A case whose other traces (the engines') all peak below this share of the reference's gets a
 // second trace plot zoomed on them: below a third of the reference they span less than a third of its plot's height,
 // and El Centro's VSSW, 0.03 alpha against 0.47, is a flat line there.
 constexpr double kZoomRatio = 1.0 / 3.0;
@@ -56,21 +56,10 @@ constexpr double kZoomRatio = 1.0 / 3.0;
 // the first plot's time axis still covers.
 constexpr double kZoomMotionFraction = 0.1;
 
-// The legend's words for a trace.
-std::string trace_title(const compare::Trace& t, bool vssw) {
+// The legend's words for a trace: the analytic model's names its assumption set.
+std::string trace_title(const compare::Trace& t) {
     if (t.engine != "analytic") return multibody::engine_display_name(t.engine);
-    if (t.assumption == compare::kWholeMechanismImpact) return "analytic, whole-mechanism impact";
-    return vssw ? "analytic, Eq. (19) impact (reference)" : "analytic, Housner impact (reference)";
-}
-
-// Whether the case's wall is a VSSW: from the suite, else from a whole-mechanism trace (only a VSSW has one).
-bool case_is_vssw(const ReportInput& in, const std::string& case_id, const std::vector<const compare::Trace*>& traces) {
-    for (const compare::SuiteCase& c : in.suite.cases)
-        if (c.id == case_id)
-            for (const compare::SuiteWall& w : in.suite.walls)
-                if (w.id == c.wall_id && (w.scene.vssw || w.scene.parapet)) return w.scene.is_vssw();
-    return std::any_of(traces.begin(), traces.end(),
-                       [](const compare::Trace* t) { return t->assumption == compare::kWholeMechanismImpact; });
+    return t.assumption.empty() ? "analytic (reference)" : fmt::format("analytic, {} (reference)", t.assumption);
 }
 
 }  // namespace
@@ -170,7 +159,7 @@ namespace {
 
 // One trace plot: the traces inside the window, each simplified on the plot's pixel grid.
 PlotScript trace_script(const std::string& id, const std::string& name, const std::string& title,
-                        const std::vector<const compare::Trace*>& traces, const TraceWindow& w, bool vssw) {
+                        const std::vector<const compare::Trace*>& traces, const TraceWindow& w) {
     PlotScript s;
     s.plot = {kTraceSection, name, title, false};
     std::string plot_cmd;
@@ -197,15 +186,14 @@ PlotScript trace_script(const std::string& id, const std::string& name, const st
                      trace_number(t->theta1_over_alpha[at[k]], kTraceValueDigits) + '\n';
         s.dat += "\n\n";  // the next gnuplot index
         const bool analytic = t->engine == "analytic";
-        const bool whole = t->assumption == compare::kWholeMechanismImpact;
         // The engine's marker (io/palette.hpp) on a few of the line's points: the line reads without its colour.
         // No hover layer (gnuplot.hpp, gp_hover_layer): a trace has up to thousands of points, each a group with its
         // text in the SVG, which the page inlines: several times its size for values the .dat holds anyway.
         const std::size_t every = std::max<std::size_t>(1, kept.size() / kTraceMarkers);
         plot_cmd += fmt::format(
             "{}'{}.dat' index {} using 1:2 with linespoints lw {} dt {} pt {} ps 0.8 pi {} lc rgb '{}' title {}",
-            index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, analytic ? 2.2 : 1.4, whole ? 2 : 1,
-            engine_point(t->engine, !whole), every, engine_colour(t->engine), gp_string(trace_title(*t, vssw)));
+            index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, analytic ? 2.2 : 1.4, 1,
+            engine_point(t->engine, true), every, engine_colour(t->engine), gp_string(trace_title(*t)));
         ++index;
     }
     s.gp = gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
@@ -231,25 +219,18 @@ std::vector<PlotScript> trace_scripts(const ReportInput& in) {
         if (std::find(cases.begin(), cases.end(), t.case_id) == cases.end()) cases.push_back(t.case_id);
     std::vector<PlotScript> scripts;
     for (const std::string& id : cases) {
-        std::vector<const compare::Trace*> traces;  // the analytic model's first (the reference, then the others)
+        std::vector<const compare::Trace*> traces;  // the analytic model's first (the reference), then the engines'
         for (const compare::Trace& t : in.results.traces)
-            if (t.case_id == id && t.engine == "analytic" && t.assumption != compare::kWholeMechanismImpact)
-                traces.push_back(&t);
+            if (t.case_id == id && t.engine == "analytic") traces.push_back(&t);
         const std::size_t references = traces.size();
-        for (const compare::Trace& t : in.results.traces)
-            if (t.case_id == id && t.engine == "analytic" && t.assumption == compare::kWholeMechanismImpact)
-                traces.push_back(&t);
-        const bool whole = traces.size() > references;
         for (const compare::Trace& t : in.results.traces)
             if (t.case_id == id && t.engine != "analytic") traces.push_back(&t);
         if (traces.empty()) continue;
-        const bool vssw = case_is_vssw(in, id, traces);
         scripts.push_back(trace_script(id, "trace_" + file_stem(id),
-                                       fmt::format("{}: theta1 / alpha, the analytic model{} and engines", id,
-                                                   whole ? " under each impact law the report measures against" : ""),
-                                       traces, trace_window(traces, kMotionFraction), vssw));
-        // When everything else rocks far less than the reference, a second plot zooms on it (the reference then
-        // leaves the frame): an engine's small response and the model that explains it, seen at their own scale.
+                                       fmt::format("{}: theta1 / alpha, the analytic model and engines", id), traces,
+                                       trace_window(traces, kMotionFraction)));
+        // When every engine rocks far less than the reference, a second plot zooms on them (the reference then
+        // leaves the frame): an engine's small response seen at its own scale.
         if (references == 0 || references == traces.size()) continue;
         double reference = 0.0, others = 0.0;
         for (std::size_t i = 0; i < traces.size(); ++i) {
@@ -261,9 +242,9 @@ std::vector<PlotScript> trace_scripts(const ReportInput& in) {
                                                        traces.end());
         scripts.push_back(trace_script(
             id, "trace_" + file_stem(id) + "_zoom",
-            fmt::format("{}: zoomed on the engines{} (the reference, up to {:.3g} alpha, is in the plot above)", id,
-                        whole ? " and the whole-mechanism impact" : "", reference),
-            small, trace_window(small, kZoomMotionFraction), vssw));
+            fmt::format("{}: zoomed on the engines (the reference, up to {:.3g} alpha, is in the plot above)", id,
+                        reference),
+            small, trace_window(small, kZoomMotionFraction)));
     }
     return scripts;
 }

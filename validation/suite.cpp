@@ -17,7 +17,6 @@
 
 #include <fmt/format.h>
 
-#include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
 #include "compare/case_runner.hpp"
@@ -26,6 +25,7 @@
 #include "multibody/analytic_engine.hpp"
 #include "multibody/settings_reader.hpp"
 #include "multibody/step_resolution.hpp"
+#include "validation/assumption_set_engine.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -82,7 +82,7 @@ MetricRow make_row(const std::string& case_id, const std::string& engine, const 
     return {case_id, engine, metric, analytic, engine_value, rel_error, reference, unit_of(metric)};
 }
 
-// assumption: the analytic model's (kPaperModel, kWholeMechanismImpact); "" for an engine's trace.
+// assumption: the analytic model's set ("mechanism", "paper"); "" for an engine's trace.
 Trace make_trace(const std::string& case_id, const std::string& engine, const multibody::Trajectory& traj,
                  double alpha, double t_max, const std::string& assumption) {
     Trace tr{case_id, engine, {}, {}, assumption};
@@ -141,8 +141,8 @@ double rms_difference(const multibody::Trajectory& reference, const multibody::T
 }
 
 // The analytic model's side of a case, computed once by whichever of the case's tasks (the reference's or an
-// engine's) comes first and shared by the others: its reference value does not depend on the engine
-// (analytic_reference_settings does not depend on the engine), and before this each engine's task ran it again
+// engine's) comes first and shared by the others: its reference value does not depend on the engine (the reference's
+// settings, TaskContext::reference_settings, do not depend on the engine), and before this each engine's task ran it again
 // (a threshold bisection, a free vibration, two record runs per engine). The history trajectory is released by the
 // last task that reads it.
 struct CaseReference {
@@ -151,9 +151,7 @@ struct CaseReference {
     double threshold_g = kNaN;                  // threshold
     FreeVibrationResult free;                   // free, step: the analytic run, its trajectory dropped
     std::optional<Trace> free_trace;            // free: the analytic trace when traces are kept
-    std::optional<Trace> whole_mechanism_trace;  // free, history (VSSW): the whole-mechanism impact's, likewise
     multibody::Trajectory history;              // history: the analytic run (engines' RMS difference)
-    double whole_mechanism_peak = kNaN;         // history, VSSW: peak with the whole mechanism's impact [alpha]
     std::atomic<int> users{0};                  // tasks of the case still to read `history`
 };
 
@@ -165,6 +163,10 @@ struct TaskContext {
     const GroundMotion* record;
     bool keep_traces;
     CaseReference& ref;
+    // The reference: AnalyticEngine's settings under the suite's set (multibody::analytic_settings), and its name for
+    // the traces.
+    const EngineSettings& reference_settings;
+    const char* reference_set;
 };
 
 FreeVibrationOptions free_options(const TaskContext& x) {
@@ -184,38 +186,20 @@ Excitation history_excitation(const TaskContext& x) {
     return ex;
 }
 
-// The analytic model's settings with the whole mechanism's plastic impact in place of Eq. (19) (the analytic backend's
-// setting `restitution`).
-EngineSettings whole_mechanism_settings(const VsswGeometry& wall) {
-    EngineSettings s = analytic_reference_settings();
-    s.knobs["restitution"] = restitution_whole_mechanism(wall);
-    return s;
-}
-
 // The analytic model's runs of the case (CaseReference), once.
 void compute_reference(const TaskContext& x) {
     const AnalyticEngine analytic;
     CaseReference& ref = x.ref;
     switch (x.c.kind) {
         case CaseKind::threshold:
-            ref.threshold_g = find_threshold(analytic, analytic_reference_settings(), x.wall.scene).value_g;
+            ref.threshold_g = find_threshold(analytic, x.reference_settings, x.wall.scene).value_g;
             return;
         case CaseKind::free:
         case CaseKind::step: {
-            ref.free = run_free_vibration(analytic, analytic_reference_settings(), x.wall.scene, free_options(x));
-            if (x.keep_traces && x.c.kind == CaseKind::free) {
+            ref.free = run_free_vibration(analytic, x.reference_settings, x.wall.scene, free_options(x));
+            if (x.keep_traces && x.c.kind == CaseKind::free)
                 ref.free_trace = make_trace(x.c.id, kReferenceEngine, ref.free.trajectory, x.wall.scene.alpha(),
-                                            kFreeTraceSeconds, kPaperModel);
-                // The same release with the whole mechanism's impact: the trace the engines' free rocking is
-                // measured against in restitution_whole_mechanism (a few ms of the analytic model).
-                if (x.wall.scene.vssw) {
-                    const FreeVibrationResult whole = run_free_vibration(
-                        analytic, whole_mechanism_settings(*x.wall.scene.vssw), x.wall.scene, free_options(x));
-                    ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole.trajectory,
-                                                           x.wall.scene.alpha(), kFreeTraceSeconds,
-                                                           kWholeMechanismImpact);
-                }
-            }
+                                            kFreeTraceSeconds, x.reference_set);
             // The rows need its metrics only (warnings kept). Swapped out: `samples = {}` is the initializer-list
             // assignment, which keeps the capacity (it held 70 MB of the report's parent this way).
             std::vector<multibody::TrajectorySample>().swap(ref.free.trajectory.samples);
@@ -223,23 +207,9 @@ void compute_reference(const TaskContext& x) {
         }
         case CaseKind::history: {
             const Excitation ex = history_excitation(x);
-            EngineSettings sampled = analytic_reference_settings();
+            EngineSettings sampled = x.reference_settings;
             sampled.sample_dt = kHistoryReferenceSampleDt;
             ref.history = analytic.simulate(x.wall.scene, ex, sampled);
-            // A VSSW's peak rotation against the analytic model run with the whole mechanism's plastic impact in place
-            // of Eq. (19) (the impact the engines make: docs/model/engines-and-metrics.md): does the impact law account
-            // for a difference in peaks?
-            if (x.wall.scene.vssw) {
-                EngineSettings whole_settings = whole_mechanism_settings(*x.wall.scene.vssw);
-                whole_settings.sample_dt = kHistoryReferenceSampleDt;
-                const multibody::Trajectory whole = analytic.simulate(x.wall.scene, ex, whole_settings);
-                ref.whole_mechanism_peak = peak_rotation(whole).value / x.wall.scene.alpha();
-                if (x.keep_traces) {
-                    ref.whole_mechanism_trace = make_trace(x.c.id, kReferenceEngine, whole, x.wall.scene.alpha(),
-                                                           std::numeric_limits<double>::infinity(),
-                                                           kWholeMechanismImpact);
-                }
-            }
             return;
         }
     }
@@ -274,13 +244,6 @@ void free_rows(const TaskContext& x, const FreeVibrationResult& a, const FreeVib
                                 "analytic model"));
     out.rows.push_back(make_row(x.c.id, name, "restitution", a.restitution.value_or(kNaN),
                                 e.restitution.value_or(kNaN), "analytic model"));
-    if (x.wall.scene.vssw) {
-        const double whole = restitution_whole_mechanism(*x.wall.scene.vssw);
-        // The analytic model's own row holds the closed form on both sides (its impact law is Eq. 19's).
-        out.rows.push_back(make_row(x.c.id, name, "restitution_whole_mechanism", whole,
-                                    x.reference ? whole : e.restitution.value_or(kNaN),
-                                    "whole-mechanism plastic impact (roller acting)"));
-    }
 }
 
 void free_task(const TaskContext& x, TaskOutput& out) {
@@ -289,7 +252,6 @@ void free_task(const TaskContext& x, TaskOutput& out) {
         free_rows(x, ref.free, ref.free, out);
         out.model_warnings = ref.free.trajectory.warnings;
         if (ref.free_trace) out.traces.push_back(*ref.free_trace);
-        if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
         return;
     }
     EngineSettings settings = case_settings(x.c, x.engine);
@@ -320,14 +282,6 @@ void history_rows(const TaskContext& x, const multibody::Trajectory& a, const mu
     out.rows.push_back(make_row(x.c.id, name, "rms_difference", peak_a, rms, rms / peak_a, "analytic model"));
 }
 
-void whole_mechanism_peak_row(const TaskContext& x, const multibody::Trajectory& e, TaskOutput& out) {
-    if (!x.wall.scene.vssw) return;
-    const double peak_w = x.ref.whole_mechanism_peak;
-    const double peak_e = x.reference ? peak_w : peak_rotation(e).value / x.wall.scene.alpha();
-    out.rows.push_back(make_row(x.c.id, x.engine.name(), "peak_rotation_whole_mechanism", peak_w, peak_e,
-                                "analytic model with the whole-mechanism impact"));
-}
-
 void history_task(const TaskContext& x, TaskOutput& out) {
     CaseReference& ref = x.ref;
     // The last task of the case to read the analytic trajectory releases it, however this one ends.
@@ -345,16 +299,13 @@ void history_task(const TaskContext& x, TaskOutput& out) {
     if (x.reference) {
         history_rows(x, a, a, out);
         out.model_warnings = a.warnings;
-        whole_mechanism_peak_row(x, a, out);
         if (x.keep_traces)
-            out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, x.wall.scene.alpha(), all, kPaperModel));
-        if (ref.whole_mechanism_trace) out.traces.push_back(*ref.whole_mechanism_trace);
+            out.traces.push_back(make_trace(x.c.id, x.engine.name(), a, x.wall.scene.alpha(), all, x.reference_set));
         return;
     }
     const multibody::Trajectory e =
         x.engine.simulate(x.wall.scene, history_excitation(x), case_settings(x.c, x.engine));
     history_rows(x, a, e, out);
-    whole_mechanism_peak_row(x, e, out);
     if (x.keep_traces) out.traces.push_back(make_trace(x.c.id, x.engine.name(), e, x.wall.scene.alpha(), all, ""));
 }
 
@@ -450,6 +401,8 @@ Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids)
     Suite out;
     out.name = suite.name;  // the cases keep their ids and meaning: results name the suite they come from
     out.engine_settings = suite.engine_settings;
+    out.reference = suite.reference;
+    out.reference_named = suite.reference_named;
     std::set<std::string> walls, records;
     for (const SuiteCase& c : suite.cases) {
         if (!wanted.count(c.id)) continue;
@@ -548,7 +501,7 @@ std::vector<CaseTask> plan_tasks(const Suite& suite, const SuiteInputs& in,
     return tasks;
 }
 
-// The tasks' outputs into the results, in task order.
+// The tasks' outputs into the results, in task order; the other set's (OtherSetRun) into results.other_set.
 void collect(const Suite& suite, const std::vector<const multibody::Engine*>& engines,
              const std::vector<CaseTask>& tasks, std::vector<TaskOutput>& outputs, SuiteResults& results) {
     for (std::size_t ti = 0; ti < tasks.size(); ++ti) {
@@ -556,6 +509,11 @@ void collect(const Suite& suite, const std::vector<const multibody::Engine*>& en
         const SuiteCase& c = suite.cases[tasks[ti].case_index];
         const std::string engine = engines[tasks[ti].engine]->name();
         results.task_times.push_back({c.id, c.kind, engine, o.cpu_s});
+        if (results.other_set && engine == results.other_set->engine) {
+            if (o.failure) results.other_set->failures.push_back({c.id, engine, *o.failure});
+            for (MetricRow& r : o.rows) results.other_set->rows.push_back(std::move(r));
+            continue;  // its traces are not drawn: the report shows its numbers only
+        }
         if (o.failure) results.failures.push_back({c.id, engine, *o.failure});
         for (std::string& w : o.model_warnings) results.model_warnings.push_back({c.id, std::move(w)});
         for (MetricRow& r : o.rows) results.rows.push_back(std::move(r));
@@ -571,13 +529,26 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     require(options.threads >= 0, "threads", ">= 0 (0: the available cores)", options.threads);
 
     const AnalyticEngine reference_engine;
-    const std::vector<const multibody::Engine*> engines = suite_engines(reference_engine, given);
+    std::vector<const multibody::Engine*> engines = suite_engines(reference_engine, given);
     SuiteResults results;
     results.suite = suite.name;
+    results.reference = suite.reference;
     for (const multibody::Engine* e : engines)
         results.engines.push_back({e->name(), e->version(),
                                    suite.engine_settings.count(e->name()) ? suite.engine_settings.at(e->name())
                                                                           : e->default_settings()});
+    // The reference's settings: the analytic backend's defaults with the suite's set, whatever the engine.
+    const EngineSettings reference_settings = multibody::analytic_settings(assumptions_of(suite.reference));
+    const char* reference_set = to_string(suite.reference);
+    results.engines.front().settings = reference_settings;  // the analytic model runs as the reference
+    // The other set, last: an engine to the runner, apart in the results (collect).
+    const AssumptionSet other = suite.reference == AssumptionSet::paper ? AssumptionSet::mechanism
+                                                                         : AssumptionSet::paper;
+    const AssumptionSetEngine other_engine(other);
+    if (options.other_set) {
+        engines.push_back(&other_engine);
+        results.other_set = OtherSetRun{other, other_engine.name(), {}, {}};
+    }
 
     const SuiteInputs in = read_inputs(suite);
     std::vector<CaseReference> references(suite.cases.size());
@@ -586,7 +557,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     for (const CaseTask& task : tasks)
         require_task_steps({suite.cases[task.case_index], *in.case_walls[task.case_index], *engines[task.engine],
                             task.engine == 0, in.record_of(suite.cases[task.case_index]), false,
-                            references[task.case_index]});
+                            references[task.case_index], reference_settings, reference_set});
 
     // Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost the suite more
     // than they gain: a fork per simulation of this large process, for ODE's small share of the suite at its 1 ms step
@@ -604,8 +575,15 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
         const multibody::Engine& engine = *engines[task.engine];
         const double cpu_start = thread_cpu_seconds();
         try {
-            const TaskContext x{c, *in.case_walls[task.case_index], engine, task.engine == 0, in.record_of(c),
-                                options.keep_traces, references[task.case_index]};
+            const TaskContext x{c,
+                                *in.case_walls[task.case_index],
+                                engine,
+                                task.engine == 0,
+                                in.record_of(c),
+                                options.keep_traces,
+                                references[task.case_index],
+                                reference_settings,
+                                reference_set};
             run_task(x, outputs[ti]);
         } catch (const EngineFailure& e) {
             outputs[ti] = TaskOutput{};

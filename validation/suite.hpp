@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "analytic/assumption_sets.hpp"
 #include "analytic/ground_motion.hpp"
 #include "compare/experiments.hpp"
 #include "multibody/engine.hpp"
@@ -34,12 +35,12 @@ struct SuiteWall {
 
 enum class CaseKind {
     threshold,  // find_threshold: metric threshold_g
-    free,       // run_free_vibration released at r alpha: period, restitution, restitution_whole_mechanism (VSSW)
+    free,       // run_free_vibration released at r alpha: period, restitution
     history,    // a ground-motion record from rest: the history metrics below (metrics_of lists them)
     step,       // free vibration at a given engine step dt (error against step size): period, restitution
 };
 const char* to_string(CaseKind kind);
-// The metrics run_suite measures for a case of this kind (restitution_whole_mechanism only on a VSSW), as the one
+// The metrics run_suite measures for a case of this kind (a metric marked VSSW-only only on a VSSW), as the one
 // metric table says (compare/metric_catalog.hpp), in its order.
 std::vector<std::string> metrics_of(CaseKind kind, bool vssw);
 
@@ -76,6 +77,11 @@ struct Suite {
     // The suite-wide settings of an engine (a suite file's top-level [settings]), reported as the engine's settings;
     // without, its default_settings(). Each case carries the settings it runs at (SuiteCase::settings).
     std::map<std::string, multibody::EngineSettings> engine_settings;
+    // The reference: the analytic model under this assumption set (analytic/assumption_sets.hpp), every engine
+    // measured against it. A suite file may name it ([assumptions], one set: reference_named); `vssw report
+    // --assumptions` chooses it otherwise.
+    AssumptionSet reference = kDefaultAssumptionSet;
+    bool reference_named = false;  // the suite file named the set
 
     const SuiteWall& wall(const std::string& id) const;      // throws InputError on an unknown id
     const SuiteRecord& record(const std::string& id) const;  // throws InputError on an unknown id
@@ -91,29 +97,26 @@ Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids)
 
 // One measured quantity of one case for one engine. For the engine "analytic" the row holds the analytic model's
 // value in both `analytic` and `engine` (rel_error 0): its drift is checked against stored references (vssw check).
-// Metrics, by case kind (the analytic side is AnalyticEngine, exact kinematics; its record runs sampled every 1 ms,
-// their peaks its located turning points):
+// Metrics, by case kind (the analytic side is AnalyticEngine under the suite's reference set, Suite::reference: by
+// default the mechanism, exact kinematics; its record runs sampled every 1 ms, their peaks its located turning
+// points):
 //   threshold       threshold_g [g]: find_threshold on both sides
 //   free, step      period [s]: 4 x release to first impact; restitution []: theta1_dot ratio at the first impact
-//                   (the analytic model's impact law: Eq. 19 for a VSSW, Housner's e for a PW);
-//                   restitution_whole_mechanism [] (VSSW): the same engine value against the closed form
-//                   restitution_whole_mechanism() (reference "whole-mechanism plastic impact (roller acting)")
+//                   (the reference's impact law: under `mechanism` the whole mechanism's plastic impact for a VSSW,
+//                   under `paper` Eq. 19; Housner's e for a PW under either);
 //   history         peak_rotation [alpha]: max |theta1| / alpha; peak_time [s]: when it is reached;
 //                   overturned [0/1]: rel_error = engine - analytic (0 when they agree, +-1 when not);
 //                   rms_difference [alpha]: analytic = the analytic peak_rotation, engine = RMS over the analytic
-//                   run of (theta1_engine - theta1_analytic) / alpha, rel_error = that RMS / the analytic peak;
-//                   peak_rotation_whole_mechanism [alpha] (VSSW): the engine's peak against the analytic model run
-//                   with restitution_whole_mechanism() in place of Eq. (19)
+//                   run of (theta1_engine - theta1_analytic) / alpha, rel_error = that RMS / the analytic peak
 // A metric a run does not show (no impact, an unresolved impact) is NaN, never a missing row.
 struct MetricRow {
     std::string case_id;
     std::string engine;
-    std::string metric;     // "threshold_g", "period", "restitution", "restitution_whole_mechanism",
-                            // "peak_rotation", "rms_difference", ...
+    std::string metric;     // "threshold_g", "period", "restitution", "peak_rotation", "rms_difference", ...
     double analytic;        // the reference: the analytic model (or a closed form, see `reference`)
     double engine_value;
     double rel_error;       // engine_value / analytic - 1 (NaN when either is missing)
-    std::string reference;  // what `analytic` is: "analytic model", "whole-mechanism plastic impact", ...
+    std::string reference;  // what `analytic` is: "analytic model"
     std::string unit;       // "g", "s", "", "alpha"
 };
 
@@ -132,17 +135,13 @@ struct ModelWarning {
 };
 
 // A time history for the overlay plots: theta1 / alpha against t, decimated for plotting.
-// The analytic model's traces name the assumption they are run under (engines': empty): "paper", the report's
-// reference (Eq. 19's impact on a VSSW, Housner's on a PW; the bilateral roller), and on a VSSW's free and history
-// cases also "whole_mechanism_impact" (the whole mechanism's plastic impact in place of Eq. 19, what the metrics
-// restitution_whole_mechanism and peak_rotation_whole_mechanism measure against).
-constexpr const char* kPaperModel = "paper";
-constexpr const char* kWholeMechanismImpact = "whole_mechanism_impact";
+// The analytic model's traces name the assumption set they are run under, the reference's ("mechanism" or "paper");
+// an engine's: empty.
 struct Trace {
     std::string case_id;
     std::string engine;  // "analytic" for the reference
     std::vector<double> t, theta1_over_alpha;
-    std::string assumption;  // the analytic model's: kPaperModel or kWholeMechanismImpact; "" for an engine
+    std::string assumption;  // the analytic model's set (to_string(AssumptionSet)); "" for an engine
 };
 
 // CPU time of one (case, engine) task on its thread [s]: where a suite's time goes (bench/suite_profile.cpp). The
@@ -161,14 +160,26 @@ struct EngineRunInfo {
     multibody::EngineSettings settings;
 };
 
+// The analytic model under the set that is not the reference, measured like an engine against it
+// (validation/assumption_set_engine.hpp): its rows and failures are kept apart from the engines', so that no engine
+// verdict, summary, bound or CSV line counts them.
+struct OtherSetRun {
+    AssumptionSet set = AssumptionSet::paper;
+    std::string engine;  // its engine id in `rows`, "paper-model" or "mechanism-model"
+    std::vector<MetricRow> rows;
+    std::vector<CaseFailure> failures;
+};
+
 struct SuiteResults {
     std::string suite;
+    AssumptionSet reference = kDefaultAssumptionSet;  // the suite's (Suite::reference)
     std::vector<EngineRunInfo> engines;  // in the order asked, "analytic" first
     std::vector<MetricRow> rows;
     std::vector<CaseFailure> failures;
     std::vector<ModelWarning> model_warnings;  // from the analytic model's own runs (free vibrations, histories)
     std::vector<Trace> traces;
     std::vector<TaskTime> task_times;  // one per task, in (case, engine) order
+    std::optional<OtherSetRun> other_set;  // when RunOptions::other_set asked for it
     double wall_time_s = 0.0;
     int threads = 1;
 };
@@ -180,6 +191,9 @@ struct RunOptions {
     // Called after each (case, engine) task with the number done and the total (from the worker threads, serialised).
     std::function<void(int done, int total, const std::string& what)> progress;
     bool keep_traces = true;  // history and free cases keep decimated traces for the plots
+    // Also run the analytic model under the other assumption set as an engine (SuiteResults::other_set): the report's
+    // row on what the set's assumptions change. Its runs cost as the analytic model's (~0.3 ms per simulated second).
+    bool other_set = false;
 };
 
 // Runs every case of the suite for the analytic model and each named engine (unknown names: InputError naming the

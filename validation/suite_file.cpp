@@ -8,6 +8,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
@@ -24,21 +25,27 @@ std::string scene_key(const multibody::WallScene& s) {
     return fmt::format("parapet {} {} {} {} {}", s.parapet->b, s.parapet->h, s.parapet->xi, s.parapet->density, s.parapet->g);
 }
 
-// The report's reference is the analytic model with the exact kinematics, Eq. (19)'s impact and the bilateral roller
-// (compare::analytic_reference_settings): a suite file that asks for another one is refused, not ignored.
-void require_reference_assumptions(const StudySpec& spec) {
-    if (!spec.as_read.contains("assumptions")) return;
-    const nlohmann::json& given = spec.as_read["assumptions"];
-    const std::map<std::string, std::string> reference = {
-        {"kinematics", "exact"}, {"impact", "eq19"}, {"roller", "bilateral"}};
+// The report's reference is the analytic model under one assumption set (analytic/assumption_sets.hpp): a suite file
+// that gives assumptions names that set, none when it gives none. Assumptions that vary, or that are not one set's
+// (e.g. exact kinematics with Eq. 19's impact), are refused, not ignored: the engines are measured against one model.
+std::optional<AssumptionSet> reference_set(const StudySpec& spec) {
+    if (!spec.as_read.contains("assumptions")) return std::nullopt;
+    std::vector<Level> levels;
+    std::vector<std::string> given;
     for (const Axis& a : spec.assumptions) {
-        if (!given.contains(a.key)) continue;
-        const std::string& ref = reference.at(a.key);
-        if (a.levels.size() != 1 || to_text(a.levels.front()) != ref)
-            throw InputError(fmt::format("suite file {}: assumptions.{}: the report's reference is the analytic model "
-                                         "with {} {} (the engines are measured against it); a suite cannot change it",
-                                         spec.path, a.key, a.key, ref));
+        if (a.levels.size() != 1)
+            throw InputError(fmt::format("suite file {}: assumptions.{} varies: a suite's reference is one assumption "
+                                         "set, paper or mechanism",
+                                         spec.path, a.key));
+        levels.push_back(a.levels.front());
+        given.push_back(fmt::format("{} {}", a.key, to_text(a.levels.front())));
     }
+    const std::optional<AssumptionSet> set = set_of(assumptions_of(levels));
+    if (!set)
+        throw InputError(fmt::format("suite file {}: assumptions ({}) are neither set paper nor mechanism: a suite's "
+                                     "reference is one assumption set",
+                                     spec.path, fmt::join(given, ", ")));
+    return set;
 }
 
 // The settings of one engine's single run in a part (its [settings] and [part.settings], one level each); a part
@@ -67,7 +74,7 @@ std::map<std::string, multibody::EngineSettings> suite_engine_settings(const Stu
     std::map<std::string, multibody::EngineSettings> out;
     for (const EngineSpec& e : spec.engines) {
         if (e.settings.empty()) continue;
-        // The analytic model is the reference (require_reference_assumptions); its settings are the report's own.
+        // The analytic model is the reference (reference_set); its settings are the report's own.
         if (e.name == "analytic")
             throw InputError(fmt::format("suite file {}: settings.analytic: the report's reference, the analytic model, "
                                          "runs at its own settings; a suite cannot change them",
@@ -90,7 +97,10 @@ class SuiteBuilder {
 public:
     SuiteBuilder(const Grid& grid, const std::string& name) : grid_(grid), spec_(grid.spec()) {
         suite_.name = name;
-        require_reference_assumptions(spec_);
+        if (const std::optional<AssumptionSet> set = reference_set(spec_)) {
+            suite_.reference = *set;
+            suite_.reference_named = true;
+        }
         suite_.engine_settings = suite_engine_settings(spec_);
     }
 
