@@ -157,12 +157,15 @@ double eq18_threshold_ratio(double xi) {
     return 3.0 + 2.0 * std::sqrt(2.0 * xi / (1.0 + xi)) - 1.0 / (1.0 + xi);
 }
 
-// VSSW_MUTANT_EQ19_SIGN is defined only for the test program vssw_mutant_eq19 (tests/CMakeLists.txt): a core with a
-// wrong sign in Eq. (19), which `vssw check --bounds bounds/ci.toml` must catch. Never defined in vssw itself.
-#ifdef VSSW_MUTANT_EQ19_SIGN
-constexpr double kEq19I2Sign = +1.0;
-#else
 constexpr double kEq19I2Sign = -1.0;  // Eq. (19): m1 R1^2 + I1 - I2 k
+
+// VSSW_MUTANT_WHOLE_MECHANISM_SIGN is defined only for the test program vssw_mutant_impact (tests/CMakeLists.txt): a
+// core whose whole-mechanism impact, the reference's (the set mechanism), has k of the wrong sign, which `vssw check
+// --bounds bounds/ci.toml` must catch. Never defined in vssw itself.
+#ifdef VSSW_MUTANT_WHOLE_MECHANISM_SIGN
+constexpr double kWholeMechanismKSign = -1.0;
+#else
+constexpr double kWholeMechanismKSign = +1.0;  // the upper block's lever (2 + k)
 #endif
 
 double eq19_restitution(const VsswGeometry& w) {
@@ -178,7 +181,7 @@ double eq19_restitution(const VsswGeometry& w) {
 
 double restitution_whole_mechanism(const VsswGeometry& w) {
     const double m0 = sq(w.R1) * mass_coefficient(w, w.alpha1, w.alpha2);
-    return 1.0 - 2.0 * sq(w.b) * (w.m1 + w.m2 * sq(2.0 + w.k)) / m0;
+    return 1.0 - 2.0 * sq(w.b) * (w.m1 + w.m2 * sq(2.0 + kWholeMechanismKSign * w.k)) / m0;
 }
 
 double eq21_A(const VsswGeometry& w) {
