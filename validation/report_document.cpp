@@ -183,7 +183,7 @@ void add_matrix(Blocks& b, const ReportInput& in) {
     if (in.results.other_set)
         b.push_back(paragraph(fmt::format(
             "The last row, {}, is the analytic model under the set {}, measured exactly as an engine against the "
-            "reference (the set {}): its numbers are the cost of the {} set's assumptions, not an error of any "
+            "reference (the set {}): its numbers are the cost of the assumptions of the set {}, not an error of any "
             "engine, and carry no verdict (no mark, and no effect on any engine's cells or on the report's exit "
             "status).",
             other_set_label(in.results), describe(in.results.other_set->set), to_string(in.results.reference),

@@ -59,7 +59,7 @@ std::string other_set_finding(const ReportInput& in) {
     const compare::OtherSetRun& other = *in.results.other_set;
     return fmt::format(
         "The analytic model under the set {} differs from the reference, the set {}, by up to: {}. This is what the "
-        "{} set's assumptions change in the model, measured as an engine's error is; it is a finding about those "
+        "assumptions of the set {} change in the model, measured as an engine's error is; it is a finding about those "
         "assumptions, not an error of any engine, and carries no verdict.",
         describe(other.set), describe(in.results.reference), fmt::join(parts, "; "), to_string(other.set));
 }
