@@ -1604,8 +1604,7 @@ TEST(ReportOtherSet, AssumptionsChooseTheReference) {
     EXPECT_TRUE(contains(r.err, "vssw: error: --assumptions exact")) << r.err;
     EXPECT_FALSE(fs::exists(bad));
     const fs::path file = tmp.path / "paper-suite.toml";
-    std::ofstream(file) << suite_with("[assumptions]\nkinematics = \"paper\"\nimpact = \"eq19\"\nroller = \"bilateral\"\n",
-                                      "");
+    std::ofstream(file) << suite_with("[assumptions]\nset = \"paper\"\n", "");
     r = run_cli({"report", "--suite", file.string(), "--engines", "analytic", "--assumptions", "mechanism", "--out",
                  bad.string()});
     EXPECT_EQ(r.code, vssw::cli::kExitBadInput);
