@@ -29,6 +29,7 @@ R = [1.0, 1.5, 2.0, 2.5]
 hinge = 0.6
 xi = 0.1
 [assumptions]
+set = "paper"  # its roller bilateral, so that every combination below is a model (the size the test needs)
 kinematics = ["paper", "exact"]
 impact = ["eq19", "whole-mechanism"]
 [excitation]
