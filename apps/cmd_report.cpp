@@ -130,6 +130,7 @@ std::optional<study::EarthquakePart> run_earthquake(const ReportCommandOptions& 
     eq.plots = !o.no_plots;
     eq.gnuplot = o.gnuplot;
     eq.commit = VSSW_GIT_COMMIT;
+    eq.paper_model = true;  // the paper's model's row under records (analytic runs only: cheap)
     if (progress.on())
         eq.progress = [&progress](long done, long total, const std::string& what) {
             progress.show(done, total, "earthquake: " + what);
@@ -166,7 +167,8 @@ std::string report_footer() {
         "lo, hi, n, pass, failed_runs}, overturning_mcnemar {overturned_alone, stood_alone, failed_runs, p, pass},\n"
         "peak_log_ratio {value, lo, hi, n, median_ratio, runs, records, note, pass, target,\n"
         "band_half_width}, fragility_median_ratio {..., note, verdict, failed_replicates}, peak_ratio, inside_band}],\n"
-        "stand_ins [the same, with restitution_error], detection_limit_restitution_error}\n"
+        "stand_ins [the same, with restitution_error], detection_limit_restitution_error, paper_model [the same keys,\n"
+        "for the analytic model under the set paper: no verdict in the report; null when it did not run]}\n"
         "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"
         "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
         "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"

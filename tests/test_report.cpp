@@ -1168,9 +1168,11 @@ std::string small_ensemble(const fs::path& dir) {
                          "[0.55, 0.85]");
 }
 
-// An ensemble's runs from its results.csv: per (file, pga), per engine, its (peak, overturned).
+// An ensemble's runs from its results.csv: per (file, pga), per engine, its (peak, overturned). by_assumptions: the
+// analytic runs keyed "analytic" for the set mechanism (the reference) and "paper" for the set paper, the others
+// left out (the paper's model's ensemble, earthquake/paper-model).
 using PairedRows = std::map<std::pair<std::string, std::string>, std::map<std::string, std::pair<double, double>>>;
-PairedRows paired_rows(const fs::path& results_csv) {
+PairedRows paired_rows(const fs::path& results_csv, bool by_assumptions = false) {
     PairedRows runs;
     std::istringstream rows(read(results_csv));
     std::vector<std::string> header, f;
@@ -1179,7 +1181,13 @@ PairedRows paired_rows(const fs::path& results_csv) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
     };
     while (vssw::study::read_csv_record(rows, f)) {
-        auto& [peak, over] = runs[{f.at(col("file")), f.at(col("pga"))}][f.at(col("engine"))];
+        std::string key = f.at(col("engine"));
+        if (by_assumptions) {
+            const std::string parts = f.at(col("kinematics")) + " " + f.at(col("impact")) + " " + f.at(col("roller"));
+            if (parts != "exact whole-mechanism unilateral" && parts != "paper eq19 bilateral") continue;
+            key = parts == "paper eq19 bilateral" ? "paper" : "analytic";
+        }
+        auto& [peak, over] = runs[{f.at(col("file")), f.at(col("pga"))}][key];
         const double value = f.at(col("value")).empty() ? NAN : std::stod(f.at(col("value")));
         (f.at(col("metric")) == "overturned" ? over : peak) = value;
     }
@@ -1279,6 +1287,49 @@ TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
     EXPECT_TRUE(contains(r.out, "ODE under records: ")) << r.out;
     EXPECT_TRUE(contains(r.out, fmt::format("overturning b/c {}/{}, p ", b, c))) << r.out;
     EXPECT_TRUE(contains(r.out, "Under records: this ensemble ")) << r.out;
+}
+
+// The paper's model under records: paired run by run with the reference (the set mechanism) as an engine is, its
+// numbers computed here from its ensemble's rows, shown in the matrix with no mark while the engines' cells carry one.
+TEST(ReportEarthquake, ThePapersModelIsPairedWithTheReferenceAndCarriesNoMark) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    constexpr double kCsvDigits = 1e-12;  // results.csv's 17 significant digits, logs taken here
+    TempDir tmp("earthquake_paper");
+    const fs::path out = tmp.path / "report";
+    const CliResult r = run_cli({"report", "--engines", "ode", "--cases", "fig6-pw", "--no-plots", "--earthquake",
+                                 small_ensemble(tmp.path), "--out", out.string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const PairedRows runs = paired_rows(out / "earthquake" / "paper-model" / "results.csv", true);
+    ASSERT_EQ(runs.size(), 4u);  // 2 records x 2 levels, each with both sets
+    std::vector<double> pooled;
+    int b = 0, c = 0;
+    for (const auto& [run, by_set] : runs) {
+        ASSERT_EQ(by_set.size(), 2u) << run.first << " " << run.second;
+        b += by_set.at("paper").second == 1.0 && by_set.at("analytic").second == 0.0 ? 1 : 0;
+        c += by_set.at("paper").second == 0.0 && by_set.at("analytic").second == 1.0 ? 1 : 0;
+    }
+    for (const auto& [record, d] : log_peak_ratios(runs, "paper")) pooled.insert(pooled.end(), d.begin(), d.end());
+    const Json j = Json::parse(read(out / "results.json"));
+    const Json& paper = j["earthquake"]["paper_model"];
+    ASSERT_TRUE(paper.is_object()) << j["earthquake"];
+    EXPECT_EQ(paper["overturning_mcnemar"]["overturned_alone"], b);
+    EXPECT_EQ(paper["overturning_mcnemar"]["stood_alone"], c);
+    ASSERT_FALSE(pooled.empty());
+    EXPECT_NEAR(paper["peak_log_ratio"]["value"].get<double>(), middle(pooled), kCsvDigits);
+    // Its row in the matrix: the numbers, no mark; the engine's row has its marks (the check can tell them apart).
+    const std::vector<std::string> lines = lines_of(read(out / "report.md"));
+    const auto row_of = [&lines](const std::string& start) {
+        const auto it = std::find_if(lines.begin(), lines.end(),
+                                     [&start](const std::string& l) { return l.rfind(start, 0) == 0; });
+        return it == lines.end() ? std::string() : *it;
+    };
+    const std::string paper_row = row_of("| analytic, paper's assumptions |");
+    const std::string ode_row = row_of("| ODE | impulse stepping |");
+    ASSERT_FALSE(paper_row.empty() || ode_row.empty());
+    EXPECT_TRUE(contains(paper_row, fmt::format("{}/{}, p ", b, c))) << paper_row;
+    EXPECT_TRUE(contains(paper_row, fmt::format("{:.3f}", std::exp(middle(pooled))))) << paper_row;
+    for (const char* mark : {"\u2713", "\u2717"}) EXPECT_FALSE(contains(paper_row, mark)) << paper_row;
+    EXPECT_TRUE(contains(ode_row, "\u2713") || contains(ode_row, "\u2717")) << ode_row;
 }
 
 // From 6 records the peaks' interval is resolved: the lowest and highest of the records' own medians of d (the sign

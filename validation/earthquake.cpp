@@ -109,6 +109,26 @@ StudySpec settings_spec(const std::string& file, const std::string& engine, cons
     return spec;
 }
 
+// The ensemble for the analytic model alone, its three assumptions each at the two sets' values: the reference
+// (the set mechanism, which ensemble_measures() prefers) and the set paper among the series, so that the paper's model
+// is paired run by run with the reference as an engine is. The other combinations are analytic runs too (milliseconds
+// each) and are not judged; the paper's kinematics with the unilateral roller is no model and is skipped.
+StudySpec assumption_sets_spec(const std::string& file) {
+    const StudySpec read = read_study_file(file);
+    Json doc = read.as_read;
+    doc["engines"] = Json::array({"analytic"});
+    doc.erase("settings");
+    if (doc.contains("part") && doc["part"].is_array())
+        for (Json& part : doc["part"]) part.erase("settings");
+    if (doc.contains("excitation") && doc["excitation"].is_object()) doc["excitation"].erase("band");
+    doc["assumptions"] = Json{{"kinematics", Json::array({"exact", "paper"})},
+                              {"impact", Json::array({"whole-mechanism", "eq19"})},
+                              {"roller", Json::array({"unilateral", "bilateral"})}};
+    StudySpec spec = study_from_json(nlohmann::json::parse(dump_json(doc)), file, read.base_dir);
+    spec.path = read.path;
+    return spec;
+}
+
 // A series' settings text ("dt=0.001 cfm=1e-05") as an object of numbers.
 Json settings_of(const std::string& text) {
     Json out = Json::object();
@@ -209,6 +229,33 @@ std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const
     return out;
 }
 
+namespace {
+
+// The paper's model judged as an engine against the reference on the report's ensemble (run into dir).
+std::optional<EarthquakeVerdict> judge_paper_model(const std::string& study_file, const std::filesystem::path& dir,
+                                                   const EarthquakeRunOptions& options) {
+    const Grid grid(assumption_sets_spec(study_file));
+    StudyRunOptions run;
+    run.threads = options.threads;
+    run.commit = options.commit;
+    run.progress = options.progress;
+    {
+        const FolderLock lock = prepare_study_dir(grid, dir, run);
+        run_study(grid, dir, run);
+    }
+    const StudyData d = read_study_data(dir);
+    const EnsembleMeasures e = ensemble_measures(d);
+    for (const SeriesMeasures& m : e.measures)
+        if (d.series[m.series].set == to_string(AssumptionSet::paper)) {
+            EarthquakeVerdict v = judge_series("analytic", m);
+            v.engine = "analytic, paper's assumptions";
+            return v;
+        }
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::string earthquake_study_file(const std::string& name_or_path, const std::vector<std::string>& engines) {
     if (name_or_path == "none") return "";
     const std::string file = name_or_path == "default" ? shipped_studies_dir() + "/" + kShippedStudy
@@ -289,6 +336,7 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
         part.stand_ins.emplace_back(s.settings.value(multibody::kRestitutionErrorKnob, 0.0), v);
     }
     part.detection_limit = detection_limit(part.stand_ins);
+    if (options.paper_model) part.paper_model = judge_paper_model(study_file, dir / "paper-model", options);
     return part;
 }
 
@@ -356,7 +404,9 @@ Json earthquake_json(const EarthquakePart& part) {
                 {"failed_rows", part.failed_rows},
                 {"engines", engines},
                 {"stand_ins", stand_ins},
-                {"detection_limit_restitution_error", finite_or_null(part.detection_limit)}};
+                {"detection_limit_restitution_error", finite_or_null(part.detection_limit)},
+                // Its pass keys are what an engine with these numbers would get: the report shows no verdict.
+                {"paper_model", part.paper_model ? verdict_json(*part.paper_model) : Json(nullptr)}};
 }
 
 }  // namespace vssw::study

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <utility>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,9 @@ struct EarthquakePart {
     // restitution error from which on every stand-in fails (NaN: some error up to the largest passes).
     std::vector<std::pair<double, EarthquakeVerdict>> stand_ins;
     double detection_limit = 0.0;
+    // The analytic model under the set `paper` measured as an engine against the reference (EarthquakeRunOptions::
+    // paper_model): what the paper's assumptions change under records, shown with no verdict.
+    std::optional<EarthquakeVerdict> paper_model;
 };
 
 // The ensemble study the report runs for `engines`: FILE as given, or "" for none when it is "none"; "default" names
@@ -111,6 +115,7 @@ struct EarthquakeRunOptions {
     std::string gnuplot = "gnuplot";
     std::string commit;  // vssw's, for the study's manifest
     std::function<void(long, long, const std::string&)> progress;  // as StudyRunOptions::progress
+    bool paper_model = false;  // also run the analytic model under the set `paper` (EarthquakePart::paper_model)
 };
 
 // Runs the study for the analytic reference and `engines` into dir (created; its study outputs written) and judges
@@ -133,7 +138,7 @@ std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const
 // The part as results.json holds it (`vssw report --help` lists the keys): study, reference, targets, records,
 // levels, engines [{engine, settings, pass, overturning_agreement, overturning_mcnemar, peak_log_ratio (lo and
 // hi null, note the reason, when not resolved), fragility_median_ratio (information), peak_ratio, inside_band}],
-// stand_ins, detection_limit_restitution_error.
+// stand_ins, detection_limit_restitution_error, paper_model (the paper's model as an engine's keys, or null).
 Json earthquake_json(const EarthquakePart& part);
 
 // One line per engine for the report's standard output: "ODE under records: pass; peaks x 0.988 [0.973, 1.000]
@@ -147,6 +152,8 @@ std::vector<std::string> earthquake_summary_lines(const EarthquakePart& part);
 // (none when it was not drawn); then the section with every number and the other plots.
 std::vector<std::string> earthquake_matrix_header();
 std::vector<DocCell> earthquake_matrix_cells(const EarthquakePart& part, const std::string& engine);
+// The paper's model's two cells: the same numbers with no verdict mark ("-" when it did not run).
+std::vector<DocCell> earthquake_information_cells(const EarthquakePart& part);
 std::vector<DocBlock> earthquake_glance(const EarthquakePart& part);
 std::vector<DocBlock> earthquake_figure(const EarthquakePart& part);
 std::vector<DocBlock> earthquake_section(const EarthquakePart& part);

@@ -165,6 +165,14 @@ std::vector<DocCell> earthquake_matrix_cells(const EarthquakePart& p, const std:
     return {{"-"}, {"-"}};
 }
 
+std::vector<DocCell> earthquake_information_cells(const EarthquakePart& p) {
+    if (!p.paper_model) return {{"-"}, {"-"}};
+    const EarthquakeVerdict& v = *p.paper_model;
+    std::vector<DocCell> cells = {DocCell(peak_ratio_text(v)), DocCell(overturning_text(v))};
+    for (DocCell& c : cells) c.note = "the paper's model against the reference under records: no verdict";
+    return cells;
+}
+
 std::vector<DocBlock> earthquake_glance(const EarthquakePart& p) {
     return {paragraph(fmt::format(
         "The two \"records\" columns judge the engines under earthquake records ({}; the reference is {}), run by "

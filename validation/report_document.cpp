@@ -116,7 +116,7 @@ std::vector<std::string> matrix_metrics(const ReportInput& in, const std::vector
 }
 
 // The analytic model under the other set, in the matrix's columns: its numbers with no verdict mark (no pass, no
-// fail), the earthquake columns empty (the record ensemble runs the engines only).
+// fail); under records the paper's model's numbers when the reference is the mechanism (the record ensemble's).
 std::vector<DocCell> other_set_row(const ReportInput& in, const std::vector<std::string>& metrics) {
     const std::vector<MatrixCell> cells = other_set_matrix(in);
     std::vector<DocCell> row = {{other_set_label(in.results)}, {"- (a model, no contacts)"}};
@@ -128,8 +128,12 @@ std::vector<DocCell> other_set_row(const ReportInput& in, const std::vector<std:
                                     c->case_id, to_string(in.results.other_set->set));
         row.push_back(std::move(cell));
     }
-    if (in.earthquake)
-        for (std::size_t i = 0; i < earthquake_matrix_header().size(); ++i) row.push_back({"-"});
+    if (in.earthquake) {
+        const bool paper_row = in.results.other_set->set == AssumptionSet::paper;
+        for (DocCell& c : paper_row ? earthquake_information_cells(*in.earthquake)
+                                    : earthquake_information_cells(EarthquakePart{}))
+            row.push_back(std::move(c));
+    }
     return row;
 }
 
