@@ -38,25 +38,26 @@ long sample_every(const EngineSettings& settings, double dt) {
 
 RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitation& ex, double dt,
                        FailureLimits limits, bool dt_steps_the_motion, double contact_gap)
-    : engine_(std::move(engine)),
+    : figures_(mechanism_figures(scene)),
+      engine_(std::move(engine)),
       b_(block_sizes(scene).b),
       h_lower_(block_sizes(scene).h_lower),
       friction_(scene.friction),
-      collapse_(collapse_angle(scene)),
+      collapse_(figures_.collapse_angle),
       // Only a run under a ground motion can end folded (judged once the shaking is over): a free vibration or a
       // threshold trial does not compute it.
-      unstable_(ex.horizontal.duration() > 0.0 ? unstable_equilibrium(scene) : HUGE_VAL),
+      unstable_(ex.horizontal.duration() > 0.0 ? figures_.unstable_equilibrium : HUGE_VAL),
       unstable2_(ex.horizontal.duration() > 0.0 ? mechanism_theta2(scene, unstable_) : HUGE_VAL),
-      v_ref_(reference_velocity(scene)),
+      v_ref_(figures_.reference_velocity),
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),
       // From here on no acceleration can lift a wall at rest (kRestCannotLiftShare): rest ends the run.
       quiet_from_(ex.horizontal.is_zero() ? 0.0
-                                          : ex.horizontal.quiet_after(kRestCannotLiftShare * rest_threshold(scene))),
+                                          : ex.horizontal.quiet_after(kRestCannotLiftShare * figures_.rest_threshold)),
       stop_angle_(ex.stop_angle),
       stop_at_rest_(ex.stop_at_rest),
       limits_(limits),
-      parts_(engine_, scene, ex, limits.penetration * b_, limits.energy_gain, contact_gap),
+      parts_(engine_, scene, figures_, ex, limits.penetration * b_, limits.energy_gain, contact_gap),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
       quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))),

@@ -74,6 +74,7 @@ public:
     }
 
 private:
+    MechanismFigures figures_;  // first: the members after it read it
     std::string engine_;
     double b_, h_lower_, friction_, collapse_, unstable_, unstable2_, v_ref_, alpha_, motion_end_, quiet_from_,
         stop_angle_;

@@ -1,6 +1,7 @@
 #include "multibody/scene_geometry.hpp"
 
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "analytic/closed_forms.hpp"
@@ -47,6 +48,12 @@ WallPose pose_at(const WallScene& scene, double theta1) {
     turn(theta2, side * s.b, s.h_upper, ux, uy);
     p.upper = {hx + ux, hy + uy, theta2};
     return p;
+}
+
+MechanismFigures mechanism_figures(const WallScene& scene) {
+    const std::unique_ptr<RockingModel> model = analytic_model(scene, Kinematics::exact);
+    return {model->collapse_angle(), model->unstable_equilibrium(), model->rest_threshold(0.0),
+            std::abs(model->reference_energy()), model->reference_velocity()};
 }
 
 double collapse_angle(const WallScene& scene) { return analytic_model(scene, Kinematics::exact)->collapse_angle(); }

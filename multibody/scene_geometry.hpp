@@ -31,6 +31,17 @@ BlockSizes block_sizes(const WallScene& scene);
 // corner on the side it tips towards; the upper block on the hinge, theta2 from Eq. (2).
 WallPose pose_at(const WallScene& scene, double theta1);
 
+// The figures of the scene's analytic model (exact kinematics) that a run's checks read, from one model built once:
+// a run's monitor and its parts take them together (built per figure, the model was built five times per run).
+struct MechanismFigures {
+    double collapse_angle;        // as collapse_angle()
+    double unstable_equilibrium;  // as unstable_equilibrium()
+    double rest_threshold;        // as rest_threshold()
+    double reference_energy;      // as reference_energy()
+    double reference_velocity;    // as reference_velocity()
+};
+MechanismFigures mechanism_figures(const WallScene& scene);
+
 // Collapse angle of the scene (the analytic model's: Eq. 26 or pi/2 for a VSSW, pi/2 for a parapet).
 double collapse_angle(const WallScene& scene);
 

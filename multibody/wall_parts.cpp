@@ -64,6 +64,10 @@ WallState still_state_at(const WallScene& scene, double theta1, double theta1_do
 
 WallParts::WallParts(std::string engine, const WallScene& scene, const Excitation& ex, double penetration,
                      double energy_gain, double contact_gap)
+    : WallParts(std::move(engine), scene, mechanism_figures(scene), ex, penetration, energy_gain, contact_gap) {}
+
+WallParts::WallParts(std::string engine, const WallScene& scene, const MechanismFigures& figures, const Excitation& ex,
+                     double penetration, double energy_gain, double contact_gap)
     : engine_(std::move(engine)),
       sizes_(block_sizes(scene)),
       vssw_(scene.vssw.has_value()),
@@ -71,8 +75,8 @@ WallParts::WallParts(std::string engine, const WallScene& scene, const Excitatio
       N_(scene.overburden()),
       gap_(contact_gap),
       penetration_(penetration),
-      energy_gain_(energy_gain * reference_energy(scene)),
-      upright_range_(mechanism_theta2(scene, unstable_equilibrium(scene))),
+      energy_gain_(energy_gain * figures.reference_energy),
+      upright_range_(mechanism_theta2(scene, figures.unstable_equilibrium)),
       motion_(&ex.horizontal),
       rest_(still_state_at(scene, 0.0, 0.0, contact_gap)),
       last_(still_state_at(scene, ex.theta0, 0.0, contact_gap)),

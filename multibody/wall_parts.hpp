@@ -59,6 +59,9 @@ public:
     // energy_gain: kEnergyGainShare, or +infinity for a test that feeds motions no mechanics gave.
     WallParts(std::string engine, const WallScene& scene, const Excitation& ex, double penetration,
               double energy_gain, double contact_gap = 0.0);
+    // The same with the scene's figures already computed (RunMonitor's, built once per run).
+    WallParts(std::string engine, const WallScene& scene, const MechanismFigures& figures, const Excitation& ex,
+              double penetration, double energy_gain, double contact_gap = 0.0);
 
     // Throws EngineFailure naming the part and the time when a corner is inside a body, the state is not finite, or
     // the energy is above E(0) plus the most the ground motion can have given. Call once per step, in time order.
