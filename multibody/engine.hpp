@@ -61,6 +61,15 @@ struct EngineSettings {
     int iterations = 0;      // solver iterations (0: the adapter's default)
     std::map<std::string, double> knobs;  // engine-specific options by name (each adapter lists its own)
     double sample_dt = 0.0;  // trajectory sampling [s]; 0: every step
+
+    // A setting by the name a study or suite file gives it: "dt" the step, "iterations" the solver iterations (a whole
+    // number, checked by the file's reader), any other name a knob. The one place that turns (name, value) into
+    // settings for the files; the command line gives dt and iterations as their own options, every --set a knob.
+    void set(const std::string& name, double value) {
+        if (name == "dt") dt = value;
+        else if (name == "iterations") iterations = static_cast<int>(value);
+        else knobs[name] = value;
+    }
 };
 
 // One setting of a backend as `vssw compare --list-settings` prints it. "dt" and "iterations" are given as --dt and

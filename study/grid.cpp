@@ -235,13 +235,8 @@ void Grid::build_runs() {
                     run.engine = e.name;
                     run.settings = engine->default_settings();
                     run.settings_text = settings_text(e.settings, settings);
-                    for (std::size_t i = 0; i < e.settings.size(); ++i) {
-                        const std::string& key = e.settings[i].key;
-                        const double v = as_number(settings[i]);
-                        if (key == "dt") run.settings.dt = v;
-                        else if (key == "iterations") run.settings.iterations = static_cast<int>(v);
-                        else run.settings.knobs[key] = v;
-                    }
+                    for (std::size_t i = 0; i < e.settings.size(); ++i)
+                        run.settings.set(e.settings[i].key, as_number(settings[i]));
                     run.assumptions = assumptions;
                     if (e.name == "analytic" &&
                         !apply_assumptions(run, assumptions_of(assumptions), skipped_runs_, roller_source()))

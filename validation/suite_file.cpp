@@ -81,12 +81,7 @@ std::map<std::string, multibody::EngineSettings> suite_engine_settings(const Stu
                                          spec.path));
         if (std::any_of(e.settings.begin(), e.settings.end(), [](const Axis& a) { return a.varied(); })) continue;
         multibody::EngineSettings s = multibody::make_engine(e.name)->default_settings();
-        for (const Axis& a : e.settings) {
-            const double v = std::get<double>(a.levels.front());
-            if (a.key == "dt") s.dt = v;
-            else if (a.key == "iterations") s.iterations = static_cast<int>(v);
-            else s.knobs[a.key] = v;
-        }
+        for (const Axis& a : e.settings) s.set(a.key, std::get<double>(a.levels.front()));
         out[e.name] = s;
     }
     return out;
