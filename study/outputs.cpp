@@ -36,15 +36,19 @@ nlohmann::ordered_json read_manifest(const std::filesystem::path& dir) {
 }
 
 OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options) {
-    OutputFiles files;
     const StudyData data = read_study_data(dir);
+    return write_study_outputs(dir, options, data, ensemble_measures(data));
+}
+
+OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options, const StudyData& data,
+                                const EnsembleMeasures& ensemble) {
+    OutputFiles files;
     write_file(dir / kResultsJson,
                [&](std::ostream& out) { write_results_json(out, data.manifest, dir / kResultsCsv); });
     files.written.push_back(dir / kResultsJson);
 
     const std::vector<Effect> effects = parameter_effects(data);
     const std::vector<Agreement> agreement = engine_agreement(data);
-    const EnsembleMeasures ensemble = ensemble_measures(data);
     if (ensemble.applies) {
         write_file(dir / kFragilityCsv, [&](std::ostream& out) { write_fragility_csv(out, data, ensemble); });
         write_file(dir / kAgreementCsv, [&](std::ostream& out) { write_agreement_csv(out, data, ensemble); });

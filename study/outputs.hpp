@@ -26,6 +26,9 @@ struct OutputOptions {
     std::string gnuplot = "gnuplot";  // the program (looked up in PATH unless it holds a '/')
 };
 
+struct StudyData;         // study/study_data.hpp
+struct EnsembleMeasures;  // study/ensemble_measures.hpp
+
 struct OutputFiles {
     std::vector<std::filesystem::path> written;  // results.json, plots/ (when it has plots), study.md, study.html
     std::vector<std::string> warnings;  // for stderr, one line each (e.g. gnuplot missing)
@@ -36,5 +39,9 @@ nlohmann::ordered_json read_manifest(const std::filesystem::path& dir);
 
 // InputError naming the file when DIR's results cannot be read or a file cannot be written.
 OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options);
+// The same from DIR's results already read and measured (read_study_data, ensemble_measures): a caller that needs
+// them too (the report's earthquake part) computes the measures, bootstraps included, once.
+OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options, const StudyData& data,
+                                const EnsembleMeasures& ensemble);
 
 }  // namespace vssw::study

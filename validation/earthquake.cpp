@@ -281,7 +281,9 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     OutputOptions output;
     output.plots = options.plots;
     output.gnuplot = options.gnuplot;
-    write_study_outputs(dir, output);
+    const StudyData d = read_study_data(dir);
+    const EnsembleMeasures e = ensemble_measures(d);  // once: the study's outputs and the verdicts read the same
+    write_study_outputs(dir, output, d, e);
 
     EarthquakePart part;
     part.study_file = study_file;
@@ -291,8 +293,6 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     part.rows = result.rows;
     part.failed_rows = result.failed_rows;
     part.wall_time_s = result.meta.wall_time_s;
-    const StudyData d = read_study_data(dir);
-    const EnsembleMeasures e = ensemble_measures(d);
     // Its own plots beside the study's (a missing gnuplot leaves their scripts and data, as the study's).
     if (options.plots) draw_plots(earthquake_plot_scripts(d, e), dir / "plots", options.gnuplot);
     if (e.has_reference) {
