@@ -63,6 +63,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+# In a git work tree: the commit-msg hook (subjects of at most 72 characters; a hook of the clone's own is kept).
+bash "$here/scripts/install_hooks.sh" "$here"
+
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 # The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer by clang (docs/contributing/fuzzing-and-sanitizers.md "Sanitizers"), in its
