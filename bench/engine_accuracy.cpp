@@ -1,5 +1,6 @@
-// Accuracy of an engine against the analytic model (exact kinematics) on the walls issue 3 names, at three steps:
-// prints a Markdown table (relative errors of threshold, period and first-impact restitution) for docs/engines.md.
+// Accuracy of an engine against the analytic model (exact kinematics) on the reference walls (docs/engines.md), at
+// three steps: prints a Markdown table (relative errors of threshold, period and first-impact restitution) for
+// docs/engines.md.
 //   build/bench/vssw_engine_accuracy bullet [dt1 dt2 dt3]
 #include <chrono>
 #include <cmath>

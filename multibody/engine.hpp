@@ -84,8 +84,9 @@ struct SettingDescription {
     std::string meaning;  // one line
     // The documented range of a knob, both ends included: a value outside it is refused (InputError naming it) before
     // the engine library sees it (SettingsReader). Each range holds every value the settings were measured at with a
-    // wide margin and stops where the library aborts, hangs or gives nothing a wall could mean (issue 27: an ODE
-    // margin of 1e308 aborted the process). Unbounded by default; dt and iterations are checked on their own.
+    // wide margin and stops where the library aborts, hangs or gives nothing a wall could mean (docs/engines.md
+    // "Isolation": an ODE margin of 1e308 aborted the process). Unbounded by default; dt and iterations are checked on
+    // their own.
     double lo = -std::numeric_limits<double>::infinity();
     double hi = std::numeric_limits<double>::infinity();
     // A setting for the single block only: any value but its default is refused for a VSSW, with the other settings

@@ -58,7 +58,7 @@ const Description& plugin_description(const OpenedPlugin& plugin, const std::str
 void check_plugin_build(const OpenedPlugin& plugin, const std::string& what, std::uint32_t plugin_abi,
                         std::uint32_t program_abi, const char* plugin_build_id);
 
-// VSSW_BUILD_ID of this program's build ("vssw 0.1.0, GNU 12.2.0, Release, build 3f0c...").
+// VSSW_BUILD_ID of this program's build ("vssw X.Y.Z, GNU 12.2.0, Release, build 3f0c...").
 const char* program_build_id();
 
 template <class Description>

@@ -1,7 +1,7 @@
 #pragma once
-// The CPU time one engine run may take before it fails (issue 27: a Simbody setting once made a run go on forever).
-// Each engine run is a forked child (isolated_engine.hpp) whose CPU time the kernel limits (RLIMIT_CPU): past the
-// budget it is stopped and the run fails with a message naming the budget; the program goes on.
+// The CPU time one engine run may take before it fails (docs/engines.md "Isolation": a Simbody setting once made a run
+// go on forever). Each engine run is a forked child (isolated_engine.hpp) whose CPU time the kernel limits
+// (RLIMIT_CPU): past the budget it is stopped and the run fails with a message naming the budget; the program goes on.
 //
 // The default grows with the run's steps, t_end / dt: kBaseSeconds for setting up and ending a run, plus
 // kSecondsPerStep for each step, ten times the slowest engine's measured cost per step (Simbody's rigid route,

@@ -9,11 +9,12 @@
 #   bash scripts/setup.sh asan   install, then the whole suite built with ASan + UBSan (clang) into build-asan/ and
 #                                run, the fuzz tests with libFuzzer (about 10 minutes on 2 cores: not in CI, run it
 #                                before landing a change; docs/contributing/fuzzing-and-sanitizers.md "Sanitizers")
+#   bash scripts/setup.sh profile  install and build, with the profilers the speed notes quote (callgrind, perf)
 # Only Debian packages; apt-get runs only when one of them is missing.
 set -euo pipefail
 
 mode="${1:-run}"
-case "$mode" in run|test|build|asan) ;; *) echo "usage: bash scripts/setup.sh run|test|build|asan" >&2; exit 2 ;; esac
+case "$mode" in run|test|build|asan|profile) ;; *) echo "usage: bash scripts/setup.sh run|test|build|asan|profile" >&2; exit 2 ;; esac
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(
@@ -49,6 +50,9 @@ case "$mode" in test|asan) packages+=(clang libclang-rt-dev llvm) ;; esac
 # Chromium, test only (/usr/lib/chromium is 350 MB installed; `run` and `build` do not need it).
 case "$mode" in test) packages+=(chromium) ;; esac
 # The code-shape check (tests/code_shape.py) finds each function's extent with Universal Ctags; test only.
+# The profilers behind the "where the time goes" figures of docs/ (instruction counts: valgrind's callgrind; samples:
+# perf record); profile only. Whole commands are timed with hyperfine, above.
+case "$mode" in profile) packages+=(valgrind linux-perf) ;; esac
 case "$mode" in test) packages+=(universal-ctags) ;; esac
 
 missing=()
@@ -62,6 +66,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   $sudo_cmd env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+# In a git work tree: the commit-msg hook (subjects of at most 72 characters; a hook of the clone's own is kept).
+bash "$here/scripts/install_hooks.sh" "$here"
 
 jobs="$(nproc 2>/dev/null || echo 2)"
 
@@ -122,5 +129,5 @@ case "$mode" in
     ctest --test-dir "$here/build" --output-on-failure -j "$jobs"
     sanitizer_fuzz
     ;;
-  build) ;;
+  build|profile) ;;
 esac

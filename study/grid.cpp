@@ -28,8 +28,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kWhat = "study file";
 
-// Columns of results.csv between `engine` and `metric`: always these (the names, so that scripts can rely on
-// them), then alpha and R (every wall's, for rocking curves), then the keys the file uses beyond them, then settings.
+// Columns of results.csv between `engine` and `metric`: always these (the documented names, docs/guide/studies.md, so
+// that scripts can rely on them), then alpha and R (every wall's, for rocking curves), then the keys the file uses
+// beyond them, then settings.
 const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness", "hinge",  "xi",    "density",
                                                "g",     "kinematics", "impact",   "roller", "kind",  "theta0",
                                                "file",  "scale",     "pga",       "shape",  "amplitude",

@@ -8,11 +8,14 @@ stay inside that engine's adapter folder.
     (python also binds analytic, multibody and compare directly)
     (bench and tests may include any folder of the program)
 
-Exit 0 when every `#include "folder/..."` and every engine header include keeps to that; otherwise 1, one line per
-include that does not (file:line, what it includes, what the folder may include). Update LAYERS together with the
-layout when the folders change.
+Exit 0 when every `#include "..."` and every engine header include keeps to that; otherwise 1, one line per include
+that does not (file:line, what it includes, what the folder may include). A quoted include is resolved as the compiler
+does (beside the including file first, then from the source root), so the folder it reaches is the one checked; an
+include that climbs with `../` is refused outright (write it from the source root: "study/grid.hpp"). Update LAYERS
+together with the layout when the folders change.
 usage: layering.py SOURCE_DIR
 """
+import os
 import pathlib
 import re
 import sys
@@ -46,12 +49,35 @@ ENGINE_HEADERS = {
                                     r"FrictionContact|NumericsMatrix)"),
     "multibody/mujoco": re.compile(r"mujoco/"),
 }
-QUOTED = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
+QUOTED = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 ANGLED = re.compile(r"^\s*#\s*include\s+<([^>]+)>")
 
 
+def included_folder(root, path, name):
+    """The top folder of the source tree that `#include "name"` in path reaches: the file beside path when it exists
+    there (or when name climbs with ../), else name from the source root, the program's one include directory."""
+    beside = pathlib.Path(os.path.normpath(path.parent / name))
+    if name.startswith("../") or "/../" in name or beside.is_file():
+        try:
+            return beside.relative_to(root).parts[0]
+        except ValueError:
+            return None  # outside the tree: the ../ refusal names it
+    return name.split("/")[0] if "/" in name else None
+
+
+def quoted_problems(root, path, where, name, folder, allowed):
+    problems = []
+    if "../" in name:
+        problems.append(f'{where}: includes "{name}", a path that climbs with ../ (name it from the source root)')
+    target = included_folder(root, path, name)
+    if target is not None and target != folder and target not in allowed and target in LAYERS:
+        may = f"only {', '.join(sorted(allowed))}" if allowed else "no other folder"
+        problems.append(f"{where}: includes {target}/, but {folder}/ may include {may}")
+    return problems
+
+
 def main(source):
-    root = pathlib.Path(source)
+    root = pathlib.Path(os.path.abspath(source))
     problems = []
     checked = 0
     for folder, allowed in LAYERS.items():
@@ -63,10 +89,7 @@ def main(source):
                 quoted = QUOTED.match(line)
                 if quoted:
                     checked += 1
-                    target = quoted.group(1)
-                    if target != folder and target not in allowed and target in LAYERS:
-                        may = f"only {', '.join(sorted(allowed))}" if allowed else "no other folder"
-                        problems.append(f"{relative}:{number}: includes {target}/, but {folder}/ may include {may}")
+                    problems += quoted_problems(root, path, f"{relative}:{number}", quoted.group(1), folder, allowed)
                 angled = ANGLED.match(line)
                 if angled:
                     for home, pattern in ENGINE_HEADERS.items():

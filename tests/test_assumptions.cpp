@@ -36,7 +36,7 @@ GroundMotion rinaldi_scaled(double s) {
     return g.scaled(s);
 }
 
-// The case: h1/h 0.95 under Rinaldi x 0.25 drove the paper model to its lock (cos A2 = 0), where it sat for
+// The first case found: h1/h 0.95 under Rinaldi x 0.25 drove the paper model to its lock (cos A2 = 0), where it sat for
 // 25 s at |theta1| = 2.45 alpha1 with "overturns no" and an energy error of 0.997.
 TEST(Collapse, PaperKinematicsLockingBeforeEq26IsOverturning) {
     const VsswGeometry w = make_vssw(3.0, 0.143, 0.95);

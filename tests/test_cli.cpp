@@ -698,7 +698,7 @@ TEST(CliHardening, CompareWithAnUnmeasuredMetricExitsThreeWithTheReason) {
     EXPECT_FALSE(j["failures"].empty());
 }
 
-// The analytic model's own assumptions, as a user meets them (issue: no silent wrong answers).
+// The analytic model's own assumptions, as a user meets them (docs/model/assumptions.md: no silent wrong answers).
 namespace {
 
 // Table 1 #7 at xi 0.5: released from 0.8 alpha1 its exact kinematics need the roller to pull
@@ -747,7 +747,7 @@ TEST(CliAssumptions, ImpactLawIsAChoiceOnFreeAndHistory) {
     EXPECT_NE(bad.err.find("1.5"), std::string::npos);
 }
 
-// The issue's first case: h1/h 0.95 under Rinaldi x 0.25 with the paper's kinematics said "overturns no" with an
+// The first case found: h1/h 0.95 under Rinaldi x 0.25 with the paper's kinematics said "overturns no" with an
 // energy error of 0.997. It overturns (the paper's kinematics lock), says so, and warns that Eq. (3) was used past
 // its validity; its largest rotation is the collapse angle, reported as such.
 TEST(CliAssumptions, HistoryOfAHighHingeOverturnsAndWarns) {
@@ -1145,7 +1145,7 @@ const std::vector<std::string> kSinePulse = {"--pulse", "sine", "--amplitude", "
 
 }  // namespace
 
-// Issue 38: an engine setting no run can honour is refused by `vssw compare` before any engine runs, the same in free
+// An engine setting no run can honour is refused by `vssw compare` before any engine runs, the same in free
 // vibration and under a ground motion: a step of more than 1e8 steps (MuJoCo at 1e-310 by its step count, never "a
 // budget of inf s"), a setting for a parapet only on a VSSW. And --run-budget '' is an empty value, not 0.
 TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {

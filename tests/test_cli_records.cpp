@@ -354,7 +354,7 @@ TEST(MotionsCli, BadInputsAreOneLineAndExit2) {
     expect_bad_input({"motions", "generate", "--count", "2", "--seed", "1", "--out", out, "--d5-95", "60"}, "--d5-95");
     expect_bad_input({"motions", "generate", "--count", "2", "--seed", "1", "--out", out, "--magnitude", "7"},
                      "--distance");
-    // Issue 38: a value the model cannot honour is refused naming the option given, never clamped or ignored.
+    // A value the model cannot honour is refused naming the option given, never clamped or ignored.
     const std::vector<std::pair<std::vector<std::string>, std::string>> refused = {
         {{"--arias", "1e6"}, "--arias must be from"},          // held at the 8-sigma quantile, 7228 m/s
         {{"--arias", "1e-9"}, "--arias must be from"},

@@ -1,7 +1,7 @@
 // The cross-engine suite: the same tests for every backend compiled in (the analytic model itself, then each
-// engine), each instance its own CTest entry. Accuracy targets are the issue's: threshold and period within 0.5 %,
-// restitution within 2 % of the analytic model with exact kinematics. A metric an engine cannot reach is skipped
-// explicitly with the measured value and the reason (kKnownDifferences), never loosened per case.
+// engine), each instance its own CTest entry. Accuracy targets are the project's (compare/targets.hpp): threshold and
+// period within 0.5 %, restitution within 2 % of the analytic model with exact kinematics. A metric an engine cannot
+// reach is skipped explicitly with the measured value and the reason (kKnownDifferences), never loosened per case.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -38,7 +38,7 @@ using testing::table1;
 using multibody::EngineFailure;
 using multibody::WallScene;
 
-using compare::kPeriodTarget;  // issue 3's targets (compare/targets.hpp)
+using compare::kPeriodTarget;  // the project's targets (compare/targets.hpp)
 using compare::kRestitutionTarget;
 using compare::kThresholdTarget;
 

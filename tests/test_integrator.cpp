@@ -118,7 +118,7 @@ TEST(EventDrivenIntegration, ImpactTimeConvergesAtEighthOrderWithFixedSteps) {
     const double e1 = error(exact / 2), e2 = error(exact / 4), e3 = error(exact / 8);
     EXPECT_NEAR(std::log2(e1 / e2), kExpectedOrder, kOrderSlack);
     EXPECT_NEAR(std::log2(e2 / e3), kExpectedOrder, kOrderSlack);
-    // With eight steps per quarter period the impact is already placed to better than the 1e-12 s.
+    // With eight steps per quarter period the impact is already placed to better than the goal of 1e-12 s.
     constexpr double kImpactLocation = 1e-12;  // [s]
     EXPECT_LT(e3, kImpactLocation);
 }

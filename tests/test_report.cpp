@@ -1391,8 +1391,8 @@ TEST(ReportEarthquake, EnginesTableListsTheSettingsTheRecordsRanWith) {
 }
 
 // `vssw report --suite full` judges on the 26 shipped records (studies/ensemble-report-full.toml), enough for the
-// fragility's intervals (shown from kMinStripeIntervalRecords records) and for the 20; other suites on the
-// default report's 4. Read and checked as the report checks a file, without running it (an hour of engine runs).
+// fragility's intervals (shown from kMinStripeIntervalRecords records) and for the 20 this test asks; other suites on
+// the default report's 4. Read and checked as the report checks a file, without running it (an hour of engine runs).
 TEST(ReportEarthquake, TheFullSuiteIsJudgedOnTwentyRecordsOrMore) {
     constexpr std::size_t kFullSuiteRecords = 20;  // a verdict's power: the records needed grow as beta^2
     EXPECT_EQ(vssw::study::default_earthquake_for_suite("full"), "full");

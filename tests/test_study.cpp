@@ -61,7 +61,7 @@ std::string refusal(const TempDir& dir, const std::string& toml) {
 
 // The study file -------------------------------------------------------------------------------------------------
 
-// The issue's example, as validation scripts write it.
+// The example study file, as validation scripts write it.
 const char* const kIssueExample = R"(
 name = "hinge-and-overburden"
 metrics = ["threshold_g", "period", "restitution"]

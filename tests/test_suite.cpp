@@ -49,7 +49,7 @@ constexpr double kClearRocking = 0.1;
 // ...and stays below alpha, the rest position's static instability (a PW falls past it; the VSSW's unstable
 // equilibrium is at 0.98 alpha1, its collapse angle Eq. 26 at 4.3 alpha1): the largest of the four is 0.47.
 constexpr double kBelowInstability = 1.0;
-// Issue 3's targets, as the cross-engine suite asserts them (compare/targets.hpp).
+// The project's targets, as the cross-engine suite asserts them (compare/targets.hpp).
 using vssw::compare::kPeriodTarget;
 using vssw::compare::kRestitutionTarget;
 // A trace holds at most this many points (suite.cpp decimates to 2000 for the plots).
@@ -145,7 +145,7 @@ TEST(Suite, DefaultCasesAreUniqueAndEveryWallAndRecordExists) {
             EXPECT_TRUE(c.engine.empty()) << c.id;
         }
     }
-    // The issue's walls: Fig. 6 VSSW and PW, Table 1 #1, #7, #15 at xi 0, 0.1, 0.5; one threshold case each.
+    // The reference walls: Fig. 6 VSSW and PW, Table 1 #1, #7, #15 at xi 0, 0.1, 0.5; one threshold case each.
     EXPECT_EQ(s.walls.size(), 11u);
     for (const char* id : {"fig6-vssw", "fig6-pw", "t1-01-xi0", "t1-07-xi0.1", "t1-15-xi0.5"})
         EXPECT_TRUE(walls.count(id)) << id;

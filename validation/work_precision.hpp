@@ -1,8 +1,9 @@
 #pragma once
-// Work-precision (`vssw bench`, issue 12): each backend swept over the settings that trade cost for accuracy on a few
-// reference problems, every point's CPU time (median of repeats) against its error on the converged reference of the
-// same physics, as the DiffEq and SimBenchmark work-precision diagrams show them. The experiments and the metrics
-// are compare/experiments.hpp's and compare/metrics.hpp's: nothing here measures a trajectory in its own way.
+// Work-precision (`vssw bench`, docs/measurements/work-precision.md): each backend swept over the settings that trade
+// cost for accuracy on a few reference problems, every point's CPU time (median of repeats) against its error on the
+// converged reference of the same physics, as the DiffEq and SimBenchmark work-precision diagrams show them. The
+// experiments and the metrics are compare/experiments.hpp's and compare/metrics.hpp's: nothing here measures a
+// trajectory in its own way.
 //
 // References (relative error |value / reference - 1|):
 //  - threshold [g]: Eq. (12) (VSSW) / Eq. (17) (PW) — exact and linearised kinematics agree at rest;

@@ -5,7 +5,7 @@
 //    carries it;
 //  - lower and upper blocks: box bodies (b, h1) and (b, h2) (one box (b, h) for a parapet), free bodies that stay in
 //    the plane because no load leaves it: every contact point lies on z = 0 with an in-plane normal (see add_pair).
-//    Until issue 12 each was also held by a dJointCreatePlane2D (zeroing v_z, w_x and w_y each step); measured with
+// Until the speed work each was also held by a dJointCreatePlane2D (zeroing v_z, w_x and w_y each step); measured with
 //    it over 10 s of free vibration of the Fig. 6 VSSW, of T1 #11 from 0.8 alpha1 and of the Fig. 6 parapet, w_x, w_y,
 //    the tilt of the z axes and z itself stayed exactly 0, so its six rows were dropped from every solve (setting
 //    plane_joints = 1 puts them back). The run still fails loudly if a body ever tilts out of the plane;
@@ -125,10 +125,10 @@ struct Knobs {
     // motion relative to the ground is the same as with pseudo-forces to rounding (measured: the same threshold
     // bracket, peak responses to a pulse equal to 1e-13, parapet and VSSW).
     bool moving_supports;
-    // plane_joints (default 0): 1 holds each block in the plane with a dJointCreatePlane2D, as before issue 12. Nothing
-    // needs it: no force leaves the plane (contact points on z = 0, in-plane normals and friction directions, gravity
-    // along -y), so v_z, w_x and w_y stay exactly 0 without it, and the tilt check in simulate() would fail a run
-    // that left the plane. Without its three rows per body the solve is smaller: measured with callgrind on 2 s of
+    // plane_joints (default 0): 1 holds each block in the plane with a dJointCreatePlane2D, as before the speed work.
+    // Nothing needs it: no force leaves the plane (contact points on z = 0, in-plane normals and friction directions,
+    // gravity along -y), so v_z, w_x and w_y stay exactly 0 without it, and the tilt check in simulate() would fail a
+    // run that left the plane. Without its three rows per body the solve is smaller: measured with callgrind on 2 s of
     // the Fig. 6 VSSW's free vibration at 0.2 ms, 314 M instructions -> about 223 M (-29 %); every ODE test passes
     // either way.
     bool plane_joints;
@@ -136,7 +136,7 @@ struct Knobs {
 
 // The largest contact gap (margin, surface_layer) a setting may give, 1 m: five times the Fig. 6 wall's half
 // thickness, a thousand times the default margin. A margin of 1e300 m made ODE's collision normalise a vector of
-// infinities and abort the process (assertion in dxNormalize4, issue 27).
+// infinities and abort the process (assertion in dxNormalize4; docs/engines.md "Isolation").
 constexpr double kMaxContactGap = 1.0;
 
 // Ranges (SettingDescription::lo/hi): erp and cfm are fractions in ODE's own terms (ODE's manual: erp in [0, 1]; a
@@ -435,7 +435,7 @@ public:
     }
     EngineSettings default_settings() const override {
         EngineSettings s;
-        // Measured (bench/engine_accuracy.cpp over the issue's walls at 1, 0.2 and 0.05 ms): thresholds equal the
+        // Measured (bench/engine_accuracy.cpp over the reference walls at 1, 0.2 and 0.05 ms): thresholds equal the
         // analytic model's bisection bracket at every step (1e-4; with a bracket of 1e-6 they are within 1.6e-6 of
         // Eq. 12 at 1 ms: the direct solver holds a wall at rest exactly); period errors are first order, -0.07 to
         // -0.19 % at 1 ms, -0.015 to -0.038 % at 0.2 ms, -0.004 to -0.009 % at 0.05 ms. 1 ms meets every target

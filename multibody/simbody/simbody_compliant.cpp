@@ -82,7 +82,7 @@ struct Knobs {
 // contact's time scale falls below CPodes' smallest steps); radius 1 um to 1 cm (the spheres roll by r theta: at 1 cm
 // the threshold is already off by 0.64 %); dissipation up to 1e5 s/m (a hundred times the plastic default);
 // transition velocity 1e-6 to 0.1 m/s (at 1e-300 the friction law's slope mu N / vt was infinite and CPodes stepped
-// forever, issue 27; 0.1 m/s is the wall's own speed: no stick); accuracy 1e-10 to 0.1.
+// forever; 0.1 m/s is the wall's own speed: no stick); accuracy 1e-10 to 0.1.
 std::vector<SettingDescription> compliant_setting_descriptions() {
     return FailureLimits::described_after({
         {"dt", "0.002", "s", "the reporting interval (the integrator picks its own steps)"},

@@ -50,8 +50,8 @@ from ._results import (ClosedForms, Comparison, Impact, Metric, ReportResult, Re
                        ResponseRun, Simulation, StudyResult)
 from .cli import free, help, history, run, wall  # noqa: E402,A004 (help: the program's, as before)
 
-# "0.1.0" (the project's version, CMakeLists.txt); the commit the module was built from is __commit__ ("" outside a
-# git checkout; "+changes" when the work tree differed from it).
+# The project's version (`project()` in CMakeLists.txt, the one place it is set); the commit the module was built
+# from is __commit__ ("" outside a git checkout; "+changes" when the work tree differed from it).
 __version__ = _core.VERSION
 __commit__ = _core.COMMIT
 

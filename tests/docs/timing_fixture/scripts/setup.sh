@@ -1,0 +1,4 @@
+# A timing fixture: the project installs hyperfine only.
+packages=(
+  hyperfine   # timing
+)
