@@ -63,7 +63,8 @@ struct SuiteCase {
     // engine not named here runs at its default_settings(). A step case's dt overrides its engine's step.
     std::map<std::string, multibody::EngineSettings> settings;
     // history: how long the run goes on after the record [s] (it stops earlier at rest or overturning): the suite's
-    // answer, kSuiteResponseTail; a study's is kResponseTail (compare/experiments.hpp says why two).
+    // answer, kSuiteResponseTail, unless the suite file's part gives response_tail; a study's is kResponseTail
+    // (compare/experiments.hpp says why two).
     double response_tail = kSuiteResponseTail;
 };
 
