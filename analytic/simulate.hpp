@@ -106,8 +106,8 @@ struct SimulationResult {
 };
 
 // The run's largest |theta1| and when it was reached: the overturning's, else the largest of the start and the
-// turning points, else (a run cut off mid-swing past them all) the run's end. One rule for every output that reports
-// a peak (`vssw history`'s t_max_theta, the analytic backend's located peak that `vssw compare --record` reads).
+// turning points, else (a run cut off mid-swing past them all) the run's end. The outputs read a run's peak through
+// analytic/response.hpp, which gives an overturned run the collapse angle instead of this |theta1|.
 struct LargestRotation {
     double abs_theta, t;
 };

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/response.hpp"
 #include "analytic/error.hpp"
 #include "apps/model_validity.hpp"
 #include "apps/simulation_failure.hpp"
@@ -59,10 +60,12 @@ Json to_json(const HistoryRun& run) {
     j["vertical_record"] = run.vertical_record ? Json(*run.vertical_record) : Json(nullptr);
     j["vertical_pga_g"] = run.vertical_record ? Json(run.input.vertical.pga() / kStandardGravity) : Json(nullptr);
     j["alpha"] = run.chosen.model->reference_angle();
-    j["max_theta_over_alpha"] = res.max_abs_theta / run.chosen.model->reference_angle();
-    j["max_theta"] = res.max_abs_theta;
-    j["t_max_theta"] = largest_rotation(res).t;
-    // An overturned run's largest rotation is the collapse angle it reached, not a rocking peak.
+    // The peak a study and `vssw compare --record` give the same run: an overturned run's is the model's collapse
+    // angle, not a rocking peak (analytic/response.hpp).
+    const AnalyticResponse response = response_of(res, *run.chosen.model);
+    j["max_theta_over_alpha"] = response.peak / run.chosen.model->reference_angle();
+    j["max_theta"] = response.peak;
+    j["t_max_theta"] = response.peak_time;
     j["peak_is_collapse"] = res.overturned;
     j["overturned"] = res.overturned;
     j["t_overturn"] = res.overturned ? Json(res.t_overturn) : Json(nullptr);
@@ -82,6 +85,7 @@ Json to_json(const HistoryRun& run) {
 
 void print_history_summary(std::ostream& out, const HistoryRun& run, const std::string& title) {
     const SimulationResult& res = run.result;
+    const AnalyticResponse response = response_of(res, *run.chosen.model);  // as in history_json
     const char* alpha_name = reference_angle_name(run.chosen.kind);
     Table table(title);
     table.text("ground motion", run.record ? *run.record : run.input.motion.name())
@@ -97,10 +101,10 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
               fmt::format("{} (restitution {})", to_string(run.chosen.impact), num(run.chosen.model->restitution())))
         .add("lift-offs", std::to_string(res.lift_offs.size()))
         .add("impacts", std::to_string(res.impacts.size()))
-        .add(fmt::format("max |theta|/{}", alpha_name), num(res.max_abs_theta / run.chosen.model->reference_angle()),
+        .add(fmt::format("max |theta|/{}", alpha_name), num(response.peak / run.chosen.model->reference_angle()),
              "", res.overturned ? "the collapse angle: overturned, not a rocking peak" : "")
-        .add("max |theta|", num(res.max_abs_theta), "rad")
-        .add("at", num(largest_rotation(res).t), "s");
+        .add("max |theta|", num(response.peak), "rad")
+        .add("at", num(response.peak_time), "s");
     for (const std::string& w : run.warnings) table.text("warning", w);
     if (res.overturned)
         table.add("overturns at", num(res.t_overturn), "s");

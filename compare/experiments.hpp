@@ -99,7 +99,8 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
 // How long a run from rest goes on after its pulse or record ends (it stops earlier at rest or when the wall
 // overturns) [s]: the wall may keep rocking after the shaking. One question with two answers, kept apart on purpose:
 // each is the one its outputs were measured with, and changing either changes those runs. A case carries the one it
-// runs with (study::CaseSpec::response_tail, compare::SuiteCase::response_tail):
+// runs with (study::CaseSpec::response_tail, compare::SuiteCase::response_tail); a study or suite file's
+// [excitation] response_tail (pulse, record, scale-to-collapse) replaces these defaults for its part:
 //  - kResponseTail: studies, `vssw compare --record/--pulse` and `vssw history` (its default end), so that a study's
 //    peaks are `vssw history`'s;
 //  - kSuiteResponseTail: the validation suite's history cases, whose Fig. 6 walls come to rest within a few seconds

@@ -31,10 +31,14 @@ const std::vector<MetricInfo>& metric_catalog() {
         {"peak_rotation", "alpha", true, S::response, false,
          "largest |theta1| / alpha1 (|theta| / alpha of a parapet) of the run; the collapse angle if it overturned",
          U::history, false, "peak rotation", "peak rotation",
-         "The largest |theta1| / alpha under a ground-motion record, from rest.", 0.0},
+         "The largest |theta1| / alpha under a ground-motion record, from rest; for an overturned run the collapse "
+         "angle at which it was judged overturned, as in studies and vssw history.",
+         0.0},
         {"peak_time", "s", true, S::response, false, "when the peak rotation was reached",
          U::history, false, "time of the peak rotation", "peak time",
-         "When the largest |theta1| is reached under a ground-motion record.", 0.0},
+         "When the largest |theta1| is reached under a ground-motion record; the overturning for an overturned "
+         "run.",
+         0.0},
         {"overturned", "", true, S::response, false, "1 if the wall reached its collapse angle, else 0",
          U::history, false, "overturning", nullptr,
          "Whether the wall overturns under a ground-motion record; the error column says whether the engine "

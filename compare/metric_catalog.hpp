@@ -2,8 +2,8 @@
 // Every metric the project measures, in one table: its name (a results.csv `metric`, a report row's), its unit, and
 // how each of the two places that measure it sees it. A study (study/metric_catalog.hpp) measures a metric on one
 // backend's run; the validation suite (validation/suite.hpp) measures it on an engine against the analytic model and
-// reports the relative error. The same name means the same quantity in both; the suite's descriptions say what it is
-// compared with. Read by study files' checks, `vssw study --help`, the study runner and writers, the suite's runner,
+// reports the relative error. The same name means the same quantity in both (the response metrics through one
+// function, compare/response.hpp); the suite's descriptions say what it is compared with. Read by study files' checks, `vssw study --help`, the study runner and writers, the suite's runner,
 // `vssw check` and the report.
 #include <string>
 #include <vector>

@@ -12,6 +12,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
+#include "analytic/response.hpp"
 #include "analytic/validity.hpp"
 
 namespace vssw::multibody {
@@ -134,14 +135,10 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     out.warnings = validity_warnings(*model, scene.vssw ? std::optional(knobs.assumptions.kinematics) : std::nullopt, r);
     out.steps = r.steps;
     LocatedEvents located;
-    const LargestRotation largest = largest_rotation(r);
-    located.max_abs_theta1 = largest.abs_theta;
-    located.t_max_abs_theta1 = largest.t;
-    if (r.overturned) {
-        located.max_abs_theta1 = model->collapse_angle();
-        located.t_max_abs_theta1 = r.t_overturn;
-        if (!stopped) located.t_overturn = r.t_overturn;
-    }
+    const AnalyticResponse response = response_of(r, *model);  // stopped: the stop angle, when it was reached
+    located.max_abs_theta1 = response.peak;
+    located.t_max_abs_theta1 = response.peak_time;
+    if (r.overturned && !stopped) located.t_overturn = r.t_overturn;
     located.energy_balance_error = r.energy_balance_error;
     located.supports_computed = r.supports.computed;
     located.roller_tension_at = r.supports.roller_tension_at;

@@ -120,7 +120,7 @@ inline TrajectorySample motion_sample(double t, double theta1, double theta1_dot
 // their samples alone; a study reads these when present, so that the analytic trajectory can be sampled coarsely.
 struct LocatedEvents {
     // largest |theta1| [rad]: a located turning point, the run's end when it was cut off mid-swing past every one,
-    // or the collapse angle reached (analytic/simulate.hpp, largest_rotation)
+    // or the collapse angle when it overturned (analytic/response.hpp, response_of)
     double max_abs_theta1 = 0.0;
     double t_max_abs_theta1 = 0.0;  // when [s]
     std::optional<double> t_overturn;  // [s] when the collapse angle was reached

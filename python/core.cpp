@@ -41,6 +41,7 @@
 #include "apps/wall_options.hpp"
 #include "compare/experiments.hpp"
 #include "compare/metrics.hpp"
+#include "compare/response.hpp"
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/child_process.hpp"
@@ -343,6 +344,10 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     d["version"] = engine->version();
     d["settings"] = settings_dict(settings);
     d["alpha"] = scene.alpha();
+    // The measures a study, `vssw compare --record` and the report give this run (compare/response.hpp).
+    const vssw::compare::Response response = vssw::compare::response_of(traj, scene);
+    d["peak_rotation"] = response.peak / scene.alpha();
+    d["peak_time"] = response.peak_time;
     d["theta0"] = ex.theta0;
     d["t_end"] = ex.t_end;
     d["assumptions"] = engine_name == "analytic" ? py::cast(chosen.set_name) : py::none();

@@ -37,7 +37,7 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "units", "duration",
                                                 "tolerance", "max_pga", "step", "perturbation", "pgv", "sa", "arias",
-                                                "sa_period", "sa_damping"};
+                                                "sa_period", "sa_damping", "response_tail"};
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
@@ -487,6 +487,7 @@ void Grid::set_excitation(CaseSpec& c, const CaseLevels& l) const {
     c.tolerance = l.num("tolerance", 0.0);
     c.max_pga_g = l.num("max_pga", 0.0);
     c.step = l.num("step", 0.0);
+    c.response_tail = l.num("response_tail", compare::kResponseTail);
 }
 
 void describe_wall(CaseSpec& c) {
@@ -642,7 +643,7 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
         else if (col == "settings") v.push_back(run.settings_text);
         else if (col == "wall_name") v.push_back(wall_name(c));
         else if (col == "record_name") v.push_back(record_name(c));
-        else v.push_back(given(col) ? to_text(*given(col)) : "");  // units, duration, tolerance, max_pga
+        else v.push_back(given(col) ? to_text(*given(col)) : "");  // units, duration, tolerance, max_pga, response_tail
     }
     return v;
 }

@@ -69,8 +69,8 @@ struct CaseSpec {
     double tolerance = 0.0, max_pga_g = 0.0, step = 0.0;  // scale-to-collapse; 0: the defaults (measure.cpp)
     std::string perturbation;       // an ensemble's band: a kPerturbations level ("" without a band)
     // pulse, record, scale-to-collapse: how long a run goes on after the motion ends [s] (earlier at rest or
-    // overturning): a study's answer, compare::kResponseTail; the validation suite's is kSuiteResponseTail
-    // (compare/experiments.hpp says why two).
+    // overturning): the file's [excitation] response_tail, else a study's answer, compare::kResponseTail; the
+    // validation suite's is kSuiteResponseTail (compare/experiments.hpp says why two).
     double response_tail = compare::kResponseTail;
     // The wall's position among its part's wall axes alone (cases that differ only in their excitation share it):
     // with the part and the run, the key of a threshold task (study/runner.cpp: one per wall and run in a shard).

@@ -16,6 +16,7 @@
 #include "analytic/wall_scene.hpp"
 #include "compare/experiments.hpp"
 #include "compare/case_runner.hpp"
+#include "compare/response.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/scene_geometry.hpp"
 #include "multibody/settings_reader.hpp"
@@ -129,41 +130,8 @@ ClosedForm closed_form(const std::string& metric, const CaseSpec& c, const RunSp
     throw InputError(fmt::format("'{}' is not a closed form", metric));
 }
 
-// What one run from rest (or from theta0) shows: the response metrics.
-struct Response {
-    double peak = kNaN, peak_time = kNaN;  // [rad], [s]
-    bool overturned = false;
-    std::optional<double> t_overturn;
-    std::optional<double> energy_error;
-    std::optional<double> tension_at;
-};
-
-Response response_of(const Trajectory& t, const multibody::WallScene& scene) {
-    Response r;
-    r.overturned = t.overturned;
-    if (t.located) {
-        r.peak = t.located->max_abs_theta1;
-        r.peak_time = t.located->t_max_abs_theta1;
-        r.t_overturn = t.located->t_overturn;
-        r.energy_error = t.located->energy_balance_error;
-        r.tension_at = t.located->roller_tension_at;
-        return r;
-    }
-    r.peak = 0.0;
-    r.peak_time = t.samples.empty() ? kNaN : t.samples.front().t;
-    for (const multibody::TrajectorySample& s : t.samples)
-        if (std::abs(s.theta1) > r.peak) {
-            r.peak = std::abs(s.theta1);
-            r.peak_time = s.t;
-        }
-    if (t.overturned && !t.samples.empty()) {
-        // An engine stops its run at the collapse angle: its last sample is the overturning.
-        r.peak = multibody::collapse_angle(scene);
-        r.peak_time = t.samples.back().t;
-        r.t_overturn = t.samples.back().t;
-    }
-    return r;
-}
+using compare::Response;
+using compare::response_of;
 
 GroundMotion case_motion(const Grid& grid, const CaseSpec& c, double scale) {
     switch (grid.spec().parts[c.part].kind) {

@@ -35,7 +35,7 @@ const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "u
                                                   "pga",          "pgv",      "sa",        "arias",
                                                   "shape",        "amplitude", "pulse_period",
                                                   "duration",     "tolerance", "max_pga",  "step",
-                                                  "sa_period",    "sa_damping", "perturbation"};
+                                                  "sa_period",    "sa_damping", "perturbation", "response_tail"};
 const std::vector<std::string> kLevelKeys = {"pga", "pgv", "sa", "arias"};
 // The names say the factors (kBandIntensityStep, kBandRestitutionStep, kBandSizeStep).
 const std::vector<std::string> kPerturbations = {"none",          "pga+1e-2", "pga-1e-2", "restitution+2e-2",
@@ -260,6 +260,13 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
             r.fail(key, fmt::format("must be a relative increment in [{}, 1], got {}", kMinCollapseStep, dump_json(v)));
         return x;
     }
+    if (k == "response_tail") {
+        // 0 ends the run with the motion; a run also ends at rest or overturning, and a tail too long for the step
+        // is refused before anything runs (require_runs_resolve: 1e8 steps).
+        const double x = r.number(v, key, "a time in s, 0 or more");
+        if (!(x >= 0.0)) r.fail(key, fmt::format("must be a time in s, 0 or more, got {}", dump_json(v)));
+        return x;
+    }
     if (k == "sa_damping") {
         const double x = r.number(v, key, "a damping ratio in [0, 1)");
         if (!(x >= 0.0 && x < 1.0)) r.fail(key, fmt::format("must be a damping ratio in [0, 1), got {}", dump_json(v)));
@@ -286,11 +293,14 @@ KindKeys kind_keys(ExcitationKind kind) {
         case ExcitationKind::threshold: return {{}, {}};
         case ExcitationKind::free: return {{"theta0"}, {"theta0"}};
         case ExcitationKind::pulse:
-            return {{"shape", "amplitude", "pulse_period", "duration"}, {"shape", "amplitude", "pulse_period"}};
+            return {{"shape", "amplitude", "pulse_period", "duration", "response_tail"},
+                    {"shape", "amplitude", "pulse_period"}};
         case ExcitationKind::record:
-            return {{"file", "units", "scale", "pga", "pgv", "sa", "arias", "sa_period", "sa_damping"}, {"file"}};
+            return {{"file", "units", "scale", "pga", "pgv", "sa", "arias", "sa_period", "sa_damping", "response_tail"},
+                    {"file"}};
         case ExcitationKind::scale_to_collapse:
-            return {{"file", "units", "tolerance", "max_pga", "step", "sa_period", "sa_damping"}, {"file"}};
+            return {{"file", "units", "tolerance", "max_pga", "step", "sa_period", "sa_damping", "response_tail"},
+                    {"file"}};
     }
     return {};
 }

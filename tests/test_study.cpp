@@ -596,6 +596,30 @@ TEST(SuiteFile, AUsersSuiteFollowsTheSuitesIdConventions) {
     EXPECT_EQ(s.step_study.at("ode"), (std::vector<double>{1e-3, 5e-4}));
 }
 
+// response_tail: a part's [excitation] key for a study's runs and a suite's history cases; without it each keeps its
+// own default (compare/experiments.hpp), and the shipped files give none. A negative tail is refused, naming it.
+TEST(SuiteFile, ResponseTailIsAKeyOfTheStudyAndTheSuite) {
+    const TempDir dir;
+    const std::string record = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
+    const auto part = [&](const std::string& tail) {
+        return "[[part]]\nwall_name = \"w\"\nrecord_name = \"r\"\n[part.wall]\nheight = 4.0\nthickness = 0.4\n"
+               "hinge = 0.7\n[part.excitation]\nkind = \"record\"\nfile = \"" + record + "\"\nscale = 0.3\n" + tail;
+    };
+    const Grid given(study_of(dir, part("response_tail = 2.5\n")));
+    EXPECT_EQ(given.make_case(given.case_ids().front()).response_tail, 2.5);
+    EXPECT_EQ(study::suite_from_study(given, "x").cases.front().response_tail, 2.5);
+    const Grid plain(study_of(dir, part("")));
+    EXPECT_EQ(plain.make_case(plain.case_ids().front()).response_tail, compare::kResponseTail);
+    EXPECT_EQ(study::suite_from_study(plain, "x").cases.front().response_tail, compare::kSuiteResponseTail);
+    try {
+        (void)study_of(dir, part("response_tail = -1\n"));
+        ADD_FAILURE() << "a negative response_tail was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("response_tail"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("-1"), std::string::npos) << e.what();
+    }
+}
+
 TEST(SuiteFile, WhatASuiteCannotHoldIsNamed) {
     const TempDir dir;
     const auto refusal_of = [&](const std::string& toml) {

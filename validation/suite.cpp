@@ -21,6 +21,7 @@
 #include "analytic/simulate.hpp"
 #include "compare/case_runner.hpp"
 #include "compare/experiments.hpp"
+#include "compare/response.hpp"
 #include "compare/metric_catalog.hpp"
 #include "multibody/analytic_engine.hpp"
 #include "multibody/settings_reader.hpp"
@@ -97,18 +98,6 @@ Trace make_trace(const std::string& case_id, const std::string& engine, const mu
     for (std::size_t i = 0; i < n; i += stride) add(i);
     if ((n - 1) % stride != 0) add(n - 1);
     return tr;
-}
-
-struct PeakRotation {
-    double value = kNaN, t = kNaN;  // max |theta1| [rad] and when
-};
-// The analytic model's located turning point when the run has one (exact), else the largest sample.
-PeakRotation peak_rotation(const multibody::Trajectory& traj) {
-    if (traj.located) return {traj.located->max_abs_theta1, traj.located->t_max_abs_theta1};
-    PeakRotation p;
-    for (const auto& s : traj.samples)
-        if (!(std::abs(s.theta1) <= p.value)) p = {std::abs(s.theta1), s.t};  // the first sample replaces NaN
-    return p;
 }
 
 // theta1 of `traj` at time t, linear between samples, held beyond its ends. `cursor` advances monotonically.
@@ -271,11 +260,12 @@ void history_rows(const TaskContext& x, const multibody::Trajectory& a, const mu
                   TaskOutput& out) {
     const std::string name = x.engine.name();
     const double alpha = x.wall.scene.alpha();
-    const PeakRotation pa = peak_rotation(a), pe = peak_rotation(e);
-    const double peak_a = pa.value / alpha;
+    // The measures a study and `vssw compare --record` give the same runs (compare/response.hpp).
+    const compare::Response pa = compare::response_of(a, x.wall.scene), pe = compare::response_of(e, x.wall.scene);
+    const double peak_a = pa.peak / alpha;
     out.rows.push_back(
-        make_row(x.c.id, name, "peak_rotation", peak_a, pe.value / alpha, "analytic model"));
-    out.rows.push_back(make_row(x.c.id, name, "peak_time", pa.t, pe.t, "analytic model"));
+        make_row(x.c.id, name, "peak_rotation", peak_a, pe.peak / alpha, "analytic model"));
+    out.rows.push_back(make_row(x.c.id, name, "peak_time", pa.peak_time, pe.peak_time, "analytic model"));
     const double over_a = a.overturned ? 1.0 : 0.0, over_e = e.overturned ? 1.0 : 0.0;
     out.rows.push_back(make_row(x.c.id, name, "overturned", over_a, over_e, over_e - over_a, "analytic model"));
     const double rms = x.reference ? 0.0 : rms_difference(a, e) / alpha;

@@ -63,7 +63,8 @@ struct SuiteCase {
     // engine not named here runs at its default_settings(). A step case's dt overrides its engine's step.
     std::map<std::string, multibody::EngineSettings> settings;
     // history: how long the run goes on after the record [s] (it stops earlier at rest or overturning): the suite's
-    // answer, kSuiteResponseTail; a study's is kResponseTail (compare/experiments.hpp says why two).
+    // answer, kSuiteResponseTail, unless the suite file's part gives response_tail; a study's is kResponseTail
+    // (compare/experiments.hpp says why two).
     double response_tail = kSuiteResponseTail;
 };
 
@@ -104,7 +105,8 @@ Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids)
 //   free, step      period [s]: 4 x release to first impact; restitution []: theta1_dot ratio at the first impact
 //                   (the reference's impact law: under `mechanism` the whole mechanism's plastic impact for a VSSW,
 //                   under `paper` Eq. 19; Housner's e for a PW under either);
-//   history         peak_rotation [alpha]: max |theta1| / alpha; peak_time [s]: when it is reached;
+//   history         peak_rotation [alpha]: max |theta1| / alpha, the collapse angle's when it overturned (one
+//                   measure with a study's: compare/response.hpp); peak_time [s]: when it is reached (overturned);
 //                   overturned [0/1]: rel_error = engine - analytic (0 when they agree, +-1 when not);
 //                   rms_difference [alpha]: analytic = the analytic peak_rotation, engine = RMS over the analytic
 //                   run of (theta1_engine - theta1_analytic) / alpha, rel_error = that RMS / the analytic peak

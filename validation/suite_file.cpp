@@ -211,7 +211,9 @@ private:
                 const std::string label = grid_.record_label(c);
                 suite_.records.push_back({r, label.empty() ? r : label, grid_.record_path(c.file), c.scale});
             }
-            add_case(part, {fmt::format("{}/{}", w, r), compare::CaseKind::history, w, 0.0, r, {}, "", settings});
+            // The suite's own tail unless the part gives one (compare/experiments.hpp says why the two differ).
+            const double tail = part.excitation_axis("response_tail") ? c.response_tail : compare::kSuiteResponseTail;
+            add_case(part, {fmt::format("{}/{}", w, r), compare::CaseKind::history, w, 0.0, r, {}, "", settings, tail});
         }
     }
 

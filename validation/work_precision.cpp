@@ -15,6 +15,7 @@
 #include "analytic/specimens.hpp"
 #include "compare/experiments.hpp"
 #include "compare/metrics.hpp"
+#include "compare/response.hpp"
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
 
@@ -74,11 +75,10 @@ double relative_error(double value, double reference) {
     return std::abs(compare_metric(reference, value).rel_error);
 }
 
-// The peak |theta1| / alpha of a run from rest under the record: the located peak when the backend locates it (the
-// analytic model), else the largest sample (metrics.hpp).
-double peak_over_alpha(const multibody::Trajectory& traj, double alpha) {
-    const double peak = traj.located ? traj.located->max_abs_theta1 : max_abs_theta(traj);
-    return peak / alpha;
+// The peak_rotation [alpha] of a run from rest under the record, as the report and a study measure it
+// (compare/response.hpp).
+double peak_over_alpha(const multibody::Trajectory& traj, const multibody::WallScene& scene) {
+    return response_of(traj, scene).peak / scene.alpha();
 }
 
 multibody::Excitation record_excitation(const std::string& record_path) {
@@ -108,8 +108,7 @@ Problem prepare_problem(const std::string& name, const BenchOptions& options) {
         p.refs["threshold"] = closed;
     } else if (name == "record") {
         p.record = record_excitation(options.record_path);
-        const double alpha = p.scene.alpha();
-        p.refs["peak"] = peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol)), alpha);
+        p.refs["peak"] = peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol)), p.scene);
     } else {
         FreeVibrationOptions free;
         free.r = kRelease;
@@ -128,7 +127,7 @@ std::map<std::string, double> run_problem(const Problem& problem, const multibod
     if (problem.name == "threshold") return {{"threshold", find_threshold(engine, settings, problem.scene).value_g}};
     if (problem.name == "record")
         return {{"peak",
-                 peak_over_alpha(engine.simulate(problem.scene, problem.record, settings), problem.scene.alpha())}};
+                 peak_over_alpha(engine.simulate(problem.scene, problem.record, settings), problem.scene)}};
     FreeVibrationOptions free;
     free.r = kRelease;
     const FreeVibrationResult run = run_free_vibration(engine, settings, problem.scene, free);

@@ -23,6 +23,8 @@ LOCATED_PEAK_RTOL = 1e-9
 # An engine's wall settles into its contacts at the release (a few micrometres on 4 m): its first sample is within
 # 0.1 % of the angle asked.
 RELEASE_RTOL = 1e-3
+# An old peak measure "well short" of the collapse angle: the fold is 11 % short, far past any rounding.
+CLEARLY_SHORT = 1e-3
 # The threshold bisection stops with a bracket of 1e-4 of the value on each side (compare/experiments.hpp): twice that
 # is the room between the bisected threshold and Eq. (12).
 BISECTION_RTOL = 2e-4
@@ -145,6 +147,21 @@ def test_compare_under_a_record_gives_the_programs_peaks_and_simulates_alike(cli
     several = vssw.compare(["ode", "bullet"], **FIG6, record=RECORD, pga=0.4, **model)
     assert [x.engine.engine for x in several] == ["ode", "bullet"]
     assert several[0].engine.peak == c.engine.peak  # one reference for every engine, the same runs
+
+
+def test_an_overturned_runs_peak_is_one_measure_in_python_history_and_compare(cli):
+    # The Fig. 6 wall under Rinaldi x 0.6 overturns under the default set, judged so once it folded at 3.80 alpha1,
+    # short of its collapse angle 4.27: vssw.simulate's peak_rotation, `vssw history` and `vssw compare --record`
+    # give the collapse angle alike (docs/model/engines-and-metrics.md, "One measure per name").
+    r = vssw.simulate("analytic", **FIG6, record=RECORD, scale=0.6)
+    assert r.overturned
+    history = cli.json(["history", *FIG6_FLAGS, "--record", RECORD, "--scale", "0.6"])
+    program = cli.json(["compare", "--engine", "ode", *FIG6_FLAGS, "--record", RECORD, "--scale", "0.6"])
+    analytic = next(x for x in program["runs"] if x["engine"] == "analytic")
+    assert r.peak_rotation == history["max_theta_over_alpha"] == analytic["peak_rotation"]
+    assert r.peak_time == history["t_max_theta"] == analytic["peak_time"]
+    # Must fail: the largest sample (the old measure of an engine's overturned run) is well short of it here.
+    assert r.max_abs_theta1 / r.alpha < r.peak_rotation * (1 - CLEARLY_SHORT)
 
 
 def test_compare_under_a_ground_motion_refuses_a_release_and_names_python_parameters():

@@ -39,7 +39,9 @@ class Simulation:
     of a VSSW, alpha of a parapet), theta0 [rad] (the release), t_end [s] (asked; the run may stop earlier at rest),
     overturned, at_rest_at_end, steps (engine or integrator steps), warnings (the analytic model's own assumptions
     failing along the run), impacts (list of Impact), peaks (list of (t [s], theta1 [rad]) turning points), period
-    [s] (4 x release to first impact; None without a release or an impact), max_abs_theta1 [rad], assumptions
+    [s] (4 x release to first impact; None without a release or an impact), max_abs_theta1 [rad] (the largest
+    sample), peak_rotation [alpha] and peak_time [s] (the run's peak as a study and the report measure it: the
+    located turning point of the analytic model, the collapse angle and the overturning when it overturned), assumptions
     (analytic: "mechanism", "paper" or "custom"; None for an engine), kinematics (analytic: "exact" or "paper"; None
     for an engine or a parapet), ground_motion (its name, None in free
     vibration)."""
@@ -67,6 +69,8 @@ class Simulation:
     peaks: List[Tuple[float, float]]
     period: Optional[float]
     max_abs_theta1: float
+    peak_rotation: float
+    peak_time: float
     assumptions: Optional[str]
     kinematics: Optional[str]
     ground_motion: Optional[str]
