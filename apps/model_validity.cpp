@@ -40,8 +40,14 @@ void add_support_json(Json& j, const SimulationResult& result, Roller roller) {
 void add_support_rows(Table& table, const SimulationResult& result) {
     const SupportDemand& d = result.supports;
     if (!d.computed) return;
-    table.add("least roller reaction", num(d.min_roller_reaction), "N/m",
-              d.roller_tension_at ? fmt::format("pulls from t = {} s", num(*d.roller_tension_at)) : "pushes throughout")
+    // Under a unilateral roller the reaction is the bilateral one's until the top leaves: where it turns tensile the
+    // roller lets go instead of pulling.
+    const std::string tension =
+        !d.roller_tension_at         ? "pushes throughout"
+        : d.roller_departures > 0    ? fmt::format("would pull from t = {} s: the top left the roller there",
+                                                   num(*d.roller_tension_at))
+                                     : fmt::format("pulls from t = {} s", num(*d.roller_tension_at));
+    table.add("least roller reaction", num(d.min_roller_reaction), "N/m", tension)
         .add("top off the roller", fmt::format("{} time{}", d.roller_departures, d.roller_departures == 1 ? "" : "s"),
              "", d.roller_departures > 0 ? fmt::format("{} s in all (unilateral roller)", num(d.time_off_roller)) : "")
         .add("friction needed, base / hinge", fmt::format("{} / {}", num(d.base_friction), num(d.hinge_friction)), "",

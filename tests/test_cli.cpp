@@ -827,6 +827,13 @@ TEST(CliAssumptions, UnilateralRollerIsAChoiceOfTheExactKinematics) {
     EXPECT_EQ(bi["roller"]["departures"].get<int>(), 0);
     EXPECT_GT(uni["first_impact_time"].get<double>(), bi["first_impact_time"].get<double>());
     EXPECT_TRUE(uni["warnings"].empty()) << uni["warnings"];  // the top leaving is modelled, not a failed assumption
+    // The table says what the negative reaction means under each roller: the bilateral one pulls, the unilateral
+    // one lets the top go.
+    const std::string uni_table = run_cli(std::vector<std::string>{"free"} + t1n2).out;
+    const std::string bi_table = run_cli(std::vector<std::string>{"free", "--roller", "bilateral"} + t1n2).out;
+    EXPECT_NE(uni_table.find("would pull from t = 0 s: the top left the roller there"), std::string::npos) << uni_table;
+    EXPECT_NE(bi_table.find("pulls from t = 0 s"), std::string::npos) << bi_table;
+    EXPECT_EQ(bi_table.find("the top left the roller"), std::string::npos) << bi_table;
     const CliResult paper = run_cli(std::vector<std::string>{"free", "--roller", "unilateral", "--theta0", "0.5",
                                                              "--assumptions", "paper"} +
                                     kFig6);
