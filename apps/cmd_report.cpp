@@ -104,10 +104,12 @@ void require_data_folder(const std::string& data) {
 }
 
 // Every record the selected cases need is read once here, before the output folder is made, so that a missing or
-// malformed record is refused (exit 2) without leaving a folder behind. run_suite reads them again: records are a
-// few MB at most, read in milliseconds.
-void require_records_readable(const compare::Suite& suite) {
-    for (const compare::SuiteRecord& r : suite.records) (void)read_record(r.path);
+// malformed record is refused (exit 2) without leaving a folder behind; run_suite uses them (RunOptions::records_read).
+std::map<std::string, GroundMotion> read_records_up_front(const compare::Suite& suite) {
+    std::map<std::string, GroundMotion> read;
+    for (const compare::SuiteRecord& r : suite.records)
+        if (!read.count(r.path)) read.emplace(r.path, read_record(r.path));
+    return read;
 }
 
 // The files the report reads that could live where it writes: a suite file, and the records it names.
@@ -223,7 +225,7 @@ Command add_report_command(CLI::App& root) {
                 compare::Suite suite = study::read_suite(o->suite, o->data);
                 if (!o->cases.empty()) suite = compare::select_cases(suite, o->cases);
                 choose_reference(*o, suite);
-                require_records_readable(suite);
+                const std::map<std::string, GroundMotion> records = read_records_up_front(suite);
                 const bool earthquake_asked = o->earthquake_option->count() > 0 || o->cases.empty();
                 const std::string earthquake_name = o->earthquake_option->count() > 0
                                                         ? o->earthquake
@@ -241,6 +243,7 @@ Command add_report_command(CLI::App& root) {
                 compare::RunOptions run;
                 run.threads = o->threads;
                 run.other_set = true;
+                run.records_read = &records;
                 if (progress.on())
                     run.progress = [&progress](int done, int total, const std::string& what) {
                         progress.show(done, total, what);

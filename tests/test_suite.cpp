@@ -307,6 +307,24 @@ TEST(RunSuite, AnAnalyticRecordPeakDoesNotDependOnItsSampling) {
     EXPECT_GE(peak->analytic * (1.0 + kLocatedPeakTol), largest_sample / alpha);
 }
 
+// The records a caller already read (the report reads them up front) are the ones the suite runs: the same rows as
+// reading the file, and a different motion given under the record's path moves the peak (the map is used, not the
+// file).
+TEST(RunSuite, RecordsAlreadyReadAreTheOnesItRuns) {
+    const Suite suite = select_cases(default_suite(), {"fig6-vssw/rinaldi-x0.45"});
+    const std::string path = suite.records.at(0).path;
+    const auto peak_of = [&](const std::map<std::string, vssw::GroundMotion>* records) {
+        RunOptions options;
+        options.records_read = records;
+        const SuiteResults r = run_suite(suite, {"analytic"}, options);
+        return find_row(r, suite.cases.at(0).id, "analytic", "peak_rotation")->analytic;
+    };
+    const std::map<std::string, vssw::GroundMotion> same = {{path, read_record(path)}};
+    EXPECT_EQ(peak_of(&same), peak_of(nullptr));
+    const std::map<std::string, vssw::GroundMotion> stronger = {{path, read_record(path).scaled(1.5)}};
+    EXPECT_NE(peak_of(&stronger), peak_of(nullptr));
+}
+
 TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
     const Suite suite = default_suite();
     std::vector<std::string> ids;

@@ -455,13 +455,20 @@ struct SuiteInputs {
     }
 };
 
-SuiteInputs read_inputs(const Suite& suite) {
+// The record at `path`: the one the caller already read when it gave it, else read here.
+GroundMotion record_at(const std::string& path, const std::map<std::string, GroundMotion>* records_read) {
+    if (records_read)
+        if (const auto it = records_read->find(path); it != records_read->end()) return it->second;
+    return read_record(path);
+}
+
+SuiteInputs read_inputs(const Suite& suite, const std::map<std::string, GroundMotion>* records_read) {
     SuiteInputs in;
     for (const SuiteCase& c : suite.cases) {
         in.case_walls.push_back(&suite.wall(c.wall_id));
         if (c.kind == CaseKind::history && !in.records.count(c.record_id)) {
             const SuiteRecord& r = suite.record(c.record_id);
-            in.records.emplace(r.id, read_record(r.path).scaled(r.scale));
+            in.records.emplace(r.id, record_at(r.path, records_read).scaled(r.scale));
         }
         if (c.kind == CaseKind::step && !c.dt) throw InputError(fmt::format("step case '{}' has no step dt", c.id));
     }
@@ -540,7 +547,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
         results.other_set = OtherSetRun{other, other_engine.name(), {}, {}};
     }
 
-    const SuiteInputs in = read_inputs(suite);
+    const SuiteInputs in = read_inputs(suite, options.records_read);
     std::vector<CaseReference> references(suite.cases.size());
     const std::vector<CaseTask> tasks = plan_tasks(suite, in, engines, references);
     std::vector<TaskOutput> outputs(tasks.size());

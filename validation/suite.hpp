@@ -196,6 +196,9 @@ struct RunOptions {
     // Also run the analytic model under the other assumption set as an engine (SuiteResults::other_set): the report's
     // row on what the set's assumptions change. Its runs cost as the analytic model's (~0.3 ms per simulated second).
     bool other_set = false;
+    // The suite's records already read, by path, unscaled (the report reads them before its folder is made, to refuse
+    // a bad one up front): run_suite uses them instead of reading the files again. Null: it reads them itself.
+    const std::map<std::string, GroundMotion>* records_read = nullptr;
 };
 
 // Runs every case of the suite for the analytic model and each named engine (unknown names: InputError naming the
