@@ -456,7 +456,7 @@ bool Simulator::rest_phase(double& t, State& y) {
     y[0] = 0.0;
     y[1] = 0.0;
     const double rest_start = t;
-    const auto margin = [&](double when) { return tipping_margin(when); };  // the lift-off guard, inline
+    const auto margin = [&](double when) { return guard(Event::lift_off, when, y); };  // the table's lift-off guard
     auto rest_state = [&](double) { return y; };
     auto lift = [&](double when) {
         emit_grid(rest_start, when, rest_state);
