@@ -87,8 +87,8 @@ CompareReference reference_of(const CompareOptions& o, const ChosenModel& chosen
     const bool vssw = chosen.kind == WallKind::vssw;
     // What an engine's impact should give: every constraint of the new mechanism acting at once.
     const double whole = vssw ? restitution_whole_mechanism(*scene.vssw) : housner_restitution(scene.parapet->alpha);
-    return {o.wall, chosen.kind, chosen.kinematics, chosen.impact, vssw ? std::optional(chosen.roller) : std::nullopt,
-            chosen.set_name, o.theta0, whole};
+    return {o.wall, chosen.kind, chosen.kinematics(), chosen.impact(), vssw ? std::optional(chosen.roller()) : std::nullopt,
+            chosen.set_name(), o.theta0, whole};
 }
 
 // Under a ground motion: the engines and the analytic model from rest, peak against peak (a one-case study).

@@ -37,7 +37,7 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
     require(std::isfinite(request.output_dt) && request.output_dt > 0.0, "output interval (--output-dt) [s]",
             "a positive finite number", request.output_dt);
     if (request.keep_trajectory) options.output_dt = request.output_dt;
-    options.roller = chosen.roller;
+    options.roller = chosen.roller();
     try {
         validate(options);
     } catch (const InputError& e) {
@@ -62,10 +62,10 @@ FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeR
             fmt::format("free vibration from --theta0 {} neither came to rest nor overturned "
                         "(the run ended at t = {} s after {} impacts){}",
                         r, result.t_final, result.impacts.size(), warnings.empty() ? "" : "; " + warnings.front()));
-    const ImpactLaw impact = chosen.impact;
+    const ImpactLaw impact = chosen.impact();
     const double restitution = chosen.model->restitution();
-    return {wall,   chosen.kind, chosen.kinematics, r, alpha, std::move(result), std::move(warnings), impact,
-            restitution, chosen.roller, chosen.set_name, std::move(chosen.model)};
+    return {wall,   chosen.kind, chosen.kinematics(), r, alpha, std::move(result), std::move(warnings), impact,
+            restitution, chosen.roller(), chosen.set_name(), std::move(chosen.model)};
 }
 
 Json to_json(const FreeRun& run) {

@@ -35,7 +35,7 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
                                      options.t_end / kMaxOutputSamples));
     options.keep_samples = request.keep_trajectory;
     options.stop_at_rest = true;
-    options.roller = chosen.roller;
+    options.roller = chosen.roller();
     return {wall, motion.record, motion.vertical_record, std::move(input), std::move(chosen), options, {}, {}};
 }
 
@@ -55,8 +55,8 @@ Json to_json(const HistoryRun& run) {
     j["pga_g"] = run.input.motion.pga() / kStandardGravity;
     j["duration"] = run.input.motion.duration();
     j["model"] = to_string(run.chosen.kind);
-    j["assumptions"] = run.chosen.set_name;
-    j["kinematics"] = run.chosen.kinematics ? Json(to_string(*run.chosen.kinematics)) : Json(nullptr);
+    j["assumptions"] = run.chosen.set_name();
+    j["kinematics"] = run.chosen.kinematics() ? Json(to_string(*run.chosen.kinematics())) : Json(nullptr);
     j["vertical_record"] = run.vertical_record ? Json(*run.vertical_record) : Json(nullptr);
     j["vertical_pga_g"] = run.vertical_record ? Json(run.input.vertical.pga() / kStandardGravity) : Json(nullptr);
     j["alpha"] = run.chosen.model->reference_angle();
@@ -78,7 +78,7 @@ Json to_json(const HistoryRun& run) {
     j["output_dt"] = run.options.output_dt;
     j["impact"] = impact_json(run.chosen);
     j["warnings"] = run.warnings;
-    add_support_json(j, res, run.chosen.roller);
+    add_support_json(j, res, run.chosen.roller());
     j["wall"] = wall_inputs_json(run.wall, run.chosen.kind);
     return j;
 }
@@ -98,7 +98,7 @@ void print_history_summary(std::ostream& out, const HistoryRun& run, const std::
         .add("duration", num(run.input.motion.duration()), "s")
         .text("model", fmt::format("{} ({})", to_string(run.chosen.kind), describe_assumptions(run.chosen)))
         .text("impact law",
-              fmt::format("{} (restitution {})", to_string(run.chosen.impact), num(run.chosen.model->restitution())))
+              fmt::format("{} (restitution {})", to_string(run.chosen.impact()), num(run.chosen.model->restitution())))
         .add("lift-offs", std::to_string(res.lift_offs.size()))
         .add("impacts", std::to_string(res.impacts.size()))
         .add(fmt::format("max |theta|/{}", alpha_name), num(response.peak / run.chosen.model->reference_angle()),

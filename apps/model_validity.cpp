@@ -12,11 +12,11 @@
 namespace vssw::cli {
 
 std::vector<std::string> validity_warnings(const ChosenModel& chosen, const SimulationResult& result) {
-    return vssw::validity_warnings(*chosen.model, chosen.kinematics, result);
+    return vssw::validity_warnings(*chosen.model, chosen.kinematics(), result);
 }
 
 Json impact_json(const ChosenModel& chosen) {
-    return {{"law", to_string(chosen.impact)}, {"restitution", chosen.model->restitution()}};
+    return {{"law", to_string(chosen.impact())}, {"restitution", chosen.model->restitution()}};
 }
 
 void add_support_json(Json& j, const SimulationResult& result, Roller roller) {

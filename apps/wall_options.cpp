@@ -94,30 +94,27 @@ ParapetGeometry parapet_geometry(const WallOptions& o) {
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
     const WallKind kind = parse_wall_kind(options.model);
     const Assumptions a = resolve_assumptions(options);  // checked even where a parapet ignores a part
-    const std::string set = set_name(a);
     if (kind == WallKind::parapet) {
         const ParapetGeometry p = parapet_geometry(wall);
-        return {kind, Wall::of(p), std::nullopt, with_impact_law(make_parapet_model(p), a.impact), a.impact,
-                Roller::bilateral, a, set};
+        return {kind, Wall::of(p), with_impact_law(make_parapet_model(p), a.impact), a};
     }
     const VsswGeometry w = vssw_geometry(wall);
     require_a_model(a, unilateral_with_paper_kinematics(options));
-    return {kind, Wall::of(w), a.kinematics, with_impact_law(make_vssw_model(w, a.kinematics), a.impact), a.impact,
-            a.roller, a, set};
+    return {kind, Wall::of(w), with_impact_law(make_vssw_model(w, a.kinematics), a.impact), a};
 }
 
 Json assumptions_json(const ChosenModel& c) {
     const bool vssw = c.kind == WallKind::vssw;
-    return {{"assumptions", c.set_name},
+    return {{"assumptions", c.set_name()},
             {"kinematics", vssw ? Json(to_string(c.assumptions.kinematics)) : Json(nullptr)},
-            {"impact", to_string(c.impact)},
-            {"roller", vssw ? Json(to_string(c.roller)) : Json(nullptr)}};
+            {"impact", to_string(c.impact())},
+            {"roller", vssw ? Json(to_string(c.roller())) : Json(nullptr)}};
 }
 
 std::string describe_assumptions(const ChosenModel& c) {
-    if (c.kind != WallKind::vssw) return fmt::format("{}: impact {}", c.set_name, to_string(c.impact));
-    return fmt::format("{}: {} kinematics, impact {}, {} roller", c.set_name, to_string(c.assumptions.kinematics),
-                       to_string(c.impact), to_string(c.roller));
+    if (c.kind != WallKind::vssw) return fmt::format("{}: impact {}", c.set_name(), to_string(c.impact()));
+    return fmt::format("{}: {} kinematics, impact {}, {} roller", c.set_name(), to_string(c.assumptions.kinematics),
+                       to_string(c.impact()), to_string(c.roller()));
 }
 
 Json wall_inputs_json(const WallOptions& o, WallKind kind) {

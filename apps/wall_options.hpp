@@ -71,12 +71,16 @@ ParapetGeometry parapet_geometry(const WallOptions& options);
 struct ChosenModel {
     WallKind kind;
     Wall wall;                             // as built from the options
-    std::optional<Kinematics> kinematics;  // none for a parapet (Housner's block has one exact kinematics)
     std::unique_ptr<RockingModel> model;   // with the chosen impact law
-    ImpactLaw impact;
-    Roller roller = Roller::bilateral;     // always bilateral for a parapet (it has no roller)
     Assumptions assumptions;               // as resolved (a parapet's too: its kinematics and roller unused)
-    std::string set_name;                  // "paper", "mechanism" or "custom" (set_name of `assumptions`)
+
+    // None for a parapet (Housner's block has one exact kinematics).
+    std::optional<Kinematics> kinematics() const {
+        return kind == WallKind::vssw ? std::optional(assumptions.kinematics) : std::nullopt;
+    }
+    const ImpactLaw& impact() const { return assumptions.impact; }
+    Roller roller() const { return kind == WallKind::vssw ? assumptions.roller : Roller::bilateral; }  // parapet: none
+    std::string set_name() const { return vssw::set_name(assumptions); }  // "paper", "mechanism" or "custom"
 };
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options);
 

@@ -350,9 +350,9 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     d["peak_time"] = response.peak_time;
     d["theta0"] = ex.theta0;
     d["t_end"] = ex.t_end;
-    d["assumptions"] = engine_name == "analytic" ? py::cast(chosen.set_name) : py::none();
-    d["kinematics"] = engine_name == "analytic" && chosen.kinematics
-                          ? py::cast(chosen.kinematics == vssw::Kinematics::exact ? "exact" : "paper")
+    d["assumptions"] = engine_name == "analytic" ? py::cast(chosen.set_name()) : py::none();
+    d["kinematics"] = engine_name == "analytic" && chosen.kinematics()
+                          ? py::cast(chosen.kinematics() == vssw::Kinematics::exact ? "exact" : "paper")
                           : py::none();
     d["ground_motion"] = shaken ? py::cast(ex.horizontal.name()) : py::none();
     return d;

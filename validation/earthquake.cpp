@@ -206,19 +206,34 @@ EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& 
     return v;
 }
 
-std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const std::string& engine,
-                                            const Json& settings, const std::filesystem::path& dir,
-                                            const EarthquakeRunOptions& options) {
-    const Grid grid(settings_spec(study_file, engine, settings));
+namespace {
+
+StudyRunOptions study_run_options(const EarthquakeRunOptions& options) {
     StudyRunOptions run;
     run.threads = options.threads;
     run.commit = options.commit;
     run.progress = options.progress;
+    return run;
+}
+
+// Runs the study of `spec` into dir (its rows only, no outputs) and reads them back: the stand-ins' and the paper's
+// model's ensembles beside the report's.
+StudyData run_rows(const StudySpec& spec, const std::filesystem::path& dir, const EarthquakeRunOptions& options) {
+    const Grid grid(spec);
+    const StudyRunOptions run = study_run_options(options);
     {
         const FolderLock lock = prepare_study_dir(grid, dir, run);
         run_study(grid, dir, run);
     }
-    const StudyData d = read_study_data(dir);
+    return read_study_data(dir);
+}
+
+}  // namespace
+
+std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const std::string& engine,
+                                            const Json& settings, const std::filesystem::path& dir,
+                                            const EarthquakeRunOptions& options) {
+    const StudyData d = run_rows(settings_spec(study_file, engine, settings), dir, options);
     const EnsembleMeasures e = ensemble_measures(d);
     std::vector<SettingsVerdict> out;
     for (const SeriesMeasures& m : e.measures) {
@@ -234,16 +249,7 @@ namespace {
 // The paper's model judged as an engine against the reference on the report's ensemble (run into dir).
 std::optional<EarthquakeVerdict> judge_paper_model(const std::string& study_file, const std::filesystem::path& dir,
                                                    const EarthquakeRunOptions& options) {
-    const Grid grid(assumption_sets_spec(study_file));
-    StudyRunOptions run;
-    run.threads = options.threads;
-    run.commit = options.commit;
-    run.progress = options.progress;
-    {
-        const FolderLock lock = prepare_study_dir(grid, dir, run);
-        run_study(grid, dir, run);
-    }
-    const StudyData d = read_study_data(dir);
+    const StudyData d = run_rows(assumption_sets_spec(study_file), dir, options);
     const EnsembleMeasures e = ensemble_measures(d);
     for (const SeriesMeasures& m : e.measures)
         if (d.series[m.series].set == to_string(AssumptionSet::paper)) {
@@ -272,10 +278,7 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     const StudySpec spec = with_engines(study_file, engines);
     require_judgeable(spec, study_file);
     const Grid grid(spec);
-    StudyRunOptions run;
-    run.threads = options.threads;
-    run.progress = options.progress;
-    run.commit = options.commit;
+    const StudyRunOptions run = study_run_options(options);
     const FolderLock lock = prepare_study_dir(grid, dir, run);
     const StudyRunResult result = run_study(grid, dir, run);
     OutputOptions output;

@@ -16,7 +16,6 @@ TOOLS = {  # how a text names the program -> its Debian package
     r"/usr/bin/time\b|\bGNU time\b|\btime -v\b": "time",
     r"\bcallgrind\b|\bcachegrind\b|\bvalgrind\b|\bmassif\b": "valgrind",
     r"\bperf (?:stat|record|report)\b|\(perf[,)]|\bperf's\b|, perf\)": "linux-perf",
-    r"\bfarm-bench\b": None,
     r"\bheaptrack\b": "heaptrack",
     r"\bmultitime\b": None,
 }
