@@ -23,6 +23,16 @@ std::vector<std::string> validity_warnings(const RockingModel& model, std::optio
                 "the top {:g} % of the thickness off the roller from {:.3g} alpha1 on; use --kinematics exact",
                 result.max_abs_theta / alpha, 100.0 * kEq3DriftFraction, *limit / alpha));
     }
+    // The whole mechanism's impact projects to a negative ratio on a squat wall and is held at 0 (with_impact_law):
+    // the model's landing stops the wall, where an engine's contacts were seen to rebound (docs/model/assumptions.md).
+    if (w && !result.impacts.empty() && model.restitution() == 0.0) {
+        const double projected = restitution_whole_mechanism(*w);
+        if (projected < 0.0)
+            out.push_back(fmt::format(
+                "the whole mechanism's plastic impact projects to a negative ratio ({:.3g}) on this squat wall: the "
+                "model's landing leaves it at rest, where a rigid-body engine's contacts may rebound",
+                projected));
+    }
     if (result.weightless_at)
         out.push_back(fmt::format("the vertical ground acceleration cancels gravity at t = {:.6g} s (g + a_v <= 0): "
                                   "the wall would leave the ground there, which the rocking model does not allow",

@@ -731,6 +731,23 @@ TEST(CliAssumptions, FreeReportsTheRollerAndFrictionAndWarnsWhereTheRollerPulls)
     EXPECT_TRUE(parapet["roller"].is_null());
 }
 
+// A squat wall (1 m x 0.4 m, hinge 0.6): the whole mechanism's impact projects to -0.22, held at 0, and the run says
+// so (an engine's contacts rebound there); Eq. (19)'s impact (the set paper, e = 1/3) raises no such warning.
+TEST(CliAssumptions, ASquatWallsLandingHeldAtRestIsAWarning) {
+    const std::vector<std::string> squat = {"free", "--height", "1", "--thickness", "0.4", "--hinge", "0.6",
+                                            "--theta0", "0.5"};
+    const auto mentions_squat = [](const Json& j) {
+        for (const Json& w : j["warnings"])
+            if (w.get<std::string>().find("negative ratio") != std::string::npos) return true;
+        return false;
+    };
+    const Json whole = run_json(squat);
+    EXPECT_EQ(whole["impact"]["restitution"].get<double>(), 0.0);
+    EXPECT_TRUE(mentions_squat(whole)) << whole["warnings"];
+    EXPECT_FALSE(mentions_squat(run_json(squat + std::vector<std::string>{"--assumptions", "paper"})));
+    EXPECT_EQ(run_cli(squat + std::vector<std::string>{"--strict"}).code, vssw::cli::kExitSimulationFailed);
+}
+
 TEST(CliAssumptions, ImpactLawIsAChoiceOnFreeAndHistory) {
     const Json whole = run_json(std::vector<std::string>{"free", "--theta0", "0.5", "--impact", "whole-mechanism"} +
                                 kFig6);
