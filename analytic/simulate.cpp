@@ -14,6 +14,8 @@
 
 #include "bracket.hpp"
 #include "error.hpp"
+#include "landing_prediction.hpp"
+#include "motion_at_stages.hpp"
 #include "off_roller.hpp"
 #include "support_monitor.hpp"
 
@@ -43,13 +45,6 @@ constexpr double kReservedSamples = 2097152.0;
 constexpr int kMaxNewtonIterations = 8;
 // After the top lands back on the roller the step restarts small: the motion has just changed mechanism.
 constexpr double kFirstStepAfterLanding = 1e-4;  // [s]
-// An event placed within this of a step's end is carried there by y + dh f(y), whose error (dh^2/2 |y''|, < 1e-16
-// here) is far below the integration error, instead of by another step.
-constexpr double kTaylorSpan = 1e-8;  // [s]
-// A free flight's duration is predicted from the last two (FlightHistory) and aimed at only when the first- and
-// second-order predictions agree within this: on Fig. 6 the second-order error was a tenth of their difference, so
-// the aimed step lands within kTaylorSpan. A prediction that misses costs a step, never accuracy.
-constexpr double kFlightPredictionAgreement = 10.0 * kTaylorSpan;  // [s]
 // In a flight the symmetry cannot predict (the ground moves, or the flight did not start from theta1 = 0 with the
 // ground still: a release, a flight after the top left the roller) the landing is predicted at each step's start
 // from theta1, theta1' and theta1'' (the parabola through them, parabola_landing) and the step cut to end there when
@@ -70,41 +65,6 @@ constexpr int kMaxShortLandingSteps = 4;
 constexpr double kBalanceErrorPerRtol = 100.0;
 // A time that never comes: no landing predicted, no rest in sight.
 constexpr double kNever = std::numeric_limits<double>::infinity();
-
-// Time to the landing, u = side theta1 = 0 coming down, along u + u' d + u'' d^2 / 2 from u >= 0 (or u < 0 just past
-// it, moving down: then negative, the landing behind), in forms without cancellation; infinity when the parabola
-// does not come down to zero (it turns first, or rises for ever).
-double parabola_landing(double u, double u_dot, double u_ddot) {
-    const double disc = u_dot * u_dot - 2.0 * u_ddot * u;
-    if (!(disc >= 0.0)) return std::numeric_limits<double>::infinity();
-    if (u_dot < 0.0) return 2.0 * u / (-u_dot + std::sqrt(disc));  // moving down: the first root
-    if (u_ddot < 0.0) return (u_dot + std::sqrt(disc)) / -u_ddot;    // rising: down again after the turn
-    return std::numeric_limits<double>::infinity();
-}
-
-// Durations and launch speeds of the last two free flights (from theta1 = 0, the ground at rest). In the limit of
-// small flights the duration is proportional to the launch speed (2|v|/a); the ratio duration/speed drifts slowly
-// with the amplitude, and its drift from one flight to the next predicts the next one.
-struct FlightHistory {
-    double duration[2] = {0.0, 0.0}, speed[2] = {0.0, 0.0};  // [1]: the latest
-    int known = 0;
-
-    void add(double t, double v) {
-        duration[0] = duration[1];
-        speed[0] = speed[1];
-        duration[1] = t;
-        speed[1] = v;
-        known = std::min(known + 1, 2);
-    }
-    // The next flight's duration from its launch speed, or infinity when the two predictions disagree.
-    double predict(double v) const {
-        if (known < 2) return std::numeric_limits<double>::infinity();
-        const double first = duration[1] * v / speed[1];
-        const double second = first * (duration[1] / speed[1]) / (duration[0] / speed[0]);
-        return std::abs(second - first) < kFlightPredictionAgreement ? second
-                                                                     : std::numeric_limits<double>::infinity();
-    }
-};
 
 // The events of the motion, a hybrid system (CVODE's root functions, Drake's guards and resets): in each mode a flow
 // (rest_phase, rocking_phase, off_roller_phase) integrates until the first of the guards it watches crosses zero in its
@@ -140,26 +100,6 @@ constexpr Event kFlightEnds[] = {Event::impact, Event::overturning};
 // kTaylorSpan past it, by y + dh f(y); a landing within kShortLandingSpan, by land_short; or an event found by the
 // search and placed on the integrator's own solution (polish_event).
 enum class Reach { step_end, taylor, short_steps, polished };
-
-// A ground motion read at the integrator's stages: the twelve stages of a step under a record fall in one sample
-// interval, so the interval's line is kept and the record looked up only when a time leaves it (the lookup was 10 %
-// of a record run's instructions, callgrind). Values equal GroundMotion::operator() to rounding.
-class MotionAtStages {
-public:
-    explicit MotionAtStages(const GroundMotion& m) : m_(m) {}
-    double operator()(double t) const {
-        if (!(t >= piece_.start && t <= piece_.end)) {
-            const std::optional<GroundMotion::LinearPiece> p = m_.linear_piece(t);
-            if (!p) return m_(t);  // an analytic signal, or outside the record's samples
-            piece_ = *p;
-        }
-        return piece_.value + piece_.slope * (t - piece_.start);
-    }
-
-private:
-    const GroundMotion& m_;
-    mutable GroundMotion::LinearPiece piece_{1.0, 0.0, 0.0, 0.0};  // empty until the first lookup
-};
 
 class Simulator {
 public:
@@ -456,7 +396,8 @@ private:
 static_assert(Simulator::rows_follow_events(), "the event table's rows follow the Event enum");
 
 // The flow off the roller: the top flies off it (off_roller.hpp) from (t, y) until it lands back on the roller, the
-// base lands (the one-DOF impact, on the far guide), the upper block folds past its guide (overturning) or the run ends.
+// base lands (the one-DOF impact, on the far guide), the upper block folds past its guide (overturning) or the run
+// ends.
 Event Simulator::off_roller_phase(double& t, State& y) {
     const TwoBlockWall& blocks = supports_.wall(side_);
     OffRollerSetup setup;
@@ -962,6 +903,7 @@ Mode Simulator::impact(double& t, State& y) {
     side_ = -side_;
     y[1] = v_after;
     if (past(direction(Event::rest), guard(Event::rest, t, y))) return fire(Event::rest, t, y);
+    // A landing placed by y + dh f(y) may lie up to kTaylorSpan past a step that stopped at the end time: no flight.
     if (!(t < opt_.t_end)) return Mode::over;
     flight_ = launch(t, y);
     return Mode::rocking;
