@@ -85,7 +85,8 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 //                    flight's rise (rest_margin)                   form (settle -> at rest)                series
 //   landing on the   the top corner's gap to the roller falling    plastic projection onto the one-DOF     Eq. (2)
 //   roller           (off_roller.cpp's own table)                  mechanism (land -> rocking)
-//   end              none: the run's end time (CVODE's tstop)      the run ends (finish -> over)
+//   end              the end time - t (CVODE's tstop:   falling    the run ends (finish -> over)
+//                    each flow stops there)
 // Lift-off is watched at rest on the ground motion's own grid; rest at each impact (in impact's reset); impact,
 // overturning, turning point and roller tension along every step of a flight (a predicted landing may place the
 // impact instead: place_landing); landing on the roller, and its own impact and overturning, by off_roller_phase.
