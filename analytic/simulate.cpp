@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -13,6 +14,8 @@
 
 #include "bracket.hpp"
 #include "error.hpp"
+#include "landing_prediction.hpp"
+#include "motion_at_stages.hpp"
 #include "off_roller.hpp"
 #include "support_monitor.hpp"
 
@@ -42,13 +45,6 @@ constexpr double kReservedSamples = 2097152.0;
 constexpr int kMaxNewtonIterations = 8;
 // After the top lands back on the roller the step restarts small: the motion has just changed mechanism.
 constexpr double kFirstStepAfterLanding = 1e-4;  // [s]
-// An event placed within this of a step's end is carried there by y + dh f(y), whose error (dh^2/2 |y''|, < 1e-16
-// here) is far below the integration error, instead of by another step.
-constexpr double kTaylorSpan = 1e-8;  // [s]
-// A free flight's duration is predicted from the last two (FlightHistory) and aimed at only when the first- and
-// second-order predictions agree within this: on Fig. 6 the second-order error was a tenth of their difference, so
-// the aimed step lands within kTaylorSpan. A prediction that misses costs a step, never accuracy.
-constexpr double kFlightPredictionAgreement = 10.0 * kTaylorSpan;  // [s]
 // In a flight the symmetry cannot predict (the ground moves, or the flight did not start from theta1 = 0 with the
 // ground still: a release, a flight after the top left the roller) the landing is predicted at each step's start
 // from theta1, theta1' and theta1'' (the parabola through them, parabola_landing) and the step cut to end there when
@@ -70,63 +66,33 @@ constexpr double kBalanceErrorPerRtol = 100.0;
 // A time that never comes: no landing predicted, no rest in sight.
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-// Time to the landing, u = side theta1 = 0 coming down, along u + u' d + u'' d^2 / 2 from u >= 0 (or u < 0 just past
-// it, moving down: then negative, the landing behind), in forms without cancellation; infinity when the parabola
-// does not come down to zero (it turns first, or rises for ever).
-double parabola_landing(double u, double u_dot, double u_ddot) {
-    const double disc = u_dot * u_dot - 2.0 * u_ddot * u;
-    if (!(disc >= 0.0)) return std::numeric_limits<double>::infinity();
-    if (u_dot < 0.0) return 2.0 * u / (-u_dot + std::sqrt(disc));  // moving down: the first root
-    if (u_ddot < 0.0) return (u_dot + std::sqrt(disc)) / -u_ddot;    // rising: down again after the turn
-    return std::numeric_limits<double>::infinity();
-}
-
-// Durations and launch speeds of the last two free flights (from theta1 = 0, the ground at rest). In the limit of
-// small flights the duration is proportional to the launch speed (2|v|/a); the ratio duration/speed drifts slowly
-// with the amplitude, and its drift from one flight to the next predicts the next one.
-struct FlightHistory {
-    double duration[2] = {0.0, 0.0}, speed[2] = {0.0, 0.0};  // [1]: the latest
-    int known = 0;
-
-    void add(double t, double v) {
-        duration[0] = duration[1];
-        speed[0] = speed[1];
-        duration[1] = t;
-        speed[1] = v;
-        known = std::min(known + 1, 2);
-    }
-    // The next flight's duration from its launch speed, or infinity when the two predictions disagree.
-    double predict(double v) const {
-        if (known < 2) return std::numeric_limits<double>::infinity();
-        const double first = duration[1] * v / speed[1];
-        const double second = first * (duration[1] / speed[1]) / (duration[0] / speed[0]);
-        return std::abs(second - first) < kFlightPredictionAgreement ? second
-                                                                     : std::numeric_limits<double>::infinity();
-    }
-};
-
-// The events of the one-DOF motion as a table of guards g(t, y) (bracket.hpp): each crosses zero in its direction at
-// its event, which calls its reset.
-//   event           guard g(t, y)                              direction  reset
-//   lift-off        the tipping margin at rest, |a_h| X -      rising     the flight starts (rest_phase)
-//                   (g + a_v) Y - N L (Eq. 12 for the VSSW)
-//   impact          side theta1                                falling    Eq. (19)'s map theta1'+ = e theta1'- onto
-//                                                                         the other side (impact)
-//   overturning     collapse angle - side theta1               falling    the run ends
-//   turning point   theta1'                                    either     a peak recorded
-//   roller tension  minus the roller's reaction (a VSSW)       rising     recorded; a unilateral roller lets the top
-//                                                                         go (leave_roller, off_roller.hpp)
-//   rest            rest_amplitude alpha - the next flight's   rising     the remaining impacts summed in closed form
-//                   rise (rest_margin)                                    (settle)
-// Lift-off is looked at while at rest on the ground motion's own grid, rest after each impact, the others along every
-// step of a flight (where a predicted landing may place the impact instead: place_landing). Event::none: no event,
-// the run's end.
-enum class Event { none, lift_off, impact, overturning, turning_point, roller_tension, rest };
-
-constexpr Direction direction(Event e) {
-    if (e == Event::impact || e == Event::overturning) return Direction::falling;
-    return e == Event::turning_point ? Direction::either : Direction::rising;  // lift-off, roller tension, rest
-}
+// The events of the motion, a hybrid system (CVODE's root functions, Drake's guards and resets): in each mode a flow
+// (rest_phase, rocking_phase, off_roller_phase) integrates until the first of the guards it watches crosses zero in its
+// direction; the main loop (run) then asks the event's row for its reset, which returns the next mode. Modes: at rest,
+// rocking on the roller (one DOF), off the roller (two DOF, a unilateral roller), over.
+//   event            guard g(t, y)                      direction  reset (-> next mode)                      source
+//   lift-off         the tipping margin at rest, |a_h|  rising     side against a_h, the flight starts     Eq. (12);
+//                    X - (g + a_v) Y - N L                         (lift -> rocking)                       Eq. (17)
+//   impact           side theta1                        falling    theta1'+ = e theta1'- on the other      Eq. (19) or
+//                                                                  side, the rest guard asked (impact ->   the whole
+//                                                                  rocking, or rest's reset)               mechanism's
+//   turning point    theta1'                            either     a peak recorded (turn -> rocking)       Eq. (10)
+//   overturning      collapse angle - side theta1       falling    the run ends (overturn -> over)         Eq. (26)
+//   roller tension   minus the roller's reaction        rising     the first one recorded; a unilateral    Eq. (2)
+//                                                                  roller lets the top go (leave ->
+//                                                                  off roller)
+//   rest             rest_amplitude alpha - the next    rising     the remaining impacts summed in closed  Eq. (19)'s
+//                    flight's rise (rest_margin)                   form (settle -> at rest)                series
+//   landing on the   the top corner's gap to the roller falling    plastic projection onto the one-DOF     Eq. (2)
+//   roller           (off_roller.cpp's own table)                  mechanism (land -> rocking)
+//   end              the end time - t (CVODE's tstop:   falling    the run ends (finish -> over)
+//                    each flow stops there)
+// Lift-off is watched at rest on the ground motion's own grid; rest at each impact (in impact's reset); impact,
+// overturning, turning point and roller tension along every step of a flight (a predicted landing may place the
+// impact instead: place_landing); landing on the roller, and its own impact and overturning, by off_roller_phase.
+// Event::none: no event in a step.
+enum class Event { none, lift_off, impact, turning_point, overturning, roller_tension, rest, landing_on_roller, end };
+enum class Mode { at_rest, rocking, off_roller, over };
 
 // The events that end a flight's step (the reset follows), in the order their guards are looked at.
 constexpr Event kFlightEnds[] = {Event::impact, Event::overturning};
@@ -135,26 +101,6 @@ constexpr Event kFlightEnds[] = {Event::impact, Event::overturning};
 // kTaylorSpan past it, by y + dh f(y); a landing within kShortLandingSpan, by land_short; or an event found by the
 // search and placed on the integrator's own solution (polish_event).
 enum class Reach { step_end, taylor, short_steps, polished };
-
-// A ground motion read at the integrator's stages: the twelve stages of a step under a record fall in one sample
-// interval, so the interval's line is kept and the record looked up only when a time leaves it (the lookup was 10 %
-// of a record run's instructions, callgrind). Values equal GroundMotion::operator() to rounding.
-class MotionAtStages {
-public:
-    explicit MotionAtStages(const GroundMotion& m) : m_(m) {}
-    double operator()(double t) const {
-        if (!(t >= piece_.start && t <= piece_.end)) {
-            const std::optional<GroundMotion::LinearPiece> p = m_.linear_piece(t);
-            if (!p) return m_(t);  // an analytic signal, or outside the record's samples
-            piece_ = *p;
-        }
-        return piece_.value + piece_.slope * (t - piece_.start);
-    }
-
-private:
-    const GroundMotion& m_;
-    mutable GroundMotion::LinearPiece piece_{1.0, 0.0, 0.0, 0.0};  // empty until the first lookup
-};
 
 class Simulator {
 public:
@@ -355,12 +301,21 @@ private:
         double event_time = 0.0;        // where the step's motion ends
     };
 
-    // The top leaves the roller at (t, y): flies off it (off_roller.hpp) until it lands back (nothing returned: the
-    // one-DOF motion goes on from the updated t, y), or a base impact, overturning or the end ends the flight.
-    std::optional<Event> leave_roller(double& t, State& y);
-    void back_on_roller(Flight& f, double t, const State& y);
-    bool rest_phase(double& t, State& y);
+    // The flows of the modes (at rest, rocking, off the roller): each runs from (t, y) until the first event it
+    // watches, and returns it with (t, y) there.
+    Event rest_phase(double& t, State& y);
     Event rocking_phase(double& t, State& y);
+    Event off_roller_phase(double& t, State& y);
+    // The resets of the table's rows: each applies its event at (t, y) and returns the mode that follows.
+    Mode lift(double& t, State& y);
+    Mode impact(double& t, State& y);
+    Mode turn(double& t, State& y);
+    Mode overturn(double& t, State& y);
+    Mode leave(double& t, State& y);
+    Mode settle(double& t, State& y);
+    Mode land(double& t, State& y);
+    Mode finish(double& t, State& y);
+    void back_on_roller(Flight& f, double t, const State& y);
     Flight launch(double t, const State& y);
     double parabola_aim(double t, const State& y, const State& dy, double breakpoint) const;
     bool take_step(Flight& f, double t, const State& y, Trial& s);
@@ -371,8 +326,6 @@ private:
     void record_turning_points(Flight& f, double t, const State& y, const Trial& s);
     bool apply(Flight& f, double& t, State& y, const Trial& s);
     std::optional<double> roller_tension_in(RkStep<3>& step, double roller_before, double t);
-    bool impact(double& t, State& y);
-    void settle(double& t, State& y);
     void polish_event(Event ev, double t, const State& y, const State& dy, double h, RkStep<3>& step) const;
     bool may_turn(const RkStep<3>& step) const;
     std::optional<double> land_short(double t, State y, State dy, double limit, State& landing,
@@ -399,11 +352,54 @@ private:
     long output_index_ = 0;
     double h_ = 1e-3;
     FlightHistory flights_;  // the last free flights, to predict the next one's end
+    Flight flight_;          // the current flight, started by the lift-off's or the impact's reset
     mutable std::size_t breakpoint_hint_[2] = {0, 0};  // next_breakpoint's last answers (horizontal, vertical)
     SimulationResult out_;
-};
 
-std::optional<Event> Simulator::leave_roller(double& t, State& y) {
+public:
+    // One row of the event table (the comment above Event): the event, the direction its guard (guard()) crosses
+    // zero in, its reset, and the equation they come from.
+    struct EventRow {
+        Event event;
+        Direction direction;
+        Mode (Simulator::*reset)(double& t, State& y);
+        const char* source;
+    };
+    static constexpr EventRow kEvents[] = {
+        {Event::lift_off, Direction::rising, &Simulator::lift, "Eq. (12); Eq. (17) for a parapet"},
+        {Event::impact, Direction::falling, &Simulator::impact, "Eq. (19), or the whole mechanism's impact"},
+        {Event::turning_point, Direction::either, &Simulator::turn, "Eq. (10): theta1' = 0"},
+        {Event::overturning, Direction::falling, &Simulator::overturn, "Eq. (26)"},
+        {Event::roller_tension, Direction::rising, &Simulator::leave, "Eq. (2)'s constraint force"},
+        {Event::rest, Direction::rising, &Simulator::settle, "Eq. (19)'s geometric series of impacts"},
+        {Event::landing_on_roller, Direction::falling, &Simulator::land, "Eq. (2), restored plastically"},
+        {Event::end, Direction::falling, &Simulator::finish, "the run's end time"},
+    };
+    // Rows are looked up by the event's number: they must follow the enum, one each.
+    static constexpr bool rows_follow_events() {
+        for (std::size_t i = 0; i < std::size(kEvents); ++i)
+            if (static_cast<std::size_t>(kEvents[i].event) != i + 1) return false;
+        return std::size(kEvents) == static_cast<std::size_t>(Event::end);
+    }
+
+private:
+    static constexpr const EventRow& row(Event e) { return kEvents[static_cast<std::size_t>(e) - 1]; }
+    static constexpr Direction direction(Event e) { return row(e).direction; }
+    // The main loop's one question: the event's reset, applied.
+    Mode fire(Event e, double& t, State& y) { return (this->*row(e).reset)(t, y); }
+    // The flow of a mode other than over.
+    Event flow(Mode m, double& t, State& y) {
+        static constexpr Event (Simulator::*kFlows[])(double&, State&) = {
+            &Simulator::rest_phase, &Simulator::rocking_phase, &Simulator::off_roller_phase};
+        return (this->*kFlows[static_cast<std::size_t>(m)])(t, y);
+    }
+};
+static_assert(Simulator::rows_follow_events(), "the event table's rows follow the Event enum");
+
+// The flow off the roller: the top flies off it (off_roller.hpp) from (t, y) until it lands back on the roller, the
+// base lands (the one-DOF impact, on the far guide), the upper block folds past its guide (overturning) or the run
+// ends.
+Event Simulator::off_roller_phase(double& t, State& y) {
     const TwoBlockWall& blocks = supports_.wall(side_);
     OffRollerSetup setup;
     setup.horizontal = &ah_;
@@ -443,16 +439,18 @@ std::optional<Event> Simulator::leave_roller(double& t, State& y) {
     t = e.t;
     y = {e.theta1, e.theta1_dot, e.work_ground};
     switch (e.how) {
-        case OffRollerEnd::How::on_roller: check_balance(t, y); return std::nullopt;
+        case OffRollerEnd::How::on_roller: return Event::landing_on_roller;
         case OffRollerEnd::How::base_impact: return Event::impact;  // on the far guide at theta1 = 0: one-DOF again
         case OffRollerEnd::How::collapse: off_mechanism_ = true; return Event::overturning;
         case OffRollerEnd::How::end_time: off_mechanism_ = true; break;
     }
-    return Event::none;
+    return Event::end;
 }
 
-// Waits at rest from t; returns true with t at the lift-off time and side_ set, or false when the run is over.
-bool Simulator::rest_phase(double& t, State& y) {
+// The flow at rest: waits from t until the lift-off guard crosses (Event::lift_off, t there) or the run ends at rest
+// (Event::end). A run already at its end (a wall settled there) ends without waiting.
+Event Simulator::rest_phase(double& t, State& y) {
+    if (!(t < opt_.t_end)) return Event::end;
     y[0] = 0.0;
     y[1] = 0.0;
     const double rest_start = t;
@@ -461,9 +459,7 @@ bool Simulator::rest_phase(double& t, State& y) {
     auto lift = [&](double when) {
         emit_grid(rest_start, when, rest_state);
         t = when;
-        side_ = ah_(when) > 0.0 ? -1 : 1;  // the wall's inertia pushes it against the ground acceleration
-        out_.lift_offs.push_back(when);
-        return true;
+        return Event::lift_off;
     };
     // The ground motion is left-continuous at its breakpoints: where it drops at a breakpoint (a cosine pulse's end),
     // a margin positive at that instant alone tips nothing. The wall lifts only where the margin is positive just
@@ -478,7 +474,8 @@ bool Simulator::rest_phase(double& t, State& y) {
             const double end = opt_.stop_at_rest ? std::max(scan, rest_start) : opt_.t_end;
             emit_grid(rest_start, end, rest_state);
             t = end;
-            return false;
+            out_.at_rest_at_end = true;
+            return Event::end;
         }
         double next = std::min({next_breakpoint(scan), opt_.t_end, motion_end_});
         // An analytic signal's extrema too: between them and the breakpoints |a_h| is largest at an end, so no
@@ -506,7 +503,8 @@ bool Simulator::rest_phase(double& t, State& y) {
     }
     emit_grid(rest_start, opt_.t_end, rest_state);
     t = opt_.t_end;
-    return false;
+    out_.at_rest_at_end = true;
+    return Event::end;
 }
 
 // Refines an event found on the continuous extension so that it lies on the integrator's own solution, not on its
@@ -581,19 +579,12 @@ double Simulator::model_guard(Event e, double t, const State& y) const {
     return tipping_margin(t);  // lift-off
 }
 
-// A flight: step, predict, locate, apply, until an event ends it (an impact or the overturning, returned), or the
-// end time (Event::none). Under a unilateral roller the top may leave the roller on the way and land back.
+// The flow rocking on the roller: the current flight (flight_) steps, predicts, locates and applies until an event
+// ends it (an impact or the overturning), a unilateral roller would pull (roller tension), or the run ends (end).
 Event Simulator::rocking_phase(double& t, State& y) {
-    Flight f = launch(t, y);
+    Flight& f = flight_;
     while (t < opt_.t_end) {
-        if (unilateral() && last_roller_ < 0.0) {  // the roller cannot pull: the top leaves it
-            f.symmetric = false;  // the flight goes on in another mechanism
-            flights_ = FlightHistory{};
-            f.aim = kNever;
-            if (const std::optional<Event> ended = leave_roller(t, y)) return *ended;
-            back_on_roller(f, t, y);
-            continue;
-        }
+        if (unilateral() && last_roller_ < 0.0) return Event::roller_tension;  // it cannot pull: the top leaves it
         if (++out_.steps > kMaxIntegrationSteps) throw std::runtime_error("integration exceeded the step limit");
         Trial s;
         s.breakpoint = next_breakpoint(t);
@@ -601,7 +592,7 @@ Event Simulator::rocking_phase(double& t, State& y) {
         if (!take_step(f, t, y, s) || !locate(f, t, y, s)) continue;  // rejected, or retried shorter
         if (apply(f, t, y, s)) return s.ev;
     }
-    return Event::none;
+    return Event::end;
 }
 
 // A flight starts at (t, y): from theta1 = 0 (a lift-off or an impact) or anywhere (a release, the run's start).
@@ -765,9 +756,9 @@ void Simulator::record_turning_points(Flight& f, double t, const State& y, const
                             guard(Event::turning_point, t + s.h, step.y1), velocity};
     const auto record = [&](Root r) {
         if (r.t <= s.event_time) {
-            const double theta = step.at(r.t)[0];
-            out_.peaks.push_back({r.t, theta});
-            out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(theta));
+            double at = r.t;
+            State there = step.at(r.t);
+            fire(Event::turning_point, at, there);
             if (f.symmetric && opt_.predict_landings && s.ev == Event::none) f.aim = 2.0 * r.t - f.launch;
         }
         return true;
@@ -872,60 +863,92 @@ SimulationResult Simulator::run(InitialState init) {
     emit_grid(-1.0, 0.0, [&](double) { return y; });
     if (opt_.output_dt <= 0.0) emit(t, y);
 
-    bool rocking = y[0] != 0.0 || y[1] != 0.0;
-    if (rocking) {
+    Mode mode = Mode::at_rest;
+    if (y[0] != 0.0 || y[1] != 0.0) {  // released or launched: the first flight starts here
         side_ = y[0] != 0.0 ? (y[0] > 0.0 ? 1 : -1) : (y[1] > 0.0 ? 1 : -1);
-        if (y[1] == 0.0) out_.peaks.push_back({0.0, y[0]});
+        if (y[1] == 0.0) fire(Event::turning_point, t, y);  // a release is a turning point
+        flight_ = launch(t, y);
+        mode = Mode::rocking;
     }
-    while (t < opt_.t_end) {
-        if (!rocking) {
-            if (!rest_phase(t, y)) {
-                out_.at_rest_at_end = true;
-                break;
-            }
-            rocking = true;
-            if (opt_.output_dt <= 0.0) emit(t, y);
-        }
-        const Event ev = rocking_phase(t, y);
-        if (ev == Event::overturning) {
-            out_.overturned = true;
-            out_.t_overturn = t;
-            break;
-        }
-        if (ev != Event::impact) break;  // end time reached
-        rocking = impact(t, y);
-    }
+    // The hybrid system: each mode's flow runs to its first event, whose row's reset gives the next mode.
+    while (mode != Mode::over) mode = fire(flow(mode, t, y), t, y);
     check_balance(t, y);
     out_.t_final = t;
     return out_;
 }
 
-// The impact reset at (t, y), theta1 = 0: Eq. (19)'s map theta1'+ = e theta1'- onto the other side (or the impact
-// law's e), the kinetic energy lost dissipated. Then the rest guard: when it is across, the wall settles. Returns
-// whether the wall rocks on.
-bool Simulator::impact(double& t, State& y) {
+// The lift-off's reset at (t, y), at rest: the wall tips against the ground acceleration and its flight starts.
+Mode Simulator::lift(double& t, State& y) {
+    side_ = ah_(t) > 0.0 ? -1 : 1;  // the wall's inertia pushes it against the ground acceleration
+    out_.lift_offs.push_back(t);
+    if (opt_.output_dt <= 0.0) emit(t, y);
+    flight_ = launch(t, y);
+    return Mode::rocking;
+}
+
+// The impact's reset at (t, y), theta1 = 0: Eq. (19)'s map theta1'+ = e theta1'- onto the other side (or the impact
+// law's e), the kinetic energy lost dissipated. Then the rest guard: when it is across, rest's reset follows;
+// otherwise the next flight starts, unless the run is over.
+Mode Simulator::impact(double& t, State& y) {
     const double v_before = y[1];
     const double m0 = rest_terms_.M;
     if (e_ <= 0.0) {  // an impact ratio of 0 (make_vssw refuses walls whose Eq. 19 gives e <= 0): stops dead
         out_.impacts.push_back({t, v_before, 0.0});
         dissipated_ += 0.5 * m0 * v_before * v_before;
         out_.rest_times.push_back(t);
-        return false;
+        return Mode::at_rest;
     }
     const double v_after = e_ * v_before;
     out_.impacts.push_back({t, v_before, v_after});
     dissipated_ += 0.5 * m0 * (v_before * v_before - v_after * v_after);
     side_ = -side_;
     y[1] = v_after;
-    if (!(guard(Event::rest, t, y) > 0.0)) return true;
-    settle(t, y);
-    return false;
+    if (past(direction(Event::rest), guard(Event::rest, t, y))) return fire(Event::rest, t, y);
+    // A landing placed by y + dh f(y) may lie up to kTaylorSpan past a step that stopped at the end time: no flight.
+    if (!(t < opt_.t_end)) return Mode::over;
+    flight_ = launch(t, y);
+    return Mode::rocking;
 }
+
+// The turning point's reset at (t, y): a peak recorded; the flight goes on.
+Mode Simulator::turn(double& t, State& y) {
+    out_.peaks.push_back({t, y[0]});
+    out_.max_abs_theta = std::max(out_.max_abs_theta, std::abs(y[0]));
+    return Mode::rocking;
+}
+
+// The overturning's reset: the run ends at t.
+Mode Simulator::overturn(double& t, State&) {
+    out_.overturned = true;
+    out_.t_overturn = t;
+    return Mode::over;
+}
+
+// The roller tension's reset under a unilateral roller (a bilateral one pulls, and its first tension is only
+// recorded: apply): the top leaves the roller and the flight goes on in the two-DOF mechanism, where neither of its
+// landing predictions holds.
+Mode Simulator::leave(double&, State&) {
+    flight_.symmetric = false;
+    flights_ = FlightHistory{};
+    flight_.aim = kNever;
+    return Mode::off_roller;
+}
+
+// The landing on the roller's reset at (t, y) (the plastic projection itself is off_roller.cpp's): the one-DOF
+// flight goes on from there.
+Mode Simulator::land(double& t, State& y) {
+    check_balance(t, y);
+    back_on_roller(flight_, t, y);
+    return Mode::rocking;
+}
+
+// The end's reset: the run ends where it is.
+Mode Simulator::finish(double&, State&) { return Mode::over; }
 
 // The rest reset after an impact at (t, y): the next flight would be negligible while the ground cannot tip the wall,
 // so the remaining impacts, a geometric series of flights 2|v| e^n / |a|, are summed in closed form and the wall comes
 // to rest at their end.
-void Simulator::settle(double& t, State& y) {
+Mode Simulator::settle(double& t, State& y) {
     const double v_after = y[1];
     const double tail = 2.0 * std::abs(v_after) / (-restoring(t, v_after) * (1.0 - e_));
     dissipated_ += 0.5 * rest_terms_.M * v_after * v_after;
@@ -937,6 +960,7 @@ void Simulator::settle(double& t, State& y) {
     out_.rest_times.push_back(t);
     check_balance(t, y);
     if (opt_.output_dt <= 0.0) emit(t, y);
+    return Mode::at_rest;
 }
 
 }  // namespace
