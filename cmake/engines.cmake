@@ -15,8 +15,8 @@
 # types): its plots' style (io/palette.hpp). DEFAULT_COMPARED OFF: left out of the engines a comparison runs when none
 # is named. DEBIAN: the packages scripts/setup.sh installs for it, and HEADERS: the starts of its library's header
 # names, which only its folder may include (tests/layering.py) -- both read from the engine.cmake files as lines of
-# their own, "  DEBIAN pkg..." and "  HEADERS prefix...", which may repeat. A plugin holding a second backend names it
-# with vssw_engine_backend() (multibody/simbody/engine.cmake).
+# their own, "  DEBIAN pkg..." and "  HEADERS prefix..." (words up to a comment or the call's ")"), which may
+# repeat. A plugin holding a second backend names it with vssw_engine_backend() (multibody/simbody/engine.cmake).
 
 # The backends' facts, one line each in listing order, for the generated header.
 set_property(GLOBAL PROPERTY VSSW_ENGINE_KEYS "")
