@@ -13,19 +13,21 @@
 # a report prints, the adapter's display_name(). ORDER: its place in every listing of engines (smallest first).
 # CONTACT_SCHEME: a key of multibody/contact_schemes.cpp's table. COLOUR and MARKER (gnuplot's filled and open point
 # types): its plots' style (io/palette.hpp). DEFAULT_COMPARED OFF: left out of the engines a comparison runs when none
-# is named. DEBIAN: the packages scripts/setup.sh installs for it, and HEADERS: the starts of its library's header
-# names, which only its folder may include (tests/layering.py) -- both read from the engine.cmake files as lines of
-# their own, "  DEBIAN pkg..." and "  HEADERS prefix..." (words up to a comment or the call's ")"), which may
-# repeat. A plugin holding a second backend names it with vssw_engine_backend() (multibody/simbody/engine.cmake).
+# is named. BENCH "LABEL: AXIS V V ..., AXIS V ...", which may repeat: its work-precision sweep, every combination of
+# the axes' values ("dt", "iterations" or a knob) on its defaults (validation/bench_spec.hpp). DEBIAN: the packages
+# scripts/setup.sh installs for it, and HEADERS: the starts of its library's header names, which only its folder may
+# include (tests/layering.py) -- both read from the engine.cmake files as lines of their own, "  DEBIAN pkg..." and
+# "  HEADERS prefix..." (words up to a comment or the call's ")"), which may repeat. A plugin holding a second backend names it with vssw_engine_backend() (multibody/simbody/engine.cmake).
 
 # The backends' facts, one line each in listing order, for the generated header.
 set_property(GLOBAL PROPERTY VSSW_ENGINE_KEYS "")
 
 # vssw_engine_backend(NAME name PLUGIN plugin DISPLAY ... CONTACT_SCHEME ... COLOUR ... MARKER filled open
-#                     [DEFAULT_COMPARED OFF]): one backend's facts, listed after its plugin's earlier ones. A backend
-# built into the program (the analytic model) has no PLUGIN and an ORDER of its own.
+#                     [DEFAULT_COMPARED OFF] [BENCH ...]): one backend's facts, listed after its plugin's earlier
+# ones. A backend built into the program (the analytic model) has no PLUGIN and an ORDER of its own.
 function(vssw_engine_backend)
-  cmake_parse_arguments(PARSE_ARGV 0 B "" "NAME;PLUGIN;ORDER;DISPLAY;CONTACT_SCHEME;COLOUR;DEFAULT_COMPARED" "MARKER")
+  cmake_parse_arguments(PARSE_ARGV 0 B "" "NAME;PLUGIN;ORDER;DISPLAY;CONTACT_SCHEME;COLOUR;DEFAULT_COMPARED"
+                        "MARKER;BENCH")
   set(order ${B_ORDER})
   if(B_PLUGIN)
     get_property(order GLOBAL PROPERTY VSSW_ENGINE_ORDER_${B_PLUGIN})
@@ -50,6 +52,8 @@ function(vssw_engine_backend)
   list(GET B_MARKER 0 filled)
   list(GET B_MARKER 1 open)
   set_property(GLOBAL APPEND PROPERTY VSSW_ENGINE_KEYS ${key})
+  list(JOIN B_BENCH "|" bench)
+  set_property(GLOBAL PROPERTY VSSW_ENGINE_BENCH_${key} "${bench}")
   set_property(GLOBAL PROPERTY VSSW_ENGINE_ROW_${key}
                "${B_NAME}|${B_DISPLAY}|${B_PLUGIN}|${B_CONTACT_SCHEME}|${B_COLOUR}|${filled}|${open}|${B_DEFAULT_COMPARED}")
 endfunction()
@@ -107,6 +111,7 @@ function(vssw_write_engine_facts)
     list(GET row 5 filled)
     list(GET row 6 open)
     list(GET row 7 compared)
+    get_property(bench GLOBAL PROPERTY VSSW_ENGINE_BENCH_${key})
     set(has false)
     if(plugin STREQUAL "" OR plugin IN_LIST built)
       set(has true)
@@ -120,7 +125,7 @@ function(vssw_write_engine_facts)
       set(compared_text true)
     endif()
     string(APPEND rows "    {\"${name}\", \"${display}\", ${plugin_text}, ${has}, \"${scheme}\", \"${colour}\", "
-                       "${filled}, ${open}, ${compared_text}},\n")
+                       "${filled}, ${open}, ${compared_text}, \"${bench}\"},\n")
   endforeach()
   set(VSSW_ENGINE_FACT_ROWS "${rows}")
   configure_file(${PROJECT_SOURCE_DIR}/cmake/vssw_engine_facts.hpp.in

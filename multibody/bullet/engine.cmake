@@ -5,6 +5,8 @@ vssw_engine(NAME bullet DISPLAY "Bullet" ORDER 10
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#0072B2"  # blue (Okabe-Ito)
   MARKER 5 4        # square
+  # The step and the solver iterations.
+  BENCH "dt={dt} it={iterations}: dt 1e-3 5e-4 2e-4 1e-4, iterations 10 20 40"
   DEBIAN libbullet-dev
   HEADERS btBullet Bullet LinearMath BulletCollision BulletDynamics)
 

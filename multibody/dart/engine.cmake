@@ -9,6 +9,9 @@ vssw_engine(NAME dart DISPLAY "DART" ORDER 60
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#E69F00"  # orange (Okabe-Ito)
   MARKER 3 3        # star (no filled form)
+  # The step with the ODE detector (the default), and DART's own detector at the default step.
+  BENCH "dt={dt}: dt 1e-3 5e-4 2e-4 1e-4"
+  BENCH "dt={dt} detector=dart: detector 0"
   DEBIAN libdart-dev libdart-collision-ode-dev libdart-external-ikfast-dev
   HEADERS dart/)
 

@@ -7,6 +7,8 @@ vssw_engine(NAME siconos DISPLAY "Siconos" ORDER 40
   CONTACT_SCHEME "Moreau-Jean"
   COLOUR "#CC79A7"  # reddish purple (Okabe-Ito)
   MARKER 13 12      # diamond
+  # The step.
+  BENCH "dt={dt}: dt 2e-3 1e-3 5e-4 2.5e-4"
   DEBIAN libsiconos-kernel-dev
   HEADERS Siconos siconos TimeStepping TimeDiscretisation SolverOptions SimulationGraphs SimpleMatrix
   HEADERS NonSmoothDynamicalSystem NewtonImpact MoreauJeanOSI LagrangianLinearTIDS FrictionContact NumericsMatrix)
