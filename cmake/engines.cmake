@@ -73,6 +73,13 @@ function(vssw_engine)
   vssw_engine_backend(NAME ${E_NAME} PLUGIN ${E_NAME} DISPLAY ${E_DISPLAY} ${E_UNPARSED_ARGUMENTS})
 endfunction()
 
+# vssw_engine_tests(NAME SOURCES...): an engine folder's own tests (paths from multibody/), built into
+# vssw_engine_tests by tests/CMakeLists.txt beside the tests every engine runs.
+function(vssw_engine_tests name)
+  list(TRANSFORM ARGN PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/${name}/)
+  set_property(GLOBAL APPEND PROPERTY VSSW_ENGINE_TEST_SOURCES ${ARGN})
+endfunction()
+
 # The engine.cmake files in their ORDER (read from their "  ORDER n" line before any is included), so that each
 # library is looked for in the order it always was: DART's package looks again for ODE and takes the ODE adapter's
 # results when they exist (multibody/dart/engine.cmake).

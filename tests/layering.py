@@ -6,7 +6,7 @@ stay inside that engine's adapter folder (the starts of their names: the HEADERS
     analytic, io  <-  motions  <-  apps
     analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  apps  <-  python
     (python also binds analytic, multibody and compare directly)
-    (bench and tests may include any folder of the program)
+    (bench and tests may include any folder of the program; so may an engine folder's own multibody/<engine>/tests/)
 
 Exit 0 when every `#include "..."` and every engine header include keeps to that; otherwise 1, one line per include
 that does not (file:line, what it includes, what the folder may include). A quoted include is resolved as the compiler
@@ -53,6 +53,7 @@ def engine_headers(root):
     return homes
 
 
+ENGINE_TESTS = re.compile(r"multibody/[^/]+/tests/")
 QUOTED = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 ANGLED = re.compile(r"^\s*#\s*include\s+<([^>]+)>")
 
@@ -90,11 +91,14 @@ def main(source):
             relative = path.relative_to(root).as_posix()
             if path.suffix not in (".cpp", ".hpp", ".h") or not path.is_file() or "layering_fixture" in relative:
                 continue  # the fixture is a tree of its own (tests/layering_fixture: two includes out of place)
+            # An engine folder's own tests (multibody/<engine>/tests/) are tests: they may include what tests/ may.
+            layer = "tests" if ENGINE_TESTS.match(relative) else folder
             for number, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
                 quoted = QUOTED.match(line)
                 if quoted:
                     checked += 1
-                    problems += quoted_problems(root, path, f"{relative}:{number}", quoted.group(1), folder, allowed)
+                    problems += quoted_problems(root, path, f"{relative}:{number}", quoted.group(1), layer,
+                                                LAYERS[layer])
                 angled = ANGLED.match(line)
                 if angled:
                     for home, prefixes in homes.items():
