@@ -11,6 +11,7 @@
 #
 # NAME: the backend's name on the command line, its folder and its plugin (vssw_engine_<NAME>.so). DISPLAY: the name
 # a report prints, the adapter's display_name(). ORDER: its place in every listing of engines (smallest first).
+# LIBRARY: the start of its library's shared object's name, which a run of another engine must not map (a test).
 # CONTACT_SCHEME: a key of multibody/contact_schemes.cpp's table. COLOUR and MARKER (gnuplot's filled and open point
 # types): its plots' style (io/palette.hpp). DEFAULT_COMPARED OFF: left out of the engines a comparison runs when none
 # is named. BENCH "LABEL: AXIS V V ..., AXIS V ...", which may repeat: its work-precision sweep, every combination of
@@ -58,15 +59,16 @@ function(vssw_engine_backend)
                "${B_NAME}|${B_DISPLAY}|${B_PLUGIN}|${B_CONTACT_SCHEME}|${B_COLOUR}|${filled}|${open}|${B_DEFAULT_COMPARED}")
 endfunction()
 
-# vssw_engine(NAME ... DISPLAY ... ORDER n CONTACT_SCHEME ... COLOUR ... MARKER f o [DEFAULT_COMPARED OFF]
-#             DEBIAN pkg... HEADERS prefix...): an engine folder's plugin and its first backend, and the option
+# vssw_engine(NAME ... DISPLAY ... ORDER n LIBRARY ... CONTACT_SCHEME ... COLOUR ... MARKER f o
+#             [DEFAULT_COMPARED OFF] DEBIAN pkg... HEADERS prefix...): an engine folder's plugin and its first backend, and the option
 # VSSW_WITH_<NAME> that builds it.
 function(vssw_engine)
-  cmake_parse_arguments(PARSE_ARGV 0 E "" "NAME;ORDER;DISPLAY" "DEBIAN;HEADERS")
+  cmake_parse_arguments(PARSE_ARGV 0 E "" "NAME;ORDER;DISPLAY;LIBRARY" "DEBIAN;HEADERS")
   if(NOT E_ORDER MATCHES "^[0-9]+$" OR E_ORDER GREATER 9999)
     message(FATAL_ERROR "vssw_engine(${E_NAME}): ORDER takes a whole number below 10000")
   endif()
   set_property(GLOBAL PROPERTY VSSW_ENGINE_ORDER_${E_NAME} ${E_ORDER})
+  set_property(GLOBAL PROPERTY VSSW_ENGINE_LIBRARY_${E_NAME} "${E_LIBRARY}")
   string(TOUPPER ${E_NAME} upper)
   list(JOIN E_DEBIAN ", " packages)
   option(VSSW_WITH_${upper} "Build the ${E_DISPLAY} adapter when its library is found (Debian ${packages})" ON)
@@ -119,6 +121,7 @@ function(vssw_write_engine_facts)
     list(GET row 6 open)
     list(GET row 7 compared)
     get_property(bench GLOBAL PROPERTY VSSW_ENGINE_BENCH_${key})
+    get_property(library GLOBAL PROPERTY VSSW_ENGINE_LIBRARY_${plugin})
     set(has false)
     if(plugin STREQUAL "" OR plugin IN_LIST built)
       set(has true)
@@ -132,7 +135,7 @@ function(vssw_write_engine_facts)
       set(compared_text true)
     endif()
     string(APPEND rows "    {\"${name}\", \"${display}\", ${plugin_text}, ${has}, \"${scheme}\", \"${colour}\", "
-                       "${filled}, ${open}, ${compared_text}, \"${bench}\"},\n")
+                       "${filled}, ${open}, ${compared_text}, \"${bench}\", \"${library}\"},\n")
   endforeach()
   set(VSSW_ENGINE_FACT_ROWS "${rows}")
   configure_file(${PROJECT_SOURCE_DIR}/cmake/vssw_engine_facts.hpp.in

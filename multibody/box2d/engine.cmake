@@ -1,6 +1,6 @@
 # Box2D 2.4.1 (Debian libbox2d-dev: single precision, 2D). Found by its CMake package (box2d::box2d), else by
 # pkg-config (box2d.pc). Optional: without it the build goes on with the other engines and says so.
-vssw_engine(NAME box2d DISPLAY "Box2D" ORDER 50
+vssw_engine(NAME box2d DISPLAY "Box2D" ORDER 50 LIBRARY libbox2d
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#882255"  # wine (Paul Tol's colour-blind safe "muted" set: Okabe-Ito's spares stay free)
   MARKER 1 1        # plus (no filled form)

@@ -5,7 +5,7 @@
 # as system headers, compiled as C++17 (docs/engines.md "DART"). Optional: without it the build goes on and says so.
 # Its packages: DART, its ODE collision detector, and ikfast, which dart/dart.hpp needs though libdart-dev does not
 # depend on it. Heavy: libdart-dev pulls libboost-all-dev, about 108 packages and 224 MB installed.
-vssw_engine(NAME dart DISPLAY "DART" ORDER 60
+vssw_engine(NAME dart DISPLAY "DART" ORDER 60 LIBRARY libdart.so
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#E69F00"  # orange (Okabe-Ito)
   MARKER 3 3        # star (no filled form)

@@ -3,7 +3,7 @@
 # libqhull-dev installs (libmujoco-dev does not depend on it), and find_package stops with "includes non-existent
 # path" without it (docs/engines.md "The libraries as Debian ships them"): setup.sh installs both. Optional: without
 # it the build goes on.
-vssw_engine(NAME mujoco DISPLAY "MuJoCo" ORDER 70
+vssw_engine(NAME mujoco DISPLAY "MuJoCo" ORDER 70 LIBRARY libmujoco
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#332288"  # indigo (Paul Tol's colour-blind safe "muted" set; Okabe-Ito has no hue left)
   MARKER 2 2        # cross (no filled form)

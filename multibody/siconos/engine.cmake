@@ -3,7 +3,7 @@
 # too. Only the kernel and numerics are linked: libsiconos_mechanics links Debian's single-precision Bullet, whose
 # symbols have the same names as the double-precision Bullet of the Bullet adapter (docs/engines.md "The libraries as
 # Debian ships them"). Optional: without it the build goes on with the other engines and says so.
-vssw_engine(NAME siconos DISPLAY "Siconos" ORDER 40
+vssw_engine(NAME siconos DISPLAY "Siconos" ORDER 40 LIBRARY libsiconos_kernel
   CONTACT_SCHEME "Moreau-Jean"
   COLOUR "#CC79A7"  # reddish purple (Okabe-Ito)
   MARKER 13 12      # diamond

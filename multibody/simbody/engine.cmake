@@ -2,7 +2,7 @@
 # compile as C++20 with GCC 12 and must never meet ODE's (dNaN): they stay inside simbody/ (its two .cpp files and
 # simbody_wall.hpp, which only they include), compiled as C++17 (docs/engines.md "The libraries as Debian ships them").
 # One plugin for two routes (simbody_plugin.cpp): simbody, compliant contact, and simbody-rigid.
-vssw_engine(NAME simbody DISPLAY "Simbody" ORDER 30
+vssw_engine(NAME simbody DISPLAY "Simbody" ORDER 30 LIBRARY libSimTKsimbody
   CONTACT_SCHEME "compliant"
   COLOUR "#009E73"  # bluish green (Okabe-Ito)
   MARKER 11 10      # inverted triangle
