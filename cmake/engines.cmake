@@ -71,7 +71,7 @@ function(vssw_engine)
   set_property(GLOBAL PROPERTY VSSW_ENGINE_LIBRARY_${E_NAME} "${E_LIBRARY}")
   string(TOUPPER ${E_NAME} upper)
   list(JOIN E_DEBIAN ", " packages)
-  option(VSSW_WITH_${upper} "Build the ${E_DISPLAY} adapter when its library is found (Debian ${packages})" ON)
+  option(VSSW_WITH_${upper} "Build the ${E_DISPLAY} adapter (Debian ${packages})" ON)
   vssw_engine_backend(NAME ${E_NAME} PLUGIN ${E_NAME} DISPLAY ${E_DISPLAY} ${E_UNPARSED_ARGUMENTS})
 endfunction()
 
