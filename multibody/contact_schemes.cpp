@@ -3,16 +3,18 @@
 #include <algorithm>
 #include <cstddef>
 #include <iterator>
+#include <string_view>
+
+#include "vssw_engine_facts.hpp"  // each engine's scheme (generated from its engine.cmake: cmake/engines.cmake)
 
 namespace vssw::multibody {
 namespace {
 
-struct SchemeOf {
-    const char* engine;
-    std::size_t scheme;  // index into kSchemes
+// The schemes in report order; each engine's fact CONTACT_SCHEME names one by its key.
+struct Scheme {
+    std::string_view key, description;
 };
-
-const ContactScheme kSchemes[] = {
+constexpr Scheme kSchemes[] = {
     {"event-driven", "the analytic model: located impacts (root finding) between adaptive integrations of the "
                      "equation of motion, an impact law at each"},
     {"impulse stepping", "fixed-step symplectic Euler with plastic contact impulses at the velocity level, one "
@@ -23,15 +25,23 @@ const ContactScheme kSchemes[] = {
                   "integrator"},
 };
 
-// Simbody's rigid route (SemiExplicitEulerTimeStepper) steps with impulses as Bullet does.
-const SchemeOf kEngineSchemes[] = {
-    {"analytic", 0}, {"bullet", 1}, {"ode", 1}, {"box2d", 1}, {"dart", 1}, {"mujoco", 1},
-    {"simbody-rigid", 1}, {"siconos", 2}, {"simbody", 3},
-};
+constexpr std::size_t index_of_scheme(std::string_view key) {
+    std::size_t i = 0;
+    while (i < std::size(kSchemes) && kSchemes[i].key != key) ++i;
+    return i;
+}
+
+// A scheme named in an engine.cmake that this table does not hold fails the build, not a report.
+constexpr bool every_engine_names_a_scheme() {
+    for (const EngineFacts& e : kEngineFacts)
+        if (index_of_scheme(e.contact_scheme) == std::size(kSchemes)) return false;
+    return true;
+}
+static_assert(every_engine_names_a_scheme(), "an engine.cmake names a CONTACT_SCHEME that kSchemes does not hold");
 
 std::size_t scheme_index(const std::string& engine) {
-    for (const SchemeOf& s : kEngineSchemes)
-        if (engine == s.engine) return s.scheme;
+    for (const EngineFacts& e : kEngineFacts)
+        if (engine == e.name) return index_of_scheme(e.contact_scheme);
     return std::size(kSchemes);
 }
 
@@ -40,7 +50,7 @@ std::size_t scheme_index(const std::string& engine) {
 ContactScheme contact_scheme(const std::string& engine) {
     const std::size_t i = scheme_index(engine);
     if (i == std::size(kSchemes)) return {"other", "not described"};
-    return kSchemes[i];
+    return {std::string(kSchemes[i].key), std::string(kSchemes[i].description)};
 }
 
 std::vector<std::string> ordered_by_scheme(const std::vector<std::string>& engines) {

@@ -9,68 +9,18 @@
 #include "multibody/isolated_engine.hpp"
 #include "multibody/plugin_loader.hpp"
 #include "multibody/registry.hpp"
+#include "vssw_engine_facts.hpp"  // kEngineFacts (generated: cmake/engines.cmake)
 
 namespace vssw::multibody {
 
 namespace {
 
-// Every backend this code knows, in listing order: its name, the name a report prints, the plugin that holds its
-// adapter (vssw_engine_<plugin>.so; none for the analytic model, built in) and whether this build has it (the plugins
-// multibody/CMakeLists.txt builds). available_engines(), missing_engines() and engine_display_name() read this list
-// alone, so that naming the engines loads no plugin; the display names are the adapters' own (the test
-// Plugins.DisplayNamesAreTheAdapters' holds them).
-struct KnownEngine {
-    const char* name;
-    const char* display_name;
-    const char* plugin;
-    bool built;
-};
-#ifdef VSSW_HAVE_BULLET
-constexpr bool kHaveBullet = true;
-#else
-constexpr bool kHaveBullet = false;
-#endif
-#ifdef VSSW_HAVE_ODE
-constexpr bool kHaveOde = true;
-#else
-constexpr bool kHaveOde = false;
-#endif
-#ifdef VSSW_HAVE_SIMBODY
-constexpr bool kHaveSimbody = true;
-#else
-constexpr bool kHaveSimbody = false;
-#endif
-#ifdef VSSW_HAVE_SICONOS
-constexpr bool kHaveSiconos = true;
-#else
-constexpr bool kHaveSiconos = false;
-#endif
-#ifdef VSSW_HAVE_BOX2D
-constexpr bool kHaveBox2d = true;
-#else
-constexpr bool kHaveBox2d = false;
-#endif
-#ifdef VSSW_HAVE_DART
-constexpr bool kHaveDart = true;
-#else
-constexpr bool kHaveDart = false;
-#endif
-#ifdef VSSW_HAVE_MUJOCO
-constexpr bool kHaveMujoco = true;
-#else
-constexpr bool kHaveMujoco = false;
-#endif
-constexpr KnownEngine kKnownEngines[] = {
-    {"analytic", "analytic", nullptr, true},
-    {"bullet", "Bullet", "bullet", kHaveBullet},
-    {"ode", "ODE", "ode", kHaveOde},
-    {"simbody", "Simbody", "simbody", kHaveSimbody},
-    {"simbody-rigid", "simbody-rigid", "simbody", kHaveSimbody},
-    {"siconos", "Siconos", "siconos", kHaveSiconos},
-    {"box2d", "Box2D", "box2d", kHaveBox2d},
-    {"dart", "DART", "dart", kHaveDart},
-    {"mujoco", "MuJoCo", "mujoco", kHaveMujoco},
-};
+// Every backend this code knows, in listing order, with its display name (the adapter's own: the test
+// Plugins.DisplayNamesAreTheAdapters holds them), the plugin that holds its adapter and whether this build has it:
+// generated from each engine folder's engine.cmake. available_engines(), missing_engines() and engine_display_name()
+// read this table alone, so that naming the engines loads no plugin.
+using KnownEngine = EngineFacts;
+constexpr const auto& kKnownEngines = kEngineFacts;
 
 std::vector<std::string> known_engines(bool built) {
     std::vector<std::string> names;
@@ -131,8 +81,8 @@ std::vector<std::string> missing_engines() { return known_engines(false); }
 
 std::vector<std::string> default_compared_engines() {
     std::vector<std::string> engines;
-    for (const std::string& name : available_engines())
-        if (name != "analytic" && name != "simbody-rigid") engines.push_back(name);
+    for (const KnownEngine& e : kKnownEngines)
+        if (e.built && e.default_compared) engines.push_back(e.name);
     return engines;
 }
 

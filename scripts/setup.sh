@@ -21,15 +21,6 @@ packages=(
   cmake g++ ninja-build pkg-config   # toolchain
   libfmt-dev nlohmann-json3-dev libcli11-dev   # formatting, JSON output, command line
   libgtest-dev libbenchmark-dev      # tests and benchmarks
-  libbullet-dev                      # the Bullet adapter (pkg-config bullet-float64)
-  libode-dev                         # the ODE adapter (pkg-config ode, double precision)
-  libsimbody-dev                     # the Simbody adapter (CMake config, C++17)
-  libsiconos-kernel-dev              # the Siconos adapter (kernel and numerics; found by headers and libraries)
-  libbox2d-dev                       # the Box2D adapter (2.4.1, single precision; CMake box2d::box2d or pkg-config box2d)
-  # the DART adapter (CMake config; its ODE collision detector; ikfast, which dart/dart.hpp needs though libdart-dev
-  # does not depend on it). Heavy: libdart-dev pulls libboost-all-dev, about 108 packages and 224 MB installed.
-  libdart-dev libdart-collision-ode-dev libdart-external-ikfast-dev
-  libmujoco-dev libqhull-dev         # the MuJoCo adapter (found by header and library; libqhull-dev makes its CMake config usable)
   libtomlplusplus-dev                # bounds files of `vssw check` (TOML)
   libeigen3-dev                      # linear algebra of the two-block roller model (analytic/two_block)
   hyperfine                          # timing whole commands side by side (medians; docs/measurements/speed.md)
@@ -42,6 +33,9 @@ packages=(
   python3-markdown                   # tests/markdown_scan.py: report.md and study.md rendered as MkDocs does
   mkdocs mkdocs-material             # the documentation site (mkdocs.yml; the CTest vssw_docs builds it with --strict)
 )
+# Each engine's packages, from the DEBIAN lines of its folder's multibody/<engine>/engine.cmake.
+engine_packages="$(bash "$here/scripts/engine_packages.sh" "$here")"
+mapfile -t -O "${#packages[@]}" packages <<< "$engine_packages"
 # The sanitizer build (test and asan only, so `run` installs none of it): clang, its sanitizer and libFuzzer runtimes
 # (libclang-rt-dev), and llvm for llvm-symbolizer, without which ASan and UBSan print stacks as bare addresses.
 # About 65 MB to download, 300 MB installed.

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """The code's layering as a check: each folder includes only the folders below it, and each engine library's headers
-stay inside that engine's adapter folder.
+stay inside that engine's adapter folder (the starts of their names: the HEADERS lines of its engine.cmake).
 
     analytic  <-  io
     analytic, io  <-  motions  <-  apps
     analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  apps  <-  python
     (python also binds analytic, multibody and compare directly)
-    (bench and tests may include any folder of the program)
+    (bench and tests may include any folder of the program; so may an engine folder's own multibody/<engine>/tests/)
 
 Exit 0 when every `#include "..."` and every engine header include keeps to that; otherwise 1, one line per include
 that does not (file:line, what it includes, what the folder may include). A quoted include is resolved as the compiler
@@ -37,18 +37,23 @@ LAYERS = {
     "bench": PROGRAM,
     "tests": PROGRAM | {"tests"},
 }
-# An engine library's headers (by the start of the included name) and the one folder that may include them.
-ENGINE_HEADERS = {
-    "multibody/bullet": re.compile(r"(btBullet|Bullet|LinearMath|BulletCollision|BulletDynamics)"),
-    "multibody/ode": re.compile(r"ode/"),
-    "multibody/box2d": re.compile(r"(box2d/|b2_)"),
-    "multibody/simbody": re.compile(r"(Simbody|SimTK|simbody/)"),
-    "multibody/dart": re.compile(r"dart/"),
-    "multibody/siconos": re.compile(r"(Siconos|siconos|TimeStepping|TimeDiscretisation|SolverOptions|SimulationGraphs|"
-                                    r"SimpleMatrix|NonSmoothDynamicalSystem|NewtonImpact|MoreauJeanOSI|LagrangianLinearTIDS|"
-                                    r"FrictionContact|NumericsMatrix)"),
-    "multibody/mujoco": re.compile(r"mujoco/"),
-}
+
+
+def engine_headers(root):
+    """Each engine folder and the starts of its library's header names, which only that folder may include: the words
+    of the "  HEADERS prefix..." lines of its multibody/<engine>/engine.cmake (cmake/engines.cmake)."""
+    homes = {}
+    for cmake in sorted(root.glob("multibody/*/engine.cmake")):
+        lines = cmake.read_text(encoding="utf-8").splitlines()
+        # A line's words after HEADERS, up to a comment or the call's closing parenthesis.
+        prefixes = [word for line in lines if re.match(r"\s*HEADERS\s", line)
+                    for word in re.split(r"[#)]", line)[0].split()[1:]]
+        if prefixes:
+            homes[cmake.parent.relative_to(root).as_posix()] = tuple(prefixes)
+    return homes
+
+
+ENGINE_TESTS = re.compile(r"multibody/[^/]+/tests/")
 QUOTED = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 ANGLED = re.compile(r"^\s*#\s*include\s+<([^>]+)>")
 
@@ -80,20 +85,24 @@ def main(source):
     root = pathlib.Path(os.path.abspath(source))
     problems = []
     checked = 0
+    homes = engine_headers(root)
     for folder, allowed in LAYERS.items():
         for path in sorted((root / folder).rglob("*")):
             relative = path.relative_to(root).as_posix()
             if path.suffix not in (".cpp", ".hpp", ".h") or not path.is_file() or "layering_fixture" in relative:
                 continue  # the fixture is a tree of its own (tests/layering_fixture: two includes out of place)
+            # An engine folder's own tests (multibody/<engine>/tests/) are tests: they may include what tests/ may.
+            layer = "tests" if ENGINE_TESTS.match(relative) else folder
             for number, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
                 quoted = QUOTED.match(line)
                 if quoted:
                     checked += 1
-                    problems += quoted_problems(root, path, f"{relative}:{number}", quoted.group(1), folder, allowed)
+                    problems += quoted_problems(root, path, f"{relative}:{number}", quoted.group(1), layer,
+                                                LAYERS[layer])
                 angled = ANGLED.match(line)
                 if angled:
-                    for home, pattern in ENGINE_HEADERS.items():
-                        if pattern.match(angled.group(1)) and not relative.startswith(home + "/"):
+                    for home, prefixes in homes.items():
+                        if angled.group(1).startswith(prefixes) and not relative.startswith(home + "/"):
                             checked += 1
                             problems.append(f"{relative}:{number}: includes <{angled.group(1)}>, an engine library's "
                                             f"header, outside {home}/")

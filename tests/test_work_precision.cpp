@@ -16,6 +16,7 @@
 
 #include "cli_runner.hpp"
 #include "compare/targets.hpp"
+#include "validation/bench_spec.hpp"
 #include "validation/work_precision.hpp"
 #include "validation/bench_files.hpp"
 #include "io/csv.hpp"
@@ -175,6 +176,41 @@ TEST(WorkPrecision, AnUnmeasuredReferenceIsAFailureNamingTheProblemAndMetric) {
         const std::string what = e.what();
         EXPECT_NE(what.find("fig6-free"), std::string::npos) << what;
         EXPECT_NE(what.find("restitution"), std::string::npos) << what;
+    }
+}
+
+// An engine folder's BENCH text: the first axis outermost, each setting applied to the defaults, the label's {NAME}
+// filled from the settings (an axis or a default), groups one after the other.
+TEST(BenchSpec, EveryCombinationOfTheAxesOnTheDefaultsLabelledByItsValues) {
+    multibody::EngineSettings defaults;
+    defaults.dt = 2e-3;
+    defaults.knobs["erp"] = 0.2;
+    const std::vector<compare::BenchSetting> sweep = compare::expand_bench_spec(
+        defaults, "dt={dt} it={iterations}: dt 1e-3 2.5e-4, iterations 4 8|q={quickstep} at {dt}: quickstep 1");
+    const std::vector<std::string> labels = {"dt=1e-03 it=4", "dt=1e-03 it=8", "dt=2.5e-04 it=4", "dt=2.5e-04 it=8",
+                                             "q=1e+00 at 2e-03"};
+    ASSERT_EQ(sweep.size(), labels.size());
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        EXPECT_EQ(sweep[i].label, labels[i]);
+        EXPECT_EQ(sweep[i].settings.knobs.at("erp"), 0.2) << "a default the text does not name is kept";
+    }
+    EXPECT_EQ(sweep[2].settings.dt, 2.5e-4);
+    EXPECT_EQ(sweep[2].settings.iterations, 4);
+    EXPECT_EQ(sweep[4].settings.dt, 2e-3);
+    EXPECT_EQ(sweep[4].settings.knobs.at("quickstep"), 1.0);
+    EXPECT_TRUE(compare::expand_bench_spec(defaults, "").empty());
+}
+
+// A text that does not read as a sweep is the build's fault and is named, not swept as something else.
+TEST(BenchSpec, ATextThatIsNotASweepIsRefusedNamingIt) {
+    const multibody::EngineSettings defaults;
+    for (const char* text : {"dt 1e-3", "dt={dt}: dt 1e-3 fast", "dt={dt}: dt", "a={accuracy}: dt 1e-3", "dt={dt: dt 1"}) {
+        try {
+            (void)compare::expand_bench_spec(defaults, text);
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const std::logic_error& e) {
+            EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+        }
     }
 }
 

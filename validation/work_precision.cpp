@@ -18,6 +18,7 @@
 #include "compare/response.hpp"
 #include "compare/targets.hpp"
 #include "multibody/analytic_engine.hpp"
+#include "validation/bench_spec.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -47,19 +48,6 @@ multibody::WallScene problem_scene(const std::string& problem) {
         return multibody::WallScene::of(make_vssw(table1_specimen(table, kTable1Specimen), kTable1Xi));
     }
     return fig6_vssw();
-}
-
-// A setting's value in a label: 1e-04, 2.5e-04 (one decimal only when it is needed).
-std::string sci(double v) {
-    const std::string whole = fmt::format("{:.0e}", v);
-    return std::stod(whole) == v ? whole : fmt::format("{:.1e}", v);
-}
-
-BenchSetting with_dt(const multibody::Engine& engine, double dt, int iterations, std::string label) {
-    multibody::EngineSettings s = engine.default_settings();
-    s.dt = dt;
-    if (iterations > 0) s.iterations = iterations;
-    return {std::move(label), s};
 }
 
 // The analytic model at its defaults (the set `mechanism`: what the engines are measured against) and this tolerance.
@@ -186,48 +174,10 @@ std::vector<BenchSetting> bench_sweep(const multibody::Engine& engine, bool quic
         return sweep;
     }
     if (quick) return {{"defaults", defaults}};  // known to work: the CTest checks the files, not the engines
-    const std::vector<double> dts = {1e-3, 5e-4, 2e-4, 1e-4};
-    if (name == "bullet") {
-        for (double dt : dts)
-            for (int it : {10, 20, 40}) sweep.push_back(with_dt(engine, dt, it, fmt::format("dt={} it={}", sci(dt), it)));
-    } else if (name == "ode") {
-        // The direct solver (the default) has no iterations; quickstep's SOR trades them for cost.
-        for (double dt : dts) sweep.push_back(with_dt(engine, dt, 0, fmt::format("dt={} direct", sci(dt))));
-        for (int it : {10, 20, 40}) {
-            BenchSetting s = with_dt(engine, defaults.dt, it, fmt::format("dt={} quickstep it={}", sci(defaults.dt), it));
-            s.settings.knobs["quickstep"] = 1.0;
-            sweep.push_back(s);
-        }
-    } else if (name == "box2d") {
-        // Box2D's sequential impulses: the step and the velocity iterations (docs/engines.md "Box2D").
-        for (double dt : dts)
-            for (int it : {4, 8, 16}) sweep.push_back(with_dt(engine, dt, it, fmt::format("dt={} it={}", sci(dt), it)));
-    } else if (name == "simbody") {
-        // The compliant route's error is set by its integrator's accuracy; dt is its reporting interval, which costs
-        // too (a realization per report inside Simbody's stepTo) and sets the metrics' sampling.
-        for (double acc : {1e-4, 1e-5, 1e-6, 1e-7}) {
-            BenchSetting s{fmt::format("accuracy={}", sci(acc)), defaults};
-            s.settings.knobs["accuracy"] = acc;
-            sweep.push_back(s);
-        }
-        for (double dt : {1e-3, 4e-3})
-            sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
-    } else if (name == "dart") {
-        // The step with the ODE detector (the default), and DART's own detector at the default step.
-        for (double dt : dts) sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
-        BenchSetting s = with_dt(engine, defaults.dt, 0, fmt::format("dt={} detector=dart", sci(defaults.dt)));
-        s.settings.knobs["detector"] = 0.0;
-        sweep.push_back(s);
-    } else if (name == "mujoco") {
-        // The step with semi-implicit Euler (the default; the contacts' time constant follows it, solref_steps), and
-        // RK4 at the default step (docs/engines.md "MuJoCo": the parapet's period to -0.002 %).
-        for (double dt : dts) sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
-        BenchSetting s = with_dt(engine, defaults.dt, 0, fmt::format("dt={} integrator=rk4", sci(defaults.dt)));
-        s.settings.knobs["integrator"] = 1.0;
-        sweep.push_back(s);
-    } else {  // simbody-rigid and any other stepped engine: the step
-        for (double dt : {2e-3, 1e-3, 5e-4, 2.5e-4}) sweep.push_back(with_dt(engine, dt, 0, "dt=" + sci(dt)));
-    }
+    // Each engine's sweep is a fact of its folder (the BENCH lines of its engine.cmake); a stepped engine that
+    // states none sweeps its step.
+    const std::string_view spec = bench_spec_of(name);
+    sweep = expand_bench_spec(defaults, spec.empty() ? "dt={dt}: dt 2e-3 1e-3 5e-4 2.5e-4" : spec);
     for (const BenchSetting& s : sweep) engine.check_settings(s.settings);
     return sweep;
 }

@@ -47,8 +47,9 @@ struct BenchSetting {
     std::string label;
     multibody::EngineSettings settings;
 };
-// The sweep of an engine (by name): analytic rtol 1e-4..1e-12; Bullet dt x iterations; ODE dt (direct solver) and
-// quickstep iterations; Simbody compliant accuracy; Simbody rigid dt. `quick`: one or two cheap points (CTest).
+// The sweep of an engine (by name): analytic rtol 1e-4..1e-12; every other engine what the BENCH lines of its folder's
+// engine.cmake state (validation/bench_spec.hpp), its step when they state none. `quick`: one or two cheap points
+// (CTest).
 std::vector<BenchSetting> bench_sweep(const multibody::Engine& engine, bool quick);
 
 // The reference problems by name, and those run when none is named.

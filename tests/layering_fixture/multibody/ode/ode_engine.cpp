@@ -1,0 +1,2 @@
+// A layering fixture: an adapter including compare/ (tests/layering.py must refuse this).
+#include "compare/experiments.hpp"
