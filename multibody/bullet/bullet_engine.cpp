@@ -31,9 +31,9 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::multibody {
 namespace {

@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "multibody/engine.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/wall_parts.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/wall_parts.hpp"
 
 namespace vssw::multibody::simbody_wall {
 
