@@ -2,7 +2,7 @@
 // The wall's energy in a sample, one sum for every adapter: the blocks' kinetic energy relative to the ground, the
 // potential of both blocks' weights from the upright wall at rest, and the work N has not done (N times the top's
 // rise), all per unit depth. An adapter reads its bodies (EnergyReading); the sum and its order of operations are
-// here, so that every engine's energy is the same quantity (docs/engines.md "Energy"). Engine-free.
+// here, so that every engine's energy is the same quantity (docs/architecture.md, "The stepping kit"). Engine-free.
 #include "multibody/engine.hpp"
 #include "multibody/kit/scene_geometry.hpp"
 
