@@ -1,5 +1,5 @@
 #pragma once
-// The one way this program forks (engine workers, multibody/child_process.hpp; gnuplot, io/gnuplot.cpp), so that
+// The one way this program forks (engine workers, multibody/host/child_process.hpp; gnuplot, io/gnuplot.cpp), so that
 // every child is made, ended and waited for alike:
 //  - the standard streams are flushed first: a child holds a copy of the parent's unwritten output, and a child that
 //    writes (an engine library's message) would write that copy too (`vssw compare --engine all > file` once wrote
@@ -12,7 +12,7 @@
 //  - the parent keeps the children it has not reaped, so that its signal handling ends them before it ends
 //    (apps/signal_cleanup.hpp).
 // What stays the caller's: what the child runs (a child of a multi-threaded parent holds only the forking thread;
-// multibody/child_process.hpp) and how it ends (_exit or exec).
+// multibody/host/child_process.hpp) and how it ends (_exit or exec).
 #include <sys/types.h>
 
 namespace vssw {

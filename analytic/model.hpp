@@ -104,7 +104,7 @@ std::unique_ptr<RockingModel> make_parapet_model(const ParapetGeometry& p);
 std::unique_ptr<RockingModel> with_restitution(std::unique_ptr<RockingModel> model, double e);
 
 // The same model with its runs ending (as "overturned") once |theta1| reaches `stop` if that comes before its collapse
-// angle: a threshold trial, which needs only whether the wall lifts that far (multibody/analytic_engine.cpp).
+// angle: a threshold trial, which needs only whether the wall lifts that far (multibody/host/analytic_engine.cpp).
 std::unique_ptr<RockingModel> with_stop_angle(std::unique_ptr<RockingModel> model, double stop);
 
 // The impact law as a named assumption: the paper's Eq. (19) (Housner's e for a parapet), the whole mechanism's

@@ -20,7 +20,7 @@
 #include "apps/quiet_exit.hpp"
 #include "apps/simulation_failure.hpp"
 #include "apps/version_text.hpp"
-#include "multibody/run_budget.hpp"
+#include "multibody/host/run_budget.hpp"
 
 namespace vssw::cli {
 namespace {

@@ -27,9 +27,9 @@
 #include "compare/experiments.hpp"
 #include "io/json.hpp"
 #include "study/response_comparison.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/settings_reader.hpp"
 
 namespace vssw::cli {
 namespace {

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_budget.hpp"
+#include "multibody/host/run_budget.hpp"
 
 namespace vssw::cli {
 

@@ -1,6 +1,6 @@
 #pragma once
 // --run-budget of every command that runs engine libraries (compare, report, check, study): the CPU time one engine
-// run may take before it fails (multibody/run_budget.hpp).
+// run may take before it fails (multibody/host/run_budget.hpp).
 namespace CLI {
 class App;
 }

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "multibody/engine.hpp"
-#include "multibody/registry.hpp"
+#include "multibody/host/registry.hpp"
 #include "study/mpi.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (apps/CMakeLists.txt)
 
@@ -34,7 +34,7 @@ std::string version_text() {
     const std::vector<std::string> missing = multibody::missing_engines();
     if (!missing.empty())
         text += fmt::format("not in this build (not found at configure time): {}\n", fmt::join(missing, ", "));
-    // Where the plugins were found (multibody/plugin_loader.hpp); MPI's is only looked for, not opened (that would
+    // Where the plugins were found (multibody/host/plugin_loader.hpp); MPI's is only looked for, not opened (that would
     // load libmpi).
     if (study::mpi_built()) {
         const std::string mpi = study::mpi_module_path();

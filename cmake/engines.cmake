@@ -12,7 +12,7 @@
 # NAME: the backend's name on the command line, its folder and its plugin (vssw_engine_<NAME>.so). DISPLAY: the name
 # a report prints, the adapter's display_name(). ORDER: its place in every listing of engines (smallest first).
 # LIBRARY: the start of its library's shared object's name, which a run of another engine must not map (a test).
-# CONTACT_SCHEME: a key of multibody/contact_schemes.cpp's table. COLOUR and MARKER (gnuplot's filled and open point
+# CONTACT_SCHEME: a key of multibody/host/contact_schemes.cpp's table. COLOUR and MARKER (gnuplot's filled and open point
 # types): its plots' style (io/palette.hpp). DEFAULT_COMPARED OFF: left out of the engines a comparison runs when none
 # is named. BENCH "LABEL: AXIS V V ..., AXIS V ...", which may repeat: its work-precision sweep, every combination of
 # the axes' values ("dt", "iterations" or a knob) on its defaults (validation/bench_spec.hpp). DEBIAN: the packages

@@ -2,7 +2,7 @@
 # when a run needs it (docs/architecture.md, "Plugins"). Included by the top CMakeLists.txt.
 
 # Where they are built (every program, test and the Python module of this build tree look there:
-# multibody/plugin_loader.hpp) and installed (<prefix>/lib/vssw/plugins, found from <prefix>/bin).
+# multibody/host/plugin_loader.hpp) and installed (<prefix>/lib/vssw/plugins, found from <prefix>/bin).
 set(VSSW_PLUGIN_OUTPUT_DIR ${PROJECT_BINARY_DIR}/plugins)
 set(VSSW_PLUGIN_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/vssw/plugins)
 # The installed plugins' folder relative to the installed program's, "../lib/vssw/plugins": relative, so that it holds
@@ -10,7 +10,7 @@ set(VSSW_PLUGIN_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/vssw/plugins)
 file(RELATIVE_PATH VSSW_PLUGIN_DIR_FROM_BINDIR /prefix/${CMAKE_INSTALL_BINDIR} /prefix/${VSSW_PLUGIN_INSTALL_DIR})
 
 # This build's identity, compiled into the program and into every plugin (build/generated/vssw_build_id.hpp): a
-# plugin whose identity differs is refused (multibody/plugin_loader.hpp), since the C++ types it exchanges with the
+# plugin whose identity differs is refused (multibody/host/plugin_loader.hpp), since the C++ types it exchanges with the
 # program (Engine, WallScene, std::string, ...) are only known to agree within one build. The token is drawn once per
 # build tree and kept in the cache, so that a reconfigure does not rebuild the plugins; the rest says in words what
 # differs when one is refused.
@@ -39,7 +39,7 @@ function(vssw_add_plugin target)
     VISIBILITY_INLINES_HIDDEN ON)
   target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/generated)
   target_compile_options(${target} PRIVATE ${VSSW_WARNINGS})
-  # --exclude-libs: the static libraries' symbols (vssw_scene, vssw_analytic) hidden as well. --no-undefined: a
+  # --exclude-libs: the static libraries' symbols (vssw_engine_kit, vssw_analytic) hidden as well. --no-undefined: a
   # symbol the plugin needs and no library it links provides fails the link, not a user's run at dlopen. Not with the
   # sanitizers: clang leaves their runtime in the program, whose symbols the plugin finds at dlopen.
   target_link_options(${target} PRIVATE -Wl,--exclude-libs,ALL)

@@ -11,8 +11,8 @@
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
 #include "analytic/wall_scene.hpp"
-#include "multibody/analytic_engine.hpp"
-#include "multibody/step_resolution.hpp"
+#include "multibody/host/analytic_engine.hpp"
+#include "multibody/kit/step_resolution.hpp"
 
 namespace vssw::compare {
 namespace {

@@ -7,7 +7,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/wall_scene.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 
 namespace vssw::compare {
 namespace {

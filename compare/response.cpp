@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::compare {
 

@@ -4,7 +4,7 @@
 //    library is not re-entrant), and nothing in it calls back into Python.
 //  - run_with_progress(args, progress): the same for `study` and `report`, the GIL released, the commands' progress
 //    lines (apps/progress.hpp) handed to a Python callable instead of a terminal. Those commands make their engines
-//    with make_engine(), whose engine-library runs are each a forked child (multibody/isolated_engine.hpp): nothing of
+//    with make_engine(), whose engine-library runs are each a forked child (multibody/host/isolated_engine.hpp): nothing of
 //    ODE's process-wide state is shared between two Python threads.
 //  - simulate(...), compare(...): one backend's trajectory, one engine against the analytic model, over the library
 //    (multibody/engine.hpp, compare/experiments.hpp), the GIL released around the runs for the same reason. The
@@ -43,10 +43,10 @@
 #include "compare/metrics.hpp"
 #include "compare/response.hpp"
 #include "compare/targets.hpp"
-#include "multibody/analytic_engine.hpp"
-#include "multibody/child_process.hpp"
+#include "multibody/host/analytic_engine.hpp"
+#include "multibody/host/child_process.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/run_budget.hpp"
+#include "multibody/host/run_budget.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (apps/CMakeLists.txt)
 
 namespace py = pybind11;
@@ -208,7 +208,7 @@ vssw::multibody::EngineSettings settings_of(const vssw::multibody::Engine& engin
     return s;
 }
 
-// A budget for every engine run of one call (multibody/run_budget.hpp), the previous one restored afterwards.
+// A budget for every engine run of one call (multibody/host/run_budget.hpp), the previous one restored afterwards.
 class ScopedRunBudget {
 public:
     explicit ScopedRunBudget(std::optional<double> seconds) : previous_(vssw::multibody::RunBudget::given()) {

@@ -1,7 +1,7 @@
 #pragma once
 // A stress case (`vssw stress`): a hard input for every backend, what it runs and what is checked of the result.
 // The cases themselves are in cases.cpp; judge.hpp runs one in-process; run.hpp runs them all, each in a child
-// process with a time limit (multibody/child_process.hpp).
+// process with a time limit (multibody/host/child_process.hpp).
 #include <functional>
 #include <optional>
 #include <string>

@@ -1,11 +1,11 @@
 #pragma once
-// Running the stress set: every (case, backend) pair in a child process of its own (multibody/child_process.hpp: a
+// Running the stress set: every (case, backend) pair in a child process of its own (multibody/host/child_process.hpp: a
 // case that hangs, crashes or aborts inside an engine library cannot take the whole run down) with a time limit,
 // several at a time on a pool of threads that only wait for their children.
 #include <string>
 #include <vector>
 
-#include "multibody/child_process.hpp"
+#include "multibody/host/child_process.hpp"
 #include "stress/case.hpp"
 #include "stress/verdict.hpp"
 

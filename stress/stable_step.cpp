@@ -9,7 +9,7 @@
 #include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
-#include "multibody/child_process.hpp"
+#include "multibody/host/child_process.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::stress {

@@ -18,9 +18,9 @@
 #include "analytic/wall.hpp"
 #include "io/json.hpp"
 #include "study/name_bounds.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::study {
 namespace {

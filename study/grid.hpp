@@ -27,7 +27,7 @@
 #include "analytic/simulate.hpp"
 #include "analytic/specimens.hpp"
 #include "compare/experiments.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "study/spec.hpp"
 

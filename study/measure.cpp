@@ -17,10 +17,10 @@
 #include "compare/experiments.hpp"
 #include "compare/case_runner.hpp"
 #include "compare/response.hpp"
-#include "multibody/analytic_engine.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/step_resolution.hpp"
+#include "multibody/host/analytic_engine.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_resolution.hpp"
 #include "study/metric_catalog.hpp"
 
 namespace vssw::study {

@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/plugin_loader.hpp"
+#include "multibody/host/plugin_loader.hpp"
 #include "study/mpi_module.hpp"
 
 namespace vssw::study {

@@ -1,6 +1,6 @@
 #pragma once
 // The MPI module, vssw_mpi.so (study/mpi_module.cpp): the few MPI calls a study makes, behind a table of functions.
-// study/mpi.cpp opens it (multibody/plugin_loader.hpp) only in a process started by mpirun, so that no other process
+// study/mpi.cpp opens it (multibody/host/plugin_loader.hpp) only in a process started by mpirun, so that no other process
 // loads libmpi and the libraries it brings (hwloc, libevent, ...; a plain `vssw free` started in tens of ms instead of
 // a few before). The protocol (who sends what, when) stays in study/mpi.cpp; the module only moves bytes.
 //

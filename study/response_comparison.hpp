@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "analytic/ground_motion.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "study/grid.hpp"
 

@@ -39,7 +39,7 @@ struct StudyMeta {
     int threads = 1;    // worker threads per process
     int processes = 1;  // MPI processes (1 without MPI)
     // --run-budget as given (seconds of CPU per engine run); none: the default, 30 s + 1 ms per step (a row failed
-    // for its budget depends on it; multibody/run_budget.hpp)
+    // for its budget depends on it; multibody/host/run_budget.hpp)
     std::optional<double> run_budget_s;
     long tasks_run = 0, tasks_resumed = 0;  // this run's tasks, and those a --resume found done
     // results.csv as written: its rows and the FNV-1a 64 of its bytes (manifest "results"), so that `study merge`

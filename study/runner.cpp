@@ -21,7 +21,7 @@
 #include "compare/task_pool.hpp"
 #include "io/json.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/run_budget.hpp"
+#include "multibody/host/run_budget.hpp"
 #include "io/atomic_file.hpp"
 #include "io/clock.hpp"
 #include "io/folder_swap.hpp"
@@ -251,7 +251,7 @@ void run_tasks(const Grid& grid, const StudyEngines& engines, const StudyTasks& 
         meta.processes = options.mpi->size();
         return;
     }
-    // Each engine library's run is a child process of its own (multibody/isolated_engine.hpp): a library that
+    // Each engine library's run is a child process of its own (multibody/host/isolated_engine.hpp): a library that
     // crashes or passes its budget fails that run's rows, and every engine's tasks run side by side. An engine whose
     // runs cannot share a process takes turns (run_cases).
     compare::CaseRunOptions run_options;

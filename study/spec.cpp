@@ -23,7 +23,7 @@
 #include "study/record_files.hpp"
 #include "study/metric_catalog.hpp"
 #include "compare/experiments.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 
 namespace vssw::study {

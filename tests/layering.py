@@ -8,6 +8,12 @@ stay inside that engine's adapter folder (the starts of their names: the HEADERS
     (python also binds analytic, multibody and compare directly)
     (bench and tests may include any folder of the program; so may an engine folder's own multibody/<engine>/tests/)
 
+Inside multibody/, three rooms around the interface both sides share (engine.hpp, engine_plugin.hpp at its top):
+    multibody/host  (registry, loader, isolation, budget: what the program uses to find and run backends)
+    multibody/kit   (what an adapter links in: geometry, run monitor, settings, the stepping loop, the energy sum)
+    multibody/<engine>  (one adapter each: the top, the kit and its own folder only)
+The kit includes no host file and no adapter; the host includes no adapter and, of the kit, only HOST_USES_OF_KIT.
+
 Exit 0 when every `#include "..."` and every engine header include keeps to that; otherwise 1, one line per include
 that does not (file:line, what it includes, what the folder may include). A quoted include is resolved as the compiler
 does (beside the including file first, then from the source root), so the folder it reaches is the one checked; an
@@ -54,6 +60,9 @@ def engine_headers(root):
 
 
 ENGINE_TESTS = re.compile(r"multibody/[^/]+/tests/")
+# What the host takes from the kit: the analytic backend reads its settings as an adapter does (settings_reader), and
+# the isolated engine checks a run's settings and step before it forks the worker (settings_reader, step_resolution).
+HOST_USES_OF_KIT = {"multibody/kit/settings_reader.hpp", "multibody/kit/step_resolution.hpp"}
 QUOTED = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 ANGLED = re.compile(r"^\s*#\s*include\s+<([^>]+)>")
 
@@ -81,6 +90,34 @@ def quoted_problems(root, path, where, name, folder, allowed):
     return problems
 
 
+def room_of(relative):
+    """The room of multibody/ a file (source-root relative, posix) is in: "top", "host", "kit" or an adapter's name;
+    None outside multibody/."""
+    parts = relative.split("/")
+    if parts[0] != "multibody":
+        return None
+    return parts[1] if len(parts) > 2 else "top"
+
+
+def room_problems(where, relative, target):
+    """The includes of one multibody/ room that reach a room they may not (target: the included file, source-root
+    relative)."""
+    mine, theirs = room_of(relative), room_of(target)
+    if mine is None or theirs is None or mine == theirs:
+        return []
+    allowed = {
+        "top": set(),
+        "kit": {"top"},
+        "host": {"top"},
+    }.get(mine, {"top", "kit"})  # an adapter: the interface and the kit
+    if theirs in allowed or (mine == "host" and target in HOST_USES_OF_KIT):
+        return []
+    who = f"multibody/{mine}/" if mine != "top" else "multibody/ (its top)"
+    return [f"{where}: includes {target}, but {who} may include only "
+            f"{', '.join('multibody/' + r + '/' if r != 'top' else 'the top of multibody/' for r in sorted(allowed))}"
+            + (" and, of the kit, " + ", ".join(sorted(HOST_USES_OF_KIT)) if mine == "host" else "")]
+
+
 def main(source):
     root = pathlib.Path(os.path.abspath(source))
     problems = []
@@ -99,6 +136,8 @@ def main(source):
                     checked += 1
                     problems += quoted_problems(root, path, f"{relative}:{number}", quoted.group(1), layer,
                                                 LAYERS[layer])
+                    if layer == "multibody":
+                        problems += room_problems(f"{relative}:{number}", relative, quoted.group(1))
                 angled = ANGLED.match(line)
                 if angled:
                     for home, prefixes in homes.items():

@@ -10,7 +10,7 @@
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 
 namespace vssw::compare {
 namespace {

@@ -1,6 +1,6 @@
-// Engine runs in child processes of their own (multibody/isolated_engine.hpp), with a CPU budget
-// (multibody/run_budget.hpp); knobs refused outside their documented ranges (SettingDescription::lo/hi); a step that
-// cannot resolve the wall or the ground motion refused (multibody/step_resolution.hpp). docs/engines.md "Isolation": an
+// Engine runs in child processes of their own (multibody/host/isolated_engine.hpp), with a CPU budget
+// (multibody/host/run_budget.hpp); knobs refused outside their documented ranges (SettingDescription::lo/hi); a step that
+// cannot resolve the wall or the ground motion refused (multibody/kit/step_resolution.hpp). docs/engines.md "Isolation": an
 // ODE setting aborted the process (and a Python interpreter), a Simbody setting hung forever, and a step of 1000 s gave
 // "ok, peak 0".
 #include <gtest/gtest.h>
@@ -21,9 +21,9 @@
 #include "analytic/ground_motion.hpp"
 #include "analytic/wall.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/isolated_engine.hpp"
-#include "multibody/run_budget.hpp"
-#include "multibody/step_resolution.hpp"
+#include "multibody/host/isolated_engine.hpp"
+#include "multibody/host/run_budget.hpp"
+#include "multibody/kit/step_resolution.hpp"
 #include "study/grid.hpp"
 #include "study/measure.hpp"
 #include "tests/engine_available.hpp"

@@ -1,5 +1,5 @@
 // Metric extraction (compare/metrics.hpp) on synthetic trajectories with known answers, the analytic model behind the
-// Engine interface (multibody/analytic_engine.hpp), and the experiments (compare/experiments.hpp) run on it against
+// Engine interface (multibody/host/analytic_engine.hpp), and the experiments (compare/experiments.hpp) run on it against
 // the closed forms and the integrator's own event list.
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include "analytic/simulate.hpp"
 #include "compare/experiments.hpp"
 #include "compare/metrics.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 
 namespace vssw::compare {
 namespace {

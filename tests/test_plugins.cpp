@@ -1,4 +1,4 @@
-// The engines as plugins (multibody/plugin_loader.hpp, multibody/engine_plugin.hpp): found without set-up from the
+// The engines as plugins (multibody/host/plugin_loader.hpp, multibody/engine_plugin.hpp): found without set-up from the
 // build tree, opened only when a run needs one, refused with a clear message when missing, broken (cut short, not a
 // file, no description) or of another build, and
 // their exceptions caught by type across the module boundary.
@@ -15,13 +15,13 @@
 
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
-#include "multibody/contact_schemes.hpp"
+#include "multibody/host/contact_schemes.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/engine_plugin.hpp"
-#include "multibody/isolated_engine.hpp"
-#include "multibody/plugin_file_check.hpp"
-#include "multibody/plugin_loader.hpp"
-#include "multibody/registry.hpp"
+#include "multibody/host/isolated_engine.hpp"
+#include "multibody/host/plugin_file_check.hpp"
+#include "multibody/host/plugin_loader.hpp"
+#include "multibody/host/registry.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/temp_files.hpp"

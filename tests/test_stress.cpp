@@ -1,4 +1,4 @@
-// The stress runner (multibody/child_process.hpp's run_in_child, as run.hpp uses it; run.hpp, judge.hpp): one bad
+// The stress runner (multibody/host/child_process.hpp's run_in_child, as run.hpp uses it; run.hpp, judge.hpp): one bad
 // case cannot take a run down, and each way a child can end has its verdict. The verdicts of the stress set itself
 // are asserted through the program (tests/cli/stress.sh).
 #include <csignal>
@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "multibody/child_process.hpp"
+#include "multibody/host/child_process.hpp"
 #include "stress/case.hpp"
 #include "stress/judge.hpp"
 #include "stress/run.hpp"

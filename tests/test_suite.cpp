@@ -22,7 +22,7 @@
 #include "validation/suite.hpp"
 #include "validation/suite_file.hpp"
 #include "compare/targets.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "tests/engine_available.hpp"
 

@@ -1,4 +1,4 @@
-// Worker processes (multibody/worker_process.hpp): work run in a child gives the caller the very bytes it would have
+// Worker processes (multibody/host/worker_process.hpp): work run in a child gives the caller the very bytes it would have
 // made in its own process (ODE's runs and a study's results.csv are identical with and without them), each way a
 // child can fail comes back as the error it is, and a worker neither outlives its parent nor keeps its parent's signal
 // handlers (analytic/child_fork.hpp).
@@ -24,8 +24,8 @@
 #include "analytic/wall.hpp"
 #include "validation/suite.hpp"
 #include "multibody/engine.hpp"
-#include "multibody/child_process.hpp"
-#include "multibody/worker_process.hpp"
+#include "multibody/host/child_process.hpp"
+#include "multibody/host/worker_process.hpp"
 #include "study/measure.hpp"
 #include "validation/suite_file.hpp"
 #include "tests/engine_available.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "analytic/assumption_sets.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 
 namespace vssw::compare {
 

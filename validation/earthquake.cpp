@@ -9,7 +9,7 @@
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "io/json.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "study/ensemble_measures.hpp"
 #include "study/ensemble_outputs.hpp"
 #include "study/grid.hpp"

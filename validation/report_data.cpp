@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "multibody/contact_schemes.hpp"
+#include "multibody/host/contact_schemes.hpp"
 #include "validation/earthquake.hpp"
 
 namespace vssw::study {

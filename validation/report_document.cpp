@@ -8,7 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "io/text.hpp"
-#include "multibody/contact_schemes.hpp"
+#include "multibody/host/contact_schemes.hpp"
 #include "multibody/engine.hpp"
 #include "validation/earthquake.hpp"
 
@@ -140,7 +140,7 @@ std::vector<DocCell> other_set_row(const ReportInput& in, const std::vector<std:
 void add_matrix(Blocks& b, const ReportInput& in) {
     b.push_back(heading(2, "At a glance"));
     const std::vector<MatrixCell> cells = error_matrix(in);
-    // Grouped by contact scheme: engines of one scheme share their dominant error (multibody/contact_schemes.hpp).
+    // Grouped by contact scheme: engines of one scheme share their dominant error (multibody/host/contact_schemes.hpp).
     const std::vector<std::string> engines = multibody::ordered_by_scheme(compared_engines(in.results));
     // The columns: the metrics some engine, or the other set, was measured on.
     std::vector<MatrixCell> all = cells;

@@ -23,9 +23,9 @@
 #include "compare/experiments.hpp"
 #include "compare/response.hpp"
 #include "compare/metric_catalog.hpp"
-#include "multibody/analytic_engine.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/step_resolution.hpp"
+#include "multibody/host/analytic_engine.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_resolution.hpp"
 #include "validation/assumption_set_engine.hpp"
 
 namespace vssw::compare {
@@ -556,7 +556,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
                             task.engine == 0, in.record_of(suite.cases[task.case_index]), false,
                             references[task.case_index], reference_settings, reference_set});
 
-    // Worker processes (multibody/worker_process.hpp), which give a study of ODE runs both cores, cost the suite more
+    // Worker processes (multibody/host/worker_process.hpp), which give a study of ODE runs both cores, cost the suite more
     // than they gain: a fork per simulation of this large process, for ODE's small share of the suite at its 1 ms step
     // (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s without,
     // docs/measurements/speed.md "Speed"). ODE's tasks take turns instead (run_cases).

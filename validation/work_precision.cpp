@@ -17,7 +17,7 @@
 #include "compare/metrics.hpp"
 #include "compare/response.hpp"
 #include "compare/targets.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "validation/bench_spec.hpp"
 
 namespace vssw::compare {

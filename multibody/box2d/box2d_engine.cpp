@@ -42,9 +42,11 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/energy.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_loop.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -272,6 +274,63 @@ public:
 double clockwise_angle(const b2Body& body) { return -static_cast<double>(body.GetAngle()); }
 double clockwise_rate(const b2Body& body) { return -static_cast<double>(body.GetAngularVelocity()); }
 
+// The stepping kit's hooks (step_loop.hpp) on a Box2dScene.
+class Box2dStepping {
+public:
+    Box2dStepping(Box2dScene& w, const WallScene& scene, const Knobs& knobs)
+        : w_(w),
+          knobs_(knobs),
+          energy_(scene, kDepth),
+          g_(scene.gravity()),
+          N_(scene.overburden() * kDepth),
+          lower_(w.lower()),
+          upper_(w.upper()),
+          top_body_(upper_ ? *upper_ : lower_),
+          top_half_(upper_ ? block_sizes(scene).h_upper : block_sizes(scene).h_lower) {}
+
+    void drive(const GroundStep& g) {
+        if (knobs_.moving_supports) {
+            w_.ground().SetLinearVelocity(vec(g.v, 0.0));
+        } else {
+            w_.world().SetGravity(vec(-g.a_h, -g_));  // -m a_h at every centre of mass: gravity tilted
+        }
+    }
+    void push_overburden() { top_body_.ApplyForce(vec(0.0, -N_), world_point(top_body_, 0.0, top_half_), true); }
+    void step(const StepTimes& st, const GroundStep&) { w_.step(st.dt); }
+    WallState state(const GroundStep&) {
+        const double x_g = w_.ground().GetPosition().x, v_ground = w_.ground().GetLinearVelocity().x;
+        auto block = [&](const b2Body& body) {  // relative to the (moving) ground
+            const b2Vec2 c = body.GetPosition(), v = body.GetLinearVelocity();
+            return BlockState{c.x - x_g, c.y, clockwise_angle(body), v.x - v_ground, v.y, clockwise_rate(body)};
+        };
+        return {block(lower_), upper_ ? block(*upper_) : kNoBlock};
+    }
+    Rocking rocking() const { return {clockwise_angle(lower_), clockwise_rate(lower_)}; }
+    void fill(TrajectorySample& p) {
+        p.theta2 = upper_ ? clockwise_angle(*upper_) : 0.0;
+        const double v_ground = w_.ground().GetLinearVelocity().x;
+        auto kinetic = [&](const b2Body& body) {
+            const b2Vec2 v = body.GetLinearVelocity();
+            // The inertia about the body origin, which is the centre of mass here.
+            return block_kinetic_energy(body.GetMass(), body.GetInertia(), v.x - v_ground, v.y,
+                                        body.GetAngularVelocity());
+        };
+        energy_.fill(p, {kinetic(lower_), upper_ ? kinetic(*upper_) : 0.0, lower_.GetPosition().y,
+                         upper_ ? upper_->GetPosition().y : 0.0, world_point(top_body_, 0.0, top_half_).y});
+        p.contacts = w_.contact_points();
+    }
+
+private:
+    Box2dScene& w_;
+    const Knobs& knobs_;
+    WallEnergy energy_;
+    double g_, N_;
+    b2Body& lower_;
+    b2Body* upper_;
+    b2Body& top_body_;
+    double top_half_;
+};
+
 Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Box2D time step dt (s)", "a positive finite number",
             settings.dt);
@@ -282,75 +341,11 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
     // the period.
     require_settings_fit_wall("Box2D", settings, setting_table(), scene);
     Box2dScene w(scene, knobs, ex.theta0);
-    const BlockSizes s = block_sizes(scene);
-    const double g = scene.gravity();
-    const double N = scene.overburden() * kDepth;
-    const double h_total = s.h_lower + s.h_upper;
-    b2Body& lower = w.lower();
-    b2Body* upper = w.upper();
-    b2Body& top_body = upper ? *upper : lower;
-    const double top_half = upper ? s.h_upper : s.h_lower;
-    const double y_top0 = 2.0 * h_total;
-    const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
-
-    Trajectory out;
-    const double dt = settings.dt;
-    const long every = sample_every(settings, dt);
-    auto record = [&](double t) {
-        if (ex.motion_only) {
-            out.samples.push_back(motion_sample(t, clockwise_angle(lower), clockwise_rate(lower)));
-            return;
-        }
-        TrajectorySample p{};
-        p.t = t;
-        p.theta1 = clockwise_angle(lower);
-        p.theta1_dot = clockwise_rate(lower);
-        p.theta2 = upper ? clockwise_angle(*upper) : 0.0;
-        p.top_dy = world_point(top_body, 0.0, top_half).y - y_top0;
-        const double v_ground = w.ground().GetLinearVelocity().x;
-        auto kinetic = [&](const b2Body& body) {
-            const b2Vec2 v = body.GetLinearVelocity();
-            const double vx = v.x - v_ground, vy = v.y, om = body.GetAngularVelocity();
-            const double m = body.GetMass();
-            const double I = body.GetInertia();  // about the body origin, which is the centre of mass here
-            return 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * om * om;
-        };
-        p.kinetic = (kinetic(lower) + (upper ? kinetic(*upper) : 0.0)) / kDepth;
-        p.potential = (s.m_lower * kDepth * g * (lower.GetPosition().y - y_lower0) +
-                       (upper ? s.m_upper * kDepth * g * (upper->GetPosition().y - y_upper0) : 0.0) + N * p.top_dy) /
-                      kDepth;
-        p.contacts = w.contact_points();
-        out.samples.push_back(p);
-    };
-
-    const long n_steps = std::lround(ex.t_end / dt);
-    double v_g = 0.0;  // the ground's velocity (moving supports)
-    record(0.0);
-    RunMonitor monitor("Box2D", scene, ex, dt, knobs.limits);
-    for (long i = 1; i <= n_steps; ++i) {
-        const double t0 = static_cast<double>(i - 1) * dt;
-        // The ground motion at the step's midpoint: its impulse over the step to second order.
-        const double a_h = ex.horizontal(t0 + 0.5 * dt);
-        if (knobs.moving_supports) {
-            v_g += dt * a_h;  // the velocity change the pseudo-forces would give the blocks, given to the ground
-            w.ground().SetLinearVelocity(vec(v_g, 0.0));
-        } else {
-            w.world().SetGravity(vec(-a_h, -g));  // -m a_h at every centre of mass: gravity tilted
-        }
-        if (N > 0.0) top_body.ApplyForce(vec(0.0, -N), world_point(top_body, 0.0, top_half), true);
-        w.step(dt);
-        ++out.steps;
-        const double t = static_cast<double>(i) * dt;
-        const double x_g = w.ground().GetPosition().x, v_ground = w.ground().GetLinearVelocity().x;
-        auto state = [&](const b2Body& body) {  // relative to the (moving) ground
-            const b2Vec2 c = body.GetPosition(), v = body.GetLinearVelocity();
-            return BlockState{c.x - x_g, c.y, clockwise_angle(body), v.x - v_ground, v.y, clockwise_rate(body)};
-        };
-        const auto verdict = monitor.check(t, {state(lower), upper ? state(*upper) : kNoBlock});
-        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
-    }
-    return out;
+    Box2dStepping stepping(w, scene, knobs);
+    RunMonitor monitor("Box2D", scene, ex, settings.dt, knobs.limits);
+    const StepLoop loop{settings.dt, sample_every(settings, settings.dt), knobs.moving_supports,
+                        scene.overburden() > 0.0};
+    return run_fixed_steps(stepping, ex, loop, monitor);
 }
 
 }  // namespace

@@ -31,9 +31,11 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/energy.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_loop.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -237,95 +239,87 @@ public:
     void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
 };
 
+// The stepping kit's hooks (step_loop.hpp) on a BulletWorld.
+class BulletStepping {
+public:
+    BulletStepping(BulletWorld& w, const WallScene& scene, const Knobs& knobs, double dt)
+        : w_(w),
+          knobs_(knobs),
+          energy_(scene, kDepth),
+          s_(block_sizes(scene)),
+          N_(scene.overburden() * kDepth),
+          lower_(w.lower()),
+          upper_(w.upper()),
+          top_body_(upper_ ? *upper_ : lower_),
+          top_half_(upper_ ? s_.h_upper : s_.h_lower),
+          dt_(dt) {}
+
+    void drive(const GroundStep& g) {
+        if (knobs_.moving_supports) {
+            w_.move_ground(g.x);  // the supports' displacement at the end of the step (midpoint rule)
+        } else if (g.a_h != 0.0) {
+            lower_.applyCentralForce(btVector3(-s_.m_lower * kDepth * g.a_h, 0, 0));
+            if (upper_) upper_->applyCentralForce(btVector3(-s_.m_upper * kDepth * g.a_h, 0, 0));
+        }
+    }
+    // N as its impulse over the step, added to the velocities before the solve, not as a force: Bullet's solver adds a
+    // force's torque to a body's spin only after the solve, and its friction rows leave that torque out of the
+    // relative velocity they hold at zero (btSequentialImpulseConstraintSolver::setupFrictionConstraint reads the
+    // force's linear impulse but not its angular one; the normal rows read both). N is the one force here with a
+    // torque about a centre of mass, so the hinge slid every step by the spin N's torque gave in it (5.4 mm/s at 1 ms
+    // on Table 1 #14 at xi 0.5 off the roller), friction doing work F v_t: a loss first order in the step
+    // (docs/engines.md "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
+    void push_overburden() {
+        top_body_.applyImpulse(btVector3(0, -N_ * dt_, 0), top_centre() - top_body_.getCenterOfMassPosition());
+    }
+    void step(const StepTimes& st, const GroundStep&) { w_.step(st.dt); }
+    WallState state(const GroundStep& g) const {
+        auto block = [&](const btRigidBody& body) {  // relative to the (moving) ground
+            const btVector3 c = body.getCenterOfMassPosition(), v = body.getLinearVelocity();
+            return BlockState{c.x() - g.x, c.y(), clockwise_angle(body), v.x() - g.v, v.y(),
+                              -body.getAngularVelocity().z()};
+        };
+        return {block(lower_), upper_ ? block(*upper_) : kNoBlock};
+    }
+    Rocking rocking() const { return {clockwise_angle(lower_), -lower_.getAngularVelocity().z()}; }
+    void fill(TrajectorySample& p) const {
+        p.theta2 = upper_ ? clockwise_angle(*upper_) : 0.0;
+        const double v_ground = w_.ground_velocity();
+        auto kinetic = [&](const btRigidBody& body) {
+            const btVector3 v = body.getLinearVelocity() - btVector3(v_ground, 0, 0), wv = body.getAngularVelocity();
+            const double m = 1.0 / body.getInvMass();
+            const double I = 1.0 / body.getInvInertiaDiagLocal().z();
+            return 0.5 * m * v.length2() + 0.5 * I * wv.z() * wv.z();  // Bullet's own 3-D sum (v.z() is 0)
+        };
+        energy_.fill(p, {kinetic(lower_), upper_ ? kinetic(*upper_) : 0.0, lower_.getCenterOfMassPosition().y(),
+                         upper_ ? upper_->getCenterOfMassPosition().y() : 0.0, top_centre().y()});
+        p.contacts = w_.contact_points();
+    }
+private:
+    btVector3 top_centre() const { return top_body_.getWorldTransform() * btVector3(0, top_half_, 0); }
+
+    BulletWorld& w_;
+    const Knobs& knobs_;
+    WallEnergy energy_;
+    BlockSizes s_;
+    double N_;
+    btRigidBody& lower_;
+    btRigidBody* upper_;
+    btRigidBody& top_body_;
+    double top_half_;
+    double dt_;
+};
+
 Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Bullet time step dt (s)", "a positive finite number",
             settings.dt);
     const Knobs knobs = read_knobs(settings);
     BulletWorld w(scene, knobs, ex.theta0);
-    const BlockSizes s = block_sizes(scene);
-    const double g = scene.gravity();
-    const double N = scene.overburden() * kDepth;
-    const double h_total = s.h_lower + s.h_upper;
-    btRigidBody& lower = w.lower();
-    btRigidBody* upper = w.upper();
-    btRigidBody& top_body = upper ? *upper : lower;
-    const double top_half = upper ? s.h_upper : s.h_lower;
-
-    auto top_centre = [&]() { return top_body.getWorldTransform() * btVector3(0, top_half, 0); };
-    const double y_top0 = 2.0 * h_total;
-    const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
-
-    Trajectory out;
-    const long every = sample_every(settings, settings.dt);
-    auto record = [&](double t) {
-        if (ex.motion_only) {
-            out.samples.push_back(motion_sample(t, clockwise_angle(lower), -lower.getAngularVelocity().z()));
-            return;
-        }
-        TrajectorySample p{};
-        p.t = t;
-        p.theta1 = clockwise_angle(lower);
-        p.theta1_dot = -lower.getAngularVelocity().z();
-        p.theta2 = upper ? clockwise_angle(*upper) : 0.0;
-        p.top_dy = top_centre().y() - y_top0;
-        const double v_ground = w.ground_velocity();
-        auto kinetic = [&](const btRigidBody& body) {
-            const btVector3 v = body.getLinearVelocity() - btVector3(v_ground, 0, 0), wv = body.getAngularVelocity();
-            const double m = 1.0 / body.getInvMass();
-            const double I = 1.0 / body.getInvInertiaDiagLocal().z();
-            return 0.5 * m * v.length2() + 0.5 * I * wv.z() * wv.z();
-        };
-        p.kinetic = (kinetic(lower) + (upper ? kinetic(*upper) : 0.0)) / kDepth;
-        p.potential = (s.m_lower * kDepth * g * (lower.getCenterOfMassPosition().y() - y_lower0) +
-                       (upper ? s.m_upper * kDepth * g * (upper->getCenterOfMassPosition().y() - y_upper0) : 0.0) +
-                       N * p.top_dy) /
-                      kDepth;
-        p.contacts = w.contact_points();
-        out.samples.push_back(p);
-    };
-
-    const double dt = settings.dt;
-    const long n_steps = std::lround(ex.t_end / dt);
-    double x_g = 0.0, v_g = 0.0;  // the ground's displacement and velocity (moving supports)
-    record(0.0);
-    RunMonitor monitor("Bullet", scene, ex, dt, knobs.limits);
-    for (long i = 1; i <= n_steps; ++i) {
-        const double t0 = static_cast<double>(i - 1) * dt;
-        // Pseudo-force of the ground motion at the step's midpoint (its impulse over the step to second order).
-        const double a_h = ex.horizontal(t0 + 0.5 * dt);
-        if (knobs.moving_supports) {
-            // The ground's displacement at the end of the step: velocity and position by the midpoint rule, the
-            // same impulse per step as the pseudo-forces get.
-            const double v_next = v_g + dt * a_h;
-            x_g += 0.5 * dt * (v_g + v_next);
-            v_g = v_next;
-            w.move_ground(x_g);
-        } else if (a_h != 0.0) {
-            lower.applyCentralForce(btVector3(-s.m_lower * kDepth * a_h, 0, 0));
-            if (upper) upper->applyCentralForce(btVector3(-s.m_upper * kDepth * a_h, 0, 0));
-        }
-        // N as its impulse over the step, added to the velocities before the solve, not as a force: Bullet's solver
-        // adds a force's torque to a body's spin only after the solve, and its friction rows leave that torque out
-        // of the relative velocity they hold at zero (btSequentialImpulseConstraintSolver::setupFrictionConstraint
-        // reads the force's linear impulse but not its angular one; the normal rows read both). N is the one force
-        // here with a torque about a centre of mass, so the hinge slid every step by the spin N's torque gave in it
-        // (5.4 mm/s at 1 ms on Table 1 #14 at xi 0.5 off the roller), friction doing work F v_t: a loss first order
-        // in the step (docs/engines.md "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
-        if (N > 0.0) top_body.applyImpulse(btVector3(0, -N * dt, 0), top_centre() - top_body.getCenterOfMassPosition());
-        w.step(dt);
-        ++out.steps;
-
-        const double t = static_cast<double>(i) * dt;
-        auto state = [&](const btRigidBody& body) {  // relative to the (moving) ground
-            const btVector3 c = body.getCenterOfMassPosition(), v = body.getLinearVelocity();
-            return BlockState{c.x() - x_g, c.y(), clockwise_angle(body), v.x() - v_g, v.y(),
-                              -body.getAngularVelocity().z()};
-        };
-        const auto verdict = monitor.check(t, {state(lower), upper ? state(*upper) : kNoBlock});
-        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
-    }
-    return out;
+    BulletStepping stepping(w, scene, knobs, settings.dt);
+    RunMonitor monitor("Bullet", scene, ex, settings.dt, knobs.limits);
+    const StepLoop loop{settings.dt, sample_every(settings, settings.dt), knobs.moving_supports,
+                        scene.overburden() > 0.0};
+    return run_fixed_steps(stepping, ex, loop, monitor);
 }
 
 }  // namespace

@@ -54,9 +54,11 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/energy.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_loop.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -294,6 +296,57 @@ public:
     bool runs_concurrently() const override { return false; }
 };
 
+// The stepping kit's hooks (step_loop.hpp) on a DartScene.
+class DartStepping {
+public:
+    DartStepping(DartScene& w, const WallScene& scene)
+        : w_(w),
+          energy_(scene, kDepth),
+          N_(scene.overburden() * kDepth),
+          lower_(w.lower()),
+          upper_(w.upper()),
+          top_body_(upper_ ? upper_ : lower_),
+          top_half_(upper_ ? block_sizes(scene).h_upper : block_sizes(scene).h_lower) {}
+
+    void drive(const GroundStep&) {}  // the ground motion goes to DartScene::step (gravity or the ground's command)
+    void push_overburden() {
+        top_body_->addExtForce(Vector3d(0.0, -N_, 0.0), Vector3d(0.0, top_half_, 0.0), false, true);
+    }
+    void step(const StepTimes&, const GroundStep& g) { w_.step(g.a_h, g.v); }
+    WallState state(const GroundStep& g) const {
+        const double x_g = w_.ground_x();
+        auto block = [&](const dd::BodyNode& body) {  // relative to the (moving) ground
+            const Vector3d c = body.getCOM(), v = body.getCOMLinearVelocity();
+            return BlockState{c.x() - x_g, c.y(), clockwise_angle(body), v.x() - g.v, v.y(), rate_of(body)};
+        };
+        return {block(*lower_), upper_ ? block(*upper_) : kNoBlock};
+    }
+    Rocking rocking() const { return {clockwise_angle(*lower_), rate_of(*lower_)}; }
+    void fill(TrajectorySample& p) const {
+        p.theta2 = upper_ ? clockwise_angle(*upper_) : 0.0;
+        const double v_ground = w_.ground_velocity();
+        auto kinetic = [&](const dd::BodyNode& body) {  // DART's own 3-D sum with its inertia tensor
+            const Vector3d v = body.getCOMLinearVelocity() - Vector3d(v_ground, 0.0, 0.0);
+            const Vector3d wv = body.getAngularVelocity();
+            return 0.5 * body.getMass() * v.squaredNorm() + 0.5 * wv.dot(body.getInertia().getMoment() * wv);
+        };
+        energy_.fill(p, {kinetic(*lower_), upper_ ? kinetic(*upper_) : 0.0, lower_->getCOM().y(),
+                         upper_ ? upper_->getCOM().y() : 0.0, world_point(*top_body_, 0.0, top_half_).y()});
+        p.contacts = w_.contacts();
+    }
+
+private:
+    static double rate_of(const dd::BodyNode& body) { return -body.getAngularVelocity()[2]; }
+
+    DartScene& w_;
+    WallEnergy energy_;
+    double N_;
+    dd::BodyNode* lower_;
+    dd::BodyNode* upper_;
+    dd::BodyNode* top_body_;
+    double top_half_;
+};
+
 Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "DART time step dt (s)", "a positive finite number",
             settings.dt);
@@ -307,68 +360,9 @@ Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, co
     dart::constraint::ContactConstraint::setConstraintForceMixing(knobs.cfm);
     dart::constraint::ContactConstraint::setErrorAllowance(knobs.allowance);
     DartScene w(scene, knobs, ex.theta0, dt);
-    const BlockSizes s = block_sizes(scene);
-    const double g = scene.gravity();
-    const double N = scene.overburden() * kDepth;
-    const double h_total = s.h_lower + s.h_upper;
-    dd::BodyNode* lower = w.lower();
-    dd::BodyNode* upper = w.upper();
-    dd::BodyNode* top_body = upper ? upper : lower;
-    const double top_half = upper ? s.h_upper : s.h_lower;
-    const double y_top0 = 2.0 * h_total;
-    const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
-
-    Trajectory out;
-    const long every = sample_every(settings, dt);
-    auto rate_of = [](const dd::BodyNode& body) { return -body.getAngularVelocity()[2]; };
-    auto record = [&](double t) {
-        if (ex.motion_only) {
-            out.samples.push_back(motion_sample(t, clockwise_angle(*lower), rate_of(*lower)));
-            return;
-        }
-        TrajectorySample p{};
-        p.t = t;
-        p.theta1 = clockwise_angle(*lower);
-        p.theta1_dot = rate_of(*lower);
-        p.theta2 = upper ? clockwise_angle(*upper) : 0.0;
-        p.top_dy = world_point(*top_body, 0.0, top_half).y() - y_top0;
-        const double v_ground = w.ground_velocity();
-        auto kinetic = [&](const dd::BodyNode& body) {
-            const Vector3d v = body.getCOMLinearVelocity() - Vector3d(v_ground, 0.0, 0.0);
-            const Vector3d wv = body.getAngularVelocity();
-            return 0.5 * body.getMass() * v.squaredNorm() + 0.5 * wv.dot(body.getInertia().getMoment() * wv);
-        };
-        p.kinetic = (kinetic(*lower) + (upper ? kinetic(*upper) : 0.0)) / kDepth;
-        p.potential = (s.m_lower * kDepth * g * (lower->getCOM().y() - y_lower0) +
-                       (upper ? s.m_upper * kDepth * g * (upper->getCOM().y() - y_upper0) : 0.0) + N * p.top_dy) /
-                      kDepth;
-        p.contacts = w.contacts();
-        out.samples.push_back(p);
-    };
-
-    const long n_steps = std::lround(ex.t_end / dt);
-    double v_g = 0.0;  // the ground's velocity (moving supports)
-    record(0.0);
-    for (long i = 1; i <= n_steps; ++i) {
-        const double t0 = static_cast<double>(i - 1) * dt;
-        // The ground motion at the step's midpoint: its impulse over the step to second order.
-        const double a_h = ex.horizontal(t0 + 0.5 * dt);
-        if (knobs.moving_supports) v_g += dt * a_h;  // the velocity change the pseudo-forces would give the blocks
-        if (N > 0.0) top_body->addExtForce(Vector3d(0.0, -N, 0.0), Vector3d(0.0, top_half, 0.0), false, true);
-        w.step(a_h, v_g);
-        ++out.steps;
-
-        const double t = static_cast<double>(i) * dt;
-        const double x_g = w.ground_x();
-        auto state = [&](const dd::BodyNode& body) {  // relative to the (moving) ground
-            const Vector3d c = body.getCOM(), v = body.getCOMLinearVelocity();
-            return BlockState{c.x() - x_g, c.y(), clockwise_angle(body), v.x() - v_g, v.y(), rate_of(body)};
-        };
-        const auto verdict = monitor.check(t, {state(*lower), upper ? state(*upper) : kNoBlock});
-        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
-    }
-    return out;
+    DartStepping stepping(w, scene);
+    const StepLoop loop{dt, sample_every(settings, dt), knobs.moving_supports, scene.overburden() > 0.0};
+    return run_fixed_steps(stepping, ex, loop, monitor);
 }
 
 }  // namespace

@@ -40,9 +40,11 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/energy.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_loop.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -268,6 +270,73 @@ Trajectory MujocoEngine::simulate(const WallScene& scene, const Excitation& ex, 
     }
 }
 
+// The stepping kit's hooks (step_loop.hpp) on one run's mjModel and mjData: the blocks' joints are the only degrees
+// of freedom (no free joints), so qpos and qvel share their indices.
+class MujocoStepping {
+public:
+    MujocoStepping(mjModel* m, mjData* d, const WallScene& scene, const Block& lower, const Block& upper)
+        : m_(m),
+          d_(d),
+          energy_(scene, kDepth),
+          N_(scene.overburden() * kDepth),
+          vssw_(scene.vssw.has_value()),
+          lower_(lower),
+          upper_(upper),
+          top_(vssw_ ? upper_ : lower_) {}
+
+    // The ground motion as a uniform field.
+    void drive(const GroundStep& g) { m_->opt.gravity[0] = -g.a_h; }
+    // N at the centre of the top face: the force at the centre of mass and its moment about it (about +y: r_z F_x -
+    // r_x F_z with r the arm from the centre, F = (0, 0, -N)).
+    void push_overburden() {
+        const double arm_x = world(top_, 0.0, top_.half_h)[0] - centre_x(top_);
+        double* f = d_->xfrc_applied + 6 * top_.body;
+        f[2] = -N_;
+        f[4] = arm_x * N_;
+    }
+    void step(const StepTimes&, const GroundStep&) { mj_step(m_, d_); }
+    // A MuJoCo warning (its counters, the text from the handler) fails the run.
+    void check_step(double t) const {
+        for (int w = 0; w < mjNWARNING; ++w)
+            if (d_->warning[w].number > 0)
+                throw EngineFailure(fmt::format("MuJoCo warned at t = {:.6g} s: {}", t,
+                                                t_last_warning.empty() ? std::string("(no text)") : t_last_warning));
+    }
+    WallState state(const GroundStep&) const { return {block_state(lower_), vssw_ ? block_state(upper_) : kNoBlock}; }
+    Rocking rocking() const { return {angle(lower_), d_->qvel[lower_.q + 2]}; }
+    void fill(TrajectorySample& p) const {
+        p.theta2 = vssw_ ? angle(upper_) : 0.0;
+        auto kinetic = [&](const Block& k) {
+            return block_kinetic_energy(k.mass, k.inertia, d_->qvel[k.q], d_->qvel[k.q + 1], d_->qvel[k.q + 2]);
+        };
+        energy_.fill(p, {kinetic(lower_), vssw_ ? kinetic(upper_) : 0.0, centre_y(lower_),
+                         vssw_ ? centre_y(upper_) : 0.0, world(top_, 0.0, top_.half_h)[1]});
+        p.contacts = d_->ncon;
+    }
+
+private:
+    double centre_x(const Block& k) const { return d_->qpos[k.q]; }
+    double centre_y(const Block& k) const { return k.z_rest + d_->qpos[k.q + 1]; }
+    double angle(const Block& k) const { return d_->qpos[k.q + 2]; }
+    // A point of a block given in its frame (engine axes: lx along its width, ly along its height), in world (x, y).
+    std::array<double, 2> world(const Block& k, double lx, double ly) const {
+        const double a = angle(k), c = std::cos(a), sn = std::sin(a);
+        return {centre_x(k) + c * lx + sn * ly, centre_y(k) - sn * lx + c * ly};
+    }
+    BlockState block_state(const Block& k) const {
+        return BlockState{centre_x(k), centre_y(k), angle(k), d_->qvel[k.q], d_->qvel[k.q + 1], d_->qvel[k.q + 2]};
+    }
+
+    mjModel* m_;
+    mjData* d_;
+    WallEnergy energy_;
+    double N_;
+    bool vssw_;
+    const Block& lower_;
+    const Block& upper_;
+    const Block& top_;
+};
+
 Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "MuJoCo time step dt (s)", "a positive finite number",
             settings.dt);
@@ -306,75 +375,12 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
     place(lower, pose.lower);
     if (vssw) place(upper, pose.upper);
 
-    const double g = scene.gravity();
-    const double N = scene.overburden() * kDepth;
-    const Block& top = vssw ? upper : lower;
-    const double y_top0 = 2.0 * (s.h_lower + s.h_upper);
-    auto centre_x = [&](const Block& k) { return d->qpos[k.q]; };
-    auto centre_y = [&](const Block& k) { return k.z_rest + d->qpos[k.q + 1]; };
-    auto angle = [&](const Block& k) { return d->qpos[k.q + 2]; };
-    // A point of a block given in its frame (engine axes: lx along its width, ly along its height), in world (x, y).
-    auto world = [&](const Block& k, double lx, double ly) {
-        const double a = angle(k), c = std::cos(a), sn = std::sin(a);
-        return std::array<double, 2>{centre_x(k) + c * lx + sn * ly, centre_y(k) - sn * lx + c * ly};
-    };
-
-    Trajectory out;
-    const long every = sample_every(settings, dt);
-    auto record = [&](double t) {
-        if (ex.motion_only) {
-            out.samples.push_back(motion_sample(t, angle(lower), d->qvel[lower.q + 2]));
-            return;
-        }
-        TrajectorySample p{};
-        p.t = t;
-        p.theta1 = angle(lower);
-        p.theta1_dot = d->qvel[lower.q + 2];
-        p.theta2 = vssw ? angle(upper) : 0.0;
-        p.top_dy = world(top, 0.0, top.half_h)[1] - y_top0;
-        auto kinetic = [&](const Block& k) {
-            const double vx = d->qvel[k.q], vy = d->qvel[k.q + 1], w = d->qvel[k.q + 2];
-            return 0.5 * k.mass * (vx * vx + vy * vy) + 0.5 * k.inertia * w * w;
-        };
-        auto potential = [&](const Block& k) { return k.mass * g * (centre_y(k) - k.z_rest); };
-        p.kinetic = (kinetic(lower) + (vssw ? kinetic(upper) : 0.0)) / kDepth;
-        p.potential = (potential(lower) + (vssw ? potential(upper) : 0.0) + N * p.top_dy) / kDepth;
-        p.contacts = d->ncon;
-        out.samples.push_back(p);
-    };
-
-    const long n_steps = std::lround(ex.t_end / dt);
-    record(0.0);
+    MujocoStepping stepping(m, d, scene, lower, upper);
     RunMonitor monitor("MuJoCo", scene, ex, dt, knobs.limits);
     t_last_warning.clear();
-    for (long i = 1; i <= n_steps; ++i) {
-        const double t0 = static_cast<double>(i - 1) * dt;
-        // The ground motion at the step's midpoint (its impulse over the step to second order), as a uniform field.
-        m->opt.gravity[0] = -ex.horizontal(t0 + 0.5 * dt);
-        if (N > 0.0) {
-            // N at the centre of the top face: the force at the centre of mass and its moment about it (about +y:
-            // r_z F_x - r_x F_z with r the arm from the centre, F = (0, 0, -N)).
-            const double arm_x = world(top, 0.0, top.half_h)[0] - centre_x(top);
-            double* f = d->xfrc_applied + 6 * top.body;
-            f[2] = -N;
-            f[4] = arm_x * N;
-        }
-        mj_step(m, d);
-        ++out.steps;
-
-        const double t = static_cast<double>(i) * dt;
-        for (int w = 0; w < mjNWARNING; ++w)
-            if (d->warning[w].number > 0)
-                throw EngineFailure(fmt::format("MuJoCo warned at t = {:.6g} s: {}", t,
-                                                t_last_warning.empty() ? std::string("(no text)") : t_last_warning));
-        auto state = [&](const Block& k) {
-            return BlockState{centre_x(k), centre_y(k), angle(k), d->qvel[k.q], d->qvel[k.q + 1], d->qvel[k.q + 2]};
-        };
-        const auto verdict = monitor.check(t, {state(lower), vssw ? state(upper) : kNoBlock});
-        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
-    }
-    return out;
+    // No moving supports: MuJoCo's planes must be static (see the top of the file).
+    const StepLoop loop{dt, sample_every(settings, dt), false, scene.overburden() > 0.0};
+    return run_fixed_steps(stepping, ex, loop, monitor);
 }
 
 }  // namespace

@@ -42,9 +42,11 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/energy.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_loop.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -456,6 +458,76 @@ public:
     bool runs_concurrently() const override { return false; }
 };
 
+// The stepping kit's hooks (step_loop.hpp) on an OdeScene.
+class OdeStepping {
+public:
+    OdeStepping(OdeScene& w, const WallScene& scene, const Knobs& knobs)
+        : w_(w),
+          knobs_(knobs),
+          energy_(scene, kDepth),
+          s_(block_sizes(scene)),
+          N_(scene.overburden() * kDepth),
+          lower_(w.lower()),
+          upper_(w.upper()),
+          top_body_(upper_ ? upper_ : lower_),
+          top_half_(upper_ ? s_.h_upper : s_.h_lower) {}
+
+    void drive(const GroundStep& g) {
+        if (knobs_.moving_supports || g.a_h == 0.0) return;  // moving supports: the ground's velocity goes to step()
+        dBodyAddForce(lower_, -s_.m_lower * kDepth * g.a_h, 0.0, 0.0);
+        if (upper_) dBodyAddForce(upper_, -s_.m_upper * kDepth * g.a_h, 0.0, 0.0);
+    }
+    void push_overburden() {
+        const Vec2 top = world_point(top_body_, 0.0, top_half_);
+        dBodyAddForceAtPos(top_body_, 0.0, -N_, 0.0, top.x, top.y, 0.0);
+    }
+    void step(const StepTimes&, const GroundStep& g) { w_.step(g.v); }
+    // ODE's messages (its error and debug handlers) and a block leaving the plane fail the run.
+    void check_step(double t) const {
+        if (g_ode_messages != messages_before_)
+            throw EngineFailure(fmt::format("ODE: {} at t = {:.6g} s", g_ode_last_message, t));
+        const double tilt = std::max(out_of_plane_tilt(lower_), upper_ ? out_of_plane_tilt(upper_) : 0.0);
+        if (tilt > 1e-9)  // measured: exactly 0 (see the top of the file)
+            throw EngineFailure(
+                fmt::format("ODE: a block turned {:.3g} rad out of the plane at t = {:.6g} s", tilt, t));
+    }
+    WallState state(const GroundStep& g) const {
+        const double x_g = w_.ground_x();
+        auto block = [&](dBodyID body) {  // relative to the (moving) ground
+            const dReal *c = dBodyGetPosition(body), *v = dBodyGetLinearVel(body);
+            return BlockState{c[0] - x_g, c[1], clockwise_angle(body), v[0] - g.v, v[1], -dBodyGetAngularVel(body)[2]};
+        };
+        return {block(lower_), upper_ ? block(upper_) : kNoBlock};
+    }
+    Rocking rocking() const { return {clockwise_angle(lower_), -dBodyGetAngularVel(lower_)[2]}; }
+    void fill(TrajectorySample& p) const {
+        p.theta2 = upper_ ? clockwise_angle(upper_) : 0.0;
+        const double v_ground = w_.ground_velocity();
+        auto kinetic = [&](dBodyID body) {  // ODE's full 3-D sum: the out-of-plane terms are 0 (see check_step)
+            const dReal* v = dBodyGetLinearVel(body);
+            const dReal* wv = dBodyGetAngularVel(body);
+            dMass m;
+            dBodyGetMass(body, &m);
+            const double vx = v[0] - v_ground;
+            return 0.5 * m.mass * (vx * vx + v[1] * v[1] + v[2] * v[2]) +
+                   0.5 * (m.I[0] * wv[0] * wv[0] + m.I[5] * wv[1] * wv[1] + m.I[10] * wv[2] * wv[2]);
+        };
+        energy_.fill(p, {kinetic(lower_), upper_ ? kinetic(upper_) : 0.0, dBodyGetPosition(lower_)[1],
+                         upper_ ? dBodyGetPosition(upper_)[1] : 0.0, world_point(top_body_, 0.0, top_half_).y});
+        p.contacts = w_.contacts();
+    }
+
+private:
+    OdeScene& w_;
+    const Knobs& knobs_;
+    WallEnergy energy_;
+    BlockSizes s_;
+    double N_;
+    dBodyID lower_, upper_, top_body_;
+    double top_half_;
+    const int messages_before_ = g_ode_messages;
+};
+
 Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "ODE time step dt (s)", "a positive finite number",
             settings.dt);
@@ -466,88 +538,10 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
     // that a run's result does not depend on the runs before it in the process (threads, shards, MPI processes).
     dRandSetSeed(0);
     OdeScene w(scene, knobs, ex.theta0, dt);
-    const BlockSizes s = block_sizes(scene);
-    const double g = scene.gravity();
-    const double N = scene.overburden() * kDepth;
-    const double h_total = s.h_lower + s.h_upper;
-    dBodyID lower = w.lower();
-    dBodyID upper = w.upper();
-    dBodyID top_body = upper ? upper : lower;
-    const double top_half = upper ? s.h_upper : s.h_lower;
-    const double y_top0 = 2.0 * h_total;
-    const double y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
-    const int messages_before = g_ode_messages;
-
-    Trajectory out;
-    const long every = sample_every(settings, dt);
-    auto record = [&](double t) {
-        if (ex.motion_only) {
-            out.samples.push_back(motion_sample(t, clockwise_angle(lower), -dBodyGetAngularVel(lower)[2]));
-            return;
-        }
-        TrajectorySample p{};
-        p.t = t;
-        p.theta1 = clockwise_angle(lower);
-        p.theta1_dot = -dBodyGetAngularVel(lower)[2];
-        p.theta2 = upper ? clockwise_angle(upper) : 0.0;
-        p.top_dy = world_point(top_body, 0.0, top_half).y - y_top0;
-        const double v_ground = w.ground_velocity();
-        auto kinetic = [&](dBodyID body) {
-            const dReal* v = dBodyGetLinearVel(body);
-            const dReal* wv = dBodyGetAngularVel(body);
-            dMass m;
-            dBodyGetMass(body, &m);
-            const double vx = v[0] - v_ground;
-            return 0.5 * m.mass * (vx * vx + v[1] * v[1] + v[2] * v[2]) +
-                   0.5 * (m.I[0] * wv[0] * wv[0] + m.I[5] * wv[1] * wv[1] + m.I[10] * wv[2] * wv[2]);
-        };
-        p.kinetic = (kinetic(lower) + (upper ? kinetic(upper) : 0.0)) / kDepth;
-        p.potential = (s.m_lower * kDepth * g * (dBodyGetPosition(lower)[1] - y_lower0) +
-                       (upper ? s.m_upper * kDepth * g * (dBodyGetPosition(upper)[1] - y_upper0) : 0.0) +
-                       N * p.top_dy) /
-                      kDepth;
-        p.contacts = w.contacts();
-        out.samples.push_back(p);
-    };
-
-    const long n_steps = std::lround(ex.t_end / dt);
-    double v_g = 0.0;  // the ground's velocity (moving supports)
-    record(0.0);
+    OdeStepping stepping(w, scene, knobs);
     RunMonitor monitor("ODE", scene, ex, dt, knobs.limits);
-    for (long i = 1; i <= n_steps; ++i) {
-        const double t0 = static_cast<double>(i - 1) * dt;
-        // The ground motion at the step's midpoint: its impulse over the step to second order.
-        const double a_h = ex.horizontal(t0 + 0.5 * dt);
-        if (knobs.moving_supports) {
-            v_g += dt * a_h;  // the velocity change the pseudo-forces would give the blocks, given to the ground
-        } else if (a_h != 0.0) {
-            dBodyAddForce(lower, -s.m_lower * kDepth * a_h, 0.0, 0.0);
-            if (upper) dBodyAddForce(upper, -s.m_upper * kDepth * a_h, 0.0, 0.0);
-        }
-        if (N > 0.0) {
-            const Vec2 top = world_point(top_body, 0.0, top_half);
-            dBodyAddForceAtPos(top_body, 0.0, -N, 0.0, top.x, top.y, 0.0);
-        }
-        w.step(v_g);
-        ++out.steps;
-
-        const double t = static_cast<double>(i) * dt;
-        if (g_ode_messages != messages_before)
-            throw EngineFailure(fmt::format("ODE: {} at t = {:.6g} s", g_ode_last_message, t));
-        const double tilt = std::max(out_of_plane_tilt(lower), upper ? out_of_plane_tilt(upper) : 0.0);
-        if (tilt > 1e-9)  // measured: exactly 0 (see the top of the file)
-            throw EngineFailure(
-                fmt::format("ODE: a block turned {:.3g} rad out of the plane at t = {:.6g} s", tilt, t));
-        const double x_g = w.ground_x();
-        auto state = [&](dBodyID body) {  // relative to the (moving) ground
-            const dReal *c = dBodyGetPosition(body), *v = dBodyGetLinearVel(body);
-            return BlockState{c[0] - x_g, c[1], clockwise_angle(body), v[0] - v_g, v[1], -dBodyGetAngularVel(body)[2]};
-        };
-        const auto verdict = monitor.check(t, {state(lower), upper ? state(upper) : kNoBlock});
-        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
-    }
-    return out;
+    const StepLoop loop{dt, sample_every(settings, dt), knobs.moving_supports, scene.overburden() > 0.0};
+    return run_fixed_steps(stepping, ex, loop, monitor);
 }
 
 }  // namespace

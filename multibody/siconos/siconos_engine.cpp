@@ -59,9 +59,11 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/energy.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_loop.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -364,28 +366,70 @@ public:
     void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
 };
 
-// The generalised force of the run's loads at the current pose: gravity, the ground motion's pseudo-forces and N at
-// the centre of the top face (its moment about the top block's centre: r x (0, -N) = -N r_x).
-void set_loads(SiconosScene& w, const WallScene& scene, const BlockSizes& s, double a_h) {
-    const double g = scene.gravity(), N = scene.overburden() * kDepth;
-    SiconosVector& f = w.forces();
-    const bool vssw = scene.is_vssw();
-    const double masses[2] = {s.m_lower * kDepth, s.m_upper * kDepth};
-    for (int body = kLower; body <= (vssw ? kUpper : kLower); ++body) {
-        const unsigned i = 3u * static_cast<unsigned>(body);
-        f.setValue(i, -masses[body] * a_h);
-        f.setValue(i + 1, -masses[body] * g);
-        f.setValue(i + 2, 0.0);
+// The stepping kit's hooks (step_loop.hpp) on a SiconosScene: the generalised force of the run's loads at the current
+// pose (gravity, the ground motion's pseudo-forces, then N at the centre of the top face, its moment about the top
+// block's centre r x (0, -N) = -N r_x), the one-step problem, the blocks' coordinates.
+class SiconosStepping {
+public:
+    SiconosStepping(SiconosScene& w, const WallScene& scene)
+        : w_(w),
+          energy_(scene, kDepth),
+          s_(block_sizes(scene)),
+          vssw_(scene.is_vssw()),
+          g_(scene.gravity()),
+          N_(scene.overburden() * kDepth) {}
+
+    void drive(const GroundStep& ground) {
+        SiconosVector& f = w_.forces();
+        const double masses[2] = {s_.m_lower * kDepth, s_.m_upper * kDepth};
+        for (int body = kLower; body <= (vssw_ ? kUpper : kLower); ++body) {
+            const unsigned i = 3u * static_cast<unsigned>(body);
+            f.setValue(i, -masses[body] * ground.a_h);
+            f.setValue(i + 1, -masses[body] * g_);
+            f.setValue(i + 2, 0.0);
+        }
     }
-    if (N > 0.0) {
-        const int top = vssw ? kUpper : kLower;
-        const unsigned i = 3u * static_cast<unsigned>(top);
-        const double half = vssw ? s.h_upper : s.h_lower;
-        const Vec2 r = rotated({0.0, half}, w.q().getValue(i + 2));
-        f.setValue(i + 1, f.getValue(i + 1) - N);
-        f.setValue(i + 2, -N * r.x);
+    void push_overburden() {
+        SiconosVector& f = w_.forces();
+        const unsigned i = 3u * static_cast<unsigned>(vssw_ ? kUpper : kLower);
+        const Vec2 r = rotated({0.0, vssw_ ? s_.h_upper : s_.h_lower}, w_.q().getValue(i + 2));
+        f.setValue(i + 1, f.getValue(i + 1) - N_);
+        f.setValue(i + 2, -N_ * r.x);
     }
-}
+    void step(const StepTimes&, const GroundStep&) { w_.step(); }
+    void check_step(double t) const {
+        if (t_solver_failures > 0)
+            throw EngineFailure(fmt::format("Siconos: the one-step contact problem was not solved at t = {:.6g} s", t));
+    }
+    WallState state(const GroundStep&) const { return {block_state(kLower), vssw_ ? block_state(kUpper) : kNoBlock}; }
+    Rocking rocking() const { return {-w_.q().getValue(2), -w_.v().getValue(2)}; }
+    void fill(TrajectorySample& p) const {
+        p.theta2 = vssw_ ? -w_.q().getValue(5) : 0.0;
+        auto kinetic = [&](int body, double m, double half_height) {
+            const unsigned i = 3u * static_cast<unsigned>(body);
+            const double inertia = m * (s_.b * s_.b + half_height * half_height) / 3.0;
+            return block_kinetic_energy(m, inertia, w_.v().getValue(i), w_.v().getValue(i + 1), w_.v().getValue(i + 2));
+        };
+        const double top_half = vssw_ ? s_.h_upper : s_.h_lower;
+        energy_.fill(p, {kinetic(kLower, s_.m_lower, s_.h_lower), vssw_ ? kinetic(kUpper, s_.m_upper, s_.h_upper) : 0.0,
+                         w_.q().getValue(1), vssw_ ? w_.q().getValue(4) : 0.0,
+                         w_.world_point(vssw_ ? kUpper : kLower, {0.0, top_half}).y});
+        p.contacts = w_.active_contacts();
+    }
+
+private:
+    BlockState block_state(int body) const {
+        const unsigned k = 3u * static_cast<unsigned>(body);
+        return BlockState{w_.q().getValue(k), w_.q().getValue(k + 1), -w_.q().getValue(k + 2),
+                          w_.v().getValue(k), w_.v().getValue(k + 1), -w_.v().getValue(k + 2)};
+    }
+
+    SiconosScene& w_;
+    WallEnergy energy_;
+    BlockSizes s_;
+    bool vssw_;
+    double g_, N_;
+};
 
 Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Siconos time step dt (s)", "a positive finite number",
@@ -393,66 +437,13 @@ Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex,
     require_one_description(scene);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
-    const BlockSizes s = block_sizes(scene);
-    const bool vssw = scene.is_vssw();
-    const double g = scene.gravity(), N = scene.overburden() * kDepth;
-    const int top = vssw ? kUpper : kLower;
-    const double top_half = vssw ? s.h_upper : s.h_lower;
-    const double h_total = s.h_lower + s.h_upper;
-    const double y_top0 = 2.0 * h_total, y_lower0 = s.h_lower, y_upper0 = 2.0 * s.h_lower + s.h_upper;
-
     t_solver_failures = 0;
-    Trajectory out;
     try {
         SiconosScene w(scene, knobs, ex.theta0, dt);
-        const long every = sample_every(settings, dt);
-        auto record = [&](double t) {
-            const double theta1 = -w.q().getValue(2), rate = -w.v().getValue(2);
-            if (ex.motion_only) {
-                out.samples.push_back(motion_sample(t, theta1, rate));
-                return;
-            }
-            TrajectorySample p{};
-            p.t = t;
-            p.theta1 = theta1;
-            p.theta1_dot = rate;
-            p.theta2 = vssw ? -w.q().getValue(5) : 0.0;
-            p.top_dy = w.world_point(top, {0.0, top_half}).y - y_top0;
-            auto kinetic = [&](int body, double m, double half_height) {
-                const unsigned i = 3u * static_cast<unsigned>(body);
-                const double vx = w.v().getValue(i), vy = w.v().getValue(i + 1), om = w.v().getValue(i + 2);
-                const double inertia = m * (s.b * s.b + half_height * half_height) / 3.0;
-                return 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * om * om;
-            };
-            p.kinetic = kinetic(kLower, s.m_lower, s.h_lower) + (vssw ? kinetic(kUpper, s.m_upper, s.h_upper) : 0.0);
-            p.potential = s.m_lower * g * (w.q().getValue(1) - y_lower0) +
-                          (vssw ? s.m_upper * g * (w.q().getValue(4) - y_upper0) : 0.0) + N / kDepth * p.top_dy;
-            p.contacts = w.active_contacts();
-            out.samples.push_back(p);
-        };
-
-        const long n_steps = std::lround(ex.t_end / dt);
-        record(0.0);
+        SiconosStepping stepping(w, scene);
         RunMonitor monitor("Siconos", scene, ex, dt, knobs.limits);
-        for (long i = 1; i <= n_steps; ++i) {
-            const double t0 = static_cast<double>(i - 1) * dt;
-            // The ground motion at the step's midpoint: its impulse over the step to second order.
-            set_loads(w, scene, s, ex.horizontal(t0 + 0.5 * dt));
-            w.step();
-            ++out.steps;
-            const double t = static_cast<double>(i) * dt;
-            if (t_solver_failures > 0)
-                throw EngineFailure(
-                    fmt::format("Siconos: the one-step contact problem was not solved at t = {:.6g} s", t));
-            auto state = [&](int body) {
-                const unsigned k = 3u * static_cast<unsigned>(body);
-                return BlockState{w.q().getValue(k), w.q().getValue(k + 1), -w.q().getValue(k + 2),
-                                  w.v().getValue(k), w.v().getValue(k + 1), -w.v().getValue(k + 2)};
-            };
-            const auto verdict = monitor.check(t, {state(kLower), vssw ? state(kUpper) : kNoBlock});
-            if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
-            if (RunMonitor::ends_run(verdict, out)) return out;
-        }
+        const StepLoop loop{dt, sample_every(settings, dt), false, scene.overburden() > 0.0};
+        return run_fixed_steps(stepping, ex, loop, monitor);
     } catch (const EngineFailure&) {
         throw;
     } catch (const InputError&) {
@@ -465,7 +456,6 @@ Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex,
     } catch (const std::exception& e) {
         throw EngineFailure(fmt::format("Siconos: {}", e.what()));
     }
-    return out;
 }
 
 }  // namespace

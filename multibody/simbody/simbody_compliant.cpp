@@ -51,9 +51,9 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/settings_reader.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -295,15 +295,12 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
     const double dt = settings.dt;
     const CompliantScene w(scene, ex, knobs);
     const BlockSizes s = block_sizes(scene);
-    const double g = scene.gravity(), r = knobs.radius;
-    const double N = scene.overburden() * kDepth;
-    const double h_total = s.h_lower + s.h_upper;
+    const double r = knobs.radius;
     const bool vssw = w.has_upper();
     const SimTK::MobilizedBody& lower = w.lower();
     const SimTK::MobilizedBody& upper = w.upper();
     // Rest positions: the analytic ones lifted by the spheres (r under the lower block, 2r under the upper one).
-    const WallBodies bodies{lower, upper, vssw, s, g, N, s.h_lower + r, 2.0 * s.h_lower + s.h_upper + 2.0 * r,
-                            2.0 * h_total + (vssw ? 2.0 : 1.0) * r};
+    const WallBodies bodies{lower, upper, vssw, s, WallEnergy(scene, kDepth, r)};
 
     const QuietStdout quiet;
     std::unique_ptr<SimTK::Integrator> integ;
@@ -338,6 +335,9 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
         out.samples.push_back(p);
     };
 
+    // Not the stepping kit's loop (multibody/kit/step_loop.hpp): the integrator picks its own steps and sees the
+    // ground motion (WallLoads) between reports, so there is no step to drive at its midpoint, no N to push per step
+    // (a force element), and out.steps is the integrator's count; the samples use the kit's energy sum (sample_of).
     const long n_reports = std::lround(ex.t_end / dt);
     record(0.0);
     // dt is the reporting interval: CPodes sees the ground motion between reports at steps of its own choosing.

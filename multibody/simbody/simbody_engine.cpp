@@ -43,9 +43,9 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/run_monitor.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -263,6 +263,66 @@ private:
     bool compliant_;
 };
 
+// The stepping kit's hooks (step_loop.hpp) on a SimbodyScene and its time stepper. N is a force element of the
+// scene (its WallLoads read the state), so the loop pushes none (StepLoop::overburden false); no moving supports.
+class SimbodyStepping {
+public:
+    SimbodyStepping(SimbodyScene& w, SimTK::SemiExplicitEulerTimeStepper& ts, const WallBodies& bodies,
+                    const Knobs& knobs)
+        : w_(w), ts_(ts), bodies_(bodies), knobs_(knobs) {}
+
+    void drive(const GroundStep& g) {
+        SimTK::State& st = ts_.updState();
+        StepInputs& in = w_.inputs();
+        in.a_h = g.a_h;
+        if (bodies_.vssw) {
+            // The roller guide whose corner is further out (both with both_guides).
+            const BlockSizes& s = bodies_.sizes;
+            w_.system().realize(st, SimTK::Stage::Position);
+            const SimTK::Vec3 right = world_point(bodies_.upper, st, s.b, s.h_upper);
+            const SimTK::Vec3 left = world_point(bodies_.upper, st, -s.b, s.h_upper);
+            const bool use_left = left_guide_binds(right[0], left[0], 0.0, s.b);
+            in.left_guide = knobs_.both_guides || use_left;
+            in.right_guide = knobs_.both_guides || !use_left;
+        }
+        st.invalidateAllCacheAtOrAbove(SimTK::Stage::Dynamics);  // the loads just changed
+    }
+    void push_overburden() {}
+    void step(const StepTimes& times, const GroundStep&) {
+        try {
+            ts_.stepTo(times.t);
+        } catch (const std::exception& e) {
+            throw EngineFailure(fmt::format("Simbody: {} at t = {:.6g} s", e.what(), times.t));
+        }
+    }
+    WallState state(const GroundStep&) const {
+        const SimTK::State& now = realized();
+        return {block_state(bodies_.lower, now), bodies_.vssw ? block_state(bodies_.upper, now) : kNoBlock};
+    }
+    Rocking rocking() const { return rocking_of(bodies_, realized()); }
+    void fill(TrajectorySample& p) const {
+        const SimTK::State& st = realized();
+        fill_sample(bodies_, st, p);
+        const SimTK::SimbodyMatterSubsystem& matter = w_.matter();
+        int contacts = 0;
+        for (SimTK::UnilateralContactIndex i(0); i < matter.getNumUnilateralContacts(); ++i)
+            if (matter.getUnilateralContact(i).isEnabled(st)) ++contacts;
+        p.contacts = contacts;
+    }
+
+private:
+    const SimTK::State& realized() const {
+        const SimTK::State& st = ts_.getState();
+        w_.system().realize(st, SimTK::Stage::Velocity);
+        return st;
+    }
+
+    SimbodyScene& w_;
+    SimTK::SemiExplicitEulerTimeStepper& ts_;
+    const WallBodies& bodies_;
+    const Knobs& knobs_;
+};
+
 Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
                                    const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0,
@@ -273,14 +333,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     SimbodyScene w(scene, ex.theta0);
-    const BlockSizes s = block_sizes(scene);
-    const double g = scene.gravity();
-    const double N = scene.overburden() * kDepth;
-    const double h_total = s.h_lower + s.h_upper;
-    const bool vssw = w.has_upper();
-    const SimTK::MobilizedBody& lower = w.lower();
-    const SimTK::MobilizedBody& upper = w.upper();
-    const WallBodies bodies{lower, upper, vssw, s, g, N, s.h_lower, 2.0 * s.h_lower + s.h_upper, 2.0 * h_total};
+    const WallBodies bodies{w.lower(), w.upper(), w.has_upper(), block_sizes(scene), WallEnergy(scene, kDepth)};
 
     const QuietStdout quiet;
     SimTK::SemiExplicitEulerTimeStepper ts(w.system());
@@ -293,60 +346,9 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
         static_cast<SimTK::SemiExplicitEulerTimeStepper::PositionProjectionMethod>(knobs.projection));
     ts.initialize(w.initial_state());
 
-    Trajectory out;
-    const long every = sample_every(settings, dt);
-    const SimTK::SimbodyMatterSubsystem& matter = w.matter();
-    auto record = [&](double t) {
-        const SimTK::State& st = ts.getState();
-        w.system().realize(st, SimTK::Stage::Velocity);
-        if (ex.motion_only) {
-            out.samples.push_back(motion_of(bodies, st, t));
-            return;
-        }
-        TrajectorySample p = sample_of(bodies, st, t);
-        int contacts = 0;
-        for (SimTK::UnilateralContactIndex i(0); i < matter.getNumUnilateralContacts(); ++i)
-            if (matter.getUnilateralContact(i).isEnabled(st)) ++contacts;
-        p.contacts = contacts;
-        out.samples.push_back(p);
-    };
-
-    const long n_steps = std::lround(ex.t_end / dt);
-    record(0.0);
+    SimbodyStepping stepping(w, ts, bodies, knobs);
     RunMonitor monitor("Simbody", scene, ex, dt, knobs.limits);
-    StepInputs& in = w.inputs();
-    for (long i = 1; i <= n_steps; ++i) {
-        const double t0 = static_cast<double>(i - 1) * dt;
-        const double t = static_cast<double>(i) * dt;
-        // The ground motion at the step's midpoint: its impulse over the step to second order.
-        const double a_h = ex.horizontal(t0 + 0.5 * dt);
-        SimTK::State& st = ts.updState();
-        in.a_h = a_h;
-        if (vssw) {
-            // The roller guide whose corner is further out (both with both_guides).
-            w.system().realize(st, SimTK::Stage::Position);
-            const SimTK::Vec3 right = world_point(upper, st, s.b, s.h_upper);
-            const SimTK::Vec3 left = world_point(upper, st, -s.b, s.h_upper);
-            const bool use_left = left_guide_binds(right[0], left[0], 0.0, s.b);
-            in.left_guide = knobs.both_guides || use_left;
-            in.right_guide = knobs.both_guides || !use_left;
-        }
-        st.invalidateAllCacheAtOrAbove(SimTK::Stage::Dynamics);  // the loads just changed
-        try {
-            ts.stepTo(t);
-        } catch (const std::exception& e) {
-            throw EngineFailure(fmt::format("Simbody: {} at t = {:.6g} s", e.what(), t));
-        }
-        ++out.steps;
-
-        const SimTK::State& now = ts.getState();
-        w.system().realize(now, SimTK::Stage::Velocity);
-        const auto verdict =
-            monitor.check(t, {block_state(lower, now), vssw ? block_state(upper, now) : kNoBlock});
-        if (RunMonitor::records(i, n_steps, every, verdict)) record(t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
-    }
-    return out;
+    return run_fixed_steps(stepping, ex, StepLoop{dt, sample_every(settings, dt), false, false}, monitor);
 }
 
 }  // namespace

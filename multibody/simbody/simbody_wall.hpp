@@ -9,8 +9,10 @@
 #include <utility>
 
 #include "multibody/engine.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/wall_parts.hpp"
+#include "multibody/kit/energy.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/step_loop.hpp"  // Rocking
+#include "multibody/kit/wall_parts.hpp"
 
 namespace vssw::multibody::simbody_wall {
 
@@ -68,42 +70,48 @@ inline BlockState block_state(const SimTK::MobilizedBody& body, const SimTK::Sta
     return {c[0], c[1], clockwise_angle(body, s), v[0], v[1], -body.getBodyAngularVelocity(s)[2]};
 }
 
-// The wall as a sampler of states: its bodies and the heights of its centres and top at rest (from which the
-// potential energy and the top's rise are counted).
+// The wall as a sampler of states: its bodies and its energy sum (the kit's, with the route's rest heights).
 struct WallBodies {
     SimTK::MobilizedBody lower, upper;
     bool vssw;
     BlockSizes sizes;
-    double g, N;                         // N in newtons for the scene's depth
-    double y_lower0, y_upper0, y_top0;  // [m] at rest
+    WallEnergy energy;
 };
+
+// The lower body's rotation and rate of a state realized to Velocity.
+inline Rocking rocking_of(const WallBodies& w, const SimTK::State& st) {
+    return {clockwise_angle(w.lower, st), -w.lower.getBodyAngularVelocity(st)[2]};
+}
 
 // The lower body's motion of a state realized to Velocity (Excitation::motion_only: the rest NaN).
 inline TrajectorySample motion_of(const WallBodies& w, const SimTK::State& st, double t) {
-    return motion_sample(t, clockwise_angle(w.lower, st), -w.lower.getBodyAngularVelocity(st)[2]);
+    const Rocking r = rocking_of(w, st);
+    return motion_sample(t, r.theta1, r.theta1_dot);
 }
 
-// The sample of a state realized to Velocity (contacts left to the route, which counts them its own way).
-inline TrajectorySample sample_of(const WallBodies& w, const SimTK::State& st, double t) {
+// The rest of a full sample of a state realized to Velocity (contacts left to the route, which counts them its own
+// way): theta2, the top's rise and the energy.
+inline void fill_sample(const WallBodies& w, const SimTK::State& st, TrajectorySample& p) {
     const BlockSizes& s = w.sizes;
     const SimTK::MobilizedBody& top_body = w.vssw ? w.upper : w.lower;
     const double top_half = w.vssw ? s.h_upper : s.h_lower;
-    TrajectorySample p = motion_of(w, st, t);
     p.theta2 = w.vssw ? clockwise_angle(w.upper, st) : 0.0;
-    p.top_dy = world_point(top_body, st, 0.0, top_half)[1] - w.y_top0;
     // Homogeneous blocks: I = m (b^2 + h^2) / 3 about the centre.
     auto kinetic = [&](const SimTK::MobilizedBody& body, double mass, double half_h) {
         const SimTK::Vec3 v = body.getBodyOriginVelocity(st);
-        const double wz = body.getBodyAngularVelocity(st)[2];
-        return 0.5 * mass * (v[0] * v[0] + v[1] * v[1]) + 0.5 * mass * (s.b * s.b + half_h * half_h) / 3.0 * wz * wz;
+        return block_kinetic_energy(mass, mass * (s.b * s.b + half_h * half_h) / 3.0, v[0], v[1],
+                                    body.getBodyAngularVelocity(st)[2]);
     };
-    p.kinetic = (kinetic(w.lower, s.m_lower * kDepth, s.h_lower) +
-                 (w.vssw ? kinetic(w.upper, s.m_upper * kDepth, s.h_upper) : 0.0)) /
-                kDepth;
-    p.potential = (s.m_lower * kDepth * w.g * (w.lower.getBodyOriginLocation(st)[1] - w.y_lower0) +
-                   (w.vssw ? s.m_upper * kDepth * w.g * (w.upper.getBodyOriginLocation(st)[1] - w.y_upper0) : 0.0) +
-                   w.N * p.top_dy) /
-                  kDepth;
+    w.energy.fill(p, {kinetic(w.lower, s.m_lower * kDepth, s.h_lower),
+                      w.vssw ? kinetic(w.upper, s.m_upper * kDepth, s.h_upper) : 0.0,
+                      w.lower.getBodyOriginLocation(st)[1], w.vssw ? w.upper.getBodyOriginLocation(st)[1] : 0.0,
+                      world_point(top_body, st, 0.0, top_half)[1]});
+}
+
+// The sample of a state realized to Velocity (contacts left to the route).
+inline TrajectorySample sample_of(const WallBodies& w, const SimTK::State& st, double t) {
+    TrajectorySample p = motion_of(w, st, t);
+    fill_sample(w, st, p);
     return p;
 }
 

@@ -317,7 +317,7 @@ def test_a_list_of_names_refuses_an_empty_list_an_empty_item_and_a_repeated_name
 
 
 def test_one_engine_that_fails_under_a_ground_motion_raises_as_in_free_vibration():
-    # A slide limit far below the contacts' jitter fails every run at once (multibody/run_monitor.cpp).
+    # A slide limit far below the contacts' jitter fails every run at once (multibody/kit/run_monitor.cpp).
     with pytest.raises(vssw.SimulationError, match="ode: .*slid"):
         vssw.compare("ode", **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5, settings={"slide_limit": 1e-12})
     several = vssw.compare(["ode"], **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5,

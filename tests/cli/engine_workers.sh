@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Engine workers (multibody/child_process.hpp) never outlive the program, and their output never repeats the
+# Engine workers (multibody/host/child_process.hpp) never outlive the program, and their output never repeats the
 # program's: a study whose runs take long (Simbody at a stiffness of 1e18, inside its range), its parent alone sent
 # SIGTERM, SIGINT or SIGKILL (as `kill PID`, a batch system or the OOM killer would), leaves no worker alive; and
 # `compare` of two engines written to a file gives one block per engine (each forked child once wrote a copy of the

@@ -29,7 +29,7 @@
 #include "study/metric_catalog.hpp"
 #include "study/spec.hpp"
 
-// Every backend the reader knows, as in a build with all of them (multibody/registry.cpp's list): the harness links
+// Every backend the reader knows, as in a build with all of them (multibody/host/registry.cpp's list): the harness links
 // no engine (registry.cpp would pull in every adapter and its library), and with all names available the reader's
 // paths for each engine's settings are reachable from any build. An engine missing from a real build is refused by
 // the same check with a shorter list.

@@ -1,7 +1,7 @@
 #pragma once
 // An engine library run in a child process of its own, one run at a time (docs/engines.md "Isolation"): a library that
 // aborts (ODE's assertions call abort()), segfaults or never returns costs one failed run, never the program, a study's
-// other rows or a Python interpreter that called it. Each run is forked (multibody/worker_process.hpp) with its CPU
+// other rows or a Python interpreter that called it. Each run is forked (multibody/host/worker_process.hpp) with its CPU
 // budget (run_budget.hpp) and its trajectory comes back through a pipe, to the last bit the one the library gave: the
 // results are those of the same run in the caller's process (tests/test_isolated_engine.cpp).
 //

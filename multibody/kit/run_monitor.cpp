@@ -1,4 +1,4 @@
-#include "multibody/run_monitor.hpp"
+#include "multibody/kit/run_monitor.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/scene_geometry.hpp"
-#include "multibody/step_resolution.hpp"
+#include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/step_resolution.hpp"
 
 namespace vssw::multibody {
 

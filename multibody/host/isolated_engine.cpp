@@ -1,4 +1,4 @@
-#include "multibody/isolated_engine.hpp"
+#include "multibody/host/isolated_engine.hpp"
 
 #include <cstdint>
 #include <cstring>
@@ -7,10 +7,10 @@
 #include <type_traits>
 #include <utility>
 
-#include "multibody/run_budget.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/step_resolution.hpp"
-#include "multibody/worker_process.hpp"
+#include "multibody/host/run_budget.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_resolution.hpp"
+#include "multibody/host/worker_process.hpp"
 
 namespace vssw::multibody {
 namespace {

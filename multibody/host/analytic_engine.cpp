@@ -1,6 +1,6 @@
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/settings_reader.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "multibody/plugin_file_check.hpp"
+#include "multibody/host/plugin_file_check.hpp"
 
 #include <fcntl.h>
 #include <link.h>  // ElfW: the ELF types of this machine's class

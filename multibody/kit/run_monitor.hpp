@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "multibody/engine.hpp"
-#include "multibody/settings_reader.hpp"
-#include "multibody/step_resolution.hpp"  // kMaxStepsPerRun, require_step_resolves
-#include "multibody/wall_parts.hpp"
+#include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_resolution.hpp"  // kMaxStepsPerRun, require_step_resolves
+#include "multibody/kit/wall_parts.hpp"
 
 namespace vssw::multibody {
 

@@ -1,4 +1,4 @@
-#include "multibody/contact_schemes.hpp"
+#include "multibody/host/contact_schemes.hpp"
 
 #include <algorithm>
 #include <cstddef>

@@ -1,4 +1,4 @@
-#include "multibody/child_process.hpp"
+#include "multibody/host/child_process.hpp"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -1,4 +1,4 @@
-#include "multibody/settings_reader.hpp"
+#include "multibody/kit/settings_reader.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "multibody/run_budget.hpp"
+#include "multibody/host/run_budget.hpp"
 
 #include <atomic>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 #include <cmath>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "multibody/step_resolution.hpp"
+#include "multibody/kit/step_resolution.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::multibody {
 namespace {

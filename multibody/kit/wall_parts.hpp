@@ -16,7 +16,7 @@
 #include <string>
 
 #include "multibody/engine.hpp"
-#include "multibody/scene_geometry.hpp"
+#include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::multibody {
 

@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/analytic_engine.hpp"
+#include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/engine_plugin.hpp"
-#include "multibody/isolated_engine.hpp"
-#include "multibody/plugin_loader.hpp"
-#include "multibody/registry.hpp"
+#include "multibody/host/isolated_engine.hpp"
+#include "multibody/host/plugin_loader.hpp"
+#include "multibody/host/registry.hpp"
 #include "vssw_engine_facts.hpp"  // kEngineFacts (generated: cmake/engines.cmake)
 
 namespace vssw::multibody {

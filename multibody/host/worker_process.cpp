@@ -1,4 +1,4 @@
-#include "multibody/worker_process.hpp"
+#include "multibody/host/worker_process.hpp"
 
 #include <sys/resource.h>
 
@@ -14,7 +14,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/child_process.hpp"
+#include "multibody/host/child_process.hpp"
 
 namespace vssw::multibody {
 namespace {

@@ -1,4 +1,4 @@
-#include "multibody/wall_parts.hpp"
+#include "multibody/kit/wall_parts.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "multibody/plugin_loader.hpp"
+#include "multibody/host/plugin_loader.hpp"
 
 #include <dlfcn.h>
 #include <link.h>
@@ -16,7 +16,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
-#include "multibody/plugin_file_check.hpp"
+#include "multibody/host/plugin_file_check.hpp"
 #include "vssw_build_id.hpp"  // VSSW_BUILD_ID (the top CMakeLists.txt)
 
 // Fixed at build time (multibody/CMakeLists.txt): the build tree, its plugins folder, the installed plugins folder
