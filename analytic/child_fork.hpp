@@ -10,7 +10,7 @@
 //    ignored, and a fault's handler stays, a sanitizer's report): a handler of the parent's that only sets a flag
 //    (Python's SIGINT) would keep the child running;
 //  - the parent keeps the children it has not reaped, so that its signal handling ends them before it ends
-//    (apps/signal_cleanup.hpp).
+//    (cli/signal_cleanup.hpp).
 // What stays the caller's: what the child runs (a child of a multi-threaded parent holds only the forking thread;
 // multibody/host/child_process.hpp) and how it ends (_exit or exec).
 #include <sys/types.h>
@@ -25,7 +25,7 @@ pid_t fork_child();
 int wait_child(pid_t pid);
 
 // Sends SIGKILL to every child made by fork_child not reaped yet, and keeps any other from being reaped or forked:
-// for a process about to end (the signal handling of apps/signal_cleanup.cpp). A thread waiting for its child then
+// for a process about to end (the signal handling of cli/signal_cleanup.cpp). A thread waiting for its child then
 // never returns, so that no killed run is reported as failed by a process already ending.
 void kill_children_before_exit();
 

@@ -19,24 +19,24 @@ int main(int argc, char** argv) {
     using namespace vssw;
     try {
         const std::string suite_name = argc > 1 ? argv[1] : "default";
-        compare::RunOptions run;
+        validation::RunOptions run;
         run.threads = argc > 2 ? std::atoi(argv[2]) : 0;
         run.keep_traces = true;  // as `vssw report`
         std::vector<std::string> engines;
         for (int i = 3; i < argc; ++i) engines.emplace_back(argv[i]);
         if (engines.empty()) engines = multibody::default_compared_engines();
-        const compare::Suite suite = study::read_suite(suite_name, VSSW_DATA_DIR);
-        const compare::SuiteResults r = compare::run_suite(suite, engines, run);
+        const validation::Suite suite = validation::read_suite(suite_name, VSSW_DATA_DIR);
+        const validation::SuiteResults r = validation::run_suite(suite, engines, run);
 
         std::map<std::pair<std::string, std::string>, std::pair<double, int>> by;  // (kind, engine) -> (cpu, tasks)
         std::map<std::string, double> per_engine, per_kind;
         double total = 0.0;
-        for (const compare::TaskTime& t : r.task_times) {
-            auto& cell = by[{compare::to_string(t.kind), t.engine}];
+        for (const validation::TaskTime& t : r.task_times) {
+            auto& cell = by[{validation::to_string(t.kind), t.engine}];
             cell.first += t.cpu_s;
             ++cell.second;
             per_engine[t.engine] += t.cpu_s;
-            per_kind[compare::to_string(t.kind)] += t.cpu_s;
+            per_kind[validation::to_string(t.kind)] += t.cpu_s;
             total += t.cpu_s;
         }
         fmt::print("suite {}: {} tasks, wall {:.2f} s on {} threads, task CPU {:.2f} s\n\n", suite.name,

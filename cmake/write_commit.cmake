@@ -1,4 +1,4 @@
-# Run at every build (apps/CMakeLists.txt): writes the checkout's commit, with "+changes" when a tracked file differs
+# Run at every build (cli/CMakeLists.txt): writes the checkout's commit, with "+changes" when a tracked file differs
 # from it (untracked files do not count), into OUT as a C++ header. The file is rewritten only when that text changes, so nothing rebuilds otherwise.
 execute_process(COMMAND git rev-parse --short HEAD WORKING_DIRECTORY "${SOURCE_DIR}"
                 OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE failed)

@@ -34,7 +34,7 @@ constexpr double kPointedTolerance = 1e-6;
 constexpr int kGuidedTrials = 6;
 
 // Before anything reads scene.alpha() or scene.gravity(), which assume one description is set.
-void require_scene(const WallScene& scene) {
+void require_scene(const multibody::WallScene& scene) {
     if (scene.vssw.has_value() == scene.parapet.has_value())
         throw InputError("a wall scene must hold exactly one description (a VSSW or a parapet wall)");
 }
@@ -64,7 +64,7 @@ namespace {
 struct DepartureFromRest {
     double q2, k;
 
-    static DepartureFromRest of(const WallScene& scene) {
+    static DepartureFromRest of(const multibody::WallScene& scene) {
         const auto model = analytic_model(scene, Kinematics::exact);
         const double alpha = model->reference_angle();
         const double a_c = model->rest_threshold(0.0);
@@ -116,7 +116,7 @@ struct DepartureFromRest {
 
 }  // namespace
 
-double threshold_hold_time(const WallScene& scene, const ThresholdOptions& o) {
+double threshold_hold_time(const multibody::WallScene& scene, const ThresholdOptions& o) {
     require(o.rel_tol > 0.0 && o.rel_tol < 0.1, "threshold relative tolerance", "in (0, 0.1)", o.rel_tol);
     require(o.lift_angle > 0.0 && o.lift_angle < 1.0, "lift angle (units of alpha)", "in (0, 1)", o.lift_angle);
     require(o.detectable_excess > 0.0 && o.detectable_excess <= 1.0, "detectable excess (fraction of rel_tol)",
@@ -127,7 +127,7 @@ double threshold_hold_time(const WallScene& scene, const ThresholdOptions& o) {
     return o.hold_margin * departure.time_to(o.lift_angle * scene.alpha(), o.detectable_excess * o.rel_tol);
 }
 
-ThresholdResult find_threshold(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+ThresholdResult find_threshold(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                const ThresholdOptions& o) {
     require_scene(scene);
     require(std::isfinite(o.ramp_time) && o.ramp_time > 0.0, "ramp time", "a positive finite time in s", o.ramp_time);
@@ -142,7 +142,7 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
     const double estimate_g = analytic_model(scene, Kinematics::exact)->rest_threshold(0.0) / g;
     const double cap_g = o.max_over_estimate * estimate_g;
 
-    EngineSettings trial_settings = settings;
+    multibody::EngineSettings trial_settings = settings;
     trial_settings.sample_dt = std::max(settings.sample_dt, o.sample_dt);
     ThresholdResult result{kNaN, 0.0, kNaN, 0, hold};
     const DepartureFromRest departure = DepartureFromRest::of(scene);
@@ -158,7 +158,7 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
         ex.stop_angle = lift;  // the trial's question is answered once the wall has lifted
         ex.motion_only = true;  // whether it lifted is read from theta1 alone
         ++result.trials;
-        const Trajectory traj = engine.simulate(scene, ex, trial_settings);
+        const multibody::Trajectory traj = engine.simulate(scene, ex, trial_settings);
         if (!lifted(traj, lift)) return false;
         pointed_g = traj.samples.empty() ? kNaN
                                          : departure.threshold_for(lift, traj.samples.back().t, a_g, o.ramp_time);
@@ -228,7 +228,7 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
     return result;
 }
 
-double free_vibration_duration(const WallScene& scene, double theta0, int impacts) {
+double free_vibration_duration(const multibody::WallScene& scene, double theta0, int impacts) {
     require(impacts >= 1, "impacts to show", ">= 1", impacts);
     const auto model = analytic_model(scene, Kinematics::exact);
     SimulationOptions opt;
@@ -239,7 +239,7 @@ double free_vibration_duration(const WallScene& scene, double theta0, int impact
     return 1.25 * r.t_final;
 }
 
-FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+FreeVibrationResult run_free_vibration(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                        const FreeVibrationOptions& o) {
     require_scene(scene);
     require(std::isfinite(o.r) && o.r > 0.0, "release angle r (units of alpha)", "a positive finite number", o.r);
@@ -272,7 +272,7 @@ FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSetting
     return out;
 }
 
-void require_threshold_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+void require_threshold_steps(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                              const ThresholdOptions& o) {
     if (engine.name() == "analytic") return;
     multibody::Excitation ex;  // a trial (find_threshold): its amplitude sets no time scale
@@ -283,7 +283,7 @@ void require_threshold_steps(const Engine& engine, const EngineSettings& setting
                                      !engine.dt_is_a_reporting_interval());
 }
 
-void require_free_vibration_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+void require_free_vibration_steps(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                   const FreeVibrationOptions& o) {
     require(std::isfinite(o.r) && o.r > 0.0, "release angle r (units of alpha)", "a positive finite number", o.r);
     if (engine.name() == "analytic") return;
@@ -294,7 +294,7 @@ void require_free_vibration_steps(const Engine& engine, const EngineSettings& se
                                      !engine.dt_is_a_reporting_interval());
 }
 
-void require_comparison_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene, double r,
+void require_comparison_steps(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene, double r,
                               const ComparisonOptions& options) {
     FreeVibrationOptions free = options.free;
     free.r = r;
@@ -304,13 +304,13 @@ void require_comparison_steps(const Engine& engine, const EngineSettings& settin
 
 MetricComparison compare_metric(double analytic, double engine) { return {analytic, engine, engine / analytic - 1.0}; }
 
-EngineSettings analytic_reference_settings() {
+multibody::EngineSettings analytic_reference_settings() {
     return multibody::AnalyticEngine().default_settings();  // exact kinematics, output every 1e-4 s
 }
 
-FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const EngineSettings& settings,
-                                                     const WallScene& scene, const FreeVibrationOptions& options,
-                                                     const EngineSettings& reference) {
+FreeVibrationComparison free_vibration_with_analytic(const multibody::Engine& engine, const multibody::EngineSettings& settings,
+                                                     const multibody::WallScene& scene, const FreeVibrationOptions& options,
+                                                     const multibody::EngineSettings& reference) {
     require_scene(scene);
     const multibody::AnalyticEngine analytic;
     FreeVibrationOptions free = options;
@@ -333,7 +333,7 @@ double first_amplitude(const FreeVibrationResult& f) {
 
 }  // namespace
 
-EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+EngineComparison compare_with_analytic(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                        double r, const ComparisonOptions& options) {
     require_scene(scene);
     require_comparison_steps(engine, settings, scene, r, options);

@@ -12,9 +12,6 @@
 
 namespace vssw::compare {
 
-using multibody::Engine;
-using multibody::EngineSettings;
-using multibody::WallScene;
 
 // Threshold ----------------------------------------------------------------------------------------------------
 //
@@ -88,10 +85,10 @@ struct ThresholdResult {
 // Ground motion of one trial: the smooth ramp to `amplitude` [m/s^2] over ramp_time, then held for hold_time.
 GroundMotion ramp_and_hold(double amplitude, double ramp_time, double hold_time);
 // The hold of the reasoning above, for a scene.
-double threshold_hold_time(const WallScene& scene, const ThresholdOptions& options = {});
+double threshold_hold_time(const multibody::WallScene& scene, const ThresholdOptions& options = {});
 // Smallest constant horizontal ground acceleration that lifts the wall off rest, by bisection on trials. An
 // EngineFailure from a trial propagates.
-ThresholdResult find_threshold(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+ThresholdResult find_threshold(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                const ThresholdOptions& options = {});
 
 // Free vibration -----------------------------------------------------------------------------------------------
@@ -99,7 +96,7 @@ ThresholdResult find_threshold(const Engine& engine, const EngineSettings& setti
 // How long a run from rest goes on after its pulse or record ends (it stops earlier at rest or when the wall
 // overturns) [s]: the wall may keep rocking after the shaking. One question with two answers, kept apart on purpose:
 // each is the one its outputs were measured with, and changing either changes those runs. A case carries the one it
-// runs with (study::CaseSpec::response_tail, compare::SuiteCase::response_tail); a study or suite file's
+// runs with (study::CaseSpec::response_tail, validation::SuiteCase::response_tail); a study or suite file's
 // [excitation] response_tail (pulse, record, scale-to-collapse) replaces these defaults for its part:
 //  - kResponseTail: studies, `vssw compare --record/--pulse` and `vssw history` (its default end), so that a study's
 //    peaks are `vssw history`'s;
@@ -141,17 +138,17 @@ struct FreeVibrationResult {
 // Duration that shows `impacts` impacts of the analytic model (exact kinematics) released at theta0: 1.25 times
 // the time of that impact (a quarter of the last half-cycle and more, so the peak after it is in the run), or 1.25
 // times the time the wall comes to rest if it stops before.
-double free_vibration_duration(const WallScene& scene, double theta0, int impacts);
-FreeVibrationResult run_free_vibration(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+double free_vibration_duration(const multibody::WallScene& scene, double theta0, int impacts);
+FreeVibrationResult run_free_vibration(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                        const FreeVibrationOptions& options = {});
 
 // Whether the engine's step can serve find_threshold's trials and run_free_vibration's run as they will be run
 // (multibody::require_step_resolves: at most kMaxStepsPerRun steps, fine enough for the wall and a trial's ramp):
 // InputError naming dt otherwise. Callers check it for every engine before the first runs; the analytic model, whose
 // dt is its sampling only, passes.
-void require_threshold_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+void require_threshold_steps(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                              const ThresholdOptions& options = {});
-void require_free_vibration_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+void require_free_vibration_steps(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                   const FreeVibrationOptions& options = {});
 
 // Comparison with the analytic model ---------------------------------------------------------------------------
@@ -168,7 +165,7 @@ MetricComparison compare_metric(double analytic, double engine);
 // (restitution, Fig. 6 VSSW) of the model's events, 400 times below the tightest target; they are the values of the
 // analytic model's own rows in the validation suite. The same for every engine: it does not depend on the engine's
 // step or settings.
-EngineSettings analytic_reference_settings();
+multibody::EngineSettings analytic_reference_settings();
 
 struct ComparisonOptions {
     ThresholdOptions threshold;
@@ -176,7 +173,7 @@ struct ComparisonOptions {
     // The analytic reference's settings (independent of the engine's step): its model's knobs (kinematics, impact
     // law, roller: multibody::analytic_settings) and output interval. Default: exact kinematics, Eq. (19), the
     // bilateral roller, every 1e-4 s.
-    EngineSettings reference = analytic_reference_settings();
+    multibody::EngineSettings reference = analytic_reference_settings();
 };
 
 struct EngineComparison {
@@ -205,16 +202,16 @@ struct EngineComparison {
 struct FreeVibrationComparison {
     FreeVibrationResult analytic, engine;
 };
-FreeVibrationComparison free_vibration_with_analytic(const Engine& engine, const EngineSettings& settings,
-                                                     const WallScene& scene, const FreeVibrationOptions& options,
-                                                     const EngineSettings& reference);
+FreeVibrationComparison free_vibration_with_analytic(const multibody::Engine& engine, const multibody::EngineSettings& settings,
+                                                     const multibody::WallScene& scene, const FreeVibrationOptions& options,
+                                                     const multibody::EngineSettings& reference);
 
 // The engine against AnalyticEngine at options.reference (exact kinematics unless it says otherwise), both measured
 // by the code above, both free vibrations run for the same time. require_comparison_steps first.
-EngineComparison compare_with_analytic(const Engine& engine, const EngineSettings& settings, const WallScene& scene,
+EngineComparison compare_with_analytic(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene,
                                        double r, const ComparisonOptions& options = {});
 // require_threshold_steps and require_free_vibration_steps for compare_with_analytic's runs.
-void require_comparison_steps(const Engine& engine, const EngineSettings& settings, const WallScene& scene, double r,
+void require_comparison_steps(const multibody::Engine& engine, const multibody::EngineSettings& settings, const multibody::WallScene& scene, double r,
                               const ComparisonOptions& options = {});
 
 }  // namespace vssw::compare

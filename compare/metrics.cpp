@@ -99,7 +99,7 @@ std::optional<Peak> parabola_vertex(const TrajectorySample& a, const TrajectoryS
 
 }  // namespace
 
-std::vector<ImpactMetric> impacts(const Trajectory& traj, int skip, double noise_angle) {
+std::vector<ImpactMetric> impacts(const multibody::Trajectory& traj, int skip, double noise_angle) {
     require(skip >= 0, "impact window (samples skipped each side)", ">= 0", skip);
     require(noise_angle >= 0.0 && std::isfinite(noise_angle), "noise angle", "a finite angle >= 0 rad", noise_angle);
     const auto& s = traj.samples;
@@ -123,7 +123,7 @@ std::vector<ImpactMetric> impacts(const Trajectory& traj, int skip, double noise
     return out;
 }
 
-std::vector<Peak> peaks(const Trajectory& traj, double noise_angle) {
+std::vector<Peak> peaks(const multibody::Trajectory& traj, double noise_angle) {
     require(noise_angle >= 0.0 && std::isfinite(noise_angle), "noise angle", "a finite angle >= 0 rad", noise_angle);
     const auto& s = traj.samples;
     const std::size_t n = s.size();
@@ -157,7 +157,7 @@ std::vector<Peak> peaks(const Trajectory& traj, double noise_angle) {
     return out;
 }
 
-std::optional<double> quarter_period(const Trajectory& traj) {
+std::optional<double> quarter_period(const multibody::Trajectory& traj) {
     if (traj.samples.empty() || traj.samples.front().theta1 == 0.0) return std::nullopt;
     // Only the crossing time is used, which does not depend on the window.
     const std::vector<ImpactMetric> list = impacts(traj, 0);
@@ -171,15 +171,15 @@ std::vector<double> half_cycles(const std::vector<ImpactMetric>& list) {
     return out;
 }
 
-std::vector<double> half_cycles(const Trajectory& traj) { return half_cycles(impacts(traj, 0)); }
+std::vector<double> half_cycles(const multibody::Trajectory& traj) { return half_cycles(impacts(traj, 0)); }
 
-double max_abs_theta(const Trajectory& traj) {
+double max_abs_theta(const multibody::Trajectory& traj) {
     double m = 0.0;
     for (const auto& s : traj.samples) m = std::max(m, std::abs(s.theta1));
     return m;
 }
 
-bool lifted(const Trajectory& traj, double angle) { return traj.overturned || max_abs_theta(traj) >= angle; }
+bool lifted(const multibody::Trajectory& traj, double angle) { return traj.overturned || max_abs_theta(traj) >= angle; }
 
 std::vector<AmplitudeRestitution> amplitude_restitution(const RockingModel& model, const VsswGeometry* vssw,
                                                         const std::vector<ImpactMetric>& list,

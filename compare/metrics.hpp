@@ -28,7 +28,6 @@
 
 namespace vssw::compare {
 
-using multibody::Trajectory;
 
 // Samples left out on each side of a crossing when reading the velocities either side of an impact. An engine
 // spreads an impact over a few steps (a compliant contact over its contact time, an LCP solver over its iterations),
@@ -53,7 +52,7 @@ struct ImpactMetric {
 // noise_angle (>= 0, rad): hysteresis for an engine's jitter at rest. A crossing counts only once |theta1| has
 // exceeded noise_angle on the new side, after exceeding it on the old one; it is placed at the last sign change
 // before that. 0 (the default) counts every sign change.
-std::vector<ImpactMetric> impacts(const Trajectory& traj, int skip = kDefaultImpactSkip, double noise_angle = 0.0);
+std::vector<ImpactMetric> impacts(const multibody::Trajectory& traj, int skip = kDefaultImpactSkip, double noise_angle = 0.0);
 
 struct Peak {
     double t, theta;  // time [s] and theta1 [rad] (signed) of a turning point
@@ -63,18 +62,18 @@ struct Peak {
 // and theta are the vertex of the parabola through the sample of largest |theta1| and its two neighbours (the
 // sample itself where the neighbours are not all in the same flight). A run starting with theta1 != 0 and
 // theta1_dot == 0 (a release from rest) has the release as its first peak.
-std::vector<Peak> peaks(const Trajectory& traj, double noise_angle = 0.0);
+std::vector<Peak> peaks(const multibody::Trajectory& traj, double noise_angle = 0.0);
 
 // Time from the release (the first sample, theta1 != 0) to the first impact: a quarter period in free vibration.
 // nullopt when the run does not start away from theta1 = 0 or has no impact.
-std::optional<double> quarter_period(const Trajectory& traj);
+std::optional<double> quarter_period(const multibody::Trajectory& traj);
 // Times between successive impacts (half-cycles of the rocking), from the impact list or from the trajectory.
 std::vector<double> half_cycles(const std::vector<ImpactMetric>& impacts);
-std::vector<double> half_cycles(const Trajectory& traj);
+std::vector<double> half_cycles(const multibody::Trajectory& traj);
 
 // Largest |theta1| sampled; lifted(): it reached `angle` [rad] (or the run reports the wall overturned).
-double max_abs_theta(const Trajectory& traj);
-bool lifted(const Trajectory& traj, double angle);
+double max_abs_theta(const multibody::Trajectory& traj);
+bool lifted(const multibody::Trajectory& traj, double angle);
 
 // Restitution from the turning points either side of an impact (free vibration only: it assumes energy is conserved
 // in flight).

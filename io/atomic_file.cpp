@@ -11,7 +11,7 @@
 #include "analytic/error.hpp"
 #include "io/temp_registry.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 namespace fs = std::filesystem;
 namespace {
 
@@ -28,7 +28,7 @@ AtomicFile::AtomicFile(fs::path target) : target_(std::move(target)) {
     std::error_code ec;
     if (fs::is_directory(target_, ec))
         throw InputError(fmt::format("cannot write the output file '{}': it is a folder", target_.string()));
-    register_temp(temp_);  // before it exists: SIGINT/SIGTERM remove it (apps/signal_cleanup.hpp)
+    register_temp(temp_);  // before it exists: SIGINT/SIGTERM remove it (cli/signal_cleanup.hpp)
     out_.open(temp_, std::ios::binary | std::ios::trunc);
     if (!out_) {
         unregister_temp(temp_);
@@ -62,4 +62,4 @@ void write_file(const fs::path& target, const std::function<void(std::ostream&)>
     f.commit();
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-namespace vssw::study {
+namespace vssw::io {
 
 class AtomicFile {
 public:
@@ -33,4 +33,4 @@ private:
 // cannot be written; the target is then as it was).
 void write_file(const std::filesystem::path& target, const std::function<void(std::ostream&)>& write);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -13,7 +13,7 @@
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 namespace {
 
 using nlohmann::json;
@@ -98,4 +98,4 @@ json read_config_file(const std::string& path, const std::string& what) {
     return parse_config(read_input_file(path, what, kMaxTextFileBytes), format, path, what);
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace vssw::study {
+namespace vssw::io {
 
 // The deepest nesting of arrays and objects a configuration may have. The schemas need 4; 256 is toml++'s own limit
 // for TOML (TOML_MAX_NESTED_VALUES), so both formats refuse the same. Without a limit, a value nested some 10^5 deep
@@ -25,4 +25,4 @@ nlohmann::json parse_config(const std::string& text, const std::string& format, 
 // config_format + reading the file + parse_config.
 nlohmann::json read_config_file(const std::string& path, const std::string& what);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -6,7 +6,7 @@
 
 #include "analytic/error.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 
 std::string csv_field(const std::string& text) {
     if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
@@ -57,4 +57,4 @@ bool read_csv_record(std::istream& in, std::vector<std::string>& fields) {
     return true;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

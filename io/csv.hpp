@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace vssw::study {
+namespace vssw::io {
 
 std::string csv_field(const std::string& text);
 // A number with 17 significant digits (it reads back to the same double); empty for NaN or infinity.
@@ -14,4 +14,4 @@ std::string csv_number(double value);
 // InputError on an unterminated quote.
 bool read_csv_record(std::istream& in, std::vector<std::string>& fields);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -4,7 +4,7 @@
 #include <map>
 #include <utility>
 
-namespace vssw::study {
+namespace vssw::io {
 
 DocBlock heading(int level, std::string text) {
     DocBlock b;
@@ -67,4 +67,4 @@ std::vector<std::string> heading_anchors(const Document& doc) {
     return anchors;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace vssw::study {
+namespace vssw::io {
 
 struct DocCell {
     DocCell(std::string text_ = {}, bool flagged_ = false) : text(std::move(text_)), flagged(flagged_) {}
@@ -53,4 +53,4 @@ DocBlock contents();
 // Markdown's links agree.
 std::vector<std::string> heading_anchors(const Document& doc);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <vector>
 
-namespace vssw::study {
+namespace vssw::io {
 namespace {
 
 const char* const kStyle = R"(
@@ -169,4 +169,4 @@ void write_html(std::ostream& out, const Document& doc, const std::filesystem::p
     out << "</body>\n</html>\n";
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -7,10 +7,10 @@
 
 #include "io/document.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 
 void write_html(std::ostream& out, const Document& doc, const std::filesystem::path& plots_dir);
 // Text for HTML: & < > " escaped.
 std::string html_escape(const std::string& text);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

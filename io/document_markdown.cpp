@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace vssw::study {
+namespace vssw::io {
 namespace {
 
 // Text shown as text by every Markdown renderer, whatever it holds: '<', '>' and '&' as HTML entities (CommonMark
@@ -92,4 +92,4 @@ void write_markdown(std::ostream& out, const Document& doc) {
     }
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -4,8 +4,8 @@
 
 #include "io/document.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 
 void write_markdown(std::ostream& out, const Document& doc);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

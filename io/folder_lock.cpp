@@ -15,7 +15,7 @@
 #include "analytic/error.hpp"
 #include "io/temp_registry.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 namespace {
 
 // Tries to take the lock: another process may lock the file, then remove it as it lets go, between our open and our
@@ -66,7 +66,7 @@ FolderLock::FolderLock(const std::filesystem::path& dir) {
     }
     const fs::path path = path_;
     for (int attempt = 0; attempt < kLockTries; ++attempt) {
-        register_temp(path);  // before it exists: SIGINT/SIGTERM remove it (apps/signal_cleanup.hpp)
+        register_temp(path);  // before it exists: SIGINT/SIGTERM remove it (cli/signal_cleanup.hpp)
         // O_CLOEXEC: gnuplot and other programs run by vssw do not inherit the lock.
         const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
         if (fd < 0) {
@@ -146,4 +146,4 @@ FolderLock& FolderLock::operator=(FolderLock&& other) noexcept {
     return *this;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

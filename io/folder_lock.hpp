@@ -12,7 +12,7 @@
 // their own.
 #include <filesystem>
 
-namespace vssw::study {
+namespace vssw::io {
 
 constexpr const char* kLockSuffix = ".vssw-lock";
 // The name of the lock file in a folder of older versions (DIR/.vssw-lock): vssw's own, never carried over.
@@ -43,4 +43,4 @@ private:
     std::filesystem::path made_;  // the outermost folder made for it, or empty
 };
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -17,7 +17,7 @@
 #include "io/folder_lock.hpp"
 #include "io/temp_registry.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 namespace fs = std::filesystem;
 namespace {
 
@@ -239,7 +239,7 @@ void check_inputs_not_outputs(const fs::path& dir, OutKind kind,
 
 StagedFolder::StagedFolder(const fs::path& dir, OutKind kind)
     : dir_(dir), target_(resolve_out(dir)), staging_(staging_path(target_)), kind_(kind) {
-    register_temp(staging_);  // before it exists: SIGINT/SIGTERM remove it (apps/signal_cleanup.hpp)
+    register_temp(staging_);  // before it exists: SIGINT/SIGTERM remove it (cli/signal_cleanup.hpp)
     std::error_code ec;
     fs::remove_all(staging_, ec);  // a leftover of a killed run that had this process id
 }
@@ -323,4 +323,4 @@ void StagedFolder::commit() {
     fs::remove_all(aside, ec);
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

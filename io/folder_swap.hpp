@@ -16,7 +16,7 @@
 
 #include "io/folder_lock.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 
 // Which command writes the folder: it decides which names are its own (replaced) and which another's (refused).
 enum class OutKind { study, report, bench, stress, motions };
@@ -63,4 +63,4 @@ private:
     bool committed_ = false;
 };
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -21,7 +21,7 @@
 #include "io/atomic_file.hpp"
 #include "io/document_html.hpp"  // html_escape
 
-namespace vssw::study {
+namespace vssw::io {
 namespace fs = std::filesystem;
 namespace {
 
@@ -272,4 +272,4 @@ std::vector<DocBlock> plot_blocks(const PlotResult& plots) {
     return blocks;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -10,7 +10,7 @@
 
 #include "io/document.hpp"
 
-namespace vssw::study {
+namespace vssw::io {
 
 struct Plot {
     std::string section;  // the heading it appears under in a document ("Error against step size")
@@ -89,4 +89,4 @@ std::string gp_number(double v, bool positive_only = false);
 // The plots that were made, grouped under a level-3 heading per section in the order sections first appear.
 std::vector<DocBlock> plot_blocks(const PlotResult& plots);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace vssw::study {
+namespace vssw::io {
 
 using Json = nlohmann::ordered_json;
 
@@ -23,4 +23,4 @@ inline Json or_null(const std::optional<double>& value) { return value ? Json(*v
 // A number, or null when it is NaN or infinite (JSON has neither; a metric that could not be measured is NaN).
 inline Json finite_or_null(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -10,7 +10,7 @@
 
 #include "vssw_engine_facts.hpp"  // each engine's colour and marker (generated: cmake/engines.cmake)
 
-namespace vssw::study {
+namespace vssw::io {
 namespace {
 
 // Each engine's colour and marker are facts of its folder (multibody/<engine>/engine.cmake, generated into
@@ -65,4 +65,4 @@ std::vector<std::size_t> series_variants(const std::vector<std::string>& engines
     return variants;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

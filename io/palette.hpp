@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace vssw::study {
+namespace vssw::io {
 
 // "#rrggbb" for gnuplot's `lc rgb`.
 std::string engine_colour(const std::string& engine);
@@ -24,4 +24,4 @@ std::string series_style(const std::string& engine, std::size_t variant);
 // The variant of each series of these engines (one name per series): 0 for an engine's first, 1 for its second ...
 std::vector<std::size_t> series_variants(const std::vector<std::string>& engines);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

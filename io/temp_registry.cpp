@@ -5,7 +5,7 @@
 #include <system_error>
 #include <utility>
 
-namespace vssw::study {
+namespace vssw::io {
 namespace {
 
 // Never destroyed: a signal arriving while the program exits still finds them whole.
@@ -46,4 +46,4 @@ TempRegistration::TempRegistration(std::filesystem::path path) : path_(std::move
 
 TempRegistration::~TempRegistration() { unregister_temp(path_); }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

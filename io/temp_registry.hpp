@@ -1,12 +1,12 @@
 #pragma once
 // The temporary files and folders vssw has open at a given moment (AtomicFile's ".NAME.vssw-tmp-PID-N", a results
 // folder's staging copy ".NAME.vssw-tmp-PID"), so that a program ended by SIGINT, SIGTERM or SIGHUP can remove them
-// before it dies (apps/signal_cleanup.hpp). Registering costs a mutex and a set insertion: nothing beside writing a file.
+// before it dies (cli/signal_cleanup.hpp). Registering costs a mutex and a set insertion: nothing beside writing a file.
 // The library never removes them on a signal by itself: only the program installs the handlers (the Python module
 // keeps Python's own SIGINT handling).
 #include <filesystem>
 
-namespace vssw::study {
+namespace vssw::io {
 
 // Register a path before creating it, so that it is never on disk unregistered.
 void register_temp(const std::filesystem::path& path);
@@ -28,4 +28,4 @@ private:
     std::filesystem::path path_;
 };
 
-}  // namespace vssw::study
+}  // namespace vssw::io

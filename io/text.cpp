@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace vssw::study {
+namespace vssw::io {
 
 std::string num(double value) { return fmt::format("{:.6g}", value); }
 
@@ -93,4 +93,4 @@ std::string printable(std::string_view text) {
     return s;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::io

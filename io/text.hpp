@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace vssw::study {
+namespace vssw::io {
 
 // 6 significant digits.
 std::string num(double value);
@@ -25,4 +25,4 @@ std::string printable(std::string_view text);
 // its first bad byte, "'s\xff.toml' is not UTF-8 (the byte \xff at offset 1)", for a message that refuses it.
 std::optional<std::string> not_utf8(std::string_view text);
 
-}  // namespace vssw::study
+}  // namespace vssw::io

@@ -45,7 +45,7 @@ void write_at2(std::ostream& out, const std::vector<double>& accel_m_s2, double 
 
 void write_at2_file(const std::filesystem::path& path, const std::vector<double>& accel_m_s2, double dt,
                     const std::string& description) {
-    study::write_file(path, [&](std::ostream& out) { write_at2(out, accel_m_s2, dt, description); });
+    io::write_file(path, [&](std::ostream& out) { write_at2(out, accel_m_s2, dt, description); });
 }
 
 }  // namespace vssw::motions

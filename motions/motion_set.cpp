@@ -34,8 +34,8 @@ std::string motions_csv_header() {
 }
 
 std::string motions_csv_row(const MotionRow& r) {
-    using study::csv_number;
-    return fmt::format("{},{},{},{},{},{},{},{},{},{},{}", study::csv_field(r.file), csv_number(r.measured.pga_g),
+    using io::csv_number;
+    return fmt::format("{},{},{},{},{},{},{},{},{},{},{}", io::csv_field(r.file), csv_number(r.measured.pga_g),
                        csv_number(r.measured.arias_m_s), csv_number(r.measured.d5_95_s),
                        csv_number(r.measured.mid_frequency_hz), csv_number(r.target.arias_m_s),
                        csv_number(r.target.d5_95_s), csv_number(r.target.t_mid_s),
@@ -51,8 +51,8 @@ std::vector<MotionRow> write_motion_set(const MotionSetRequest& request, const s
     // The record's length and the filter's cost, for the median motion, before anything is written (each drawn motion
     // is checked again as it is made).
     (void)record_samples(median_parameters(request.draws), request.simulation, "the median motion");
-    const study::FolderLock lock = study::check_out_folder(request.out, study::OutKind::motions);
-    study::StagedFolder staged(request.out, study::OutKind::motions);
+    const io::FolderLock lock = io::check_out_folder(request.out, io::OutKind::motions);
+    io::StagedFolder staged(request.out, io::OutKind::motions);
     staged.create();
     std::vector<MotionRow> rows;
     for (int k = 1; k <= request.count; ++k) {
@@ -69,7 +69,7 @@ std::vector<MotionRow> write_motion_set(const MotionSetRequest& request, const s
         rows.push_back(row);
         if (progress) progress(k, request.count);
     }
-    study::write_file(staged.path() / "motions.csv", [&](std::ostream& out) {
+    io::write_file(staged.path() / "motions.csv", [&](std::ostream& out) {
         out << motions_csv_header() << '\n';
         for (const MotionRow& r : rows) out << motions_csv_row(r) << '\n';
     });

@@ -3,7 +3,7 @@
 //    stays held: a command may run an engine library in this process (`vssw bench` times them in-process, and ODE's
 //    library is not re-entrant), and nothing in it calls back into Python.
 //  - run_with_progress(args, progress): the same for `study` and `report`, the GIL released, the commands' progress
-//    lines (apps/progress.hpp) handed to a Python callable instead of a terminal. Those commands make their engines
+//    lines (cli/progress.hpp) handed to a Python callable instead of a terminal. Those commands make their engines
 //    with make_engine(), whose engine-library runs are each a forked child (multibody/host/isolated_engine.hpp): nothing of
 //    ODE's process-wide state is shared between two Python threads.
 //  - simulate(...), compare(...): one backend's trajectory, one engine against the analytic model, over the library
@@ -33,12 +33,12 @@
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "analytic/closed_forms.hpp"
-#include "apps/cli.hpp"
-#include "apps/compare_response.hpp"
-#include "apps/ground_motion_options.hpp"
-#include "apps/message_line.hpp"
-#include "apps/progress.hpp"
-#include "apps/wall_options.hpp"
+#include "cli/cli.hpp"
+#include "cli/compare_response.hpp"
+#include "cli/ground_motion_options.hpp"
+#include "cli/message_line.hpp"
+#include "cli/progress.hpp"
+#include "cli/wall_options.hpp"
 #include "compare/experiments.hpp"
 #include "compare/metrics.hpp"
 #include "compare/response.hpp"
@@ -47,7 +47,7 @@
 #include "multibody/host/child_process.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/host/run_budget.hpp"
-#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (apps/CMakeLists.txt)
+#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (cli/CMakeLists.txt)
 
 namespace py = pybind11;
 
@@ -486,7 +486,7 @@ py::list engine_settings(const std::string& engine_name) {
 
 // Raises `name` of the vssw package (InputError, SimulationError) with the library's message, as the Python layer
 // raises it for the program's errors: Error(message, code, stderr).
-// The message as the program prints it (apps/message_line.hpp): an input's control characters and bytes that are not
+// The message as the program prints it (cli/message_line.hpp): an input's control characters and bytes that are not
 // UTF-8 escaped, so that it is a valid str and shows nothing a terminal would act on.
 void raise_package_error(const char* name, int code, const char* message) {
     const py::object cls = py::module_::import("vssw").attr(name);

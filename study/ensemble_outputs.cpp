@@ -27,17 +27,17 @@ std::string reference_label(const StudyData& d, const EnsembleMeasures& e) {
 
 // engine, assumptions (the first two columns of both files).
 std::string series_columns(const Series& s) {
-    return csv_field(s.engine) + "," + csv_field(assumptions_text(s));
+    return io::csv_field(s.engine) + "," + io::csv_field(assumptions_text(s));
 }
 
 // settings, wall, reference (the last columns of both files).
 std::string tail_columns(const StudyData& d, const EnsembleMeasures& e, const SeriesMeasures& m) {
-    return fmt::format("{},{},{}", csv_field(d.series[m.series].settings), csv_field(e.walls[m.wall]),
-                       csv_field(reference_label(d, e)));
+    return fmt::format("{},{},{}", io::csv_field(d.series[m.series].settings), io::csv_field(e.walls[m.wall]),
+                       io::csv_field(reference_label(d, e)));
 }
 
 std::string interval_columns(const compare::Interval& i) {
-    return fmt::format("{},{},{},{}", csv_number(i.value), csv_number(i.lo), csv_number(i.hi), i.n);
+    return fmt::format("{},{},{},{}", io::csv_number(i.value), io::csv_number(i.lo), io::csv_number(i.hi), i.n);
 }
 
 bool is_reference(const EnsembleMeasures& e, const SeriesMeasures& m) {
@@ -68,14 +68,14 @@ std::vector<std::pair<double, double>> ecdf(const SeriesMeasures& m) {
 struct Styles {
     std::vector<std::size_t> variants;
     std::string of(const StudyData& d, std::size_t s) const {
-        return series_style(d.series[s].engine, variants[s]);
+        return io::series_style(d.series[s].engine, variants[s]);
     }
 };
 
 Styles styles_of(const StudyData& d) {
     std::vector<std::string> engines;
     for (const Series& s : d.series) engines.push_back(s.engine);
-    return {series_variants(engines)};
+    return {io::series_variants(engines)};
 }
 
 // The legend panel's entries: each series once (a study of several parts lists its runs per part).
@@ -95,46 +95,46 @@ std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::
     for (const SeriesMeasures& m : e.measures) {
         if (m.wall == wall && m.fitted() && !m.fit.fit.ok())
             unfitted += fmt::format(", \\\n     NaN with lines {} title {}", styles.of(d, m.series),
-                                    gp_string(d.series[m.series].label + " (no fit)"));
+                                    io::gp_string(d.series[m.series].label + " (no fit)"));
         if (m.wall != wall || !m.fitted() || !m.fit.fit.ok()) continue;
         for (const compare::IdaRecord& r : m.records) xmax = std::max(xmax, r.im);
         for (const StripeShare& l : m.levels) xmax = std::max(xmax, l.pga);
         xmax = std::max(xmax, std::isfinite(m.fit.median.hi) ? m.fit.median.hi : 0.0);
         const std::string style = styles.of(d, m.series);
-        dat += fmt::format("# wall {}: {}: {}\n", gp_comment(e.walls[wall]), gp_comment(d.series[m.series].label),
+        dat += fmt::format("# wall {}: {}: {}\n", io::gp_comment(e.walls[wall]), io::gp_comment(d.series[m.series].label),
                            fmt::format(m.ida ? "collapse {}, ECDF" : "stripe {}, share overturned", e.label));
         for (const auto& [x, y] : m.ida ? ecdf(m) : stripe_points(m))
-            dat += fmt::format("{} {} {}\n", gp_number(x), gp_number(y),
-                               gp_hover_text(d.series[m.series].label, fmt::format("{} {:.4g} {}", e.name, x, e.unit), y,
+            dat += fmt::format("{} {} {}\n", io::gp_number(x), io::gp_number(y),
+                               io::gp_hover_text(d.series[m.series].label, fmt::format("{} {:.4g} {}", e.name, x, e.unit), y,
                                              m.ida ? "collapsed (ECDF)" : "overturned"));
         dat += fmt::format("\n\n# median [{}], 0.5, median_lo, median_hi\n{} 0.5 {} {}\n\n\n", e.unit,
-                           gp_number(m.fit.median.value), gp_number(m.fit.median.lo), gp_number(m.fit.median.hi));
+                           io::gp_number(m.fit.median.value), io::gp_number(m.fit.median.lo), io::gp_number(m.fit.median.hi));
         cmd += fmt::format("{}norm(log(x/{})/{}) with lines {} title {}", cmd.empty() ? "plot " : ", \\\n     ",
-                           gp_number(m.fit.fit.median), gp_number(m.fit.fit.beta), style,
-                           gp_string(d.series[m.series].label));
+                           io::gp_number(m.fit.fit.median), io::gp_number(m.fit.fit.beta), style,
+                           io::gp_string(d.series[m.series].label));
         const std::string points = fmt::format("'{}.dat' index {} using 1:2", name, block);
         cmd += fmt::format(", \\\n     {0} with points {1} notitle, \\\n     {2}", points, style,
-                           gp_hover_layer(points + ":(stringcolumn(3))", style));
+                           io::gp_hover_layer(points + ":(stringcolumn(3))", style));
         cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:2:3:4 with xerrorbars {} notitle", name, block + 1,
                            style);
         block += 2;
     }
     if (cmd.empty()) return "set label 1 'no fit' at graph 0.5, graph 0.5 center\nplot [0:1][0:1] NaN notitle\n"
                             "unset label 1\n";
-    return fmt::format("set xrange [0:{}]\nset yrange [0:1]\n", gp_number(kAxisMargin * xmax)) + cmd + unfitted + "\n";
+    return fmt::format("set xrange [0:{}]\nset yrange [0:1]\n", io::gp_number(kAxisMargin * xmax)) + cmd + unfitted + "\n";
 }
 
-PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
+io::PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
     const Styles styles = styles_of(d);
     const PanelLayout layout = panel_layout(e.walls.size());
-    PlotScript s;
+    io::PlotScript s;
     s.plot = {kEnsembleSection, "fragility",
               "Collapse fragility: lognormal fits (lines), data (points), 95 % interval of the median (bar)",
               false};
-    s.dat = "# " + gp_comment(s.plot.title) + "\n";
-    std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     gp_xlabel(e.label, !layout.multiplot()) +
-                     fmt::format("set ylabel {}\nset samples 300\n", gp_string("P(collapse | " + e.name + ")")) +
+    s.dat = "# " + io::gp_comment(s.plot.title) + "\n";
+    std::string gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+                     io::gp_xlabel(e.label, !layout.multiplot()) +
+                     fmt::format("set ylabel {}\nset samples 300\n", io::gp_string("P(collapse | " + e.name + ")")) +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w)
@@ -143,15 +143,15 @@ PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
     return s;
 }
 
-PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
+io::PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
     const Styles styles = styles_of(d);
     const PanelLayout layout = panel_layout(e.walls.size());
-    PlotScript s;
+    io::PlotScript s;
     s.plot = {kEnsembleSection, "stripes",
               fmt::format("Share of records that overturned at each {} level (95 % Wilson bars)", e.name), false};
-    s.dat = "# " + gp_comment(s.plot.title) + "\n";
-    std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     gp_xlabel(e.label, !layout.multiplot()) + "set ylabel 'share overturned'\n" +
+    s.dat = "# " + io::gp_comment(s.plot.title) + "\n";
+    std::string gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+                     io::gp_xlabel(e.label, !layout.multiplot()) + "set ylabel 'share overturned'\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
@@ -159,17 +159,17 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
         for (const SeriesMeasures& m : e.measures) {
             if (m.wall != w || m.levels.empty()) continue;
             const std::string& label = d.series[m.series].label;
-            s.dat += fmt::format("# {}: {} share lo hi runs hover_text\n", gp_comment(label), e.intensity);
+            s.dat += fmt::format("# {}: {} share lo hi runs hover_text\n", io::gp_comment(label), e.intensity);
             for (const StripeShare& l : m.levels)
-                s.dat += fmt::format("{} {} {} {} {} {}\n", gp_number(l.pga), gp_number(l.share.value),
-                                     gp_number(l.share.lo), gp_number(l.share.hi), l.share.n,
-                                     gp_hover_text(label, fmt::format("{} {:.4g} {}, {} runs", e.name, l.pga, e.unit, l.share.n),
+                s.dat += fmt::format("{} {} {} {} {} {}\n", io::gp_number(l.pga), io::gp_number(l.share.value),
+                                     io::gp_number(l.share.lo), io::gp_number(l.share.hi), l.share.n,
+                                     io::gp_hover_text(label, fmt::format("{} {:.4g} {}, {} runs", e.name, l.pga, e.unit, l.share.n),
                                                    l.share.value, "overturned"));
             s.dat += "\n\n";
             const std::string style = styles.of(d, m.series);
             cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} title {}, \\\n     {}",
-                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block, style, gp_string(label),
-                               gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(6))", s.plot.name,
+                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block, style, io::gp_string(label),
+                               io::gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(6))", s.plot.name,
                                                           block),
                                               style));
             ++block;
@@ -183,7 +183,7 @@ PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
 
 // Fig. 10's rocking curves with the ensemble's spread: one panel per stripe (PGA), per series and size R the median
 // peak over the records against alpha with its quartiles as bars.
-PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const std::vector<RockingCurve>& curves) {
+io::PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const std::vector<RockingCurve>& curves) {
     std::vector<double> stripes;
     for (const RockingCurve& c : curves)
         if (std::find(stripes.begin(), stripes.end(), c.pga) == stripes.end()) stripes.push_back(c.pga);
@@ -192,13 +192,13 @@ PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const std
         if (std::find(sizes.begin(), sizes.end(), c.R) == sizes.end()) sizes.push_back(c.R);
     const Styles styles = styles_of(d);
     const PanelLayout layout = panel_layout(stripes.size());
-    PlotScript s;
+    io::PlotScript s;
     s.plot = {kEnsembleSection, "ensemble_rocking",
               "Rocking curves (Fig. 10): peak |theta1|/alpha1 over the records against alpha, median and quartiles",
               false};
-    s.dat = "# " + gp_comment(s.plot.title) + "\n";
-    std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     gp_xlabel("alpha [rad]", !layout.multiplot()) + "set ylabel 'peak |theta1| / alpha1'\n" +
+    s.dat = "# " + io::gp_comment(s.plot.title) + "\n";
+    std::string gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+                     io::gp_xlabel("alpha [rad]", !layout.multiplot()) + "set ylabel 'peak |theta1| / alpha1'\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
@@ -208,17 +208,17 @@ PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const std
             if (!(c.pga == pga || (std::isnan(c.pga) && std::isnan(pga)))) continue;
             const std::size_t r = static_cast<std::size_t>(std::find(sizes.begin(), sizes.end(), c.R) - sizes.begin());
             const std::string style =
-                series_style(d.series[c.series].engine, styles.variants[c.series] * sizes.size() + r);
+                io::series_style(d.series[c.series].engine, styles.variants[c.series] * sizes.size() + r);
             const std::string label = d.series[c.series].label + (sizes.size() > 1 ? fmt::format(" R={:g}", c.R) : "");
-            s.dat += fmt::format("# {}: alpha median q1 q3 records overturned\n", gp_comment(label));
+            s.dat += fmt::format("# {}: alpha median q1 q3 records overturned\n", io::gp_comment(label));
             for (const RockingPoint& p : c.points)
-                s.dat += fmt::format("{} {} {} {} {} {}\n", gp_number(p.alpha), gp_number(p.peak.median),
-                                     gp_number(p.peak.q1), gp_number(p.peak.q3), p.peak.n, p.overturned);
+                s.dat += fmt::format("{} {} {} {} {} {}\n", io::gp_number(p.alpha), io::gp_number(p.peak.median),
+                                     io::gp_number(p.peak.q1), io::gp_number(p.peak.q3), p.peak.n, p.overturned);
             s.dat += "\n\n";
             // A single panel has its key below the frame (titles); several share the legend panel (entries).
             cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} {}",
                                cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block++, style,
-                               layout.multiplot() ? "notitle" : "title " + gp_string(label));
+                               layout.multiplot() ? "notitle" : "title " + io::gp_string(label));
             if (pga == stripes.front()) entries.push_back({label, style});
         }
         gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("{} {:g} {}", e.name, pga, e.unit)) + cmd + "\n";
@@ -253,15 +253,15 @@ void write_fragility_csv(std::ostream& out, const StudyData& d, const EnsembleMe
         const compare::FitBootstrap& f = m.fit;
         const bool ratio = !is_reference(e, m) && e.has_reference;
         out << series_columns(d.series[m.series]) << ',' << m.intensity << ','
-            << fmt::format("{},{},{},{},{},{},{},{},", csv_number(f.fit.median), csv_number(f.fit.beta),
-                           csv_number(f.median.lo), csv_number(f.median.hi), csv_number(f.beta.lo),
-                           csv_number(f.beta.hi), f.fit.records, f.fit.collapsed)
-            << fmt::format("{},{},{},", csv_number(ratio ? m.ratio.ratio.value : NAN),
-                           csv_number(ratio ? m.ratio.ratio.lo : NAN), csv_number(ratio ? m.ratio.ratio.hi : NAN))
+            << fmt::format("{},{},{},{},{},{},{},{},", io::csv_number(f.fit.median), io::csv_number(f.fit.beta),
+                           io::csv_number(f.median.lo), io::csv_number(f.median.hi), io::csv_number(f.beta.lo),
+                           io::csv_number(f.beta.hi), f.fit.records, f.fit.collapsed)
+            << fmt::format("{},{},{},", io::csv_number(ratio ? m.ratio.ratio.value : NAN),
+                           io::csv_number(ratio ? m.ratio.ratio.lo : NAN), io::csv_number(ratio ? m.ratio.ratio.hi : NAN))
             << tail_columns(d, e, m)
             << fmt::format(",{},{},{},{},{},{}\n", kEnsembleSeed, kEnsembleReplicates, f.failed,
-                           ratio ? std::to_string(m.ratio.failed) : std::string(), csv_field(fit_note(f)),
-                           csv_field(e.unit));
+                           ratio ? std::to_string(m.ratio.failed) : std::string(), io::csv_field(fit_note(f)),
+                           io::csv_field(e.unit));
     }
 }
 
@@ -270,7 +270,7 @@ void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMe
     for (const SeriesMeasures& m : e.measures) {
         const std::string head = series_columns(d.series[m.series]), tail = tail_columns(d, e, m);
         const auto row = [&](const std::string& measure, const compare::Interval& i) {
-            out << head << ',' << csv_field(measure) << ',' << interval_columns(i) << ',' << tail << '\n';
+            out << head << ',' << io::csv_field(measure) << ',' << interval_columns(i) << ',' << tail << '\n';
         };
         const bool compared = e.has_reference && !is_reference(e, m);
         if (m.stripes && compared) {
@@ -306,10 +306,10 @@ void add_ensemble_plots(const StudyData& d, const EnsembleMeasures& e, StudyPlot
         out.scripts.push_back(rocking_plot(d, e, curves));
 }
 
-void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const EnsembleMeasures& e) {
+void add_ensemble_section(std::vector<io::DocBlock>& b, const StudyData& d, const EnsembleMeasures& e) {
     if (!e.applies) return;
-    b.push_back(heading(2, "Ensemble"));
-    b.push_back(paragraph(fmt::format(
+    b.push_back(io::heading(2, "Ensemble"));
+    b.push_back(io::paragraph(fmt::format(
         "Each series against the reference, {} ({}), over the study's records (fragility.csv and agreement.csv hold "
         "every number). Fragility: a lognormal fit to each record's collapse {} (IDA), a record still standing at "
         "max_pga right-censored there, or to the stripes' overturning counts by maximum likelihood; 95 % percentile bootstrap intervals of {} resamples of the records (seed {}), the "
@@ -321,7 +321,7 @@ void add_ensemble_section(std::vector<DocBlock>& b, const StudyData& d, const En
                               : "the first analytic series: the study did not run the set mechanism (exact / "
                                 "whole-mechanism / unilateral)",
         e.name, kEnsembleReplicates, kEnsembleSeed)));
-    DocBlock t = table({"series", "wall", fmt::format("fragility median [{}]", e.unit), "beta", "median / reference's",
+    io::DocBlock t = io::table({"series", "wall", fmt::format("fragility median [{}]", e.unit), "beta", "median / reference's",
                         "overturning agreement", "inside band"},
                        2);
     for (const SeriesMeasures& m : e.measures) {

@@ -31,6 +31,6 @@ void write_agreement_csv(std::ostream& out, const StudyData& d, const EnsembleMe
 // The fragility and stripe plots (nothing when the measures do not apply or hold no fit / stripe).
 void add_ensemble_plots(const StudyData& d, const EnsembleMeasures& e, StudyPlots& out);
 // The document's "Ensemble" section (nothing when the measures do not apply).
-void add_ensemble_section(std::vector<DocBlock>& blocks, const StudyData& d, const EnsembleMeasures& e);
+void add_ensemble_section(std::vector<io::DocBlock>& blocks, const StudyData& d, const EnsembleMeasures& e);
 
 }  // namespace vssw::study

@@ -119,7 +119,7 @@ bool falls_from(const multibody::WallScene& scene, double theta0) {
 }  // namespace
 
 Grid::Grid(const StudySpec& spec) : spec_(spec) {
-    std::string identity_text = dump_json(spec.as_read);
+    std::string identity_text = io::dump_json(spec.as_read);
     // The assumptions as resolved, not only as written: a file without them runs the default set, which a build may
     // change, and a journal or a shard of the old default must not join the new one's.
     for (const Axis& a : spec.assumptions)

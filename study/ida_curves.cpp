@@ -84,10 +84,10 @@ void write_ida_csv(std::ostream& out, const Grid& grid, std::vector<IdaRow> rows
         const double intensity = im.measure == IntensityMeasure::pga
                                      ? r.point.scale * grid.record(c).pga() / kStandardGravity
                                      : intensity_at_scale(im.measure, at_one, r.point.scale);
-        out << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.case_id, csv_field(run.engine),
-                           csv_field(assumptions_of(run)), csv_field(run.settings_text), csv_field(c.file),
-                           csv_number(r.point.scale), to_string(im.measure), csv_number(intensity),
-                           intensity_unit(im.measure), csv_number(r.point.peak), r.point.overturned ? 1 : 0);
+        out << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.case_id, io::csv_field(run.engine),
+                           io::csv_field(assumptions_of(run)), io::csv_field(run.settings_text), io::csv_field(c.file),
+                           io::csv_number(r.point.scale), to_string(im.measure), io::csv_number(intensity),
+                           intensity_unit(im.measure), io::csv_number(r.point.peak), r.point.overturned ? 1 : 0);
     }
 }
 
@@ -117,11 +117,11 @@ void merge_ida_csv(const std::vector<std::filesystem::path>& shard_dirs, const s
 std::vector<IdaCurve> read_ida_csv(const std::filesystem::path& path) {
     std::ifstream in = open_input_file(path, "the study's IDA curves", kMaxResultsBytes);
     std::vector<std::string> f;
-    if (!read_csv_record(in, f) || f != kHeader)
+    if (!io::read_csv_record(in, f) || f != kHeader)
         throw InputError(fmt::format("'{}' is not an ida.csv (its header differs)", path.string()));
     std::vector<IdaCurve> curves;
     std::map<std::tuple<int, std::string, std::string, std::string>, std::size_t> index;
-    while (read_csv_record(in, f)) {
+    while (io::read_csv_record(in, f)) {
         if (f.size() == 1 && f[0].empty()) continue;
         if (f.size() != kHeader.size())
             throw InputError(fmt::format("'{}': a row of {} fields, not {}", path.string(), f.size(), kHeader.size()));
@@ -183,14 +183,14 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
         if (const auto it = e.case_wall.find(curves[i].case_id); it != e.case_wall.end()) wall[i] = it->second;
     }
     const PanelLayout layout = panel_layout(e.walls.size());
-    PlotScript s;
+    io::PlotScript s;
     s.plot = {kIdaSection, "ida",
               "IDA curves: each record's runs (thin) and the 16, 50, 84 % fractiles of the intensity given the peak",
               false};
-    s.dat = "# " + gp_comment(s.plot.title) + "\n";
-    std::string gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-                     gp_xlabel(e.label, !layout.multiplot()) +
-                     fmt::format("set ylabel {}\n", gp_string("peak |theta1| / alpha1 (overturned at the top)")) +
+    s.dat = "# " + io::gp_comment(s.plot.title) + "\n";
+    std::string gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+                     io::gp_xlabel(e.label, !layout.multiplot()) +
+                     fmt::format("set ylabel {}\n", io::gp_string("peak |theta1| / alpha1 (overturned at the top)")) +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
@@ -199,34 +199,34 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
         std::string cmd;
         const auto add = [&](const std::string& style, const std::string& title) {
             cmd += fmt::format("{}'{}.dat' index {} using 1:2 with {} {}", cmd.empty() ? "plot " : ", \\\n     ",
-                               s.plot.name, block++, style, title.empty() ? "notitle" : "title " + gp_string(title));
+                               s.plot.name, block++, style, title.empty() ? "notitle" : "title " + io::gp_string(title));
         };
         for (std::size_t sr = 0; sr < d.series.size(); ++sr) {
             std::vector<const IdaCurve*> mine;
             for (std::size_t i = 0; i < curves.size(); ++i)
                 if (series[i] == sr && wall[i] == w) mine.push_back(&curves[i]);
             if (mine.empty()) continue;
-            const std::string colour = fmt::format("lc rgb '{}'", engine_colour(d.series[sr].engine));
+            const std::string colour = fmt::format("lc rgb '{}'", io::engine_colour(d.series[sr].engine));
             // The records' curves in the series' colour, mostly transparent (gnuplot's #AARRGGBB), under its fractiles.
-            const std::string faint = fmt::format("lc rgb '#{}{}'", kRecordAlpha, engine_colour(d.series[sr].engine).substr(1));
+            const std::string faint = fmt::format("lc rgb '#{}{}'", kRecordAlpha, io::engine_colour(d.series[sr].engine).substr(1));
             for (const IdaCurve* c : mine) {
-                s.dat += fmt::format("# {}: {}: intensity peak_drawn overturned\n", gp_comment(d.series[sr].label),
-                                     gp_comment(c->record));
+                s.dat += fmt::format("# {}: {}: intensity peak_drawn overturned\n", io::gp_comment(d.series[sr].label),
+                                     io::gp_comment(c->record));
                 for (std::size_t k = 0; k < c->intensity.size(); ++k)
-                    s.dat += fmt::format("{} {} {}\n", gp_number(c->intensity[k]),
-                                         gp_number(c->overturned[k] ? kOverturnedDrawnAt : c->peak[k]),
+                    s.dat += fmt::format("{} {} {}\n", io::gp_number(c->intensity[k]),
+                                         io::gp_number(c->overturned[k] ? kOverturnedDrawnAt : c->peak[k]),
                                          c->overturned[k] ? 1 : 0);
                 s.dat += "\n\n";
                 add("linespoints " + faint + " lw 0.5 pt 7 ps 0.25", "");
             }
             for (const double q : kFractiles) {
                 s.dat += fmt::format("# {}: {:g} % fractile of the intensity given the peak\n",
-                                     gp_comment(d.series[sr].label), 100.0 * q);
+                                     io::gp_comment(d.series[sr].label), 100.0 * q);
                 for (int k = 1; k <= kPeakLevels; ++k) {
                     const double y = kPeakStep * k;
                     std::vector<double> x;
                     for (const IdaCurve* c : mine) x.push_back(intensity_reaching(*c, y));
-                    s.dat += fmt::format("{} {}\n", gp_number(fractile(x, q)), gp_number(y));
+                    s.dat += fmt::format("{} {}\n", io::gp_number(fractile(x, q)), io::gp_number(y));
                 }
                 s.dat += "\n\n";
                 const bool first = !listed[sr] && q == 0.5;
@@ -236,7 +236,7 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
                 if (first) listed[sr] = true;
             }
         }
-        gp += panel_begin(layout, e.walls[w]) + fmt::format("set yrange [0:{}]\n", gp_number(kOverturnedDrawnAt * 1.05)) +
+        gp += panel_begin(layout, e.walls[w]) + fmt::format("set yrange [0:{}]\n", io::gp_number(kOverturnedDrawnAt * 1.05)) +
               (cmd.empty() ? "plot [0:1][0:1] NaN notitle\n" : cmd + "\n");
     }
     s.gp = gp + layout_end(layout, entries);

@@ -49,7 +49,7 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
         if (!std::getline(in, line)) break;
         if (in.eof()) break;  // a last line without its newline was being written: not whole
         std::istringstream record(line);
-        read_csv_record(record, f);
+        io::read_csv_record(record, f);
         if (!f.empty() && f[0] == kDone) {
             if (f.size() != 3) throw InputError(fmt::format("journal {}: a malformed closing line '{}'", path.string(), line));
             const TaskKey key{static_cast<int>(parse_long(f[1], path)), static_cast<std::size_t>(parse_long(f[2], path))};
@@ -95,10 +95,10 @@ std::string journal_text(int case_id, std::size_t run, const std::vector<Measure
                          const std::vector<IdaPoint>& ida) {
     std::string text;
     for (const Measurement& m : rows)
-        text += fmt::format("{},{},{},{},{},{}\n", case_id, run, m.metric, csv_number(m.value), csv_field(m.status),
-                            csv_field(m.warnings));
+        text += fmt::format("{},{},{},{},{},{}\n", case_id, run, m.metric, io::csv_number(m.value), io::csv_field(m.status),
+                            io::csv_field(m.warnings));
     for (const IdaPoint& p : ida)
-        text += fmt::format("{},{},{},{},{},{}\n", kIda, case_id, run, csv_number(p.scale), csv_number(p.peak),
+        text += fmt::format("{},{},{},{},{},{}\n", kIda, case_id, run, io::csv_number(p.scale), io::csv_number(p.peak),
                             p.overturned ? 1 : 0);
     text += fmt::format("{},{},{}\n", kDone, case_id, run);
     return text;

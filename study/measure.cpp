@@ -48,7 +48,7 @@ constexpr double kDefaultCollapseTolerance = 1e-3;  // relative width of the fin
 // stand up to it do not fall to that record at any credible intensity; the study file's max_pga raises it.
 constexpr double kDefaultMaxPgaOverThreshold = 20.0;
 
-std::string failed(const std::string& reason) { return "failed: " + one_line(reason); }
+std::string failed(const std::string& reason) { return "failed: " + io::one_line(reason); }
 
 // The impact ratio of an analytic run's law on this wall (Fig. 8 follows the run's impact assumption).
 double law_restitution(const RunSpec& run, const multibody::WallScene& scene) {
@@ -265,9 +265,9 @@ std::pair<double, std::string> collapse_row(const std::string& metric, const Col
 // Whether measure() gives `metric` a row for this run: the part measures it, the run's backend has it (the analytic
 // model's own metrics are left out for an engine), and it is not threshold_g (a task of its own).
 bool reports(const PartSpec& part, const RunSpec& run, const std::string& metric) {
-    const MetricInfo& info = metric_info(metric);
+    const compare::MetricInfo& info = metric_info(metric);
     if (info.analytic_only && run.engine != "analytic") return false;
-    if (info.source == MetricSource::threshold) return false;
+    if (info.source == compare::MetricSource::threshold) return false;
     return std::find(part.metrics.begin(), part.metrics.end(), metric) != part.metrics.end();
 }
 
@@ -369,7 +369,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
         const std::string& metric = spec.metrics[m];
         if (!reports(part, run, metric)) continue;
         switch (metric_info(metric).source) {
-            case MetricSource::closed_form: {
+            case compare::MetricSource::closed_form: {
                 ClosedForm f;
                 try {
                     f = closed_form(metric, c, run);
@@ -379,8 +379,8 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 add(m, f.value, f.why_not.empty() ? kOk : failed(f.why_not));
                 break;
             }
-            case MetricSource::threshold: break;  // not reached (reports()): measure_threshold, a task of its own
-            case MetricSource::free: {
+            case compare::MetricSource::threshold: break;  // not reached (reports()): measure_threshold, a task of its own
+            case compare::MetricSource::free: {
                 if (!free && free_failure.empty()) guarded(run_free, free_failure);
                 if (!free) {
                     add(m, kNaN, failed(free_failure));
@@ -396,7 +396,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 }
                 break;
             }
-            case MetricSource::response: {
+            case compare::MetricSource::response: {
                 if (!response && response_failure.empty())
                     guarded(
                         [&] {
@@ -424,7 +424,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 else if (metric == "roller_tension_time") add(m, r.tension_at.value_or(kNaN), kOk);
                 break;
             }
-            case MetricSource::collapse: {
+            case compare::MetricSource::collapse: {
                 std::string failure;
                 if (!collapse) {
                     guarded([&] { collapse = collapse_scale(grid, c, run, engine); }, failure);
@@ -446,7 +446,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     if (free) warnings = free->trajectory.warnings;
     if (response_warnings) warnings = *response_warnings;
     std::string joined;
-    for (const std::string& w : warnings) joined += (joined.empty() ? "" : "; ") + one_line(w);
+    for (const std::string& w : warnings) joined += (joined.empty() ? "" : "; ") + io::one_line(w);
     for (Measurement& m : out) m.warnings = joined;
     return out;
 }
@@ -464,13 +464,13 @@ double simulated_seconds(const Grid& grid, const CaseSpec& c) {
     double seconds = 0.0;
     for (const std::string& metric : part.metrics) {
         switch (metric_info(metric).source) {
-            case MetricSource::closed_form: break;
-            case MetricSource::threshold: break;  // a task of its own (compare::threshold_seconds)
-            case MetricSource::free: seconds += kFreeSeconds; break;
-            case MetricSource::response:
+            case compare::MetricSource::closed_form: break;
+            case compare::MetricSource::threshold: break;  // a task of its own (compare::threshold_seconds)
+            case compare::MetricSource::free: seconds += kFreeSeconds; break;
+            case compare::MetricSource::response:
                 seconds += part.kind == ExcitationKind::free ? kFreeSeconds : motion_seconds();
                 break;
-            case MetricSource::collapse: seconds += kCollapseRuns * motion_seconds(); break;
+            case compare::MetricSource::collapse: seconds += kCollapseRuns * motion_seconds(); break;
         }
     }
     return seconds;

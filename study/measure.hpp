@@ -26,7 +26,6 @@ namespace vssw::study {
 
 // After a pulse or a record a study's run goes on this long (CaseSpec::response_tail; compare/experiments.hpp), as
 // `vssw history`'s does by default: both give the same peaks.
-using compare::kResponseTail;
 
 struct Measurement {
     std::size_t metric = 0;  // index in StudySpec::metrics

@@ -40,7 +40,7 @@ struct ShardReader {
 
     explicit ShardReader(const fs::path& p)
         : path(p), in(open_input_file(p, "study merge: the shard's results", kMaxResultsBytes)) {
-        if (!read_csv_record(in, header) || header.empty() || header.front() != "case_id")
+        if (!io::read_csv_record(in, header) || header.empty() || header.front() != "case_id")
             throw InputError(fmt::format("'{}' is not a study's results.csv", path.string()));
         for (std::size_t i = 0; i < header.size(); ++i)
             if (header[i] != "value" && header[i] != "unit" && header[i] != "status" && header[i] != "warnings")
@@ -50,7 +50,7 @@ struct ShardReader {
     void advance() {
         next.clear();
         case_id = -1;
-        if (!read_csv_record(in, next)) return;
+        if (!io::read_csv_record(in, next)) return;
         if (next.size() != header.size())
             throw InputError(fmt::format("'{}': a row with {} fields, the header has {}", path.string(), next.size(),
                                          header.size()));
@@ -86,7 +86,7 @@ void check_shard(const fs::path& d, const Json& m, const Json& first, const fs::
                                      first["shard"]["n"].get<int>()));
     if (m.at("engines") != first.at("engines"))
         throw InputError(fmt::format("study merge: '{}' was run by other engine versions than '{}' ({} against {})",
-                                     d.string(), first_dir.string(), dump_json(m["engines"]), dump_json(first["engines"])));
+                                     d.string(), first_dir.string(), io::dump_json(m["engines"]), io::dump_json(first["engines"])));
     // The file the shard's run wrote: its rows (each once), then byte for byte (a manifest of an older vssw records
     // no "results": its rows are still checked for repeats while merging).
     if (!m.contains("results")) return;
@@ -150,8 +150,8 @@ void write_merged_results(const std::vector<fs::path>& dirs, const fs::path& fil
     const std::vector<std::string>& header = readers.front()->header;
     const std::size_t status =
         static_cast<std::size_t>(std::find(header.begin(), header.end(), "status") - header.begin());
-    AtomicFile csv(file);
-    for (std::size_t i = 0; i < header.size(); ++i) csv.stream() << (i ? "," : "") << csv_field(header[i]);
+    io::AtomicFile csv(file);
+    for (std::size_t i = 0; i < header.size(); ++i) csv.stream() << (i ? "," : "") << io::csv_field(header[i]);
     csv.stream() << '\n';
     for (;;) {
         ShardReader* pick = nullptr;
@@ -164,7 +164,7 @@ void write_merged_results(const std::vector<fs::path>& dirs, const fs::path& fil
                 throw InputError(fmt::format("study merge: case {} is in two shards", id));
         while (pick->case_id == id) {
             for (std::size_t i = 0; i < pick->next.size(); ++i)
-                csv.stream() << (i ? "," : "") << csv_field(pick->next[i]);
+                csv.stream() << (i ? "," : "") << io::csv_field(pick->next[i]);
             csv.stream() << '\n';
             ++result.rows;
             if (status < pick->next.size() && pick->next[status] != "ok") ++result.failed_rows;
@@ -196,8 +196,8 @@ void write_merged_manifest(const std::vector<Json>& manifests, const fs::path& d
     merged["cases"]["run"] = cases;
     merged["wall_time_s"] = longest;
     merged["results"] = {{"rows", result.rows}, {"fnv1a64", file_fnv1a(dest / kResultsCsv)}};
-    AtomicFile manifest(dest / kManifestFile);
-    manifest.stream() << dump_json(merged, 2) << '\n';
+    io::AtomicFile manifest(dest / kManifestFile);
+    manifest.stream() << io::dump_json(merged, 2) << '\n';
     manifest.commit();
 }
 

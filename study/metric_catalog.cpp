@@ -6,32 +6,32 @@
 
 namespace vssw::study {
 
-const std::vector<MetricInfo>& metric_catalog() {
-    static const std::vector<MetricInfo> catalog = [] {
-        std::vector<MetricInfo> out;
-        for (const MetricInfo& m : compare::metric_catalog())
+const std::vector<compare::MetricInfo>& metric_catalog() {
+    static const std::vector<compare::MetricInfo> catalog = [] {
+        std::vector<compare::MetricInfo> out;
+        for (const compare::MetricInfo& m : compare::metric_catalog())
             if (m.in_study) out.push_back(m);
         return out;
     }();
     return catalog;
 }
 
-const MetricInfo& metric_info(const std::string& name) {
-    for (const MetricInfo& m : metric_catalog())
+const compare::MetricInfo& metric_info(const std::string& name) {
+    for (const compare::MetricInfo& m : metric_catalog())
         if (name == m.name) return m;
     std::vector<std::string> known;
-    for (const MetricInfo& m : metric_catalog()) known.push_back(m.name);
+    for (const compare::MetricInfo& m : metric_catalog()) known.push_back(m.name);
     throw InputError(fmt::format("unknown metric '{}' (known: {})", name, fmt::join(known, ", ")));
 }
 
-bool kind_measures(ExcitationKind kind, const MetricInfo& metric) {
+bool kind_measures(ExcitationKind kind, const compare::MetricInfo& metric) {
     switch (metric.source) {
-        case MetricSource::closed_form: return true;
-        case MetricSource::threshold: return kind != ExcitationKind::closed_form;
-        case MetricSource::free: return kind == ExcitationKind::free;
-        case MetricSource::response:
+        case compare::MetricSource::closed_form: return true;
+        case compare::MetricSource::threshold: return kind != ExcitationKind::closed_form;
+        case compare::MetricSource::free: return kind == ExcitationKind::free;
+        case compare::MetricSource::response:
             return kind == ExcitationKind::free || kind == ExcitationKind::pulse || kind == ExcitationKind::record;
-        case MetricSource::collapse: return kind == ExcitationKind::scale_to_collapse;
+        case compare::MetricSource::collapse: return kind == ExcitationKind::scale_to_collapse;
     }
     return false;
 }

@@ -10,15 +10,13 @@
 
 namespace vssw::study {
 
-using compare::MetricInfo;
-using compare::MetricSource;
 
 // In the order `vssw study --help` lists them.
-const std::vector<MetricInfo>& metric_catalog();
+const std::vector<compare::MetricInfo>& metric_catalog();
 // InputError naming the metric and listing the known ones.
-const MetricInfo& metric_info(const std::string& name);
+const compare::MetricInfo& metric_info(const std::string& name);
 // Whether an excitation of this kind can give the metric (closed forms: every kind).
-bool kind_measures(ExcitationKind kind, const MetricInfo& metric);
+bool kind_measures(ExcitationKind kind, const compare::MetricInfo& metric);
 // What a study of this kind measures when its file names no metrics (closed-form studies must name theirs).
 std::vector<std::string> default_metrics(ExcitationKind kind);
 

@@ -43,32 +43,32 @@ OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOp
 OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options, const StudyData& data,
                                 const EnsembleMeasures& ensemble) {
     OutputFiles files;
-    write_file(dir / kResultsJson,
+    io::write_file(dir / kResultsJson,
                [&](std::ostream& out) { write_results_json(out, data.manifest, dir / kResultsCsv); });
     files.written.push_back(dir / kResultsJson);
 
     const std::vector<Effect> effects = parameter_effects(data);
     const std::vector<Agreement> agreement = engine_agreement(data);
     if (ensemble.applies) {
-        write_file(dir / kFragilityCsv, [&](std::ostream& out) { write_fragility_csv(out, data, ensemble); });
-        write_file(dir / kAgreementCsv, [&](std::ostream& out) { write_agreement_csv(out, data, ensemble); });
+        io::write_file(dir / kFragilityCsv, [&](std::ostream& out) { write_fragility_csv(out, data, ensemble); });
+        io::write_file(dir / kAgreementCsv, [&](std::ostream& out) { write_agreement_csv(out, data, ensemble); });
         files.written.push_back(dir / kFragilityCsv);
         files.written.push_back(dir / kAgreementCsv);
     }
     StudyPlots scripts;
-    PlotResult plots;
+    io::PlotResult plots;
     const std::filesystem::path plots_dir = dir / kPlotsDir;
     if (options.plots) {
         scripts = study_plot_scripts(data, effects);
         add_ensemble_plots(data, ensemble, scripts);
         if (std::filesystem::exists(dir / kIdaCsv)) add_ida_plot(data, ensemble, read_ida_csv(dir / kIdaCsv), scripts);
-        plots = draw_plots(scripts.scripts, plots_dir, options.gnuplot);
+        plots = io::draw_plots(scripts.scripts, plots_dir, options.gnuplot);
         if (!plots.note.empty()) files.warnings.push_back("plots: " + plots.note);
         if (!scripts.scripts.empty()) files.written.push_back(plots_dir);
     }
-    const Document doc = build_study_document({data, effects, agreement, scripts, plots, !options.plots, &ensemble});
-    write_file(dir / kStudyMarkdown, [&](std::ostream& out) { write_markdown(out, doc); });
-    write_file(dir / kStudyHtml, [&](std::ostream& out) { write_html(out, doc, plots_dir); });
+    const io::Document doc = build_study_document({data, effects, agreement, scripts, plots, !options.plots, &ensemble});
+    io::write_file(dir / kStudyMarkdown, [&](std::ostream& out) { io::write_markdown(out, doc); });
+    io::write_file(dir / kStudyHtml, [&](std::ostream& out) { io::write_html(out, doc, plots_dir); });
     files.written.push_back(dir / kStudyMarkdown);
     files.written.push_back(dir / kStudyHtml);
     return files;

@@ -29,15 +29,15 @@ std::string x_text(const LineFigure& f, std::size_t i) {
 
 std::string data_of(const LineFigure& f) {
     std::string dat = fmt::format("# {}\n# x y marked hover_text   (one block per panel and line, in that order)\n",
-                                  gp_comment(f.title));
+                                  io::gp_comment(f.title));
     for (std::size_t p = 0; p < f.y.size(); ++p)
         for (std::size_t l = 0; l < f.lines.size(); ++l) {
-            dat += fmt::format("# panel {}: {}; line {}: {}\n", p + 1, gp_comment(f.panel_titles[p]), l + 1,
-                               gp_comment(f.lines[l].first));
+            dat += fmt::format("# panel {}: {}; line {}: {}\n", p + 1, io::gp_comment(f.panel_titles[p]), l + 1,
+                               io::gp_comment(f.lines[l].first));
             for (std::size_t i = 0; i < f.x.size(); ++i)
-                dat += fmt::format("{} {} {} {}\n", gp_number(f.x[i]), gp_number(f.y[p][l][i]),
+                dat += fmt::format("{} {} {} {}\n", io::gp_number(f.x[i]), io::gp_number(f.y[p][l][i]),
                                    f.marked[p][l][i] ? 1 : 0,
-                                   gp_hover_text(f.lines[l].first, x_text(f, i), f.y[p][l][i], f.yunit));
+                                   io::gp_hover_text(f.lines[l].first, x_text(f, i), f.y[p][l][i], f.yunit));
             dat += "\n\n";
         }
     return dat;
@@ -54,7 +54,7 @@ std::string panel_range(const LineFigure& f, std::size_t p) {
     const double span = std::max(f.min_span * std::max(std::abs(lo), std::abs(hi)), f.min_abs_span);
     const double middle = 0.5 * (lo + hi);
     if (!(hi >= lo) || !(hi - lo < span)) return "set autoscale y\n";  // no value, or a span of their own
-    return fmt::format("set yrange [{}:{}]\n", gp_number(middle - 0.5 * span), gp_number(middle + 0.5 * span));
+    return fmt::format("set yrange [{}:{}]\n", io::gp_number(middle - 0.5 * span), io::gp_number(middle + 0.5 * span));
 }
 
 std::string panel_plot(const LineFigure& f, const PanelLayout& layout, std::size_t p) {
@@ -68,13 +68,13 @@ std::string panel_plot(const LineFigure& f, const PanelLayout& layout, std::size
         const std::size_t index = p * f.lines.size() + l;
         cmd += fmt::format("{}'{}.dat' index {} using 1:2 with linespoints {} title {}, \\\n     {}",
                            cmd.empty() ? "plot " : ", \\\n     ", f.name, index, f.lines[l].second,
-                           gp_string(f.lines[l].first),
-                           gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(4))", f.name, index),
+                           io::gp_string(f.lines[l].first),
+                           io::gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(4))", f.name, index),
                                           f.lines[l].second));
         if (f.marker_title.empty()) continue;
         cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:($3 > 0.5 ? $2 : NaN) with points pt 6 ps 2 lc rgb "
                            "'black' {}",
-                           f.name, index, marker_titled ? "notitle" : "title " + gp_string(f.marker_title));
+                           f.name, index, marker_titled ? "notitle" : "title " + io::gp_string(f.marker_title));
         marker_titled = true;
     }
     return s + cmd + "\n";
@@ -95,15 +95,15 @@ bool LineFigure::any_value() const {
     return false;
 }
 
-PlotScript line_figure_script(const LineFigure& f) {
+io::PlotScript line_figure_script(const LineFigure& f) {
     const PanelLayout layout = panel_layout(f.panel_titles.size());
-    std::string gp = gp_preamble("vssw study", f.name, layout.width, layout.height) +
-                     gp_xlabel(f.xlabel, !layout.multiplot()) +
-                     fmt::format("set ylabel {}\nset format y '%.4g'\n", gp_string(f.ylabel));
+    std::string gp = io::gp_preamble("vssw study", f.name, layout.width, layout.height) +
+                     io::gp_xlabel(f.xlabel, !layout.multiplot()) +
+                     fmt::format("set ylabel {}\nset format y '%.4g'\n", io::gp_string(f.ylabel));
     if (!f.categories.empty()) {
         std::vector<std::string> tics;
         for (std::size_t i = 0; i < f.categories.size(); ++i)
-            tics.push_back(fmt::format("{} {}", gp_string(f.categories[i]), i));
+            tics.push_back(fmt::format("{} {}", io::gp_string(f.categories[i]), i));
         gp += fmt::format("set xtics ({})\nset xrange [{}:{}]\nset offsets 0, 0, graph 0.05, graph 0.05\n",
                           fmt::join(tics, ", "), -kCategoryMargin,
                           static_cast<double>(f.categories.size()) - 1.0 + kCategoryMargin);
@@ -114,7 +114,7 @@ PlotScript line_figure_script(const LineFigure& f) {
     for (std::size_t p = 0; p < f.panel_titles.size(); ++p) gp += panel_plot(f, layout, p);
     std::vector<std::pair<std::string, std::string>> entries = f.lines;
     const std::string marker =
-        f.marker_title.empty() ? "" : "NaN with points pt 6 ps 2 lc rgb 'black' title " + gp_string(f.marker_title);
+        f.marker_title.empty() ? "" : "NaN with points pt 6 ps 2 lc rgb 'black' title " + io::gp_string(f.marker_title);
     gp += layout_end(layout, entries, marker);
     return {{f.section, f.name, f.title, false}, gp, data_of(f)};
 }

@@ -35,6 +35,6 @@ struct LineFigure {
 // The figure's .gp and .dat: a block of (x, y, marked, hover text) per panel and line, a hover layer over each line's
 // markers, the panel's lines drawn from it, a panel
 // without any value labelled so (gnuplot refuses to autoscale nothing).
-PlotScript line_figure_script(const LineFigure& figure);
+io::PlotScript line_figure_script(const LineFigure& figure);
 
 }  // namespace vssw::study

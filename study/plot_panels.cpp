@@ -119,13 +119,13 @@ PanelLayout panel_layout(std::size_t panels) {
 }
 
 std::string layout_begin(const PanelLayout& layout, const std::string& title) {
-    if (!layout.multiplot()) return fmt::format("set title {}\n", gp_string(title));
+    if (!layout.multiplot()) return fmt::format("set title {}\n", io::gp_string(title));
     return fmt::format("unset key\nset multiplot layout {},{} title {}\n", layout.rows, layout.columns,
-                       gp_string(title));
+                       io::gp_string(title));
 }
 
 std::string panel_begin(const PanelLayout& layout, const std::string& title) {
-    return layout.multiplot() ? fmt::format("set title {}\n", gp_string(title)) : "";
+    return layout.multiplot() ? fmt::format("set title {}\n", io::gp_string(title)) : "";
 }
 
 std::string layout_end(const PanelLayout& layout, const std::vector<std::pair<std::string, std::string>>& entries,
@@ -138,7 +138,7 @@ std::string layout_end(const PanelLayout& layout, const std::vector<std::pair<st
     std::string cmd;
     for (const auto& [title, style] : entries)
         cmd += fmt::format("{}NaN with linespoints {} title {}", cmd.empty() ? "plot " : ", \\\n     ", style,
-                           gp_string(title));
+                           io::gp_string(title));
     if (!extra.empty()) cmd += (cmd.empty() ? "plot " : ", \\\n     ") + extra;
     return s + cmd + "\nunset multiplot\n";
 }

@@ -88,7 +88,7 @@ PanelSplit plot_split(const StudyData& d, const std::vector<std::string>& drawn,
 // A record's part of a plot's name: its file's stem as a file stem, numbered (-1, -2, ...) when two of the study's
 // records reduce to the same one (a/r.AT2 and b/r.AT2, or r`x`.AT2 and r-x-.AT2): one plot must not replace another.
 std::string record_label(const ColumnLevels& c, std::uint32_t level) {
-    const auto stem_of = [&](std::uint32_t l) { return file_stem(std::filesystem::path(c.texts[l]).stem().string()); };
+    const auto stem_of = [&](std::uint32_t l) { return io::file_stem(std::filesystem::path(c.texts[l]).stem().string()); };
     const std::string stem = stem_of(level);
     for (std::uint32_t l = 0; l < c.texts.size(); ++l)
         if (l != level && stem_of(l) == stem) {
@@ -108,7 +108,7 @@ std::string split_name(const StudyData& d, const std::string& prefix, const Pane
         const std::string& text = c.texts[combo[i]];
         name += "_" + (c.key == "file" ? record_label(c, combo[i]) : c.key + text);
     }
-    return file_stem(name);
+    return io::file_stem(name);
 }
 
 // The point's value: the median peak, an overturned run counting as the largest; NaN for none.
@@ -117,7 +117,7 @@ std::pair<double, bool> peak_point(const std::vector<double>& peaks) {
     return {std::isinf(m) ? 1.0 : m, std::isinf(m)};
 }
 
-PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturning& over, const PanelSplit& split,
+io::PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturning& over, const PanelSplit& split,
                         std::size_t plot, const std::vector<std::uint32_t>& combo) {
     const std::size_t alpha = d.column("alpha"), R = d.column("R");
     const ColumnLevels& ac = d.columns[alpha];
@@ -139,9 +139,9 @@ PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturning&
     for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back("R " + rc.texts[rc.order[p]] + " m");
     std::vector<std::string> engines;
     for (const Series& s : d.series) engines.push_back(s.engine);
-    const std::vector<std::size_t> variants = series_variants(engines);
+    const std::vector<std::size_t> variants = io::series_variants(engines);
     for (std::size_t l = 0; l < d.series.size(); ++l)
-        f.lines.push_back({d.series[l].label, series_style(d.series[l].engine, variants[l])});
+        f.lines.push_back({d.series[l].label, io::series_style(d.series[l].engine, variants[l])});
     for (std::uint32_t level : ac.order) f.x.push_back(ac.values[level]);
     f.marker_title = over.measured() ? "overturned" : "";
     f.setup = "set xrange [0:*]\nset yrange [0:*]\nset arrow from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc "
@@ -170,7 +170,7 @@ PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturning&
 }
 
 // The overturning map of one plot: a panel per series (the first kMaxPanels), a point per amplitude and pulse period.
-PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const Overturning& over,
+io::PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const Overturning& over,
                     const PanelSplit& split, std::size_t plot, const std::vector<std::uint32_t>& combo) {
     const std::size_t amp = d.column("amplitude"), period = d.column("pulse_period");
     const ColumnLevels& ac = d.columns[amp];
@@ -194,7 +194,7 @@ PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const O
             else verdicts[l][k].push_back(over.overturned(r) ? 1.0 : 0.0);
         }
     }
-    PlotScript s;
+    io::PlotScript s;
     s.plot.section = kMapSection;
     s.plot.name = split_name(d, "overturning_map", split, combo);
     const std::string where = levels_title(d, split.split, combo);
@@ -206,7 +206,7 @@ PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const O
                                                         : "");
     s.dat = "# pulse_period amplitude peak_capped overturned   (one block per series)\n";
     for (std::size_t l = 0; l < panels; ++l) {
-        s.dat += fmt::format("# {}\n", gp_comment(d.series[l].label));
+        s.dat += fmt::format("# {}\n", io::gp_comment(d.series[l].label));
         for (std::size_t k = 0; k < points; ++k) {
             double shown = std::nan("");
             bool overturned = false;
@@ -214,20 +214,20 @@ PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const O
             if (!peak && !verdicts[l][k].empty()) overturned = summarise(verdicts[l][k], true) > 0.5;
             const bool any = !(peak ? peaks[l][k] : verdicts[l][k]).empty();
             // The last column: 1 overturned, 0 standing, -1 no run there.
-            s.dat += fmt::format("{} {} {} {}\n", gp_number(pc.values[pc.order[k % pc.order.size()]]),
-                                 gp_number(ac.values[ac.order[k / pc.order.size()]]),
-                                 gp_number(peak ? std::min(shown, 1.0) : std::nan("")),
+            s.dat += fmt::format("{} {} {} {}\n", io::gp_number(pc.values[pc.order[k % pc.order.size()]]),
+                                 io::gp_number(ac.values[ac.order[k / pc.order.size()]]),
+                                 io::gp_number(peak ? std::min(shown, 1.0) : std::nan("")),
                                  any ? (overturned ? 1 : 0) : -1);
         }
         s.dat += "\n\n";
     }
     const PanelLayout layout = panel_layout(panels);
-    s.gp = gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
-           gp_xlabel(parameter_label("pulse_period"), !layout.multiplot()) +
+    s.gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
+           io::gp_xlabel(parameter_label("pulse_period"), !layout.multiplot()) +
            fmt::format("set ylabel {}\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
                        "set palette defined (0 '#2c7bb6', 0.5 '#ffffbf', 1 '#d7191c')\nset cbrange [0:1]\n"
                        "set cblabel 'peak rotation / alpha (capped at 1)'\n",
-                       gp_string(parameter_label("amplitude"))) +
+                       io::gp_string(parameter_label("amplitude"))) +
            layout_begin(layout, s.plot.title);
     const std::string standing =
         peak ? "with points pt 7 ps 1.6 lc palette" : "with points pt 7 ps 1.6 lc rgb '#2c7bb6'";

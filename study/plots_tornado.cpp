@@ -22,49 +22,49 @@ constexpr const char* kMedianStyle = "pt 7 ps 1.4 lc rgb 'black'";
 
 std::string bar_label(const Effect& e) { return fmt::format("{}: {} -> {}", e.parameter, e.from, e.to); }
 
-PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Effect*> bars) {
+io::PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Effect*> bars) {
     // Largest first, at the top: the bar's reach, then its median.
     std::stable_sort(bars.begin(), bars.end(), [](const Effect* a, const Effect* b) {
         if (a->extent() != b->extent()) return a->extent() > b->extent();
         return a->magnitude() > b->magnitude();
     });
     const MetricMeta& m = d.metrics[metric];
-    PlotScript s;
+    io::PlotScript s;
     s.plot.section = kTornadoSection;
-    s.plot.name = file_stem("tornado_" + m.name);
+    s.plot.name = io::file_stem("tornado_" + m.name);
     s.plot.title = m.binary
                        ? fmt::format("{}: share of paired runs that flip (right: to 1, left: to 0; dot: net)", m.name)
                        : fmt::format("{}: change with each assumption (bar: smallest to largest; dot: median)", m.name);
     s.dat = fmt::format("# {}\n# y label lo median hi pairs hover_text   (changes as fractions; binary metric: "
                         "shares of pairs, lo = -(1 -> 0), hi = +(0 -> 1), median = net)\n",
-                        gp_comment(m.name));
+                        io::gp_comment(m.name));
     const std::size_t n = bars.size();
     for (std::size_t i = 0; i < n; ++i) {
         const Effect& e = *bars[i];
         const std::string range = fmt::format("{:.4g} to {:.4g} %, median", 100.0 * e.lo, 100.0 * e.hi);
-        s.dat += fmt::format("{} {} {} {} {} {} {}\n", n - 1 - i, gp_data_string(bar_label(e)), gp_number(e.lo),
-                             gp_number(e.median), gp_number(e.hi), e.pairs,
-                             gp_hover_text(bar_label(e), range, 100.0 * e.median, "%"));
+        s.dat += fmt::format("{} {} {} {} {} {} {}\n", n - 1 - i, io::gp_data_string(bar_label(e)), io::gp_number(e.lo),
+                             io::gp_number(e.median), io::gp_number(e.hi), e.pairs,
+                             io::gp_hover_text(bar_label(e), range, 100.0 * e.median, "%"));
     }
     // The bars' labels from the script, quoted by gp_string: a data file's strings are read another way (gnuplot.hpp).
     std::string tics;
     for (std::size_t i = 0; i < n; ++i)
-        tics += fmt::format("{}{} {}", i == 0 ? "set ytics (" : ", \\\n    ", gp_string(bar_label(*bars[i])), n - 1 - i);
+        tics += fmt::format("{}{} {}", i == 0 ? "set ytics (" : ", \\\n    ", io::gp_string(bar_label(*bars[i])), n - 1 - i);
     const int height = kFramePixels + kBarPixels * static_cast<int>(n);
-    s.gp = gp_preamble("vssw study", s.plot.name, kTornadoWidth, height) +
+    s.gp = io::gp_preamble("vssw study", s.plot.name, kTornadoWidth, height) +
            fmt::format("set title {}\n{}set yrange [-0.6:{}]\nset ytics nomirror\n{})\nunset key\n"
                        "set arrow from 0, graph 0 to 0, graph 1 nohead lc rgb '#555555'\n"
                        "set xrange [*<{}:{}<*]\nset offsets graph 0.05, graph 0.05, 0, 0\n",
-                       gp_string(s.plot.title),
-                       gp_xlabel(m.binary ? "share of paired runs [%]" : "relative change of " + m.name + " [%]",
+                       io::gp_string(s.plot.title),
+                       io::gp_xlabel(m.binary ? "share of paired runs [%]" : "relative change of " + m.name + " [%]",
                                  false),
-                       static_cast<double>(n) - 0.4, tics, gp_number(-kMinChangePercent),
-                       gp_number(kMinChangePercent)) +
+                       static_cast<double>(n) - 0.4, tics, io::gp_number(-kMinChangePercent),
+                       io::gp_number(kMinChangePercent)) +
            fmt::format("plot '{0}.dat' using (50*($3+$5)):1:(100*$3):(100*$5):($1-{1}):($1+{1}) with "
                        "boxxyerror fs solid 0.45 noborder lc rgb '#1f77b4', \\\n"
                        "     '{0}.dat' using (100*$4):1 with points {2}, \\\n     {3}\n",
                        s.plot.name, kBarHalfHeight, kMedianStyle,
-                       gp_hover_layer(fmt::format("'{}.dat' using (100*$4):1:(stringcolumn(7))", s.plot.name),
+                       io::gp_hover_layer(fmt::format("'{}.dat' using (100*$4):1:(stringcolumn(7))", s.plot.name),
                                       kMedianStyle));
     return s;
 }

@@ -75,7 +75,7 @@ void fill_values(const StudyData& d, std::size_t metric, std::size_t x, const Pa
 }
 
 // Empty when the metric has no value to draw against x.
-std::optional<PlotScript> value_plot(const StudyData& d, std::size_t metric, std::size_t x) {
+std::optional<io::PlotScript> value_plot(const StudyData& d, std::size_t metric, std::size_t x) {
     const ColumnLevels& xc = d.columns[x];
     const MetricMeta& m = d.metrics[metric];
     const std::vector<std::size_t> ignored = xc.assumption ? std::vector<std::size_t>{x} : std::vector<std::size_t>{};
@@ -84,7 +84,7 @@ std::optional<PlotScript> value_plot(const StudyData& d, std::size_t metric, std
 
     LineFigure f;
     f.section = kValueSection;
-    f.name = file_stem(fmt::format("value_{}_vs_{}", m.name, xc.key));
+    f.name = io::file_stem(fmt::format("value_{}_vs_{}", m.name, xc.key));
     f.title = fmt::format("{} against {}{}", m.name, xc.key, summary_note(d, split.rest, m.binary));
     f.xlabel = parameter_label(xc.key);
     f.ylabel = m.binary ? m.name + " (share of runs)" : metric_label(m);
@@ -100,9 +100,9 @@ std::optional<PlotScript> value_plot(const StudyData& d, std::size_t metric, std
         f.panel_titles.push_back(split.split.empty() ? f.title : levels_title(d, split.split, combo));
     std::vector<std::string> engines;
     for (const ValueLine& line : lines) engines.push_back(line.series.engine);
-    const std::vector<std::size_t> variants = series_variants(engines);
+    const std::vector<std::size_t> variants = io::series_variants(engines);
     for (std::size_t l = 0; l < lines.size(); ++l)
-        f.lines.push_back({lines[l].label, series_style(lines[l].series.engine, variants[l])});
+        f.lines.push_back({lines[l].label, io::series_style(lines[l].series.engine, variants[l])});
     for (std::size_t k = 0; k < xc.order.size(); ++k) {
         f.x.push_back(xc.numeric ? xc.values[xc.order[k]] : static_cast<double>(k));
         if (!xc.numeric) f.categories.push_back(xc.texts[xc.order[k]]);
@@ -128,7 +128,7 @@ void add_value_plots(const StudyData& d, StudyPlots& out) {
                 ++left_out;
                 continue;
             }
-            if (std::optional<PlotScript> s = value_plot(d, m, x)) {
+            if (std::optional<io::PlotScript> s = value_plot(d, m, x)) {
                 out.scripts.push_back(std::move(*s));
                 ++drawn;
             }

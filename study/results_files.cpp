@@ -50,12 +50,12 @@ void write_results_csv(std::ostream& out, const Grid& grid, const std::vector<Re
         }
         const RunSpec& run = grid.runs().at(r.run);
         const std::string& metric = spec.metrics.at(r.metric);
-        out << r.case_id << ',' << csv_field(run.engine);
-        for (const std::string& v : grid.column_values(c, run)) out << ',' << csv_field(v);
+        out << r.case_id << ',' << io::csv_field(run.engine);
+        for (const std::string& v : grid.column_values(c, run)) out << ',' << io::csv_field(v);
         // Shortest exact form: a value reads back to the same double, and a tidy file stays short.
         const std::string value = std::isfinite(r.value) ? fmt::format("{}", r.value) : "";
-        out << ',' << metric << ',' << value << ',' << csv_field(metric_info(metric).unit) << ','
-            << csv_field(r.status) << ',' << csv_field(r.warnings) << '\n';
+        out << ',' << metric << ',' << value << ',' << io::csv_field(metric_info(metric).unit) << ','
+            << io::csv_field(r.status) << ',' << io::csv_field(r.warnings) << '\n';
     }
 }
 
@@ -75,7 +75,7 @@ Json manifest_json(const Grid& grid, const StudyMeta& meta) {
     }
     Json metrics = Json::array();
     for (const std::string& m : spec.metrics) {
-        const MetricInfo& info = metric_info(m);
+        const compare::MetricInfo& info = metric_info(m);
         metrics.push_back({{"name", m}, {"unit", info.unit}, {"description", info.description}});
     }
     Json j;
@@ -116,10 +116,10 @@ ResultsTable read_results_csv(const std::filesystem::path& path) {
     std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
     ResultsTable t;
     try {
-        if (!read_csv_record(in, t.header) || t.header.empty() || t.header.front() != "case_id")
+        if (!io::read_csv_record(in, t.header) || t.header.empty() || t.header.front() != "case_id")
             throw InputError("no header line starting with case_id");
         std::vector<std::string> fields;
-        while (read_csv_record(in, fields)) {
+        while (io::read_csv_record(in, fields)) {
             if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
             if (fields.size() != t.header.size())
                 throw InputError(fmt::format("row {} has {} fields, the header {}", t.rows.size() + 2, fields.size(),
@@ -149,16 +149,16 @@ std::string file_fnv1a(const std::filesystem::path& path) {
 void write_results_json(std::ostream& out, const Json& manifest, const std::filesystem::path& csv) {
     // Streamed: the manifest's keys, then "rows" one object at a time, so that a large study needs no large JSON
     // value in memory.
-    std::string head = dump_json(manifest, 2);
+    std::string head = io::dump_json(manifest, 2);
     head.pop_back();  // the closing brace
     while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
     out << head << ",\n  \"rows\": [";
     std::ifstream in(csv, std::ios::binary);
     if (!in) throw InputError(fmt::format("cannot read '{}'", csv.string()));
     std::vector<std::string> header, fields;
-    read_csv_record(in, header);
+    io::read_csv_record(in, header);
     bool first = true;
-    while (read_csv_record(in, fields)) {
+    while (io::read_csv_record(in, fields)) {
         if (fields.size() != header.size()) continue;
         Json row;
         for (std::size_t i = 0; i < header.size(); ++i) {
@@ -171,7 +171,7 @@ void write_results_json(std::ostream& out, const Json& manifest, const std::file
             else if (header[i] == "case_id" || header[i] == "specimen") row[header[i]] = static_cast<long>(x);
             else row[header[i]] = x;
         }
-        out << (first ? "\n    " : ",\n    ") << dump_json(row);
+        out << (first ? "\n    " : ",\n    ") << io::dump_json(row);
         first = false;
     }
     out << (first ? "]\n}\n" : "\n  ]\n}\n");

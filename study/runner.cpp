@@ -92,12 +92,12 @@ std::vector<ResultRow> with_thresholds(const Grid& grid, Shard shard, std::vecto
 
 }  // namespace
 
-FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
+io::FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyRunOptions& options) {
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(fmt::format("--out '{}' is not a folder", dir.string()));
     // Locked before the journal is looked at: a run still going there is named, not read half-written.
-    FolderLock lock = check_out_folder(dir, OutKind::study);
+    io::FolderLock lock = io::check_out_folder(dir, io::OutKind::study);
     // A refused study leaves no folder behind: one made here is removed again (empty) when it is refused below.
     const bool existed = fs::exists(dir, ec);
     if (options.resume && !existed)
@@ -126,7 +126,7 @@ FolderLock prepare_study_dir(const Grid& grid, const fs::path& dir, const StudyR
                                      "--out",
                                      dir.string(), kJournalFile));
     }
-    AtomicFile probe(dir / ".vssw-write-test");  // InputError naming the folder when nothing can be written there
+    io::AtomicFile probe(dir / ".vssw-write-test");  // InputError naming the folder when nothing can be written there
     made.keep = true;
     return lock;
 }
@@ -282,11 +282,11 @@ void write_results(const Grid& grid, const fs::path& journal_path, const fs::pat
     });
     for (const ResultRow& r : rows) result.failed_rows += r.status == "ok" ? 0 : 1;
     result.rows = static_cast<long>(rows.size());
-    AtomicFile csv(results_dir / kResultsCsv);
+    io::AtomicFile csv(results_dir / kResultsCsv);
     write_results_csv(csv.stream(), grid, rows);
     csv.commit();
     if (!ida.empty()) {
-        AtomicFile curves(results_dir / kIdaCsv);
+        io::AtomicFile curves(results_dir / kIdaCsv);
         write_ida_csv(curves.stream(), grid, std::move(ida));
         curves.commit();
     }
@@ -343,13 +343,13 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
 
     result.meta.commit = options.commit;
     result.meta.run_budget_s = multibody::RunBudget::given();
-    result.meta.date = utc_now();
+    result.meta.date = io::utc_now();
     result.meta.shard = options.shard;
     result.meta.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (journal.journal) {
         // The manifest last; the journal goes once the results are in place.
-        AtomicFile manifest(results_dir / kManifestFile);
-        manifest.stream() << dump_json(manifest_json(grid, result.meta), 2) << '\n';
+        io::AtomicFile manifest(results_dir / kManifestFile);
+        manifest.stream() << io::dump_json(manifest_json(grid, result.meta), 2) << '\n';
         manifest.commit();
         if (results_dir == dir) fs::remove(journal_path, ec);
     }

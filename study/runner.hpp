@@ -41,7 +41,7 @@ struct StudyRunResult {
 // lock returned, to be held while the study runs); without --resume it must hold no journal of an unfinished study
 // (resume it or choose another folder); with --resume it must hold this study's journal, or results of this study
 // already complete.
-FolderLock prepare_study_dir(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
+io::FolderLock prepare_study_dir(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
 
 // Runs the study into DIR (results.csv, manifest.json). InputError on bad input (nothing runs); a failing task is rows
 // with their reasons.

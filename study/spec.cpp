@@ -104,7 +104,7 @@ public:
                       const std::string& where = "") const {
         const json& t = doc.at(key);
         const std::string name = where.empty() ? key : where;
-        if (!t.is_object()) fail(name, fmt::format("must be a table of keys, got {}", dump_json(t)));
+        if (!t.is_object()) fail(name, fmt::format("must be a table of keys, got {}", io::dump_json(t)));
         unknown_keys(t, name, known);
         return t;
     }
@@ -138,17 +138,17 @@ public:
     double number(const json& v, const std::string& key, const std::string& rule) const {
         // JSON has no NaN; TOML's nan and inf come through the JSON formatter as text or non-numbers.
         if (!v.is_number() || !std::isfinite(v.get<double>()))
-            fail(key, fmt::format("must be a finite number ({}), got {}", rule, dump_json(v)));
+            fail(key, fmt::format("must be a finite number ({}), got {}", rule, io::dump_json(v)));
         return v.get<double>();
     }
     double positive(const json& v, const std::string& key, const std::string& rule) const {
         const double x = number(v, key, rule);
-        if (!(x > 0.0)) fail(key, fmt::format("must be {}, got {}", rule, dump_json(v)));
+        if (!(x > 0.0)) fail(key, fmt::format("must be {}, got {}", rule, io::dump_json(v)));
         return x;
     }
     std::string word(const json& v, const std::string& key, const std::vector<std::string>& allowed) const {
         if (!v.is_string() || (!allowed.empty() && !contains(allowed, v.get<std::string>())))
-            fail(key, fmt::format("must be one of {}, got {}", fmt::join(allowed, ", "), dump_json(v)));
+            fail(key, fmt::format("must be one of {}, got {}", fmt::join(allowed, ", "), io::dump_json(v)));
         return v.get<std::string>();
     }
 
@@ -168,12 +168,12 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
     if (k == "specimen") {
         const double x = r.number(v, key, "a Table 1 specimen number");
         if (x != std::floor(x) || x < 1.0 || x > kMaxSpecimen)
-            r.fail(key, fmt::format("must be a Table 1 specimen number, got {}", dump_json(v)));
+            r.fail(key, fmt::format("must be a Table 1 specimen number, got {}", io::dump_json(v)));
         return x;
     }
     if (k == "xi") {
         const double x = r.number(v, key, "N/W >= 0");
-        if (x < 0.0) r.fail(key, fmt::format("must be N/W >= 0, got {}", dump_json(v)));
+        if (x < 0.0) r.fail(key, fmt::format("must be N/W >= 0, got {}", io::dump_json(v)));
         return x;
     }
     // Lengths, angles, density, g: positive; their ranges are the wall constructors' (analytic/wall.hpp), checked
@@ -188,7 +188,7 @@ Level assumption_level(const Reader& r, const std::string& key, const json& v) {
     // impact: a law by name or an impact ratio.
     if (v.is_string()) return r.word(v, key, {"eq19", "whole-mechanism"});
     const double e = r.number(v, key, "eq19, whole-mechanism or a ratio in [0, 1]");
-    if (e < 0.0 || e > 1.0) r.fail(key, fmt::format("an impact ratio must be in [0, 1], got {}", dump_json(v)));
+    if (e < 0.0 || e > 1.0) r.fail(key, fmt::format("an impact ratio must be in [0, 1], got {}", io::dump_json(v)));
     return e;
 }
 
@@ -216,7 +216,7 @@ void read_assumptions(const Reader& r, const json& doc, StudySpec& s) {
         if (set.is_array())
             r.fail("assumptions.set", fmt::format("one set per study, got {}: vary kinematics, impact or roller (the "
                                                   "three varied hold both sets), or run one study per set",
-                                                  dump_json(set)));
+                                                  io::dump_json(set)));
         s.assumption_set = parse_assumption_set(r.word(set, "assumptions.set", {"paper", "mechanism"}));
     }
     s.assumptions = set_levels(s.assumption_set);
@@ -232,7 +232,7 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
     const std::string k = key.substr(key.rfind('.') + 1);
     if (k == "file") {
         if (!v.is_string() || v.get<std::string>().empty())
-            r.fail(key, fmt::format("must be the path of a record file, got {}", dump_json(v)));
+            r.fail(key, fmt::format("must be the path of a record file, got {}", io::dump_json(v)));
         return v.get<std::string>();
     }
     if (k == "units") {
@@ -248,7 +248,7 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
     if (k == "perturbation") return r.word(v, key, kPerturbations);
     if (k == "theta0") {
         const double x = r.number(v, key, "a fraction of alpha");
-        if (x < kMinTheta0) r.fail(key, fmt::format("must be at least {} (a fraction of alpha), got {}", kMinTheta0, dump_json(v)));
+        if (x < kMinTheta0) r.fail(key, fmt::format("must be at least {} (a fraction of alpha), got {}", kMinTheta0, io::dump_json(v)));
         return x;
     }
     if (k == "step") {
@@ -257,19 +257,19 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
         // 2e9 runs and never ended.
         const double x = r.number(v, key, "a relative increment in [0.001, 1]");
         if (!(x >= kMinCollapseStep && x <= 1.0))
-            r.fail(key, fmt::format("must be a relative increment in [{}, 1], got {}", kMinCollapseStep, dump_json(v)));
+            r.fail(key, fmt::format("must be a relative increment in [{}, 1], got {}", kMinCollapseStep, io::dump_json(v)));
         return x;
     }
     if (k == "response_tail") {
         // 0 ends the run with the motion; a run also ends at rest or overturning, and a tail too long for the step
         // is refused before anything runs (require_runs_resolve: 1e8 steps).
         const double x = r.number(v, key, "a time in s, 0 or more");
-        if (!(x >= 0.0)) r.fail(key, fmt::format("must be a time in s, 0 or more, got {}", dump_json(v)));
+        if (!(x >= 0.0)) r.fail(key, fmt::format("must be a time in s, 0 or more, got {}", io::dump_json(v)));
         return x;
     }
     if (k == "sa_damping") {
         const double x = r.number(v, key, "a damping ratio in [0, 1)");
-        if (!(x >= 0.0 && x < 1.0)) r.fail(key, fmt::format("must be a damping ratio in [0, 1), got {}", dump_json(v)));
+        if (!(x >= 0.0 && x < 1.0)) r.fail(key, fmt::format("must be a damping ratio in [0, 1), got {}", io::dump_json(v)));
         return x;
     }
     if (k == "tolerance") {
@@ -277,7 +277,7 @@ Level excitation_level(const Reader& r, const std::string& key, const json& v) {
         // without end).
         const double x = r.number(v, key, "a relative width in [1e-12, 0.1]");
         if (!(x >= kMinCollapseTolerance && x <= 0.1))
-            r.fail(key, fmt::format("must be a relative width in [{:g}, 0.1], got {}", kMinCollapseTolerance, dump_json(v)));
+            r.fail(key, fmt::format("must be a relative width in [{:g}, 0.1], got {}", kMinCollapseTolerance, io::dump_json(v)));
         return x;
     }
     return r.positive(v, key, "a positive number");
@@ -348,11 +348,11 @@ std::vector<std::string> ensemble_files(const Reader& r, const std::string& key,
         if (!fs::exists(fs::symlink_status(dir / table, table_ec))) continue;
         std::ifstream in = open_input_file(dir / table, fmt::format("{}: the table", key), kMaxTextFileBytes);
         std::vector<std::string> fields;
-        if (!read_csv_record(in, fields)) continue;
+        if (!io::read_csv_record(in, fields)) continue;
         const auto column = std::find(fields.begin(), fields.end(), "file");
         if (column == fields.end()) continue;
         const std::size_t at = static_cast<std::size_t>(column - fields.begin());
-        while (read_csv_record(in, fields)) {
+        while (io::read_csv_record(in, fields)) {
             if (fields.size() <= at || fields[at].empty()) continue;
             if (fs::path(fields[at]).has_parent_path() || fields[at] == "..")
                 r.fail(key, fmt::format("\"{}\" lists \"{}\", which is not a file name in \"{}\" (a folder's table "
@@ -365,8 +365,8 @@ std::vector<std::string> ensemble_files(const Reader& r, const std::string& key,
         }
     }
     for (const std::string& name : names)  // a name goes into results.json and the pages, both UTF-8
-        if (const auto mistake = not_utf8(name))
-            r.fail(key, fmt::format("the record {} in \"{}\": rename it", *mistake, printable(folder)));
+        if (const auto mistake = io::not_utf8(name))
+            r.fail(key, fmt::format("the record {} in \"{}\": rename it", *mistake, io::printable(folder)));
     if (names.empty())
         r.fail(key, fmt::format("no records in \"{}\" (*.at2 files, or a records.csv or motions.csv naming them in "
                                 "its 'file' column)",
@@ -383,7 +383,7 @@ const std::vector<std::string> kEnsembleKeys = {"kind",  "files",    "ensemble",
 bool flag(const Reader& r, const json& ex, const std::string& ex_key, const char* name) {
     if (!ex.contains(name)) return false;
     if (!ex[name].is_boolean())
-        r.fail(ex_key + "." + name, fmt::format("must be true or false, got {}", dump_json(ex[name])));
+        r.fail(ex_key + "." + name, fmt::format("must be true or false, got {}", io::dump_json(ex[name])));
     return ex[name].get<bool>();
 }
 
@@ -421,13 +421,13 @@ json read_ensemble(const Reader& r, const json& ex, const std::string& ex_key, c
     if (ex.contains("files")) {
         const Axis files = r.axis(ex["files"], key("files"), [&](const json& v) -> Level {
             if (!v.is_string() || v.get<std::string>().empty())
-                r.fail(key("files"), fmt::format("must list paths of record files, got {}", dump_json(v)));
+                r.fail(key("files"), fmt::format("must list paths of record files, got {}", io::dump_json(v)));
             return v.get<std::string>();
         });
         for (const Level& f : files.levels) out["file"].push_back(std::get<std::string>(f));
     } else {
         if (!ex["ensemble"].is_string() || ex["ensemble"].get<std::string>().empty())
-            r.fail(key("ensemble"), fmt::format("must be the path of a folder of records, got {}", dump_json(ex["ensemble"])));
+            r.fail(key("ensemble"), fmt::format("must be the path of a folder of records, got {}", io::dump_json(ex["ensemble"])));
         e.folder = ex["ensemble"].get<std::string>();
         out["file"] = ensemble_files(r, key("ensemble"), e.folder, base_dir);
     }
@@ -516,7 +516,7 @@ std::vector<Axis> read_axes(const Reader& r, const json& t, const std::string& t
 
 // [settings.NAME] or [engines.NAME]: dt, iterations, knobs; each a number or a list of numbers.
 std::vector<Axis> read_settings(const Reader& r, const json& t, const std::string& where, const std::string& engine) {
-    if (!t.is_object()) r.fail(where, fmt::format("must be a table of settings, got {}", dump_json(t)));
+    if (!t.is_object()) r.fail(where, fmt::format("must be a table of settings, got {}", io::dump_json(t)));
     std::vector<Axis> axes;
     // dt, iterations, then the knobs by name (a JSON object's keys come sorted).
     std::vector<std::string> keys;
@@ -538,7 +538,7 @@ std::vector<Axis> read_settings(const Reader& r, const json& t, const std::strin
             if (k == "dt") return r.positive(v, key, "the engine step in s, > 0");
             const double x = r.number(v, key, "a number");
             if (k == "iterations" && (x != std::floor(x) || x < 1.0 || x > kMaxIterations))
-                r.fail(key, fmt::format("must be an integer from 1 to {}, got {}", kMaxIterations, dump_json(v)));
+                r.fail(key, fmt::format("must be an integer from 1 to {}, got {}", kMaxIterations, io::dump_json(v)));
             return x;
         }));
     }
@@ -560,7 +560,7 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
     } else if (doc["engines"].is_array()) {
         if (doc["engines"].empty()) r.fail("engines", "an empty list: name at least one engine");
         for (const json& v : doc["engines"]) {
-            if (!v.is_string()) r.fail("engines", fmt::format("must list engine names, got {}", dump_json(v)));
+            if (!v.is_string()) r.fail("engines", fmt::format("must list engine names, got {}", io::dump_json(v)));
             add(v.get<std::string>(), "engines");
         }
     } else if (doc["engines"].is_object()) {
@@ -577,11 +577,11 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
                                               fmt::join(available, ", ")));
     } else {
         r.fail("engines", fmt::format("must be a list of engine names or a table of engines, got {}",
-                                      dump_json(doc["engines"])));
+                                      io::dump_json(doc["engines"])));
     }
     if (doc.contains("settings")) {
         const json& s = doc["settings"];
-        if (!s.is_object()) r.fail("settings", fmt::format("must be a table of engines, got {}", dump_json(s)));
+        if (!s.is_object()) r.fail("settings", fmt::format("must be a table of engines, got {}", io::dump_json(s)));
         for (const auto& item : s.items()) {
             const auto it = std::find_if(engines.begin(), engines.end(),
                                          [&](const EngineSpec& e) { return e.name == item.key(); });
@@ -596,10 +596,10 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
 }
 
 std::vector<std::string> read_metrics(const Reader& r, const json& m, const std::string& key) {
-    if (!m.is_array() || m.empty()) r.fail(key, fmt::format("must be a non-empty list of metric names, got {}", dump_json(m)));
+    if (!m.is_array() || m.empty()) r.fail(key, fmt::format("must be a non-empty list of metric names, got {}", io::dump_json(m)));
     std::vector<std::string> out;
     for (const json& v : m) {
-        if (!v.is_string()) r.fail(key, fmt::format("must list metric names, got {}", dump_json(v)));
+        if (!v.is_string()) r.fail(key, fmt::format("must list metric names, got {}", io::dump_json(v)));
         const std::string metric = v.get<std::string>();
         try {
             (void)metric_info(metric);
@@ -653,7 +653,7 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
     if (!t.contains("excitation")) r.fail(where, "no [excitation] table (kind = closed-form, threshold, free, ...)");
     const json& given = t["excitation"];
     const std::string ex_key = key("excitation");
-    if (!given.is_object()) r.fail(ex_key, fmt::format("must be a table of keys, got {}", dump_json(given)));
+    if (!given.is_object()) r.fail(ex_key, fmt::format("must be a table of keys, got {}", io::dump_json(given)));
     if (!given.contains("kind")) r.fail(ex_key, "'kind' is missing");
     json expanded;
     if (given["kind"] == "ensemble") {
@@ -718,7 +718,7 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
     p.engines = study.engines;
     if (!where.empty() && t.contains("settings")) {
         const json& st = t["settings"];
-        if (!st.is_object()) r.fail(key("settings"), fmt::format("must be a table of engines, got {}", dump_json(st)));
+        if (!st.is_object()) r.fail(key("settings"), fmt::format("must be a table of engines, got {}", io::dump_json(st)));
         for (const auto& item : st.items()) {
             const auto it = std::find_if(p.engines.begin(), p.engines.end(),
                                          [&](const EngineSpec& e) { return e.name == item.key(); });
@@ -744,14 +744,14 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
                                     std::pair{"record_label", &p.names.record_label}})
             if (t.contains(name)) {
                 if (!t[name].is_string() || t[name].get<std::string>().empty())
-                    r.fail(key(name), fmt::format("must be a non-empty template, got {}", dump_json(t[name])));
+                    r.fail(key(name), fmt::format("must be a non-empty template, got {}", io::dump_json(t[name])));
                 *target = t[name].get<std::string>();
                 if (const auto why = template_too_wide(*target)) r.fail(key(name), fmt::format("\"{}\": {}", *target, *why));
             }
         if (t.contains("skip_falling_releases")) {
             if (!t["skip_falling_releases"].is_boolean())
                 r.fail(key("skip_falling_releases"),
-                       fmt::format("must be true or false, got {}", dump_json(t["skip_falling_releases"])));
+                       fmt::format("must be true or false, got {}", io::dump_json(t["skip_falling_releases"])));
             p.skip_falling_releases = t["skip_falling_releases"].get<bool>();
             if (p.skip_falling_releases && p.kind != ExcitationKind::free)
                 r.fail(key("skip_falling_releases"), "is for kind free (a release from theta0)");
@@ -810,14 +810,14 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
     s.as_read = doc;
     if (doc.contains("name")) {
         if (!doc["name"].is_string() || doc["name"].get<std::string>().empty())
-            r.fail("name", fmt::format("must be a non-empty string, got {}", dump_json(doc["name"])));
+            r.fail("name", fmt::format("must be a non-empty string, got {}", io::dump_json(doc["name"])));
         s.name = doc["name"].get<std::string>();
     } else {
         s.name = std::filesystem::path(name).stem().string();
     }
     if (doc.contains("description")) {
         if (!doc["description"].is_string())
-            r.fail("description", fmt::format("must be a string, got {}", dump_json(doc["description"])));
+            r.fail("description", fmt::format("must be a string, got {}", io::dump_json(doc["description"])));
         s.description = doc["description"].get<std::string>();
     }
 
@@ -868,7 +868,7 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
     const bool stops = analytic && std::find(impact.levels.begin(), impact.levels.end(), Level{0.0}) != impact.levels.end();
     for (const PartSpec& part : s.parts)
         for (const std::string& metric : part.metrics)
-            if (stops && metric_info(metric).source == MetricSource::free)
+            if (stops && metric_info(metric).source == compare::MetricSource::free)
                 r.fail("assumptions.impact",
                        fmt::format("0 stops the wall at its first return to upright, where a study finds no impact "
                                    "to measure '{}' from (impacts are crossings of upright); use vssw free --impact 0 "
@@ -878,7 +878,7 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
 }
 
 StudySpec read_study_file(const std::string& path) {
-    const json doc = read_config_file(path, kWhat);
+    const json doc = io::read_config_file(path, kWhat);
     const std::filesystem::path dir = std::filesystem::path(path).parent_path();
     return study_from_json(doc, path, dir.empty() ? std::string(".") : dir.string());
 }

@@ -82,7 +82,7 @@ std::size_t header_index(const std::vector<std::string>& header, const std::stri
 }
 
 void read_metrics(StudyData& d) {
-    for (const Json& m : d.manifest.at("metrics"))
+    for (const io::Json& m : d.manifest.at("metrics"))
         d.metrics.push_back({m.at("name").get<std::string>(), m.at("unit").get<std::string>(),
                              m.value("description", std::string()), false, false});
 }
@@ -92,7 +92,7 @@ void order_assumptions(StudyData& d) {
     for (ColumnLevels& c : d.columns) {
         if (!c.assumption) continue;
         std::vector<std::uint32_t> order;
-        for (const Json& run : d.manifest.at("runs")) {
+        for (const io::Json& run : d.manifest.at("runs")) {
             if (!run.contains(c.key)) continue;
             const std::string text = canonical_level(run.at(c.key).get<std::string>());
             for (std::uint32_t id = 1; id < c.texts.size(); ++id)
@@ -108,7 +108,7 @@ void order_assumptions(StudyData& d) {
 void classify_columns(StudyData& d) {
     for (const std::string& key : kAssumptionKeys) d.assumption_columns.push_back(d.column(key));
     std::set<std::string> varied;
-    for (const Json& v : d.manifest.at("varied")) varied.insert(v.get<std::string>());
+    for (const io::Json& v : d.manifest.at("varied")) varied.insert(v.get<std::string>());
     for (ColumnLevels& c : d.columns) {
         c.assumption = std::find(kAssumptionKeys.begin(), kAssumptionKeys.end(), c.key) != kAssumptionKeys.end();
         c.varied = varied.count(c.key) > 0;
@@ -119,7 +119,7 @@ void classify_columns(StudyData& d) {
 }
 
 void read_series(StudyData& d) {
-    for (const Json& run : d.manifest.at("runs")) {
+    for (const io::Json& run : d.manifest.at("runs")) {
         Series s;
         s.engine = run.at("engine").get<std::string>();
         s.settings = run.value("settings", std::string());
@@ -136,7 +136,7 @@ void read_rows(StudyData& d, const fs::path& path) {
     std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
     std::vector<std::string> header, fields;
     try {
-        if (!read_csv_record(in, header) || header.empty() || header.front() != "case_id")
+        if (!io::read_csv_record(in, header) || header.empty() || header.front() != "case_id")
             throw InputError("no header line starting with case_id");
     } catch (const InputError& e) {
         throw InputError(fmt::format("{}: {}", path.string(), e.what()));
@@ -156,7 +156,7 @@ void read_rows(StudyData& d, const fs::path& path) {
     std::set<std::tuple<int, std::vector<std::uint32_t>>> warned_tasks;
     std::unordered_map<std::string, std::uint32_t> status_index;
     try {
-        while (read_csv_record(in, fields)) {
+        while (io::read_csv_record(in, fields)) {
             if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
             if (fields.size() != header.size())
                 throw InputError(fmt::format("a row of {} fields, the header has {}", fields.size(), header.size()));
@@ -243,12 +243,12 @@ StudyData read_study_data(const fs::path& dir) {
     StudyData d;
     d.manifest = read_manifest(dir);
     try {
-        const Json& study = d.manifest.at("study");
+        const io::Json& study = d.manifest.at("study");
         d.name = study.at("name").get<std::string>();
         d.description = study.value("description", std::string());
         d.kind = study.at("kind").get<std::string>();
         read_metrics(d);
-    } catch (const Json::exception& e) {
+    } catch (const io::Json::exception& e) {
         throw InputError(fmt::format("'{}' is not a study manifest: {}", (dir / kManifestFile).string(), e.what()));
     }
     read_rows(d, dir / kResultsCsv);
@@ -256,7 +256,7 @@ StudyData read_study_data(const fs::path& dir) {
         classify_columns(d);
         order_assumptions(d);
         read_series(d);
-    } catch (const Json::exception& e) {
+    } catch (const io::Json::exception& e) {
         throw InputError(fmt::format("'{}' is not a study manifest: {}", (dir / kManifestFile).string(), e.what()));
     }
     classify_metrics(d);

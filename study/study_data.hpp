@@ -55,7 +55,7 @@ struct StudyRow {
 };
 
 struct StudyData {
-    Json manifest;
+    io::Json manifest;
     std::string name, description, kind;
     std::vector<ColumnLevels> columns;  // engine, then the grid's parameter columns up to settings
     std::vector<std::size_t> assumption_columns;  // the column of each of kAssumptionKeys (npos when absent)

@@ -20,7 +20,7 @@ const char* const kRunHeading = "Run";
 
 namespace {
 
-using Blocks = std::vector<DocBlock>;
+using Blocks = std::vector<io::DocBlock>;
 
 std::string levels_text(const ColumnLevels& c) {
     std::vector<std::string> texts;
@@ -31,9 +31,9 @@ std::string levels_text(const ColumnLevels& c) {
 std::string plural(long n, const std::string& noun) { return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s"); }
 
 void add_introduction(Blocks& b, const StudyData& d) {
-    if (!d.description.empty()) b.push_back(paragraph(d.description));
-    const Json& study = d.manifest.at("study");
-    b.push_back(paragraph(fmt::format("Study file {} (excitation: {}), identity {}. Written from the study folder's "
+    if (!d.description.empty()) b.push_back(io::paragraph(d.description));
+    const io::Json& study = d.manifest.at("study");
+    b.push_back(io::paragraph(fmt::format("Study file {} (excitation: {}), identity {}. Written from the study folder's "
                                       "manifest.json and results.csv.",
                                       study.value("file", std::string()), d.kind,
                                       study.value("identity", std::string()))));
@@ -42,14 +42,14 @@ void add_introduction(Blocks& b, const StudyData& d) {
 // The study's main figures, which open the page: those of the first of these sections that has any (the paper's
 // rocking curves, an ensemble's fragility, the overturning maps, the values against the varied parameters), at most
 // kGlanceFigures of them, then the first tornado chart (the largest effects of the model's assumptions).
-std::vector<Plot> main_figures(const PlotResult& plots) {
-    std::vector<Plot> out;
+std::vector<io::Plot> main_figures(const io::PlotResult& plots) {
+    std::vector<io::Plot> out;
     for (const char* section : {kRockingSection, kEnsembleSection, kMapSection, kValueSection}) {
-        for (const Plot& p : plots.plots)
+        for (const io::Plot& p : plots.plots)
             if (p.made && p.section == section && out.size() < kGlanceFigures) out.push_back(p);
         if (!out.empty()) break;
     }
-    for (const Plot& p : plots.plots)
+    for (const io::Plot& p : plots.plots)
         if (p.made && p.section == kTornadoSection) {
             out.push_back(p);
             break;
@@ -57,14 +57,14 @@ std::vector<Plot> main_figures(const PlotResult& plots) {
     return out;
 }
 
-bool is_shown(const std::vector<Plot>& shown, const Plot& p) {
-    return std::any_of(shown.begin(), shown.end(), [&](const Plot& s) { return s.name == p.name; });
+bool is_shown(const std::vector<io::Plot>& shown, const io::Plot& p) {
+    return std::any_of(shown.begin(), shown.end(), [&](const io::Plot& s) { return s.name == p.name; });
 }
 
-DocBlock effects_table(const StudyData& d, const std::vector<Effect>& effects);
+io::DocBlock effects_table(const StudyData& d, const std::vector<Effect>& effects);
 
 // What a reader came for, first: the main figures and the largest effects; every detail follows.
-void add_glance(Blocks& b, const StudyDocumentInput& in, const std::vector<Plot>& figures) {
+void add_glance(Blocks& b, const StudyDocumentInput& in, const std::vector<io::Plot>& figures) {
     const StudyData& d = in.data;
     // Each parameter and metric once, at its largest (effects come sorted largest first), as the sentences below
     // do: a parameter with many levels would otherwise fill the table with its own levels.
@@ -74,10 +74,10 @@ void add_glance(Blocks& b, const StudyDocumentInput& in, const std::vector<Plot>
         if (e.pairs > 0 && largest.size() < kGlanceEffects && said.insert({e.parameter, e.metric}).second)
             largest.push_back(e);
     if (figures.empty() && largest.empty()) return;
-    b.push_back(heading(2, "At a glance"));
-    for (const Plot& p : figures) b.push_back(plot(p.title, p.name));
+    b.push_back(io::heading(2, "At a glance"));
+    for (const io::Plot& p : figures) b.push_back(io::plot(p.title, p.name));
     if (largest.empty()) return;
-    b.push_back(paragraph(fmt::format(
+    b.push_back(io::paragraph(fmt::format(
         "The {}, each parameter and metric at the level of its largest effect against its first (every level under "
         "\"Largest sensitivities first\"):",
         largest.size() == 1 ? std::string("largest effect") : fmt::format("{} largest effects", largest.size()))));
@@ -85,20 +85,20 @@ void add_glance(Blocks& b, const StudyDocumentInput& in, const std::vector<Plot>
 }
 
 void add_varied(Blocks& b, const StudyData& d) {
-    b.push_back(heading(2, "What varied"));
+    b.push_back(io::heading(2, "What varied"));
     std::vector<std::string> items;
     for (std::size_t c : d.varied())
         items.push_back(fmt::format("{}{}: {}", d.columns[c].key, d.columns[c].assumption ? " (assumption)" : "",
                                     levels_text(d.columns[c])));
-    if (items.empty()) b.push_back(paragraph("Nothing: every case is the same wall under the same excitation."));
-    else b.push_back(list(items));
+    if (items.empty()) b.push_back(io::paragraph("Nothing: every case is the same wall under the same excitation."));
+    else b.push_back(io::list(items));
 }
 
 void add_runs(Blocks& b, const StudyData& d) {
-    b.push_back(heading(2, "What was run"));
+    b.push_back(io::heading(2, "What was run"));
     std::vector<std::string> items;
     std::vector<std::string> engines;
-    for (const Json& e : d.manifest.at("engines"))
+    for (const io::Json& e : d.manifest.at("engines"))
         engines.push_back(fmt::format("{} ({})", e.at("name").get<std::string>(), e.at("version").get<std::string>()));
     items.push_back(fmt::format("Engines: {}.", fmt::join(engines, ", ")));
     std::vector<std::string> series;
@@ -112,19 +112,19 @@ void add_runs(Blocks& b, const StudyData& d) {
         items.push_back(fmt::format("The analytic model's assumptions: {} (engines ignore them).",
                                     fmt::join(assumptions, "; ")));
     std::vector<std::string> skipped;
-    for (const Json& s : d.manifest.value("skipped_runs", Json::array())) skipped.push_back(s.get<std::string>());
+    for (const io::Json& s : d.manifest.value("skipped_runs", io::Json::array())) skipped.push_back(s.get<std::string>());
     items.push_back(skipped.empty() ? "Skipped runs: none."
                                     : fmt::format("Skipped runs: {}.", fmt::join(skipped, "; ")));
     std::vector<std::string> metrics;
     for (const MetricMeta& m : d.metrics) metrics.push_back(fmt::format("{}: {}", metric_label(m), m.description));
     items.push_back(fmt::format("Metrics: {}.", fmt::join(metrics, "; ")));
-    b.push_back(list(items));
+    b.push_back(io::list(items));
 }
 
 void add_counts(Blocks& b, const StudyData& d) {
-    b.push_back(heading(2, "Counts"));
-    const Json& cases = d.manifest.at("cases");
-    const Json& tasks = d.manifest.at("tasks");
+    b.push_back(io::heading(2, "Counts"));
+    const io::Json& cases = d.manifest.at("cases");
+    const io::Json& tasks = d.manifest.at("tasks");
     std::vector<std::string> items;
     items.push_back(fmt::format("{} of the {} in the grid (a repeat, such as a parapet at a second hinge, is left "
                                 "out).",
@@ -146,15 +146,15 @@ void add_counts(Blocks& b, const StudyData& d) {
     items.push_back(fmt::format("{} ({}) carry the analytic model's own warnings (one of its assumptions failing along "
                                 "the run; the warnings column says which).",
                                 plural(d.warned_rows, "row"), plural(d.warned_tasks, "task")));
-    b.push_back(list(items));
+    b.push_back(io::list(items));
 }
 
-DocBlock effects_table(const StudyData& d, const std::vector<Effect>& effects) {
-    DocBlock t = table({"parameter", "from", "to", "metric", "median change", "range", "pairs"}, 4);
+io::DocBlock effects_table(const StudyData& d, const std::vector<Effect>& effects) {
+    io::DocBlock t = io::table({"parameter", "from", "to", "metric", "median change", "range", "pairs"}, 4);
     for (const Effect& e : effects) {
         std::string median = "-", range = "-";
         if (e.pairs > 0 && e.binary) {
-            median = fmt::format("net {}", percent(e.median));
+            median = fmt::format("net {}", io::percent(e.median));
             range = fmt::format("{} to 1, {} to 0", e.up, e.down);
         } else if (e.pairs > 0) {
             const bool factor = shown_as_factor(e);
@@ -168,12 +168,12 @@ DocBlock effects_table(const StudyData& d, const std::vector<Effect>& effects) {
 }
 
 void add_sensitivities(Blocks& b, const StudyData& d, const std::vector<Effect>& effects) {
-    b.push_back(heading(2, "Largest sensitivities first"));
+    b.push_back(io::heading(2, "Largest sensitivities first"));
     if (d.varied().empty()) {
-        b.push_back(paragraph("Nothing varied: there is no sensitivity to report."));
+        b.push_back(io::paragraph("Nothing varied: there is no sensitivity to report."));
         return;
     }
-    b.push_back(paragraph(
+    b.push_back(io::paragraph(
         "Each varied parameter against its first level: runs are paired that differ in that parameter alone (the same "
         "engine and settings, the same levels of everything else that varies), and the change of a metric is its "
         "value over the value at the first level, minus 1 (for a 0/1 metric, the pairs that flip). Sorted by the size "
@@ -186,27 +186,27 @@ void add_sensitivities(Blocks& b, const StudyData& d, const std::vector<Effect>&
     for (const Effect& e : effects)
         if (sentences.size() < kMaxSensitivitySentences && e.pairs > 0 && said.insert({e.parameter, e.metric}).second)
             sentences.push_back(effect_sentence(d, e));
-    if (sentences.empty()) b.push_back(paragraph("No pair of runs gives a change: every paired value is missing."));
-    else b.push_back(list(sentences));
+    if (sentences.empty()) b.push_back(io::paragraph("No pair of runs gives a change: every paired value is missing."));
+    else b.push_back(io::list(sentences));
     const bool any_assumption = std::any_of(d.columns.begin(), d.columns.end(),
                                             [](const ColumnLevels& c) { return c.assumption && c.varied; });
     if (!any_assumption)
-        b.push_back(paragraph("No assumption of the analytic model varied: nothing here is the effect of one, and "
+        b.push_back(io::paragraph("No assumption of the analytic model varied: nothing here is the effect of one, and "
                               "there are no tornado charts."));
     b.push_back(effects_table(d, effects));
 }
 
 void add_agreement(Blocks& b, const StudyData& d, const std::vector<Agreement>& agreement) {
     if (agreement.empty()) return;
-    b.push_back(heading(2, "Engines against the analytic model"));
-    b.push_back(paragraph("Case by case, each engine's value against the analytic model's under each of its "
+    b.push_back(io::heading(2, "Engines against the analytic model"));
+    b.push_back(io::paragraph("Case by case, each engine's value against the analytic model's under each of its "
                           "assumption sets: the median and largest |engine/analytic - 1| (for a 0/1 metric, the cases "
                           "whose values differ). Each sentence names the set with the smallest median gap first."));
-    b.push_back(list(agreement_sentences(d, agreement)));
+    b.push_back(io::list(agreement_sentences(d, agreement)));
     for (std::size_t i = 0; i < agreement.size();) {
         const std::size_t engine = agreement[i].engine;
-        b.push_back(heading(3, d.series[engine].label));
-        DocBlock t = table({"metric", "analytic model with", "cases", "median |engine/analytic - 1|", "largest"}, 2);
+        b.push_back(io::heading(3, d.series[engine].label));
+        io::DocBlock t = io::table({"metric", "analytic model with", "cases", "median |engine/analytic - 1|", "largest"}, 2);
         for (; i < agreement.size() && agreement[i].engine == engine; ++i) {
             const Agreement& g = agreement[i];
             const bool none = g.cases == 0;
@@ -223,30 +223,30 @@ void add_agreement(Blocks& b, const StudyData& d, const std::vector<Agreement>& 
     }
 }
 
-void add_plots(Blocks& b, const StudyDocumentInput& in, const std::vector<Plot>& shown) {
-    b.push_back(heading(2, "Plots"));
+void add_plots(Blocks& b, const StudyDocumentInput& in, const std::vector<io::Plot>& shown) {
+    b.push_back(io::heading(2, "Plots"));
     if (in.plots_skipped) {
-        b.push_back(paragraph("Plots were not made (--no-plots)."));
+        b.push_back(io::paragraph("Plots were not made (--no-plots)."));
         return;
     }
-    if (!in.plots.note.empty()) b.push_back(paragraph("Plots: " + in.plots.note + "."));
-    for (const std::string& note : in.plot_notes.notes) b.push_back(paragraph(note));
+    if (!in.plots.note.empty()) b.push_back(io::paragraph("Plots: " + in.plots.note + "."));
+    for (const std::string& note : in.plot_notes.notes) b.push_back(io::paragraph(note));
     // The main figures are at the top ("At a glance"): the others here.
-    PlotResult rest = in.plots;
+    io::PlotResult rest = in.plots;
     rest.plots.erase(std::remove_if(rest.plots.begin(), rest.plots.end(),
-                                    [&](const Plot& p) { return is_shown(shown, p); }),
+                                    [&](const io::Plot& p) { return is_shown(shown, p); }),
                      rest.plots.end());
-    if (!shown.empty()) b.push_back(paragraph("The main figures are under \"At a glance\"."));
-    for (DocBlock& block : plot_blocks(rest)) b.push_back(std::move(block));
-    if (in.plots.plots.empty() && in.plots.note.empty()) b.push_back(paragraph("No plot applies to this study."));
+    if (!shown.empty()) b.push_back(io::paragraph("The main figures are under \"At a glance\"."));
+    for (io::DocBlock& block : io::plot_blocks(rest)) b.push_back(std::move(block));
+    if (in.plots.plots.empty() && in.plots.note.empty()) b.push_back(io::paragraph("No plot applies to this study."));
 }
 
 void add_run(Blocks& b, const StudyData& d) {
-    const Json& m = d.manifest;
-    b.push_back(heading(2, kRunHeading));
+    const io::Json& m = d.manifest;
+    b.push_back(io::heading(2, kRunHeading));
     const std::string commit = m.at("vssw").value("commit", std::string());
     const std::size_t shards = m.contains("merged_from") ? m.at("merged_from").size() : 0;
-    b.push_back(paragraph(fmt::format(
+    b.push_back(io::paragraph(fmt::format(
         "Ended {} (vssw {}), {:.1f} s on {} thread{} x {} process{}{}.", m.value("date", std::string()),
         commit.empty() ? "of an unknown commit" : commit, m.value("wall_time_s", 0.0), m.value("threads", 1),
         m.value("threads", 1) == 1 ? "" : "s", m.value("processes", 1), m.value("processes", 1) == 1 ? "" : "es",
@@ -254,8 +254,8 @@ void add_run(Blocks& b, const StudyData& d) {
 }
 
 void add_files(Blocks& b) {
-    b.push_back(heading(2, "Files"));
-    b.push_back(list({"results.csv: one row per case x run x metric (the parameters as columns, the value, its unit, "
+    b.push_back(io::heading(2, "Files"));
+    b.push_back(io::list({"results.csv: one row per case x run x metric (the parameters as columns, the value, its unit, "
                       "status, the analytic model's warnings)",
                       "results.json: the same rows with the manifest's keys (numbers as numbers, empty as null)",
                       "manifest.json: the study as read, its identity, shard, engines' versions, commit, wall time",
@@ -265,14 +265,14 @@ void add_files(Blocks& b) {
 
 }  // namespace
 
-Document build_study_document(const StudyDocumentInput& in) {
+io::Document build_study_document(const StudyDocumentInput& in) {
     const StudyData& d = in.data;
-    Document doc;
+    io::Document doc;
     doc.title = fmt::format("vssw study: {}", d.name);
     Blocks& b = doc.blocks;
     add_introduction(b, d);
     // The main figures open the page and are not shown again under "Plots".
-    const std::vector<Plot> figures = in.plots_skipped ? std::vector<Plot>{} : main_figures(in.plots);
+    const std::vector<io::Plot> figures = in.plots_skipped ? std::vector<io::Plot>{} : main_figures(in.plots);
     add_glance(b, in, figures);
     add_varied(b, d);
     add_runs(b, d);

@@ -26,12 +26,12 @@ struct StudyDocumentInput {
     const std::vector<Effect>& effects;
     const std::vector<Agreement>& agreement;
     const StudyPlots& plot_notes;  // its notes (its scripts are drawn into `plots`)
-    const PlotResult& plots;
+    const io::PlotResult& plots;
     bool plots_skipped = false;    // --no-plots
     const EnsembleMeasures* ensemble = nullptr;  // the "Ensemble" section's measures (none: no section)
 };
 
-Document build_study_document(const StudyDocumentInput& in);
+io::Document build_study_document(const StudyDocumentInput& in);
 
 // The heading of the paragraph that says when and where the study ran: the only part of the document that differs
 // between one run of a study and a merge of its shards.

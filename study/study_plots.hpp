@@ -25,7 +25,7 @@ namespace vssw::study {
 constexpr std::size_t kMaxValuePlots = 40;
 
 struct StudyPlots {
-    std::vector<PlotScript> scripts;
+    std::vector<io::PlotScript> scripts;
     std::vector<std::string> notes;  // what was not drawn and why, one sentence each, for study.md
 };
 

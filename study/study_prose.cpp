@@ -64,7 +64,7 @@ std::string agreement_sentence(const StudyData& d, const std::vector<const Agree
 }  // namespace
 
 std::string unsigned_percent(double value) {
-    std::string text = percent(std::abs(value));
+    std::string text = io::percent(std::abs(value));
     if (!text.empty() && text.front() == '+') text.erase(0, 1);
     return text;
 }
@@ -72,7 +72,7 @@ std::string unsigned_percent(double value) {
 bool shown_as_factor(const Effect& e) { return !e.binary && e.extent() >= kFactorFrom; }
 
 std::string change_text(double relative_change, bool as_factor) {
-    return as_factor ? fmt::format("x{:.3g}", 1.0 + relative_change) : percent(relative_change);
+    return as_factor ? fmt::format("x{:.3g}", 1.0 + relative_change) : io::percent(relative_change);
 }
 
 std::string effect_sentence(const StudyData& d, const Effect& e) {
@@ -83,7 +83,7 @@ std::string effect_sentence(const StudyData& d, const Effect& e) {
         if (e.up == 0 && e.down == 0)
             return fmt::format("{} leaves {} unchanged on {}.", change, metric, pairs_text(e.pairs, e.parameter));
         return fmt::format("{} turns {} from 0 to 1 on {} and from 1 to 0 on {} of {} (net {} of the pairs).", change,
-                           metric, e.up, e.down, pairs_text(e.pairs, e.parameter), percent(e.median));
+                           metric, e.up, e.down, pairs_text(e.pairs, e.parameter), io::percent(e.median));
     }
     if (e.extent() <= kNegligibleChange)
         return fmt::format("{} leaves {} unchanged (within {:g} relative on {}).", change, metric, kNegligibleChange,
@@ -96,10 +96,10 @@ std::string effect_sentence(const StudyData& d, const Effect& e) {
                            1.0 + e.median, 1.0 + e.lo, 1.0 + e.hi, pairs_text(e.pairs, e.parameter));
     }
     if (e.pairs == 1)
-        return fmt::format("{} changes {} by {} ({}).", change, metric, percent(e.median),
+        return fmt::format("{} changes {} by {} ({}).", change, metric, io::percent(e.median),
                            pairs_text(e.pairs, e.parameter));
-    return fmt::format("{} changes {} by a median of {} (from {} to {} over {}).", change, metric, percent(e.median),
-                       percent(e.lo), percent(e.hi), pairs_text(e.pairs, e.parameter));
+    return fmt::format("{} changes {} by a median of {} (from {} to {} over {}).", change, metric, io::percent(e.median),
+                       io::percent(e.lo), io::percent(e.hi), pairs_text(e.pairs, e.parameter));
 }
 
 std::string assumption_set(const StudyData& d, std::size_t series) {

@@ -1,10 +1,10 @@
 #pragma once
-// The `vssw` program run in-process for the CLI tests (apps/cli.hpp): exit code, stdout and stderr as strings.
+// The `vssw` program run in-process for the CLI tests (cli/cli.hpp): exit code, stdout and stderr as strings.
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "apps/cli.hpp"
+#include "cli/cli.hpp"
 
 namespace vssw::testing {
 

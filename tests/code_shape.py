@@ -16,7 +16,7 @@ import shutil
 import subprocess
 import sys
 
-PROGRAM = ["analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "apps", "python", "bench"]
+PROGRAM = ["analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "cli", "python", "bench"]
 # A folder above a quarter of the code holds more than one thing (study/ held 34 % when it held four things).
 MAX_FOLDER_SHARE = 0.25
 # A function longer than two screens is several steps that want names (rocking_phase was 204 lines, run_study 165).

@@ -8,7 +8,7 @@ import pathlib
 import re
 import sys
 
-PROGRAM = ["analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "apps", "python", "bench"]
+PROGRAM = ["analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "cli", "python", "bench"]
 HELPER = pathlib.Path("io/json.hpp")  # the one place that calls dump()
 
 

@@ -3,8 +3,8 @@
 stay inside that engine's adapter folder (the starts of their names: the HEADERS lines of its engine.cmake).
 
     analytic  <-  io
-    analytic, io  <-  motions  <-  apps
-    analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  apps  <-  python
+    analytic, io  <-  motions  <-  cli
+    analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  cli  <-  python
     (python also binds analytic, multibody and compare directly)
     (bench and tests may include any folder of the program; so may an engine folder's own multibody/<engine>/tests/)
 
@@ -27,7 +27,7 @@ import re
 import sys
 
 # What each folder may include besides itself.
-PROGRAM = {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "apps"}
+PROGRAM = {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "cli"}
 LAYERS = {
     "analytic": set(),
     "io": {"analytic"},
@@ -37,9 +37,9 @@ LAYERS = {
     "stress": {"analytic", "io", "multibody", "compare"},
     "validation": {"analytic", "io", "multibody", "compare", "study", "stress"},
     "motions": {"analytic", "io"},
-    "apps": {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions"},
-    # The typed API binds the library (simulate, compare: multibody/, compare/), the commands through apps.
-    "python": {"analytic", "multibody", "compare", "apps"},
+    "cli": {"analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions"},
+    # The typed API binds the library (simulate, compare: multibody/, compare/), the commands through cli.
+    "python": {"analytic", "multibody", "compare", "cli"},
     "bench": PROGRAM,
     "tests": PROGRAM | {"tests"},
 }

@@ -16,7 +16,7 @@
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
 #include "validation/bounds_file.hpp"
-#include "apps/cli.hpp"
+#include "cli/cli.hpp"
 #include "validation/bounds.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/engine_available.hpp"
@@ -25,10 +25,10 @@
 namespace {
 
 using vssw::InputError;
-using vssw::cli::parse_bounds;
-using vssw::compare::Bounds;
-using vssw::compare::BoundVerdict;
-using vssw::compare::SuiteResults;
+using vssw::validation::parse_bounds;
+using vssw::validation::Bounds;
+using vssw::validation::BoundVerdict;
+using vssw::validation::SuiteResults;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -92,8 +92,8 @@ TEST(BoundsFile, TomlAndJsonSayTheSame) {
 
 TEST(BoundsFile, CasesAndEnginesNeededAreListedOnce) {
     const Bounds b = parse_bounds(kToml, "toml", "b");
-    EXPECT_EQ(vssw::compare::cases_needed(b), (std::vector<std::string>{"fig6-vssw", "fig6-pw", "fig6-vssw/r0.5"}));
-    EXPECT_EQ(vssw::compare::engines_needed(b), (std::vector<std::string>{"ode", "bullet"}));
+    EXPECT_EQ(vssw::validation::cases_needed(b), (std::vector<std::string>{"fig6-vssw", "fig6-pw", "fig6-vssw/r0.5"}));
+    EXPECT_EQ(vssw::validation::engines_needed(b), (std::vector<std::string>{"ode", "bullet"}));
 }
 
 // The start of an ODE engine bound on case "a", for the entries below that differ only in their last keys.
@@ -159,12 +159,12 @@ TEST(BoundsFile, NonAsciiTomlIsRefusedBeforeTomlppSeesIt) {
 
 TEST(BoundsFile, AMissingFileOrAnUnknownFormatIsNamed) {
     try {
-        vssw::cli::read_bounds_file("/nonexistent/bounds.toml");
+        vssw::validation::read_bounds_file("/nonexistent/bounds.toml");
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/bounds.toml"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(vssw::cli::read_bounds_file("bounds.yaml"), InputError);
+    EXPECT_THROW(vssw::validation::read_bounds_file("bounds.yaml"), InputError);
 }
 
 // Results as a run would leave them, built by hand so every branch of evaluate() is reached.
@@ -180,7 +180,7 @@ SuiteResults hand_made_results() {
 }
 
 TEST(Bounds, AValueIsHeldAgainstItsIntervalAndAnythingUnmeasuredFails) {
-    const std::vector<BoundVerdict> v = vssw::compare::evaluate(parse_bounds(kToml, "toml", "b"), hand_made_results());
+    const std::vector<BoundVerdict> v = vssw::validation::evaluate(parse_bounds(kToml, "toml", "b"), hand_made_results());
     ASSERT_EQ(v.size(), 4u);
     EXPECT_TRUE(v[0].held) << "analytic drift 4e-7 within 1e-6";
     EXPECT_TRUE(v[1].held) << "ode period error 1e-3 within 5e-3";
@@ -193,7 +193,7 @@ TEST(Bounds, AValueIsHeldAgainstItsIntervalAndAnythingUnmeasuredFails) {
 TEST(Bounds, AnAnalyticDriftPastTheStoredValueFails) {
     SuiteResults r = hand_made_results();
     r.rows[0].engine_value = 0.25 * (1.0 + 2e-6);  // twice the allowed drift
-    const std::vector<BoundVerdict> v = vssw::compare::evaluate(parse_bounds(kToml, "toml", "b"), r);
+    const std::vector<BoundVerdict> v = vssw::validation::evaluate(parse_bounds(kToml, "toml", "b"), r);
     EXPECT_FALSE(v[0].held);
 }
 
@@ -202,9 +202,9 @@ TEST(Bounds, AZeroReferenceBoundsTheValueItself) {
                                   "toml", "b");
     SuiteResults r;
     r.rows.push_back({"h", "analytic", "overturned", 0.0, 0.0, 0.0, "analytic model", ""});
-    EXPECT_TRUE(vssw::compare::evaluate(b, r)[0].held);
+    EXPECT_TRUE(vssw::validation::evaluate(b, r)[0].held);
     r.rows[0].engine_value = 1.0;  // it fell
-    EXPECT_FALSE(vssw::compare::evaluate(b, r)[0].held);
+    EXPECT_FALSE(vssw::validation::evaluate(b, r)[0].held);
 }
 
 // The command end to end, on the analytic model only (fast): the Fig. 6 VSSW's threshold against Eq. (12)'s

@@ -1,7 +1,7 @@
 // The `vssw` command-line program, run in-process: the JSON contract of every command (keys and types), values
 // checked against closed forms the commands do not use for them, the CSV trajectory, help and exit codes, and one
 // test per kind of bad input (exit code 2, one line on stderr naming the bad value).
-#include "apps/cli.hpp"
+#include "cli/cli.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +21,7 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/wall.hpp"
-#include "apps/option_values.hpp"
+#include "cli/option_values.hpp"
 #include "multibody/engine.hpp"
 #include "tests/table1.hpp"
 

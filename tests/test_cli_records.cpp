@@ -1,4 +1,4 @@
-// `vssw history` with the record formats people have (apps/ground_motion_options.hpp): the same record in another
+// `vssw history` with the record formats people have (cli/ground_motion_options.hpp): the same record in another
 // format gives the same response; the vertical component moves the lift-off as Eq. (12) with g + a_v says; the peak
 // is reported in radians with its time; `--csv -` writes the trajectory to standard output.
 #include <algorithm>
@@ -404,12 +404,12 @@ TEST(MotionsCli, ShippedRecordTableIsWhatDescribeMeasures) {
     constexpr double kTableDigits = 5e-4;  // 4 significant digits: half a unit of the 4th, relative
     std::ifstream table(std::string(VSSW_DATA_DIR) + "/records/records.csv");
     std::vector<std::string> header, fields;
-    ASSERT_TRUE(vssw::study::read_csv_record(table, header));
+    ASSERT_TRUE(vssw::io::read_csv_record(table, header));
     const auto column = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
     };
     int rows = 0;
-    while (vssw::study::read_csv_record(table, fields)) {
+    while (vssw::io::read_csv_record(table, fields)) {
         ++rows;
         const auto d = run_cli({"motions", "describe", "--json",
                                 std::string(VSSW_DATA_DIR) + "/records/" + fields.at(column("file"))});

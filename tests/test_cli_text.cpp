@@ -41,14 +41,14 @@ std::string raw_control_in(const std::string& message) {
 
 TEST(Text, PrintableEscapesControlsAndBytesThatAreNotUtf8) {
     namespace st = vssw::study;
-    EXPECT_EQ(st::printable("a\x1b[2J\n\t\x7f" "b"), "a\\x1b[2J\\n\\t\\x7fb");
-    EXPECT_EQ(st::printable("s\xff.toml"), "s\\xff.toml");
-    EXPECT_EQ(st::printable("\xC2\x9B" "31m"), "\\u009b31m");  // C1 CSI
-    EXPECT_EQ(st::printable("M\xC3\xBCller \xE5\x9C\xB0"), "M\xC3\xBCller \xE5\x9C\xB0");  // letters stay
-    EXPECT_EQ(st::printable("\xC0\xAF \xED\xA0\x80 \xF4\x90\x80\x80 \xE5\x9C"),  // overlong, surrogate, > U+10FFFF, cut
+    EXPECT_EQ(vssw::io::printable("a\x1b[2J\n\t\x7f" "b"), "a\\x1b[2J\\n\\t\\x7fb");
+    EXPECT_EQ(vssw::io::printable("s\xff.toml"), "s\\xff.toml");
+    EXPECT_EQ(vssw::io::printable("\xC2\x9B" "31m"), "\\u009b31m");  // C1 CSI
+    EXPECT_EQ(vssw::io::printable("M\xC3\xBCller \xE5\x9C\xB0"), "M\xC3\xBCller \xE5\x9C\xB0");  // letters stay
+    EXPECT_EQ(vssw::io::printable("\xC0\xAF \xED\xA0\x80 \xF4\x90\x80\x80 \xE5\x9C"),  // overlong, surrogate, > U+10FFFF, cut
               "\\xc0\\xaf \\xed\\xa0\\x80 \\xf4\\x90\\x80\\x80 \\xe5\\x9c");
-    EXPECT_FALSE(st::not_utf8("M\xC3\xBCller \xF0\x9F\x8C\x8D"));
-    EXPECT_EQ(st::not_utf8("ab\xff").value_or(""), "'ab\\xff' is not UTF-8 (the byte \\xff at offset 2)");
+    EXPECT_FALSE(vssw::io::not_utf8("M\xC3\xBCller \xF0\x9F\x8C\x8D"));
+    EXPECT_EQ(vssw::io::not_utf8("ab\xff").value_or(""), "'ab\\xff' is not UTF-8 (the byte \\xff at offset 2)");
 }
 
 // Every path and name on the command line: a byte that is not UTF-8 is exit 2 naming it, before any folder or run

@@ -23,15 +23,15 @@ namespace {
 const std::string kEnsemble = std::string(VSSW_DATA_DIR) + "/../studies/ensemble-report.toml";
 
 // Every series of `engine` at `settings` judged on the report's ensemble.
-std::vector<SettingsVerdict> judge(const std::string& engine, const Json& settings) {
+std::vector<validation::SettingsVerdict> judge(const std::string& engine, const io::Json& settings) {
     vssw::testing::TempDir tmp("detection");
-    EarthquakeRunOptions options;
+    validation::EarthquakeRunOptions options;
     options.threads = 2;
-    return judge_settings(kEnsemble, engine, settings, tmp.path / "study", options);
+    return validation::judge_settings(kEnsemble, engine, settings, tmp.path / "study", options);
 }
 
-std::string describe(const SettingsVerdict& s) {
-    const EarthquakeVerdict& v = s.verdict;
+std::string describe(const validation::SettingsVerdict& s) {
+    const validation::EarthquakeVerdict& v = s.verdict;
     return fmt::format("{} {}: peaks x {:.3f} [{:.3f}, {:.3f}] ({} runs) {}; b/c {}/{} +{} failed, p {:.3f}, agree "
                        "{:.3f} {}",
                        v.engine, s.settings.dump(), std::exp(v.log_peak.median.value),
@@ -42,11 +42,11 @@ std::string describe(const SettingsVerdict& s) {
 
 TEST(EarthquakeDetection, StandInsFailFromTwiceTheRestitutionTargetOn) {
     // The reference first (restitution_error 0), then the stand-ins.
-    const std::vector<SettingsVerdict> out =
-        judge("analytic", Json{{"restitution_error", {0.0, -0.2, -0.1, -0.05, -0.02, 0.02, 0.05, 0.1, 0.2}}});
+    const std::vector<validation::SettingsVerdict> out =
+        judge("analytic", io::Json{{"restitution_error", {0.0, -0.2, -0.1, -0.05, -0.02, 0.02, 0.05, 0.1, 0.2}}});
     ASSERT_EQ(out.size(), 8u);
     double previous = -INFINITY;
-    for (const SettingsVerdict& s : out) {
+    for (const validation::SettingsVerdict& s : out) {
         const double error = s.settings.at("restitution_error").get<double>();
         const double d = s.verdict.log_peak.median.value;
         std::printf("%s\n", describe(s).c_str());
@@ -59,7 +59,7 @@ TEST(EarthquakeDetection, StandInsFailFromTwiceTheRestitutionTargetOn) {
 
 struct Variant {
     std::string engine;
-    Json settings;
+    io::Json settings;
     bool sound;
     const char* why;
 };
@@ -67,7 +67,7 @@ struct Variant {
 void expect_verdicts(const std::vector<Variant>& variants) {
     for (const Variant& v : variants) {
         if (!vssw::testing::engine_available(v.engine)) continue;
-        for (const SettingsVerdict& s : judge(v.engine, v.settings)) {
+        for (const validation::SettingsVerdict& s : judge(v.engine, v.settings)) {
             std::printf("%s\n", describe(s).c_str());
             EXPECT_EQ(s.verdict.pass, v.sound) << v.why << ": " << describe(s);
         }
@@ -76,18 +76,18 @@ void expect_verdicts(const std::vector<Variant>& variants) {
 
 TEST(EarthquakeDetection, BrokenEngineSettingsFail) {
     expect_verdicts({
-        {"ode", Json{{"cfm", 1e-5}}, false, "threshold -38 %, restitution +18 %, peaks 2.3x"},
-        {"ode", Json{{"dt", 0.012}}, false, "period -1.4 %, restitution +3.3 %, peaks x 0.81"},
-        {"mujoco", Json{{"dampratio", 0.3}, {"solref_steps", 100}}, false, "threshold -51 %, restitution +20 %"},
+        {"ode", io::Json{{"cfm", 1e-5}}, false, "threshold -38 %, restitution +18 %, peaks 2.3x"},
+        {"ode", io::Json{{"dt", 0.012}}, false, "period -1.4 %, restitution +3.3 %, peaks x 0.81"},
+        {"mujoco", io::Json{{"dampratio", 0.3}, {"solref_steps", 100}}, false, "threshold -51 %, restitution +20 %"},
     });
 }
 
 TEST(EarthquakeDetection, EnginesAtTheirDefaultsAndAQuarterOfTheirStepPass) {
     expect_verdicts({
-        {"ode", Json{{"dt", {1e-3, 2.5e-4}}}, true, "ODE's default step and a quarter of it"},
-        {"bullet", Json{{"dt", {1e-3, 2.5e-4}}}, true, "Bullet's default step and a quarter of it"},
-        {"box2d", Json{{"dt", {1e-3, 2.5e-4}}}, true, "Box2D's default step and a quarter of it"},
-        {"mujoco", Json{{"dt", {1e-3, 2.5e-4}}}, true, "MuJoCo's default step and a quarter of it"},
+        {"ode", io::Json{{"dt", {1e-3, 2.5e-4}}}, true, "ODE's default step and a quarter of it"},
+        {"bullet", io::Json{{"dt", {1e-3, 2.5e-4}}}, true, "Bullet's default step and a quarter of it"},
+        {"box2d", io::Json{{"dt", {1e-3, 2.5e-4}}}, true, "Box2D's default step and a quarter of it"},
+        {"mujoco", io::Json{{"dt", {1e-3, 2.5e-4}}}, true, "MuJoCo's default step and a quarter of it"},
     });
 }
 

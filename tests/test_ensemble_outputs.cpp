@@ -115,8 +115,8 @@ Table read_table(const fs::path& path) {
     std::istringstream in(read(path));
     std::vector<std::string> header, fields;
     Table rows;
-    st::read_csv_record(in, header);
-    while (st::read_csv_record(in, fields)) {
+    vssw::io::read_csv_record(in, header);
+    while (vssw::io::read_csv_record(in, fields)) {
         if (fields.size() != header.size()) continue;
         std::map<std::string, std::string> row;
         for (std::size_t i = 0; i < header.size(); ++i) row[header[i]] = fields[i];

@@ -44,11 +44,11 @@ public:
     multibody::EngineSettings default_settings() const override { return {}; }
     std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
     void check_settings(const multibody::EngineSettings&) const override {}  // no knobs
-    Trajectory simulate(const multibody::WallScene& scene, const Excitation& ex,
+    multibody::Trajectory simulate(const multibody::WallScene& scene, const Excitation& ex,
                         const multibody::EngineSettings&) const override {
         const double held = std::abs(ex.horizontal(ex.t_end));
         tried.push_back(held);
-        Trajectory t;
+        multibody::Trajectory t;
         t.samples.push_back({0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 4});
         t.samples.push_back({ex.t_end, held >= threshold_ ? scene.alpha() : 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 4});
         return t;

@@ -46,7 +46,7 @@ constexpr double kRatioTol = (1.0 + kE) * kA * kImpactTimeTol / kVMin;
 constexpr double kParabolaExact = 1e-9;
 
 struct Synthetic {
-    Trajectory traj;
+    multibody::Trajectory traj;
     std::vector<double> impact_times;
     std::vector<Peak> turning_points;
 };
@@ -143,8 +143,8 @@ TEST(Metrics, ImpactTooCloseToTheEndIsKeptButNotResolved) {
 }
 
 // A trajectory of a bump on each side of theta1 = 0 separated by exact rest, then jitter at rest.
-Trajectory bumps_with_rest(double jitter) {
-    Trajectory traj;
+multibody::Trajectory bumps_with_rest(double jitter) {
+    multibody::Trajectory traj;
     constexpr double kStep = 1e-3;
     for (int i = 0; i <= 4000; ++i) {
         const double t = i * kStep;
@@ -165,7 +165,7 @@ Trajectory bumps_with_rest(double jitter) {
 }
 
 TEST(Metrics, RestBetweenExcursionsIsNoImpact) {
-    const Trajectory traj = bumps_with_rest(0.0);
+    const multibody::Trajectory traj = bumps_with_rest(0.0);
     EXPECT_TRUE(impacts(traj).empty());
     const std::vector<Peak> p = peaks(traj);
     ASSERT_EQ(p.size(), 2u);  // one turning point per bump, none at rest
@@ -178,7 +178,7 @@ TEST(Metrics, RestBetweenExcursionsIsNoImpact) {
 
 TEST(Metrics, NoiseAngleIgnoresJitterAtRest) {
     constexpr double kJitter = 1e-9;  // an engine's wall settled on its contacts
-    const Trajectory traj = bumps_with_rest(kJitter);
+    const multibody::Trajectory traj = bumps_with_rest(kJitter);
     EXPECT_GT(impacts(traj).size(), 100u);  // every sign change counts by default
     EXPECT_TRUE(impacts(traj, kDefaultImpactSkip, 10.0 * kJitter).empty());
     EXPECT_EQ(peaks(traj, 10.0 * kJitter).size(), 2u);
@@ -193,7 +193,7 @@ TEST(Metrics, PeaksOfASampledCosine) {
     // vertex time within (w^2/24) max|2 tau h^2 - 8 tau^3| <= 0.016 w^2 h^3, value within (9/16) A w^4 h^4 / 24.
     constexpr double kTimeTol = 0.02 * kOmega * kOmega * kStep * kStep * kStep;
     constexpr double kValueTol = 0.025 * kAmp * kOmega * kOmega * kOmega * kOmega * kStep * kStep * kStep * kStep;
-    Trajectory traj;
+    multibody::Trajectory traj;
     for (int i = 0; i * kStep <= kEnd; ++i) {
         const double t = i * kStep;
         traj.samples.push_back({t, kAmp * std::cos(kOmega * t), -kAmp * kOmega * std::sin(kOmega * t), 0, 0, 0, 0, 0});
@@ -214,11 +214,11 @@ ParapetGeometry test_parapet() { return make_parapet(4.0, 0.4); }
 
 TEST(AnalyticEngine, PositiveGroundAccelerationTipsTheWallTowardsNegativeTheta) {
     const AnalyticEngine engine;
-    const WallScene scene = WallScene::of(test_vssw());
+    const multibody::WallScene scene = multibody::WallScene::of(test_vssw());
     Excitation ex;
     ex.horizontal = constant_motion(2.0 * eq12_threshold(test_vssw()), 0.5);
     ex.t_end = 0.5;
-    const Trajectory traj = engine.simulate(scene, ex, engine.default_settings());
+    const multibody::Trajectory traj = engine.simulate(scene, ex, engine.default_settings());
     ASSERT_FALSE(traj.samples.empty());
     EXPECT_LT(traj.samples.back().theta1, 0.0);
     EXPECT_GT(traj.samples.back().theta2, 0.0);  // the upper body turns the other way (Eq. 2)
@@ -240,11 +240,11 @@ TEST(AnalyticEngine, SamplesCarryTheKinematicsAndEnergiesOfTheModel) {
     ex.theta0 = 0.5 * w.alpha1;
     ex.t_end = 1.0;
     for (double paper : {0.0, 1.0}) {
-        EngineSettings s = engine.default_settings();
+        multibody::EngineSettings s = engine.default_settings();
         s.knobs["paper_kinematics"] = paper;
         s.knobs["unilateral_roller"] = 1.0 - paper;  // the paper's kinematics need the bilateral roller
         s.sample_dt = 1e-2;
-        const Trajectory traj = engine.simulate(WallScene::of(w), ex, s);
+        const multibody::Trajectory traj = engine.simulate(multibody::WallScene::of(w), ex, s);
         const auto model = make_vssw_model(w, paper == 1.0 ? Kinematics::paper : Kinematics::exact);
         ASSERT_EQ(traj.samples.size(), 101u);  // every sample_dt from 0 to t_end
         for (const TrajectorySample& x : traj.samples) {
@@ -257,7 +257,7 @@ TEST(AnalyticEngine, SamplesCarryTheKinematicsAndEnergiesOfTheModel) {
     }
     const ParapetGeometry p = test_parapet();
     ex.theta0 = 0.5 * p.alpha;
-    const Trajectory pw = engine.simulate(WallScene::of(p), ex, engine.default_settings());
+    const multibody::Trajectory pw = engine.simulate(multibody::WallScene::of(p), ex, engine.default_settings());
     for (const TrajectorySample& x : pw.samples) EXPECT_EQ(x.theta2, 0.0);
 }
 
@@ -266,13 +266,13 @@ TEST(AnalyticEngine, RejectsUnknownKnobsAndIllFormedScenes) {
     EXPECT_EQ(engine.name(), "analytic");
     Excitation ex;
     ex.theta0 = 0.01;
-    EngineSettings s = engine.default_settings();
+    multibody::EngineSettings s = engine.default_settings();
     s.knobs["rtoll"] = 1e-8;
-    EXPECT_THROW(engine.simulate(WallScene::of(test_vssw()), ex, s), InputError);
+    EXPECT_THROW(engine.simulate(multibody::WallScene::of(test_vssw()), ex, s), InputError);
     s = engine.default_settings();
     s.knobs["paper_kinematics"] = 0.5;
-    EXPECT_THROW(engine.simulate(WallScene::of(test_vssw()), ex, s), InputError);
-    EXPECT_THROW(engine.simulate(WallScene{}, ex, engine.default_settings()), InputError);
+    EXPECT_THROW(engine.simulate(multibody::WallScene::of(test_vssw()), ex, s), InputError);
+    EXPECT_THROW(engine.simulate(multibody::WallScene{}, ex, engine.default_settings()), InputError);
 }
 
 // Experiments on the analytic backend ------------------------------------------------------------------------------
@@ -284,26 +284,26 @@ TEST(Experiments, ThresholdByBisectionIsEq12AndEq17) {
     // lets any excess of detectable_excess * rel_tol lift the wall, so the truth is at most that below the bracket.
     const double tol = (0.5 + o.detectable_excess) * o.rel_tol;
     const VsswGeometry w = test_vssw();
-    const ThresholdResult v = find_threshold(engine, engine.default_settings(), WallScene::of(w), o);
+    const ThresholdResult v = find_threshold(engine, engine.default_settings(), multibody::WallScene::of(w), o);
     EXPECT_NEAR(v.value_g, eq12_threshold(w) / w.g, tol * eq12_threshold(w) / w.g);
     EXPECT_LE(v.upper_g - v.lower_g, o.rel_tol * v.upper_g);
     EXPECT_LT(v.trials, 25);  // test_experiments.cpp bounds the trials of a bracketed search more tightly
     const ParapetGeometry p = test_parapet();
-    const ThresholdResult pw = find_threshold(engine, engine.default_settings(), WallScene::of(p), o);
+    const ThresholdResult pw = find_threshold(engine, engine.default_settings(), multibody::WallScene::of(p), o);
     EXPECT_NEAR(pw.value_g, eq17_parapet_threshold(p) / p.g, tol * eq17_parapet_threshold(p) / p.g);
 }
 
 TEST(Experiments, TheHoldLetsTheSmallestDetectableExcessLiftTheWall) {
     const AnalyticEngine engine;
     const ThresholdOptions o;
-    for (const WallScene& scene : {WallScene::of(test_vssw()), WallScene::of(test_parapet())}) {
+    for (const multibody::WallScene& scene : {multibody::WallScene::of(test_vssw()), multibody::WallScene::of(test_parapet())}) {
         const double hold = threshold_hold_time(scene, o);
         const auto model = vssw::analytic_model(scene, Kinematics::exact);
         auto lifts = [&](double excess) {
             Excitation ex;
             ex.horizontal = ramp_and_hold(model->rest_threshold(0.0) * (1.0 + excess), o.ramp_time, hold);
             ex.t_end = o.ramp_time + hold;
-            EngineSettings s = engine.default_settings();
+            multibody::EngineSettings s = engine.default_settings();
             s.sample_dt = o.sample_dt;
             return lifted(engine.simulate(scene, ex, s), o.lift_angle * scene.alpha());
         };
@@ -319,13 +319,13 @@ public:
     explicit StubEngine(bool fails) : fails_(fails) {}
     std::string name() const override { return "stub"; }
     std::string version() const override { return "0"; }
-    EngineSettings default_settings() const override { return {}; }
+    multibody::EngineSettings default_settings() const override { return {}; }
     std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
-    void check_settings(const EngineSettings&) const override {}  // no knobs
-    Trajectory simulate(const WallScene&, const Excitation& ex, const EngineSettings&) const override {
+    void check_settings(const multibody::EngineSettings&) const override {}  // no knobs
+    multibody::Trajectory simulate(const multibody::WallScene&, const Excitation& ex, const multibody::EngineSettings&) const override {
         ++runs;
         if (fails_) throw multibody::EngineFailure("stub: blew up");
-        Trajectory t;
+        multibody::Trajectory t;
         t.samples.push_back({ex.t_end, 0, 0, 0, 0, 0, 0, 4});
         return t;
     }
@@ -336,7 +336,7 @@ private:
 };
 
 TEST(Experiments, ThresholdReportsAnEngineThatFailsOrNeverLifts) {
-    const WallScene scene = WallScene::of(test_vssw());
+    const multibody::WallScene scene = multibody::WallScene::of(test_vssw());
     const StubEngine failing(true), stuck(false);
     EXPECT_THROW(find_threshold(failing, {}, scene), multibody::EngineFailure);
     EXPECT_EQ(failing.runs, 1);  // the first failure ends the search
@@ -344,8 +344,8 @@ TEST(Experiments, ThresholdReportsAnEngineThatFailsOrNeverLifts) {
     // The upper end at E * 1.01^(2^k), k = 0..7 (1.01 to 3.57 E: below the cap of 4 E), then one trial at the cap.
     constexpr int kTrialsToTheCap = 9;
     EXPECT_EQ(stuck.runs, kTrialsToTheCap);
-    EXPECT_THROW(find_threshold(stuck, {}, WallScene{}), InputError);
-    EXPECT_THROW(run_free_vibration(stuck, {}, WallScene{}), InputError);
+    EXPECT_THROW(find_threshold(stuck, {}, multibody::WallScene{}), InputError);
+    EXPECT_THROW(run_free_vibration(stuck, {}, multibody::WallScene{}), InputError);
 }
 
 // An engine whose first impact gains energy (or reverses the motion) gives no restitution but a note saying why, and
@@ -355,17 +355,17 @@ public:
     double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     std::string name() const override { return "gainer"; }
     std::string version() const override { return "stub"; }
-    EngineSettings default_settings() const override {
-        EngineSettings s;
+    multibody::EngineSettings default_settings() const override {
+        multibody::EngineSettings s;
         s.dt = kDt;
         return s;
     }
     std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
-    void check_settings(const EngineSettings&) const override {}  // no knobs
-    Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings&) const override {
+    void check_settings(const multibody::EngineSettings&) const override {}  // no knobs
+    multibody::Trajectory simulate(const multibody::WallScene& scene, const Excitation& ex, const multibody::EngineSettings&) const override {
         // theta1 falls linearly from theta0 at kSpeed, crosses 0 at t_c and leaves at twice the speed: ratio 2.
         const double t_c = ex.theta0 / kSpeed;
-        Trajectory out;
+        multibody::Trajectory out;
         for (double t = 0.0; t <= 2.0 * t_c; t += kDt) {
             const bool after = t > t_c;
             const double theta = after ? -2.0 * kSpeed * (t - t_c) : ex.theta0 - kSpeed * t;
@@ -381,7 +381,7 @@ private:
 };
 
 TEST(Experiments, AnImpactRatioOutsideZeroToOneIsAFailureNotARestitution) {
-    const WallScene scene = WallScene::of(test_vssw());
+    const multibody::WallScene scene = multibody::WallScene::of(test_vssw());
     const EnergyGainingEngine engine;
     FreeVibrationOptions o;
     o.t_end = 10.0;
@@ -412,8 +412,8 @@ double ratio_sampling_bound(const RockingModel& m, const Impact& first, double d
 TEST(Experiments, FreeVibrationMeasuresWhatTheIntegratorReports) {
     const AnalyticEngine engine;
     // The model free_vibration() integrates by default: exact kinematics (as asked below), Eq. (19), bilateral roller.
-    const EngineSettings settings = multibody::analytic_settings({Kinematics::exact, ImpactLaw{}, Roller::bilateral});
-    for (const WallScene& scene : {WallScene::of(test_vssw()), WallScene::of(test_parapet())}) {
+    const multibody::EngineSettings settings = multibody::analytic_settings({Kinematics::exact, ImpactLaw{}, Roller::bilateral});
+    for (const multibody::WallScene& scene : {multibody::WallScene::of(test_vssw()), multibody::WallScene::of(test_parapet())}) {
         SCOPED_TRACE(scene.is_vssw() ? "vssw" : "parapet");
         const auto model = vssw::analytic_model(scene, Kinematics::exact);
         const FreeVibrationResult f = run_free_vibration(engine, settings, scene);
@@ -448,7 +448,7 @@ TEST(Experiments, AnalyticAgainstItselfHasNoError) {
     const VsswGeometry w = test_vssw();
     ComparisonOptions o;
     o.free.impacts = 3;
-    const EngineComparison c = compare_with_analytic(engine, engine.default_settings(), WallScene::of(w), 0.5, o);
+    const EngineComparison c = compare_with_analytic(engine, engine.default_settings(), multibody::WallScene::of(w), 0.5, o);
     EXPECT_EQ(c.threshold_g.rel_error, 0.0);
     EXPECT_EQ(c.period.rel_error, 0.0);
     EXPECT_EQ(c.restitution.rel_error, 0.0);

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "analytic/error.hpp"
-#include "apps/cli.hpp"
+#include "cli/cli.hpp"
 #include "multibody/engine.hpp"
 #include "io/csv.hpp"
 #include "compare/targets.hpp"
@@ -45,7 +45,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-using vssw::compare::CaseKind;
+using vssw::validation::CaseKind;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPi = 3.141592653589793;
@@ -73,7 +73,7 @@ std::vector<std::string> lines_of(const std::string& text) {
     return lines;
 }
 
-vssw::compare::MetricRow row(const std::string& case_id, const std::string& engine, const std::string& metric,
+vssw::validation::MetricRow row(const std::string& case_id, const std::string& engine, const std::string& metric,
                              double analytic, double value, const std::string& unit,
                              const std::string& reference = "analytic model") {
     const double rel = (std::isfinite(analytic) && std::isfinite(value)) ? value / analytic - 1.0 : kNaN;
@@ -81,8 +81,8 @@ vssw::compare::MetricRow row(const std::string& case_id, const std::string& engi
 }
 
 // The suite: Fig. 6 VSSW threshold and free vibration, Fig. 6 PW threshold and a history, an ODE step study.
-vssw::compare::Suite hand_suite() {
-    vssw::compare::Suite s;
+vssw::validation::Suite hand_suite() {
+    vssw::validation::Suite s;
     s.name = "default";
     s.walls = {{"fig6-vssw", "Fig. 6 VSSW 4 x 0.4 m, h1/h 0.7", {}}, {"fig6-pw", "Fig. 6 PW 4 x 0.4 m", {}}};
     s.records = {{"rinaldi-x0.17", "Northridge 1994, Rinaldi 228, x 0.17", "data/NGA_no_1063_RRS228.AT2", 0.17}};
@@ -99,8 +99,8 @@ vssw::compare::Suite hand_suite() {
     return s;
 }
 
-vssw::compare::SuiteResults hand_results() {
-    vssw::compare::SuiteResults r;
+vssw::validation::SuiteResults hand_results() {
+    vssw::validation::SuiteResults r;
     r.suite = "default";
     vssw::multibody::EngineSettings ode_settings;
     ode_settings.dt = 2e-4;
@@ -130,7 +130,7 @@ vssw::compare::SuiteResults hand_results() {
         row("fig6-vssw/r0.5/dt0.0002/ode", "ode", "restitution", 0.95, 0.95 * (1 - 0.132), ""),
     };
     r.failures = {{"fig6-pw", "bullet", kFailureMessage}};
-    vssw::compare::Trace a{"fig6-vssw/r0.5", "analytic", {}, {}, "mechanism"},
+    vssw::validation::Trace a{"fig6-vssw/r0.5", "analytic", {}, {}, "mechanism"},
         o{"fig6-vssw/r0.5", "ode", {}, {}, ""};
     for (int i = 0; i <= 50; ++i) {
         const double t = 0.01 * i;
@@ -149,27 +149,27 @@ bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1
 
 struct Written {
     TempDir dir;
-    vssw::study::ReportFiles files;
+    vssw::validation::ReportFiles files;
     std::string md, html;
     Json json;
 };
 
-Written write_hand_report(const std::string& name, const vssw::study::ReportOptions& options) {
+Written write_hand_report(const std::string& name, const vssw::validation::ReportOptions& options) {
     Written w{TempDir(name), {}, {}, {}, {}};
-    const vssw::compare::Suite suite = hand_suite();
-    const vssw::compare::SuiteResults results = hand_results();
-    vssw::study::ReportMeta meta;
+    const vssw::validation::Suite suite = hand_suite();
+    const vssw::validation::SuiteResults results = hand_results();
+    vssw::validation::ReportMeta meta;
     meta.date = "2025-01-01T00:00:00Z";
     meta.commit = "abc1234";
-    w.files = vssw::study::write_suite_report(w.dir.path, suite, results, meta, options);
+    w.files = vssw::validation::write_suite_report(w.dir.path, suite, results, meta, options);
     w.md = read(w.files.markdown);
     w.html = read(w.files.html);
     w.json = Json::parse(read(w.files.json));
     return w;
 }
 
-vssw::study::ReportOptions no_plots() {
-    vssw::study::ReportOptions o;
+vssw::validation::ReportOptions no_plots() {
+    vssw::validation::ReportOptions o;
     o.plots = false;
     return o;
 }
@@ -186,33 +186,33 @@ std::string table_line(const std::string& md, const std::string& heading, const 
 // --- the shared analysis ----------------------------------------------------------------------------------------
 
 TEST(ReportAnalysis, PercentTextAndFileStems) {
-    EXPECT_EQ(vssw::study::percent(-0.132), "-13.2 %");
-    EXPECT_EQ(vssw::study::percent(-6.993e-4), "-0.07 %");
-    EXPECT_EQ(vssw::study::percent(0.0), "0 %");
-    EXPECT_EQ(vssw::study::percent(2e-6), "+2.0e-04 %");
-    EXPECT_EQ(vssw::study::percent(kNaN), "n/a");
-    EXPECT_EQ(vssw::study::file_stem("fig6-vssw/r0.5/dt0.0005/ode"), "fig6-vssw_r0.5_dt0.0005_ode");
+    EXPECT_EQ(vssw::io::percent(-0.132), "-13.2 %");
+    EXPECT_EQ(vssw::io::percent(-6.993e-4), "-0.07 %");
+    EXPECT_EQ(vssw::io::percent(0.0), "0 %");
+    EXPECT_EQ(vssw::io::percent(2e-6), "+2.0e-04 %");
+    EXPECT_EQ(vssw::io::percent(kNaN), "n/a");
+    EXPECT_EQ(vssw::io::file_stem("fig6-vssw/r0.5/dt0.0005/ode"), "fig6-vssw_r0.5_dt0.0005_ode");
 }
 
 TEST(ReportAnalysis, CaseKindsAndStepsFromIdsWhenTheSuiteDoesNotList) {
-    const vssw::compare::Suite empty;
-    const vssw::compare::SuiteResults results;
-    const vssw::study::ReportInput in{empty, results, {}};
-    EXPECT_EQ(vssw::study::case_kind(in, "t1-07-xi0.1"), CaseKind::threshold);
-    EXPECT_EQ(vssw::study::case_kind(in, "fig6-vssw/r0.5"), CaseKind::free);
-    EXPECT_EQ(vssw::study::case_kind(in, "fig6-vssw/rinaldi-x0.45"), CaseKind::history);
-    EXPECT_EQ(vssw::study::case_kind(in, "fig6-vssw/r0.5/dt0.0005/ode"), CaseKind::step);
-    EXPECT_DOUBLE_EQ(vssw::study::case_step(in, "fig6-vssw/r0.5/dt0.0005/ode"), 5e-4);
-    EXPECT_DOUBLE_EQ(vssw::study::case_step(in, "fig6-vssw/r0.5/dt0.001"), 1e-3);
-    EXPECT_TRUE(std::isnan(vssw::study::case_step(in, "fig6-vssw/r0.5")));
+    const vssw::validation::Suite empty;
+    const vssw::validation::SuiteResults results;
+    const vssw::validation::ReportInput in{empty, results, {}};
+    EXPECT_EQ(vssw::validation::case_kind(in, "t1-07-xi0.1"), CaseKind::threshold);
+    EXPECT_EQ(vssw::validation::case_kind(in, "fig6-vssw/r0.5"), CaseKind::free);
+    EXPECT_EQ(vssw::validation::case_kind(in, "fig6-vssw/rinaldi-x0.45"), CaseKind::history);
+    EXPECT_EQ(vssw::validation::case_kind(in, "fig6-vssw/r0.5/dt0.0005/ode"), CaseKind::step);
+    EXPECT_DOUBLE_EQ(vssw::validation::case_step(in, "fig6-vssw/r0.5/dt0.0005/ode"), 5e-4);
+    EXPECT_DOUBLE_EQ(vssw::validation::case_step(in, "fig6-vssw/r0.5/dt0.001"), 1e-3);
+    EXPECT_TRUE(std::isnan(vssw::validation::case_step(in, "fig6-vssw/r0.5")));
 }
 
 TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
-    const vssw::compare::Suite suite = hand_suite();
-    const vssw::compare::SuiteResults results = hand_results();
-    const auto summaries = vssw::study::summarize({suite, results, {}});
+    const vssw::validation::Suite suite = hand_suite();
+    const vssw::validation::SuiteResults results = hand_results();
+    const auto summaries = vssw::validation::summarize({suite, results, {}});
     ASSERT_EQ(summaries.size(), 2u);  // ode, bullet: the analytic model is the reference
-    const vssw::study::EngineSummary& ode = summaries[0];
+    const vssw::validation::EngineSummary& ode = summaries[0];
     EXPECT_EQ(ode.engine, "ode");
     // threshold x2, period, restitution (outside); the three step rows are not counted.
     EXPECT_EQ(ode.with_target, 4);
@@ -222,7 +222,7 @@ TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
                              0),
               0u)
         << ode.line;
-    const vssw::study::EngineSummary& bullet = summaries[1];
+    const vssw::validation::EngineSummary& bullet = summaries[1];
     EXPECT_EQ(bullet.not_measured, 1);
     EXPECT_EQ(bullet.failures, 1);
     EXPECT_TRUE(contains(bullet.line, "Bullet: 2/3 metrics within target (1 not measured)")) << bullet.line;
@@ -232,40 +232,40 @@ TEST(ReportAnalysis, SummaryCountsTargetsLeavingTheStepStudyOut) {
 // The report-at-a-glance matrix's worst errors against the hand-made rows (hand_results), and the summary lines,
 // which take theirs from it, naming the same (they were computed twice and could disagree on ties).
 TEST(ReportAnalysis, MatrixNamesTheWorstErrorsAndTheSummaryTheSame) {
-    const vssw::compare::Suite suite = hand_suite();
-    const vssw::compare::SuiteResults results = hand_results();
-    const vssw::study::ReportInput in{suite, results, {}};
-    const auto cells = vssw::study::error_matrix(in);
+    const vssw::validation::Suite suite = hand_suite();
+    const vssw::validation::SuiteResults results = hand_results();
+    const vssw::validation::ReportInput in{suite, results, {}};
+    const auto cells = vssw::validation::error_matrix(in);
     auto cell = [&](const std::string& engine, const std::string& metric) {
-        const auto c = std::find_if(cells.begin(), cells.end(), [&](const vssw::study::MatrixCell& m) {
+        const auto c = std::find_if(cells.begin(), cells.end(), [&](const vssw::validation::MatrixCell& m) {
             return m.engine == engine && m.metric == metric;
         });
         EXPECT_NE(c, cells.end()) << engine << " " << metric;
-        return c == cells.end() ? vssw::study::MatrixCell{} : *c;
+        return c == cells.end() ? vssw::validation::MatrixCell{} : *c;
     };
     // ODE's threshold: 0 on the VSSW, +0.1 % on the parapet; its restitution -13.2 %, outside the 2 % target.
-    const vssw::study::MatrixCell threshold = cell("ode", "threshold_g");
+    const vssw::validation::MatrixCell threshold = cell("ode", "threshold_g");
     EXPECT_EQ(threshold.case_id, "fig6-pw");
     EXPECT_DOUBLE_EQ(threshold.worst_rel_error, 0.1001 / 0.1 - 1.0);
     EXPECT_EQ(threshold.rows, 2);
     EXPECT_EQ(threshold.outside, 0);
-    const vssw::study::MatrixCell restitution = cell("ode", "restitution");
+    const vssw::validation::MatrixCell restitution = cell("ode", "restitution");
     EXPECT_EQ(restitution.case_id, "fig6-vssw/r0.5");
     EXPECT_DOUBLE_EQ(restitution.worst_rel_error, 0.8246 / 0.95 - 1.0);
     EXPECT_EQ(restitution.outside, 1);
     EXPECT_FALSE(restitution.pass);
-    for (const vssw::study::EngineSummary& s : vssw::study::summarize(in))
-        for (const vssw::study::MetricExtreme& x : s.extremes) {
-            const vssw::study::MatrixCell c = cell(s.engine, x.metric);
+    for (const vssw::validation::EngineSummary& s : vssw::validation::summarize(in))
+        for (const vssw::validation::MetricExtreme& x : s.extremes) {
+            const vssw::validation::MatrixCell c = cell(s.engine, x.metric);
             EXPECT_EQ(c.worst_rel_error, x.rel_error) << s.engine << " " << x.metric;
             EXPECT_EQ(c.case_id, x.case_id) << s.engine << " " << x.metric;
         }
 }
 
 TEST(ReportAnalysis, FindingsSayOnlyWhatTheNumbersShow) {
-    const vssw::compare::Suite suite = hand_suite();
-    const vssw::compare::SuiteResults results = hand_results();
-    const std::vector<std::string> found = vssw::study::findings({suite, results, {}});
+    const vssw::validation::Suite suite = hand_suite();
+    const vssw::validation::SuiteResults results = hand_results();
+    const std::vector<std::string> found = vssw::validation::findings({suite, results, {}});
     auto any = [&](const std::string& a, const std::string& b) {
         for (const std::string& f : found)
             if (contains(f, a) && contains(f, b)) return true;
@@ -311,7 +311,7 @@ TEST(ReportFiles, MarkdownHasSummaryLinesAndARowPerCaseWithItsError) {
 
 TEST(ReportFiles, JsonRoundTripsWithNaNAsNull) {
     const Written w = write_hand_report("json", no_plots());
-    const vssw::compare::SuiteResults results = hand_results();
+    const vssw::validation::SuiteResults results = hand_results();
     const Json& j = w.json;
     EXPECT_EQ(j["vssw"]["commit"], "abc1234");
     EXPECT_EQ(j["date"], "2025-01-01T00:00:00Z");
@@ -362,7 +362,7 @@ TEST(ReportFiles, JsonRoundTripsWithNaNAsNull) {
 
 TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
     const Written w = write_hand_report("csv", no_plots());
-    const vssw::compare::SuiteResults results = hand_results();
+    const vssw::validation::SuiteResults results = hand_results();
     const auto metrics = lines_of(read(w.dir.path / "metrics.csv"));
     ASSERT_EQ(metrics.size(), results.rows.size() + 1);
     EXPECT_EQ(metrics[0], "case_id,engine,metric,unit,reference,analytic,engine_value,rel_error");
@@ -386,14 +386,14 @@ TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
     EXPECT_EQ(traces[52], "fig6-vssw/r0.5,ode,0,0.5,");
     EXPECT_EQ(traces[2], "fig6-vssw/r0.5,analytic,0.01,0.4998,mechanism");  // 0.499775... to 4 digits
     // Every value is the trace's to kTraceTimeDigits / kTraceValueDigits significant digits.
-    const vssw::compare::Trace& ode = results.traces[1];
+    const vssw::validation::Trace& ode = results.traces[1];
     for (std::size_t i = 0; i < ode.t.size(); ++i) {
         std::vector<std::string> f;
         std::istringstream line(traces[52 + i]);
         for (std::string field; std::getline(line, field, ',');) f.push_back(field);
         ASSERT_GE(f.size(), 4u) << traces[52 + i];
         // Rounding to n significant digits moves a value by at most half a unit in its n-th digit.
-        const double time_rounding = 0.5 * std::pow(10.0, 1 - vssw::study::kTraceTimeDigits);
+        const double time_rounding = 0.5 * std::pow(10.0, 1 - vssw::validation::kTraceTimeDigits);
         EXPECT_LE(std::abs(std::stod(f[2]) - ode.t[i]), time_rounding * std::abs(ode.t[i]));
         EXPECT_LE(std::abs(std::stod(f[3]) - ode.theta1_over_alpha[i]),
                   kFourDigitRounding * std::abs(ode.theta1_over_alpha[i]));
@@ -410,12 +410,12 @@ TEST(ReportFiles, HtmlEscapesTextAndShowsTheFailure) {
     EXPECT_TRUE(contains(w.html, "<td class=\"flag\">-13.2 %</td>"));
     EXPECT_TRUE(contains(w.html, "<li>ODE: 3/4 metrics within target;"));
     EXPECT_FALSE(contains(w.html, "<svg")) << "no plots asked";
-    EXPECT_EQ(vssw::study::html_escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+    EXPECT_EQ(vssw::io::html_escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
 }
 
 TEST(ReportFiles, PlotsAreDrawnAndInlinedAsSvg) {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
-    const Written w = write_hand_report("plots", vssw::study::ReportOptions{});
+    const Written w = write_hand_report("plots", vssw::validation::ReportOptions{});
     EXPECT_TRUE(w.files.plots_made);
     EXPECT_TRUE(w.files.warnings.empty()) << w.files.warnings.front();
     const fs::path plots = w.dir.path / "plots";
@@ -435,7 +435,7 @@ TEST(ReportFiles, PlotsAreDrawnAndInlinedAsSvg) {
 // each metric with a target, in the matrix's order), then the contents; the plots without a target stay below.
 TEST(ReportFiles, AFigurePerMeasureFollowsTheMatrix) {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
-    const Written w = write_hand_report("measures", vssw::study::ReportOptions{});
+    const Written w = write_hand_report("measures", vssw::validation::ReportOptions{});
     const auto at = [&](const std::string& text) { return w.md.find(text); };
     const std::size_t glance = at("## At a glance"), figures = at("## One figure per measure"),
                       contents = at("- [At a glance](#at-a-glance)"), plots = at("## Plots");
@@ -467,27 +467,27 @@ TEST(ReportFiles, HostileSuiteNamesAreShownAndNeverRun) {
             for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
                 text.replace(at, from.size(), to);
     };
-    vssw::compare::Suite suite = hand_suite();
+    vssw::validation::Suite suite = hand_suite();
     suite.name = vssw::testing::kHostileName;
     for (auto& w : suite.walls) hostile(w.id), w.label = vssw::testing::kHostileName;
     for (auto& r : suite.records) hostile(r.id), r.label = vssw::testing::kHostileName;
     for (auto& c : suite.cases) hostile(c.id), hostile(c.wall_id), hostile(c.record_id);
-    vssw::compare::SuiteResults results = hand_results();
+    vssw::validation::SuiteResults results = hand_results();
     for (auto& r : results.rows) hostile(r.case_id);
     for (auto& f : results.failures) hostile(f.case_id);
     for (auto& t : results.traces) hostile(t.case_id);
 
     TempDir dir("report_hostile");
-    vssw::study::ReportMeta meta;
+    vssw::validation::ReportMeta meta;
     meta.date = "2025-01-01T00:00:00Z";
     meta.commit = "abc1234";
-    const vssw::study::ReportFiles files =
-        vssw::study::write_suite_report(dir.path, suite, results, meta, vssw::study::ReportOptions{});
+    const vssw::validation::ReportFiles files =
+        vssw::validation::write_suite_report(dir.path, suite, results, meta, vssw::validation::ReportOptions{});
     EXPECT_TRUE(vssw::testing::markers_made(dir.path).empty()) << vssw::testing::markers_made(dir.path).front();
     EXPECT_TRUE(files.plots_made);
     EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
     const fs::path plots = dir.path / "plots";
-    const std::string trace = "trace_" + vssw::study::file_stem(wall + "/r0.5") + ".svg";
+    const std::string trace = "trace_" + vssw::io::file_stem(wall + "/r0.5") + ".svg";
     for (const auto& [svg, text] : {std::pair<std::string, std::string>{trace, wall + "/r0.5: theta1 / alpha"},
                                     {"error_threshold_g.svg", wall},  // a case's tic
                                     {"step_period.svg", "ODE " + wall + "/r0.5"}}) {  // a line's key
@@ -502,7 +502,7 @@ TEST(ReportFiles, HostileSuiteNamesAreShownAndNeverRun) {
 }
 
 TEST(ReportFiles, WithoutGnuplotTheReportIsStillWritten) {
-    vssw::study::ReportOptions options;
+    vssw::validation::ReportOptions options;
     options.plot.gnuplot = "/nonexistent/vssw-test/gnuplot";
     const Written w = write_hand_report("nognuplot", options);
     EXPECT_FALSE(w.files.plots_made);
@@ -522,8 +522,8 @@ TEST(ReportFiles, AFileInPlaceOfTheFolderIsBadInput) {
     TempDir tmp("notdir");
     const fs::path file = tmp.path / "file";
     std::ofstream(file) << "x";
-    EXPECT_THROW(vssw::study::prepare_report_dir(file), vssw::InputError);
-    EXPECT_NO_THROW(vssw::study::prepare_report_dir(tmp.path / "new" / "deeper"));
+    EXPECT_THROW(vssw::validation::prepare_report_dir(file), vssw::InputError);
+    EXPECT_NO_THROW(vssw::validation::prepare_report_dir(tmp.path / "new" / "deeper"));
     EXPECT_TRUE(fs::is_directory(tmp.path / "new" / "deeper"));
 }
 
@@ -630,7 +630,7 @@ TEST(ReportAtAGlance, MatrixCellsAreTheWorstErrorOfMetricsCsvAndPassIffWithinTar
 
         // The HTML cell: in the engine's row, under the metric's column; green iff pass, red iff not. A metric without
         // a target (a single run's peak under a record) has no column: no verdict at a glance.
-        const std::string title = vssw::study::short_title(metric) + " (target";
+        const std::string title = vssw::validation::short_title(metric) + " (target";
         const auto col = std::find_if(html.header.begin(), html.header.end(),
                                       [&](const std::string& h) { return h.rfind(title, 0) == 0; });
         if (!has_target) {
@@ -647,7 +647,7 @@ TEST(ReportAtAGlance, MatrixCellsAreTheWorstErrorOfMetricsCsvAndPassIffWithinTar
         EXPECT_EQ(has_class(classes, "fail"), has_target && !pass) << engine << ' ' << metric << ": " << classes;
         EXPECT_EQ(has_class(classes, "apart"), !has_target) << engine << ' ' << metric << ": " << classes;
         if (has_target && !std::isnan(e.worst)) {
-            EXPECT_EQ(text.rfind(vssw::study::percent(e.worst), 0), 0u) << engine << ' ' << metric << ": " << text;
+            EXPECT_EQ(text.rfind(vssw::io::percent(e.worst), 0), 0u) << engine << ' ' << metric << ": " << text;
         }
     }
     // The hand data's verdicts, spelled out: ODE passes threshold and period and fails the restitution; Bullet fails
@@ -675,11 +675,11 @@ TEST(ReportAtAGlance, ContentsLinkEveryHeadingInHtmlAndMarkdown) {
 }
 
 TEST(ReportAtAGlance, CasesThatDidNotRunAreNotListed) {
-    vssw::compare::Suite suite = hand_suite();
+    vssw::validation::Suite suite = hand_suite();
     suite.cases.push_back({"fig6-vssw/r0.5/dt0.0005/bullet", CaseKind::step, "fig6-vssw", 0.5, "", 5e-4, "bullet", {}});
     TempDir dir("notrun");
-    vssw::study::ReportMeta meta;
-    vssw::study::write_suite_report(dir.path, suite, hand_results(), meta, no_plots());
+    vssw::validation::ReportMeta meta;
+    vssw::validation::write_suite_report(dir.path, suite, hand_results(), meta, no_plots());
     const std::string md = read(dir.path / "report.md");
     EXPECT_TRUE(contains(md, "| fig6-vssw/r0.5/dt0.0005/ode | step |")) << md;
     EXPECT_FALSE(contains(md, "fig6-vssw/r0.5/dt0.0005/bullet")) << md;
@@ -689,9 +689,9 @@ TEST(ReportAtAGlance, CasesThatDidNotRunAreNotListed) {
 // --- the plots ------------------------------------------------------------------------------------------------------
 
 // A record's trace: at rest, then rocking between t0 and t1, then at rest to the end.
-vssw::compare::Trace rocking_trace(const std::string& engine, const std::string& assumption, double amplitude,
+vssw::validation::Trace rocking_trace(const std::string& engine, const std::string& assumption, double amplitude,
                                    double t0, double t1, double t_end) {
-    vssw::compare::Trace t{"fig6-vssw/rinaldi-x0.45", engine, {}, {}, assumption};
+    vssw::validation::Trace t{"fig6-vssw/rinaldi-x0.45", engine, {}, {}, assumption};
     for (double x = 0.0; x <= t_end + 1e-9; x += 0.02) {
         t.t.push_back(x);
         const double envelope = std::sin(kPi * (x - t0) / (t1 - t0));
@@ -700,7 +700,7 @@ vssw::compare::Trace rocking_trace(const std::string& engine, const std::string&
     return t;
 }
 
-const vssw::study::PlotScript* script_named(const std::vector<vssw::study::PlotScript>& scripts,
+const vssw::io::PlotScript* script_named(const std::vector<vssw::io::PlotScript>& scripts,
                                             const std::string& name) {
     for (const auto& s : scripts)
         if (s.plot.name == name) return &s;
@@ -714,21 +714,21 @@ TEST(ReportPlots, SimplifiedTracesKeepCornersAndGaps) {
     constexpr double kTolerance = 0.1;  // [px]
     const double nan = std::numeric_limits<double>::quiet_NaN();
     using Indices = std::vector<std::size_t>;
-    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, kTolerance), (Indices{0, 4}));
-    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 1, 0}, kTolerance), (Indices{0, 2, 4}));
-    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {nan, 1, 2, 3, 4}, kTolerance),
+    EXPECT_EQ(vssw::validation::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 3, 4}, kTolerance), (Indices{0, 4}));
+    EXPECT_EQ(vssw::validation::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 1, 0}, kTolerance), (Indices{0, 2, 4}));
+    EXPECT_EQ(vssw::validation::simplify_polyline({0, 1, 2, 3, 4}, {nan, 1, 2, 3, 4}, kTolerance),
               (Indices{0, 1, 4}));
-    EXPECT_EQ(vssw::study::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 3, nan}, kTolerance),
+    EXPECT_EQ(vssw::validation::simplify_polyline({0, 1, 2, 3, 4}, {0, 1, 2, 3, nan}, kTolerance),
               (Indices{0, 3, 4}));
 }
 
 TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
-    const vssw::compare::Suite suite = hand_suite();
-    vssw::compare::SuiteResults results = hand_results();
+    const vssw::validation::Suite suite = hand_suite();
+    vssw::validation::SuiteResults results = hand_results();
     results.traces = {rocking_trace("analytic", "mechanism", 0.27, 5.0, 12.0, 45.0),
                       rocking_trace("ode", "", 0.14, 5.0, 9.5, 45.0)};
-    const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
-    const vssw::study::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
+    const auto scripts = vssw::validation::report_plot_scripts({suite, results, {}});
+    const vssw::io::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
     ASSERT_NE(s, nullptr);
     // x: the motion (5 to 12 s) with a margin of a few percent of it, not the 45 s of the record and its tail.
     const auto x = gp_range(s->gp, 'x');
@@ -740,21 +740,21 @@ TEST(ReportPlots, TracesAreTrimmedToTheMotionAndEveryModelIsOverlaid) {
     // Both models in the legend, each in its engine's colour and marker, the reference named by its assumption set;
     // the legend below the frame, where it hides no line.
     EXPECT_TRUE(contains(s->gp, "title 'analytic, mechanism (reference)'")) << s->gp;
-    EXPECT_TRUE(contains(s->gp, "lc rgb '" + vssw::study::engine_colour("ode") + "' title 'ODE'")) << s->gp;
-    EXPECT_TRUE(contains(s->gp, fmt::format("pt {} ", vssw::study::engine_point("ode")))) << s->gp;
+    EXPECT_TRUE(contains(s->gp, "lc rgb '" + vssw::io::engine_colour("ode") + "' title 'ODE'")) << s->gp;
+    EXPECT_TRUE(contains(s->gp, fmt::format("pt {} ", vssw::io::engine_point("ode")))) << s->gp;
     EXPECT_TRUE(contains(s->gp, "set key below")) << s->gp;
     EXPECT_FALSE(contains(s->gp, "inside")) << s->gp;
 }
 
 TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
-    const vssw::compare::Suite suite = hand_suite();
-    vssw::compare::SuiteResults results = hand_results();
+    const vssw::validation::Suite suite = hand_suite();
+    vssw::validation::SuiteResults results = hand_results();
     results.traces = {rocking_trace("analytic", "mechanism", 0.47, 1.0, 30.0, 45.0),
                       rocking_trace("bullet", "", 0.027, 1.0, 4.0, 45.0),
                       rocking_trace("ode", "", 0.03, 1.5, 3.5, 45.0)};
-    const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
+    const auto scripts = vssw::validation::report_plot_scripts({suite, results, {}});
     ASSERT_NE(script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45"), nullptr);
-    const vssw::study::PlotScript* zoom = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45_zoom");
+    const vssw::io::PlotScript* zoom = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45_zoom");
     ASSERT_NE(zoom, nullptr);
     // Its frame: the small traces' motion (1 to 4 s) and values (within 0.03 alpha, padded).
     const auto x = gp_range(zoom->gp, 'x'), y = gp_range(zoom->gp, 'y');
@@ -766,18 +766,18 @@ TEST(ReportPlots, WhenTheEnginesRockFarLessASecondPlotZoomsOnThem) {
     EXPECT_TRUE(contains(zoom->gp, "title 'Bullet'")) << zoom->gp;
     // Engines that rock like the reference get none.
     results.traces[2] = rocking_trace("ode", "", 0.4, 1.0, 30.0, 45.0);
-    EXPECT_EQ(script_named(vssw::study::report_plot_scripts({suite, results, {}}), "trace_fig6-vssw_rinaldi-x0.45_zoom"),
+    EXPECT_EQ(script_named(vssw::validation::report_plot_scripts({suite, results, {}}), "trace_fig6-vssw_rinaldi-x0.45_zoom"),
               nullptr);
 }
 
 // Every sample of a trace inside the plot's window lies within half a pixel of the polyline the plot draws.
 TEST(ReportPlots, TracePlotDataShowWhatEverySampleWould) {
-    const vssw::compare::Suite suite = hand_suite();
-    vssw::compare::SuiteResults results = hand_results();
+    const vssw::validation::Suite suite = hand_suite();
+    vssw::validation::SuiteResults results = hand_results();
     results.traces = {rocking_trace("analytic", "mechanism", 0.27, 5.0, 12.0, 45.0),
                       rocking_trace("ode", "", 0.14, 5.0, 9.5, 45.0)};
-    const auto scripts = vssw::study::report_plot_scripts({suite, results, {}});
-    const vssw::study::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
+    const auto scripts = vssw::validation::report_plot_scripts({suite, results, {}});
+    const vssw::io::PlotScript* s = script_named(scripts, "trace_fig6-vssw_rinaldi-x0.45");
     ASSERT_NE(s, nullptr);
     std::smatch m;
     ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("svg size (\\d+),(\\d+)")));
@@ -802,7 +802,7 @@ TEST(ReportPlots, TracePlotDataShowWhatEverySampleWould) {
     ASSERT_EQ(blocks.size(), results.traces.size());
     for (std::size_t k = 0; k < blocks.size(); ++k) {
         const auto& line = blocks[k];
-        const vssw::compare::Trace& trace = results.traces[k];
+        const vssw::validation::Trace& trace = results.traces[k];
         EXPECT_LT(line.size(), trace.t.size() / 2) << "a long rest is one segment";
         for (std::size_t i = 0; i < trace.t.size(); ++i) {
             if (trace.t[i] < t0 || trace.t[i] > t1) continue;
@@ -822,7 +822,7 @@ TEST(ReportPlots, TracePlotDataShowWhatEverySampleWould) {
 }
 
 TEST(ReportPlots, OneColourPerEngineInEveryPlot) {
-    const auto scripts = vssw::study::report_plot_scripts({hand_suite(), hand_results(), {}});
+    const auto scripts = vssw::validation::report_plot_scripts({hand_suite(), hand_results(), {}});
     ASSERT_FALSE(scripts.empty());
     int checked = 0;
     for (const auto& s : scripts)
@@ -830,13 +830,13 @@ TEST(ReportPlots, OneColourPerEngineInEveryPlot) {
             for (const char* engine : {"ode", "bullet"}) {
                 const std::string name = vssw::multibody::engine_display_name(engine);
                 if (!contains(line, "title '" + name)) continue;
-                EXPECT_TRUE(contains(line, "lc rgb '" + vssw::study::engine_colour(engine) + "'"))
+                EXPECT_TRUE(contains(line, "lc rgb '" + vssw::io::engine_colour(engine) + "'"))
                     << s.plot.name << ": " << line;
                 ++checked;
             }
     EXPECT_GE(checked, 4);  // the trace, the error plots, the step plots
-    EXPECT_NE(vssw::study::engine_colour("ode"), vssw::study::engine_colour("bullet"));
-    EXPECT_EQ(vssw::study::engine_colour("analytic"), "#000000");
+    EXPECT_NE(vssw::io::engine_colour("ode"), vssw::io::engine_colour("bullet"));
+    EXPECT_EQ(vssw::io::engine_colour("analytic"), "#000000");
 }
 
 // The point type a plot line gives its series ("pt N"), -1 without one.
@@ -848,7 +848,7 @@ int point_type(const std::string& line) {
 // Each engine draws with its own marker in every plot (filled, or its open twin for a second series of the engine),
 // and an engine's marker does not depend on which other engines the report compares.
 TEST(ReportPlots, OneMarkerPerEngineWhateverTheEngineList) {
-    vssw::compare::SuiteResults without_bullet = hand_results();
+    vssw::validation::SuiteResults without_bullet = hand_results();
     auto& engines = without_bullet.engines;
     engines.erase(std::remove_if(engines.begin(), engines.end(), [](const auto& e) { return e.name == "bullet"; }),
                   engines.end());
@@ -858,21 +858,21 @@ TEST(ReportPlots, OneMarkerPerEngineWhateverTheEngineList) {
     std::map<std::string, std::set<int>> seen;  // engine -> the point types its series had, in both reports
     int checked = 0;
     for (const auto& results : {hand_results(), without_bullet})
-        for (const auto& s : vssw::study::report_plot_scripts({hand_suite(), results, {}}))
+        for (const auto& s : vssw::validation::report_plot_scripts({hand_suite(), results, {}}))
             for (const std::string& line : lines_of(s.gp))
                 for (const char* engine : {"ode", "bullet"}) {
                     if (!contains(line, "title '" + vssw::multibody::engine_display_name(engine))) continue;
                     const int pt = point_type(line);
-                    EXPECT_TRUE(pt == vssw::study::engine_point(engine, true) ||
-                                pt == vssw::study::engine_point(engine, false))
+                    EXPECT_TRUE(pt == vssw::io::engine_point(engine, true) ||
+                                pt == vssw::io::engine_point(engine, false))
                         << s.plot.name << ": " << line;
                     if (s.plot.name.rfind("error_", 0) == 0) seen[engine].insert(pt);
                     ++checked;
                 }
     EXPECT_GE(checked, 6);
     // The error plots (one series per engine): the engine's filled marker, with bullet in the list and without.
-    EXPECT_EQ(seen["ode"], std::set<int>{vssw::study::engine_point("ode")});
-    EXPECT_EQ(seen["bullet"], std::set<int>{vssw::study::engine_point("bullet")});
+    EXPECT_EQ(seen["ode"], std::set<int>{vssw::io::engine_point("ode")});
+    EXPECT_EQ(seen["bullet"], std::set<int>{vssw::io::engine_point("bullet")});
 }
 
 TEST(Palette, EveryKnownEngineHasItsOwnMarkerShape) {
@@ -882,15 +882,15 @@ TEST(Palette, EveryKnownEngineHasItsOwnMarkerShape) {
     ASSERT_GE(engines.size(), 2u);
     std::set<int> shapes;
     for (const std::string& e : engines) {
-        EXPECT_TRUE(shapes.insert(vssw::study::engine_point(e)).second) << e << " shares its marker";
+        EXPECT_TRUE(shapes.insert(vssw::io::engine_point(e)).second) << e << " shares its marker";
         // A second series of the engine: the open twin of the same shape, in the same colour.
-        const std::string first = vssw::study::series_style(e, 0), second = vssw::study::series_style(e, 1);
-        EXPECT_EQ(point_type(first + ' '), vssw::study::engine_point(e, true)) << first;
-        EXPECT_EQ(point_type(second + ' '), vssw::study::engine_point(e, false)) << second;
+        const std::string first = vssw::io::series_style(e, 0), second = vssw::io::series_style(e, 1);
+        EXPECT_EQ(point_type(first + ' '), vssw::io::engine_point(e, true)) << first;
+        EXPECT_EQ(point_type(second + ' '), vssw::io::engine_point(e, false)) << second;
     }
     // An unknown name: a marker all the same, the same every time.
-    EXPECT_GT(vssw::study::engine_point("someengine"), 0);
-    EXPECT_EQ(vssw::study::engine_point("someengine"), vssw::study::engine_point("someengine"));
+    EXPECT_GT(vssw::io::engine_point("someengine"), 0);
+    EXPECT_EQ(vssw::io::engine_point("someengine"), vssw::io::engine_point("someengine"));
 }
 
 // --- values on hover, axes, font ----------------------------------------------------------------------------------
@@ -899,7 +899,7 @@ TEST(Palette, EveryKnownEngineHasItsOwnMarkerShape) {
 // own calls a gnuplot_svg the page does not load), a <title> per point with the text a reader needs.
 TEST(ReportPlots, ErrorPlotPointsShowTheirValueOnHoverWithoutAScript) {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
-    const Written w = write_hand_report("hover", vssw::study::ReportOptions{});
+    const Written w = write_hand_report("hover", vssw::validation::ReportOptions{});
     const std::string svg = read(w.dir.path / "plots" / "error_threshold_g.svg");
     EXPECT_FALSE(contains(svg, "onmousemove"));
     EXPECT_FALSE(contains(svg, "gnuplot_svg"));
@@ -930,23 +930,23 @@ TEST(ReportPlots, NativeTooltipsAreEscapedAndReplaceOnlyGnuplotsHandlers) {
                             "\n<use xlink:href='#gpPt6'/></g>\n"
                             "<g onmousemove=\"gnuplot_svg.showHypertext(evt,'plain')" + handler +
                             "<use/></g>\n</g>\n</svg>\n";
-    const std::string out = vssw::study::svg_native_tooltips(svg, "x < y & \"z\"");
+    const std::string out = vssw::io::svg_native_tooltips(svg, "x < y & \"z\"");
     EXPECT_EQ(out, "<svg>\n<title>x &lt; y &amp; &quot;z&quot;</title>\n<g id=\"gnuplot_plot_1\" >\n"
                    "<g><title>a &lt;b&gt; &amp; 'c' </title>\n<use xlink:href='#gpPt6'/></g>\n"
                    "<g><title>plain</title><use/></g>\n</g>\n</svg>\n");
-    EXPECT_EQ(vssw::study::svg_native_tooltips(out, "x"), out) << "a second pass finds nothing to change";
+    EXPECT_EQ(vssw::io::svg_native_tooltips(out, "x"), out) << "a second pass finds nothing to change";
 }
 
 // Relative errors of 1e-7 % are no error: the axis spans the target band (with room around it), not their noise.
 TEST(ReportPlots, ErrorAxesSpanAtLeastTheTarget) {
-    vssw::compare::SuiteResults results = hand_results();
+    vssw::validation::SuiteResults results = hand_results();
     for (auto& r : results.rows)
         if (r.metric == "threshold_g" && r.engine != "analytic") {
             r.engine_value = r.analytic * (1.0 + 1e-9);
             r.rel_error = 1e-9;
         }
-    const auto scripts = vssw::study::report_plot_scripts({hand_suite(), results, {}});
-    const vssw::study::PlotScript* s = script_named(scripts, "error_threshold_g");
+    const auto scripts = vssw::validation::report_plot_scripts({hand_suite(), results, {}});
+    const vssw::io::PlotScript* s = script_named(scripts, "error_threshold_g");
     ASSERT_NE(s, nullptr);
     std::smatch m;
     ASSERT_TRUE(std::regex_search(s->gp, m, std::regex("set yrange \\[\\*<([^:]+):([^<]+)<\\*\\]"))) << s->gp;
@@ -959,12 +959,12 @@ TEST(ReportPlots, ErrorAxesSpanAtLeastTheTarget) {
 
 // One font for every plot: the terminal's, from gp_preamble, and no text of any plot in another.
 TEST(ReportPlots, EveryPlotScriptUsesTheOneFont) {
-    const std::string preamble = vssw::study::gp_preamble("vssw test", "x", 1, 1);
+    const std::string preamble = vssw::io::gp_preamble("vssw test", "x", 1, 1);
     std::smatch m;
     ASSERT_TRUE(std::regex_search(preamble, m, std::regex("set terminal svg size 1,1 ([^\n]*)")));
     const std::string terminal = m[1];
-    EXPECT_TRUE(contains(terminal, vssw::study::gp_font())) << terminal;
-    const auto scripts = vssw::study::report_plot_scripts({hand_suite(), hand_results(), {}});
+    EXPECT_TRUE(contains(terminal, vssw::io::gp_font())) << terminal;
+    const auto scripts = vssw::validation::report_plot_scripts({hand_suite(), hand_results(), {}});
     ASSERT_GE(scripts.size(), 4u);
     for (const auto& s : scripts) {
         int terminals = 0;
@@ -975,7 +975,7 @@ TEST(ReportPlots, EveryPlotScriptUsesTheOneFont) {
                 EXPECT_TRUE(contains(line, terminal)) << s.plot.name << ": " << line;
             }
             for (auto at = line.find("font "); at != std::string::npos; at = line.find("font ", at + 1))
-                EXPECT_EQ(line.compare(at, vssw::study::gp_font().size(), vssw::study::gp_font()), 0)
+                EXPECT_EQ(line.compare(at, vssw::io::gp_font().size(), vssw::io::gp_font()), 0)
                     << s.plot.name << ": " << line;
         }
         EXPECT_EQ(terminals, 1) << s.plot.name;
@@ -1178,11 +1178,11 @@ PairedRows paired_rows(const fs::path& results_csv, bool by_assumptions = false)
     PairedRows runs;
     std::istringstream rows(read(results_csv));
     std::vector<std::string> header, f;
-    EXPECT_TRUE(vssw::study::read_csv_record(rows, header));
+    EXPECT_TRUE(vssw::io::read_csv_record(rows, header));
     const auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
     };
-    while (vssw::study::read_csv_record(rows, f)) {
+    while (vssw::io::read_csv_record(rows, f)) {
         std::string key = f.at(col("engine"));
         if (by_assumptions) {
             const std::string parts = f.at(col("kinematics")) + " " + f.at(col("impact")) + " " + f.at(col("roller"));
@@ -1224,11 +1224,11 @@ TEST(ReportEarthquake, VerdictsArePairedMeasuresFromTheEnsemblesRows) {
     std::map<std::pair<std::string, std::string>, std::map<std::string, std::string>> overturned;
     std::istringstream rows(read(out / "earthquake" / "results.csv"));
     std::vector<std::string> header, f;
-    ASSERT_TRUE(vssw::study::read_csv_record(rows, header));
+    ASSERT_TRUE(vssw::io::read_csv_record(rows, header));
     const auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
     };
-    while (vssw::study::read_csv_record(rows, f))
+    while (vssw::io::read_csv_record(rows, f))
         if (f.at(col("metric")) == "overturned")
             overturned[{f.at(col("file")), f.at(col("pga"))}][f.at(col("engine"))] = f.at(col("value"));
     int agree = 0, runs = 0;
@@ -1397,16 +1397,16 @@ TEST(ReportEarthquake, EnginesTableListsTheSettingsTheRecordsRanWith) {
 // the default report's 4. Read and checked as the report checks a file, without running it (an hour of engine runs).
 TEST(ReportEarthquake, TheFullSuiteIsJudgedOnTwentyRecordsOrMore) {
     constexpr std::size_t kFullSuiteRecords = 20;  // a verdict's power: the records needed grow as beta^2
-    EXPECT_EQ(vssw::study::default_earthquake_for_suite("full"), "full");
-    EXPECT_EQ(vssw::study::default_earthquake_for_suite("default"), "default");
-    EXPECT_EQ(vssw::study::default_earthquake_for_suite("my-suite.toml"), "default");
-    const std::string file = vssw::study::earthquake_study_file("full", {"ode"});
+    EXPECT_EQ(vssw::validation::default_earthquake_for_suite("full"), "full");
+    EXPECT_EQ(vssw::validation::default_earthquake_for_suite("default"), "default");
+    EXPECT_EQ(vssw::validation::default_earthquake_for_suite("my-suite.toml"), "default");
+    const std::string file = vssw::validation::earthquake_study_file("full", {"ode"});
     const vssw::study::StudySpec spec = vssw::study::read_study_file(file);
     ASSERT_EQ(spec.parts.size(), 1u);
     const std::size_t records = spec.parts.front().excitation_axis("file")->levels.size();
     EXPECT_GE(records, kFullSuiteRecords) << file;
     EXPECT_GE(static_cast<long>(records), vssw::compare::kMinStripeIntervalRecords);
-    const std::string small = vssw::study::earthquake_study_file("default", {"ode"});
+    const std::string small = vssw::validation::earthquake_study_file("default", {"ode"});
     EXPECT_LT(vssw::study::read_study_file(small).parts.front().excitation_axis("file")->levels.size(), records);
 }
 
@@ -1477,7 +1477,7 @@ TEST(ReportEarthquake, PeakAndFragilityPanelsHoldEachEnginesPairedRuns) {
     EXPECT_TRUE(contains(peaks_gp, "plot x with lines")) << "the identity line\n" << peaks_gp;
     EXPECT_TRUE(contains(peaks_gp, "set logscale xy")) << peaks_gp;
     for (const std::string& e : engines) {
-        const std::string title = "set title " + vssw::study::gp_string(vssw::multibody::engine_display_name(e));
+        const std::string title = "set title " + vssw::io::gp_string(vssw::multibody::engine_display_name(e));
         EXPECT_TRUE(contains(peaks_gp, title)) << e << "\n" << peaks_gp;
         // Resolved or not, its panel (two records: not resolved, its stripes only and the note in its title).
         EXPECT_TRUE(contains(fragility_gp, title.substr(0, title.size() - 1) + " (not resolved: stripes only)'"))
@@ -1526,9 +1526,9 @@ namespace {
 
 // The hand results with the paper's model far off the reference: threshold -65 %, restitution +80 %, overturning
 // differing on the one record, and a failure. Far outside every target, so that counting it anywhere would show.
-vssw::compare::SuiteResults with_far_off_paper_model() {
-    vssw::compare::SuiteResults r = hand_results();
-    r.other_set = vssw::compare::OtherSetRun{
+vssw::validation::SuiteResults with_far_off_paper_model() {
+    vssw::validation::SuiteResults r = hand_results();
+    r.other_set = vssw::validation::OtherSetRun{
         vssw::AssumptionSet::paper,
         "paper-model",
         {row("fig6-vssw", "paper-model", "threshold_g", 0.286, 0.1001, "g"),
@@ -1538,7 +1538,7 @@ vssw::compare::SuiteResults with_far_off_paper_model() {
     return r;
 }
 
-std::string matrix_line(const std::vector<vssw::study::MatrixCell>& cells) {
+std::string matrix_line(const std::vector<vssw::validation::MatrixCell>& cells) {
     std::string text;
     for (const auto& c : cells)
         text += fmt::format("{} {} {} {} {} {}|", c.engine, c.metric, c.worst_rel_error, c.pass, c.outside, c.failed);
@@ -1553,18 +1553,18 @@ double first_impact(const Json& free, const char* key) { return free["impacts"][
 // no mark in report.md, neither class pass nor fail in report.html; the report is written (the command exits 0 after
 // it: it fails only on bad input). Must fail: the same rows given as an engine's fail that engine's cells.
 TEST(ReportOtherSet, AFarOffPaperModelChangesNoVerdictAndHasNone) {
-    const vssw::compare::Suite suite = hand_suite();
-    const vssw::compare::SuiteResults plain = hand_results(), far = with_far_off_paper_model();
-    const vssw::study::ReportInput a{suite, plain, {}}, b{suite, far, {}};
-    EXPECT_EQ(matrix_line(vssw::study::error_matrix(a)), matrix_line(vssw::study::error_matrix(b)));
-    const auto sa = vssw::study::summarize(a), sb = vssw::study::summarize(b);
+    const vssw::validation::Suite suite = hand_suite();
+    const vssw::validation::SuiteResults plain = hand_results(), far = with_far_off_paper_model();
+    const vssw::validation::ReportInput a{suite, plain, {}}, b{suite, far, {}};
+    EXPECT_EQ(matrix_line(vssw::validation::error_matrix(a)), matrix_line(vssw::validation::error_matrix(b)));
+    const auto sa = vssw::validation::summarize(a), sb = vssw::validation::summarize(b);
     ASSERT_EQ(sa.size(), sb.size());
     for (std::size_t i = 0; i < sa.size(); ++i) EXPECT_EQ(sa[i].line, sb[i].line);
     for (const char* engine : {"ode", "bullet"})
-        EXPECT_EQ(vssw::study::findings(a, engine), vssw::study::findings(b, engine)) << engine;
+        EXPECT_EQ(vssw::validation::findings(a, engine), vssw::validation::findings(b, engine)) << engine;
 
     // Its own cells: the worst difference, as an engine's would be.
-    const auto other = vssw::study::other_set_matrix(b);
+    const auto other = vssw::validation::other_set_matrix(b);
     const auto cell = [&](const std::string& metric) {
         return *std::find_if(other.begin(), other.end(), [&](const auto& c) { return c.metric == metric; });
     };
@@ -1573,8 +1573,8 @@ TEST(ReportOtherSet, AFarOffPaperModelChangesNoVerdictAndHasNone) {
     EXPECT_EQ(cell("overturned").outside, 1);
 
     TempDir dir("other_set");
-    vssw::study::ReportMeta meta;
-    const auto files = vssw::study::write_suite_report(dir.path, suite, far, meta, no_plots());
+    vssw::validation::ReportMeta meta;
+    const auto files = vssw::validation::write_suite_report(dir.path, suite, far, meta, no_plots());
     const std::string md = read(files.markdown), html = read(files.html);
     const auto start = md.find("| analytic, paper's assumptions |");
     ASSERT_NE(start, std::string::npos) << md;
@@ -1595,9 +1595,9 @@ TEST(ReportOtherSet, AFarOffPaperModelChangesNoVerdictAndHasNone) {
     for (const Json& c : j["other_set"]["matrix"]) EXPECT_FALSE(c.contains("pass")) << c;
 
     // Must fail: the same rows as an engine's are judged, and fail.
-    vssw::compare::SuiteResults judged = hand_results();
+    vssw::validation::SuiteResults judged = hand_results();
     for (const auto& x : far.other_set->rows) judged.rows.push_back(x);
-    const auto cells = vssw::study::error_matrix({suite, judged, {}});
+    const auto cells = vssw::validation::error_matrix({suite, judged, {}});
     EXPECT_TRUE(std::any_of(cells.begin(), cells.end(), [](const auto& c) {
         return c.engine == "paper-model" && c.metric == "restitution" && !c.pass;
     }));

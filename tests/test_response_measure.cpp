@@ -97,13 +97,13 @@ struct BothMeasures {
 BothMeasures measure_both(const FoldingEngine& engine) {
     const TempDir dir;
     const study::Grid grid(study_of(dir, kStudy));
-    const compare::Suite suite = study::suite_from_study(grid, "repro");
-    compare::RunOptions o;
+    const validation::Suite suite = validation::suite_from_study(grid, "repro");
+    validation::RunOptions o;
     o.threads = 1;
     o.keep_traces = false;
-    const compare::SuiteResults r = compare::run_suite_with_engines(suite, {&engine}, o);
+    const validation::SuiteResults r = validation::run_suite_with_engines(suite, {&engine}, o);
     BothMeasures m{};
-    for (const compare::MetricRow& row : r.rows) {
+    for (const validation::MetricRow& row : r.rows) {
         if (row.case_id != kCase || row.engine != engine.name()) continue;
         if (row.metric == "peak_rotation") {
             m.report_engine = row.engine_value;
@@ -152,7 +152,7 @@ TEST(OneMeasure, HistoryAgreesWithTheStudyOnTheAnalyticModel) {
         read_record(std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2").scaled(0.6);
     SimulationOptions o;
     o.keep_samples = false;
-    o.t_end = motion.duration() + study::kResponseTail;
+    o.t_end = motion.duration() + compare::kResponseTail;
     o.roller = mechanism.roller;
     const SimulationResult run = simulate(*model, motion, GroundMotion::none(), {}, o);
     ASSERT_TRUE(run.overturned);

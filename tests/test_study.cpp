@@ -334,7 +334,7 @@ TEST(StudyMeasure, RecordPeakIsTheModelsRunDirectly) {
     const GroundMotion motion = read_record(record).scaled(0.25);  // rocks through the whole record (docs/measurements/speed.md)
     SimulationOptions o;
     o.keep_samples = false;
-    o.t_end = motion.duration() + study::kResponseTail;
+    o.t_end = motion.duration() + compare::kResponseTail;
     const SimulationResult run =
         simulate(*make_vssw_model(w, Kinematics::exact), motion, GroundMotion::none(), {}, o);
     ASSERT_FALSE(run.overturned);
@@ -488,7 +488,7 @@ TEST(StudyRun, ASecondRunInAFolderInUseIsRefusedNamingTheFirst) {
     const TempDir dir;
     const Grid grid(study_of(dir, kSmallStudy));
     study::StudyRunOptions o;
-    const study::FolderLock held = study::prepare_study_dir(grid, dir / "s", o);
+    const io::FolderLock held = study::prepare_study_dir(grid, dir / "s", o);
     study::StudyRunOptions resume;
     resume.resume = true;
     for (const study::StudyRunOptions& second : {o, resume}) {
@@ -585,9 +585,9 @@ dt = [1e-3, 5e-4]
 
 TEST(SuiteFile, AUsersSuiteFollowsTheSuitesIdConventions) {
     const TempDir dir;
-    const compare::Suite s = study::suite_from_study(Grid(study_of(dir, kSuite)), "mine");
+    const validation::Suite s = validation::suite_from_study(Grid(study_of(dir, kSuite)), "mine");
     std::vector<std::string> ids;
-    for (const compare::SuiteCase& c : s.cases) ids.push_back(c.id);
+    for (const validation::SuiteCase& c : s.cases) ids.push_back(c.id);
     // Table 1 #1 at xi 0.5 falls from 0.8 alpha1 (its unstable equilibrium is lower): that release is left out.
     EXPECT_EQ(ids, (std::vector<std::string>{"w0.3", "w0.4", "t1-01-xi0.5/r0.5", "w0.4/r0.5/dt0.001/ode",
                                              "w0.4/r0.5/dt0.0005/ode"}));
@@ -607,10 +607,10 @@ TEST(SuiteFile, ResponseTailIsAKeyOfTheStudyAndTheSuite) {
     };
     const Grid given(study_of(dir, part("response_tail = 2.5\n")));
     EXPECT_EQ(given.make_case(given.case_ids().front()).response_tail, 2.5);
-    EXPECT_EQ(study::suite_from_study(given, "x").cases.front().response_tail, 2.5);
+    EXPECT_EQ(validation::suite_from_study(given, "x").cases.front().response_tail, 2.5);
     const Grid plain(study_of(dir, part("")));
     EXPECT_EQ(plain.make_case(plain.case_ids().front()).response_tail, compare::kResponseTail);
-    EXPECT_EQ(study::suite_from_study(plain, "x").cases.front().response_tail, compare::kSuiteResponseTail);
+    EXPECT_EQ(validation::suite_from_study(plain, "x").cases.front().response_tail, compare::kSuiteResponseTail);
     try {
         (void)study_of(dir, part("response_tail = -1\n"));
         ADD_FAILURE() << "a negative response_tail was accepted";
@@ -624,7 +624,7 @@ TEST(SuiteFile, WhatASuiteCannotHoldIsNamed) {
     const TempDir dir;
     const auto refusal_of = [&](const std::string& toml) {
         try {
-            (void)study::suite_from_study(Grid(study_of(dir, toml)), "x");
+            (void)validation::suite_from_study(Grid(study_of(dir, toml)), "x");
             return std::string();
         } catch (const InputError& e) {
             return std::string(e.what());
@@ -739,7 +739,7 @@ TEST(SuiteFile, UnitsAreRefused) {
     const TempDir dir;
     const std::string record = std::string(VSSW_DATA_DIR) + "/elcentro_chopra.txt";
     try {
-        (void)study::suite_from_study(Grid(study_of(dir, "[[part]]\nwall_name = \"w\"\nrecord_name = \"r\"\n"
+        (void)validation::suite_from_study(Grid(study_of(dir, "[[part]]\nwall_name = \"w\"\nrecord_name = \"r\"\n"
                                                          "[part.wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
                                                          "[part.excitation]\nkind = \"record\"\nfile = \"" +
                                                              record + "\"\nunits = \"g\"\n")),

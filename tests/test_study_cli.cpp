@@ -626,7 +626,7 @@ TEST(StudyCli, AnOutFolderInUseIsRefusedToEveryCommandThatWritesOne) {
             fs::create_directories(dir / "busy");
             write_file(dir / "busy" / "notes.txt", "the user's\n");
         }
-        const vssw::study::FolderLock held = vssw::study::check_out_folder(busy, vssw::study::OutKind::study);
+        const vssw::io::FolderLock held = vssw::io::check_out_folder(busy, vssw::io::OutKind::study);
         for (const std::vector<std::string>& command : commands) {
             const auto r = run_cli(command);
             EXPECT_EQ(r.code, 2) << command[0] << ": " << r.err;
@@ -640,7 +640,7 @@ TEST(StudyCli, AnOutFolderInUseIsRefusedToEveryCommandThatWritesOne) {
         }
     }
     // A --resume of a folder in use, too.
-    const vssw::study::FolderLock held = vssw::study::check_out_folder(dir / "resumed", vssw::study::OutKind::study);
+    const vssw::io::FolderLock held = vssw::io::check_out_folder(dir / "resumed", vssw::io::OutKind::study);
     const auto r = run_cli({"study", file, "--out", (dir / "resumed").string(), "--resume", "--no-plots"});
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find(named), std::string::npos) << r.err;
@@ -653,8 +653,8 @@ TEST(StudyCli, TheSwapRefusesAFolderAnotherCommandFilledMeanwhile) {
     const TempDir dir;
     const fs::path out = dir / "out";
     fs::create_directories(out);
-    const vssw::study::FolderLock lock = vssw::study::check_out_folder(out, vssw::study::OutKind::study);
-    vssw::study::StagedFolder staged(out, vssw::study::OutKind::study);
+    const vssw::io::FolderLock lock = vssw::io::check_out_folder(out, vssw::io::OutKind::study);
+    vssw::io::StagedFolder staged(out, vssw::io::OutKind::study);
     staged.create();
     write_file(staged.path() / "results.csv", "case_id\n");
     write_file(out / "motions.csv", "file\n");  // the other command's, written after our check

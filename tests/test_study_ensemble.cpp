@@ -481,8 +481,8 @@ TEST(StudyEnsemble, IdaInPgvReportsItsCollapseIntensitiesAndCurves) {
     study::write_study_outputs(dir / "ida", o);
     std::ifstream in(dir / "ida" / "fragility.csv");
     std::vector<std::string> header, row, more;
-    ASSERT_TRUE(study::read_csv_record(in, header) && study::read_csv_record(in, row));
-    EXPECT_FALSE(study::read_csv_record(in, more) && !(more.size() == 1 && more[0].empty()));  // one series, one wall
+    ASSERT_TRUE(io::read_csv_record(in, header) && io::read_csv_record(in, row));
+    EXPECT_FALSE(io::read_csv_record(in, more) && !(more.size() == 1 && more[0].empty()));  // one series, one wall
     const auto field = [&](const std::string& name) {
         return row.at(static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin()));
     };

@@ -358,11 +358,11 @@ TEST_F(TinyStudy, PlotsShowValuesOnHoverInTheOneFont) {
         if (entry.path().extension() != ".gp") continue;
         ++scripts;
         const std::string gp = read(entry.path());
-        const std::regex terminal("set terminal svg size \\d+,\\d+ noenhanced " + st::gp_font() + " background");
+        const std::regex terminal("set terminal svg size \\d+,\\d+ noenhanced " + vssw::io::gp_font() + " background");
         EXPECT_EQ(std::distance(std::sregex_iterator(gp.begin(), gp.end(), terminal), std::sregex_iterator()), 1)
             << entry.path();
         for (auto at = gp.find("font "); at != std::string::npos; at = gp.find("font ", at + 1))
-            EXPECT_EQ(gp.compare(at, st::gp_font().size(), st::gp_font()), 0) << entry.path();
+            EXPECT_EQ(gp.compare(at, vssw::io::gp_font().size(), vssw::io::gp_font()), 0) << entry.path();
     }
     EXPECT_GE(scripts, 6);
 }
@@ -430,8 +430,8 @@ TEST(Gnuplot, AFailedPlotLeavesItsLogBesideItsScriptWhenTheFolderIsRelative) {
         explicit WorkingFolder(const fs::path& to) { fs::current_path(to); }
         ~WorkingFolder() { fs::current_path(before); }
     } in_dir(dir.path);
-    const st::PlotResult r =
-        st::draw_plots({{{"section", "p", "a plot", false}, "plot 1\n", "1 2\n"}}, "plots", fake.string());
+    const vssw::io::PlotResult r =
+        vssw::io::draw_plots({{{"section", "p", "a plot", false}, "plot 1\n", "1 2\n"}}, "plots", fake.string());
     ASSERT_EQ(r.plots.size(), 1u);
     EXPECT_FALSE(r.plots[0].made);
     EXPECT_TRUE(contains(r.note, "gnuplot exit 1, see p.log")) << r.note;
@@ -544,25 +544,25 @@ TEST(StudyOutputs, OverturningMapHoldsEveryPulseWithItsVerdict) {
 
 // Text reaches gnuplot only as quoted data: whatever it holds, it is shown as it is and never runs.
 TEST(Gnuplot, TextIsQuotedAsDataThatNeverRuns) {
-    EXPECT_EQ(st::gp_string("it's `a` @m $(b)"), "'it''s `a` @m $(b)'");
-    EXPECT_EQ(st::gp_string("line\nnext\r\tend\x7f"), "'line next  end '");
-    EXPECT_EQ(st::gp_comment("a\n!cmd \\"), "a !cmd \\ ") << "one line, not continued by a final backslash";
-    EXPECT_EQ(st::gp_data_string("a \"b\" c\\d\ne"), "\"a 'b' c/d e\"") << "one column of a data file";
-    EXPECT_TRUE(st::gp_safe_name("trace_fig6-vssw_r0.5"));
-    for (const char* bad : {"", ".hidden", "-x", "a b", "a'b", "a/b", "a\nb"}) EXPECT_FALSE(st::gp_safe_name(bad)) << bad;
+    EXPECT_EQ(vssw::io::gp_string("it's `a` @m $(b)"), "'it''s `a` @m $(b)'");
+    EXPECT_EQ(vssw::io::gp_string("line\nnext\r\tend\x7f"), "'line next  end '");
+    EXPECT_EQ(vssw::io::gp_comment("a\n!cmd \\"), "a !cmd \\ ") << "one line, not continued by a final backslash";
+    EXPECT_EQ(vssw::io::gp_data_string("a \"b\" c\\d\ne"), "\"a 'b' c/d e\"") << "one column of a data file";
+    EXPECT_TRUE(vssw::io::gp_safe_name("trace_fig6-vssw_r0.5"));
+    for (const char* bad : {"", ".hidden", "-x", "a b", "a'b", "a/b", "a\nb"}) EXPECT_FALSE(vssw::io::gp_safe_name(bad)) << bad;
 
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
     TempDir dir("gnuplot_hostile");
     const std::string& text = vssw::testing::kHostileName;
-    st::PlotScript s;
+    vssw::io::PlotScript s;
     s.plot = {"section", "hostile", text, false};
-    s.dat = "# " + st::gp_comment(text) + "\n0 " + st::gp_data_string(text) + " 1\n1 " + st::gp_data_string(text) +
+    s.dat = "# " + vssw::io::gp_comment(text) + "\n0 " + vssw::io::gp_data_string(text) + " 1\n1 " + vssw::io::gp_data_string(text) +
             " 2\n";
-    s.gp = st::gp_preamble("vssw test", "hostile", 640, 480) + "set title " + st::gp_string("title " + text) +
-           "\nset xlabel " + st::gp_string("x " + text) + "\nset xtics (" + st::gp_string("tic " + text) +
-           " 0)\n# " + st::gp_comment(text + "\\") + "\nplot 'hostile.dat' using 1:3 with lines title " +
-           st::gp_string("key " + text) + "\n";
-    const st::PlotResult r = st::draw_plots({s}, dir.path / "plots", "gnuplot");
+    s.gp = vssw::io::gp_preamble("vssw test", "hostile", 640, 480) + "set title " + vssw::io::gp_string("title " + text) +
+           "\nset xlabel " + vssw::io::gp_string("x " + text) + "\nset xtics (" + vssw::io::gp_string("tic " + text) +
+           " 0)\n# " + vssw::io::gp_comment(text + "\\") + "\nplot 'hostile.dat' using 1:3 with lines title " +
+           vssw::io::gp_string("key " + text) + "\n";
+    const vssw::io::PlotResult r = vssw::io::draw_plots({s}, dir.path / "plots", "gnuplot");
     EXPECT_TRUE(vssw::testing::markers_made(dir.path).empty()) << vssw::testing::markers_made(dir.path).front();
     ASSERT_TRUE(r.all_made) << r.note;
     const std::string svg = read(dir.path / "plots" / "hostile.svg");
@@ -571,7 +571,7 @@ TEST(Gnuplot, TextIsQuotedAsDataThatNeverRuns) {
 
     // A plot whose name is not a plain file stem is refused, not written into a script.
     s.plot.name = "a'b";
-    const st::PlotResult refused = st::draw_plots({s}, dir.path / "plots", "gnuplot");
+    const vssw::io::PlotResult refused = vssw::io::draw_plots({s}, dir.path / "plots", "gnuplot");
     EXPECT_FALSE(refused.all_made);
     EXPECT_TRUE(contains(refused.note, "not a plain file name")) << refused.note;
     EXPECT_FALSE(fs::exists(dir.path / "plots" / "a'b.gp"));
@@ -598,7 +598,7 @@ TEST(StudyOutputs, HostileNamesAreShownAndNeverRun) {
     EXPECT_TRUE(vssw::testing::markers_made(dir.path).empty()) << vssw::testing::markers_made(dir.path).front();
     EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
     const fs::path plots = dir.path / "out" / st::kPlotsDir;
-    const std::string stem = st::file_stem(fs::path(vssw::testing::kHostileFileName).stem().string());
+    const std::string stem = vssw::io::file_stem(fs::path(vssw::testing::kHostileFileName).stem().string());
     const fs::path svg = plots / ("rocking_" + stem + ".svg");
     ASSERT_TRUE(fs::exists(svg)) << svg;
     // The title names the record by its file's name.

@@ -55,13 +55,13 @@ using vssw::compare::kRestitutionTarget;
 // A trace holds at most this many points (suite.cpp decimates to 2000 for the plots).
 constexpr std::size_t kMaxTracePoints = 2000;
 
-Suite default_suite() { return vssw::study::read_suite("default", VSSW_DATA_DIR); }
+validation::Suite default_suite() { return vssw::validation::read_suite("default", VSSW_DATA_DIR); }
 
 using vssw::testing::engine_available;
 
-const MetricRow* find_row(const SuiteResults& r, const std::string& case_id, const std::string& engine,
+const validation::MetricRow* find_row(const validation::SuiteResults& r, const std::string& case_id, const std::string& engine,
                           const std::string& metric) {
-    for (const MetricRow& row : r.rows)
+    for (const validation::MetricRow& row : r.rows)
         if (row.case_id == case_id && row.engine == engine && row.metric == metric) return &row;
     return nullptr;
 }
@@ -78,11 +78,11 @@ public:
         : name_(std::move(name)), fail_parapet_(fail_parapet), exclusive_(exclusive) {}
     std::string name() const override { return name_; }
     std::string version() const override { return "fake 1.0"; }
-    EngineSettings default_settings() const override { return analytic_.default_settings(); }
+    multibody::EngineSettings default_settings() const override { return analytic_.default_settings(); }
     std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
-    void check_settings(const EngineSettings& s) const override { analytic_.check_settings(s); }
+    void check_settings(const multibody::EngineSettings& s) const override { analytic_.check_settings(s); }
     bool runs_concurrently() const override { return !exclusive_; }
-    Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& s) const override {
+    multibody::Trajectory simulate(const multibody::WallScene& scene, const Excitation& ex, const multibody::EngineSettings& s) const override {
         const int now = ++running_;
         int seen = max_running_.load();
         while (now > seen && !max_running_.compare_exchange_weak(seen, now)) {
@@ -110,10 +110,10 @@ public:
     double cost_per_simulated_second() const override { return 1e-3; }  // a test double: never timed
     std::string name() const override { return "bad-input"; }
     std::string version() const override { return "0"; }
-    EngineSettings default_settings() const override { return {}; }
+    multibody::EngineSettings default_settings() const override { return {}; }
     std::vector<multibody::SettingDescription> setting_descriptions() const override { return {}; }
-    void check_settings(const EngineSettings&) const override {}  // no knobs
-    Trajectory simulate(const WallScene&, const Excitation&, const EngineSettings&) const override {
+    void check_settings(const multibody::EngineSettings&) const override {}  // no knobs
+    multibody::Trajectory simulate(const multibody::WallScene&, const Excitation&, const multibody::EngineSettings&) const override {
         throw InputError("bad-input: a setting is wrong");
     }
 };
@@ -121,19 +121,19 @@ public:
 // The suites ----------------------------------------------------------------------------------------------------
 
 TEST(Suite, DefaultCasesAreUniqueAndEveryWallAndRecordExists) {
-    const Suite s = default_suite();
+    const validation::Suite s = default_suite();
     EXPECT_EQ(s.name, "default");
     std::set<std::string> ids, walls;
-    for (const SuiteWall& w : s.walls) EXPECT_TRUE(walls.insert(w.id).second) << "duplicate wall " << w.id;
-    for (const SuiteCase& c : s.cases) {
+    for (const validation::SuiteWall& w : s.walls) EXPECT_TRUE(walls.insert(w.id).second) << "duplicate wall " << w.id;
+    for (const validation::SuiteCase& c : s.cases) {
         EXPECT_TRUE(ids.insert(c.id).second) << "duplicate case " << c.id;
         EXPECT_NO_THROW((void)s.wall(c.wall_id)) << c.id;
         EXPECT_EQ(c.id.rfind(c.wall_id, 0), 0u) << c.id << " does not start with its wall";
-        if (c.kind == CaseKind::history) {
+        if (c.kind == validation::CaseKind::history) {
             ASSERT_NO_THROW((void)s.record(c.record_id)) << c.id;
             EXPECT_TRUE(std::filesystem::exists(s.record(c.record_id).path)) << s.record(c.record_id).path;
         }
-        if (c.kind == CaseKind::step) {
+        if (c.kind == validation::CaseKind::step) {
             ASSERT_TRUE(c.dt.has_value()) << c.id;
             EXPECT_FALSE(c.engine.empty()) << c.id;
             const std::string suffix = "/" + c.engine;
@@ -152,19 +152,19 @@ TEST(Suite, DefaultCasesAreUniqueAndEveryWallAndRecordExists) {
     EXPECT_TRUE(s.wall("fig6-pw").scene.parapet.has_value());
     EXPECT_NEAR(s.wall("t1-07-xi0.1").scene.vssw->xi, 0.1, 1e-15);
     EXPECT_NEAR(s.wall("t1-07-xi0.1").scene.vssw->hinge_ratio(), 0.5, 1e-12);
-    for (const SuiteWall& w : s.walls) EXPECT_TRUE(ids.count(w.id)) << "no threshold case for " << w.id;
+    for (const validation::SuiteWall& w : s.walls) EXPECT_TRUE(ids.count(w.id)) << "no threshold case for " << w.id;
     for (const char* id : {"fig6-vssw/r0.2", "fig6-pw/r0.8", "t1-15-xi0.5/r0.5", "fig6-vssw/r0.5/dt0.0005/ode"})
         EXPECT_TRUE(ids.count(id)) << id;
     // Every engine's step study has four steps, each a case on the Fig. 6 VSSW.
     for (const auto& [engine, dts] : s.step_study) EXPECT_EQ(dts.size(), 4u) << engine;
-    EXPECT_EQ(to_string(CaseKind::threshold), std::string("threshold"));
-    EXPECT_EQ(to_string(CaseKind::step), std::string("step"));
+    EXPECT_EQ(validation::to_string(validation::CaseKind::threshold), std::string("threshold"));
+    EXPECT_EQ(validation::to_string(validation::CaseKind::step), std::string("step"));
 }
 
 TEST(Suite, FullHoldsEveryTable1SpecimenWithDataAtEveryRelease) {
-    const Suite s = vssw::study::read_suite("full", VSSW_DATA_DIR);
+    const validation::Suite s = vssw::validation::read_suite("full", VSSW_DATA_DIR);
     std::set<std::string> ids;
-    for (const SuiteCase& c : s.cases) EXPECT_TRUE(ids.insert(c.id).second) << "duplicate case " << c.id;
+    for (const validation::SuiteCase& c : s.cases) EXPECT_TRUE(ids.insert(c.id).second) << "duplicate case " << c.id;
     EXPECT_EQ(s.walls.size(), 2u + 16u * 3u);  // 18 specimens less the two discarded (4, 12), three xi each
     EXPECT_THROW((void)s.wall("t1-04-xi0"), InputError);
     EXPECT_THROW((void)s.wall("t1-12-xi0"), InputError);
@@ -174,7 +174,7 @@ TEST(Suite, FullHoldsEveryTable1SpecimenWithDataAtEveryRelease) {
 
 TEST(Suite, UnknownNameIsAnInputErrorNamingTheValidOnes) {
     try {
-        (void)vssw::study::read_suite("quick", VSSW_DATA_DIR);
+        (void)vssw::validation::read_suite("quick", VSSW_DATA_DIR);
         FAIL() << "no error";
     } catch (const InputError& e) {
         const std::string m = e.what();
@@ -185,11 +185,11 @@ TEST(Suite, UnknownNameIsAnInputErrorNamingTheValidOnes) {
 }
 
 TEST(Suite, SelectKeepsOnlyTheNamedCasesAndWhatTheyNeed) {
-    const Suite s = select_cases(default_suite(), {"fig6-pw/rinaldi-x0.17", "t1-07-xi0", "fig6-vssw/r0.5/dt0.001/ode"});
+    const validation::Suite s = validation::select_cases(default_suite(), {"fig6-pw/rinaldi-x0.17", "t1-07-xi0", "fig6-vssw/r0.5/dt0.001/ode"});
     EXPECT_EQ(s.name, "default");  // a selection names the suite its case ids come from
     ASSERT_EQ(s.cases.size(), 3u);
     std::set<std::string> walls;
-    for (const SuiteWall& w : s.walls) walls.insert(w.id);
+    for (const validation::SuiteWall& w : s.walls) walls.insert(w.id);
     EXPECT_EQ(walls, (std::set<std::string>{"fig6-pw", "t1-07-xi0", "fig6-vssw"}));
     ASSERT_EQ(s.records.size(), 1u);
     EXPECT_EQ(s.records.front().id, "rinaldi-x0.17");
@@ -197,7 +197,7 @@ TEST(Suite, SelectKeepsOnlyTheNamedCasesAndWhatTheyNeed) {
     EXPECT_EQ(s.step_study.at("ode"), std::vector<double>{1e-3});
 
     try {
-        (void)select_cases(default_suite(), {"t1-07-xi0", "fig6-vssw/r0.3"});
+        (void)validation::select_cases(default_suite(), {"t1-07-xi0", "fig6-vssw/r0.3"});
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("fig6-vssw/r0.3"), std::string::npos) << e.what();
@@ -207,23 +207,23 @@ TEST(Suite, SelectKeepsOnlyTheNamedCasesAndWhatTheyNeed) {
 // Running ----------------------------------------------------------------------------------------------------------
 
 TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
-    const Suite suite = default_suite();
-    const Suite s = select_cases(suite, {"fig6-vssw", "fig6-pw", "t1-07-xi0.5", "fig6-vssw/r0.5", "fig6-pw/r0.5"});
-    RunOptions o;
+    const validation::Suite suite = default_suite();
+    const validation::Suite s = validation::select_cases(suite, {"fig6-vssw", "fig6-pw", "t1-07-xi0.5", "fig6-vssw/r0.5", "fig6-pw/r0.5"});
+    validation::RunOptions o;
     o.threads = 2;
-    const SuiteResults r = run_suite(s, {"analytic"}, o);
+    const validation::SuiteResults r = validation::run_suite(s, {"analytic"}, o);
     EXPECT_TRUE(r.failures.empty());
     ASSERT_EQ(r.engines.size(), 1u);
     EXPECT_EQ(r.engines.front().name, "analytic");
     EXPECT_FALSE(r.engines.front().version.empty());
-    for (const MetricRow& row : r.rows) {
+    for (const validation::MetricRow& row : r.rows) {
         EXPECT_EQ(row.engine, "analytic");
         EXPECT_EQ(row.analytic, row.engine_value) << row.case_id << " " << row.metric;
         EXPECT_EQ(row.rel_error, 0.0) << row.case_id << " " << row.metric;
     }
     for (const char* wall : {"fig6-vssw", "t1-07-xi0.5"}) {
         const VsswGeometry& w = *suite.wall(wall).scene.vssw;
-        const MetricRow* t = find_row(r, wall, "analytic", "threshold_g");
+        const validation::MetricRow* t = find_row(r, wall, "analytic", "threshold_g");
         ASSERT_NE(t, nullptr) << wall;
         EXPECT_EQ(t->unit, "g");
         EXPECT_NEAR(t->analytic / (eq12_threshold(w) / w.g), 1.0, kBisectionTol) << wall;
@@ -236,18 +236,18 @@ TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
     const VsswGeometry& fig6 = *suite.wall("fig6-vssw").scene.vssw;
     // The reference is the set mechanism: a VSSW's impact is the whole mechanism's plastic impact (0.825 on Fig. 6;
     // Eq. 19, the paper set's, is 0.951 and fails this), a parapet's Housner's.
-    const MetricRow* e = find_row(r, "fig6-vssw/r0.5", "analytic", "restitution");
+    const validation::MetricRow* e = find_row(r, "fig6-vssw/r0.5", "analytic", "restitution");
     ASSERT_NE(e, nullptr);
     EXPECT_NEAR(e->analytic / restitution_whole_mechanism(fig6), 1.0, kImpactSamplingTol);
     EXPECT_NEAR(find_row(r, "fig6-pw/r0.5", "analytic", "restitution")->analytic / housner_restitution(pw.alpha), 1.0,
                 kImpactSamplingTol);
     EXPECT_GT(find_row(r, "fig6-pw/r0.5", "analytic", "period")->analytic, 0.0);
     // No row against a second impact law: the reference's restitution is the one.
-    for (const MetricRow& row : r.rows) EXPECT_EQ(row.metric.find("whole_mechanism"), std::string::npos) << row.metric;
+    for (const validation::MetricRow& row : r.rows) EXPECT_EQ(row.metric.find("whole_mechanism"), std::string::npos) << row.metric;
 
     // Free cases keep decimated analytic traces, starting at the release (theta1 = 0.5 alpha), named by the set.
     ASSERT_EQ(r.traces.size(), 2u);
-    for (const Trace& t : r.traces) {
+    for (const validation::Trace& t : r.traces) {
         EXPECT_EQ(t.engine, "analytic");
         ASSERT_FALSE(t.t.empty());
         EXPECT_LE(t.t.size(), kMaxTracePoints);
@@ -263,12 +263,12 @@ TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
 // Suite::reference chooses the reference: under the set paper a VSSW's restitution is Eq. (19)'s (the mechanism's,
 // 0.825 on Fig. 6, fails this), the period Eq. (3)'s, and the traces name the set.
 TEST(RunSuite, TheSuitesReferenceSetIsTheAnalyticRowsModel) {
-    Suite s = select_cases(default_suite(), {"fig6-vssw/r0.5"});
+    validation::Suite s = validation::select_cases(default_suite(), {"fig6-vssw/r0.5"});
     s.reference = AssumptionSet::paper;
-    const SuiteResults r = run_suite(s, {});
+    const validation::SuiteResults r = validation::run_suite(s, {});
     EXPECT_EQ(r.reference, AssumptionSet::paper);
     const VsswGeometry& fig6 = *s.wall("fig6-vssw").scene.vssw;
-    const MetricRow* e = find_row(r, "fig6-vssw/r0.5", "analytic", "restitution");
+    const validation::MetricRow* e = find_row(r, "fig6-vssw/r0.5", "analytic", "restitution");
     ASSERT_NE(e, nullptr);
     EXPECT_NEAR(e->analytic / eq19_restitution(fig6), 1.0, kImpactSamplingTol);
     ASSERT_EQ(r.traces.size(), 1u);
@@ -283,21 +283,21 @@ TEST(RunSuite, TheSuitesReferenceSetIsTheAnalyticRowsModel) {
 constexpr double kLocatedPeakTol = 1e-9;
 
 TEST(RunSuite, AnAnalyticRecordPeakDoesNotDependOnItsSampling) {
-    const Suite suite = default_suite();
+    const validation::Suite suite = default_suite();
     const std::string id = "fig6-vssw/rinaldi-x0.45";
-    const SuiteResults r = run_suite(select_cases(suite, {id}), {"analytic"});
-    const MetricRow* peak = find_row(r, id, "analytic", "peak_rotation");
+    const validation::SuiteResults r = validation::run_suite(validation::select_cases(suite, {id}), {"analytic"});
+    const validation::MetricRow* peak = find_row(r, id, "analytic", "peak_rotation");
     ASSERT_NE(peak, nullptr);
 
-    const SuiteCase& c = *std::find_if(suite.cases.begin(), suite.cases.end(),
-                                       [&](const SuiteCase& x) { return x.id == id; });
-    const SuiteRecord& rec = suite.record(c.record_id);
-    const WallScene& scene = suite.wall(c.wall_id).scene;
+    const validation::SuiteCase& c = *std::find_if(suite.cases.begin(), suite.cases.end(),
+                                       [&](const validation::SuiteCase& x) { return x.id == id; });
+    const validation::SuiteRecord& rec = suite.record(c.record_id);
+    const multibody::WallScene& scene = suite.wall(c.wall_id).scene;
     Excitation ex;
     ex.horizontal = read_record(rec.path).scaled(rec.scale);
     ex.t_end = ex.horizontal.duration() + c.response_tail;
     ex.stop_at_rest = true;
-    const Trajectory fine = AnalyticEngine().simulate(scene, ex, compare::analytic_reference_settings());  // 1e-4 s
+    const multibody::Trajectory fine = AnalyticEngine().simulate(scene, ex, compare::analytic_reference_settings());  // 1e-4 s
     ASSERT_TRUE(fine.located.has_value());
     double largest_sample = 0.0;
     for (const auto& s : fine.samples) largest_sample = std::max(largest_sample, std::abs(s.theta1));
@@ -311,12 +311,12 @@ TEST(RunSuite, AnAnalyticRecordPeakDoesNotDependOnItsSampling) {
 // reading the file, and a different motion given under the record's path moves the peak (the map is used, not the
 // file).
 TEST(RunSuite, RecordsAlreadyReadAreTheOnesItRuns) {
-    const Suite suite = select_cases(default_suite(), {"fig6-vssw/rinaldi-x0.45"});
+    const validation::Suite suite = validation::select_cases(default_suite(), {"fig6-vssw/rinaldi-x0.45"});
     const std::string path = suite.records.at(0).path;
     const auto peak_of = [&](const std::map<std::string, vssw::GroundMotion>* records) {
-        RunOptions options;
+        validation::RunOptions options;
         options.records_read = records;
-        const SuiteResults r = run_suite(suite, {"analytic"}, options);
+        const validation::SuiteResults r = validation::run_suite(suite, {"analytic"}, options);
         return find_row(r, suite.cases.at(0).id, "analytic", "peak_rotation")->analytic;
     };
     const std::map<std::string, vssw::GroundMotion> same = {{path, read_record(path)}};
@@ -326,18 +326,18 @@ TEST(RunSuite, RecordsAlreadyReadAreTheOnesItRuns) {
 }
 
 TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
-    const Suite suite = default_suite();
+    const validation::Suite suite = default_suite();
     std::vector<std::string> ids;
-    for (const SuiteCase& c : suite.cases)
-        if (c.kind == CaseKind::history) ids.push_back(c.id);
+    for (const validation::SuiteCase& c : suite.cases)
+        if (c.kind == validation::CaseKind::history) ids.push_back(c.id);
     ASSERT_EQ(ids.size(), 4u);  // Rinaldi and El Centro on the Fig. 6 VSSW and PW
-    const SuiteResults r = run_suite(select_cases(suite, ids), {"analytic"});
+    const validation::SuiteResults r = validation::run_suite(validation::select_cases(suite, ids), {"analytic"});
     EXPECT_TRUE(r.failures.empty());
     for (const std::string& id : ids) {
-        const MetricRow* peak = find_row(r, id, "analytic", "peak_rotation");
-        const MetricRow* rms = find_row(r, id, "analytic", "rms_difference");
-        const MetricRow* over = find_row(r, id, "analytic", "overturned");
-        const MetricRow* when = find_row(r, id, "analytic", "peak_time");
+        const validation::MetricRow* peak = find_row(r, id, "analytic", "peak_rotation");
+        const validation::MetricRow* rms = find_row(r, id, "analytic", "rms_difference");
+        const validation::MetricRow* over = find_row(r, id, "analytic", "overturned");
+        const validation::MetricRow* when = find_row(r, id, "analytic", "peak_time");
         ASSERT_TRUE(peak && rms && over && when) << id;
         EXPECT_EQ(peak->unit, "alpha");
         EXPECT_GT(peak->analytic, kClearRocking) << id;
@@ -349,7 +349,7 @@ TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
         EXPECT_GT(when->analytic, 0.0) << id;
         // One analytic trace per history case, whose largest |value| is the peak (the decimation may miss the
         // sample of the peak itself, never exceed it).
-        const auto t = std::find_if(r.traces.begin(), r.traces.end(), [&](const Trace& x) { return x.case_id == id; });
+        const auto t = std::find_if(r.traces.begin(), r.traces.end(), [&](const validation::Trace& x) { return x.case_id == id; });
         ASSERT_NE(t, r.traces.end()) << id;
         EXPECT_EQ(t->assumption, "mechanism") << id;
         EXPECT_LE(t->t.size(), kMaxTracePoints);
@@ -361,25 +361,25 @@ TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
 }
 
 // A selection of every kind the analytic engine runs, run for the analytic model and two fakes on it.
-Suite small_selection() {
-    return select_cases(default_suite(),
+validation::Suite small_selection() {
+    return validation::select_cases(default_suite(),
                         {"fig6-vssw", "fig6-pw", "fig6-vssw/r0.2", "fig6-pw/r0.5", "fig6-pw/rinaldi-x0.17"});
 }
 
 TEST(RunSuite, OneAndTwoThreadsGiveIdenticalResults) {
-    const Suite s = small_selection();
+    const validation::Suite s = small_selection();
     const FakeEngine fake("fake", /*fail_parapet=*/true, /*exclusive=*/false);
     const FakeEngine other("other", false, false);
-    RunOptions one, two;
+    validation::RunOptions one, two;
     one.threads = 1;
     two.threads = 2;
-    const SuiteResults a = run_suite_with_engines(s, {&fake, &other}, one);
-    const SuiteResults b = run_suite_with_engines(s, {&fake, &other}, two);
+    const validation::SuiteResults a = validation::run_suite_with_engines(s, {&fake, &other}, one);
+    const validation::SuiteResults b = validation::run_suite_with_engines(s, {&fake, &other}, two);
     EXPECT_EQ(a.threads, 1);
     EXPECT_EQ(b.threads, 2);
     ASSERT_EQ(a.rows.size(), b.rows.size());
     for (std::size_t i = 0; i < a.rows.size(); ++i) {
-        const MetricRow &x = a.rows[i], &y = b.rows[i];
+        const validation::MetricRow &x = a.rows[i], &y = b.rows[i];
         EXPECT_EQ(x.case_id, y.case_id);
         EXPECT_EQ(x.engine, y.engine);
         EXPECT_EQ(x.metric, y.metric);
@@ -400,7 +400,7 @@ TEST(RunSuite, OneAndTwoThreadsGiveIdenticalResults) {
     }
     // Rows in case order, then engine order (analytic, fake, other).
     auto case_index = [&](const std::string& id) {
-        return std::find_if(s.cases.begin(), s.cases.end(), [&](const SuiteCase& c) { return c.id == id; }) -
+        return std::find_if(s.cases.begin(), s.cases.end(), [&](const validation::SuiteCase& c) { return c.id == id; }) -
                s.cases.begin();
     };
     const std::vector<std::string> order = {"analytic", "fake", "other"};
@@ -413,21 +413,21 @@ TEST(RunSuite, OneAndTwoThreadsGiveIdenticalResults) {
 }
 
 TEST(RunSuite, AFailingEngineBecomesCaseFailuresAndTheOtherRowsStay) {
-    const Suite s = small_selection();
+    const validation::Suite s = small_selection();
     const FakeEngine fake("fake", /*fail_parapet=*/true, /*exclusive=*/false);
-    RunOptions o;
+    validation::RunOptions o;
     o.threads = 2;
-    const SuiteResults r = run_suite_with_engines(s, {&fake}, o);
+    const validation::SuiteResults r = validation::run_suite_with_engines(s, {&fake}, o);
     // Every parapet case fails for the fake, with its message, and only those.
     std::set<std::string> failed;
-    for (const CaseFailure& f : r.failures) {
+    for (const validation::CaseFailure& f : r.failures) {
         EXPECT_EQ(f.engine, "fake");
         EXPECT_NE(f.message.find("no parapets here"), std::string::npos) << f.message;
         failed.insert(f.case_id);
     }
     EXPECT_EQ(failed, (std::set<std::string>{"fig6-pw", "fig6-pw/r0.5", "fig6-pw/rinaldi-x0.17"}));
     for (const std::string& id : failed)
-        for (const MetricRow& row : r.rows)
+        for (const validation::MetricRow& row : r.rows)
             if (row.case_id == id) {
                 EXPECT_EQ(row.engine, "analytic") << id;
             }
@@ -436,11 +436,11 @@ TEST(RunSuite, AFailingEngineBecomesCaseFailuresAndTheOtherRowsStay) {
     EXPECT_NE(find_row(r, "fig6-pw/r0.5", "analytic", "period"), nullptr);
     EXPECT_NE(find_row(r, "fig6-pw/rinaldi-x0.17", "analytic", "peak_rotation"), nullptr);
     // The fake is the analytic model at the same sampling: its VSSW rows equal the reference exactly.
-    const MetricRow* t = find_row(r, "fig6-vssw", "fake", "threshold_g");
+    const validation::MetricRow* t = find_row(r, "fig6-vssw", "fake", "threshold_g");
     ASSERT_NE(t, nullptr);
     EXPECT_EQ(t->rel_error, 0.0);
     for (const char* metric : {"period", "restitution"}) {
-        const MetricRow* row = find_row(r, "fig6-vssw/r0.2", "fake", metric);
+        const validation::MetricRow* row = find_row(r, "fig6-vssw/r0.2", "fake", metric);
         ASSERT_NE(row, nullptr) << metric;
         EXPECT_EQ(row->rel_error, 0.0) << metric;
     }
@@ -451,12 +451,12 @@ TEST(RunSuite, AFailingEngineBecomesCaseFailuresAndTheOtherRowsStay) {
 // restitution against the reference is the ratio of the two sets' impact laws (Eq. 19 over the whole mechanism's,
 // closed forms: 0.951 / 0.825 on Fig. 6), its threshold Eq. (12) on both sides.
 TEST(RunSuite, TheOtherSetIsMeasuredLikeAnEngineAndKeptApart) {
-    const Suite s = select_cases(default_suite(), {"fig6-vssw", "fig6-vssw/r0.5", "fig6-pw/rinaldi-x0.17"});
+    const validation::Suite s = validation::select_cases(default_suite(), {"fig6-vssw", "fig6-vssw/r0.5", "fig6-pw/rinaldi-x0.17"});
     const FakeEngine fake("fake", false, false);
-    RunOptions with;
+    validation::RunOptions with;
     with.other_set = true;
-    const SuiteResults plain = run_suite_with_engines(s, {&fake});
-    const SuiteResults r = run_suite_with_engines(s, {&fake}, with);
+    const validation::SuiteResults plain = validation::run_suite_with_engines(s, {&fake});
+    const validation::SuiteResults r = validation::run_suite_with_engines(s, {&fake}, with);
     ASSERT_EQ(r.rows.size(), plain.rows.size());
     for (std::size_t i = 0; i < r.rows.size(); ++i) {
         EXPECT_EQ(r.rows[i].engine, plain.rows[i].engine);
@@ -468,11 +468,11 @@ TEST(RunSuite, TheOtherSetIsMeasuredLikeAnEngineAndKeptApart) {
     EXPECT_EQ(r.other_set->set, AssumptionSet::paper);
     EXPECT_EQ(r.other_set->engine, "paper-model");
     EXPECT_TRUE(r.other_set->failures.empty());
-    for (const MetricRow& row : r.other_set->rows) EXPECT_EQ(row.engine, "paper-model");
+    for (const validation::MetricRow& row : r.other_set->rows) EXPECT_EQ(row.engine, "paper-model");
     const VsswGeometry& fig6 = *s.wall("fig6-vssw").scene.vssw;
-    const MetricRow* e = nullptr;
-    const MetricRow* peak = nullptr;
-    for (const MetricRow& row : r.other_set->rows) {
+    const validation::MetricRow* e = nullptr;
+    const validation::MetricRow* peak = nullptr;
+    for (const validation::MetricRow& row : r.other_set->rows) {
         if (row.case_id == "fig6-vssw/r0.5" && row.metric == "restitution") e = &row;
         if (row.case_id == "fig6-pw/rinaldi-x0.17" && row.metric == "peak_rotation") peak = &row;
     }
@@ -483,11 +483,11 @@ TEST(RunSuite, TheOtherSetIsMeasuredLikeAnEngineAndKeptApart) {
 }
 
 TEST(RunSuite, AnEngineThatMustNotRunConcurrentlyRunsOneTaskAtATime) {
-    const Suite s = select_cases(default_suite(), {"fig6-vssw", "fig6-pw", "t1-01-xi0", "t1-07-xi0", "fig6-vssw/r0.5",
+    const validation::Suite s = validation::select_cases(default_suite(), {"fig6-vssw", "fig6-pw", "t1-01-xi0", "t1-07-xi0", "fig6-vssw/r0.5",
                                                    "fig6-pw/r0.5", "t1-15-xi0/r0.5", "t1-15-xi0.5/r0.5"});
     const FakeEngine exclusive("exclusive", false, /*exclusive=*/true);
     const FakeEngine free_runner("free-runner", false, false);
-    RunOptions o;
+    validation::RunOptions o;
     o.threads = 2;
     int calls = 0, last = 0, total = 0;
     bool in_order = true;
@@ -497,7 +497,7 @@ TEST(RunSuite, AnEngineThatMustNotRunConcurrentlyRunsOneTaskAtATime) {
         last = done;
         total = n;
     };
-    const SuiteResults r = run_suite_with_engines(s, {&exclusive, &free_runner}, o);
+    const validation::SuiteResults r = validation::run_suite_with_engines(s, {&exclusive, &free_runner}, o);
     EXPECT_TRUE(r.failures.empty());
     EXPECT_EQ(exclusive.max_running(), 1);
     // Progress: once per (case, engine) task, counted in order from the serialised callback.
@@ -507,13 +507,13 @@ TEST(RunSuite, AnEngineThatMustNotRunConcurrentlyRunsOneTaskAtATime) {
 }
 
 TEST(RunSuite, BadInputPropagatesAndUnknownEnginesAreNamed) {
-    const Suite s = small_selection();
+    const validation::Suite s = small_selection();
     const BadInputEngine bad;
-    RunOptions o;
+    validation::RunOptions o;
     o.threads = 2;
-    EXPECT_THROW((void)run_suite_with_engines(s, {&bad}, o), InputError);
+    EXPECT_THROW((void)validation::run_suite_with_engines(s, {&bad}, o), InputError);
     try {
-        (void)run_suite(s, {"analytic", "havok"});
+        (void)validation::run_suite(s, {"analytic", "havok"});
         FAIL() << "no error";
     } catch (const InputError& e) {
         const std::string m = e.what();
@@ -521,17 +521,17 @@ TEST(RunSuite, BadInputPropagatesAndUnknownEnginesAreNamed) {
         EXPECT_NE(m.find("analytic"), std::string::npos) << m;  // the available ones are listed
     }
     o.threads = -1;
-    EXPECT_THROW((void)run_suite(s, {"analytic"}, o), InputError);
+    EXPECT_THROW((void)validation::run_suite(s, {"analytic"}, o), InputError);
 }
 
 // Two cheap real-engine cases: a Bullet free vibration of the Fig. 6 PW and an ODE step case (which must run for
 // ODE only).
 TEST(RunSuite, EngineRowsOnCheapCases) {
     if (!engine_available("bullet") || !engine_available("ode")) GTEST_SKIP() << "Bullet or ODE not compiled in";
-    const Suite s = select_cases(default_suite(), {"fig6-pw/r0.5", "fig6-vssw/r0.5/dt0.001/ode"});
-    RunOptions o;
+    const validation::Suite s = validation::select_cases(default_suite(), {"fig6-pw/r0.5", "fig6-vssw/r0.5/dt0.001/ode"});
+    validation::RunOptions o;
     o.threads = 2;
-    const SuiteResults r = run_suite(s, {"bullet", "ode"}, o);
+    const validation::SuiteResults r = validation::run_suite(s, {"bullet", "ode"}, o);
     ASSERT_TRUE(r.failures.empty()) << r.failures.front().message;
     ASSERT_EQ(r.engines.size(), 3u);
     EXPECT_EQ(r.engines[0].name, "analytic");
@@ -541,23 +541,23 @@ TEST(RunSuite, EngineRowsOnCheapCases) {
 
     // The parapet: period and Housner's restitution within the targets (docs/engines.md: -0.015 % and -0.25 %
     // measured).
-    const MetricRow* period = find_row(r, "fig6-pw/r0.5", "bullet", "period");
-    const MetricRow* e = find_row(r, "fig6-pw/r0.5", "bullet", "restitution");
+    const validation::MetricRow* period = find_row(r, "fig6-pw/r0.5", "bullet", "period");
+    const validation::MetricRow* e = find_row(r, "fig6-pw/r0.5", "bullet", "restitution");
     ASSERT_TRUE(period && e);
     EXPECT_LT(std::abs(period->rel_error), kPeriodTarget);
     EXPECT_LT(std::abs(e->rel_error), kRestitutionTarget);
     const auto traces = std::count_if(r.traces.begin(), r.traces.end(),
-                                      [](const Trace& t) { return t.case_id == "fig6-pw/r0.5"; });
+                                      [](const validation::Trace& t) { return t.case_id == "fig6-pw/r0.5"; });
     EXPECT_EQ(traces, 3);  // analytic, bullet, ode
 
     // The step case: ODE's rows only (no analytic, no Bullet), at its step; its impact is the whole mechanism's, the
     // reference's.
-    for (const MetricRow& row : r.rows)
+    for (const validation::MetricRow& row : r.rows)
         if (row.case_id == "fig6-vssw/r0.5/dt0.001/ode") {
             EXPECT_EQ(row.engine, "ode");
         }
-    const MetricRow* step_e = find_row(r, "fig6-vssw/r0.5/dt0.001/ode", "ode", "restitution");
-    const MetricRow* step_period = find_row(r, "fig6-vssw/r0.5/dt0.001/ode", "ode", "period");
+    const validation::MetricRow* step_e = find_row(r, "fig6-vssw/r0.5/dt0.001/ode", "ode", "restitution");
+    const validation::MetricRow* step_period = find_row(r, "fig6-vssw/r0.5/dt0.001/ode", "ode", "period");
     ASSERT_TRUE(step_e && step_period);
     EXPECT_LT(std::abs(step_e->rel_error), kRestitutionTarget);
     EXPECT_LT(std::abs(step_period->rel_error), kPeriodTarget);
@@ -573,9 +573,9 @@ namespace {
 // under the set paper, whose bilateral roller can pull, from 0.8 alpha1 at xi 0.5 the roller must pull (Table 1 #7);
 // from 0.5 alpha1 it pushes throughout. (The mechanism's roller lets go instead: no warning to carry.)
 TEST(RunSuite, TheAnalyticModelsWarningsAreCarriedOncePerCase) {
-    Suite s = select_cases(vssw::study::read_suite("full", VSSW_DATA_DIR), {"t1-07-xi0.5/r0.8", "t1-07-xi0.5/r0.5"});
+    validation::Suite s = validation::select_cases(vssw::validation::read_suite("full", VSSW_DATA_DIR), {"t1-07-xi0.5/r0.8", "t1-07-xi0.5/r0.5"});
     s.reference = AssumptionSet::paper;
-    const SuiteResults r = run_suite(s, {"analytic"});
+    const validation::SuiteResults r = validation::run_suite(s, {"analytic"});
     ASSERT_EQ(r.model_warnings.size(), 1u);
     EXPECT_EQ(r.model_warnings[0].case_id, "t1-07-xi0.5/r0.8");
     EXPECT_NE(r.model_warnings[0].message.find("roller would have to pull"), std::string::npos);

@@ -25,8 +25,8 @@
 namespace vssw {
 namespace {
 
-using compare::BenchPoint;
-using compare::CpuTiming;
+using validation::BenchPoint;
+using validation::CpuTiming;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The fitted order may differ from the nominal one by the next term of the error's expansion: at the steps below
@@ -74,7 +74,7 @@ double fitted_order(const std::function<double(int)>& error_of) {
     std::vector<double> steps, errors;
     for (int n : {10, 20, 40, 80, 160}) {
         double error = kNaN;
-        const CpuTiming t = compare::time_cpu([&] { error = error_of(n); }, 3);
+        const CpuTiming t = validation::time_cpu([&] { error = error_of(n); }, 3);
         EXPECT_EQ(t.repeats.size(), 3u);
         steps.push_back(1.0 / n);
         errors.push_back(error);
@@ -94,16 +94,16 @@ TEST(WorkPrecision, SlopeNeedsTwoUsablePoints) {
 }
 
 TEST(WorkPrecision, MedianOfRepeats) {
-    EXPECT_DOUBLE_EQ(compare::median_of({3.0, 1.0, 2.0}), 2.0);
-    EXPECT_DOUBLE_EQ(compare::median_of({4.0, 1.0, 2.0, 3.0}), 2.5);
-    EXPECT_TRUE(std::isnan(compare::median_of({})));
+    EXPECT_DOUBLE_EQ(validation::median_of({3.0, 1.0, 2.0}), 2.0);
+    EXPECT_DOUBLE_EQ(validation::median_of({4.0, 1.0, 2.0, 3.0}), 2.5);
+    EXPECT_TRUE(std::isnan(validation::median_of({})));
 }
 
 TEST(WorkPrecision, ParetoFrontOnHandMadePoints) {
     //                       0    1    2    3    4    5     6
     const std::vector<double> cost = {1.0, 2.0, 3.0, 0.5, 2.0, 1.0, 4.0};
     const std::vector<double> error = {1.0, 0.5, 0.6, 2.0, 0.5, 1.5, kNaN};
-    const std::vector<bool> front = compare::pareto_front(cost, error);
+    const std::vector<bool> front = validation::pareto_front(cost, error);
     // 2 is beaten by 1 on both; 5 by 0 on error at equal cost; 6 has no error. 1 and 4 tie: neither dominates.
     EXPECT_EQ(front, (std::vector<bool>{true, true, false, true, true, false, false}));
 }
@@ -135,7 +135,7 @@ TEST(WorkPrecision, CheapestSettingMeetsEveryTarget) {
         point("f", "fig6-free", "period", "only", 1.0, period_off),
         point("f", "fig6-free", "restitution", "only", 1.0, rest_ok),
     };
-    const std::vector<compare::Cheapest> c = compare::cheapest_within_targets(points, {"e", "f"});
+    const std::vector<validation::Cheapest> c = validation::cheapest_within_targets(points, {"e", "f"});
     ASSERT_EQ(c.size(), 2u);
     ASSERT_TRUE(c[0].setting.has_value());
     EXPECT_EQ(*c[0].setting, "mid");
@@ -151,7 +151,7 @@ TEST(WorkPrecision, FailedPointIsNeverCheapest) {
     BenchPoint failed = point("e", "fig6-free", "period", "cheap", 0.1, kNaN);
     failed.failure = "blew up";
     const std::vector<BenchPoint> points = {failed, point("e", "fig6-free", "period", "dear", 1.0, 0.0)};
-    const std::vector<compare::Cheapest> c = compare::cheapest_within_targets(points, {"e"});
+    const std::vector<validation::Cheapest> c = validation::cheapest_within_targets(points, {"e"});
     ASSERT_TRUE(c[0].setting.has_value());
     EXPECT_EQ(*c[0].setting, "dear");
 }
@@ -162,15 +162,15 @@ std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path
     std::ifstream in(path);
     std::vector<std::vector<std::string>> rows;
     std::vector<std::string> fields;
-    while (study::read_csv_record(in, fields)) rows.push_back(fields);
+    while (io::read_csv_record(in, fields)) rows.push_back(fields);
     return rows;
 }
 
 // A reference the analytic model could not measure used to leave its problem's points without errors, exit 0.
 TEST(WorkPrecision, AnUnmeasuredReferenceIsAFailureNamingTheProblemAndMetric) {
-    EXPECT_NO_THROW(compare::require_measured_references("fig6-free", {{"period", 1.67}, {"restitution", 0.95}}));
+    EXPECT_NO_THROW(validation::require_measured_references("fig6-free", {{"period", 1.67}, {"restitution", 0.95}}));
     try {
-        compare::require_measured_references("fig6-free", {{"period", 1.67}, {"restitution", std::nan("")}});
+        validation::require_measured_references("fig6-free", {{"period", 1.67}, {"restitution", std::nan("")}});
         ADD_FAILURE() << "a NaN reference was accepted";
     } catch (const multibody::EngineFailure& e) {
         const std::string what = e.what();
@@ -185,7 +185,7 @@ TEST(BenchSpec, EveryCombinationOfTheAxesOnTheDefaultsLabelledByItsValues) {
     multibody::EngineSettings defaults;
     defaults.dt = 2e-3;
     defaults.knobs["erp"] = 0.2;
-    const std::vector<compare::BenchSetting> sweep = compare::expand_bench_spec(
+    const std::vector<validation::BenchSetting> sweep = validation::expand_bench_spec(
         defaults, "dt={dt} it={iterations}: dt 1e-3 2.5e-4, iterations 4 8|q={quickstep} at {dt}: quickstep 1");
     const std::vector<std::string> labels = {"dt=1e-03 it=4", "dt=1e-03 it=8", "dt=2.5e-04 it=4", "dt=2.5e-04 it=8",
                                              "q=1e+00 at 2e-03"};
@@ -198,7 +198,7 @@ TEST(BenchSpec, EveryCombinationOfTheAxesOnTheDefaultsLabelledByItsValues) {
     EXPECT_EQ(sweep[2].settings.iterations, 4);
     EXPECT_EQ(sweep[4].settings.dt, 2e-3);
     EXPECT_EQ(sweep[4].settings.knobs.at("quickstep"), 1.0);
-    EXPECT_TRUE(compare::expand_bench_spec(defaults, "").empty());
+    EXPECT_TRUE(validation::expand_bench_spec(defaults, "").empty());
 }
 
 // A text that does not read as a sweep is the build's fault and is named, not swept as something else.
@@ -206,7 +206,7 @@ TEST(BenchSpec, ATextThatIsNotASweepIsRefusedNamingIt) {
     const multibody::EngineSettings defaults;
     for (const char* text : {"dt 1e-3", "dt={dt}: dt 1e-3 fast", "dt={dt}: dt", "a={accuracy}: dt 1e-3", "dt={dt: dt 1"}) {
         try {
-            (void)compare::expand_bench_spec(defaults, text);
+            (void)validation::expand_bench_spec(defaults, text);
             ADD_FAILURE() << "accepted: " << text;
         } catch (const std::logic_error& e) {
             EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
@@ -222,7 +222,7 @@ TEST(BenchCli, QuickSweepWritesFinitePoints) {
 
     const auto rows = read_csv(dir / "bench.csv");
     ASSERT_GE(rows.size(), 2u);
-    const std::vector<std::string> columns = study::bench_csv_columns();
+    const std::vector<std::string> columns = validation::bench_csv_columns();
     ASSERT_EQ(rows[0], columns);
     auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
@@ -237,7 +237,7 @@ TEST(BenchCli, QuickSweepWritesFinitePoints) {
         EXPECT_GT(cpu, 0.0);
         // The analytic model against its own converged run and Eq. (19) / Housner: within every target.
         if (row[col("engine")] == "analytic") {
-            const auto target = compare::bench_target(row[col("metric")]);
+            const auto target = validation::bench_target(row[col("metric")]);
             ASSERT_TRUE(target.has_value());
             EXPECT_LE(error, *target);
         }

@@ -258,17 +258,17 @@ TEST(WorkerProcess, AnOdeStudysResultsAreTheSameFileOnOneAndTwoThreads) {
 // docs/engines.md, "ODE"): its rows, failures and traces are those of one thread.
 TEST(WorkerProcess, OdesSuiteRowsAreTheSameOnOneAndTwoThreads) {
     if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
-    const compare::Suite s = compare::select_cases(study::read_suite("default", VSSW_DATA_DIR), {"fig6-pw", "fig6-vssw/r0.5"});
-    compare::RunOptions one, two;
+    const validation::Suite s = validation::select_cases(validation::read_suite("default", VSSW_DATA_DIR), {"fig6-pw", "fig6-vssw/r0.5"});
+    validation::RunOptions one, two;
     one.threads = 1;
     two.threads = 2;
-    const compare::SuiteResults a = compare::run_suite(s, {"ode"}, one);
-    const compare::SuiteResults b = compare::run_suite(s, {"ode"}, two);
+    const validation::SuiteResults a = validation::run_suite(s, {"ode"}, one);
+    const validation::SuiteResults b = validation::run_suite(s, {"ode"}, two);
     ASSERT_EQ(b.threads, 2);
     ASSERT_EQ(a.rows.size(), b.rows.size());
     bool has_ode = false;
     for (std::size_t i = 0; i < a.rows.size(); ++i) {
-        const compare::MetricRow &x = a.rows[i], &y = b.rows[i];
+        const validation::MetricRow &x = a.rows[i], &y = b.rows[i];
         has_ode = has_ode || x.engine == "ode";
         EXPECT_EQ(x.case_id + x.engine + x.metric, y.case_id + y.engine + y.metric);
         EXPECT_TRUE(same_bits(x.engine_value, y.engine_value)) << x.case_id << " " << x.engine << " " << x.metric;

@@ -1,6 +1,6 @@
 #include "validation/assumption_set_engine.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 
 std::string assumption_set_engine_id(AssumptionSet set) { return std::string(to_string(set)) + "-model"; }
 
@@ -12,4 +12,4 @@ multibody::EngineSettings AssumptionSetEngine::default_settings() const {
     return multibody::analytic_settings(assumptions_of(set_));
 }
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

@@ -11,7 +11,7 @@
 #include "analytic/assumption_sets.hpp"
 #include "multibody/host/analytic_engine.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 
 // The engine id of the analytic model under a set in the suite's results: "paper-model", "mechanism-model".
 std::string assumption_set_engine_id(AssumptionSet set);
@@ -43,4 +43,4 @@ private:
     multibody::AnalyticEngine model_;
 };
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

@@ -19,11 +19,11 @@
 #include "io/json.hpp"
 #include "io/text.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace {
 
 namespace fs = std::filesystem;
-using compare::BenchPoint;
+using validation::BenchPoint;
 
 // Plot size: the report page's width (validation/report_plots.cpp), shown there at about its own size.
 constexpr int kPlotWidth = 1100, kPlotHeight = 480;
@@ -34,7 +34,7 @@ std::string knobs_text(const multibody::EngineSettings& s) {
     return text;
 }
 
-// An error or a target in percent without a sign ("0.5 %"), "-" when not measured (study::percent is signed).
+// An error or a target in percent without a sign ("0.5 %"), "-" when not measured (io::percent is signed).
 std::string error_percent(double v) { return std::isfinite(v) ? fmt::format("{:.3g} %", 100.0 * v) : "-"; }
 
 // The (problem, metric) pairs in the order the points first give them.
@@ -61,10 +61,10 @@ BenchData bench_data(BenchMeta meta, std::vector<BenchPoint> points) {
                 cost.push_back(d.points[i].cpu.median);
                 error.push_back(d.points[i].error);
             }
-        const std::vector<bool> front = compare::pareto_front(cost, error);
+        const std::vector<bool> front = pareto_front(cost, error);
         for (std::size_t k = 0; k < idx.size(); ++k) d.pareto[idx[k]] = front[k];
     }
-    d.cheapest = compare::cheapest_within_targets(d.points, d.meta.engines);
+    d.cheapest = cheapest_within_targets(d.points, d.meta.engines);
     return d;
 }
 
@@ -73,11 +73,11 @@ std::vector<std::string> bench_csv_columns() {
             "noise",  "repeats", "cpu_repeats", "value", "reference", "error",    "pareto", "failure"};
 }
 
-Json bench_json(const BenchData& d) {
-    Json points = Json::array();
+io::Json bench_json(const BenchData& d) {
+    io::Json points = io::Json::array();
     for (std::size_t i = 0; i < d.points.size(); ++i) {
         const BenchPoint& p = d.points[i];
-        const std::optional<double> target = compare::bench_target(p.metric);  // none for the peak
+        const std::optional<double> target = bench_target(p.metric);  // none for the peak
         points.push_back({{"engine", p.engine},
                           {"problem", p.problem},
                           {"metric", p.metric},
@@ -86,16 +86,16 @@ Json bench_json(const BenchData& d) {
                           {"cpu_s", p.cpu.median},
                           {"cpu_repeats", p.cpu.repeats},
                           {"noise", p.cpu.noise},
-                          {"value", finite_or_null(p.value)},
-                          {"reference", finite_or_null(p.reference)},
-                          {"error", finite_or_null(p.error)},
-                          {"target", or_null(target)},
+                          {"value", io::finite_or_null(p.value)},
+                          {"reference", io::finite_or_null(p.reference)},
+                          {"error", io::finite_or_null(p.error)},
+                          {"target", io::or_null(target)},
                           {"pareto", static_cast<bool>(d.pareto[i])},
-                          {"failure", p.failure.empty() ? Json(nullptr) : Json(p.failure)}});
+                          {"failure", p.failure.empty() ? io::Json(nullptr) : io::Json(p.failure)}});
     }
-    Json cheapest = Json::array();
-    for (const compare::Cheapest& c : d.cheapest) {
-        Json per = Json::object();
+    io::Json cheapest = io::Json::array();
+    for (const Cheapest& c : d.cheapest) {
+        io::Json per = io::Json::object();
         for (const auto& [key, index] : c.per_metric) {
             if (!index) {
                 per[key] = nullptr;
@@ -105,8 +105,8 @@ Json bench_json(const BenchData& d) {
             per[key] = {{"setting", p.setting}, {"cpu_s", p.cpu.median}, {"error", p.error}};
         }
         cheapest.push_back({{"engine", c.engine},
-                            {"setting", c.setting ? Json(*c.setting) : Json(nullptr)},
-                            {"cpu_s", c.setting ? Json(c.cpu_s) : Json(nullptr)},
+                            {"setting", c.setting ? io::Json(*c.setting) : io::Json(nullptr)},
+                            {"cpu_s", c.setting ? io::Json(c.cpu_s) : io::Json(nullptr)},
                             {"per_metric", per}});
     }
     return {{"date", d.meta.date},
@@ -131,12 +131,12 @@ std::string cheapest_markdown(const BenchData& d) {
     const std::vector<std::pair<std::string, std::string>> pm = problem_metrics(d.points);
     std::vector<std::string> targeted;
     for (const auto& [problem, metric] : pm)
-        if (compare::bench_target(metric)) targeted.push_back(problem + "/" + metric);
+        if (bench_target(metric)) targeted.push_back(problem + "/" + metric);
     for (const std::string& key : targeted) md << ' ' << key << " |";
     md << "\n|---|---|---|";
     for (std::size_t i = 0; i < targeted.size(); ++i) md << "---|";
     md << '\n';
-    for (const compare::Cheapest& c : d.cheapest) {
+    for (const Cheapest& c : d.cheapest) {
         md << "| " << c.engine << " | " << (c.setting ? *c.setting : "none meets them all") << " | "
            << (c.setting ? fmt::format("{:.4g}", c.cpu_s) : "-") << " |";
         for (const std::string& key : targeted) {
@@ -157,10 +157,10 @@ std::string cheapest_markdown(const BenchData& d) {
     return md.str();
 }
 
-std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
-    std::vector<PlotScript> scripts;
+std::vector<io::PlotScript> bench_plot_scripts(const BenchData& d) {
+    std::vector<io::PlotScript> scripts;
     for (const auto& [problem, metric] : problem_metrics(d.points)) {
-        const std::string name = file_stem("wp_" + problem + "_" + metric);
+        const std::string name = io::file_stem("wp_" + problem + "_" + metric);
         std::ostringstream dat, gp;
         std::vector<std::string> series;
         std::size_t block = 0;
@@ -171,13 +171,13 @@ std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
                 if (p.problem == problem && p.metric == metric && p.engine == engine && plottable(p)) line.push_back(&p);
             if (line.empty()) continue;  // gnuplot refuses a block of nothing
             std::sort(line.begin(), line.end(), [](auto* a, auto* b) { return a->cpu.median < b->cpu.median; });
-            dat << "# " << gp_comment(engine) << ": cpu_s error setting\n";
+            dat << "# " << io::gp_comment(engine) << ": cpu_s error setting\n";
             for (const BenchPoint* p : line)
-                dat << gp_number(p->cpu.median, true) << ' ' << gp_number(p->error, true) << ' '
-                    << gp_data_string(p->setting) << '\n';
+                dat << io::gp_number(p->cpu.median, true) << ' ' << io::gp_number(p->error, true) << ' '
+                    << io::gp_data_string(p->setting) << '\n';
             dat << "\n\n";
             series.push_back(fmt::format("'{}.dat' index {} using 1:2 with linespoints {} title {}", name, block++,
-                                         series_style(engine, 0), gp_string(engine)));
+                                         io::series_style(engine, 0), io::gp_string(engine)));
         }
         if (series.empty()) continue;
         dat << "# Pareto front (all engines): cpu_s error\n";
@@ -188,21 +188,21 @@ std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
                 front.emplace_back(p.cpu.median, p.error);
         }
         std::sort(front.begin(), front.end());
-        for (const auto& [cpu, error] : front) dat << gp_number(cpu, true) << ' ' << gp_number(error, true) << '\n';
+        for (const auto& [cpu, error] : front) dat << io::gp_number(cpu, true) << ' ' << io::gp_number(error, true) << '\n';
         if (!front.empty())
             series.push_back(fmt::format("'{}.dat' index {} using 1:2 with points pt 6 ps 2 lc rgb 'black' title "
                                          "'Pareto front'",
                                          name, block));
-        if (const std::optional<double> target = compare::bench_target(metric))
+        if (const std::optional<double> target = bench_target(metric))
             series.push_back(fmt::format("{:g} with lines dt 3 lc rgb '#888888' title 'target {:g} %'", *target,
                                          100.0 * *target));
         const std::string title = fmt::format("Work-precision: {} on {}", metric, problem);
-        gp << gp_preamble("vssw bench", name, kPlotWidth, kPlotHeight) << "set title " << gp_string(title) << '\n'
+        gp << io::gp_preamble("vssw bench", name, kPlotWidth, kPlotHeight) << "set title " << io::gp_string(title) << '\n'
              << "set logscale xy\nset format x '%g'\nset format y '%g'\n"
-             << gp_xlabel("CPU time per run [s] (median of repeats)")
+             << io::gp_xlabel("CPU time per run [s] (median of repeats)")
              << "set ylabel 'relative error against the converged reference'\n"
              << "plot " << fmt::format("{}", fmt::join(series, ", \\\n     ")) << '\n';
-        PlotScript script;
+        io::PlotScript script;
         script.plot.section = "Work-precision";
         script.plot.name = name;
         script.plot.title = title;
@@ -213,33 +213,33 @@ std::vector<PlotScript> bench_plot_scripts(const BenchData& d) {
     return scripts;
 }
 
-PlotResult write_bench(const BenchData& d, const fs::path& dir, const std::string& gnuplot) {
+io::PlotResult write_bench(const BenchData& d, const fs::path& dir, const std::string& gnuplot) {
     std::error_code ec;
     fs::create_directories(dir, ec);
-    write_file(dir / "bench.json", [&](std::ostream& out) { out << dump_json(bench_json(d), 2) << '\n'; });
-    write_file(dir / "bench.csv", [&](std::ostream& out) {
+    io::write_file(dir / "bench.json", [&](std::ostream& out) { out << io::dump_json(bench_json(d), 2) << '\n'; });
+    io::write_file(dir / "bench.csv", [&](std::ostream& out) {
         const std::vector<std::string> columns = bench_csv_columns();
         out << fmt::format("{}", fmt::join(columns, ",")) << '\n';
         for (std::size_t i = 0; i < d.points.size(); ++i) {
             const BenchPoint& p = d.points[i];
             std::vector<std::string> repeats;
-            for (double r : p.cpu.repeats) repeats.push_back(csv_number(r));
+            for (double r : p.cpu.repeats) repeats.push_back(io::csv_number(r));
             const std::vector<std::string> row = {
-                csv_field(p.engine), csv_field(p.problem), csv_field(p.metric), csv_field(p.setting),
-                csv_number(p.settings.dt), std::to_string(p.settings.iterations), csv_field(knobs_text(p.settings)),
-                csv_number(p.cpu.median), csv_number(p.cpu.noise), std::to_string(p.cpu.repeats.size()),
-                csv_field(fmt::format("{}", fmt::join(repeats, ";"))), csv_number(p.value), csv_number(p.reference),
-                csv_number(p.error), d.pareto[i] ? "1" : "0", csv_field(p.failure)};
+                io::csv_field(p.engine), io::csv_field(p.problem), io::csv_field(p.metric), io::csv_field(p.setting),
+                io::csv_number(p.settings.dt), std::to_string(p.settings.iterations), io::csv_field(knobs_text(p.settings)),
+                io::csv_number(p.cpu.median), io::csv_number(p.cpu.noise), std::to_string(p.cpu.repeats.size()),
+                io::csv_field(fmt::format("{}", fmt::join(repeats, ";"))), io::csv_number(p.value), io::csv_number(p.reference),
+                io::csv_number(p.error), d.pareto[i] ? "1" : "0", io::csv_field(p.failure)};
             out << fmt::format("{}", fmt::join(row, ",")) << '\n';
         }
     });
-    PlotResult plots;
+    io::PlotResult plots;
     if (gnuplot.empty()) {
         plots.note = "plots not drawn (--no-plots)";
     } else {
-        plots = draw_plots(bench_plot_scripts(d), dir / "plots", gnuplot);
+        plots = io::draw_plots(bench_plot_scripts(d), dir / "plots", gnuplot);
     }
-    write_file(dir / "bench.md", [&](std::ostream& md) {
+    io::write_file(dir / "bench.md", [&](std::ostream& md) {
         md << "# Work-precision (`vssw bench`)\n\n"
            << fmt::format("Made {} by vssw {}; {} repeat(s) per point{}; load average at the start: {}.\n\n",
                           d.meta.date, d.meta.commit.empty() ? "(commit unknown)" : d.meta.commit, d.meta.repeats,
@@ -251,30 +251,30 @@ PlotResult write_bench(const BenchData& d, const fs::path& dir, const std::strin
            << ".\n\n## Cheapest settings within the targets\n\n"
            << cheapest_markdown(d) << "\n## Plots\n\n";
         if (!plots.note.empty()) md << "No plots or not all: " << plots.note << "\n\n";
-        for (const Plot& p : plots.plots)
+        for (const io::Plot& p : plots.plots)
             if (p.made) md << "![" << p.title << "](plots/" << p.name << ".svg)\n\n";
     });
     return plots;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace {
 
-Json read_bench_json(const std::filesystem::path& bench_dir) {
+io::Json read_bench_json(const std::filesystem::path& bench_dir) {
     const std::filesystem::path path = bench_dir / "bench.json";
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
         throw InputError(fmt::format("--bench: cannot read {} (run `vssw bench --out {}` first)", path.string(),
                                      bench_dir.string()));
-    Json j = Json::parse(read_input_file(path, "--bench: the file", kMaxTextFileBytes), nullptr, false);
+    io::Json j = io::Json::parse(read_input_file(path, "--bench: the file", kMaxTextFileBytes), nullptr, false);
     if (j.is_discarded() || !j.is_object() || !j.contains("cheapest") || !j.contains("points"))
         throw InputError(fmt::format("--bench: {} is not a bench.json written by vssw bench", path.string()));
     return j;
 }
 
-std::string text_of(const Json& j, const char* key) {
+std::string text_of(const io::Json& j, const char* key) {
     return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string("?");
 }
 
@@ -282,19 +282,19 @@ std::string text_of(const Json& j, const char* key) {
 
 void check_bench_dir(const std::filesystem::path& bench_dir) { (void)read_bench_json(bench_dir); }
 
-std::vector<DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir,
+std::vector<io::DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir,
                                           const std::filesystem::path& plots_dir) {
-    const Json j = read_bench_json(bench_dir);
-    std::vector<DocBlock> blocks;
-    blocks.push_back(heading(2, "Work-precision (vssw bench)"));
-    blocks.push_back(paragraph(fmt::format(
+    const io::Json j = read_bench_json(bench_dir);
+    std::vector<io::DocBlock> blocks;
+    blocks.push_back(io::heading(2, "Work-precision (vssw bench)"));
+    blocks.push_back(io::paragraph(fmt::format(
         "From the bench folder {}: made {} by vssw {}, {} repeat(s) per point, load average at its start {}. CPU time "
         "of the process per run against the relative error on the converged reference of the same physics; the "
         "Pareto front circled. The report does not run the sweep (minutes): `vssw bench --out DIR` does.",
         bench_dir.string(), text_of(j, "date"), text_of(j, "commit"), j.value("repeats", 0),
         text_of(j, "load_average"))));
-    DocBlock t = table({"engine", "cheapest setting within every target", "CPU [s] (sum over problems)"}, 2);
-    for (const Json& c : j["cheapest"]) {
+    io::DocBlock t = io::table({"engine", "cheapest setting within every target", "CPU [s] (sum over problems)"}, 2);
+    for (const io::Json& c : j["cheapest"]) {
         const bool met = c.contains("setting") && c["setting"].is_string();
         t.rows.push_back({{text_of(c, "engine"), false},
                           {met ? c["setting"].get<std::string>() : "none meets them all", !met},
@@ -309,7 +309,7 @@ std::vector<DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir
     // The plots of this bench's own problems and metrics, in the order of its points: a folder benched before may
     // hold plots of problems this bench did not run.
     std::vector<std::string> names;
-    for (const Json& p : j.value("points", Json::array())) {
+    for (const io::Json& p : j.value("points", io::Json::array())) {
         const std::string name = "wp_" + text_of(p, "problem") + "_" + text_of(p, "metric");
         if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     }
@@ -319,9 +319,9 @@ std::vector<DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir
         std::error_code copy_ec;
         std::filesystem::copy_file(svg, plots_dir / svg.filename(), std::filesystem::copy_options::overwrite_existing,
                                    copy_ec);
-        if (!copy_ec) blocks.push_back(plot("Work-precision " + name.substr(3), name));
+        if (!copy_ec) blocks.push_back(io::plot("Work-precision " + name.substr(3), name));
     }
     return blocks;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -11,7 +11,7 @@
 #include "io/gnuplot.hpp"
 #include "io/json.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 struct BenchMeta {
     std::string date;    // ISO 8601 UTC
@@ -24,37 +24,37 @@ struct BenchMeta {
 
 struct BenchData {
     BenchMeta meta;
-    std::vector<compare::BenchPoint> points;
+    std::vector<BenchPoint> points;
     std::vector<bool> pareto;  // per point: on the Pareto front of its problem and metric (all engines)
-    std::vector<compare::Cheapest> cheapest;
+    std::vector<Cheapest> cheapest;
 };
 
 // The Pareto flags and the cheapest settings of a finished sweep.
-BenchData bench_data(BenchMeta meta, std::vector<compare::BenchPoint> points);
+BenchData bench_data(BenchMeta meta, std::vector<BenchPoint> points);
 
 // The CSV's header, in its column order (the tests check the file against it).
 std::vector<std::string> bench_csv_columns();
-Json bench_json(const BenchData& data);
+io::Json bench_json(const BenchData& data);
 // The per-engine table of the cheapest settings within the targets, in Markdown (bench.md and `vssw bench`'s output).
 std::string cheapest_markdown(const BenchData& data);
 // The plot scripts, one per problem and metric with at least one finite, positive error.
-std::vector<PlotScript> bench_plot_scripts(const BenchData& data);
+std::vector<io::PlotScript> bench_plot_scripts(const BenchData& data);
 
 // Writes bench.json, bench.csv, bench.md and the plots (unless `gnuplot` is empty) into `dir` (created). The result
 // says which plots were made and, when gnuplot failed or is missing, why (a warning: the data are written anyway).
-PlotResult write_bench(const BenchData& data, const std::filesystem::path& dir, const std::string& gnuplot);
+io::PlotResult write_bench(const BenchData& data, const std::filesystem::path& dir, const std::string& gnuplot);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation
 
-namespace vssw::study {
+namespace vssw::validation {
 
 // The validation report's section on a finished bench folder (`vssw report --bench DIR`; the report never runs the
 // sweep itself, it would take minutes): a heading, when and where the bench ran, the cheapest settings per engine
 // from DIR/bench.json, and DIR/plots/wp_*.svg copied into `plots_dir` and shown. InputError naming the file when
 // DIR/bench.json is missing or not a bench's.
-std::vector<DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir,
+std::vector<io::DocBlock> bench_report_blocks(const std::filesystem::path& bench_dir,
                                           const std::filesystem::path& plots_dir);
 // The same checks without writing anything (before the suite runs).
 void check_bench_dir(const std::filesystem::path& bench_dir);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

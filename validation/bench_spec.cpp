@@ -8,7 +8,7 @@
 
 #include "vssw_engine_facts.hpp"  // each engine's BENCH text (generated: cmake/engines.cmake)
 
-namespace vssw::compare {
+namespace vssw::validation {
 namespace {
 
 struct Axis {
@@ -110,4 +110,4 @@ std::string_view bench_spec_of(const std::string& name) {
     return "";
 }
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

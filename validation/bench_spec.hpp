@@ -8,7 +8,7 @@
 #include "multibody/engine.hpp"
 #include "validation/work_precision.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 
 // A setting's value in a label: 1e-04, 2.5e-04 (one decimal only when it is needed).
 std::string sci(double v);
@@ -23,4 +23,4 @@ std::vector<BenchSetting> expand_bench_spec(const multibody::EngineSettings& def
 // The sweep text of the backend `name` in this build's facts; "" when it states none.
 std::string_view bench_spec_of(const std::string& name);
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

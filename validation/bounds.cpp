@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace vssw::compare {
+namespace vssw::validation {
 namespace {
 
 void add_once(std::vector<std::string>& list, const std::string& item) {
@@ -77,4 +77,4 @@ std::vector<BoundVerdict> evaluate(const Bounds& bounds, const SuiteResults& res
     return verdicts;
 }
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

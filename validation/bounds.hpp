@@ -1,13 +1,13 @@
 #pragma once
 // Bounds on the suite's metrics (`vssw check`): how far each engine may be from the analytic model, and how far the
-// analytic core may drift from stored reference values. The file formats (TOML, JSON) are read in apps/; this is what
+// analytic core may drift from stored reference values. The file formats (TOML, JSON) are read in cli/; this is what
 // they mean and how results are held against them.
 #include <string>
 #include <vector>
 
 #include "validation/suite.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 
 // The analytic model's own value of a metric on a case, against a value stored when the core was last trusted:
 // |value / reference - 1| <= max_drift (|value| <= max_drift when the reference is 0).
@@ -30,7 +30,7 @@ struct EngineBound {
 };
 
 // The verdicts `vssw stress --quick` may give (docs/guide/stress.md): each listed case on each listed engine must end
-// with one of `allowed` ("ok", "refused", "failed"). Held in apps/ (cmd_check.cpp), which runs the stress cases.
+// with one of `allowed` ("ok", "refused", "failed"). Held in cli/ (cmd_check.cpp), which runs the stress cases.
 struct StressBound {
     std::vector<std::string> case_ids;  // stress case names (stress/cases.cpp)
     std::vector<std::string> engines;   // empty: every backend compiled in
@@ -39,7 +39,7 @@ struct StressBound {
 
 // An engine's measure under a record ensemble (validation/earthquake.hpp): the value must lie in [min, max]. Measures:
 // overturning_agreement, fragility_median_ratio, peak_ratio_median, inside_band (the share of runs inside the
-// reference's band). Held in apps/ (cmd_check.cpp), which runs the ensemble.
+// reference's band). Held in cli/ (cmd_check.cpp), which runs the ensemble.
 struct EarthquakeBound {
     std::string study;  // the ensemble, as `vssw report --earthquake` names it ("default": the shipped one)
     std::string engine;
@@ -48,7 +48,7 @@ struct EarthquakeBound {
 };
 
 struct Bounds {
-    std::string suite = "default";  // where the case ids come from: a shipped suite or a suite file (study::read_suite)
+    std::string suite = "default";  // where the case ids come from: a shipped suite or a suite file (validation::read_suite)
     std::vector<AnalyticBound> analytic;
     std::vector<EngineBound> engines;
     std::vector<StressBound> stress;
@@ -77,4 +77,4 @@ struct BoundVerdict {
 // bound that does not hold (nothing passes by not being measured).
 std::vector<BoundVerdict> evaluate(const Bounds& bounds, const SuiteResults& results);
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

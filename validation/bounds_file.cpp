@@ -15,7 +15,7 @@
 #include "io/config_file.hpp"
 #include "io/json.hpp"
 
-namespace vssw::cli {
+namespace vssw::validation {
 namespace {
 
 using nlohmann::json;
@@ -36,7 +36,7 @@ public:
     std::string text(const char* key) const {
         const json& v = required(key);
         if (!v.is_string() || v.get<std::string>().empty())
-            throw InputError(fmt::format("{}: '{}' must be a non-empty string, got {}", where_, key, study::dump_json(v)));
+            throw InputError(fmt::format("{}: '{}' must be a non-empty string, got {}", where_, key, io::dump_json(v)));
         return v.get<std::string>();
     }
     double number(const char* key) const { return finite(required(key), key); }
@@ -50,12 +50,12 @@ public:
         const json& v = required(key);
         if (!v.is_array() || v.empty())
             throw InputError(
-                fmt::format("{}: '{}' must be a non-empty list of {}, got {}", where_, key, what, study::dump_json(v)));
+                fmt::format("{}: '{}' must be a non-empty list of {}, got {}", where_, key, what, io::dump_json(v)));
         std::vector<std::string> out;
         for (const json& x : v) {
             if (!x.is_string() || x.get<std::string>().empty())
                 throw InputError(
-                    fmt::format("{}: '{}' holds {}, not one of the {} it lists", where_, key, study::dump_json(x), what));
+                    fmt::format("{}: '{}' holds {}, not one of the {} it lists", where_, key, io::dump_json(x), what));
             out.push_back(x.get<std::string>());
         }
         return out;
@@ -63,7 +63,7 @@ public:
     std::pair<double, double> range(const char* key) const {
         const json& v = required(key);
         if (!v.is_array() || v.size() != 2)
-            throw InputError(fmt::format("{}: '{}' must be [min, max], got {}", where_, key, study::dump_json(v)));
+            throw InputError(fmt::format("{}: '{}' must be [min, max], got {}", where_, key, io::dump_json(v)));
         const double lo = finite(v[0], key), hi = finite(v[1], key);
         if (lo > hi) throw InputError(fmt::format("{}: '{}' = [{}, {}] has min > max", where_, key, lo, hi));
         return {lo, hi};
@@ -78,7 +78,7 @@ private:
     double finite(const json& v, const char* key) const {
         // JSON has no NaN; TOML's nan and inf come through the JSON formatter as strings or non-numbers.
         if (!v.is_number() || !std::isfinite(v.get<double>()))
-            throw InputError(fmt::format("{}: '{}' must be a finite number, got {}", where_, key, study::dump_json(v)));
+            throw InputError(fmt::format("{}: '{}' must be a finite number, got {}", where_, key, io::dump_json(v)));
         return v.get<double>();
     }
 
@@ -87,10 +87,10 @@ private:
 };
 
 // An [[earthquake]] entry: study (default "default"), engine, measure, and min, max or both.
-compare::EarthquakeBound earthquake_bound(const EntryReader& r) {
+EarthquakeBound earthquake_bound(const EntryReader& r) {
     static const std::vector<std::string> kMeasures = {"overturning_agreement", "fragility_median_ratio",
                                                        "peak_ratio_median", "inside_band"};
-    compare::EarthquakeBound b{r.has("study") ? r.text("study") : "default", r.text("engine"), r.text("measure"),
+    EarthquakeBound b{r.has("study") ? r.text("study") : "default", r.text("engine"), r.text("measure"),
                                r.has("min") ? r.number("min") : -HUGE_VAL, r.has("max") ? r.number("max") : HUGE_VAL};
     if (b.engine == "analytic") throw InputError(r.where() + ": engine 'analytic' is the reference");
     if (std::find(kMeasures.begin(), kMeasures.end(), b.measure) == kMeasures.end())
@@ -109,7 +109,7 @@ const json& list_of_tables(const json& doc, const char* key, const std::string& 
     return v;
 }
 
-compare::Bounds to_bounds(const json& doc, const std::string& name) {
+Bounds to_bounds(const json& doc, const std::string& name) {
     if (!doc.is_object()) throw InputError(fmt::format("bounds file {}: the top level must be a table", name));
     for (const auto& item : doc.items())
         if (item.key() != "suite" && item.key() != "analytic" && item.key() != "engine" && item.key() != "stress" &&
@@ -117,10 +117,10 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
             throw InputError(fmt::format(
                 "bounds file {}: unknown key '{}' (known: suite, analytic, engine, stress, earthquake)", name,
                 item.key()));
-    compare::Bounds bounds;
+    Bounds bounds;
     if (doc.contains("suite")) {
         if (!doc["suite"].is_string())
-            throw InputError(fmt::format("bounds file {}: 'suite' must be a string, got {}", name, study::dump_json(doc["suite"])));
+            throw InputError(fmt::format("bounds file {}: 'suite' must be a string, got {}", name, io::dump_json(doc["suite"])));
         bounds.suite = doc["suite"].get<std::string>();
     }
     int i = 0;
@@ -133,7 +133,7 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
     for (const json& entry : list_of_tables(doc, "engine", name)) {
         const EntryReader r(entry, fmt::format("bounds file {}: engine bound #{}", name, ++i),
                             {"engine", "cases", "metric", "max_error", "error"});
-        compare::EngineBound b{r.text("engine"), r.texts("cases"), r.text("metric"), 0.0, 0.0};
+        EngineBound b{r.text("engine"), r.texts("cases"), r.text("metric"), 0.0, 0.0};
         if (b.engine == "analytic")
             throw InputError(r.where() + ": engine 'analytic' is the reference; bound its drift in [[analytic]]");
         std::set<std::string> seen;
@@ -154,7 +154,7 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
     for (const json& entry : list_of_tables(doc, "stress", name)) {
         const EntryReader r(entry, fmt::format("bounds file {}: stress bound #{}", name, ++i),
                             {"cases", "engines", "allowed"});
-        compare::StressBound b{r.texts("cases"),
+        StressBound b{r.texts("cases"),
                                r.has("engines") ? r.texts("engines", "engine names") : std::vector<std::string>{},
                                r.texts("allowed", "verdicts")};
         for (const std::string& v : b.allowed)
@@ -175,12 +175,12 @@ compare::Bounds to_bounds(const json& doc, const std::string& name) {
 
 }  // namespace
 
-compare::Bounds parse_bounds(const std::string& text, const std::string& format, const std::string& name) {
-    return to_bounds(study::parse_config(text, format, name, kWhat), name);
+Bounds parse_bounds(const std::string& text, const std::string& format, const std::string& name) {
+    return to_bounds(io::parse_config(text, format, name, kWhat), name);
 }
 
-compare::Bounds read_bounds_file(const std::string& path) {
-    return to_bounds(study::read_config_file(path, kWhat), path);
+Bounds read_bounds_file(const std::string& path) {
+    return to_bounds(io::read_config_file(path, kWhat), path);
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::validation

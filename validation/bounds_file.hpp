@@ -24,10 +24,10 @@
 
 #include "validation/bounds.hpp"
 
-namespace vssw::cli {
+namespace vssw::validation {
 
-compare::Bounds read_bounds_file(const std::string& path);
+Bounds read_bounds_file(const std::string& path);
 // The same from text (format "toml" or "json"); `name` is used in messages.
-compare::Bounds parse_bounds(const std::string& text, const std::string& format, const std::string& name);
+Bounds parse_bounds(const std::string& text, const std::string& format, const std::string& name);
 
-}  // namespace vssw::cli
+}  // namespace vssw::validation

@@ -19,7 +19,7 @@
 #include "study/study_data.hpp"
 #include "validation/earthquake_plots.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -29,14 +29,14 @@ constexpr const char* kShippedFullStudy = "ensemble-report-full.toml";
 // The study file with its engines replaced by the analytic model (the reference) and the report's; the settings it
 // gives engines that are not run are dropped (the report chooses the engines, at the file's settings for those it
 // names).
-StudySpec with_engines(const std::string& file, const std::vector<std::string>& engines) {
-    const StudySpec read = read_study_file(file);
-    Json doc = read.as_read;
-    Json names = Json::array({"analytic"});
+study::StudySpec with_engines(const std::string& file, const std::vector<std::string>& engines) {
+    const study::StudySpec read = study::read_study_file(file);
+    io::Json doc = read.as_read;
+    io::Json names = io::Json::array({"analytic"});
     for (const std::string& e : engines)
         if (e != "analytic") names.push_back(e);
     doc["engines"] = names;
-    const auto prune = [&names](Json& table) {
+    const auto prune = [&names](io::Json& table) {
         if (!table.contains("settings") || !table["settings"].is_object()) return;
         for (auto it = table["settings"].begin(); it != table["settings"].end();)
             it = std::find(names.begin(), names.end(), it.key()) == names.end() ? table["settings"].erase(it)
@@ -44,20 +44,20 @@ StudySpec with_engines(const std::string& file, const std::vector<std::string>& 
     };
     prune(doc);
     if (doc.contains("part") && doc["part"].is_array())
-        for (Json& part : doc["part"]) prune(part);
-    StudySpec spec = study_from_json(nlohmann::json::parse(dump_json(doc)), file, read.base_dir);
+        for (io::Json& part : doc["part"]) prune(part);
+    study::StudySpec spec = study::study_from_json(nlohmann::json::parse(io::dump_json(doc)), file, read.base_dir);
     spec.path = read.path;
     return spec;
 }
 
 // What the report can judge: one wall, stripes of at least two records that measure overturning and peaks, one run
 // per engine (a verdict per engine), and the reference among the analytic model's assumption sets.
-void require_stripe_ensemble(const StudySpec& spec, const std::string& file) {
+void require_stripe_ensemble(const study::StudySpec& spec, const std::string& file) {
     const auto refuse = [&file](const std::string& why) {
         throw InputError(fmt::format("earthquake study {}: {}", file, why));
     };
     if (spec.parts.size() != 1) refuse("one part (one wall's ensemble) is what the report judges");
-    const PartSpec& p = spec.parts.front();
+    const study::PartSpec& p = spec.parts.front();
     if (p.ensemble && !p.ensemble->collapse && p.ensemble->intensity != "pga")
         refuse(fmt::format("its levels must be PGAs (intensity = \"pga\", not \"{}\"): the report's verdicts and "
                            "prose read PGA levels",
@@ -69,18 +69,18 @@ void require_stripe_ensemble(const StudySpec& spec, const std::string& file) {
         if (std::find(spec.metrics.begin(), spec.metrics.end(), m) == spec.metrics.end())
             refuse("its metrics must include overturned and peak_rotation (what the verdicts are made of)");
     if (p.excitation_axis("file")->levels.size() < 2) refuse("an ensemble needs at least two records");
-    for (const Axis& a : p.wall)
+    for (const study::Axis& a : p.wall)
         if (a.varied()) refuse(fmt::format("one wall: '{}' varies", a.key));
-    for (const EngineSpec& e : p.engines)
-        for (const Axis& a : e.settings)
+    for (const study::EngineSpec& e : p.engines)
+        for (const study::Axis& a : e.settings)
             if (a.varied()) refuse(fmt::format("one run per engine: {}'s '{}' varies", e.name, a.key));
 }
 
-void require_judgeable(const StudySpec& spec, const std::string& file) {
+void require_judgeable(const study::StudySpec& spec, const std::string& file) {
     require_stripe_ensemble(spec, file);
-    const Grid grid(spec);  // the checks a study's grid makes (records read, steps resolve), before anything runs
+    const study::Grid grid(spec);  // the checks a study's grid makes (records read, steps resolve), before anything runs
     bool reference = false;
-    for (const RunSpec& r : grid.runs())
+    for (const study::RunSpec& r : grid.runs())
         reference = reference || (r.engine == "analytic" && r.kinematics == Kinematics::exact &&
                                   r.impact.kind == ImpactLaw::Kind::whole_mechanism && r.roller == Roller::unilateral);
     if (!reference)
@@ -90,7 +90,7 @@ void require_judgeable(const StudySpec& spec, const std::string& file) {
                                      file));
 }
 
-EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
+EarthquakeVerdict verdict_of(const study::StudyData& d, const study::SeriesMeasures& m) {
     EarthquakeVerdict v = judge_series(d.series[m.series].engine, m);
     v.settings = d.series[m.series].settings;  // as results.csv has them: what the engine ran at
     return v;
@@ -98,13 +98,13 @@ EarthquakeVerdict verdict_of(const StudyData& d, const SeriesMeasures& m) {
 
 // The report's ensemble for the analytic model and `engine` at `settings` (an object of lists: a series per
 // combination), without the band.
-StudySpec settings_spec(const std::string& file, const std::string& engine, const Json& settings) {
-    const StudySpec read = read_study_file(file);
-    Json doc = read.as_read;
-    doc["engines"] = engine == "analytic" ? Json::array({"analytic"}) : Json::array({"analytic", engine});
-    doc["settings"] = Json{{engine, settings}};
+study::StudySpec settings_spec(const std::string& file, const std::string& engine, const io::Json& settings) {
+    const study::StudySpec read = study::read_study_file(file);
+    io::Json doc = read.as_read;
+    doc["engines"] = engine == "analytic" ? io::Json::array({"analytic"}) : io::Json::array({"analytic", engine});
+    doc["settings"] = io::Json{{engine, settings}};
     if (doc.contains("excitation") && doc["excitation"].is_object()) doc["excitation"].erase("band");
-    StudySpec spec = study_from_json(nlohmann::json::parse(dump_json(doc)), file, read.base_dir);
+    study::StudySpec spec = study::study_from_json(nlohmann::json::parse(io::dump_json(doc)), file, read.base_dir);
     spec.path = read.path;
     return spec;
 }
@@ -113,25 +113,25 @@ StudySpec settings_spec(const std::string& file, const std::string& engine, cons
 // (the set mechanism, which ensemble_measures() prefers) and the set paper among the series, so that the paper's model
 // is paired run by run with the reference as an engine is. The other combinations are analytic runs too (milliseconds
 // each) and are not judged; the paper's kinematics with the unilateral roller is no model and is skipped.
-StudySpec assumption_sets_spec(const std::string& file) {
-    const StudySpec read = read_study_file(file);
-    Json doc = read.as_read;
-    doc["engines"] = Json::array({"analytic"});
+study::StudySpec assumption_sets_spec(const std::string& file) {
+    const study::StudySpec read = study::read_study_file(file);
+    io::Json doc = read.as_read;
+    doc["engines"] = io::Json::array({"analytic"});
     doc.erase("settings");
     if (doc.contains("part") && doc["part"].is_array())
-        for (Json& part : doc["part"]) part.erase("settings");
+        for (io::Json& part : doc["part"]) part.erase("settings");
     if (doc.contains("excitation") && doc["excitation"].is_object()) doc["excitation"].erase("band");
-    doc["assumptions"] = Json{{"kinematics", Json::array({"exact", "paper"})},
-                              {"impact", Json::array({"whole-mechanism", "eq19"})},
-                              {"roller", Json::array({"unilateral", "bilateral"})}};
-    StudySpec spec = study_from_json(nlohmann::json::parse(dump_json(doc)), file, read.base_dir);
+    doc["assumptions"] = io::Json{{"kinematics", io::Json::array({"exact", "paper"})},
+                              {"impact", io::Json::array({"whole-mechanism", "eq19"})},
+                              {"roller", io::Json::array({"unilateral", "bilateral"})}};
+    study::StudySpec spec = study::study_from_json(nlohmann::json::parse(io::dump_json(doc)), file, read.base_dir);
     spec.path = read.path;
     return spec;
 }
 
 // A series' settings text ("dt=0.001 cfm=1e-05") as an object of numbers.
-Json settings_of(const std::string& text) {
-    Json out = Json::object();
+io::Json settings_of(const std::string& text) {
+    io::Json out = io::Json::object();
     std::size_t at = 0;
     while (at < text.size()) {
         std::size_t end = text.find(' ', at);
@@ -160,14 +160,14 @@ double detection_limit(const std::vector<std::pair<double, EarthquakeVerdict>>& 
     return limit;
 }
 
-Json interval_json(const compare::Interval& i) {
-    return Json{{"value", finite_or_null(i.value)}, {"lo", finite_or_null(i.lo)}, {"hi", finite_or_null(i.hi)},
+io::Json interval_json(const compare::Interval& i) {
+    return io::Json{{"value", io::finite_or_null(i.value)}, {"lo", io::finite_or_null(i.lo)}, {"hi", io::finite_or_null(i.hi)},
                 {"n", i.n}};
 }
 
 }  // namespace
 
-EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& m) {
+EarthquakeVerdict judge_series(const std::string& engine, const study::SeriesMeasures& m) {
     EarthquakeVerdict v;
     v.engine = engine;
     v.agreement = m.stripes ? m.overturning : compare::Interval{kNaN, kNaN, kNaN, 0};
@@ -208,8 +208,8 @@ EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& 
 
 namespace {
 
-StudyRunOptions study_run_options(const EarthquakeRunOptions& options) {
-    StudyRunOptions run;
+study::StudyRunOptions study_run_options(const EarthquakeRunOptions& options) {
+    study::StudyRunOptions run;
     run.threads = options.threads;
     run.commit = options.commit;
     run.progress = options.progress;
@@ -218,26 +218,26 @@ StudyRunOptions study_run_options(const EarthquakeRunOptions& options) {
 
 // Runs the study of `spec` into dir (its rows only, no outputs) and reads them back: the stand-ins' and the paper's
 // model's ensembles beside the report's.
-StudyData run_rows(const StudySpec& spec, const std::filesystem::path& dir, const EarthquakeRunOptions& options) {
-    const Grid grid(spec);
-    const StudyRunOptions run = study_run_options(options);
+study::StudyData run_rows(const study::StudySpec& spec, const std::filesystem::path& dir, const EarthquakeRunOptions& options) {
+    const study::Grid grid(spec);
+    const study::StudyRunOptions run = study_run_options(options);
     {
-        const FolderLock lock = prepare_study_dir(grid, dir, run);
-        run_study(grid, dir, run);
+        const io::FolderLock lock = study::prepare_study_dir(grid, dir, run);
+        study::run_study(grid, dir, run);
     }
-    return read_study_data(dir);
+    return study::read_study_data(dir);
 }
 
 }  // namespace
 
 std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const std::string& engine,
-                                            const Json& settings, const std::filesystem::path& dir,
+                                            const io::Json& settings, const std::filesystem::path& dir,
                                             const EarthquakeRunOptions& options) {
-    const StudyData d = run_rows(settings_spec(study_file, engine, settings), dir, options);
-    const EnsembleMeasures e = ensemble_measures(d);
+    const study::StudyData d = run_rows(settings_spec(study_file, engine, settings), dir, options);
+    const study::EnsembleMeasures e = study::ensemble_measures(d);
     std::vector<SettingsVerdict> out;
-    for (const SeriesMeasures& m : e.measures) {
-        const Series& s = d.series[m.series];
+    for (const study::SeriesMeasures& m : e.measures) {
+        const study::Series& s = d.series[m.series];
         if (s.engine != engine || (e.has_reference && m.series == e.reference)) continue;
         out.push_back({settings_of(s.settings), judge_series(engine, m)});
     }
@@ -249,9 +249,9 @@ namespace {
 // The paper's model judged as an engine against the reference on the report's ensemble (run into dir).
 std::optional<EarthquakeVerdict> judge_paper_model(const std::string& study_file, const std::filesystem::path& dir,
                                                    const EarthquakeRunOptions& options) {
-    const StudyData d = run_rows(assumption_sets_spec(study_file), dir, options);
-    const EnsembleMeasures e = ensemble_measures(d);
-    for (const SeriesMeasures& m : e.measures)
+    const study::StudyData d = run_rows(assumption_sets_spec(study_file), dir, options);
+    const study::EnsembleMeasures e = study::ensemble_measures(d);
+    for (const study::SeriesMeasures& m : e.measures)
         if (d.series[m.series].set == to_string(AssumptionSet::paper)) {
             EarthquakeVerdict v = judge_series("analytic", m);
             v.engine = "analytic, paper's assumptions";
@@ -275,18 +275,18 @@ std::string default_earthquake_for_suite(const std::string& suite) { return suit
 
 EarthquakePart run_earthquake_part(const std::string& study_file, const std::vector<std::string>& engines,
                                    const std::filesystem::path& dir, const EarthquakeRunOptions& options) {
-    const StudySpec spec = with_engines(study_file, engines);
+    const study::StudySpec spec = with_engines(study_file, engines);
     require_judgeable(spec, study_file);
-    const Grid grid(spec);
-    const StudyRunOptions run = study_run_options(options);
-    const FolderLock lock = prepare_study_dir(grid, dir, run);
-    const StudyRunResult result = run_study(grid, dir, run);
-    OutputOptions output;
+    const study::Grid grid(spec);
+    const study::StudyRunOptions run = study_run_options(options);
+    const io::FolderLock lock = study::prepare_study_dir(grid, dir, run);
+    const study::StudyRunResult result = study::run_study(grid, dir, run);
+    study::OutputOptions output;
     output.plots = options.plots;
     output.gnuplot = options.gnuplot;
-    const StudyData d = read_study_data(dir);
-    const EnsembleMeasures e = ensemble_measures(d);  // once: the study's outputs and the verdicts read the same
-    write_study_outputs(dir, output, d, e);
+    const study::StudyData d = study::read_study_data(dir);
+    const study::EnsembleMeasures e = study::ensemble_measures(d);  // once: the study's outputs and the verdicts read the same
+    study::write_study_outputs(dir, output, d, e);
 
     EarthquakePart part;
     part.study_file = study_file;
@@ -297,27 +297,27 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     part.failed_rows = result.failed_rows;
     part.wall_time_s = result.meta.wall_time_s;
     // Its own plots beside the study's (a missing gnuplot leaves their scripts and data, as the study's).
-    if (options.plots) draw_plots(earthquake_plot_scripts(d, e), dir / "plots", options.gnuplot);
+    if (options.plots) io::draw_plots(earthquake_plot_scripts(d, e), dir / "plots", options.gnuplot);
     if (e.has_reference) {
-        const Series& ref = d.series[e.reference];
-        part.reference = fmt::format("the analytic model ({})", assumptions_text(ref));
+        const study::Series& ref = d.series[e.reference];
+        part.reference = fmt::format("the analytic model ({})", study::assumptions_text(ref));
     }
     // The ensemble as the file gives it (results.csv's pga column also holds the band's perturbed levels).
-    for (const PartSpec& p : spec.parts) {
+    for (const study::PartSpec& p : spec.parts) {
         part.records += p.excitation_axis("file")->levels.size();
         part.levels = std::max(part.levels, p.excitation_axis("pga")->levels.size());
     }
-    for (const SeriesMeasures& m : e.measures)
+    for (const study::SeriesMeasures& m : e.measures)
         if (e.has_reference && m.series == e.reference) {
             part.reference_median = m.fit.median;
-            part.reference_note = fit_note(m.fit);
+            part.reference_note = study::fit_note(m.fit);
             if (!part.reference_note.empty()) part.reference_median = {kNaN, kNaN, kNaN, m.fit.median.n};
         }
     part.preferred_reference = e.preferred_reference;
     part.band = d.column("perturbation") != std::string::npos;
     for (const std::string& engine : engines) {
         const auto m = std::find_if(e.measures.begin(), e.measures.end(),
-                                    [&](const SeriesMeasures& x) { return d.series[x.series].engine == engine; });
+                                    [&](const study::SeriesMeasures& x) { return d.series[x.series].engine == engine; });
         if (m != e.measures.end()) {
             part.engines.push_back(verdict_of(d, *m));
             continue;
@@ -329,10 +329,10 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
         none.log_peak.median = none.agreement;
         part.engines.push_back(none);
     }
-    Json errors = Json::array({0.0});  // the reference first: the unchanged model
+    io::Json errors = io::Json::array({0.0});  // the reference first: the unchanged model
     for (double error : detection_restitution_errors()) errors.push_back(error);
     const std::vector<SettingsVerdict> stand_ins =
-        judge_settings(study_file, "analytic", Json{{multibody::kRestitutionErrorKnob, errors}}, dir / "stand-ins", options);
+        judge_settings(study_file, "analytic", io::Json{{multibody::kRestitutionErrorKnob, errors}}, dir / "stand-ins", options);
     for (const SettingsVerdict& s : stand_ins) {
         EarthquakeVerdict v = s.verdict;
         v.engine = fmt::format("analytic, restitution {:+g} %", 100.0 * s.settings.value(multibody::kRestitutionErrorKnob, 0.0));
@@ -347,22 +347,22 @@ namespace {
 
 // One engine's (or stand-in's) verdicts: the keys of before (overturning_agreement, fragility_median_ratio,
 // peak_ratio, inside_band) and the paired ones.
-Json verdict_json(const EarthquakeVerdict& v) {
-    Json agreement = interval_json(v.agreement), ratio = interval_json(v.median_ratio);
+io::Json verdict_json(const EarthquakeVerdict& v) {
+    io::Json agreement = interval_json(v.agreement), ratio = interval_json(v.median_ratio);
     agreement["pass"] = v.agreement_pass;
     agreement["failed_runs"] = v.failed_runs;
     ratio["pass"] = v.fragility_pass;
     ratio["note"] = v.fit_note;
     ratio["verdict"] = false;  // information: not part of the engine's pass
     ratio["failed_replicates"] = v.ratio_failed;  // resamples without a fit (left out of the interval)
-    Json peak = interval_json(v.log_peak.median);
-    peak["median_ratio"] = finite_or_null(std::exp(v.log_peak.median.value));
+    io::Json peak = interval_json(v.log_peak.median);
+    peak["median_ratio"] = io::finite_or_null(std::exp(v.log_peak.median.value));
     peak["runs"] = v.log_peak.values;
     peak["records"] = v.log_peak.records;
     peak["note"] = v.log_peak.reason;  // why its interval is not resolved ("" when it is)
     peak["pass"] = v.peak_pass;
     peak["target"] = kPeakLogRatioTarget;
-    peak["band_half_width"] = finite_or_null(v.band_half_width);
+    peak["band_half_width"] = io::finite_or_null(v.band_half_width);
     return {{"engine", v.engine},
             {"settings", settings_of(v.settings)},  // as run under records, which may differ from the suite's
             {"pass", v.pass},
@@ -374,25 +374,25 @@ Json verdict_json(const EarthquakeVerdict& v) {
                                      {"pass", v.overturning_pass}}},
             {"peak_log_ratio", peak},
             {"fragility_median_ratio", ratio},
-            {"peak_ratio", {{"median", finite_or_null(v.peak_ratio.median)},
-                            {"q1", finite_or_null(v.peak_ratio.q1)},
-                            {"q3", finite_or_null(v.peak_ratio.q3)},
+            {"peak_ratio", {{"median", io::finite_or_null(v.peak_ratio.median)},
+                            {"q1", io::finite_or_null(v.peak_ratio.q1)},
+                            {"q3", io::finite_or_null(v.peak_ratio.q3)},
                             {"n", v.peak_ratio.n}}},
             {"inside_band", {{"inside", v.inside}, {"runs", v.band_runs}, {"outside", v.outside}}}};
 }
 
 }  // namespace
 
-Json earthquake_json(const EarthquakePart& part) {
-    Json engines = Json::array();
+io::Json earthquake_json(const EarthquakePart& part) {
+    io::Json engines = io::Json::array();
     for (const EarthquakeVerdict& v : part.engines) engines.push_back(verdict_json(v));
-    Json stand_ins = Json::array();
+    io::Json stand_ins = io::Json::array();
     for (const auto& [error, v] : part.stand_ins) {
-        Json s = verdict_json(v);
+        io::Json s = verdict_json(v);
         s["restitution_error"] = error;
         stand_ins.push_back(s);
     }
-    return Json{{"study", part.study_name},
+    return io::Json{{"study", part.study_name},
                 {"folder", part.folder.filename().string()},
                 {"reference", part.reference},
                 {"reference_median_g", interval_json(part.reference_median)},
@@ -407,9 +407,9 @@ Json earthquake_json(const EarthquakePart& part) {
                 {"failed_rows", part.failed_rows},
                 {"engines", engines},
                 {"stand_ins", stand_ins},
-                {"detection_limit_restitution_error", finite_or_null(part.detection_limit)},
+                {"detection_limit_restitution_error", io::finite_or_null(part.detection_limit)},
                 // Its pass keys are what an engine with these numbers would get: the report shows no verdict.
-                {"paper_model", part.paper_model ? verdict_json(*part.paper_model) : Json(nullptr)}};
+                {"paper_model", part.paper_model ? verdict_json(*part.paper_model) : io::Json(nullptr)}};
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

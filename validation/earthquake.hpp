@@ -18,7 +18,7 @@
 #include "io/document.hpp"
 #include "io/json.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 // An engine passes under records when both its verdicts pass (binary agreement alone never passes it):
 //  - peaks: over the runs where both stand, d = ln(engine peak / reference peak); the median of d lies within
@@ -76,7 +76,7 @@ struct EarthquakeVerdict {
 };
 
 // The verdict's rules on the measures of one series against the reference (the report's and the detection test's).
-EarthquakeVerdict judge_series(const std::string& engine, const SeriesMeasures& m);
+EarthquakeVerdict judge_series(const std::string& engine, const study::SeriesMeasures& m);
 
 struct EarthquakePart {
     std::string study_file, study_name, description;
@@ -128,18 +128,18 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
 // engine "analytic" the first series is the reference) into dir; every other series of `engine` judged. The detection
 // test's and the report's stand-ins' runner.
 struct SettingsVerdict {
-    Json settings;  // the series' knobs {"dt": 0.001, ...}
+    io::Json settings;  // the series' knobs {"dt": 0.001, ...}
     EarthquakeVerdict verdict;
 };
 std::vector<SettingsVerdict> judge_settings(const std::string& study_file, const std::string& engine,
-                                            const Json& settings, const std::filesystem::path& dir,
+                                            const io::Json& settings, const std::filesystem::path& dir,
                                             const EarthquakeRunOptions& options);
 
 // The part as results.json holds it (`vssw report --help` lists the keys): study, reference, targets, records,
 // levels, engines [{engine, settings, pass, overturning_agreement, overturning_mcnemar, peak_log_ratio (lo and
 // hi null, note the reason, when not resolved), fragility_median_ratio (information), peak_ratio, inside_band}],
 // stand_ins, detection_limit_restitution_error, paper_model (the paper's model as an engine's keys, or null).
-Json earthquake_json(const EarthquakePart& part);
+io::Json earthquake_json(const EarthquakePart& part);
 
 // One line per engine for the report's standard output: "ODE under records: pass; peaks x 0.988 [0.973, 1.000]
 // (target: median within x 1.046^+-1) pass; overturning b/c 0/0, p 1.000, 16/16 (...) pass; fragility median ...
@@ -151,11 +151,11 @@ std::vector<std::string> earthquake_summary_lines(const EarthquakePart& part);
 // verdict for it) and a paragraph saying what they are; the per-engine fragility plot among the figures per measure
 // (none when it was not drawn); then the section with every number and the other plots.
 std::vector<std::string> earthquake_matrix_header();
-std::vector<DocCell> earthquake_matrix_cells(const EarthquakePart& part, const std::string& engine);
+std::vector<io::DocCell> earthquake_matrix_cells(const EarthquakePart& part, const std::string& engine);
 // The paper's model's two cells: the same numbers with no verdict mark ("-" when it did not run).
-std::vector<DocCell> earthquake_information_cells(const EarthquakePart& part);
-std::vector<DocBlock> earthquake_glance(const EarthquakePart& part);
-std::vector<DocBlock> earthquake_figure(const EarthquakePart& part);
-std::vector<DocBlock> earthquake_section(const EarthquakePart& part);
+std::vector<io::DocCell> earthquake_information_cells(const EarthquakePart& part);
+std::vector<io::DocBlock> earthquake_glance(const EarthquakePart& part);
+std::vector<io::DocBlock> earthquake_figure(const EarthquakePart& part);
+std::vector<io::DocBlock> earthquake_section(const EarthquakePart& part);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

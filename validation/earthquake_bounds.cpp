@@ -15,7 +15,7 @@
 #include "multibody/engine.hpp"
 #include "validation/earthquake.hpp"
 
-namespace vssw::cli {
+namespace vssw::validation {
 namespace {
 
 namespace fs = std::filesystem;
@@ -40,20 +40,20 @@ public:
 
 private:
     fs::path path_;
-    std::optional<study::TempRegistration> registration_;
+    std::optional<io::TempRegistration> registration_;
 };
 
 // Each ensemble once, for the engines its bounds name.
-std::map<std::string, std::vector<std::string>> engines_by_study(const std::vector<compare::EarthquakeBound>& bounds) {
+std::map<std::string, std::vector<std::string>> engines_by_study(const std::vector<EarthquakeBound>& bounds) {
     std::map<std::string, std::vector<std::string>> out;
-    for (const compare::EarthquakeBound& b : bounds) {
+    for (const EarthquakeBound& b : bounds) {
         std::vector<std::string>& e = out[b.study];
         if (std::find(e.begin(), e.end(), b.engine) == e.end()) e.push_back(b.engine);
     }
     return out;
 }
 
-double measure_of(const study::EarthquakeVerdict& v, const std::string& measure) {
+double measure_of(const EarthquakeVerdict& v, const std::string& measure) {
     if (measure == "overturning_agreement") return v.agreement.value;
     if (measure == "fragility_median_ratio") return v.median_ratio.value;
     if (measure == "peak_ratio_median") return v.peak_ratio.median;
@@ -64,35 +64,35 @@ double measure_of(const study::EarthquakeVerdict& v, const std::string& measure)
 
 }  // namespace
 
-void plan_earthquake_bounds(const std::vector<compare::EarthquakeBound>& bounds, const std::string& path) {
+void plan_earthquake_bounds(const std::vector<EarthquakeBound>& bounds, const std::string& path) {
     const std::vector<std::string> available = multibody::available_engines();
-    for (const compare::EarthquakeBound& b : bounds)
+    for (const EarthquakeBound& b : bounds)
         if (std::find(available.begin(), available.end(), b.engine) == available.end())
             throw InputError(fmt::format("bounds file {}: earthquake bound: engine '{}' is not in this build", path,
                                          b.engine));
     for (const auto& [study_name, engines] : engines_by_study(bounds)) try {
-            (void)study::earthquake_study_file(study_name, engines);
+            (void)earthquake_study_file(study_name, engines);
         } catch (const InputError& e) {
             throw InputError(fmt::format("bounds file {}: earthquake bound: {}", path, e.what()));
         }
 }
 
-std::vector<compare::BoundVerdict> check_earthquake_bounds(const std::vector<compare::EarthquakeBound>& bounds,
+std::vector<BoundVerdict> check_earthquake_bounds(const std::vector<EarthquakeBound>& bounds,
                                                            int threads) {
-    std::map<std::string, study::EarthquakePart> parts;
+    std::map<std::string, EarthquakePart> parts;
     for (const auto& [study_name, engines] : engines_by_study(bounds)) {
         const ScratchFolder scratch;
-        study::EarthquakeRunOptions o;
+        EarthquakeRunOptions o;
         o.threads = threads;
         o.plots = false;
-        parts.emplace(study_name, study::run_earthquake_part(study::earthquake_study_file(study_name, engines), engines,
+        parts.emplace(study_name, run_earthquake_part(earthquake_study_file(study_name, engines), engines,
                                                              scratch.path() / "earthquake", o));
     }
-    std::vector<compare::BoundVerdict> out;
-    for (const compare::EarthquakeBound& b : bounds) {
-        const study::EarthquakePart& part = parts.at(b.study);
-        compare::BoundVerdict v{b.engine, part.study_name, b.measure, NAN, b.min, b.max, false, "", "", "", true};
-        for (const study::EarthquakeVerdict& e : part.engines)
+    std::vector<BoundVerdict> out;
+    for (const EarthquakeBound& b : bounds) {
+        const EarthquakePart& part = parts.at(b.study);
+        BoundVerdict v{b.engine, part.study_name, b.measure, NAN, b.min, b.max, false, "", "", "", true};
+        for (const EarthquakeVerdict& e : part.engines)
             if (e.engine == b.engine) {
                 v.value = measure_of(e, b.measure);
                 if (b.measure == "fragility_median_ratio" && !e.fit_note.empty()) v.note = e.fit_note;
@@ -104,4 +104,4 @@ std::vector<compare::BoundVerdict> check_earthquake_bounds(const std::vector<com
     return out;
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::validation

@@ -7,15 +7,15 @@
 
 #include "validation/bounds.hpp"
 
-namespace vssw::cli {
+namespace vssw::validation {
 
 // InputError (naming the bounds file) for an ensemble that does not read or an engine not in this build: `vssw check`
 // calls it before anything runs.
-void plan_earthquake_bounds(const std::vector<compare::EarthquakeBound>& bounds, const std::string& path);
+void plan_earthquake_bounds(const std::vector<EarthquakeBound>& bounds, const std::string& path);
 
 // Runs the ensembles and gives one verdict per bound, in the bounds' order (case: the study's name; a NaN, e.g. a
 // fragility that could not be fitted, does not hold).
-std::vector<compare::BoundVerdict> check_earthquake_bounds(const std::vector<compare::EarthquakeBound>& bounds,
+std::vector<BoundVerdict> check_earthquake_bounds(const std::vector<EarthquakeBound>& bounds,
                                                            int threads);
 
-}  // namespace vssw::cli
+}  // namespace vssw::validation

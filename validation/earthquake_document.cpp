@@ -12,7 +12,7 @@
 #include "multibody/engine.hpp"
 #include "validation/earthquake.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace {
 
 std::string interval_text(const compare::Interval& i, const char* format) {
@@ -22,9 +22,9 @@ std::string interval_text(const compare::Interval& i, const char* format) {
                        std::isfinite(i.hi) ? fmt::format(fmt::runtime(format), i.hi) : "?");
 }
 
-DocCell verdict_cell(std::string text, bool pass, std::string note) {
-    DocCell c{std::move(text)};
-    c.verdict = pass ? DocCell::Verdict::pass : DocCell::Verdict::fail;
+io::DocCell verdict_cell(std::string text, bool pass, std::string note) {
+    io::DocCell c{std::move(text)};
+    c.verdict = pass ? io::DocCell::Verdict::pass : io::DocCell::Verdict::fail;
     c.note = std::move(note);
     return c;
 }
@@ -70,21 +70,21 @@ std::string overturning_text(const EarthquakeVerdict& v) {
                        v.agreement.n);
 }
 
-DocCell peak_cell(const EarthquakeVerdict& v) {
+io::DocCell peak_cell(const EarthquakeVerdict& v) {
     return verdict_cell(peak_ratio_text(v), v.peak_pass,
                         fmt::format("{} runs of {} records; {}", v.log_peak.values, v.log_peak.records,
                                     v.log_peak.reason.empty()
                                         ? "95 % interval: order statistics of the records' medians"
                                         : v.log_peak.reason));
 }
-DocCell overturning_cell(const EarthquakeVerdict& v) {
+io::DocCell overturning_cell(const EarthquakeVerdict& v) {
     return verdict_cell(overturning_text(v), v.overturning_pass,
                         "b: it overturned where the reference stood, c: the reverse (a failed run counts on the "
                         "larger side); exact McNemar p; runs agreeing");
 }
-DocCell fragility_cell(const EarthquakeVerdict& v) {
+io::DocCell fragility_cell(const EarthquakeVerdict& v) {
     // No fit: a short cell (the reason in its tooltip and under the section's table), the table stays narrow.
-    DocCell c{v.fit_note.empty() ? interval_text(v.median_ratio, "{:.3f}") : "not resolved"};
+    io::DocCell c{v.fit_note.empty() ? interval_text(v.median_ratio, "{:.3f}") : "not resolved"};
     c.note = v.fit_note.empty() ? "95 % paired bootstrap interval over the records" : v.fit_note;
     return c;
 }
@@ -111,15 +111,15 @@ std::vector<EnsemblePlot> drawn_plots(const EarthquakePart& p) {
     return out;
 }
 
-DocBlock verdict_table(const std::vector<EarthquakeVerdict>& verdicts, bool band) {
+io::DocBlock verdict_table(const std::vector<EarthquakeVerdict>& verdicts, bool band) {
     std::vector<std::string> header = {"engine", peak_header(), overturning_header(), fragility_header(),
                                        "peak ratio: median (quartiles)"};
     if (band) header.push_back("inside the reference's band");
-    DocBlock t = table(header, 1);
+    io::DocBlock t = io::table(header, 1);
     t.apart_from = 3;
     t.css_class = "matrix";
     for (const EarthquakeVerdict& v : verdicts) {
-        std::vector<DocCell> row = {{multibody::engine_display_name(v.engine)}, peak_cell(v), overturning_cell(v),
+        std::vector<io::DocCell> row = {{multibody::engine_display_name(v.engine)}, peak_cell(v), overturning_cell(v),
                                     fragility_cell(v), {peak_text(v.peak_ratio)}};
         if (band) row.push_back({v.band_runs > 0 ? fmt::format("{} of {}", v.inside, v.band_runs) : "n/a"});
         t.rows.push_back(std::move(row));
@@ -159,22 +159,22 @@ std::vector<std::string> earthquake_matrix_header() {
     return {"records: " + peak_header(), "records: " + overturning_header()};
 }
 
-std::vector<DocCell> earthquake_matrix_cells(const EarthquakePart& p, const std::string& engine) {
+std::vector<io::DocCell> earthquake_matrix_cells(const EarthquakePart& p, const std::string& engine) {
     for (const EarthquakeVerdict& v : p.engines)
         if (v.engine == engine) return {peak_cell(v), overturning_cell(v)};
     return {{"-"}, {"-"}};
 }
 
-std::vector<DocCell> earthquake_information_cells(const EarthquakePart& p) {
+std::vector<io::DocCell> earthquake_information_cells(const EarthquakePart& p) {
     if (!p.paper_model) return {{"-"}, {"-"}};
     const EarthquakeVerdict& v = *p.paper_model;
-    std::vector<DocCell> cells = {DocCell(peak_ratio_text(v)), DocCell(overturning_text(v))};
-    for (DocCell& c : cells) c.note = "the paper's model against the reference under records: no verdict";
+    std::vector<io::DocCell> cells = {io::DocCell(peak_ratio_text(v)), io::DocCell(overturning_text(v))};
+    for (io::DocCell& c : cells) c.note = "the paper's model against the reference under records: no verdict";
     return cells;
 }
 
-std::vector<DocBlock> earthquake_glance(const EarthquakePart& p) {
-    return {paragraph(fmt::format(
+std::vector<io::DocBlock> earthquake_glance(const EarthquakePart& p) {
+    return {io::paragraph(fmt::format(
         "The two \"records\" columns judge the engines under earthquake records ({}; the reference is {}), run by "
         "run against the reference: the median ratio of its peak to the reference's where both stand (95 % interval "
         "over records), and the runs where only it or only the reference overturned (an exact McNemar test). An "
@@ -182,17 +182,17 @@ std::vector<DocBlock> earthquake_glance(const EarthquakePart& p) {
         ensemble_text(p), p.reference, detection_text(p), unresolved_peak_text(p)))};
 }
 
-std::vector<DocBlock> earthquake_figure(const EarthquakePart& p) {
-    std::vector<DocBlock> b;
+std::vector<io::DocBlock> earthquake_figure(const EarthquakePart& p) {
+    std::vector<io::DocBlock> b;
     for (const EnsemblePlot& e : drawn_plots(p))
-        if (e.kind == "fragility_by_engine") b.push_back(plot(e.title, e.name));
+        if (e.kind == "fragility_by_engine") b.push_back(io::plot(e.title, e.name));
     return b;
 }
 
-std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
-    std::vector<DocBlock> b;
-    b.push_back(heading(2, "Under earthquake records"));
-    b.push_back(paragraph(fmt::format(
+std::vector<io::DocBlock> earthquake_section(const EarthquakePart& p) {
+    std::vector<io::DocBlock> b;
+    b.push_back(io::heading(2, "Under earthquake records"));
+    b.push_back(io::paragraph(fmt::format(
         "{}: {}. The reference is {}: what the engines' physics shares (exact kinematics, the whole mechanism's "
         "impact, a roller that can only push); its fragility median is {}. Each engine ran every record at every "
         "level once{}. A run an engine failed counts as one it does not agree on. {} rows, {} failed; {:.1f} s.",
@@ -203,7 +203,7 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
                : " (no band: the study does not ask for one)",
         p.rows, p.failed_rows, p.wall_time_s)));
     b.push_back(verdict_table(p.engines, p.band));
-    b.push_back(paragraph(fmt::format(
+    b.push_back(io::paragraph(fmt::format(
         "An engine passes when both verdicts pass. Peaks: over the runs where both stand, the median of ln(its peak / "
         "the reference's) within +-{:g} (the median peak ratio within x {:.3f}^+-1; every engine at its defaults and "
         "at a quarter of its step measured within 0.036, a restitution error of 5 % at 0.052 or more: thin margins on "
@@ -214,7 +214,7 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
         "the runs. The fragility median's ratio is information: on a few records its interval spans tens of percent.",
         kPeakLogRatioTarget, std::exp(kPeakLogRatioTarget), kMcNemarAlpha, kOverturningAgreementTarget)));
     if (!p.stand_ins.empty()) {
-        b.push_back(paragraph(fmt::format(
+        b.push_back(io::paragraph(fmt::format(
             "Detection limit: {}. The analytic model with every impact's velocity ratio changed by a known fraction "
             "(its restitution_error setting) ran on the same runs as stand-in engines and was judged by the same "
             "rules ({}/stand-ins):",
@@ -228,27 +228,27 @@ std::vector<DocBlock> earthquake_section(const EarthquakePart& p) {
         if (!v.fit_note.empty())
             unfitted.push_back(fmt::format("{}: {}", multibody::engine_display_name(v.engine), v.fit_note));
     if (!unfitted.empty()) {
-        b.push_back(paragraph("Fragility ratios not resolved (the data do not support a fit or an interval):"));
-        b.push_back(list(unfitted));
+        b.push_back(io::paragraph("Fragility ratios not resolved (the data do not support a fit or an interval):"));
+        b.push_back(io::list(unfitted));
     }
     std::vector<std::string> outside;
     for (const EarthquakeVerdict& v : p.engines)
         if (!v.outside.empty())
             outside.push_back(fmt::format("{}: {}", multibody::engine_display_name(v.engine), fmt::join(v.outside, "; ")));
     if (!outside.empty()) {
-        b.push_back(paragraph("Runs whose peak lies outside the reference's band (where a difference is the engine's "
+        b.push_back(io::paragraph("Runs whose peak lies outside the reference's band (where a difference is the engine's "
                               "and not the response's own sensitivity, or the band is narrower than the step's "
                               "error):"));
-        b.push_back(list(outside));
+        b.push_back(io::list(outside));
     }
     // The fragility per engine is among the figures per measure at the top (earthquake_figure): the rest here.
     for (const EnsemblePlot& e : drawn_plots(p))
-        if (e.kind != "fragility_by_engine") b.push_back(plot(e.title, e.name));
-    b.push_back(paragraph(fmt::format(
+        if (e.kind != "fragility_by_engine") b.push_back(io::plot(e.title, e.name));
+    b.push_back(io::paragraph(fmt::format(
         "Every number is in {0}/agreement.csv and {0}/fragility.csv, every run in {0}/results.csv; {0}/study.html "
         "is the ensemble's own study report.",
         p.folder.filename().string())));
     return b;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

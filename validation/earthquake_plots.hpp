@@ -11,9 +11,9 @@
 #include "io/gnuplot.hpp"
 #include "study/ensemble_measures.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 // The scripts of both plots for every series that is not the reference (none without a reference).
-std::vector<PlotScript> earthquake_plot_scripts(const StudyData& d, const EnsembleMeasures& e);
+std::vector<io::PlotScript> earthquake_plot_scripts(const study::StudyData& d, const study::EnsembleMeasures& e);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

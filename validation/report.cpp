@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace {
 
 // A step-study series needs this many points with a nonzero error before its order is fitted (two points always fit
@@ -27,7 +27,7 @@ std::string step_base(const std::string& id) {
 
 }  // namespace
 
-bool is_step_case(const ReportInput& in, const std::string& id) { return case_kind(in, id) == compare::CaseKind::step; }
+bool is_step_case(const ReportInput& in, const std::string& id) { return case_kind(in, id) == CaseKind::step; }
 
 // Titles, descriptions and targets: the suite's view in the one metric table (compare/metric_catalog.hpp); a metric
 // not in it (a results file from another version) shows its name.
@@ -54,31 +54,31 @@ std::string metric_description(const std::string& metric) {
     return m && m->report_description ? m->report_description : "";
 }
 
-const char* kind_name(compare::CaseKind kind) {
+const char* kind_name(CaseKind kind) {
     switch (kind) {
-        case compare::CaseKind::threshold: return "threshold";
-        case compare::CaseKind::free: return "free";
-        case compare::CaseKind::history: return "history";
-        case compare::CaseKind::step: return "step";
+        case CaseKind::threshold: return "threshold";
+        case CaseKind::free: return "free";
+        case CaseKind::history: return "history";
+        case CaseKind::step: return "step";
     }
     return "unknown";
 }
 
-compare::CaseKind case_kind(const ReportInput& in, const std::string& case_id) {
-    for (const compare::SuiteCase& c : in.suite.cases)
+CaseKind case_kind(const ReportInput& in, const std::string& case_id) {
+    for (const SuiteCase& c : in.suite.cases)
         if (c.id == case_id) return c.kind;
     // From the id's shape: "<wall>", "<wall>/r<r>", "<wall>/<record>", "<wall>/r<r>/dt<dt>/<engine>".
     const auto slash = case_id.find('/');
-    if (slash == std::string::npos) return compare::CaseKind::threshold;
-    if (case_id.find("/dt", slash) != std::string::npos) return compare::CaseKind::step;
+    if (slash == std::string::npos) return CaseKind::threshold;
+    if (case_id.find("/dt", slash) != std::string::npos) return CaseKind::step;
     const std::string rest = case_id.substr(slash + 1);
     if (rest.size() > 1 && rest[0] == 'r' && (std::isdigit(static_cast<unsigned char>(rest[1])) || rest[1] == '.'))
-        return compare::CaseKind::free;
-    return compare::CaseKind::history;
+        return CaseKind::free;
+    return CaseKind::history;
 }
 
 double case_step(const ReportInput& in, const std::string& case_id) {
-    for (const compare::SuiteCase& c : in.suite.cases)
+    for (const SuiteCase& c : in.suite.cases)
         if (c.id == case_id && c.dt) return *c.dt;
     const auto pos = case_id.rfind("/dt");
     if (pos == std::string::npos) return std::nan("");
@@ -89,20 +89,20 @@ double case_step(const ReportInput& in, const std::string& case_id) {
     return (end != text.c_str() && (*end == '\0' || *end == '/')) ? dt : std::nan("");
 }
 
-std::vector<std::string> compared_engines(const compare::SuiteResults& results) {
+std::vector<std::string> compared_engines(const SuiteResults& results) {
     std::vector<std::string> names;
     auto add = [&](const std::string& name) {
         if (name != "analytic" && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     };
-    for (const compare::EngineRunInfo& e : results.engines) add(e.name);
-    for (const compare::MetricRow& r : results.rows) add(r.engine);
-    for (const compare::CaseFailure& f : results.failures) add(f.engine);
+    for (const EngineRunInfo& e : results.engines) add(e.name);
+    for (const MetricRow& r : results.rows) add(r.engine);
+    for (const CaseFailure& f : results.failures) add(f.engine);
     return names;
 }
 
-std::vector<std::string> metric_order(const compare::SuiteResults& results) {
+std::vector<std::string> metric_order(const SuiteResults& results) {
     std::set<std::string> seen;
-    for (const compare::MetricRow& r : results.rows) seen.insert(r.metric);
+    for (const MetricRow& r : results.rows) seen.insert(r.metric);
     std::vector<std::string> order;
     for (const compare::MetricInfo* m : compare::suite_metrics())
         if (seen.erase(m->name) > 0) order.push_back(m->name);
@@ -111,7 +111,7 @@ std::vector<std::string> metric_order(const compare::SuiteResults& results) {
 }
 
 std::vector<EngineSummary> summarize(const ReportInput& in) {
-    const compare::SuiteResults& res = in.results;
+    const SuiteResults& res = in.results;
     // The worst errors, their cases and the metric counts are the report-at-a-glance matrix's: one source, so the
     // summary line and the matrix cannot disagree on them. (The line's failure count is the suite's own: every failed
     // task of the engine, step-study cases included.)
@@ -120,7 +120,7 @@ std::vector<EngineSummary> summarize(const ReportInput& in) {
     for (const std::string& engine : compared_engines(res)) {
         EngineSummary s;
         s.engine = engine;
-        for (const compare::CaseFailure& f : res.failures) s.failures += f.engine == engine ? 1 : 0;
+        for (const CaseFailure& f : res.failures) s.failures += f.engine == engine ? 1 : 0;
         for (const MatrixCell& c : cells) {  // metric_order within each engine
             if (c.engine != engine) continue;
             if (c.target) {
@@ -141,7 +141,7 @@ std::vector<EngineSummary> summarize(const ReportInput& in) {
             // branch for a 1 % change of the scale (the earthquake part judges records by ensemble measures); the
             // Metrics tables and results.json keep them.
             if (!target_of(x.metric)) continue;
-            parts.push_back(fmt::format("{} {}", short_title(x.metric), percent(x.rel_error)));
+            parts.push_back(fmt::format("{} {}", short_title(x.metric), io::percent(x.rel_error)));
         }
         s.line = fmt::format("{}: {}/{} metrics within target", multibody::engine_display_name(engine), s.within, s.with_target);
         if (s.not_measured > 0) s.line += fmt::format(" ({} not measured)", s.not_measured);
@@ -153,7 +153,7 @@ std::vector<EngineSummary> summarize(const ReportInput& in) {
 }
 
 std::vector<MetricTable> metric_tables(const ReportInput& in) {
-    const compare::SuiteResults& res = in.results;
+    const SuiteResults& res = in.results;
     const std::vector<std::string> engines = compared_engines(res);
     std::vector<MetricTable> tables;
     for (const std::string& metric : metric_order(res)) {
@@ -162,7 +162,7 @@ std::vector<MetricTable> metric_tables(const ReportInput& in) {
         t.target = target_of(metric);
         t.engines = engines;
         std::map<std::string, std::size_t> index;  // case id -> row
-        for (const compare::MetricRow& r : res.rows) {
+        for (const MetricRow& r : res.rows) {
             if (r.metric != metric || is_step_case(in, r.case_id)) continue;
             if (t.unit.empty()) t.unit = r.unit;
             auto [it, inserted] = index.try_emplace(r.case_id, t.rows.size());
@@ -181,7 +181,7 @@ std::vector<MetricTable> metric_tables(const ReportInput& in) {
             cell.rel_error = r.rel_error;
             if (row.reference_name.empty()) row.reference_name = r.reference;
         }
-        for (const compare::CaseFailure& f : res.failures) {
+        for (const CaseFailure& f : res.failures) {
             const auto it = index.find(f.case_id);
             if (it == index.end()) continue;
             const auto e = std::find(engines.begin(), engines.end(), f.engine);
@@ -229,7 +229,7 @@ std::vector<MatrixCell> error_matrix(const ReportInput& in) {
 
 std::vector<StepSeries> step_series(const ReportInput& in) {
     std::vector<StepSeries> series;
-    for (const compare::MetricRow& r : in.results.rows) {
+    for (const MetricRow& r : in.results.rows) {
         if (r.engine == "analytic" || !is_step_case(in, r.case_id)) continue;
         const double dt = case_step(in, r.case_id);
         if (!std::isfinite(dt)) continue;
@@ -287,4 +287,4 @@ std::vector<StepSeries> step_series(const ReportInput& in) {
     return series;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -3,7 +3,7 @@
 // that every writer (Markdown, HTML, JSON, CSV, plots) calls, so that they cannot disagree: the targets, the per-engine summary, the
 // per-metric tables, the error-against-step study and the findings in plain words.
 //
-// Nothing here runs a simulation: the writers and these functions take a SuiteResults built by compare::run_suite or
+// Nothing here runs a simulation: the writers and these functions take a SuiteResults built by validation::run_suite or
 // by hand (the tests).
 #include <limits>
 #include <optional>
@@ -14,7 +14,7 @@
 #include "compare/targets.hpp"
 #include "io/text.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 // The accuracy the project asks of an engine (compare/targets.hpp).
 constexpr double kReportThresholdTarget = compare::kThresholdTarget;
@@ -41,15 +41,15 @@ struct ReportMeta {
 struct EarthquakePart;  // validation/earthquake.hpp
 
 struct ReportInput {
-    const compare::Suite& suite;  // labels and kinds of the cases; may hold no cases (kinds then come from the ids)
-    const compare::SuiteResults& results;
+    const Suite& suite;  // labels and kinds of the cases; may hold no cases (kinds then come from the ids)
+    const SuiteResults& results;
     ReportMeta meta;
     const EarthquakePart* earthquake = nullptr;  // the record ensemble's part, when it ran
 };
 
 // The kind of a case: from the suite when it lists the case, else from the shape of its id (validation/suite.hpp).
-compare::CaseKind case_kind(const ReportInput& in, const std::string& case_id);
-const char* kind_name(compare::CaseKind kind);
+CaseKind case_kind(const ReportInput& in, const std::string& case_id);
+const char* kind_name(CaseKind kind);
 // The engine step of a `step` case (from the suite, else from the "/dt<dt>/<engine>" end of its id); NaN if none.
 double case_step(const ReportInput& in, const std::string& case_id);
 
@@ -76,7 +76,7 @@ struct EngineSummary {
     std::string line;                     // "ode: 31/33 metrics within target; max |error| ...; 0 failures"
 };
 // The engines other than "analytic", in the order of results.engines (then any only seen in rows or failures).
-std::vector<std::string> compared_engines(const compare::SuiteResults& results);
+std::vector<std::string> compared_engines(const SuiteResults& results);
 std::vector<EngineSummary> summarize(const ReportInput& in);
 
 // A per-metric table over the non-step cases: the reference value and each engine's value and error.
@@ -98,7 +98,7 @@ struct MetricTable {
     std::vector<MetricTableRow> rows;
 };
 // The metrics in report order: threshold_g, period, restitution, the history metrics, then the others by name.
-std::vector<std::string> metric_order(const compare::SuiteResults& results);
+std::vector<std::string> metric_order(const SuiteResults& results);
 std::vector<MetricTable> metric_tables(const ReportInput& in);
 
 // The report at a glance: per engine and metric (step-study cases left out), the signed error of largest magnitude
@@ -119,13 +119,13 @@ struct MatrixCell {
 // failure of that metric.
 std::vector<MatrixCell> error_matrix(const ReportInput& in);
 
-// The analytic model under the set that is not the reference (compare::SuiteResults::other_set), measured as an engine
+// The analytic model under the set that is not the reference (validation::SuiteResults::other_set), measured as an engine
 // is: its cells as error_matrix computes an engine's, none when it did not run. Their `pass` is no verdict: the report
 // shows the numbers with no mark, and no engine's verdict, summary or exit status reads them
 // (validation/report_other_set.cpp).
 std::vector<MatrixCell> other_set_matrix(const ReportInput& in);
 // Its row's name, "analytic, paper's assumptions"; empty when it did not run.
-std::string other_set_label(const compare::SuiteResults& results);
+std::string other_set_label(const SuiteResults& results);
 // One sentence: what the other set's assumptions change against the reference, in numbers; empty when it did not run.
 std::string other_set_finding(const ReportInput& in);
 
@@ -144,4 +144,4 @@ std::vector<StepSeries> step_series(const ReportInput& in);
 // engine after engine; only those of one engine when it is named.
 std::vector<std::string> findings(const ReportInput& in, const std::string& only_engine = "");
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -18,7 +18,7 @@
 // failures.csv: case_id,engine,message
 // traces.csv:   case_id,engine,t,theta1_over_alpha,assumption   (every trace, one line per sample; t to
 //               kTraceTimeDigits and theta1/alpha to kTraceValueDigits significant digits; assumption: the analytic
-//               model's, compare::Trace)
+//               model's, validation::Trace)
 #include <iosfwd>
 #include <string>
 
@@ -26,7 +26,7 @@
 #include "io/json.hpp"
 #include "validation/report.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 // Bumped when a key changes meaning (never for an added key).
 constexpr int kReportFormat = 1;
@@ -39,12 +39,12 @@ constexpr int kTraceValueDigits = 4;
 // A number with this many significant digits ("" when not finite).
 std::string trace_number(double value, int digits);
 
-Json results_json(const ReportInput& in);
+io::Json results_json(const ReportInput& in);
 // An engine's settings as results.json and bench.json write them: {dt, iterations, knobs {name: value}}, iterations
 // only when the settings set a count (> 0; 0 is an engine without iterations or its own choice).
-Json settings_json(const multibody::EngineSettings& s);
-void write_metrics_csv(std::ostream& out, const compare::SuiteResults& results);
-void write_failures_csv(std::ostream& out, const compare::SuiteResults& results);
-void write_traces_csv(std::ostream& out, const compare::SuiteResults& results);
+io::Json settings_json(const multibody::EngineSettings& s);
+void write_metrics_csv(std::ostream& out, const SuiteResults& results);
+void write_failures_csv(std::ostream& out, const SuiteResults& results);
+void write_traces_csv(std::ostream& out, const SuiteResults& results);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -6,9 +6,9 @@
 #include "io/gnuplot.hpp"
 #include "validation/report.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 // plots: what write_plots made (empty with --no-plots); plots_skipped: --no-plots was given.
-Document build_document(const ReportInput& in, const PlotResult& plots, bool plots_skipped);
+io::Document build_document(const ReportInput& in, const io::PlotResult& plots, bool plots_skipped);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -13,7 +13,7 @@
 #include "validation/report.hpp"
 #include "multibody/engine.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace {
 
 // Fitted orders below this magnitude: the error does not depend on the step (it is not discretisation error). A first
@@ -26,7 +26,7 @@ constexpr double kRegularFit = 0.9;
 // step": a first-order error would change by the ratio of the steps (5 to 10 over the suite's step studies).
 constexpr double kFlatSpread = 1.5;
 
-using Rows = std::vector<const compare::MetricRow*>;
+using Rows = std::vector<const MetricRow*>;
 
 std::string possessive(const std::string& engine) { return multibody::engine_display_name(engine) + "'s"; }
 
@@ -40,21 +40,21 @@ std::string step_ms(double dt) { return fmt::format("{:g} ms", dt * 1e3); }
 // The engine's measured rows of a metric, the step study left out.
 Rows rows_of(const ReportInput& in, const std::string& engine, const std::string& metric) {
     Rows rows;
-    for (const compare::MetricRow& r : in.results.rows)
+    for (const MetricRow& r : in.results.rows)
         if (r.engine == engine && r.metric == metric && !is_step_case(in, r.case_id) && std::isfinite(r.rel_error))
             rows.push_back(&r);
     return rows;
 }
 
-const compare::MetricRow* largest_error(const Rows& rows) {
-    return *std::max_element(rows.begin(), rows.end(), [](const compare::MetricRow* a, const compare::MetricRow* b) {
+const MetricRow* largest_error(const Rows& rows) {
+    return *std::max_element(rows.begin(), rows.end(), [](const MetricRow* a, const MetricRow* b) {
         return std::abs(a->rel_error) < std::abs(b->rel_error);
     });
 }
 
 std::string overturning_finding(const std::string& who, const Rows& rows) {
     std::vector<std::string> differ;
-    for (const compare::MetricRow* r : rows)
+    for (const MetricRow* r : rows)
         if (r->rel_error != 0.0)
             differ.push_back(fmt::format("{} ({})", r->case_id,
                                          r->engine_value != 0.0
@@ -67,8 +67,8 @@ std::string overturning_finding(const std::string& who, const Rows& rows) {
 }
 
 std::string peak_time_finding(const std::string& who, const Rows& rows) {
-    const compare::MetricRow* latest =
-        *std::max_element(rows.begin(), rows.end(), [](const compare::MetricRow* a, const compare::MetricRow* b) {
+    const MetricRow* latest =
+        *std::max_element(rows.begin(), rows.end(), [](const MetricRow* a, const MetricRow* b) {
             return std::abs(a->engine_value - a->analytic) < std::abs(b->engine_value - b->analytic);
         });
     return fmt::format("{} peak rotation comes up to {:.3g} s from the analytic model's ({}); no target is set on it.",
@@ -79,7 +79,7 @@ std::string peak_time_finding(const std::string& who, const Rows& rows) {
 std::string metric_finding(const std::string& who, const std::string& metric, const Rows& rows) {
     if (metric == "overturned") return overturning_finding(who, rows);
     if (metric == "peak_time") return peak_time_finding(who, rows);
-    const compare::MetricRow* worst = largest_error(rows);
+    const MetricRow* worst = largest_error(rows);
     if (metric == "rms_difference")
         return fmt::format("{} time histories differ from the analytic model's by an rms of up to {:.2g} % of the "
                            "analytic peak rotation ({}); no target is set on it.",
@@ -89,15 +89,15 @@ std::string metric_finding(const std::string& who, const std::string& metric, co
     if (!target)
         return fmt::format("{} {} differs from the analytic model's by up to {} ({}, {} case{}); the project sets no "
                            "target on it.",
-                           who, title, percent(worst->rel_error), worst->case_id, rows.size(),
+                           who, title, io::percent(worst->rel_error), worst->case_id, rows.size(),
                            rows.size() == 1 ? "" : "s");
     const auto outside = static_cast<std::size_t>(std::count_if(
-        rows.begin(), rows.end(), [&](const compare::MetricRow* r) { return !within(r->rel_error, *target); }));
+        rows.begin(), rows.end(), [&](const MetricRow* r) { return !within(r->rel_error, *target); }));
     if (outside == 0)
         return fmt::format("{} {} is within the {:g} % target on {} (largest error {} on {}).", who, title,
-                           100.0 * *target, all_of(rows.size(), "case"), percent(worst->rel_error), worst->case_id);
+                           100.0 * *target, all_of(rows.size(), "case"), io::percent(worst->rel_error), worst->case_id);
     return fmt::format("{} {} is outside the {:g} % target on {} of {} case{} (largest error {} on {}).", who, title,
-                       100.0 * *target, outside, rows.size(), rows.size() == 1 ? "" : "s", percent(worst->rel_error),
+                       100.0 * *target, outside, rows.size(), rows.size() == 1 ? "" : "s", io::percent(worst->rel_error),
                        worst->case_id);
 }
 
@@ -106,14 +106,14 @@ std::string metric_finding(const std::string& who, const std::string& metric, co
 std::vector<std::string> record_peak_findings(const ReportInput& in, const std::string& engine) {
     const std::string who = possessive(engine);
     std::map<std::string, Rows> low_peaks;  // by wall id
-    for (const compare::MetricRow* r : rows_of(in, engine, "peak_rotation"))
+    for (const MetricRow* r : rows_of(in, engine, "peak_rotation"))
         if (std::isfinite(r->rel_error) && r->rel_error < -kReportMuchLowerPeak)
             low_peaks[r->case_id.substr(0, r->case_id.find('/'))].push_back(r);
     std::vector<std::string> out;
     for (const auto& [wall_id, peaks] : low_peaks) {
         double sum = 0.0;
         int n = 0;
-        for (const compare::MetricRow* e : rows_of(in, engine, "restitution"))
+        for (const MetricRow* e : rows_of(in, engine, "restitution"))
             if (e->case_id.rfind(wall_id + "/r", 0) == 0 && e->case_id.find("/dt") == std::string::npos &&
                 std::isfinite(e->rel_error)) {
                 sum += e->rel_error;
@@ -121,13 +121,13 @@ std::vector<std::string> record_peak_findings(const ReportInput& in, const std::
             }
         if (n == 0 || sum / n > -kReportRestitutionTarget) continue;
         std::vector<std::string> listed;
-        for (const compare::MetricRow* r : peaks)
+        for (const MetricRow* r : peaks)
             listed.push_back(fmt::format("{:.3g} alpha against {:.3g} on {}", r->engine_value, r->analytic,
                                          r->case_id));
         out.push_back(fmt::format(
             "{} {} rocks much less than the analytic model under the records ({}): on the same wall its impacts keep "
             "less energy than the reference's (first-impact restitution {} on average over its free vibrations).",
-            who, wall_id, fmt::join(listed, "; "), percent(sum / n)));
+            who, wall_id, fmt::join(listed, "; "), io::percent(sum / n)));
     }
     return out;
 }
@@ -137,7 +137,7 @@ std::string step_finding(const std::string& engine, const StepSeries& s) {
     std::vector<std::string> points;  // largest step first, as the error is expected to fall
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     for (std::size_t i = s.dt.size(); i-- > 0;) {
-        points.push_back(fmt::format("{}: {}", step_ms(s.dt[i]), percent(s.rel_error[i])));
+        points.push_back(fmt::format("{}: {}", step_ms(s.dt[i]), io::percent(s.rel_error[i])));
         if (std::isfinite(s.rel_error[i]) && s.rel_error[i] != 0.0) {
             lo = std::min(lo, std::abs(s.rel_error[i]));
             hi = std::max(hi, std::abs(s.rel_error[i]));
@@ -163,10 +163,10 @@ std::string step_finding(const std::string& engine, const StepSeries& s) {
 // Empty when the engine finished every case.
 std::string failure_finding(const ReportInput& in, const std::string& engine) {
     std::set<std::string> all_cases;
-    for (const compare::MetricRow& r : in.results.rows) all_cases.insert(r.case_id);
-    for (const compare::CaseFailure& f : in.results.failures) all_cases.insert(f.case_id);
+    for (const MetricRow& r : in.results.rows) all_cases.insert(r.case_id);
+    for (const CaseFailure& f : in.results.failures) all_cases.insert(f.case_id);
     std::vector<std::string> failed;
-    for (const compare::CaseFailure& f : in.results.failures)
+    for (const CaseFailure& f : in.results.failures)
         if (f.engine == engine) failed.push_back(fmt::format("{} ({})", f.case_id, f.message));
     if (failed.empty()) return "";
     return fmt::format("{} failed on {} of {} cases: {}.", multibody::engine_display_name(engine), failed.size(),
@@ -198,4 +198,4 @@ std::vector<std::string> findings(const ReportInput& in, const std::string& only
     return out;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -12,7 +12,7 @@
 #include "validation/report_data.hpp"  // trace_number
 #include "multibody/engine.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace fs = std::filesystem;
 namespace {
 
@@ -57,17 +57,17 @@ constexpr double kZoomRatio = 1.0 / 3.0;
 constexpr double kZoomMotionFraction = 0.1;
 
 // The legend's words for a trace: the analytic model's names its assumption set.
-std::string trace_title(const compare::Trace& t) {
+std::string trace_title(const Trace& t) {
     if (t.engine != "analytic") return multibody::engine_display_name(t.engine);
     return t.assumption.empty() ? "analytic (reference)" : fmt::format("analytic, {} (reference)", t.assumption);
 }
 
 }  // namespace
 
-TraceWindow trace_window(const std::vector<const compare::Trace*>& traces, double motion_fraction) {
+TraceWindow trace_window(const std::vector<const Trace*>& traces, double motion_fraction) {
     TraceWindow w;
     double largest = 0.0, t_min = std::numeric_limits<double>::infinity(), t_max = -t_min;
-    for (const compare::Trace* t : traces)
+    for (const Trace* t : traces)
         for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha.size()); ++i) {
             if (std::isfinite(t->theta1_over_alpha[i])) largest = std::max(largest, std::abs(t->theta1_over_alpha[i]));
             t_min = std::min(t_min, t->t[i]);
@@ -75,7 +75,7 @@ TraceWindow trace_window(const std::vector<const compare::Trace*>& traces, doubl
         }
     if (!(t_max >= t_min)) return w;
     double first = t_max, last = t_min;
-    for (const compare::Trace* t : traces)
+    for (const Trace* t : traces)
         for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha.size()); ++i)
             if (std::abs(t->theta1_over_alpha[i]) > motion_fraction * largest) {
                 first = std::min(first, t->t[i]);
@@ -91,7 +91,7 @@ TraceWindow trace_window(const std::vector<const compare::Trace*>& traces, doubl
     if (!(w.t1 > w.t0)) w.t1 = w.t0 + 1.0;
     // y: every value inside the window, and zero.
     double lo = 0.0, hi = 0.0;
-    for (const compare::Trace* t : traces)
+    for (const Trace* t : traces)
         for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha.size()); ++i)
             if (t->t[i] >= w.t0 && t->t[i] <= w.t1 && std::isfinite(t->theta1_over_alpha[i])) {
                 lo = std::min(lo, t->theta1_over_alpha[i]);
@@ -158,15 +158,15 @@ std::vector<std::size_t> simplify_polyline(const std::vector<double>& x, const s
 namespace {
 
 // One trace plot: the traces inside the window, each simplified on the plot's pixel grid.
-PlotScript trace_script(const std::string& id, const std::string& name, const std::string& title,
-                        const std::vector<const compare::Trace*>& traces, const TraceWindow& w) {
-    PlotScript s;
+io::PlotScript trace_script(const std::string& id, const std::string& name, const std::string& title,
+                        const std::vector<const Trace*>& traces, const TraceWindow& w) {
+    io::PlotScript s;
     s.plot = {kTraceSection, name, title, false};
     std::string plot_cmd;
     int index = 0;
-    for (const compare::Trace* t : traces) {
-        s.dat += fmt::format("# {} {}{}\n# t theta1_over_alpha\n", gp_comment(id), gp_comment(t->engine),
-                             t->assumption.empty() ? "" : " " + gp_comment(t->assumption));
+    for (const Trace* t : traces) {
+        s.dat += fmt::format("# {} {}{}\n# t theta1_over_alpha\n", io::gp_comment(id), io::gp_comment(t->engine),
+                             t->assumption.empty() ? "" : " " + io::gp_comment(t->assumption));
         // The samples inside the window and one either side (the line runs to the edge).
         const std::size_t n = std::min(t->t.size(), t->theta1_over_alpha.size());
         std::vector<double> px, py;
@@ -193,40 +193,40 @@ PlotScript trace_script(const std::string& id, const std::string& name, const st
         plot_cmd += fmt::format(
             "{}'{}.dat' index {} using 1:2 with linespoints lw {} dt {} pt {} ps 0.8 pi {} lc rgb '{}' title {}",
             index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, analytic ? 2.2 : 1.4, 1,
-            engine_point(t->engine, true), every, engine_colour(t->engine), gp_string(trace_title(*t)));
+            io::engine_point(t->engine, true), every, io::engine_colour(t->engine), io::gp_string(trace_title(*t)));
         ++index;
     }
-    s.gp = gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
+    s.gp = io::gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
            // clip two: a line between two points outside the frame is drawn across it (a zoomed plot's reference).
            fmt::format("set title {}\n{}set ylabel 'theta1 / alpha'\nset clip two\n"
                        "set xrange [{}:{}]\nset yrange [{}:{}]\n",
-                       gp_string(s.plot.title), gp_xlabel("t [s]"), gp_number(w.t0), gp_number(w.t1),
-                       gp_number(w.y0), gp_number(w.y1)) +
+                       io::gp_string(s.plot.title), io::gp_xlabel("t [s]"), io::gp_number(w.t0), io::gp_number(w.t1),
+                       io::gp_number(w.y0), io::gp_number(w.y1)) +
            plot_cmd + "\n";
     return s;
 }
 
-double largest_value(const compare::Trace& t) {
+double largest_value(const Trace& t) {
     double m = 0.0;
     for (double v : t.theta1_over_alpha)
         if (std::isfinite(v)) m = std::max(m, std::abs(v));
     return m;
 }
 
-std::vector<PlotScript> trace_scripts(const ReportInput& in) {
+std::vector<io::PlotScript> trace_scripts(const ReportInput& in) {
     std::vector<std::string> cases;  // in the order of the traces
-    for (const compare::Trace& t : in.results.traces)
+    for (const Trace& t : in.results.traces)
         if (std::find(cases.begin(), cases.end(), t.case_id) == cases.end()) cases.push_back(t.case_id);
-    std::vector<PlotScript> scripts;
+    std::vector<io::PlotScript> scripts;
     for (const std::string& id : cases) {
-        std::vector<const compare::Trace*> traces;  // the analytic model's first (the reference), then the engines'
-        for (const compare::Trace& t : in.results.traces)
+        std::vector<const Trace*> traces;  // the analytic model's first (the reference), then the engines'
+        for (const Trace& t : in.results.traces)
             if (t.case_id == id && t.engine == "analytic") traces.push_back(&t);
         const std::size_t references = traces.size();
-        for (const compare::Trace& t : in.results.traces)
+        for (const Trace& t : in.results.traces)
             if (t.case_id == id && t.engine != "analytic") traces.push_back(&t);
         if (traces.empty()) continue;
-        scripts.push_back(trace_script(id, "trace_" + file_stem(id),
+        scripts.push_back(trace_script(id, "trace_" + io::file_stem(id),
                                        fmt::format("{}: theta1 / alpha, the analytic model and engines", id), traces,
                                        trace_window(traces, kMotionFraction)));
         // When every engine rocks far less than the reference, a second plot zooms on them (the reference then
@@ -238,10 +238,10 @@ std::vector<PlotScript> trace_scripts(const ReportInput& in) {
             largest = std::max(largest, largest_value(*traces[i]));
         }
         if (!(others > 0.0 && others < kZoomRatio * reference)) continue;
-        const std::vector<const compare::Trace*> small(traces.begin() + static_cast<std::ptrdiff_t>(references),
+        const std::vector<const Trace*> small(traces.begin() + static_cast<std::ptrdiff_t>(references),
                                                        traces.end());
         scripts.push_back(trace_script(
-            id, "trace_" + file_stem(id) + "_zoom",
+            id, "trace_" + io::file_stem(id) + "_zoom",
             fmt::format("{}: zoomed on the engines (the reference, up to {:.3g} alpha, is in the plot above)", id,
                         reference),
             small, trace_window(small, kZoomMotionFraction)));
@@ -249,13 +249,13 @@ std::vector<PlotScript> trace_scripts(const ReportInput& in) {
     return scripts;
 }
 
-std::vector<PlotScript> error_scripts(const ReportInput& in) {
-    std::vector<PlotScript> scripts;
+std::vector<io::PlotScript> error_scripts(const ReportInput& in) {
+    std::vector<io::PlotScript> scripts;
     for (const MetricTable& table : metric_tables(in)) {
         // Overturning is yes/no (its "error" is 0 or +-1): its table says it all.
         if (table.engines.empty() || table.metric == "overturned") continue;
-        PlotScript s;
-        s.plot = {kErrorSection, "error_" + file_stem(table.metric),
+        io::PlotScript s;
+        s.plot = {kErrorSection, "error_" + io::file_stem(table.metric),
                   table.metric == "rms_difference"
                       ? std::string("RMS difference of theta1 / alpha over the analytic peak, per case and engine")
                       : fmt::format("Relative error of the {} per case and engine", metric_title(table.metric)),
@@ -263,14 +263,14 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
         // Per case: the engines' errors, then each one's hover text (gnuplot.hpp, gp_hover_layer) in that order.
         const std::size_t engines = table.engines.size();
         s.dat = "# index case_id";
-        for (const std::string& e : table.engines) s.dat += ' ' + gp_comment(e);
+        for (const std::string& e : table.engines) s.dat += ' ' + io::gp_comment(e);
         s.dat += "   (relative error in %), then the hover text of each\n";
         for (std::size_t i = 0; i < table.rows.size(); ++i) {
             const MetricTableRow& row = table.rows[i];
-            s.dat += fmt::format("{} {}", i, gp_data_string(row.case_id));
-            for (const MetricCell& c : row.cells) s.dat += ' ' + gp_number(c.present ? 100.0 * c.rel_error : NAN);
+            s.dat += fmt::format("{} {}", i, io::gp_data_string(row.case_id));
+            for (const MetricCell& c : row.cells) s.dat += ' ' + io::gp_number(c.present ? 100.0 * c.rel_error : NAN);
             for (std::size_t e = 0; e < row.cells.size() && e < engines; ++e)
-                s.dat += ' ' + gp_hover_text(multibody::engine_display_name(table.engines[e]), row.case_id,
+                s.dat += ' ' + io::gp_hover_text(multibody::engine_display_name(table.engines[e]), row.case_id,
                                              row.cells[e].present ? 100.0 * row.cells[e].rel_error : NAN, "%");
             s.dat += '\n';
         }
@@ -279,7 +279,7 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
         // (gnuplot.hpp).
         std::string tics;
         for (std::size_t i = 0; i < table.rows.size(); ++i)
-            tics += fmt::format("{}{} {}", i == 0 ? "set xtics (" : ", \\\n    ", gp_string(table.rows[i].case_id), i);
+            tics += fmt::format("{}{} {}", i == 0 ? "set xtics (" : ", \\\n    ", io::gp_string(table.rows[i].case_id), i);
         if (!tics.empty()) tics += ")\n";
         std::string cmd;
         // Each engine's own marker and colour (io/palette.hpp: the same whatever the engine list), slightly offset
@@ -287,12 +287,12 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
         const double spread = 0.12;
         for (std::size_t e = 0; e < engines; ++e) {
             const double offset = spread * (static_cast<double>(e) - 0.5 * static_cast<double>(engines - 1));
-            const std::string style = fmt::format("pt {} ps 1.3 lc rgb '{}'", engine_point(table.engines[e]),
-                                                  engine_colour(table.engines[e]));
+            const std::string style = fmt::format("pt {} ps 1.3 lc rgb '{}'", io::engine_point(table.engines[e]),
+                                                  io::engine_colour(table.engines[e]));
             const std::string using_xy = fmt::format("'{}.dat' using ($1+({:g})):{}", s.plot.name, offset, e + 3);
             cmd += fmt::format("{}{} with points {} title {}, \\\n     {}", e == 0 ? "plot " : ", \\\n     ", using_xy,
-                               style, gp_string(multibody::engine_display_name(table.engines[e])),
-                               gp_hover_layer(fmt::format("{}:(stringcolumn({}))", using_xy, e + 3 + engines), style));
+                               style, io::gp_string(multibody::engine_display_name(table.engines[e])),
+                               io::gp_hover_layer(fmt::format("{}:(stringcolumn({}))", using_xy, e + 3 + engines), style));
         }
         // The y axis spans at least the target band with room around it (or, without a target, the smallest target),
         // so that errors far inside it stay near zero instead of filling the plot (1e-7 % read as large).
@@ -301,26 +301,26 @@ std::vector<PlotScript> error_scripts(const ReportInput& in) {
             cmd += fmt::format(", \\\n     {0:g} with lines dt 2 lc rgb '#888888' title 'target +/-{0:g} %', \\\n"
                                "     -{0:g} with lines dt 2 lc rgb '#888888' notitle",
                                band);
-        s.gp = gp_preamble("vssw report", s.plot.name, width, kPlotHeight + 80) +
+        s.gp = io::gp_preamble("vssw report", s.plot.name, width, kPlotHeight + 80) +
                fmt::format("set title {}\nset ylabel 'relative error [%] (engine / reference - 1)'\n"
                            "set xrange [-0.6:{}]\nset yrange [*<{}:{}<*]\nset xtics rotate by -35 left\n{}",
-                           gp_string(s.plot.title), static_cast<double>(table.rows.size()) - 0.4,
-                           gp_number(-kBandRoom * band), gp_number(kBandRoom * band), tics) +
+                           io::gp_string(s.plot.title), static_cast<double>(table.rows.size()) - 0.4,
+                           io::gp_number(-kBandRoom * band), io::gp_number(kBandRoom * band), tics) +
                cmd + "\n";
         scripts.push_back(std::move(s));
     }
     return scripts;
 }
 
-std::vector<PlotScript> step_scripts(const ReportInput& in) {
+std::vector<io::PlotScript> step_scripts(const ReportInput& in) {
     const std::vector<StepSeries> all = step_series(in);
     std::vector<std::string> metrics;
     for (const StepSeries& s : all)
         if (std::find(metrics.begin(), metrics.end(), s.metric) == metrics.end()) metrics.push_back(s.metric);
-    std::vector<PlotScript> scripts;
+    std::vector<io::PlotScript> scripts;
     for (const std::string& metric : metrics) {
-        PlotScript s;
-        s.plot = {kStepSection, "step_" + file_stem(metric),
+        io::PlotScript s;
+        s.plot = {kStepSection, "step_" + io::file_stem(metric),
                   fmt::format("|Relative error| of the {} against the engine step", metric_title(metric)), false};
         std::string cmd;
         int index = 0;
@@ -333,23 +333,23 @@ std::vector<PlotScript> step_scripts(const ReportInput& in) {
         }
         std::vector<std::string> engines;
         for (const StepSeries* series : drawn) engines.push_back(series->engine);
-        const std::vector<std::size_t> variants = series_variants(engines);
+        const std::vector<std::size_t> variants = io::series_variants(engines);
         for (const StepSeries* drawn_series : drawn) {
             const StepSeries& series = *drawn_series;
-            s.dat += fmt::format("# {} {} {}\n# dt_ms abs_rel_error_percent hover_text\n", gp_comment(series.engine),
-                                 gp_comment(series.base_case), gp_comment(metric));
+            s.dat += fmt::format("# {} {} {}\n# dt_ms abs_rel_error_percent hover_text\n", io::gp_comment(series.engine),
+                                 io::gp_comment(series.base_case), io::gp_comment(metric));
             const std::string label = multibody::engine_display_name(series.engine) + " " + series.base_case;
             for (std::size_t i = 0; i < series.dt.size(); ++i)
-                s.dat += gp_number(1e3 * series.dt[i], true) + ' ' +
-                         gp_number(100.0 * std::abs(series.rel_error[i]), true) + ' ' +
-                         gp_hover_text(label, fmt::format("dt {:g} ms", 1e3 * series.dt[i]),
+                s.dat += io::gp_number(1e3 * series.dt[i], true) + ' ' +
+                         io::gp_number(100.0 * std::abs(series.rel_error[i]), true) + ' ' +
+                         io::gp_hover_text(label, fmt::format("dt {:g} ms", 1e3 * series.dt[i]),
                                        100.0 * std::abs(series.rel_error[i]), "%") +
                          '\n';
             s.dat += "\n\n";
-            const std::string style = series_style(series.engine, variants[static_cast<std::size_t>(index)]);
+            const std::string style = io::series_style(series.engine, variants[static_cast<std::size_t>(index)]);
             cmd += fmt::format("{0}'{1}.dat' index {2} using 1:2 with linespoints {3} title {4}, \\\n     {5}",
-                               index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, style, gp_string(label),
-                               gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(3))",
+                               index == 0 ? "plot " : ", \\\n     ", s.plot.name, index, style, io::gp_string(label),
+                               io::gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(3))",
                                                           s.plot.name, index),
                                               style));
             ++index;
@@ -357,9 +357,9 @@ std::vector<PlotScript> step_scripts(const ReportInput& in) {
         if (index == 0) continue;
         if (const auto target = target_of(metric))
             cmd += fmt::format(", \\\n     {0:g} with lines dt 2 lc rgb '#888888' title 'target {0:g} %'", 100.0 * *target);
-        s.gp = gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
+        s.gp = io::gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
                fmt::format("set title {}\nset logscale xy\nset format y '%g'\n{}set ylabel '|relative error| [%]'\n",
-                           gp_string(s.plot.title), gp_xlabel("engine step dt [ms]")) +
+                           io::gp_string(s.plot.title), io::gp_xlabel("engine step dt [ms]")) +
                cmd + "\n";
         scripts.push_back(std::move(s));
     }
@@ -368,15 +368,15 @@ std::vector<PlotScript> step_scripts(const ReportInput& in) {
 
 }  // namespace
 
-std::vector<PlotScript> report_plot_scripts(const ReportInput& in) {
-    std::vector<PlotScript> scripts = trace_scripts(in);
+std::vector<io::PlotScript> report_plot_scripts(const ReportInput& in) {
+    std::vector<io::PlotScript> scripts = trace_scripts(in);
     for (auto* more : {&error_scripts, &step_scripts})
-        for (PlotScript& s : (*more)(in)) scripts.push_back(std::move(s));
+        for (io::PlotScript& s : (*more)(in)) scripts.push_back(std::move(s));
     return scripts;
 }
 
-PlotResult write_plots(const ReportInput& in, const fs::path& plots_dir, const PlotOptions& options) {
-    return draw_plots(report_plot_scripts(in), plots_dir, options.gnuplot);
+io::PlotResult write_plots(const ReportInput& in, const fs::path& plots_dir, const PlotOptions& options) {
+    return io::draw_plots(report_plot_scripts(in), plots_dir, options.gnuplot);
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

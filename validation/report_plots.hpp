@@ -14,7 +14,7 @@
 #include "io/gnuplot.hpp"
 #include "validation/report.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 struct PlotOptions {
     std::string gnuplot = "gnuplot";  // the program (looked up in PATH unless it holds a '/')
@@ -25,15 +25,15 @@ struct PlotOptions {
 struct TraceWindow {
     double t0 = 0.0, t1 = 1.0, y0 = -1.0, y1 = 1.0;
 };
-TraceWindow trace_window(const std::vector<const compare::Trace*>& traces, double motion_fraction);
+TraceWindow trace_window(const std::vector<const Trace*>& traces, double motion_fraction);
 // The indices of the points of a polyline that keep every point within `tol` of it (Douglas-Peucker; x and y in the
 // same unit, e.g. pixels); the first and last always, non-finite y always.
 std::vector<std::size_t> simplify_polyline(const std::vector<double>& x, const std::vector<double>& y, double tol);
 
 // The scripts and data of every plot the results call for, in the order the report shows them.
-std::vector<PlotScript> report_plot_scripts(const ReportInput& in);
+std::vector<io::PlotScript> report_plot_scripts(const ReportInput& in);
 
 // Writes scripts and data into plots_dir (created) and runs gnuplot on each script.
-PlotResult write_plots(const ReportInput& in, const std::filesystem::path& plots_dir, const PlotOptions& options);
+io::PlotResult write_plots(const ReportInput& in, const std::filesystem::path& plots_dir, const PlotOptions& options);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -14,7 +14,7 @@
 #include "validation/report_data.hpp"
 #include "validation/report_document.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 namespace fs = std::filesystem;
 
 void prepare_report_dir(const fs::path& dir) {
@@ -31,7 +31,7 @@ void prepare_report_dir(const fs::path& dir) {
     fs::remove(probe, ec);
 }
 
-ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite, const compare::SuiteResults& results,
+ReportFiles write_suite_report(const fs::path& dir, const Suite& suite, const SuiteResults& results,
                                ReportMeta meta, const ReportOptions& options) {
     prepare_report_dir(dir);
     ReportFiles files;
@@ -41,7 +41,7 @@ ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite,
     files.json = dir / "results.json";
     const fs::path plots_dir = dir / "plots";
 
-    PlotResult plots;
+    io::PlotResult plots;
     if (options.plots) {
         plots = write_plots(ReportInput{suite, results, meta}, plots_dir, options.plot);
         files.plots_made = plots.all_made;
@@ -51,19 +51,19 @@ ReportFiles write_suite_report(const fs::path& dir, const compare::Suite& suite,
     meta.plots_note = options.plots ? plots.note : "not made (--no-plots)";
     const ReportInput in{suite, results, meta, options.earthquake};
 
-    write_file(files.json, [&](std::ostream& out) { out << dump_json(results_json(in), 2) << '\n'; });
-    write_file(dir / "metrics.csv", [&](std::ostream& out) { write_metrics_csv(out, results); });
-    write_file(dir / "failures.csv", [&](std::ostream& out) { write_failures_csv(out, results); });
-    write_file(dir / "traces.csv", [&](std::ostream& out) { write_traces_csv(out, results); });
-    Document doc = build_document(in, plots, !options.plots);
+    io::write_file(files.json, [&](std::ostream& out) { out << io::dump_json(results_json(in), 2) << '\n'; });
+    io::write_file(dir / "metrics.csv", [&](std::ostream& out) { write_metrics_csv(out, results); });
+    io::write_file(dir / "failures.csv", [&](std::ostream& out) { write_failures_csv(out, results); });
+    io::write_file(dir / "traces.csv", [&](std::ostream& out) { write_traces_csv(out, results); });
+    io::Document doc = build_document(in, plots, !options.plots);
     if (!options.bench_dir.empty()) {
-        const std::vector<DocBlock> bench = bench_report_blocks(options.bench_dir, plots_dir);
+        const std::vector<io::DocBlock> bench = bench_report_blocks(options.bench_dir, plots_dir);
         doc.blocks.insert(doc.blocks.end(), bench.begin(), bench.end());
     }
-    write_file(files.markdown, [&](std::ostream& out) { write_markdown(out, doc); });
-    write_file(files.html, [&](std::ostream& out) { write_html(out, doc, plots_dir); });
+    io::write_file(files.markdown, [&](std::ostream& out) { io::write_markdown(out, doc); });
+    io::write_file(files.html, [&](std::ostream& out) { io::write_html(out, doc, plots_dir); });
     for (const EngineSummary& s : summarize(in)) files.summary_lines.push_back(s.line);
     return files;
 }
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

@@ -10,7 +10,7 @@
 #include "validation/report.hpp"
 #include "validation/report_plots.hpp"
 
-namespace vssw::study {
+namespace vssw::validation {
 
 struct ReportOptions {
     bool plots = true;  // false: --no-plots
@@ -34,7 +34,7 @@ void prepare_report_dir(const std::filesystem::path& dir);
 
 // Writes everything; meta.date and meta.commit as given (the plot fields are filled in here). InputError naming the
 // file when one cannot be written. A missing or failing gnuplot is not an error: see ReportFiles::warnings.
-ReportFiles write_suite_report(const std::filesystem::path& dir, const compare::Suite& suite,
-                               const compare::SuiteResults& results, ReportMeta meta, const ReportOptions& options);
+ReportFiles write_suite_report(const std::filesystem::path& dir, const Suite& suite,
+                               const SuiteResults& results, ReportMeta meta, const ReportOptions& options);
 
-}  // namespace vssw::study
+}  // namespace vssw::validation

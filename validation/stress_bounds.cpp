@@ -11,7 +11,7 @@
 #include "stress/case.hpp"
 #include "stress/run.hpp"
 
-namespace vssw::cli {
+namespace vssw::validation {
 namespace {
 
 void add_once(std::vector<std::string>& list, const std::string& item) {
@@ -20,14 +20,14 @@ void add_once(std::vector<std::string>& list, const std::string& item) {
 
 }  // namespace
 
-stress::RunOptions plan_stress_bounds(const std::vector<compare::StressBound>& bounds, const std::string& path,
+stress::RunOptions plan_stress_bounds(const std::vector<StressBound>& bounds, const std::string& path,
                                       int threads) {
     const std::vector<std::string> available = multibody::available_engines();
     stress::RunOptions run;
     run.quick = true;
     run.time_limit_s = stress::kQuickTimeLimit;  // the verdicts `vssw stress --quick` gives
     run.threads = threads;
-    for (const compare::StressBound& b : bounds) {
+    for (const StressBound& b : bounds) {
         for (const std::string& id : b.case_ids) {
             if (stress::find_case(id) == nullptr)
                 throw InputError(fmt::format("bounds file {}: no stress case '{}'", path, id));
@@ -43,20 +43,20 @@ stress::RunOptions plan_stress_bounds(const std::vector<compare::StressBound>& b
     return run;
 }
 
-std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare::StressBound>& bounds,
+std::vector<BoundVerdict> check_stress_bounds(const std::vector<StressBound>& bounds,
                                                        const stress::RunOptions& run) {
     if (bounds.empty()) return {};
     const std::vector<std::string> available = multibody::available_engines();
     const std::vector<stress::CaseResult> results = stress::run_cases(run);
-    std::vector<compare::BoundVerdict> verdicts;
-    for (const compare::StressBound& b : bounds)
+    std::vector<BoundVerdict> verdicts;
+    for (const StressBound& b : bounds)
         for (const std::string& id : b.case_ids)
             for (const std::string& e : b.engines.empty() ? available : b.engines) {
                 const auto r = std::find_if(results.begin(), results.end(),
                                             [&](const stress::CaseResult& x) { return x.name == id && x.engine == e; });
                 if (r == results.end())
                     throw std::logic_error(fmt::format("stress run gave no verdict for {} on {}", id, e));
-                compare::BoundVerdict v;
+                BoundVerdict v;
                 v.engine = e;
                 v.case_id = id;
                 v.metric = "stress";
@@ -74,4 +74,4 @@ std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare
     return verdicts;
 }
 
-}  // namespace vssw::cli
+}  // namespace vssw::validation

@@ -7,15 +7,15 @@
 #include "validation/bounds.hpp"
 #include "stress/run.hpp"
 
-namespace vssw::cli {
+namespace vssw::validation {
 
 // The stress run the bounds ask for (their cases in quick form, on their engines). InputError (naming the file) for an
 // unknown case or engine: `vssw check` plans it before anything runs.
-stress::RunOptions plan_stress_bounds(const std::vector<compare::StressBound>& bounds, const std::string& path,
+stress::RunOptions plan_stress_bounds(const std::vector<StressBound>& bounds, const std::string& path,
                                       int threads);
 
 // Runs the planned cases: one verdict per (case, engine) of each bound, in the bounds' order.
-std::vector<compare::BoundVerdict> check_stress_bounds(const std::vector<compare::StressBound>& bounds,
+std::vector<BoundVerdict> check_stress_bounds(const std::vector<StressBound>& bounds,
                                                        const stress::RunOptions& run);
 
-}  // namespace vssw::cli
+}  // namespace vssw::validation

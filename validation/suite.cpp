@@ -28,7 +28,7 @@
 #include "multibody/kit/step_resolution.hpp"
 #include "validation/assumption_set_engine.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 namespace {
 
 using multibody::AnalyticEngine;
@@ -67,7 +67,7 @@ struct TaskOutput {
 
 // The metric's unit from the one metric table (compare/metric_catalog.hpp).
 const char* unit_of(const char* metric) {
-    const MetricInfo* m = find_metric(metric);
+    const compare::MetricInfo* m = compare::find_metric(metric);
     if (m == nullptr) throw std::logic_error(std::string("suite metric '") + metric + "' is not in the catalogue");
     return m->unit;
 }
@@ -75,7 +75,7 @@ const char* unit_of(const char* metric) {
 // rel_error: the relative error of engine_value against analytic, unless given (overturned, rms_difference).
 MetricRow make_row(const std::string& case_id, const std::string& engine, const char* metric, double analytic,
                    double engine_value, const char* reference) {
-    return {case_id, engine, metric, analytic, engine_value, compare_metric(analytic, engine_value).rel_error,
+    return {case_id, engine, metric, analytic, engine_value, compare::compare_metric(analytic, engine_value).rel_error,
             reference, unit_of(metric)};
 }
 MetricRow make_row(const std::string& case_id, const std::string& engine, const char* metric, double analytic,
@@ -138,7 +138,7 @@ struct CaseReference {
     std::once_flag once;
     double free_t_end = 0.0;  // free, step: the run's end (free_vibration_duration), set before the tasks run
     double threshold_g = kNaN;                  // threshold
-    FreeVibrationResult free;                   // free, step: the analytic run, its trajectory dropped
+    compare::FreeVibrationResult free;                   // free, step: the analytic run, its trajectory dropped
     std::optional<Trace> free_trace;            // free: the analytic trace when traces are kept
     multibody::Trajectory history;              // history: the analytic run (engines' RMS difference)
     std::atomic<int> users{0};                  // tasks of the case still to read `history`
@@ -154,12 +154,12 @@ struct TaskContext {
     CaseReference& ref;
     // The reference: AnalyticEngine's settings under the suite's set (multibody::analytic_settings), and its name for
     // the traces.
-    const EngineSettings& reference_settings;
+    const multibody::EngineSettings& reference_settings;
     const char* reference_set;
 };
 
-FreeVibrationOptions free_options(const TaskContext& x) {
-    FreeVibrationOptions options;
+compare::FreeVibrationOptions free_options(const TaskContext& x) {
+    compare::FreeVibrationOptions options;
     options.r = x.c.r;
     options.t_end = x.ref.free_t_end;  // what t_end 0 would compute, computed once
     return options;
@@ -181,11 +181,11 @@ void compute_reference(const TaskContext& x) {
     CaseReference& ref = x.ref;
     switch (x.c.kind) {
         case CaseKind::threshold:
-            ref.threshold_g = find_threshold(analytic, x.reference_settings, x.wall.scene).value_g;
+            ref.threshold_g = compare::find_threshold(analytic, x.reference_settings, x.wall.scene).value_g;
             return;
         case CaseKind::free:
         case CaseKind::step: {
-            ref.free = run_free_vibration(analytic, x.reference_settings, x.wall.scene, free_options(x));
+            ref.free = compare::run_free_vibration(analytic, x.reference_settings, x.wall.scene, free_options(x));
             if (x.keep_traces && x.c.kind == CaseKind::free)
                 ref.free_trace = make_trace(x.c.id, kReferenceEngine, ref.free.trajectory, x.wall.scene.alpha(),
                                             kFreeTraceSeconds, x.reference_set);
@@ -196,7 +196,7 @@ void compute_reference(const TaskContext& x) {
         }
         case CaseKind::history: {
             const Excitation ex = history_excitation(x);
-            EngineSettings sampled = x.reference_settings;
+            multibody::EngineSettings sampled = x.reference_settings;
             sampled.sample_dt = kHistoryReferenceSampleDt;
             ref.history = analytic.simulate(x.wall.scene, ex, sampled);
             return;
@@ -215,7 +215,7 @@ const CaseReference& reference_of(const TaskContext& x) {
 }
 
 // The settings the engine runs the case at: the case's own (a suite file's), else the engine's defaults.
-EngineSettings case_settings(const SuiteCase& c, const multibody::Engine& engine) {
+multibody::EngineSettings case_settings(const SuiteCase& c, const multibody::Engine& engine) {
     const auto it = c.settings.find(engine.name());
     return it != c.settings.end() ? it->second : engine.default_settings();
 }
@@ -223,11 +223,11 @@ EngineSettings case_settings(const SuiteCase& c, const multibody::Engine& engine
 void threshold_task(const TaskContext& x, TaskOutput& out) {
     const std::string name = x.engine.name();
     const double a = reference_of(x).threshold_g;
-    const double e = x.reference ? a : find_threshold(x.engine, case_settings(x.c, x.engine), x.wall.scene).value_g;
+    const double e = x.reference ? a : compare::find_threshold(x.engine, case_settings(x.c, x.engine), x.wall.scene).value_g;
     out.rows.push_back(make_row(x.c.id, name, "threshold_g", a, e, "analytic model"));
 }
 
-void free_rows(const TaskContext& x, const FreeVibrationResult& a, const FreeVibrationResult& e, TaskOutput& out) {
+void free_rows(const TaskContext& x, const compare::FreeVibrationResult& a, const compare::FreeVibrationResult& e, TaskOutput& out) {
     const std::string name = x.engine.name();
     out.rows.push_back(make_row(x.c.id, name, "period", a.period.value_or(kNaN), e.period.value_or(kNaN),
                                 "analytic model"));
@@ -243,10 +243,10 @@ void free_task(const TaskContext& x, TaskOutput& out) {
         if (ref.free_trace) out.traces.push_back(*ref.free_trace);
         return;
     }
-    EngineSettings settings = case_settings(x.c, x.engine);
+    multibody::EngineSettings settings = case_settings(x.c, x.engine);
     if (x.c.dt) settings.dt = *x.c.dt;
     // Both sides run for the same time (free_vibration_with_analytic's rule), the analytic one shared.
-    const FreeVibrationResult e = run_free_vibration(x.engine, settings, x.wall.scene, free_options(x));
+    const compare::FreeVibrationResult e = compare::run_free_vibration(x.engine, settings, x.wall.scene, free_options(x));
     free_rows(x, ref.free, e, out);
     // A first-impact ratio outside (0, 1] is a failure of the engine's run, not a restitution: the row is NaN and
     // the report lists why.
@@ -314,16 +314,16 @@ void run_task(const TaskContext& x, TaskOutput& out) {
 // naming the case; the settings are the ones the task runs at.
 void require_task_steps(const TaskContext& x) {
     if (x.reference) return;
-    EngineSettings settings = case_settings(x.c, x.engine);
+    multibody::EngineSettings settings = case_settings(x.c, x.engine);
     try {
         multibody::require_settings_fit_wall(x.engine.display_name(), settings, x.engine.setting_descriptions(),
                                              x.wall.scene);
         switch (x.c.kind) {
-            case CaseKind::threshold: require_threshold_steps(x.engine, settings, x.wall.scene); return;
+            case CaseKind::threshold: compare::require_threshold_steps(x.engine, settings, x.wall.scene); return;
             case CaseKind::free:
             case CaseKind::step:
                 if (x.c.dt) settings.dt = *x.c.dt;  // as free_task runs it
-                require_free_vibration_steps(x.engine, settings, x.wall.scene, free_options(x));
+                compare::require_free_vibration_steps(x.engine, settings, x.wall.scene, free_options(x));
                 return;
             case CaseKind::history:
                 multibody::require_step_resolves(x.engine.display_name(), x.wall.scene, history_excitation(x),
@@ -339,10 +339,10 @@ void require_task_steps(const TaskContext& x) {
 // vibration end (CaseReference).
 double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMotion* record, double free_t_end) {
     switch (c.kind) {
-        case CaseKind::threshold: return threshold_seconds(w.scene);
+        case CaseKind::threshold: return compare::threshold_seconds(w.scene);
         case CaseKind::free:
         case CaseKind::step: return free_t_end;
-        case CaseKind::history: return record ? response_seconds(*record, c.response_tail) : 0.0;
+        case CaseKind::history: return record ? compare::response_seconds(*record, c.response_tail) : 0.0;
     }
     return 0.0;
 }
@@ -350,11 +350,11 @@ double simulated_seconds(const SuiteCase& c, const SuiteWall& w, const GroundMot
 }  // namespace
 
 std::vector<std::string> metrics_of(CaseKind kind, bool vssw) {
-    const SuiteMeasure measure = kind == CaseKind::threshold ? SuiteMeasure::threshold
-                                 : kind == CaseKind::history ? SuiteMeasure::history
-                                                             : SuiteMeasure::free;
+    const compare::SuiteMeasure measure = kind == CaseKind::threshold ? compare::SuiteMeasure::threshold
+                                 : kind == CaseKind::history ? compare::SuiteMeasure::history
+                                                             : compare::SuiteMeasure::free;
     std::vector<std::string> out;
-    for (const MetricInfo* m : suite_metrics())
+    for (const compare::MetricInfo* m : compare::suite_metrics())
         if (m->suite == measure && (vssw || !m->vssw_only)) out.push_back(m->name);
     return out;
 }
@@ -477,21 +477,21 @@ SuiteInputs read_inputs(const Suite& suite, const std::map<std::string, GroundMo
 
 // Tasks in (case, engine) order: their outputs are assembled in this order whatever the threads did. Each task is
 // counted as a user of its case's shared analytic side (`references`, one per case).
-std::vector<CaseTask> plan_tasks(const Suite& suite, const SuiteInputs& in,
+std::vector<compare::CaseTask> plan_tasks(const Suite& suite, const SuiteInputs& in,
                                  const std::vector<const multibody::Engine*>& engines,
                                  std::vector<CaseReference>& references) {
-    std::vector<CaseTask> tasks;
+    std::vector<compare::CaseTask> tasks;
     for (std::size_t ci = 0; ci < suite.cases.size(); ++ci) {
         const SuiteCase& c = suite.cases[ci];
         const SuiteWall& w = *in.case_walls[ci];
         if (c.kind == CaseKind::free || c.kind == CaseKind::step)
             references[ci].free_t_end =
-                free_vibration_duration(w.scene, c.r * w.scene.alpha(), FreeVibrationOptions{}.impacts);
+                compare::free_vibration_duration(w.scene, c.r * w.scene.alpha(), compare::FreeVibrationOptions{}.impacts);
         const double seconds = simulated_seconds(c, w, in.record_of(c), references[ci].free_t_end);
         for (std::size_t ei = 0; ei < engines.size(); ++ei) {
             if (!c.engine.empty() && c.engine != engines[ei]->name()) continue;
             const double dt = c.dt ? *c.dt : case_settings(c, *engines[ei]).dt;
-            tasks.push_back({ci, ei, task_cost(*engines[ei], seconds, dt)});
+            tasks.push_back({ci, ei, compare::task_cost(*engines[ei], seconds, dt)});
             references[ci].users.fetch_add(1);
         }
     }
@@ -500,7 +500,7 @@ std::vector<CaseTask> plan_tasks(const Suite& suite, const SuiteInputs& in,
 
 // The tasks' outputs into the results, in task order; the other set's (OtherSetRun) into results.other_set.
 void collect(const Suite& suite, const std::vector<const multibody::Engine*>& engines,
-             const std::vector<CaseTask>& tasks, std::vector<TaskOutput>& outputs, SuiteResults& results) {
+             const std::vector<compare::CaseTask>& tasks, std::vector<TaskOutput>& outputs, SuiteResults& results) {
     for (std::size_t ti = 0; ti < tasks.size(); ++ti) {
         TaskOutput& o = outputs[ti];
         const SuiteCase& c = suite.cases[tasks[ti].case_index];
@@ -535,7 +535,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
                                    suite.engine_settings.count(e->name()) ? suite.engine_settings.at(e->name())
                                                                           : e->default_settings()});
     // The reference's settings: the analytic backend's defaults with the suite's set, whatever the engine.
-    const EngineSettings reference_settings = multibody::analytic_settings(assumptions_of(suite.reference));
+    const multibody::EngineSettings reference_settings = multibody::analytic_settings(assumptions_of(suite.reference));
     const char* reference_set = to_string(suite.reference);
     results.engines.front().settings = reference_settings;  // the analytic model runs as the reference
     // The other set, last: an engine to the runner, apart in the results (collect).
@@ -549,9 +549,9 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
 
     const SuiteInputs in = read_inputs(suite, options.records_read);
     std::vector<CaseReference> references(suite.cases.size());
-    const std::vector<CaseTask> tasks = plan_tasks(suite, in, engines, references);
+    const std::vector<compare::CaseTask> tasks = plan_tasks(suite, in, engines, references);
     std::vector<TaskOutput> outputs(tasks.size());
-    for (const CaseTask& task : tasks)
+    for (const compare::CaseTask& task : tasks)
         require_task_steps({suite.cases[task.case_index], *in.case_walls[task.case_index], *engines[task.engine],
                             task.engine == 0, in.record_of(suite.cases[task.case_index]), false,
                             references[task.case_index], reference_settings, reference_set});
@@ -560,14 +560,14 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     // than they gain: a fork per simulation of this large process, for ODE's small share of the suite at its 1 ms step
     // (idle, 2 threads: `vssw check --bounds bounds/ci.toml` 1.21 s with them against 1.15 s without,
     // docs/measurements/speed.md "Speed"). ODE's tasks take turns instead (run_cases).
-    CaseRunOptions run_options;
+    compare::CaseRunOptions run_options;
     run_options.threads = options.threads;
     if (options.progress)
         run_options.progress = [&](long done, long total, const std::string& what) {
             options.progress(static_cast<int>(done), static_cast<int>(total), what);
         };
-    results.threads = run_cases(tasks, engines, run_options, [&](std::size_t ti) {
-        const CaseTask& task = tasks[ti];
+    results.threads = compare::run_cases(tasks, engines, run_options, [&](std::size_t ti) {
+        const compare::CaseTask& task = tasks[ti];
         const SuiteCase& c = suite.cases[task.case_index];
         const multibody::Engine& engine = *engines[task.engine];
         const double cpu_start = thread_cpu_seconds();
@@ -595,4 +595,4 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
     return results;
 }
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

@@ -21,7 +21,7 @@
 #include "compare/experiments.hpp"
 #include "multibody/engine.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 
 // The walls ----------------------------------------------------------------------------------------------------
 
@@ -65,7 +65,7 @@ struct SuiteCase {
     // history: how long the run goes on after the record [s] (it stops earlier at rest or overturning): the suite's
     // answer, kSuiteResponseTail, unless the suite file's part gives response_tail; a study's is kResponseTail
     // (compare/experiments.hpp says why two).
-    double response_tail = kSuiteResponseTail;
+    double response_tail = compare::kSuiteResponseTail;
 };
 
 struct Suite {
@@ -89,7 +89,7 @@ struct Suite {
 };
 
 // The shipped suites ("default", "full") are study files, studies/validation-<name>.toml, read by
-// study::read_suite (validation/suite_file.hpp): walls and cases are data, and a user can copy one and change it.
+// validation::read_suite (validation/suite_file.hpp): walls and cases are data, and a user can copy one and change it.
 // The cases whose ids are listed (each must exist: InputError naming the first that does not), with the walls and
 // records they need.
 Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids);
@@ -213,4 +213,4 @@ SuiteResults run_suite(const Suite& suite, const std::vector<std::string>& engin
 SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const multibody::Engine*>& engines,
                                     const RunOptions& options = {});
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

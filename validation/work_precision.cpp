@@ -20,7 +20,7 @@
 #include "multibody/host/analytic_engine.hpp"
 #include "validation/bench_spec.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -60,19 +60,19 @@ multibody::EngineSettings analytic_at(double rtol) {
 // |value / reference - 1| (compare_metric's error, unsigned); NaN unless both are finite and the reference is not 0.
 double relative_error(double value, double reference) {
     if (!std::isfinite(value) || !std::isfinite(reference) || reference == 0.0) return kNaN;
-    return std::abs(compare_metric(reference, value).rel_error);
+    return std::abs(compare::compare_metric(reference, value).rel_error);
 }
 
 // The peak_rotation [alpha] of a run from rest under the record, as the report and a study measure it
 // (compare/response.hpp).
 double peak_over_alpha(const multibody::Trajectory& traj, const multibody::WallScene& scene) {
-    return response_of(traj, scene).peak / scene.alpha();
+    return compare::response_of(traj, scene).peak / scene.alpha();
 }
 
 multibody::Excitation record_excitation(const std::string& record_path) {
     multibody::Excitation e;
     e.horizontal = read_record(record_path).scaled(kRecordScale);
-    e.t_end = e.horizontal.duration() + kResponseTail;
+    e.t_end = e.horizontal.duration() + compare::kResponseTail;
     e.motion_only = true;  // the peak is read from theta1 alone
     return e;
 }
@@ -98,9 +98,9 @@ Problem prepare_problem(const std::string& name, const BenchOptions& options) {
         p.record = record_excitation(options.record_path);
         p.refs["peak"] = peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol)), p.scene);
     } else {
-        FreeVibrationOptions free;
+        compare::FreeVibrationOptions free;
         free.r = kRelease;
-        const FreeVibrationResult ref = run_free_vibration(analytic, analytic_at(kReferenceRtol), p.scene, free);
+        const compare::FreeVibrationResult ref = compare::run_free_vibration(analytic, analytic_at(kReferenceRtol), p.scene, free);
         p.refs["period"] = ref.period.value_or(kNaN);
         p.refs["restitution"] = p.scene.is_vssw() ? restitution_whole_mechanism(*p.scene.vssw)
                                                   : housner_restitution(p.scene.parapet->alpha);
@@ -112,13 +112,13 @@ Problem prepare_problem(const std::string& name, const BenchOptions& options) {
 // One experiment at one setting: the metric values by name (NaN when not measured).
 std::map<std::string, double> run_problem(const Problem& problem, const multibody::Engine& engine,
                                           const multibody::EngineSettings& settings) {
-    if (problem.name == "threshold") return {{"threshold", find_threshold(engine, settings, problem.scene).value_g}};
+    if (problem.name == "threshold") return {{"threshold", compare::find_threshold(engine, settings, problem.scene).value_g}};
     if (problem.name == "record")
         return {{"peak",
                  peak_over_alpha(engine.simulate(problem.scene, problem.record, settings), problem.scene)}};
-    FreeVibrationOptions free;
+    compare::FreeVibrationOptions free;
     free.r = kRelease;
-    const FreeVibrationResult run = run_free_vibration(engine, settings, problem.scene, free);
+    const compare::FreeVibrationResult run = compare::run_free_vibration(engine, settings, problem.scene, free);
     return {{"period", run.period.value_or(kNaN)}, {"restitution", run.restitution.value_or(kNaN)}};
 }
 
@@ -202,9 +202,9 @@ std::vector<std::string> bench_problem_metrics(const std::string& problem) {
 }
 
 std::optional<double> bench_target(const std::string& metric) {
-    if (metric == "threshold") return kThresholdTarget;
-    if (metric == "period") return kPeriodTarget;
-    if (metric == "restitution") return kRestitutionTarget;
+    if (metric == "threshold") return compare::kThresholdTarget;
+    if (metric == "period") return compare::kPeriodTarget;
+    if (metric == "restitution") return compare::kRestitutionTarget;
     return std::nullopt;
 }
 
@@ -302,4 +302,4 @@ std::vector<Cheapest> cheapest_within_targets(const std::vector<BenchPoint>& poi
     return out;
 }
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

@@ -20,7 +20,7 @@
 
 #include "multibody/engine.hpp"
 
-namespace vssw::compare {
+namespace vssw::validation {
 
 // The analytic reference's relative tolerance: two decades below the tightest point of the analytic sweep, so that
 // the sweep's own error is what is measured, not the reference's.
@@ -103,4 +103,4 @@ struct Cheapest {
 std::vector<Cheapest> cheapest_within_targets(const std::vector<BenchPoint>& points,
                                               const std::vector<std::string>& engines);
 
-}  // namespace vssw::compare
+}  // namespace vssw::validation

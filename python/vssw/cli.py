@@ -41,7 +41,7 @@ __all__ = ["wall", "free", "history", "compare", "study", "run", "Error", "Input
 
 _EXCEPTIONS = {_core.EXIT_BAD_INPUT: InputError, _core.EXIT_SIMULATION_FAILED: SimulationError,
                _core.EXIT_OUT_OF_BOUNDS: BoundsError}
-# The prefixes of the program's error line (apps/cli.cpp); the exception's message is the line without them.
+# The prefixes of the program's error line (cli/cli.cpp); the exception's message is the line without them.
 _PREFIXES = ("vssw: error: ", "vssw: simulation failed: ", "vssw: check failed: ")
 
 

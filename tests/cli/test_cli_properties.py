@@ -1,4 +1,4 @@
-"""Property test of the vssw program's promise for input (docs/guide/program.md "The `vssw` program", "Bad input"; apps/cli.hpp's
+"""Property test of the vssw program's promise for input (docs/guide/program.md "The `vssw` program", "Bad input"; cli/cli.hpp's
 exit codes), on the real built program run as a subprocess so that a signal or a hang is seen.
 
 Every command is run on random option values from a seeded generator: valid values, values at the edges of their

@@ -19,7 +19,7 @@ TOOLS = {  # how a text names the program -> its Debian package
     r"\bheaptrack\b": "heaptrack",
     r"\bmultitime\b": None,
 }
-SCANNED = ["docs", "analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "apps",
+SCANNED = ["docs", "analytic", "io", "multibody", "compare", "study", "stress", "validation", "motions", "cli",
            "python", "bench", "tests", "scripts", "cmake", "bounds", "studies"]
 SUFFIXES = {".md", ".cpp", ".hpp", ".h", ".py", ".sh", ".cmake", ".toml", ".txt"}
 

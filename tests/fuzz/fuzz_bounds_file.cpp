@@ -25,7 +25,7 @@ namespace {
     std::abort();
 }
 
-void check_bounds(const vssw::compare::Bounds& b, const char* format) {
+void check_bounds(const vssw::validation::Bounds& b, const char* format) {
     if (b.analytic.empty() && b.engines.empty() && b.stress.empty() && b.earthquake.empty())
         finding(format, "bounds without an entry");
     for (const auto& q : b.earthquake) {
@@ -55,7 +55,7 @@ void check_bounds(const vssw::compare::Bounds& b, const char* format) {
 
 void parse(const std::string& text, const char* format) {
     try {
-        check_bounds(vssw::cli::parse_bounds(text, format, "fuzz-input"), format);
+        check_bounds(vssw::validation::parse_bounds(text, format, "fuzz-input"), format);
     } catch (const vssw::InputError&) {
         // The documented refusal of a bad file: a normal outcome.
     } catch (const std::exception& e) {

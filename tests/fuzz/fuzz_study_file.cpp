@@ -75,7 +75,7 @@ void check_engines(const std::vector<vssw::study::EngineSpec>& engines, const ch
 
 // The metric's entry; a name the catalogue does not know is a finding here (the reader must have refused it), not the
 // InputError metric_info throws, which parse() would take for a normal refusal.
-const vssw::study::MetricInfo& known_metric(const std::string& name, const char* format) {
+const vssw::compare::MetricInfo& known_metric(const std::string& name, const char* format) {
     for (const auto& m : vssw::study::metric_catalog())
         if (name == m.name) return m;
     finding(format, "a metric the catalogue does not know");
@@ -109,7 +109,7 @@ void parse(const std::string& text, const char* format) {
     const std::string name = std::string("fuzz-input.") + format;
     bool parsed = false;
     try {
-        const nlohmann::json doc = vssw::study::parse_config(text, format, name, "study file");
+        const nlohmann::json doc = vssw::io::parse_config(text, format, name, "study file");
         parsed = true;
         check_study(vssw::study::study_from_json(doc, name, "."), format);
     } catch (const vssw::InputError&) {

@@ -1,0 +1,88 @@
+#include "cli/wall_output.hpp"
+
+#include <ostream>
+
+#include "analytic/closed_forms.hpp"
+#include "cli/table.hpp"
+
+namespace vssw::cli {
+
+WallFigures wall_figures(const WallOptions& options) {
+    const VsswGeometry w = vssw_geometry(options);
+    const ParapetGeometry pw = parapet_geometry(options);
+    WallFigures f{};
+    f.inputs = options;
+    f.alpha1 = w.alpha1;
+    f.alpha2 = w.alpha2;
+    f.R1 = w.R1;
+    f.R2 = w.R2;
+    f.threshold_g = eq12_threshold(w) / w.g;
+    f.restitution = eq19_restitution(w);
+    f.A = eq21_A(w);
+    f.P = eq21_P(w);
+    f.theta_lim = eq26_limit_rotation(w);
+    f.period_half_A = eq22_period(w, f.A / 2.0);
+    f.collapse_angle = make_vssw_model(w, Kinematics::paper)->collapse_angle();
+    f.reference_velocity = eq24_reference_velocity(w);
+    f.threshold_ratio_vssw_over_parapet = eq12_threshold(w) / eq17_parapet_threshold(pw);
+    f.optimal_hinge_ratio = eq15_optimal_hinge_ratio(w.xi);
+    f.parapet = {pw.alpha, pw.R, eq17_parapet_threshold(pw) / pw.g, housner_restitution(pw.alpha),
+                 housner_p(pw.R, pw.g)};
+    return f;
+}
+
+io::Json to_json(const WallFigures& f) {
+    io::Json j = wall_inputs_json(f.inputs, WallKind::vssw);
+    j["alpha1"] = f.alpha1;
+    j["alpha2"] = f.alpha2;
+    j["R1"] = f.R1;
+    j["R2"] = f.R2;
+    j["threshold_g"] = f.threshold_g;
+    j["restitution"] = f.restitution;
+    j["A"] = f.A;
+    j["P"] = f.P;
+    j["theta_lim"] = io::or_null(f.theta_lim);
+    j["period_half_A"] = f.period_half_A;
+    j["collapse_angle"] = f.collapse_angle;
+    j["reference_velocity"] = f.reference_velocity;
+    j["threshold_ratio_vssw_over_parapet"] = f.threshold_ratio_vssw_over_parapet;
+    j["optimal_hinge_ratio"] = f.optimal_hinge_ratio;
+    j["parapet"] = {{"alpha", f.parapet.alpha},
+                    {"R", f.parapet.R},
+                    {"threshold_g", f.parapet.threshold_g},
+                    {"restitution", f.parapet.restitution},
+                    {"p", f.parapet.p}};
+    return j;
+}
+
+void print_wall(std::ostream& out, const WallFigures& f) {
+    const bool has_overburden = f.inputs.xi != 0.0;
+    Table(describe_wall(f.inputs, WallKind::vssw))
+        .add("alpha1, alpha2", io::num(f.alpha1) + ", " + io::num(f.alpha2), "rad", "atan(b/h1), atan(b/h2)")
+        .add("R1, R2", io::num(f.R1) + ", " + io::num(f.R2), "m", "half-diagonals")
+        .add("threshold acceleration", io::num(f.threshold_g), "g", "Eq. (12)")
+        .add("coefficient of restitution", io::num(f.restitution), "", "Eq. (19)")
+        .add("A", io::num(f.A), "rad", has_overburden ? "Eq. (21a), linearised, ignores N" : "Eq. (21a), linearised")
+        .add("P", io::num(f.P), "1/s", has_overburden ? "Eq. (21b), linearised, ignores N" : "Eq. (21b), linearised")
+        .add("period from theta10 = A/2", io::num(f.period_half_A), "s",
+             has_overburden ? "Eq. (22), ignores N" : "Eq. (22)")
+        .add("roller limit theta1,lim", num_or(f.theta_lim, "none"), f.theta_lim ? "rad" : "",
+             f.theta_lim ? "Eq. (26)" : "Eq. (26) needs the hinge above mid-height")
+        .add("collapse angle (paper model)", io::num(f.collapse_angle), "rad",
+             f.collapse_angle < (1.0 - 1e-5) * f.theta_lim.value_or(1.5707963267948966)
+                 ? "where Eq. (3) locks (cos A2 = 0), before Eq. (26)"  // margin: kRollerLimitMargin is 1e-6
+                 : (f.theta_lim ? "just below Eq. (26)" : "pi/2: the lower body lies on its face"))
+        .add("reference velocity", io::num(f.reference_velocity), "rad/s", "Eq. (24)")
+        .add("optimal hinge ratio h1/h", io::num(f.optimal_hinge_ratio), "", "Eq. (15) at this xi")
+        .add("threshold VSSW / parapet", io::num(f.threshold_ratio_vssw_over_parapet), "", "Eq. (12) / Eq. (17)")
+        .print(out);
+    Table("Parapet of the same height, thickness and xi (Housner 1963)")
+        .add("alpha", io::num(f.parapet.alpha), "rad", "atan(b/h)")
+        .add("R", io::num(f.parapet.R), "m", "half-diagonal")
+        .add("threshold acceleration", io::num(f.parapet.threshold_g), "g", "Eq. (17)")
+        .add("coefficient of restitution", io::num(f.parapet.restitution), "", "1 - 3/2 sin^2(alpha)")
+        .add("frequency parameter p", io::num(f.parapet.p), "1/s", "sqrt(3g / 4R)")
+        .print(out);
+}
+
+}  // namespace vssw::cli

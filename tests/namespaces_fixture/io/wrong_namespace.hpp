@@ -1,0 +1,5 @@
+#pragma once
+// A file of io/ in the namespace of study/: refused.
+namespace vssw::study {
+int helper();
+}  // namespace vssw::study
