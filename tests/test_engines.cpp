@@ -338,6 +338,25 @@ TEST(KnownDifferences, EachSkipsACrossEngineTestOfABackend) {
                   "bulet/VsswRestitution: no backend is named bulet", "bullet/VsswRestitution: listed twice"}));
 }
 
+// The trait kCannotMoveSupports says what the adapter does: an engine declaring it refuses moving_supports = 1 (or has
+// no such setting), one not declaring it accepts it, so that the trait neither hides tests an engine could pass nor
+// lets them run on an engine that cannot.
+TEST(KnownDifferences, CannotMoveSupportsIsWhatTheAdapterSays) {
+    for (const std::string& name : multibody::available_engines()) {
+        if (name == "analytic") continue;  // no supports to move: its tests skip by their own rule
+        const auto engine = multibody::make_engine(name);
+        multibody::EngineSettings moving = engine->default_settings();
+        moving.knobs["moving_supports"] = 1.0;
+        bool refused = false;
+        try {
+            engine->check_settings(moving);
+        } catch (const InputError&) {
+            refused = true;
+        }
+        EXPECT_EQ(refused, testing::known_difference(name, testing::kCannotMoveSupports).has_value()) << name;
+    }
+}
+
 // A step that would make a run take more than kMaxStepsPerRun steps is bad input, refused at once naming dt: --dt
 // 1e-9 once ran for hours (3e9 steps per threshold trial) with no word.
 TEST(EngineSteps, AStepTooSmallForTheRunIsRefusedAtOnceNamingIt) {
