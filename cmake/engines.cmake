@@ -75,8 +75,9 @@ function(vssw_engine)
   vssw_engine_backend(NAME ${E_NAME} PLUGIN ${E_NAME} DISPLAY ${E_DISPLAY} ${E_UNPARSED_ARGUMENTS})
 endfunction()
 
-# vssw_engine_tests(NAME SOURCES...): an engine folder's own tests (paths from multibody/), built into
-# vssw_engine_tests by tests/CMakeLists.txt beside the tests every engine runs.
+# vssw_engine_tests(NAME SOURCES...): an engine folder's own tests and its known differences (paths from its folder:
+# tests/test_<name>.cpp, tests/known_differences.cpp), built into vssw_engine_tests by tests/CMakeLists.txt beside the
+# tests every engine runs.
 function(vssw_engine_tests name)
   list(TRANSFORM ARGN PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/${name}/)
   set_property(GLOBAL APPEND PROPERTY VSSW_ENGINE_TEST_SOURCES ${ARGN})

@@ -1,17 +1,14 @@
 // The cross-engine suite: the same tests for every backend compiled in (the analytic model itself, then each
 // engine), each instance its own CTest entry. Accuracy targets are the project's (compare/targets.hpp): threshold and
 // period within 0.5 %, restitution within 2 % of the analytic model with exact kinematics. A metric an engine cannot
-// reach is skipped explicitly with the measured value and the reason (kKnownDifferences), never loosened per case.
+// reach is skipped explicitly with the measured value and the reason, never loosened per case: each engine declares
+// its known differences in its folder (multibody/<engine>/tests/known_differences.cpp, tests/known_differences.hpp).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
-#include <map>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "analytic/closed_forms.hpp"
@@ -25,15 +22,20 @@
 #include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/kit/run_monitor.hpp"
-#include "tests/engine_available.hpp"
-#include "tests/refused_knobs.hpp"
-#include "tests/table1.hpp"
+#include "tests/engine_scenes.hpp"
+#include "tests/known_differences.hpp"
 
 namespace vssw {
 namespace {
 
-using testing::engine_available;
+using testing::analytic_reference;
+using testing::expect_whole_mechanism_restitution;
+using testing::fig6_parapet;
+using testing::fig6_vssw;
+using testing::first_impact;
+using testing::fmt_scene;
 using testing::table1;
+using testing::table1_specimen11;
 
 using multibody::EngineFailure;
 using multibody::WallScene;
@@ -42,119 +44,36 @@ using compare::kPeriodTarget;  // the project's targets (compare/targets.hpp)
 using compare::kRestitutionTarget;
 using compare::kThresholdTarget;
 
-// Differences measured and explained in docs/engines.md ("Bullet"), keyed by engine and test.
-const std::map<std::string, std::string> kKnownDifferences = {
-    {"simbody/MovingSupports",
-     "Simbody's routes apply the ground motion as pseudo-forces only (the compliant route's integrator could follow a "
-     "prescribed ground, not written; the rigid route's stepper ignores prescribed motion: see simbody-rigid)."},
-    {"simbody-rigid/MovingSupports",
-     "Simbody's SemiExplicitEuler stepper ignores prescribed motion, so the adapter refuses moving supports; a ground "
-     "on a heavy Slider whose speed was reset each step was tried and failed (the parapet sank 0.01 m in a threshold "
-     "trial; the VSSW's pulse peak came out 0.41 of the pseudo-forces'). Pseudo-forces only."},
-    {"siconos/MovingSupports",
-     "The Siconos adapter applies the ground motion as pseudo-forces only: a moving ground needs the contacts' gaps "
-     "as functions of time (rheonomous relations), not written (multibody/siconos/siconos_engine.cpp)."},
-    {"siconos/QuarterPeriodErrorFalls",
-     "Siconos's first impact at 4 ms is nearer the analytic one than at 2 ms (period error -4.7e-4 against -5.3e-4 on "
-     "the Fig. 6 wall): Moreau-Jean places a landing within its step, and at 4 ms that error partly cancels the "
-     "flight's. From 2 ms down it falls (-5.4e-4, -2.4e-4, -1.5e-4, -3.6e-5 at 2, 1, 0.5, 0.2 ms), held by "
-     "Siconos.QuarterPeriodErrorFallsFromTwoMillisecondsDown."},
-    {"mujoco/MovingSupports",
-     "The MuJoCo adapter applies the ground motion as pseudo-forces only (gravity's x component): MuJoCo 2.2.2 allows "
-     "planes only in static bodies, and a mocap ground moves without a velocity its contacts would see "
-     "(docs/engines.md \"MuJoCo\")."},
-    {"analytic/VsswRestitution",
+// The analytic backend's own known difference: it is built into the program (multibody/host/), not an engine folder.
+[[maybe_unused]] const bool analytic_registered = testing::register_known_differences({
+    {"analytic", "VsswRestitution",
      "The analytic model's default is the set 'mechanism', whose impact is the whole mechanism's plastic one (0.8252 on "
      "the Fig. 6 wall), not Eq. (19) (0.9508); the set 'paper' gives Eq. (19), held by "
      "CliFree.ImpactsFollowEq19AndPeaksDecrease."},
-    {"mujoco/VsswRestitution",
-     "MuJoCo's solver resolves the landing with the new pivot, the hinge corners and the roller at once (soft "
-     "contacts at 2 dt, impedance 0.99-0.999): the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), "
-     "not Eq. (19) (0.9508). Measured on the Fig. 6 wall at 1 ms: 0.8299, -12.7 % against Eq. (19), +0.58 % against "
-     "the whole mechanism (docs/engines.md \"MuJoCo\")."},
-    {"bullet/VsswRestitution",
-     "Bullet resolves the impact with the new pivot, the closing hinge and the roller in one solve, perfectly "
-     "plastic: the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which "
-     "assumes no impulse at the roller. Measured on the Fig. 6 wall at 1 ms, 10 iterations: 0.820 "
-     "(-13.8 % against Eq. (19), -0.6 % against the whole mechanism; -0.02 % at 0.2 ms), unchanged by iterations "
-     "10 to 200 (docs/engines.md \"Bullet\")."},
-    {"ode/VsswRestitution",
-     "ODE's LCP resolves the impact with the new pivot, the closing hinge and the roller at once, perfectly plastic: "
-     "the plastic impact of the whole new mechanism, (V+' M V-)/(V+' M V+) = 0.8252 on the Fig. 6 wall, whereas "
-     "Eq. (19) assumes no impulse at the roller (0.9508). Measured: 0.8256 / 0.8250 / 0.8247 at 1 / 0.2 / 0.05 ms "
-     "(-13.2 %), converged in the step and unchanged by erp, margin, surface layer and solver; within 0.3 % of the "
-     "mechanism's plastic impact on Table 1 #1, #7, #15 at xi 0, 0.1, 0.5 (multibody/ode/ode_engine.cpp)."},
-    {"simbody/VsswRestitution",
-     "Simbody's compliant contacts (Hunt-Crossley, dissipation 1000 s/m, the value that gives the parapet Housner's "
-     "restitution to 0.03 %) absorb the landing at the new pivot, the hinge and the roller together: the whole new "
-     "mechanism's plastic impact (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which assumes no impulse at the "
-     "roller. Measured on the Fig. 6 wall: 0.8287, -12.8 % against Eq. (19), +0.42 % against the whole mechanism "
-     "(multibody/simbody/simbody_compliant.cpp)."},
-    {"siconos/VsswRestitution",
-     "Siconos's Moreau-Jean step resolves the landing with Newton's law, e = 0, at every contact that closes (new "
-     "pivot, hinge corner, roller guide) in one frictional contact problem: the plastic impact of the whole new "
-     "mechanism (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured "
-     "on the Fig. 6 wall: 0.8242 / 0.8246 at 1 / 0.2 ms, -13.3 % against Eq. (19), -0.12 % / -0.07 % against the "
-     "whole mechanism; no choice of Newton coefficients per contact reaches Eq. (19) (docs/engines.md \"Siconos\")."},
-    {"box2d/VsswRestitution",
-     "Box2D's sequential impulses resolve the landing with every contact found at once (new pivot, closing hinge, "
-     "roller guide), restitution 0: the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), not "
-     "Eq. (19) (0.9508), which assumes no impulse at the roller. Measured on the Fig. 6 wall: 0.8261 / 0.8276 / "
-     "0.8252 at 1 / 0.5 / 0.2 ms, -13.1 % against Eq. (19), +0.11 / +0.30 / +0.01 % against the whole mechanism "
-     "(docs/engines.md \"Box2D\")."},
-    {"dart/VsswRestitution",
-     "DART's boxed LCP (Dantzig) resolves the landing with the new pivot, the closing hinge and the roller's sphere "
-     "on its guide at once, restitution 0: the plastic impact of the whole new mechanism (0.8252 on the Fig. 6 wall), "
-     "not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured on the Fig. 6 wall: 0.8262 / 0.8275 / "
-     "0.8258 at 1 / 0.5 / 0.2 ms, -13.1 % against Eq. (19), +0.13 / +0.28 / +0.08 % against the whole mechanism "
-     "(docs/engines.md \"DART\")."},
-    {"simbody-rigid/VsswRestitution",
-     "Simbody's SemiExplicitEulerTimeStepper resolves the impact with every proximal contact at once (new pivot, "
-     "closing hinge and roller), restitution 0: the plastic impact of the whole new mechanism (0.8252 on the Fig. 6 "
-     "wall), not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured on the Fig. 6 wall with the "
-     "default constraint_tol 1e-6: 0.8281 / 0.8259 / 0.8252 at 0.5 / 0.2 / 0.1 ms, -12.9 % against Eq. (19), "
-     "converging on the whole-mechanism impact (multibody/simbody/simbody_engine.cpp)."},
-};
+});
+
+// The suite's name as GoogleTest registers it (INSTANTIATE_TEST_SUITE_P's prefix, then the fixture).
+constexpr const char* kCrossEngineSuite = "Engines/CrossEngine";
 
 class CrossEngine : public ::testing::TestWithParam<std::string> {
 protected:
+    // Skips the test when its backend declares a known difference for it (by the test's name, "VsswRestitution").
     void SetUp() override {
         engine_ = multibody::make_engine(GetParam());
         settings_ = engine_->default_settings();
+        const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        if (const auto reason = testing::known_difference(GetParam(), name.substr(0, name.find('/'))))
+            GTEST_SKIP() << *reason;
     }
-    // Skips the calling test when its engine has a documented difference; the caller returns if IsSkipped().
-    void skip_if_known(const std::string& test) {
-        const auto it = kKnownDifferences.find(GetParam() + "/" + test);
-        if (it != kKnownDifferences.end()) GTEST_SKIP() << it->second;
+    // Skips the calling test when its backend cannot move its supports (the trait kCannotMoveSupports); the caller
+    // returns if IsSkipped().
+    void skip_without_moving_supports() {
+        if (const auto reason = testing::known_difference(GetParam(), testing::kCannotMoveSupports))
+            GTEST_SKIP() << *reason;
     }
     std::unique_ptr<multibody::Engine> engine_;
     multibody::EngineSettings settings_;
 };
-
-std::unique_ptr<RockingModel> analytic_reference(const WallScene& scene) {
-    return vssw::analytic_model(scene, Kinematics::exact);
-}
-
-std::string fmt_scene(const WallScene& scene, double r) {
-    return (scene.is_vssw() ? "VSSW h1/h " + std::to_string(scene.vssw->hinge_ratio()) + " xi " +
-                                  std::to_string(scene.vssw->xi)
-                            : std::string("parapet")) +
-           " r " + std::to_string(r);
-}
-
-WallScene fig6_vssw() { return WallScene::of(make_vssw(4.0, 0.4, 0.7)); }
-WallScene fig6_parapet() { return WallScene::of(make_parapet(4.0, 0.4)); }
-WallScene table1_specimen11(double xi) { return WallScene::of(make_vssw(table1(11), xi)); }
-
-// Time of the first impact after a release at r alpha, from the engine's trajectory (the metric code's definition).
-double first_impact(const multibody::Engine& engine, multibody::EngineSettings settings, const WallScene& scene,
-                    double r) {
-    multibody::Excitation ex;
-    ex.theta0 = r * scene.alpha();
-    ex.t_end = 1.2 * free_vibration(*analytic_reference(scene), ex.theta0).impacts.at(0).t;
-    const auto q = compare::quarter_period(engine.simulate(scene, ex, settings));
-    return q.value_or(NAN);
-}
 
 TEST_P(CrossEngine, QuarterPeriodMatchesTheAnalyticModel) {
     for (const WallScene& scene : {fig6_vssw(), fig6_parapet(), table1_specimen11(0.1)}) {
@@ -167,8 +86,6 @@ TEST_P(CrossEngine, QuarterPeriodMatchesTheAnalyticModel) {
 }
 
 TEST_P(CrossEngine, QuarterPeriodErrorFallsAsTheStepFalls) {
-    skip_if_known("QuarterPeriodErrorFalls");
-    if (IsSkipped()) return;
     const WallScene scene = fig6_vssw();
     const double exact = free_vibration(*analytic_reference(scene), 0.5 * scene.alpha()).impacts.at(0).t;
     double previous = INFINITY;
@@ -206,25 +123,13 @@ TEST_P(CrossEngine, ParapetRestitutionIsHousners) {
 }
 
 TEST_P(CrossEngine, VsswRestitution) {
-    skip_if_known("VsswRestitution");
-    if (IsSkipped()) return;
     const WallScene scene = fig6_vssw();
     const compare::FreeVibrationResult r = compare::run_free_vibration(*engine_, settings_, scene);
     ASSERT_TRUE(r.restitution.has_value());
     EXPECT_NEAR(*r.restitution / eq19_restitution(*scene.vssw) - 1.0, 0.0, kRestitutionTarget);
 }
 
-// An engine resolves a landing with every constraint of the new mechanism at once (base pivot, hinge, roller): its
-// restitution should be the whole mechanism's plastic impact (analytic/closed_forms.hpp), not Eq. (19).
-void expect_whole_mechanism_restitution(const multibody::Engine& engine, const multibody::EngineSettings& settings,
-                                        const WallScene& scene) {
-    const compare::FreeVibrationResult r = compare::run_free_vibration(engine, settings, scene);
-    ASSERT_TRUE(r.restitution.has_value());
-    EXPECT_NEAR(*r.restitution / restitution_whole_mechanism(*scene.vssw) - 1.0, 0.0, kRestitutionTarget);
-}
-
 TEST_P(CrossEngine, Fig6VsswRestitutionIsTheWholeMechanismImpact) {
-    if (IsSkipped()) return;
     expect_whole_mechanism_restitution(*engine_, settings_, fig6_vssw());
 }
 
@@ -319,7 +224,7 @@ void expect_peaks_agree(const multibody::Engine& engine, const multibody::Engine
 
 TEST_P(CrossEngine, ParapetMovingSupportsAgreeWithPseudoForces) {
     if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
-    skip_if_known("MovingSupports");
+    skip_without_moving_supports();
     if (IsSkipped()) return;
     expect_thresholds_agree(*engine_, settings_, fig6_parapet());
     expect_peaks_agree(*engine_, settings_, fig6_parapet(), 1.6, 0.5);
@@ -327,14 +232,14 @@ TEST_P(CrossEngine, ParapetMovingSupportsAgreeWithPseudoForces) {
 
 TEST_P(CrossEngine, VsswMovingSupportsGiveTheSameThreshold) {
     if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
-    skip_if_known("MovingSupports");
+    skip_without_moving_supports();
     if (IsSkipped()) return;
     expect_thresholds_agree(*engine_, settings_, table1_specimen11(0.1));
 }
 
 TEST_P(CrossEngine, VsswMovingSupportsGiveTheSamePeakResponse) {
     if (GetParam() == "analytic") GTEST_SKIP() << "the analytic model has no supports to move";
-    skip_if_known("MovingSupports");  // an engine without moving supports at all
+    skip_without_moving_supports();
     if (IsSkipped()) return;
     expect_peaks_agree(*engine_, settings_, table1_specimen11(0.1), 1.25, 0.25);
 }
@@ -387,6 +292,71 @@ std::string engine_name(const ::testing::TestParamInfo<std::string>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Engines, CrossEngine, ::testing::ValuesIn(multibody::available_engines()), engine_name);
 
+// The cross-engine tests' names without their backend ("VsswRestitution"), as GoogleTest registered them.
+std::vector<std::string> cross_engine_tests() {
+    std::vector<std::string> names;
+    const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+    for (int i = 0; i < unit.total_test_suite_count(); ++i) {
+        const ::testing::TestSuite& suite = *unit.GetTestSuite(i);
+        if (std::string(suite.name()) != kCrossEngineSuite) continue;
+        for (int j = 0; j < suite.total_test_count(); ++j) {
+            const std::string name = suite.GetTestInfo(j)->name();
+            names.push_back(name.substr(0, name.find('/')));
+        }
+    }
+    return names;
+}
+
+// Every backend this project has an adapter for, built into this one or not: a known difference of an engine this
+// build lacks is still checked.
+std::vector<std::string> every_backend() {
+    std::vector<std::string> names = multibody::available_engines();
+    for (const std::string& name : multibody::missing_engines()) names.push_back(name);
+    return names;
+}
+
+// A known difference skips a test of a backend: one naming a test renamed or removed, or a backend that is not one,
+// skips nothing and hides that it does (a stale skip), and one listed twice says two things.
+TEST(KnownDifferences, EachSkipsACrossEngineTestOfABackend) {
+    const std::vector<std::string> tests = cross_engine_tests();
+    ASSERT_FALSE(tests.empty());
+    ASSERT_FALSE(testing::known_differences().empty());  // the engine folders' registrations ran
+    const std::vector<std::string> stale =
+        testing::stale_known_differences(testing::known_differences(), every_backend(), tests);
+    EXPECT_TRUE(stale.empty()) << ::testing::PrintToString(stale);
+    // The check names each kind of stale entry, and passes the trait and a real test.
+    const std::vector<testing::KnownDifference> made_up = {
+        {"bullet", "VsswRestitution", "real"},
+        {"bullet", testing::kCannotMoveSupports, "the trait"},
+        {"bullet", "VsswRestitutionRenamed", "a test that is not one"},
+        {"bulet", "VsswRestitution", "a backend that is not one"},
+        {"bullet", "VsswRestitution", "listed twice"},
+    };
+    EXPECT_EQ(testing::stale_known_differences(made_up, every_backend(), tests),
+              (std::vector<std::string>{
+                  "bullet/VsswRestitutionRenamed: no cross-engine test is named VsswRestitutionRenamed",
+                  "bulet/VsswRestitution: no backend is named bulet", "bullet/VsswRestitution: listed twice"}));
+}
+
+// The trait kCannotMoveSupports says what the adapter does: an engine declaring it refuses moving_supports = 1 (or has
+// no such setting), one not declaring it accepts it, so that the trait neither hides tests an engine could pass nor
+// lets them run on an engine that cannot.
+TEST(KnownDifferences, CannotMoveSupportsIsWhatTheAdapterSays) {
+    for (const std::string& name : multibody::available_engines()) {
+        if (name == "analytic") continue;  // no supports to move: its tests skip by their own rule
+        const auto engine = multibody::make_engine(name);
+        multibody::EngineSettings moving = engine->default_settings();
+        moving.knobs["moving_supports"] = 1.0;
+        bool refused = false;
+        try {
+            engine->check_settings(moving);
+        } catch (const InputError&) {
+            refused = true;
+        }
+        EXPECT_EQ(refused, testing::known_difference(name, testing::kCannotMoveSupports).has_value()) << name;
+    }
+}
+
 // A step that would make a run take more than kMaxStepsPerRun steps is bad input, refused at once naming dt: --dt
 // 1e-9 once ran for hours (3e9 steps per threshold trial) with no word.
 TEST(EngineSteps, AStepTooSmallForTheRunIsRefusedAtOnceNamingIt) {
@@ -406,169 +376,6 @@ TEST(EngineSteps, AStepTooSmallForTheRunIsRefusedAtOnceNamingIt) {
                 << name << ": " << e.what();
         }
     }
-}
-
-// Bullet's restitution once missed the whole-mechanism impact by 5-6 % on the Table 1 walls at xi 0.5 and did not
-// settle as the step fell on Fig. 6 (+0.2, -2.3, -2.3, -0.4 % at 1, 0.5, 0.2, 0.1 ms): contacts found a step late and
-// pushed out through the velocity (docs/engines.md "Bullet"). Held here on those walls and steps.
-TEST(BulletRestitution, Table1WallsUnderHeavyOverburdenTakeTheWholeMechanismImpact) {
-    if (!engine_available("bullet")) GTEST_SKIP() << "Bullet is not compiled in";
-    const auto engine = multibody::make_engine("bullet");
-    for (int number : {1, 14, 15}) {
-        SCOPED_TRACE("Table 1 #" + std::to_string(number) + ", xi 0.5");
-        expect_whole_mechanism_restitution(*engine, engine->default_settings(),
-                                           WallScene::of(make_vssw(table1(number), 0.5)));
-    }
-}
-
-TEST(BulletRestitution, Fig6WallTakesTheWholeMechanismImpactAtEveryStep) {
-    if (!engine_available("bullet")) GTEST_SKIP() << "Bullet is not compiled in";
-    const auto engine = multibody::make_engine("bullet");
-    for (double dt : {1e-3, 5e-4, 2e-4}) {
-        SCOPED_TRACE("dt " + std::to_string(dt));
-        multibody::EngineSettings settings = engine->default_settings();
-        settings.dt = dt;
-        expect_whole_mechanism_restitution(*engine, settings, fig6_vssw());
-    }
-}
-
-// Siconos (multibody/siconos/siconos_engine.cpp): the step convergence the cross-engine test cannot hold at 4 ms (a
-// known difference above), the per-contact Newton coefficients, and a contact problem left unsolved reported as such.
-TEST(Siconos, QuarterPeriodErrorFallsFromTwoMillisecondsDown) {
-    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
-    const auto engine = multibody::make_engine("siconos");
-    const WallScene scene = fig6_vssw();
-    const double exact = free_vibration(*analytic_reference(scene), 0.5 * scene.alpha()).impacts.at(0).t;
-    double previous = INFINITY;
-    for (double dt : {2e-3, 1e-3, 5e-4, 2e-4}) {
-        multibody::EngineSettings s = engine->default_settings();
-        s.dt = dt;
-        const double err = std::abs(first_impact(*engine, s, scene, 0.5) / exact - 1.0);
-        EXPECT_LT(err, previous) << "dt " << dt;
-        previous = err;
-    }
-}
-
-// The coefficients reach their contacts: an elastic roller guide gives back some of the landing's loss, an elastic
-// hinge corner bounces the blocks apart and the rocking keeps less (measured on the Fig. 6 wall at 1 ms: 0.850 and
-// 0.723 against 0.824 with every contact plastic).
-TEST(Siconos, NewtonCoefficientsPerContactChangeTheLanding) {
-    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
-    const auto engine = multibody::make_engine("siconos");
-    auto restitution_with = [&](const std::string& knob, double e) {
-        multibody::EngineSettings s = engine->default_settings();
-        if (!knob.empty()) s.knobs[knob] = e;
-        const auto r = compare::run_free_vibration(*engine, s, fig6_vssw());
-        return r.restitution.value_or(NAN);
-    };
-    const double plastic = restitution_with("", 0.0);
-    EXPECT_GT(restitution_with("e_roller", 1.0), plastic);
-    EXPECT_LT(restitution_with("e_hinge", 0.5), plastic);
-}
-
-TEST(Siconos, BadSettingsAreRefusedByName) {
-    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
-    const auto engine = multibody::make_engine("siconos");
-    vssw::testing::expect_knobs_refused_by_name(
-        *engine, {{"e_ground", 1.5}, {"e_hinge", -0.1}, {"theta", 0.3}, {"gamma", 2.0}, {"tolerance", 0.0}});
-}
-
-// One Gauss-Seidel sweep cannot bring a wall held at rest to a residual of 1e-14: the run fails with the reason
-// rather than going on with the impulses of an unfinished solve.
-TEST(Siconos, AnUnsolvedContactProblemFailsTheRun) {
-    if (!engine_available("siconos")) GTEST_SKIP() << "Siconos is not compiled in";
-    const auto engine = multibody::make_engine("siconos");
-    multibody::EngineSettings s = engine->default_settings();
-    s.iterations = 1;
-    s.knobs["tolerance"] = 1e-14;
-    multibody::Excitation ex;
-    ex.horizontal = constant_motion(0.5 * 9.81 * eq12_threshold(*fig6_vssw().vssw), 1.0);
-    ex.t_end = 0.1;
-    try {
-        engine->simulate(fig6_vssw(), ex, s);
-        ADD_FAILURE() << "the run went on";
-    } catch (const EngineFailure& e) {
-        EXPECT_NE(std::string(e.what()).find("not solved"), std::string::npos) << e.what();
-    }
-}
-
-// DART (multibody/dart/dart_engine.cpp): its knobs' ranges, its two collision detectors, the roller's spheres and
-// guides placing the corner on its line, and the ContactConstraint statics set per run (they are process-wide).
-TEST(Dart, BadSettingsAreRefusedByName) {
-    if (!engine_available("dart")) GTEST_SKIP() << "DART is not compiled in";
-    const auto engine = multibody::make_engine("dart");
-    vssw::testing::expect_knobs_refused_by_name(
-        *engine, {{"erp", 1.5}, {"cfm", 0.0}, {"cfm", 2.0}, {"erv", -1.0}, {"allowance", 1.0}, {"detector", 2.0}});
-}
-
-// The ODE detector (the default) and DART's own find the same corner contacts in free vibration: the same first impact
-// and restitution (the Bullet detector is not offered: single precision, it aborts beside vssw's Bullet).
-TEST(Dart, BothDetectorsGiveTheSameImpact) {
-    if (!engine_available("dart")) GTEST_SKIP() << "DART is not compiled in";
-    constexpr double kDetectorAgreement = 1e-3;  // both give a box corner as one point per edge end; measured equal
-    const auto engine = multibody::make_engine("dart");
-    multibody::EngineSettings own = engine->default_settings();
-    own.knobs["detector"] = 0.0;
-    for (const WallScene& scene : {fig6_vssw(), fig6_parapet()}) {
-        SCOPED_TRACE(fmt_scene(scene, 0.5));
-        const double own_impact = first_impact(*engine, own, scene, 0.5);
-        EXPECT_NEAR(own_impact / first_impact(*engine, engine->default_settings(), scene, 0.5), 1.0, kDetectorAgreement);
-        const auto a = compare::run_free_vibration(*engine, engine->default_settings(), scene);
-        const auto b = compare::run_free_vibration(*engine, own, scene);
-        ASSERT_TRUE(a.restitution && b.restitution);
-        EXPECT_NEAR(*b.restitution / *a.restitution, 1.0, kDetectorAgreement);
-    }
-}
-
-// The roller is a sphere centred at each top corner against a guide standing the sphere's radius outside x = +-b: the
-// upper block must turn as the mechanism says (Eq. 2, exact kinematics) for the lower block's rotation, which a guide
-// line off by the radius (0.1 b) would not give. Compared with the analytic model's theta2 at the same theta1.
-TEST(Dart, RollerHoldsTheTopCornerOnItsLine) {
-    if (!engine_available("dart")) GTEST_SKIP() << "DART is not compiled in";
-    constexpr double kKinematics = 1e-3;  // relative to |theta2|: contact compliance (cfm) and the step's rounding
-    const auto engine = multibody::make_engine("dart");
-    const auto analytic = multibody::make_engine("analytic");
-    const WallScene scene = fig6_vssw();
-    multibody::Excitation ex;
-    ex.theta0 = 0.8 * scene.alpha();
-    ex.t_end = 0.9 * free_vibration(*analytic_reference(scene), ex.theta0).impacts.at(0).t;
-    multibody::EngineSettings fine = analytic->default_settings();
-    fine.sample_dt = 1e-4;
-    const auto reference = analytic->simulate(scene, ex, fine).samples;  // theta1 falls from theta0 towards 0
-    int compared = 0;
-    for (const auto& p : engine->simulate(scene, ex, engine->default_settings()).samples) {
-        if (p.theta1 < 0.2 * ex.theta0 || p.theta1 > 0.9 * ex.theta0) continue;
-        for (std::size_t i = 1; i < reference.size(); ++i) {
-            const auto &a = reference[i - 1], &b = reference[i];
-            if ((a.theta1 - p.theta1) * (b.theta1 - p.theta1) > 0.0) continue;
-            const double theta2 = a.theta2 + (b.theta2 - a.theta2) * (p.theta1 - a.theta1) / (b.theta1 - a.theta1);
-            EXPECT_NEAR(p.theta2 / theta2, 1.0, kKinematics) << "theta1 " << p.theta1;
-            ++compared;
-            break;
-        }
-    }
-    EXPECT_GT(compared, 100);
-}
-
-// DART's ContactConstraint erp, cfm, cap and allowance are static: a run must not inherit another's. In one process
-// (the adapter itself), a default run after a run with other values is the default run to the last bit.
-TEST(Dart, ContactStaticsAreSetForEachRun) {
-    if (!engine_available("dart")) GTEST_SKIP() << "DART is not compiled in";
-    const auto engine = multibody::make_engine_in_process("dart");
-    const WallScene scene = fig6_vssw();
-    multibody::Excitation ex;
-    ex.theta0 = 0.5 * scene.alpha();
-    ex.t_end = 1.5 * free_vibration(*analytic_reference(scene), ex.theta0).impacts.at(0).t;  // through an impact
-    ex.motion_only = true;
-    const multibody::EngineSettings defaults = engine->default_settings();
-    multibody::EngineSettings other = defaults;
-    other.knobs = {{"erp", 0.5}, {"cfm", 1e-3}, {"erv", 0.1}, {"allowance", 1e-3}};
-    const auto before = engine->simulate(scene, ex, defaults).samples;
-    const auto changed = engine->simulate(scene, ex, other).samples;
-    const auto after = engine->simulate(scene, ex, defaults).samples;
-    ASSERT_EQ(after.size(), before.size());
-    EXPECT_NE(changed.back().theta1, before.back().theta1);  // the knobs do act
-    for (std::size_t i = 0; i < before.size(); ++i) ASSERT_EQ(after[i].theta1, before[i].theta1) << "t " << before[i].t;
 }
 
 // A threshold trial's stop angle ends the analytic backend's run there, as RunMonitor ends an engine's: the wall is
@@ -649,81 +456,6 @@ TEST(UnilateralRoller, ExplainsTheEnginesPeriodsWhereThePapersRollerPulls) {
         ++engines;
     }
     if (engines == 0) GTEST_SKIP() << "no rigid-body engine compiled in";
-}
-
-// Bullet's friction rows leave an applied force's torque out of the velocity they hold, so N applied as a force made
-// the hinge slide every step and lose energy, first order in the step: off the roller (Table 1 #14, xi 0.5, from
-// 0.8 alpha1) the period was +3.16 % at 1 ms against the unilateral roller's model (docs/engines.md "Bullet"). With N
-// as an impulse it is -0.063 %, ODE's figure; held at the 1 ms step explicitly, whatever the default.
-TEST(BulletOffRoller, OverburdenTorqueDoesNotSlideTheHingeAtOneMillisecond) {
-    if (!engine_available("bullet")) GTEST_SKIP() << "Bullet is not compiled in";
-    const multibody::WallScene scene = multibody::WallScene::of(make_vssw(table1(14), 0.5));
-    compare::FreeVibrationOptions options;
-    options.r = 0.8;
-    options.impacts = 1;
-    const multibody::AnalyticEngine analytic;
-    const auto reference = compare::run_free_vibration(
-        analytic, multibody::analytic_settings({Kinematics::exact, {}, Roller::unilateral}), scene, options);
-    const auto engine = multibody::make_engine("bullet");
-    multibody::EngineSettings settings = engine->default_settings();
-    settings.dt = 1e-3;
-    const auto r = compare::run_free_vibration(*engine, settings, scene, options);
-    ASSERT_TRUE(reference.period && r.period);
-    EXPECT_LT(std::abs(*r.period / *reference.period - 1.0), compare::kPeriodTarget);
-}
-
-// Simbody's compliant route evaluates its corner contacts itself (multibody/simbody/corner_contacts.hpp) with the
-// force law of Simbody's CompliantContactSubsystem, which it replaced for speed: both must give the same wall. The
-// two sum the same forces in a different order and take different integrator steps from there, so they agree to the
-// integrator's accuracy (1e-5), not to rounding. Measured at the defaults: period 6e-6, restitution 5e-5 (Fig. 6
-// VSSW), both 1e-7 (parapet); a change of the law shows far above the bounds (a dissipation of 100 instead of
-// 1000 s/m moves the Fig. 6 restitution by 1.3 %, docs/engines.md).
-constexpr double kSameLawPeriod = 5e-5;       // about 10x the measured difference, 1e-4 of the period target
-constexpr double kSameLawRestitution = 5e-4;  // 10x the measured difference, 1/40 of the restitution target
-
-// Debian's libsimbody prints debug text on stdout at every rigid step; QuietStdout drops it (without formatting it)
-// while a run steps and gives stdout back afterwards: nothing of it may reach file descriptor 1, and what the
-// program prints after the run must. Suite named in lower case for `ctest -R simbody`.
-TEST(simbody_quiet_stdout, DebugTextIsDroppedAndStdoutComesBack) {
-    if (!engine_available("simbody-rigid"))
-        GTEST_SKIP() << "Simbody not compiled in";
-    const auto engine = multibody::make_engine("simbody-rigid");
-    const WallScene scene = fig6_vssw();
-    multibody::Excitation ex;
-    ex.theta0 = 0.5 * scene.alpha();
-    ex.t_end = 0.05;  // 100 steps, each printing when the library is built without NDEBUG
-    std::fflush(stdout);
-    std::FILE* capture = std::tmpfile();
-    ASSERT_NE(capture, nullptr);
-    const int saved = ::dup(1);
-    ASSERT_GE(saved, 0);
-    ::dup2(::fileno(capture), 1);
-    (void)engine->simulate(scene, ex, engine->default_settings());
-    std::printf("after the run\n");
-    std::fflush(stdout);
-    ::dup2(saved, 1);
-    ::close(saved);
-    std::rewind(capture);
-    std::string text;
-    for (int c = std::fgetc(capture); c != EOF; c = std::fgetc(capture)) text.push_back(static_cast<char>(c));
-    std::fclose(capture);
-    EXPECT_EQ(text, "after the run\n");
-}
-
-// Suite named in lower case so that `ctest -R simbody` runs it with the cross-engine cases.
-TEST(simbody_compliant, CornerContactsReproduceTheContactSubsystem) {
-    if (!engine_available("simbody")) GTEST_SKIP() << "Simbody not compiled in";
-    const auto engine = multibody::make_engine("simbody");
-    multibody::EngineSettings subsystem = engine->default_settings();
-    subsystem.knobs["contact_subsystem"] = 1.0;
-    for (const WallScene& scene : {fig6_vssw(), fig6_parapet()}) {
-        SCOPED_TRACE(fmt_scene(scene, 0.5));
-        const auto corners = compare::run_free_vibration(*engine, engine->default_settings(), scene);
-        const auto tracked = compare::run_free_vibration(*engine, subsystem, scene);
-        ASSERT_TRUE(corners.period && tracked.period && corners.restitution && tracked.restitution);
-        EXPECT_NEAR(*corners.period / *tracked.period - 1.0, 0.0, kSameLawPeriod);
-        EXPECT_NEAR(*corners.restitution / *tracked.restitution - 1.0, 0.0, kSameLawRestitution);
-    }
 }
 
 }  // namespace
@@ -895,64 +627,4 @@ TEST(RunMonitorParts, EnergyTheGroundMotionDidNotGiveFails) {
     EXPECT_NE(why.find("energy that the ground motion did not give"), std::string::npos) << why;
 }
 
-}  // namespace vssw
-
-namespace vssw {
-namespace {
-
-// Box2D (multibody/box2d/box2d_engine.cpp, docs/engines.md "Box2D"): the traps the adapter handles, held where they
-// live. Suite named in lower case for `ctest -R box2d`.
-//
-// The skin: Box2D rounds polygons and edges by b2_polygonRadius (1 cm) unless told otherwise, and the block then rolls
-// on rounded corners. With radius 0 the 4 x 0.4 m parapet's period is -0.072 % off at 1 ms (the step's first-order
-// error, Bullet's and ODE's figure); with Box2D's 1 cm skin +0.30 % (measured, docs/engines.md "Box2D").
-constexpr double kSkinlessPeriod = 1.5e-3;  // twice the measured -0.072 %, half the skin's +0.30 %
-constexpr double kSkinBias = 2.0e-3;        // two thirds of the skin's measured +0.30 %: the bias is there
-
-TEST(box2d_traps, SkinlessCornersGiveTheParapetsPeriodAndBoxTwoDsSkinDoesNot) {
-    if (!engine_available("box2d")) GTEST_SKIP() << "Box2D is not compiled in";
-    const auto engine = multibody::make_engine("box2d");
-    const WallScene scene = fig6_parapet();
-    const double exact = free_vibration(*analytic_reference(scene), 0.5 * scene.alpha()).impacts.at(0).t;
-    multibody::EngineSettings settings = engine->default_settings();
-    EXPECT_NEAR(first_impact(*engine, settings, scene, 0.5) / exact - 1.0, 0.0, kSkinlessPeriod);
-    settings.knobs["skin"] = 0.01;  // Box2D's b2_polygonRadius
-    EXPECT_GT(first_impact(*engine, settings, scene, 0.5) / exact - 1.0, kSkinBias);
-}
-
-TEST(box2d_traps, BadSettingsAreRefusedByName) {
-    if (!engine_available("box2d")) GTEST_SKIP() << "Box2D is not compiled in";
-    const auto engine = multibody::make_engine("box2d");
-    vssw::testing::expect_knobs_refused_by_name(
-        *engine, {{"position_iterations", -1.0},
-                  {"position_iterations", 2.5},
-                  {"warm_starting", 2.0},
-                  {"continuous", 0.5},
-                  {"roller", 2.0},
-                  {"skin", 0.1},
-                  {"moving_supports", -1.0}});
-}
-
-// The paper's bilateral roller (roller = 1, a b2WheelJoint): where the paper's roller pulls (Table 1 #14 at xi 0.5
-// from 0.8 alpha1) Box2D's period then follows the analytic model with the paper's roller, as the default unilateral
-// roller follows the analytic model with a unilateral one (UnilateralRoller.ExplainsTheEnginesPeriods...).
-TEST(box2d_traps, WheelJointIsThePapersBilateralRoller) {
-    if (!engine_available("box2d")) GTEST_SKIP() << "Box2D is not compiled in";
-    const WallScene scene = WallScene::of(make_vssw(table1(14), 0.5));
-    compare::FreeVibrationOptions options;
-    options.r = 0.8;
-    options.impacts = 1;
-    const multibody::AnalyticEngine analytic;
-    // The paper's roller (bilateral), with the exact kinematics the engine builds.
-    const auto paper = compare::run_free_vibration(
-        analytic, multibody::analytic_settings({Kinematics::exact, {}, Roller::bilateral}), scene, options);
-    const auto engine = multibody::make_engine("box2d");
-    multibody::EngineSettings settings = engine->default_settings();
-    settings.knobs["roller"] = 1.0;
-    const auto r = compare::run_free_vibration(*engine, settings, scene, options);
-    ASSERT_TRUE(paper.period && r.period);
-    EXPECT_NEAR(*r.period / *paper.period - 1.0, 0.0, compare::kPeriodTarget);
-}
-
-}  // namespace
 }  // namespace vssw

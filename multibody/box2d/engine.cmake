@@ -9,6 +9,10 @@ vssw_engine(NAME box2d DISPLAY "Box2D" ORDER 50 LIBRARY libbox2d
   DEBIAN libbox2d-dev
   HEADERS box2d/ b2_)
 
+# Its own tests and its known differences, built into vssw_engine_tests whether or not Box2D is found (each test
+# skips without it).
+vssw_engine_tests(box2d tests/test_box2d.cpp tests/known_differences.cpp)
+
 if(VSSW_WITH_BOX2D)
   find_package(box2d CONFIG QUIET)
   if(TARGET box2d::box2d)

@@ -10,6 +10,10 @@ vssw_engine(NAME bullet DISPLAY "Bullet" ORDER 10 LIBRARY libBulletDynamics
   DEBIAN libbullet-dev
   HEADERS btBullet Bullet LinearMath BulletCollision BulletDynamics)
 
+# Its own tests and its known differences, built into vssw_engine_tests whether or not Bullet is found (each test
+# skips without it).
+vssw_engine_tests(bullet tests/test_bullet.cpp tests/known_differences.cpp)
+
 if(VSSW_WITH_BULLET)
   pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
   vssw_engine_plugin(bullet bullet/bullet_engine.cpp bullet/bullet_plugin.cpp)

@@ -15,6 +15,10 @@ vssw_engine(NAME dart DISPLAY "DART" ORDER 60 LIBRARY libdart.so
   DEBIAN libdart-dev libdart-collision-ode-dev libdart-external-ikfast-dev
   HEADERS dart/)
 
+# Its own tests and its known differences, built into vssw_engine_tests whether or not DART is found (each test
+# skips without it).
+vssw_engine_tests(dart tests/test_dart.cpp tests/known_differences.cpp)
+
 # DART's CMake package finds ODE again for its ODE detector (DARTFindODE.cmake, FindODE.cmake) and takes the ODE
 # adapter's pkg_check_modules(ODE) results when they exist (multibody/ode/engine.cmake is included first, by ORDER):
 # their ODE_INCLUDE_DIRS is empty for /usr/include, which its find_package_handle_standard_args counts as not found.

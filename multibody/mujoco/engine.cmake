@@ -14,8 +14,9 @@ vssw_engine(NAME mujoco DISPLAY "MuJoCo" ORDER 70 LIBRARY libmujoco
   DEBIAN libmujoco-dev libqhull-dev
   HEADERS mujoco/)
 
-# Its own tests, built into vssw_engine_tests whether or not MuJoCo is found (each skips without it).
-vssw_engine_tests(mujoco tests/test_mujoco.cpp)
+# Its own tests and its known differences, built into vssw_engine_tests whether or not MuJoCo is found (each test
+# skips without it).
+vssw_engine_tests(mujoco tests/test_mujoco.cpp tests/known_differences.cpp)
 
 if(VSSW_WITH_MUJOCO)
   find_path(MUJOCO_INCLUDE_DIR mujoco/mujoco.h)

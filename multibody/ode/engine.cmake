@@ -10,6 +10,9 @@ vssw_engine(NAME ode DISPLAY "ODE" ORDER 20 LIBRARY libode.so
   DEBIAN libode-dev
   HEADERS ode/)
 
+# Its known differences (it has no tests of its own), built into vssw_engine_tests whether or not ODE is found.
+vssw_engine_tests(ode tests/known_differences.cpp)
+
 if(VSSW_WITH_ODE)
   pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
   vssw_engine_plugin(ode ode/ode_engine.cpp ode/ode_plugin.cpp)

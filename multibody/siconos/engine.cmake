@@ -13,6 +13,10 @@ vssw_engine(NAME siconos DISPLAY "Siconos" ORDER 40 LIBRARY libsiconos_kernel
   HEADERS Siconos siconos TimeStepping TimeDiscretisation SolverOptions SimulationGraphs SimpleMatrix
   HEADERS NonSmoothDynamicalSystem NewtonImpact MoreauJeanOSI LagrangianLinearTIDS FrictionContact NumericsMatrix)
 
+# Its own tests and its known differences, built into vssw_engine_tests whether or not Siconos is found (each test
+# skips without it).
+vssw_engine_tests(siconos tests/test_siconos.cpp tests/known_differences.cpp)
+
 if(VSSW_WITH_SICONOS)
   find_path(SICONOS_KERNEL_INCLUDE_DIR SiconosKernel.hpp PATH_SUFFIXES siconos/kernel)
   find_path(SICONOS_NUMERICS_INCLUDE_DIR SiconosNumerics.h PATH_SUFFIXES siconos/numerics)

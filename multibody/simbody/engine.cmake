@@ -20,6 +20,10 @@ vssw_engine_backend(NAME simbody-rigid PLUGIN simbody DISPLAY "simbody-rigid"
   BENCH "dt={dt}: dt 2e-3 1e-3 5e-4 2.5e-4"  # the step
   DEFAULT_COMPARED OFF)
 
+# Its own tests and its known differences, built into vssw_engine_tests whether or not Simbody is found (each test
+# skips without it).
+vssw_engine_tests(simbody tests/test_simbody.cpp tests/known_differences.cpp)
+
 if(VSSW_WITH_SIMBODY)
   find_package(Simbody REQUIRED CONFIG)
   vssw_engine_plugin(simbody simbody/simbody_engine.cpp simbody/simbody_compliant.cpp simbody/simbody_plugin.cpp)

@@ -140,7 +140,8 @@ Knobs read_knobs(const EngineSettings& s) {
     k.integrator = r.choice("integrator", 1, 2);
     // contact_subsystem 0: the corner pairs evaluated directly (corner_contacts.hpp), Simbody's force law without
     // its contact tracking; 1 keeps CompliantContactSubsystem + ContactTrackerSubsystem (the former route, kept to
-    // check the two against each other: tests/test_engines.cpp). Cost and agreement in docs/engines.md "Simbody (3.7)".
+    // check the two against each other: multibody/simbody/tests/test_simbody.cpp). Cost and agreement in docs/engines.md
+    // "Simbody (3.7)".
     k.contact_subsystem = r.flag("contact_subsystem");
     // interpolate 1 (was 0): a report no longer ends a step, so the integrator is not held to 1 ms steps where the
     // wall is at rest or in flight, and the samples are CPodes' own interpolant, of the method's order. Cost: docs/engines.md "Simbody".
