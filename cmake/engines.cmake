@@ -15,7 +15,10 @@
 # CONTACT_SCHEME: a key of multibody/host/contact_schemes.cpp's table. COLOUR and MARKER (gnuplot's filled and open point
 # types): its plots' style (io/palette.hpp). DEFAULT_COMPARED OFF: left out of the engines a comparison runs when none
 # is named. BENCH "LABEL: AXIS V V ..., AXIS V ...", which may repeat: its work-precision sweep, every combination of
-# the axes' values ("dt", "iterations" or a knob) on its defaults (validation/bench_spec.hpp). DEBIAN: the packages
+# the axes' values ("dt", "iterations" or a knob) on its defaults (validation/bench_spec.hpp). DT_MEANING: what its dt
+# is, in words for the report's findings ("step" unless said: Simbody's compliant route's is a reporting interval).
+# CONTACT_SOFT and CONTACT_STIFF, knob=number words: its contact knobs at the soft and the stiff end of their range,
+# which `vssw stress` runs (stress/cases.cpp; none: the engine has no contact stiffness knob). DEBIAN: the packages
 # scripts/setup.sh installs for it, and HEADERS: the starts of its library's header names, which only its folder may
 # include (tests/layering.py) -- both read from the engine.cmake files as lines of their own, "  DEBIAN pkg..." and
 # "  HEADERS prefix..." (words up to a comment or the call's ")"), which may repeat. A plugin holding a second backend names it with vssw_engine_backend() (multibody/simbody/engine.cmake).
@@ -24,11 +27,12 @@
 set_property(GLOBAL PROPERTY VSSW_ENGINE_KEYS "")
 
 # vssw_engine_backend(NAME name PLUGIN plugin DISPLAY ... CONTACT_SCHEME ... COLOUR ... MARKER filled open
-#                     [DEFAULT_COMPARED OFF] [BENCH ...]): one backend's facts, listed after its plugin's earlier
+#                     [DEFAULT_COMPARED OFF] [BENCH ...] [DT_MEANING ...] [CONTACT_SOFT k=v...]
+#                     [CONTACT_STIFF k=v...]): one backend's facts, listed after its plugin's earlier
 # ones. A backend built into the program (the analytic model) has no PLUGIN and an ORDER of its own.
 function(vssw_engine_backend)
-  cmake_parse_arguments(PARSE_ARGV 0 B "" "NAME;PLUGIN;ORDER;DISPLAY;CONTACT_SCHEME;COLOUR;DEFAULT_COMPARED"
-                        "MARKER;BENCH")
+  cmake_parse_arguments(PARSE_ARGV 0 B "" "NAME;PLUGIN;ORDER;DISPLAY;CONTACT_SCHEME;COLOUR;DEFAULT_COMPARED;DT_MEANING"
+                        "MARKER;BENCH;CONTACT_SOFT;CONTACT_STIFF")
   set(order ${B_ORDER})
   if(B_PLUGIN)
     get_property(order GLOBAL PROPERTY VSSW_ENGINE_ORDER_${B_PLUGIN})
@@ -55,6 +59,19 @@ function(vssw_engine_backend)
   set_property(GLOBAL APPEND PROPERTY VSSW_ENGINE_KEYS ${key})
   list(JOIN B_BENCH "|" bench)
   set_property(GLOBAL PROPERTY VSSW_ENGINE_BENCH_${key} "${bench}")
+  if(NOT DEFINED B_DT_MEANING)
+    set(B_DT_MEANING "step")
+  endif()
+  set_property(GLOBAL PROPERTY VSSW_ENGINE_DT_MEANING_${key} "${B_DT_MEANING}")
+  foreach(end SOFT STIFF)
+    foreach(setting ${B_CONTACT_${end}})
+      if(NOT setting MATCHES "^[a-z_]+=[-+0-9.eE]+$")
+        message(FATAL_ERROR "vssw_engine_backend(${B_NAME}): CONTACT_${end} takes knob=number words, got '${setting}'")
+      endif()
+    endforeach()
+    list(JOIN B_CONTACT_${end} " " contact)
+    set_property(GLOBAL PROPERTY VSSW_ENGINE_CONTACT_${end}_${key} "${contact}")
+  endforeach()
   set_property(GLOBAL PROPERTY VSSW_ENGINE_ROW_${key}
                "${B_NAME}|${B_DISPLAY}|${B_PLUGIN}|${B_CONTACT_SCHEME}|${B_COLOUR}|${filled}|${open}|${B_DEFAULT_COMPARED}")
 endfunction()
@@ -122,6 +139,9 @@ function(vssw_write_engine_facts)
     list(GET row 6 open)
     list(GET row 7 compared)
     get_property(bench GLOBAL PROPERTY VSSW_ENGINE_BENCH_${key})
+    get_property(dt_meaning GLOBAL PROPERTY VSSW_ENGINE_DT_MEANING_${key})
+    get_property(soft GLOBAL PROPERTY VSSW_ENGINE_CONTACT_SOFT_${key})
+    get_property(stiff GLOBAL PROPERTY VSSW_ENGINE_CONTACT_STIFF_${key})
     get_property(library GLOBAL PROPERTY VSSW_ENGINE_LIBRARY_${plugin})
     set(has false)
     if(plugin STREQUAL "" OR plugin IN_LIST built)
@@ -136,7 +156,8 @@ function(vssw_write_engine_facts)
       set(compared_text true)
     endif()
     string(APPEND rows "    {\"${name}\", \"${display}\", ${plugin_text}, ${has}, \"${scheme}\", \"${colour}\", "
-                       "${filled}, ${open}, ${compared_text}, \"${bench}\", \"${library}\"},\n")
+                       "${filled}, ${open}, ${compared_text}, \"${bench}\", \"${library}\", \"${dt_meaning}\", "
+                       "\"${soft}\", \"${stiff}\"},\n")
   endforeach()
   set(VSSW_ENGINE_FACT_ROWS "${rows}")
   configure_file(${PROJECT_SOURCE_DIR}/cmake/vssw_engine_facts.hpp.in

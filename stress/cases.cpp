@@ -3,6 +3,8 @@
 // those on ordinary walls is asked here only not to break, and to agree with the analytic model where the answer is
 // known).
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -11,6 +13,7 @@
 #include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
 #include "stress/case.hpp"
+#include "vssw_engine_facts.hpp"  // each engine's contact ends (generated: cmake/engines.cmake)
 
 namespace vssw::stress {
 namespace {
@@ -66,17 +69,19 @@ double rest_threshold(const WallScene& scene) {
     return scene.is_vssw() ? eq12_threshold(*scene.vssw) : eq17_parapet_threshold(*scene.parapet);
 }
 
-// The contact knobs at the soft and the stiff end of their range, per backend (docs/guide/stress.md: which knob).
+// The contact knobs at the soft and the stiff end of their range: each engine's CONTACT_SOFT and CONTACT_STIFF facts
+// (its multibody/<engine>/engine.cmake, checked there as knob=number words; docs/guide/stress.md: which knob).
 EngineSettings contact_end(const std::string& engine, EngineSettings s, bool stiff) {
-    if (engine == "simbody") {
-        s.knobs["stiffness"] = stiff ? 1e18 : 1e12;  // Hertz modulus [Pa]; default 1e15, 3 decades either side
-    } else if (engine == "ode") {
-        s.knobs["erp"] = stiff ? 1.0 : 0.2;  // erp's upper end (full correction per step), the default at the soft end
-        s.knobs["cfm"] = stiff ? 0.0 : 1e-5;  // cfm 0: hard constraints; 1e-5: a spring 1e5 times softer than default
-    } else if (engine == "bullet") {
-        s.knobs["erp"] = stiff ? 1.0 : 0.0;  // Bullet's contacts are rigid; erp (split impulse's position pass) is its knob
-    } else {
+    const EngineFacts* facts = nullptr;
+    for (const EngineFacts& e : kEngineFacts)
+        if (engine == e.name) facts = &e;
+    const std::string words = facts ? (stiff ? facts->contact_stiff : facts->contact_soft) : "";
+    if (words.empty())
         throw InputError(fmt::format("{} has no contact stiffness knob (rigid contact or no contact at all)", engine));
+    std::istringstream in(words);
+    for (std::string word; in >> word;) {
+        const std::size_t eq = word.find('=');
+        s.knobs[word.substr(0, eq)] = std::stod(word.substr(eq + 1));
     }
     return s;
 }

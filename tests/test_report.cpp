@@ -281,6 +281,30 @@ TEST(ReportAnalysis, FindingsSayOnlyWhatTheNumbersShow) {
     EXPECT_FALSE(any("Bullet's restitution", ""));
 }
 
+// The step study's finding says what the engine's dt is (its DT_MEANING fact): the same numbers as ODE's step study,
+// given to Simbody, whose compliant route's dt is a reporting interval.
+TEST(ReportAnalysis, AStepStudysFindingNamesTheEnginesDtAsItsFactsSay) {
+    vssw::validation::Suite suite = hand_suite();
+    vssw::validation::SuiteResults results = hand_results();
+    auto to_simbody = [](std::string id) { return id.substr(0, id.rfind('/')) + "/simbody"; };
+    for (auto& c : suite.cases)
+        if (c.kind == CaseKind::step) {
+            c.id = to_simbody(c.id);
+            c.engine = "simbody";
+        }
+    suite.step_study = {{"simbody", suite.step_study.at("ode")}};
+    for (auto& r : results.rows)
+        if (contains(r.case_id, "/dt")) {
+            r.case_id = to_simbody(r.case_id);
+            r.engine = "simbody";
+        }
+    const std::vector<std::string> found = vssw::validation::findings({suite, results, {}});
+    const bool said = std::any_of(found.begin(), found.end(), [](const std::string& f) {
+        return contains(f, "Simbody's period error on fig6-vssw/r0.5 falls with the reporting interval");
+    });
+    EXPECT_TRUE(said) << "findings:\n" << fmt::format("{}", fmt::join(found, "\n"));
+}
+
 // --- the files ----------------------------------------------------------------------------------------------------
 
 TEST(ReportFiles, MarkdownHasSummaryLinesAndARowPerCaseWithItsError) {

@@ -1,19 +1,24 @@
 // The stress runner (multibody/host/child_process.hpp's run_in_child, as run.hpp uses it; run.hpp, judge.hpp): one bad
 // case cannot take a run down, and each way a child can end has its verdict. The verdicts of the stress set itself
 // are asserted through the program (tests/cli/stress.sh).
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "multibody/engine.hpp"
 #include "multibody/host/child_process.hpp"
 #include "stress/case.hpp"
 #include "stress/judge.hpp"
 #include "stress/run.hpp"
+#include "vssw_engine_facts.hpp"  // each engine's contact ends (generated: cmake/engines.cmake)
 
 namespace vssw::stress {
 namespace {
@@ -135,6 +140,47 @@ TEST(StressCases, ABackendWithoutTheKnobRefusesWithAReason) {
     const CaseResult r = judge(*find_case("contact-soft"), "analytic", true);
     EXPECT_EQ(r.verdict, Verdict::refused);
     EXPECT_NE(r.reason.find("no contact stiffness"), std::string::npos) << r.reason;
+}
+
+// The knobs a CONTACT_SOFT or CONTACT_STIFF fact names ("erp=0.2 cfm=1e-5") against the engine's own settings: each
+// must be one of its knobs, and its value inside the knob's range. One line per problem.
+std::vector<std::string> contact_end_problems(const std::string& words,
+                                              const std::vector<multibody::SettingDescription>& settings) {
+    std::vector<std::string> problems;
+    std::istringstream in(words);
+    for (std::string word; in >> word;) {
+        const std::size_t eq = word.find('=');
+        const std::string name = word.substr(0, eq);
+        const auto d = std::find_if(settings.begin(), settings.end(),
+                                    [&](const multibody::SettingDescription& s) { return s.name == name; });
+        if (d == settings.end() || !multibody::is_knob(name)) {
+            problems.push_back(name + " is not a knob of the engine");
+            continue;
+        }
+        const double value = std::stod(word.substr(eq + 1));
+        if (!(value >= d->lo && value <= d->hi)) problems.push_back(word + " is outside " + multibody::range_text(*d));
+    }
+    return problems;
+}
+
+TEST(StressCases, ContactEndsNameKnobsOfTheEngineInsideTheirRanges) {
+    int checked = 0;
+    for (const EngineFacts& e : kEngineFacts) {
+        if (!e.built || (std::string(e.contact_soft).empty() && std::string(e.contact_stiff).empty())) continue;
+        const std::vector<multibody::SettingDescription> settings = multibody::make_engine(e.name)->setting_descriptions();
+        for (const char* words : {e.contact_soft, e.contact_stiff}) {
+            EXPECT_FALSE(std::string(words).empty()) << e.name << ": both ends or neither";
+            EXPECT_EQ(contact_end_problems(words, settings), std::vector<std::string>{}) << e.name << ": " << words;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 0) << "no engine of this build has a contact knob: the check ran on nothing";
+    // Must fail: a misspelt knob and a value past ODE's range (erp in [0, 1]) are named.
+    for (const EngineFacts& e : kEngineFacts)
+        if (e.built && std::string(e.name) == "ode") {
+            const auto settings = multibody::make_engine("ode")->setting_descriptions();
+            EXPECT_EQ(contact_end_problems("erpx=1 erp=2", settings).size(), 2u);
+        }
 }
 
 TEST(StressCases, TheAnalyticModelBelowItsThresholdDoesNotLift) {

@@ -12,6 +12,7 @@
 
 #include "validation/report.hpp"
 #include "multibody/engine.hpp"
+#include "vssw_engine_facts.hpp"  // what each engine's dt is (generated: cmake/engines.cmake)
 
 namespace vssw::validation {
 namespace {
@@ -145,8 +146,11 @@ std::string step_finding(const std::string& engine, const StepSeries& s) {
     }
     const std::string span = fmt::format("{}", fmt::join(points, ", "));
     const std::string what = fmt::format("{} {} error on {}", possessive(engine), short_title(s.metric), s.base_case);
-    // Simbody's default route integrates with error control: its dt is the reporting interval, not a step.
-    const std::string step = engine == "simbody" ? "reporting interval (its integrator picks its own steps)" : "step";
+    // What the engine's dt is (its DT_MEANING fact): a step, or for an integrator with error control (Simbody's
+    // compliant route) the reporting interval.
+    std::string step = "step";
+    for (const EngineFacts& e : kEngineFacts)
+        if (engine == e.name) step = e.dt_meaning;
     const bool regular = s.r_squared >= kRegularFit;
     if (hi <= kFlatSpread * lo)
         return fmt::format("{} hardly changes with the {} ({}): it is not discretisation error.", what, step, span);

@@ -7,6 +7,9 @@ vssw_engine(NAME bullet DISPLAY "Bullet" ORDER 10 LIBRARY libBulletDynamics
   MARKER 5 4        # square
   # The step and the solver iterations.
   BENCH "dt={dt} it={iterations}: dt 1e-3 5e-4 2e-4 1e-4, iterations 10 20 40"
+  # Contact ends for `vssw stress`: Bullet's contacts are rigid; erp (split impulse's position pass) is its knob.
+  CONTACT_SOFT erp=0
+  CONTACT_STIFF erp=1
   DEBIAN libbullet-dev
   HEADERS btBullet Bullet LinearMath BulletCollision BulletDynamics)
 

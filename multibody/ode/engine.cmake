@@ -7,6 +7,10 @@ vssw_engine(NAME ode DISPLAY "ODE" ORDER 20 LIBRARY libode.so
   # The direct solver (the default) has no iterations; quickstep's SOR trades them for cost.
   BENCH "dt={dt} direct: dt 1e-3 5e-4 2e-4 1e-4"
   BENCH "dt={dt} quickstep it={iterations}: iterations 10 20 40, quickstep 1"
+  # Contact ends for `vssw stress`: erp's upper end (full correction per step) and cfm 0 (hard constraints) when
+  # stiff; the default erp and cfm 1e-5 (a spring 1e5 times softer than the default) when soft.
+  CONTACT_SOFT erp=0.2 cfm=1e-5
+  CONTACT_STIFF erp=1 cfm=0
   DEBIAN libode-dev
   HEADERS ode/)
 

@@ -10,6 +10,10 @@ vssw_engine(NAME simbody DISPLAY "Simbody" ORDER 30 LIBRARY libSimTKsimbody
   # realization per report inside Simbody's stepTo) and sets the metrics' sampling.
   BENCH "accuracy={accuracy}: accuracy 1e-4 1e-5 1e-6 1e-7"
   BENCH "dt={dt}: dt 1e-3 4e-3"
+  DT_MEANING "reporting interval (its integrator picks its own steps)"
+  # Contact ends for `vssw stress`: the Hertz modulus [Pa], default 1e15, three decades either side.
+  CONTACT_SOFT stiffness=1e12
+  CONTACT_STIFF stiffness=1e18
   DEBIAN libsimbody-dev
   HEADERS Simbody SimTK simbody/)
 # The rigid route (SemiExplicitEulerTimeStepper) steps with impulses as Bullet does; compared only when named.
