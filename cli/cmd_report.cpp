@@ -203,8 +203,10 @@ Command add_report_command(CLI::App& root) {
                     "report (the report does not run the sweep)");
     o->assumptions_option = cmd->add_option(
         "--assumptions", o->assumptions,
-        fmt::format("the reference: the analytic model under the set {} or {} (default {}); the analytic model under "
-                    "the other set is measured like an engine in a row of its own, with no verdict",
+        fmt::format("the free-vibration cases' reference: the analytic model under the set {} or {} (default {}); "
+                    "the analytic model under the other set is measured like an engine in a row of its own, with no "
+                    "verdict. Under records the reference is always the set mechanism (what the engines realise), "
+                    "and the paper's model is the row of its own",
                     describe(AssumptionSet::mechanism), describe(AssumptionSet::paper),
                     to_string(kDefaultAssumptionSet)));
     o->earthquake_option = cmd->add_option(
