@@ -72,6 +72,17 @@ std::optional<std::string> not_utf8(std::string_view text) {
     return std::nullopt;
 }
 
+namespace {
+
+// The Unicode marks that reorder how the rest of a line is shown (embeddings, overrides, isolates, the implicit
+// marks): a name holding U+202E would show a message's words in another order than they are (Trojan Source).
+bool is_direction_mark(std::uint32_t code) {
+    return code == 0x061C || code == 0x200E || code == 0x200F || (code >= 0x202A && code <= 0x202E) ||
+           (code >= 0x2066 && code <= 0x2069);
+}
+
+}  // namespace
+
 std::string printable(std::string_view text) {
     std::string s;
     std::uint32_t code = 0;
@@ -86,7 +97,7 @@ std::string printable(std::string_view text) {
         else if (code == '\r') s += "\\r";
         else if (code == '\t') s += "\\t";
         else if (code < 0x20 || code == 0x7F) s += fmt::format("\\x{:02x}", code);
-        else if (code >= 0x80 && code <= 0x9F) s += fmt::format("\\u{:04x}", code);
+        else if ((code >= 0x80 && code <= 0x9F) || is_direction_mark(code)) s += fmt::format("\\u{:04x}", code);
         else s.append(text.substr(i, n));
         i += n;
     }

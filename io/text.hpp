@@ -18,8 +18,9 @@ std::string one_line(std::string text);
 // Case ids and other names as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'.
 std::string file_stem(const std::string& case_id);
 // The text as a terminal may show it, for every message that can echo an input: control characters (C0, DEL and
-// C1, ESC among them, which start a terminal's escape sequences) as escapes ("\n", "\t", "\x1b", "\u009b") and a
-// byte that is not part of a UTF-8 character as "\xff". Everything else, non-ASCII letters included, as it is.
+// C1, ESC among them, which start a terminal's escape sequences) and the direction marks that reorder a line (U+202E
+// and its kin) as escapes ("\n", "\t", "\x1b", "\u009b", "\u202e"), and a byte that is not part of a UTF-8
+// character as "\xff". Everything else, non-ASCII letters included, as it is.
 std::string printable(std::string_view text);
 // When the text is not UTF-8 (RFC 3629; a file name may hold any byte): the text quoted as printable() shows it and
 // its first bad byte, "'s\xff.toml' is not UTF-8 (the byte \xff at offset 1)", for a message that refuses it.

@@ -40,10 +40,13 @@ std::string raw_control_in(const std::string& message) {
 }
 
 TEST(Text, PrintableEscapesControlsAndBytesThatAreNotUtf8) {
-    namespace st = vssw::study;
     EXPECT_EQ(vssw::io::printable("a\x1b[2J\n\t\x7f" "b"), "a\\x1b[2J\\n\\t\\x7fb");
     EXPECT_EQ(vssw::io::printable("s\xff.toml"), "s\\xff.toml");
     EXPECT_EQ(vssw::io::printable("\xC2\x9B" "31m"), "\\u009b31m");  // C1 CSI
+    // Direction marks (U+202E right-to-left override, U+2066 left-to-right isolate, U+200F right-to-left mark) would
+    // reorder the line on a terminal: shown as their code points. U+2010 (a hyphen, beside them) stays itself.
+    EXPECT_EQ(vssw::io::printable("run\xE2\x80\xAE" "lmth.exe \xE2\x81\xA6x\xE2\x80\x8F \xE2\x80\x90"),
+              "run\\u202elmth.exe \\u2066x\\u200f \xE2\x80\x90");
     EXPECT_EQ(vssw::io::printable("M\xC3\xBCller \xE5\x9C\xB0"), "M\xC3\xBCller \xE5\x9C\xB0");  // letters stay
     EXPECT_EQ(vssw::io::printable("\xC0\xAF \xED\xA0\x80 \xF4\x90\x80\x80 \xE5\x9C"),  // overlong, surrogate, > U+10FFFF, cut
               "\\xc0\\xaf \\xed\\xa0\\x80 \\xf4\\x90\\x80\\x80 \\xe5\\x9c");
