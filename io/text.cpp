@@ -34,7 +34,13 @@ std::string file_stem(const std::string& case_id) {
         if (c == '/') c = '_';
         else if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '-';
     }
-    return s;
+    if (s.size() <= kMaxFileStem) return s;
+    // Too long for a file name once a prefix and an extension are added: cut, and told apart from every other cut
+    // name by a hash of the whole name (FNV-1a, 64 bits), so that two long names never share a file.
+    std::uint64_t hash = 14695981039346656037ull;
+    for (const char c : case_id) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    const std::string tag = fmt::format("-{:016x}", hash);
+    return s.substr(0, kMaxFileStem - tag.size()) + tag;
 }
 
 namespace {

@@ -15,7 +15,11 @@ std::string yes_no(bool value);
 std::string percent(double rel_error);
 // The text with its line breaks as spaces: for one-line messages, CSV statuses and Markdown list items.
 std::string one_line(std::string text);
-// Case ids and other names as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'.
+// The longest stem file_stem() gives [bytes]: a file name holds 255 (NAME_MAX), and the stems get a prefix and an
+// extension of their own ("trace_" ... "_zoom.svg", "rocking_" ... ".dat"), well under the 55 left.
+constexpr std::size_t kMaxFileStem = 200;
+// Case ids and other names as file names: '/' becomes '_' and anything outside [A-Za-z0-9._-] becomes '-'; a name
+// longer than kMaxFileStem is cut and ends in a hash of the whole name ("-" and 16 hex digits), so it stays unique.
 std::string file_stem(const std::string& case_id);
 // The text as a terminal may show it, for every message that can echo an input: control characters (C0, DEL and
 // C1, ESC among them, which start a terminal's escape sequences) and the direction marks that reorder a line (U+202E

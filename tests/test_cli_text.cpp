@@ -54,6 +54,18 @@ TEST(Text, PrintableEscapesControlsAndBytesThatAreNotUtf8) {
     EXPECT_EQ(vssw::io::not_utf8("ab\xff").value_or(""), "'ab\\xff' is not UTF-8 (the byte \\xff at offset 2)");
 }
 
+// A file stem is at most kMaxFileStem bytes; a longer name is cut and tagged with a hash of the whole, so that two
+// names alike up to the cut still get two files, and a name within the limit is as it was.
+TEST(Text, ALongNamesFileStemIsCutAndStaysUnique) {
+    const std::string a = std::string(300, 'a') + "/x", b = std::string(300, 'a') + "/y";
+    EXPECT_EQ(vssw::io::file_stem(a).size(), vssw::io::kMaxFileStem);
+    EXPECT_NE(vssw::io::file_stem(a), vssw::io::file_stem(b));
+    EXPECT_EQ(vssw::io::file_stem(a), vssw::io::file_stem(a));  // the same name, the same file
+    const std::string at_limit(vssw::io::kMaxFileStem, 'c');
+    EXPECT_EQ(vssw::io::file_stem(at_limit), at_limit);
+    EXPECT_EQ(vssw::io::file_stem(at_limit + "d").size(), vssw::io::kMaxFileStem);
+}
+
 // Every path and name on the command line: a byte that is not UTF-8 is exit 2 naming it, before any folder or run
 // (it used to fail only when the JSON was written, after the run, leaving a journal no --resume could finish).
 TEST(Text, AWordThatIsNotUtf8IsRefusedBeforeAnything) {

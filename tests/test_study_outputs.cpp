@@ -611,6 +611,34 @@ TEST(StudyOutputs, HostileNamesAreShownAndNeverRun) {
     for (const std::string& text : {html, md}) EXPECT_TRUE(contains(text, "M\xC3\xBCller \xCE\xB5 \xE5\x9C\xB0\xE9\x9C\x87"));
 }
 
+// A record whose file name is as long as a file name may be (250 bytes, +".AT2"): its plot's name ("rocking_" + the
+// stem + ".svg") would pass NAME_MAX (255) and the plot would be lost; the stem is cut and tagged instead, and the
+// plot is drawn.
+TEST(StudyOutputs, ARecordWithTheLongestFileNameStillGetsItsPlot) {
+    TempDir dir("study_longname");
+    const std::string long_stem(250, 'r');
+    const fs::path record = dir.path / (long_stem + ".AT2");
+    fs::copy_file(VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2", record);
+    const st::Grid grid(spec_of(dir.path, "name = \"long\"\nmetrics = [\"peak_rotation\", \"overturned\"]\n"
+                                              "engines = [\"analytic\"]\n[wall]\nalpha = [0.05, 0.1]\nR = 1\nhinge = 0.6\n"
+                                              "[excitation]\nkind = \"record\"\nfile = " +
+                                              vssw::testing::toml_string(record.string()) + "\npga = 0.3\n"));
+    write_study(dir.path / "out", grid, [](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
+        return metric == "overturned" ? 0.0 : 0.1 / c.alpha;
+    });
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const st::OutputFiles files = st::write_study_outputs(dir.path / "out", {});
+    EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
+    // The record's rocking plot, under a name cut to a file name's length (and tagged).
+    int rocking = 0;
+    for (const auto& e : fs::directory_iterator(dir.path / "out" / st::kPlotsDir)) {
+        const std::string file = e.path().filename().string();
+        EXPECT_LE(file.size(), vssw::io::kMaxFileStem + 20) << file;  // a stem and a short extension
+        rocking += file.rfind("rocking_rrr", 0) == 0 && e.path().extension() == ".svg";
+    }
+    EXPECT_EQ(rocking, 1);
+}
+
 TEST(StudyOutputs, AFolderWithoutAManifestIsBadInputNamingIt) {
     TempDir dir("study_nomanifest");
     try {
