@@ -577,22 +577,28 @@ TEST(Gnuplot, TextIsQuotedAsDataThatNeverRuns) {
     EXPECT_FALSE(fs::exists(dir.path / "plots" / "a'b.gp"));
 }
 
+// A record study of two walls on a copy of Rinaldi named `record_name` in dir, its results written by hand into
+// dir/out (peaks 0.1/alpha, nothing overturns): what the plots of a record's name are tested on.
+void write_named_record_study(const fs::path& dir, const std::string& record_name, const std::string& name) {
+    const fs::path record = dir / record_name;
+    fs::copy_file(VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2", record);
+    const st::Grid grid(spec_of(dir, "name = " + vssw::testing::toml_string(name) +
+                                         "\ndescription = " + vssw::testing::toml_string(name) +
+                                         "\nmetrics = [\"peak_rotation\", \"overturned\"]\nengines = [\"analytic\"]\n"
+                                         "[wall]\nalpha = [0.05, 0.1]\nR = 1\nhinge = 0.6\n"
+                                         "[excitation]\nkind = \"record\"\nfile = " +
+                                         vssw::testing::toml_string(record.string()) + "\npga = 0.3\n"));
+    write_study(dir / "out", grid, [](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
+        return metric == "overturned" ? 0.0 : 0.1 / c.alpha;
+    });
+}
+
 // A study shared with a record file named to run commands, and such a name and description: its plots are drawn with
 // the names shown as they are, nothing runs, and its pages show the markup as text.
 TEST(StudyOutputs, HostileNamesAreShownAndNeverRun) {
     TempDir dir("study_hostile");
-    const fs::path record = dir.path / vssw::testing::kHostileFileName;
-    fs::copy_file(VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2", record);
     const std::string name = vssw::testing::kHostileName + " " + vssw::testing::kMarkupName;
-    const st::Grid grid(spec_of(dir.path, "name = " + vssw::testing::toml_string(name) +
-                                              "\ndescription = " + vssw::testing::toml_string(name) +
-                                              "\nmetrics = [\"peak_rotation\", \"overturned\"]\nengines = [\"analytic\"]\n"
-                                              "[wall]\nalpha = [0.05, 0.1]\nR = 1\nhinge = 0.6\n"
-                                              "[excitation]\nkind = \"record\"\nfile = " +
-                                              vssw::testing::toml_string(record.string()) + "\npga = 0.3\n"));
-    write_study(dir.path / "out", grid, [](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
-        return metric == "overturned" ? 0.0 : 0.1 / c.alpha;
-    });
+    write_named_record_study(dir.path, vssw::testing::kHostileFileName, name);
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
     const st::OutputFiles files = st::write_study_outputs(dir.path / "out", {});
     EXPECT_TRUE(vssw::testing::markers_made(dir.path).empty()) << vssw::testing::markers_made(dir.path).front();
@@ -616,16 +622,7 @@ TEST(StudyOutputs, HostileNamesAreShownAndNeverRun) {
 // plot is drawn.
 TEST(StudyOutputs, ARecordWithTheLongestFileNameStillGetsItsPlot) {
     TempDir dir("study_longname");
-    const std::string long_stem(250, 'r');
-    const fs::path record = dir.path / (long_stem + ".AT2");
-    fs::copy_file(VSSW_DATA_DIR "/NGA_no_1063_RRS228.AT2", record);
-    const st::Grid grid(spec_of(dir.path, "name = \"long\"\nmetrics = [\"peak_rotation\", \"overturned\"]\n"
-                                              "engines = [\"analytic\"]\n[wall]\nalpha = [0.05, 0.1]\nR = 1\nhinge = 0.6\n"
-                                              "[excitation]\nkind = \"record\"\nfile = " +
-                                              vssw::testing::toml_string(record.string()) + "\npga = 0.3\n"));
-    write_study(dir.path / "out", grid, [](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
-        return metric == "overturned" ? 0.0 : 0.1 / c.alpha;
-    });
+    write_named_record_study(dir.path, std::string(250, 'r') + ".AT2", "long");
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
     const st::OutputFiles files = st::write_study_outputs(dir.path / "out", {});
     EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
