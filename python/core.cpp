@@ -114,11 +114,12 @@ auto interruptible(Work work) -> decltype(work()) {
 }
 
 // `progress` (None or a callable (done, total, what)) is called from the command's threads, each call holding the
-// GIL; the first exception it raises is raised from this call once the command has ended.
+// GIL; the first exception it raises stops the command's engine runs as Ctrl-C does (interruptible: a study ends as
+// an interrupted one, its journal resumable, no results written) and is raised from this call once the command has
+// ended. The callable is not called again after it. Runs of the analytic model, in this process, finish (milliseconds
+// each).
 py::tuple run_with_progress(const std::vector<std::string>& args, const py::object& progress) {
     if (auto refused = refuse_nul(args)) return *refused;
-    // The first exception the callable raises, raised from this call once the command has ended (it cannot be
-    // stopped halfway: a study's journal and folder stay whole); the callable is not called again after it.
     auto raised = std::make_shared<std::optional<py::error_already_set>>();
     vssw::cli::ProgressHook hook;
     if (!progress.is_none())
@@ -129,6 +130,7 @@ py::tuple run_with_progress(const std::vector<std::string>& args, const py::obje
                 progress(done, total, what);
             } catch (py::error_already_set& e) {
                 raised->emplace(std::move(e));
+                vssw::multibody::interrupt_children(true);  // no further engine run; those under way are stopped
             }
         };
     std::ostringstream out, err;
@@ -136,7 +138,10 @@ py::tuple run_with_progress(const std::vector<std::string>& args, const py::obje
         const vssw::cli::ScopedProgressHook scoped(progress.is_none() ? nullptr : &hook);  // the command's thread's
         return run_cli(args, out, err);
     });
-    if (raised->has_value()) throw **raised;
+    if (raised->has_value()) {
+        vssw::multibody::interrupt_children(false);
+        throw **raised;
+    }
     return py::make_tuple(code, text(out.str()), text(err.str()));
 }
 

@@ -232,3 +232,27 @@ def test_ctrl_c_stops_a_study_at_once_and_leaves_it_resumable(tmp_path):
     assert code == 0, out
     assert "KeyboardInterrupt; 1 children (the ps)" in out, out
     assert (out_dir / "journal.csv").exists() and not (out_dir / "results.csv").exists()
+
+
+@pytest.mark.skipif("ode" not in vssw.engines(), reason="no ODE in this build")
+def test_an_exception_from_progress_stops_a_study_and_leaves_it_resumable(tmp_path):
+    # The progress callable raising (a user's "stop" or a bug in it) stops the study's engine runs as Ctrl-C does:
+    # the exception reaches the caller, the journal is kept and no results are written; --resume finishes the study.
+    # It used to run every remaining run first, results and all.
+    (tmp_path / "odes.toml").write_text('name = "odes"\nmetrics = ["period"]\nengines = ["ode"]\n'
+                                        '[wall]\nheight = [3, 3.5, 4, 4.5, 5]\nthickness = [0.3, 0.4]\n'
+                                        'hinge = [0.6, 0.7]\n[excitation]\nkind = "free"\ntheta0 = 0.5\n')
+    out_dir = tmp_path / "out"
+
+    class Stop(Exception):
+        pass
+
+    def stop(done, total, what):
+        raise Stop(what)
+
+    with pytest.raises(Stop):
+        vssw.study(tmp_path / "odes.toml", out_dir, threads=1, plots=False, progress=stop)
+    assert (out_dir / "journal.csv").exists() and not (out_dir / "results.csv").exists()
+    vssw.study(tmp_path / "odes.toml", out_dir, threads=1, plots=False, resume=True)
+    rows = (out_dir / "results.csv").read_text().splitlines()
+    assert len(rows) == 1 + 20, "the resumed study holds every run once"
