@@ -86,8 +86,8 @@ std::vector<std::string> checked_engines(const std::vector<std::string>& asked) 
     std::vector<std::string> engines;
     for (const std::string& name : asked) {
         if (std::find(available.begin(), available.end(), name) == available.end())
-            throw InputError(fmt::format("--engines: no engine '{}' in this build (available: {})", name,
-                                         fmt::join(available, ", ")));
+            throw InputError(fmt::format("--engines: no engine '{}' in this build{} (available: {})", name,
+                                         multibody::engine_name_hint(name), fmt::join(available, ", ")));
         if (name != "analytic") engines.push_back(name);
     }
     return engines;

@@ -51,7 +51,13 @@ std::vector<std::string> parse_engine_list(const std::string& option, const std:
     }
     std::vector<std::string> problems;
     if (engines.empty()) problems.push_back("no engine given");
-    if (!unknown.empty()) problems.push_back(fmt::format("no engine '{}' in this build", fmt::join(unknown, "', '")));
+    if (!unknown.empty()) {
+        std::vector<std::string> meant;  // "'ode' for 'ODE'"
+        for (const std::string& name : unknown)
+            if (const auto m = multibody::engine_meant(name)) meant.push_back(fmt::format("'{}' for '{}'", *m, name));
+        problems.push_back(fmt::format("no engine '{}' in this build{}", fmt::join(unknown, "', '"),
+                                       meant.empty() ? "" : fmt::format(" (did you mean {}?)", fmt::join(meant, ", "))));
+    }
     if (!repeated.empty()) problems.push_back(fmt::format("'{}' named more than once", fmt::join(repeated, "', '")));
     if (!problems.empty())
         throw InputError(fmt::format("{}: {} (available: {}; all: {})", option, fmt::join(problems, "; "),

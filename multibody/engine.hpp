@@ -193,6 +193,11 @@ std::vector<std::string> missing_engines();
 // Engine::display_name() of a backend of this build, from the build-time list (no plugin opened); the name itself
 // otherwise (a report read back without the engine).
 std::string engine_display_name(const std::string& name);
+// For a name that is no backend of this build: the backend it names in other letter cases or by its display name
+// ("ODE", "MuJoCo", "simbody_rigid": ode, mujoco, simbody-rigid), if any.
+std::optional<std::string> engine_meant(const std::string& name);
+// " (did you mean 'ode'?)" for such a name, else "": messages refusing an engine's name end with it.
+std::string engine_name_hint(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
 // except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold
 // bisections take minutes (docs/engines.md, "Simbody"); name it to include it.

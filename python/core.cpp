@@ -568,6 +568,9 @@ PYBIND11_MODULE(_core, m) {
         "Engines and the analytic model from rest under one ground motion (vssw.compare with record= or pulse=).");
     m.def("engine_settings", &engine_settings, py::arg("engine"), "Every setting of one backend.");
     m.def("available_engines", &vssw::multibody::available_engines, "The backends of this build.");
+    m.def("engine_name_hint", &vssw::multibody::engine_name_hint, py::arg("name"),
+          "The end of a message refusing an engine's name: \" (did you mean 'ode'?)\" when it names a backend of this "
+          "build in other letters or by its display name, else empty.");
     m.def("default_compared_engines", &vssw::multibody::default_compared_engines,
           "The engines `all` stands for (every engine but the analytic model and simbody-rigid).");
     m.def("data_dir", &vssw::shipped_data_dir, "The shipped data folder (records, Table 1).");

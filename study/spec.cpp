@@ -550,7 +550,8 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
     const std::vector<std::string> available = multibody::available_engines();
     auto add = [&](const std::string& name, const std::string& key) {
         if (!contains(available, name))
-            r.fail(key, fmt::format("no engine '{}' in this build (available: {})", name, fmt::join(available, ", ")));
+            r.fail(key, fmt::format("no engine '{}' in this build{} (available: {})", name,
+                                    multibody::engine_name_hint(name), fmt::join(available, ", ")));
         if (std::any_of(engines.begin(), engines.end(), [&](const EngineSpec& e) { return e.name == name; }))
             r.fail(key, fmt::format("names engine '{}' twice", name));
         engines.push_back({name, {}});
@@ -573,8 +574,8 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
             }
         for (const auto& item : doc["engines"].items())
             if (!contains(available, item.key()))
-                r.fail("engines", fmt::format("no engine '{}' in this build (available: {})", item.key(),
-                                              fmt::join(available, ", ")));
+                r.fail("engines", fmt::format("no engine '{}' in this build{} (available: {})", item.key(),
+                                              multibody::engine_name_hint(item.key()), fmt::join(available, ", ")));
     } else {
         r.fail("engines", fmt::format("must be a list of engine names or a table of engines, got {}",
                                       io::dump_json(doc["engines"])));

@@ -1008,6 +1008,18 @@ TEST(CliCompare, AllIsEveryEngineButTheReferenceAndSimbodyRigid) {
 TEST(CliCompare, BadEngineListsAreRefusedNamingTheEngines) {
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic,havok,warp"},
                      {"no engine 'havok', 'warp' in this build", "available: analytic"});
+    // A backend's name in other letters, or its display name, gets a suggestion; a name that is none gets none.
+    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "Analytic,warp"},
+                     {"no engine 'Analytic', 'warp' in this build (did you mean 'analytic' for 'Analytic'?)"});
+    EXPECT_EQ(vssw::multibody::engine_name_hint("ANALYTIC"), " (did you mean 'analytic'?)");
+    EXPECT_EQ(vssw::multibody::engine_name_hint("analytic"), "");  // a backend's own name needs no hint
+    EXPECT_EQ(vssw::multibody::engine_name_hint("warp"), "");
+    if (engine_available("mujoco")) {
+        EXPECT_EQ(vssw::multibody::engine_name_hint("MuJoCo"), " (did you mean 'mujoco'?)");
+    }
+    if (engine_available("simbody")) {
+        EXPECT_EQ(vssw::multibody::engine_name_hint("Simbody_Rigid"), " (did you mean 'simbody-rigid'?)");
+    }
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic,analytic"},
                      {"--engine names 'analytic' more than once"});
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", ""},

@@ -195,6 +195,7 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {wall + "[excitation]\nkind = \"scale-to-collapse\"\nfile = \"x\"\ntolerance = 1e-17\n",
          "excitation.tolerance: must be a relative width in [1e-12, 0.1], got 1e-17"},
         {"engines = [\"havok\"]\n" + wall + threshold, "no engine 'havok' in this build"},
+        {"engines = [\"Analytic\"]\n" + wall + threshold, "no engine 'Analytic' in this build (did you mean 'analytic'?)"},
         {"engines = [\"analytic\", \"analytic\"]\n" + wall + threshold, "names engine 'analytic' twice"},
         {"[settings.ode]\ndt = 1e-4\n" + wall + threshold, "settings.ode: settings for an engine the study does not run"},
         {"[settings.analytic]\nrtol = 0\n" + wall + threshold, "settings of analytic (rtol=0)"},

@@ -42,8 +42,8 @@ std::string plugin_file_of(const KnownEngine& engine) {
 const KnownEngine& require_built(const std::string& name) {
     const KnownEngine* known = built_engine(name);
     if (!known)
-        throw InputError(fmt::format("engine '{}' is not available in this build (available: {})", name,
-                                     fmt::join(available_engines(), ", ")));
+        throw InputError(fmt::format("engine '{}' is not available in this build{} (available: {})", name,
+                                     engine_name_hint(name), fmt::join(available_engines(), ", ")));
     return *known;
 }
 
@@ -89,6 +89,31 @@ std::vector<std::string> default_compared_engines() {
 std::string engine_display_name(const std::string& name) {
     const KnownEngine* e = built_engine(name);
     return e ? e->display_name : name;
+}
+
+namespace {
+
+// The name folded for a loose comparison: lower case, '_' as '-' (names are ASCII; anything else stays as it is).
+std::string folded(std::string name) {
+    for (char& c : name) {
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+        else if (c == '_') c = '-';
+    }
+    return name;
+}
+
+}  // namespace
+
+std::optional<std::string> engine_meant(const std::string& name) {
+    if (built_engine(name)) return std::nullopt;
+    for (const KnownEngine& e : kKnownEngines)
+        if (e.built && (folded(name) == folded(e.name) || folded(name) == folded(e.display_name))) return e.name;
+    return std::nullopt;
+}
+
+std::string engine_name_hint(const std::string& name) {
+    const std::optional<std::string> meant = engine_meant(name);
+    return meant ? fmt::format(" (did you mean '{}'?)", *meant) : "";
 }
 
 std::string engine_plugin_file(const std::string& name) {

@@ -305,6 +305,14 @@ def test_progress_true_drives_a_tqdm_bar(monkeypatch):
 SMALL_STUDY = {"name": "small", "wall": FIG6, "excitation": {"kind": "free", "theta0": 0.5}, "metrics": ["period"]}
 
 
+def test_an_engine_named_in_other_letters_gets_a_suggestion():
+    with pytest.raises(vssw.InputError, match=r"'ANALYTIC' is not one of this build's \(did you mean 'analytic'\?\)"):
+        vssw.compare("ANALYTIC", **FIG6)
+    with pytest.raises(vssw.InputError) as raised:
+        vssw.compare("warp", **FIG6)
+    assert "did you mean" not in str(raised.value), "no suggestion for a name that is no backend's"
+
+
 def test_a_list_of_names_refuses_an_empty_list_an_empty_item_and_a_repeated_name():
     for engine, named in [(["ode", "ode"], "'ode' more than once"), ([], "empty list"), ("ode,", "empty item"),
                           ("ode,ode", "'ode' more than once")]:

@@ -255,8 +255,8 @@ def _engine_list(engine):
 def _check_engines(names):
     for name in names:
         if name not in _core.available_engines():
-            raise InputError(f"engine '{name}' is not one of this build's: {', '.join(_core.available_engines())}",
-                             _core.EXIT_BAD_INPUT)
+            raise InputError(f"engine '{name}' is not one of this build's{_core.engine_name_hint(name)}: "
+                             f"{', '.join(_core.available_engines())}", _core.EXIT_BAD_INPUT)
 
 
 # The library's messages about a wall or a ground motion name the command line's options (--pga, --roller): the

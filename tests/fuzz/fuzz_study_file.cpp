@@ -37,6 +37,8 @@ namespace vssw::multibody {
 std::vector<std::string> available_engines() {
     return {"analytic", "bullet", "ode", "simbody", "simbody-rigid", "siconos"};
 }
+// No suggestion for a name that is none of them (the registry's own is tested with it, tests/test_cli.cpp).
+std::string engine_name_hint(const std::string&) { return ""; }
 }  // namespace vssw::multibody
 
 namespace {
