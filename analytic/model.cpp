@@ -246,11 +246,13 @@ RockingRates RockingModel::rates(int side, double q, double theta_dot, double a_
 }
 
 double RockingModel::acceleration(int side, double theta, double theta_dot, double a_h, double a_v) const {
-    return rocking_rates(terms(side * theta), side, theta_dot, a_h, a_v, gravity(), overburden(), eccentricity()).acceleration;
+    return rocking_rates(terms(side * theta), side, theta_dot, a_h, a_v, gravity(), overburden(), eccentricity())
+        .acceleration;
 }
 
 double RockingModel::ground_force(int side, double theta, double a_h, double a_v) const {
-    return rocking_rates(terms(side * theta), side, 0.0, a_h, a_v, gravity(), overburden(), eccentricity()).ground_force;
+    return rocking_rates(terms(side * theta), side, 0.0, a_h, a_v, gravity(), overburden(), eccentricity())
+        .ground_force;
 }
 
 double RockingModel::weight_potential(double theta) const {

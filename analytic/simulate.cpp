@@ -250,7 +250,8 @@ private:
     // The roller's reaction at (t, y) on the current side [N/m], positive when it pushes.
     double roller_reaction(double t, const State& y) const {
         const double a_h = ah_(t), a_v = av_(t);
-        const double acc = rocking_rates(model_.terms(side_ * y[0]), side_, y[1], a_h, a_v, g_, N_, model_.eccentricity()).acceleration;
+        const double acc =
+            rocking_rates(model_.terms(side_ * y[0]), side_, y[1], a_h, a_v, g_, N_, e_N_).acceleration;
         return supports_.reactions(side_, y[0], y[1], acc, a_h, a_v).roller;
     }
     // The guards of the table above at (t, y), with y read through y(i), its component i: a State, or a step's

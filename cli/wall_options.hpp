@@ -54,9 +54,9 @@ struct ModelOptions {
 // roller with the paper's kinematics), naming the options that made them.
 Assumptions resolve_assumptions(const ModelOptions& options);
 
-// --height, --thickness (required), --hinge, --xi, --overburden-eccentricity, --density, --g. `model_choice` (the command also takes --model)
-// only changes the help of --hinge: whether a hinge is required is decided by vssw_geometry(), so that a parapet
-// can be given without one.
+// --height, --thickness (required), --hinge, --xi, --overburden-eccentricity, --density, --g. `model_choice` (the
+// command also takes --model) only changes the help of --hinge: whether a hinge is required is decided by
+// vssw_geometry(), so that a parapet can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
 // --model.
 void add_model_options(CLI::App& cmd, ModelOptions& options);

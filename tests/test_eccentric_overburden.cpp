@@ -28,7 +28,9 @@ const double kSearchTolerance = (0.5 + ThresholdOptions{}.detectable_excess) * T
 
 // Table 1 #7 (4.88 m, 0.200 m, h1/h 0.50), held out from every derivation here, with a heavy overburden so that N's
 // arm matters: at xi 0.5 it is half the threshold.
-VsswGeometry table1_no7(double eccentricity) { return with_eccentricity(make_vssw(4.88, 0.200, 0.50, 0.5), eccentricity); }
+VsswGeometry table1_no7(double eccentricity) {
+    return with_eccentricity(make_vssw(4.88, 0.200, 0.50, 0.5), eccentricity);
+}
 
 double simulated_threshold(const WallScene& scene, int side) {
     const AnalyticEngine engine;
