@@ -132,9 +132,16 @@ Eq11Coefficients Eq11Evaluator::operator()(double abs_theta1) const {
 
 Eq11Coefficients eq11_coefficients(const VsswGeometry& w, double abs_theta1) { return Eq11Evaluator(w)(abs_theta1); }
 
-double eq12_threshold(const VsswGeometry& w, double a_v) {
+double eq12_threshold(const VsswGeometry& w, double a_v, int side) {
+    require(side == 1 || side == -1, "side of tipping", "+1 or -1", side);
     const double g_eff = w.g + a_v;
-    return std::tan(w.alpha1) * (g_eff * (w.m1 + w.m2 * (2.0 + w.k)) + w.N * (2.0 + w.k)) / (w.m1 + w.m2);
+    // eps = 0: (1 + 0) k = k exactly, so a centred N gives Eq. (12)'s number bit for bit.
+    const double lever_N = 2.0 + w.k * (1.0 + side * w.eccentricity);
+    return std::tan(w.alpha1) * (g_eff * (w.m1 + w.m2 * (2.0 + w.k)) + w.N * lever_N) / (w.m1 + w.m2);
+}
+
+double eq12_threshold(const VsswGeometry& w, double a_v) {
+    return eq12_threshold(w, a_v, w.eccentricity > 0.0 ? -1 : 1);  // side eps <= 0: the shorter lever of N
 }
 
 double eq13_threshold_no_overburden(const VsswGeometry& w, double a_v) {
@@ -151,7 +158,14 @@ double eq16_cracking_hinge_ratio(double xi, double t) {
     return 1.0 + (xi + t - std::sqrt((2.0 + t + 2.0 * xi) * (t + xi))) / (2.0 + xi);
 }
 
-double eq17_parapet_threshold(const ParapetGeometry& p) { return p.b / p.h * p.g * (1.0 + p.xi); }
+double eq17_parapet_threshold(const ParapetGeometry& p, int side) {
+    require(side == 1 || side == -1, "side of tipping", "+1 or -1", side);
+    return p.b / p.h * p.g * (1.0 + p.xi * (1.0 - side * p.eccentricity));  // eps = 0: Eq. (17) bit for bit
+}
+
+double eq17_parapet_threshold(const ParapetGeometry& p) {
+    return eq17_parapet_threshold(p, p.eccentricity < 0.0 ? -1 : 1);  // side eps >= 0: N nearer the pivot
+}
 
 double eq18_threshold_ratio(double xi) {
     return 3.0 + 2.0 * std::sqrt(2.0 * xi / (1.0 + xi)) - 1.0 / (1.0 + xi);

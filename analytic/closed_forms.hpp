@@ -52,6 +52,7 @@ public:
     struct Scaled {
         double M, C;     // R1^2 C_A and R1^2 C_S, times cos^3 A2
         double X, Y, L;  // R1 C_H, R1 C_V and R1 C_N as they are (multiplied by cos3 in Eq. 10)
+    double Le;       // k cos(k q): the lever of N's eccentricity per metre (model.hpp's L_e), as L
         double cos3;     // cos^3 A2
     };
     Scaled scaled(double abs_theta1) const;
@@ -86,6 +87,7 @@ inline Eq11Evaluator::Scaled Eq11Evaluator::scaled(double abs_theta1) const {
     r.X = m12_r_ * cA1 - m2_cos_r_ * c;
     r.Y = m12_r_ * sA1 + m2_cos_r_ * s;
     r.L = two_r_ * sA1 + n_cos_r_ * kq.cos - n_sin_r_ * kq.sin;
+    r.Le = k_ * kq.cos;
     r.cos3 = c3;
     return r;
 }
@@ -94,7 +96,14 @@ inline Eq11Evaluator::Scaled Eq11Evaluator::scaled(double abs_theta1) const {
 // Derived, as the paper says, from Eq. (10) at rest: N is a force and does not scale with a_v. As printed, N/g sits
 // inside the bracket multiplied by [g - y''], which contradicts Eq. (10) when both N and y'' are non-zero; the two
 // agree whenever a_v = 0 or N = 0.
+//
+// With N at the eccentricity e = eps b (geometry.hpp) the threshold depends on the direction of tipping: toward the
+// side theta1 > 0 (side +1, under a_h < 0) N's lever at rest is b (2 + k) + e k, the other way b (2 + k) - e k
+// (docs/model/analytic-core.md, "The overburden's position"):
+//   a_c(side) = tan(alpha1) [(g + a_v)(m1 + m2 (2 + k)) + N (2 + k (1 + side eps))] / (m1 + m2).      (12e)
+// Without a side, the lower of the two (the side with side eps <= 0); eps = 0 gives Eq. (12) itself.
 double eq12_threshold(const VsswGeometry& w, double a_v = 0.0);
+double eq12_threshold(const VsswGeometry& w, double a_v, int side);
 // Eq. (13): the same for homogeneous bodies without N: 2 (g + a_v) tan(alpha1) [m/s^2].
 double eq13_threshold_no_overburden(const VsswGeometry& w, double a_v = 0.0);
 // Eq. (14): |x''_t / g| from b, h, h1 and xi (a_v = 0): the static collapse load multiplier.
@@ -104,7 +113,11 @@ double eq15_optimal_hinge_ratio(double xi);
 // Eq. (16): the hinge ratio h1/h of first cracking, with t = f_mt / (W / 2b) the normalised mortar tensile strength.
 double eq16_cracking_hinge_ratio(double xi, double t);
 // Eq. (17): threshold of the parapet wall [m/s^2].
+// With N at e = eps b, toward side +1 (the pivot's corner at eps = +1) its lever at rest is b - e:
+//   a_c(side) = (b / h) g [1 + xi (1 - side eps)]                                                      (17e)
+// so at eps = side, N over the pivot, it is Housner's g b / h whatever N. Without a side, the lower of the two.
 double eq17_parapet_threshold(const ParapetGeometry& p);
+double eq17_parapet_threshold(const ParapetGeometry& p, int side);
 // Eq. (18): VSSW/PW threshold ratio with the hinge at Eq. (15).
 double eq18_threshold_ratio(double xi);
 // Eq. (19): coefficient of restitution of the VSSW (angular momentum about the new base pivot).

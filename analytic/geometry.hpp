@@ -5,8 +5,10 @@
 //
 // Half dimensions throughout, as in the paper: b is the half-thickness, h1 and h2 the half-heights of the lower and
 // upper bodies, h = h1 + h2. Bodies are homogeneous rectangles; masses and inertias are per unit depth of wall
-// (kg/m, kg m): m_i = rho * 2b * 2h_i, I_G,i = m_i R_i^2 / 3. The overburden N = xi * W is a massless force at the
-// centre of the top face; W is the wall's weight per unit depth.
+// (kg/m, kg m): m_i = rho * 2b * 2h_i, I_G,i = m_i R_i^2 / 3. The overburden N = xi * W is a massless vertical force
+// on the top face of the upper body (the only body of a parapet), at the eccentricity e = eccentricity * b from its
+// centre: 0 the centre (the paper's assumption), +1 the top corner on the side the wall tips toward when theta1 > 0,
+// -1 the other (docs/model/analytic-core.md, "The overburden's position"). W is the wall's weight per unit depth.
 
 namespace vssw {
 
@@ -24,6 +26,7 @@ struct VsswGeometry {
     double s;                // sin(alpha2)/sin(alpha1) = R1/R2, factor of Eq. (2)
     // Trigonometric functions of the constant angles, which the equation of motion uses at every evaluation.
     double sin_a1, cos_a1, tan_a1, sin_a2, cos_a2, tan_a2;
+    double eccentricity = 0.0;  // e/b of N on the upper body's top face, in [-1, 1] (with_eccentricity, wall.hpp)
 
     double h() const { return h1 + h2; }
     double hinge_ratio() const { return h1 / h(); }
@@ -36,6 +39,7 @@ struct ParapetGeometry {
     double alpha, R;         // atan(b/h), half-diagonal
     double m, I_G, I_O;      // mass, centroidal and corner polar inertia per unit depth
     double W, N;
+    double eccentricity = 0.0;  // e/b of N on the top face, in [-1, 1] (with_eccentricity, wall.hpp)
 };
 
 }  // namespace vssw

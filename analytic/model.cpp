@@ -42,6 +42,7 @@ public:
     double collapse_angle() const override { return vssw_collapse_angle(w_); }  // the exact kinematics'
     double gravity() const override { return w_.g; }
     double overburden() const override { return w_.N; }
+    double eccentricity() const override { return w_.eccentricity * w_.b; }
     const VsswGeometry* vssw_geometry() const override { return &w_; }
 
 protected:
@@ -63,18 +64,19 @@ double paper_lock_angle(const VsswGeometry& w) { return (w.alpha2 + kHalfPi - st
 
 class PaperVssw final : public VsswModel {
 public:
-    explicit PaperVssw(const VsswGeometry& w) : VsswModel(w), eq11_(w) {}
+    explicit PaperVssw(const VsswGeometry& w) : VsswModel(w), eq11_(w), e_(eccentricity()) {}
     double collapse_angle() const override { return std::min(vssw_collapse_angle(w_), paper_lock_angle(w_)); }
     ModelTerms terms(double q) const override {
         const Eq11Coefficients c = eq11_(q);
         const double R1 = w_.R1;
-        return {R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N};
+        // N's point at e from the top centre rises by -e sin(theta2) = e sin(k q) (Eq. 3): its lever is e k cos(k q).
+        return {R1 * R1 * c.C_A, R1 * R1 * c.C_S, R1 * c.C_H, R1 * c.C_V, R1 * c.C_N, w_.k * std::cos(w_.k * q)};
     }
     RockingRates rates(int side, double q, double theta_dot, double a_h, double a_v) const override {
         // rocking_rates_scaled's Eq. (10) with the levers' common factor cos^3 A2 taken out of their three terms.
         const Eq11Evaluator::Scaled c = eq11_.scaled(q);
         const double sign = side;
-        const double rhs = -c.cos3 * (a_h * c.X + sign * ((a_v + w_.g) * c.Y + w_.N * c.L)) -
+        const double rhs = -c.cos3 * (a_h * c.X + sign * ((a_v + w_.g) * c.Y + w_.N * (c.L + sign * e_ * c.Le))) -
                            sign * c.C * theta_dot * theta_dot;
         return {rhs / c.M, -a_h * c.X - sign * a_v * c.Y};
     }
@@ -85,19 +87,21 @@ public:
         const double theta2 = eq3_theta2_linear(w_, q);
         return top_centre_height(std::cos(w_.alpha1 - q), std::sin(theta2), std::cos(theta2));
     }
+    double load_height_per_eccentricity(double q) const override { return std::sin(w_.k * q); }
     std::string name() const override { return "vssw/paper"; }
     UpperRotation upper_rotation(double q) const override { return {-w_.k * q, -w_.k, 0.0}; }  // Eq. (3)
     std::optional<Kinematics> kinematics() const override { return Kinematics::paper; }
 
 private:
     Eq11Evaluator eq11_;
+    double e_;  // N's eccentricity [m]
 };
 
 // Exact kinematics: psi = alpha2 + theta2 from Eq. (2), sin(psi) = s sin(alpha1 - q). G1 = R1(-sin a, cos a) with
 // a = alpha1 - q (Eq. 1a); G2 = hinge + R2(sin psi, cos psi) (Eq. 1b); the top roller keeps x_G2 = x_hinge / 2.
 class ExactVssw final : public VsswModel {
 public:
-    explicit ExactVssw(const VsswGeometry& w) : VsswModel(w) {}
+    explicit ExactVssw(const VsswGeometry& w) : VsswModel(w), e_(eccentricity()) {}
 
     struct Angles {
         double sa, ca, spsi, cpsi, dpsi, ddpsi;
@@ -134,6 +138,7 @@ public:
         t.X = (w_.m1 + w_.m2) * R1 * g.ca;
         t.Y = w_.m1 * R1 * g.sa + w_.m2 * dy2;
         t.L = 2.0 * R1 * g.sa - (2.0 * w_.h2 * s2 + w_.b * c2) * g.dpsi;
+        t.Le = -c2 * g.dpsi;  // N's point at e from the top centre rises by -e sin(theta2)
         return t;
     }
     // terms(q) multiplied through by cos^4 psi: psi', psi'' and the terms have powers of cos psi as denominators.
@@ -158,7 +163,8 @@ public:
         t.X = X * cpsi4;
         t.Y = Y_c * cpsi3;
         t.L = cpsi3 * (2.0 * R1 * sa * cpsi - (2.0 * w_.h2 * s2 + w_.b * c2) * D);
-        return rocking_rates_scaled(t, X, Y_c / cpsi, side, theta_dot, a_h, a_v, w_.g, w_.N);
+        t.Le = -cpsi3 * c2 * D;
+        return rocking_rates_scaled(t, X, Y_c / cpsi, side, theta_dot, a_h, a_v, w_.g, w_.N, e_);
     }
     double mass_moment_height(double q) const override {
         const Angles g = angles(q);
@@ -169,24 +175,34 @@ public:
         const double s2 = g.spsi * w_.cos_a2 - g.cpsi * w_.sin_a2, c2 = g.cpsi * w_.cos_a2 + g.spsi * w_.sin_a2;
         return top_centre_height(g.ca, s2, c2);
     }
+    double load_height_per_eccentricity(double q) const override {
+        const Angles g = angles(q);
+        return -(g.spsi * w_.cos_a2 - g.cpsi * w_.sin_a2);  // -sin(theta2)
+    }
     std::string name() const override { return "vssw/exact"; }
     std::optional<Kinematics> kinematics() const override { return Kinematics::exact; }
     UpperRotation upper_rotation(double q) const override {  // Eq. (2): theta2 = psi - alpha2
         const Angles g = angles(q);
         return {std::atan2(g.spsi, g.cpsi) - w_.alpha2, g.dpsi, g.ddpsi};
     }
+
+private:
+    double e_;  // N's eccentricity [m]
 };
 
-// Housner's block rocking on a base corner; N at the centre of the top face, (-b, 2h) from the pivot at rest.
+// Housner's block rocking on a base corner; N on the top face at e from its centre, (e - b, 2h) from the pivot at rest.
 class Parapet final : public RockingModel {
 public:
     explicit Parapet(const ParapetGeometry& p) : p_(p) {}
     ModelTerms terms(double q) const override {
         const SinCos a = fast_sincos(p_.alpha - q), turn = fast_sincos(q);
-        return {p_.I_O, 0.0, p_.m * p_.R * a.cos, p_.m * p_.R * a.sin, p_.b * turn.cos - 2.0 * p_.h * turn.sin};
+        return {p_.I_O, 0.0, p_.m * p_.R * a.cos, p_.m * p_.R * a.sin, p_.b * turn.cos - 2.0 * p_.h * turn.sin,
+                -turn.cos};
     }
     double mass_moment_height(double q) const override { return p_.m * p_.R * std::cos(p_.alpha - q); }
     double load_height(double q) const override { return 2.0 * p_.h * std::cos(q) + p_.b * std::sin(q); }
+    double eccentricity() const override { return p_.eccentricity * p_.b; }
+    double load_height_per_eccentricity(double q) const override { return -std::sin(q); }
     double restitution() const override { return housner_restitution(p_.alpha); }
     double reference_angle() const override { return p_.alpha; }
     // The block lies on its face at pi/2; passing alpha alone is not collapse under forcing (the paper, Sect. 2).
@@ -210,30 +226,33 @@ Kinematics parse_kinematics(const std::string& text) {
 const char* to_string(Kinematics k) { return k == Kinematics::paper ? "paper" : "exact"; }
 
 RockingRates rocking_rates(const ModelTerms& t, int side, double theta_dot, double a_h, double a_v, double g,
-                           double N) {
+                           double N, double e) {
     const double sign = side;
     const double ground = -a_h * t.X - sign * a_v * t.Y;
-    const double rhs = ground - sign * (g * t.Y + N * t.L + t.C * theta_dot * theta_dot);
+    const double rhs = ground - sign * (g * t.Y + N * (t.L + sign * e * t.Le) + t.C * theta_dot * theta_dot);
     return {rhs / t.M, ground};
 }
 
 RockingRates rocking_rates_scaled(const ModelTerms& t, double X, double Y, int side, double theta_dot,
-                                  double a_h, double a_v, double g, double N) {
+                                  double a_h, double a_v, double g, double N, double e) {
     const double sign = side;
-    const double rhs = -a_h * t.X - sign * (a_v * t.Y + g * t.Y + N * t.L + t.C * theta_dot * theta_dot);
+    const double rhs =
+        -a_h * t.X - sign * (a_v * t.Y + g * t.Y + N * (t.L + sign * e * t.Le) + t.C * theta_dot * theta_dot);
     return {rhs / t.M, -a_h * X - sign * a_v * Y};
 }
 
 RockingRates RockingModel::rates(int side, double q, double theta_dot, double a_h, double a_v) const {
-    return rocking_rates(terms(q), side, theta_dot, a_h, a_v, gravity(), overburden());
+    return rocking_rates(terms(q), side, theta_dot, a_h, a_v, gravity(), overburden(), eccentricity());
 }
 
 double RockingModel::acceleration(int side, double theta, double theta_dot, double a_h, double a_v) const {
-    return rocking_rates(terms(side * theta), side, theta_dot, a_h, a_v, gravity(), overburden()).acceleration;
+    return rocking_rates(terms(side * theta), side, theta_dot, a_h, a_v, gravity(), overburden(), eccentricity())
+        .acceleration;
 }
 
 double RockingModel::ground_force(int side, double theta, double a_h, double a_v) const {
-    return rocking_rates(terms(side * theta), side, 0.0, a_h, a_v, gravity(), overburden()).ground_force;
+    return rocking_rates(terms(side * theta), side, 0.0, a_h, a_v, gravity(), overburden(), eccentricity())
+        .ground_force;
 }
 
 double RockingModel::weight_potential(double theta) const {
@@ -241,7 +260,12 @@ double RockingModel::weight_potential(double theta) const {
 }
 
 double RockingModel::overburden_work(double theta) const {
-    return -overburden() * (load_height(std::abs(theta)) - load_height(0.0));
+    const double q = std::abs(theta), e = eccentricity();
+    if (e == 0.0) return -overburden() * (load_height(q) - load_height(0.0));
+    // Mirrored, the wall sees N at -e (model.hpp).
+    const double side_e = theta < 0.0 ? -e : e;
+    return -overburden() * (load_height(q) - load_height(0.0) +
+                            side_e * (load_height_per_eccentricity(q) - load_height_per_eccentricity(0.0)));
 }
 
 double RockingModel::kinetic(double theta, double theta_dot) const {
@@ -272,10 +296,14 @@ double RockingModel::unstable_equilibrium() const {
     return 0.5 * (lo + hi);
 }
 
-double RockingModel::rest_threshold(double a_v) const {
+double RockingModel::rest_threshold(double a_v, int side) const {
     const ModelTerms t = terms(0.0);
-    return ((gravity() + a_v) * t.Y + overburden() * t.L) / t.X;
+    return ((gravity() + a_v) * t.Y + overburden() * (t.L + side * eccentricity() * t.Le)) / t.X;
 }
+
+double RockingModel::rest_threshold(double a_v) const { return rest_threshold(a_v, easier_side()); }
+
+int RockingModel::easier_side() const { return rest_threshold(0.0, 1) < rest_threshold(0.0, -1) ? 1 : -1; }
 
 double restitution_from_peaks(const RockingModel& m, double peak_before, double peak_after) {
     return std::sqrt(m.potential(peak_after) / m.potential(peak_before));
@@ -300,6 +328,8 @@ public:
     }
     double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
     double load_height(double q) const override { return model_->load_height(q); }
+    double eccentricity() const override { return model_->eccentricity(); }
+    double load_height_per_eccentricity(double q) const override { return model_->load_height_per_eccentricity(q); }
     double restitution() const override { return e_; }
     double reference_angle() const override { return model_->reference_angle(); }
     double collapse_angle() const override { return model_->collapse_angle(); }
@@ -325,6 +355,8 @@ public:
     }
     double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
     double load_height(double q) const override { return model_->load_height(q); }
+    double eccentricity() const override { return model_->eccentricity(); }
+    double load_height_per_eccentricity(double q) const override { return model_->load_height_per_eccentricity(q); }
     double restitution() const override { return model_->restitution(); }
     double reference_angle() const override { return model_->reference_angle(); }
     double collapse_angle() const override { return std::min(stop_, model_->collapse_angle()); }

@@ -1,10 +1,13 @@
 #pragma once
 // One-degree-of-freedom rocking models in Lagrangian form. For q = |theta1| >= 0 a model gives the mass function
 // M(q), the Coriolis coefficient C(q) (= M'(q)/2 for a Lagrangian system), and the lever functions
-//   X(q) = sum_i m_i dx_Gi/dq,  Y(q) = sum_i m_i dy_Gi/dq,  L(q) = dy_N/dq,
+//   X(q) = sum_i m_i dx_Gi/dq,  Y(q) = sum_i m_i dy_Gi/dq,  L(q) = dy_N/dq (N at the top face's centre),
+//   L_e(q) = d/dq of the rise that N's point gains per metre of eccentricity e toward the side of rocking,
 // so that for theta1 > 0 the equation of motion (10) reads
-//   M theta1'' + C theta1'^2 = -a_h X - (g + a_v) Y - N L,
-// and for theta1 < 0 the mirrored mechanism gives the same with the signs of C, Y and L flipped (Eq. 10's sgn).
+//   M theta1'' + C theta1'^2 = -a_h X - (g + a_v) Y - N (L + e L_e),
+// and for theta1 < 0 the mirrored mechanism gives the same with the signs of C, Y and L flipped and e replaced by -e
+// (Eq. 10's sgn; a mirrored wall sees N on the other side of the centre: docs/model/analytic-core.md, "The
+// overburden's position").
 // a_h is the horizontal ground acceleration, a_v the vertical one (up positive).
 //
 // Three models: the paper's VSSW (Eq. 11 as printed, Eq. 3 inside), the exact VSSW (Eq. 2 in a Lagrangian), and the
@@ -26,7 +29,8 @@ struct ModelTerms {
     double C;  // Coriolis coefficient
     double X;  // horizontal lever sum m_i dx_i/dq [kg m / m]
     double Y;  // vertical lever sum m_i dy_i/dq
-    double L;  // lever of the overburden dy_N/dq [m]
+    double L;  // lever of the overburden dy_N/dq [m], N at the top face's centre
+    double Le = 0.0;  // the eccentricity's lever: d/dq of N's point's extra rise per metre of e [-]
 };
 
 // theta1'' and the ground's generalised force from terms already evaluated at q = side * theta1 (the mirror rule).
@@ -34,14 +38,15 @@ struct RockingRates {
     double acceleration;  // theta1''
     double ground_force;  // generalised force of the ground motion (its power is this times theta1')
 };
+// e: N's eccentricity [m] toward the side theta1 > 0 (RockingModel::eccentricity()).
 RockingRates rocking_rates(const ModelTerms& t, int side, double theta_dot, double a_h, double a_v, double g,
-                           double N);
+                           double N, double e);
 // The same from the five terms all multiplied by one common non-zero factor (Eq. 10 is homogeneous in them), with X
 // and Y unscaled for the ground's force: the VSSW models' terms share a power of a cosine as denominator, and
 // multiplied through by it they need no division, leaving theta1'' one division at the end instead of two on every
 // stage's chain of dependent operations.
 RockingRates rocking_rates_scaled(const ModelTerms& scaled, double X, double Y, int side, double theta_dot,
-                                  double a_h, double a_v, double g, double N);
+                                  double a_h, double a_v, double g, double N, double e);
 
 class RockingModel {
 public:
@@ -53,6 +58,10 @@ public:
     // Sum m_i y_Gi(q) (the bodies' weight potential is g times it) and the height of N's point, both for q >= 0.
     virtual double mass_moment_height(double q) const = 0;
     virtual double load_height(double q) const = 0;
+    // N's eccentricity e [m] toward the side theta1 > 0 (0: the paper's centreline), and the rise N's point gains per
+    // metre of it at q >= 0 on side +1: N's point is at load_height(q) + side e load_height_per_eccentricity(q).
+    virtual double eccentricity() const { return 0.0; }
+    virtual double load_height_per_eccentricity(double /*q*/) const { return 0.0; }
     virtual double restitution() const = 0;     // impact map theta1'+ = e theta1'- (Eq. 19, or Housner's e)
     virtual double reference_angle() const = 0; // alpha1 (VSSW) or alpha (PW): where rotations are normalised
     virtual double collapse_angle() const = 0;  // |theta1| at which the wall counts as overturned (docs/model/analytic-core.md, "Overturning")
@@ -85,8 +94,12 @@ public:
     double reference_energy() const { return potential(reference_angle()); }
     // Reference velocity: sqrt(2 |V_r| / M(0)); equals Eq. (24) for the VSSW with N = 0.
     double reference_velocity() const;
-    // Smallest |a_h| that tips the wall off rest, from the equation of motion at q = 0.
+    // Smallest |a_h| that tips the wall off rest toward `side` (+1: theta1 > 0, which a_h < 0 does), from the
+    // equation of motion at q = 0; without a side, the lower of the two (they differ only when N is eccentric).
+    double rest_threshold(double a_v, int side) const;
     double rest_threshold(double a_v) const;
+    // The side whose rest threshold is the lower: -1 (tipped by a_h > 0) on a tie, as on every centred wall.
+    int easier_side() const;
     // The unstable equilibrium: the |theta1| in (0, collapse angle) where the potential (weights and overburden) is
     // largest. Past it, with the ground still, the wall falls outward; nothing standing can rest there, which is how
     // a folded engine wall (at rest at 3-4 alpha1 short of the collapse angle) is told from a standing one.

@@ -112,6 +112,7 @@ public:
           av_stages_(av),
           opt_(o),
           rest_terms_(model.terms(0.0)),
+          e_N_(model.eccentricity()),
           e_(model.restitution()),
           g_(model.gravity()),
           N_(model.overburden()),
@@ -154,7 +155,8 @@ private:
     double tipping_margin(double t) const {
         const double a_h = ah_(t), a_v = av_(t);
         const ModelTerms& r = rest_terms_;
-        return std::abs(a_h) * r.X - ((g_ + a_v) * r.Y + N_ * r.L);
+        const double toward = a_h > 0.0 ? -1.0 : 1.0;  // a_h > 0 tips the wall toward theta1 < 0, which sees -e
+        return std::abs(a_h) * r.X - ((g_ + a_v) * r.Y + N_ * (r.L + toward * e_N_ * r.Le));
     }
 
     double next_breakpoint(double t) const {
@@ -248,7 +250,8 @@ private:
     // The roller's reaction at (t, y) on the current side [N/m], positive when it pushes.
     double roller_reaction(double t, const State& y) const {
         const double a_h = ah_(t), a_v = av_(t);
-        const double acc = rocking_rates(model_.terms(side_ * y[0]), side_, y[1], a_h, a_v, g_, N_).acceleration;
+        const double acc =
+            rocking_rates(model_.terms(side_ * y[0]), side_, y[1], a_h, a_v, g_, N_, e_N_).acceleration;
         return supports_.reactions(side_, y[0], y[1], acc, a_h, a_v).roller;
     }
     // The guards of the table above at (t, y), with y read through y(i), its component i: a State, or a step's
@@ -337,6 +340,7 @@ private:
     MotionAtStages ah_stages_, av_stages_;  // the same motions, as the right-hand side reads them
     SimulationOptions opt_;
     ModelTerms rest_terms_;
+    double e_N_;  // N's eccentricity [m] (model.hpp)
     double e_, g_, N_, alpha_, collapse_, v_ref_, motion_end_, rest_scan_step_;  // the model's constants, read once
     Dop853<3, Rhs> integrator_;
     SupportMonitor supports_;

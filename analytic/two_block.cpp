@@ -61,7 +61,8 @@ TwoBlockWall::Offsets TwoBlockWall::offsets(WallPoint p) const {
         case WallPoint::upper_centroid: o = {hinge, Vec2(b, h2)}; break;
         case WallPoint::roller_corner: o = {hinge, Vec2(2.0 * b, 2.0 * h2)}; break;
         case WallPoint::far_top_corner: o = {hinge, Vec2(0.0, 2.0 * h2)}; break;
-        case WallPoint::top_centre: o = {hinge, Vec2(b, 2.0 * h2)}; break;
+        // N's point: the top face's centre moved by e toward the side theta1 > 0, which the mirror sees as -e.
+        case WallPoint::top_centre: o = {hinge, Vec2(b + side_ * w_.eccentricity * b, 2.0 * h2)}; break;
     }
     o.lower.x() *= side_;
     o.upper.x() *= side_;

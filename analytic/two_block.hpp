@@ -68,7 +68,7 @@ enum class WallPoint {
     hinge,           // the lower block's top corner on the far face, on which the upper block turns
     roller_corner,   // the upper block's top corner on the pivot's face (on the roller in the one-DOF mechanism)
     far_top_corner,  // the upper block's top corner on the other face (facing the other guide, x = -2b side)
-    top_centre,      // centre of the upper block's top face, where N acts
+    top_centre,      // where N acts: the upper block's top face's centre, or e from it (geometry.hpp)
 };
 
 // The two vertical guides that hold the top (see the header comment).

@@ -167,4 +167,24 @@ ParapetGeometry make_parapet(double height, double thickness, double xi, double 
     return p;
 }
 
+namespace {
+
+double checked_eccentricity(double ratio) {
+    require(std::isfinite(ratio) && ratio >= -1.0 && ratio <= 1.0, "overburden eccentricity e/b",
+            "a number in [-1, 1] (the top face's corners)", ratio);
+    return ratio;
+}
+
+}  // namespace
+
+VsswGeometry with_eccentricity(VsswGeometry w, double ratio) {
+    w.eccentricity = checked_eccentricity(ratio);
+    return w;
+}
+
+ParapetGeometry with_eccentricity(ParapetGeometry p, double ratio) {
+    p.eccentricity = checked_eccentricity(ratio);
+    return p;
+}
+
 }  // namespace vssw

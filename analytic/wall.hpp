@@ -31,6 +31,10 @@ VsswGeometry make_vssw(double height, double thickness, double hinge_ratio, doub
 // From the paper's parameter set (alpha1, alpha2, R1).
 VsswGeometry make_vssw_from_angles(double alpha1, double alpha2, double R1, double xi = 0.0,
                                    double density = kDefaultDensity, double g = kDefaultGravity);
+// The same wall with N at the eccentricity e/b = ratio of the (upper) body's top face (geometry.hpp); InputError unless
+// the ratio is a number in [-1, 1] (the face's corners).
+VsswGeometry with_eccentricity(VsswGeometry w, double ratio);
+ParapetGeometry with_eccentricity(ParapetGeometry p, double ratio);
 ParapetGeometry make_parapet(double height, double thickness, double xi = 0.0, double density = kDefaultDensity,
                              double g = kDefaultGravity);
 

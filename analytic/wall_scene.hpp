@@ -22,6 +22,9 @@ struct Wall {
     double alpha() const { return vssw ? vssw->alpha1 : parapet->alpha; }  // reference angle alpha1 or alpha
     double gravity() const { return vssw ? vssw->g : parapet->g; }
     double overburden() const { return vssw ? vssw->N : parapet->N; }  // N [N/m]
+    // N's point on the (upper) body's top face: e/b in [-1, 1], and e [m] toward the side theta1 > 0 (geometry.hpp).
+    double overburden_eccentricity() const { return vssw ? vssw->eccentricity : parapet->eccentricity; }
+    double overburden_offset() const { return overburden_eccentricity() * (vssw ? vssw->b : parapet->b); }
 };
 
 // Throws InputError unless exactly one description (VSSW or parapet) is set: every backend's first check.

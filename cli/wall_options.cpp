@@ -25,6 +25,17 @@ const char* to_string(WallKind kind) { return kind == WallKind::vssw ? "vssw" : 
 
 const char* reference_angle_name(WallKind kind) { return kind == WallKind::vssw ? "alpha1" : "alpha"; }
 
+namespace {
+
+void add_eccentricity_option(CLI::App& cmd, WallOptions& o) {
+    cmd.add_option("--overburden-eccentricity", o.eccentricity,
+                   "where N acts on the (upper) body's top face, e/b in [-1, 1]: 0 the centre (the paper's "
+                   "assumption, default), +1 the corner on the side the wall tips toward when theta1 > 0, -1 the "
+                   "other corner");
+}
+
+}  // namespace
+
 void add_wall_options(CLI::App& cmd, WallOptions& o, bool model_choice) {
     cmd.add_option("--height", o.height, "full wall height 2h [m] (required)")->required();
     cmd.add_option("--thickness", o.thickness, "full wall thickness 2b [m] (required)")->required();
@@ -34,9 +45,11 @@ void add_wall_options(CLI::App& cmd, WallOptions& o, bool model_choice) {
                        "--model parapet)"
                      : "hinge height ratio h1/h in (0, 1) (required)");
     cmd.add_option("--xi", o.xi, "overburden ratio N/W >= 0 (default 0)");
+    add_eccentricity_option(cmd, o);
     cmd.add_option("--density", o.density, fmt::format("masonry density [kg/m^3] (default {})", kDefaultDensity));
     cmd.add_option("--g", o.g, fmt::format("gravity [m/s^2] (default {})", kDefaultGravity));
 }
+
 
 void add_model_options(CLI::App& cmd, ModelOptions& o) {
     cmd.add_option("--model", o.model, "vssw (two blocks with a top roller) or parapet (one block) (default vssw)");
@@ -84,11 +97,11 @@ std::string unilateral_with_paper_kinematics(const ModelOptions& o) {
 
 VsswGeometry vssw_geometry(const WallOptions& o) {
     if (!o.hinge) throw InputError("--hinge (the hinge height ratio h1/h) is required for a VSSW");
-    return make_vssw(o.height, o.thickness, *o.hinge, o.xi, o.density, o.g);
+    return with_eccentricity(make_vssw(o.height, o.thickness, *o.hinge, o.xi, o.density, o.g), o.eccentricity);
 }
 
 ParapetGeometry parapet_geometry(const WallOptions& o) {
-    return make_parapet(o.height, o.thickness, o.xi, o.density, o.g);
+    return with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity);
 }
 
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
@@ -125,13 +138,16 @@ io::Json wall_inputs_json(const WallOptions& o, WallKind kind) {
     j["xi"] = o.xi;
     j["density"] = o.density;
     j["g"] = o.g;
+    if (o.eccentricity != 0.0) j["overburden_eccentricity"] = o.eccentricity;
     return j;
 }
 
 std::string describe_wall(const WallOptions& o, WallKind kind) {
     const std::string hinge = kind == WallKind::vssw && o.hinge ? fmt::format(", hinge h1/h {}", *o.hinge) : "";
-    return fmt::format("{}: height {} m, thickness {} m{}, xi {}, density {} kg/m^3, g {} m/s^2",
-                       kind == WallKind::vssw ? "VSSW" : "parapet", o.height, o.thickness, hinge, o.xi, o.density, o.g);
+    const std::string at = o.eccentricity != 0.0 ? fmt::format(" at e/b {}", o.eccentricity) : "";
+    return fmt::format("{}: height {} m, thickness {} m{}, xi {}{}, density {} kg/m^3, g {} m/s^2",
+                       kind == WallKind::vssw ? "VSSW" : "parapet", o.height, o.thickness, hinge, o.xi, at, o.density,
+                       o.g);
 }
 
 }  // namespace vssw::cli

@@ -27,6 +27,7 @@ struct WallOptions {
     double thickness = 0.0;       // full thickness 2b [m]
     std::optional<double> hinge;  // h1/h, required for a VSSW
     double xi = 0.0;              // N/W
+    double eccentricity = 0.0;    // e/b of N on the (upper) body's top face, in [-1, 1] (analytic/geometry.hpp)
     double density = kDefaultDensity;
     double g = kDefaultGravity;
 };
@@ -53,9 +54,9 @@ struct ModelOptions {
 // roller with the paper's kinematics), naming the options that made them.
 Assumptions resolve_assumptions(const ModelOptions& options);
 
-// --height, --thickness (required), --hinge, --xi, --density, --g. `model_choice` (the command also takes --model)
-// only changes the help of --hinge: whether a hinge is required is decided by vssw_geometry(), so that a parapet
-// can be given without one.
+// --height, --thickness (required), --hinge, --xi, --overburden-eccentricity, --density, --g. `model_choice` (the
+// command also takes --model) only changes the help of --hinge: whether a hinge is required is decided by
+// vssw_geometry(), so that a parapet can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
 // --model.
 void add_model_options(CLI::App& cmd, ModelOptions& options);
@@ -89,7 +90,8 @@ ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options);
 io::Json assumptions_json(const ChosenModel& chosen);
 std::string describe_assumptions(const ChosenModel& chosen);
 
-// The wall as given, for the JSON outputs: height, thickness, hinge_ratio (null for a parapet), xi, density, g.
+// The wall as given, for the JSON outputs: height, thickness, hinge_ratio (null for a parapet), xi, density, g, and
+// overburden_eccentricity when it is not 0 (a centred N's outputs are those of before it existed).
 io::Json wall_inputs_json(const WallOptions& options, WallKind kind);
 // One line naming the wall, e.g. "VSSW  height 4 m, thickness 0.4 m, hinge h1/h 0.7, xi 0, density 1800 kg/m^3".
 std::string describe_wall(const WallOptions& options, WallKind kind);

@@ -64,15 +64,17 @@ namespace {
 struct DepartureFromRest {
     double q2, k;
 
-    static DepartureFromRest of(const multibody::WallScene& scene) {
+    // Toward `side` (+1: theta1 > 0), the side the trials tip it.
+    static DepartureFromRest of(const multibody::WallScene& scene, int side) {
         const auto model = analytic_model(scene, Kinematics::exact);
         const double alpha = model->reference_angle();
-        const double a_c = model->rest_threshold(0.0);
+        const double a_c = model->rest_threshold(0.0, side);
         const ModelTerms rest = model->terms(0.0);
-        // Side +1 tips under a_h < 0 (engine.hpp's sign convention).
-        const double step = kGrowthStep * alpha;
-        const double q2 = (model->acceleration(1, step, 0.0, -a_c, 0.0) -
-                           model->acceleration(1, 0.0, 0.0, -a_c, 0.0)) / step;
+        // Side +1 tips under a_h < 0 (engine.hpp's sign convention); side -1 is its mirror image, the angle and its
+        // acceleration negated (exactly, so that a centred N gives side +1's numbers bit for bit).
+        const double step = kGrowthStep * alpha, s = side;
+        const double q2 = s * (model->acceleration(side, s * step, 0.0, -s * a_c, 0.0) -
+                               model->acceleration(side, 0.0, 0.0, -s * a_c, 0.0)) / step;
         return {q2, a_c * rest.X / rest.M};  // k: theta1'' at rest per unit relative excess
     }
     // Time for an excess eps to turn the wall to `angle` [rad].
@@ -116,6 +118,11 @@ struct DepartureFromRest {
 
 }  // namespace
 
+int trial_side(const multibody::WallScene& scene, const ThresholdOptions& o) {
+    require(o.side == 0 || o.side == 1 || o.side == -1, "threshold trials' side", "-1, 0 or +1", o.side);
+    return o.side != 0 ? o.side : analytic_model(scene, Kinematics::exact)->easier_side();
+}
+
 double threshold_hold_time(const multibody::WallScene& scene, const ThresholdOptions& o) {
     require(o.rel_tol > 0.0 && o.rel_tol < 0.1, "threshold relative tolerance", "in (0, 0.1)", o.rel_tol);
     require(o.lift_angle > 0.0 && o.lift_angle < 1.0, "lift angle (units of alpha)", "in (0, 1)", o.lift_angle);
@@ -123,7 +130,7 @@ double threshold_hold_time(const multibody::WallScene& scene, const ThresholdOpt
             "in (0, 1]", o.detectable_excess);
     require(o.hold_margin >= 1.0 && std::isfinite(o.hold_margin), "hold margin", ">= 1", o.hold_margin);
     if (o.hold_time > 0.0) return o.hold_time;
-    const DepartureFromRest departure = DepartureFromRest::of(scene);
+    const DepartureFromRest departure = DepartureFromRest::of(scene, trial_side(scene, o));
     return o.hold_margin * departure.time_to(o.lift_angle * scene.alpha(), o.detectable_excess * o.rel_tol);
 }
 
@@ -139,19 +146,21 @@ ThresholdResult find_threshold(const multibody::Engine& engine, const multibody:
     const double hold = threshold_hold_time(scene, o);
     const double g = scene.gravity();
     const double lift = o.lift_angle * scene.alpha();
-    const double estimate_g = analytic_model(scene, Kinematics::exact)->rest_threshold(0.0) / g;
+    const int side = trial_side(scene, o);
+    const double estimate_g = analytic_model(scene, Kinematics::exact)->rest_threshold(0.0, side) / g;
+    const double push = -side;  // a_h > 0 tips the wall toward theta1 < 0
     const double cap_g = o.max_over_estimate * estimate_g;
 
     multibody::EngineSettings trial_settings = settings;
     trial_settings.sample_dt = std::max(settings.sample_dt, o.sample_dt);
     ThresholdResult result{kNaN, 0.0, kNaN, 0, hold};
-    const DepartureFromRest departure = DepartureFromRest::of(scene);
+    const DepartureFromRest departure = DepartureFromRest::of(scene, side);
     // The threshold the last trial that lifted points at: the one under which the analytic wall's departure from
     // rest (DepartureFromRest) reaches the lift angle when the engine's wall did.
     double pointed_g = kNaN;
     auto lifts = [&](double a_g) {
         multibody::Excitation ex;
-        ex.horizontal = ramp_and_hold(a_g * g, o.ramp_time, hold);
+        ex.horizontal = ramp_and_hold(push * a_g * g, o.ramp_time, hold);
         ex.theta0 = 0.0;
         ex.t_end = o.ramp_time + hold;
         ex.stop_at_rest = false;

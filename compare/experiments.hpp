@@ -73,6 +73,10 @@ struct ThresholdOptions {
     // from rest) rather than at the bracket's middle: the bracket closes in about 2 trials instead of 8, and the
     // answer is the same bracket logic (a lower end that did not lift, an upper end that did). false: bisection only.
     bool guided = true;
+    // Which way the trials tip the wall: +1 toward theta1 > 0 (a_h < 0), -1 the other way (a_h > 0), 0 the way its
+    // rest threshold is lower (-1 on a tie, as on every wall with N at the centre). The two differ only when N is
+    // eccentric (docs/model/analytic-core.md, "The overburden's position"); the answer is the chosen side's.
+    int side = 0;
 };
 
 struct ThresholdResult {
@@ -84,6 +88,8 @@ struct ThresholdResult {
 
 // Ground motion of one trial: the smooth ramp to `amplitude` [m/s^2] over ramp_time, then held for hold_time.
 GroundMotion ramp_and_hold(double amplitude, double ramp_time, double hold_time);
+// The side the trials tip the wall: options.side, or when 0 the scene's easier side (RockingModel::easier_side).
+int trial_side(const multibody::WallScene& scene, const ThresholdOptions& options = {});
 // The hold of the reasoning above, for a scene.
 double threshold_hold_time(const multibody::WallScene& scene, const ThresholdOptions& options = {});
 // Smallest constant horizontal ground acceleration that lifts the wall off rest, by bisection on trials. An

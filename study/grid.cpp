@@ -35,9 +35,9 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "g",     "kinematics", "impact",   "roller", "kind",  "theta0",
                                                "file",  "scale",     "pga",       "shape",  "amplitude",
                                                "pulse_period", "alpha", "R"};
-const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "units", "duration",
-                                                "tolerance", "max_pga", "step", "perturbation", "pgv", "sa", "arias",
-                                                "sa_period", "sa_damping", "response_tail"};
+const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "overburden_eccentricity",
+                                                "units", "duration", "tolerance", "max_pga", "step", "perturbation",
+                                                "pgv", "sa", "arias", "sa_period", "sa_damping", "response_tail"};
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
@@ -438,14 +438,18 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
         height = 2.0 * l.num("R", 0.0) * std::cos(l.num("alpha", 0.0));
         thickness = 2.0 * l.num("R", 0.0) * std::sin(l.num("alpha", 0.0));
     }
+    const double eccentricity = l.num("overburden_eccentricity", 0.0);  // N's e/b (analytic/geometry.hpp)
     if (c.model == "parapet") {
-        c.scene = multibody::WallScene::of(make_parapet(height, thickness, c.xi, c.density, c.g));
+        c.scene = multibody::WallScene::of(
+            with_eccentricity(make_parapet(height, thickness, c.xi, c.density, c.g), eccentricity));
     } else if (l.has("alpha1")) {
-        c.scene = multibody::WallScene::of(make_vssw_from_angles(l.num("alpha1", 0.0), l.num("alpha2", 0.0),
-                                                                 l.num("R1", 0.0), c.xi, c.density, c.g));
+        c.scene = multibody::WallScene::of(with_eccentricity(
+            make_vssw_from_angles(l.num("alpha1", 0.0), l.num("alpha2", 0.0), l.num("R1", 0.0), c.xi, c.density, c.g),
+            eccentricity));
     } else {
         if (!hinge) throw InputError("a VSSW needs a hinge ratio");
-        c.scene = multibody::WallScene::of(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g));
+        c.scene = multibody::WallScene::of(
+            with_eccentricity(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g), eccentricity));
     }
 }
 

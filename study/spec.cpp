@@ -29,7 +29,8 @@
 namespace vssw::study {
 
 const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thickness", "alpha", "R",      "alpha1",
-                                            "alpha2", "R1",      "hinge",  "xi",        "density", "g"};
+                                            "alpha2", "R1",      "hinge",  "xi",        "overburden_eccentricity",
+                                            "density", "g"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "pgv",      "sa",        "arias",
@@ -169,6 +170,13 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
         const double x = r.number(v, key, "a Table 1 specimen number");
         if (x != std::floor(x) || x < 1.0 || x > kMaxSpecimen)
             r.fail(key, fmt::format("must be a Table 1 specimen number, got {}", io::dump_json(v)));
+        return x;
+    }
+    if (k == "overburden_eccentricity") {
+        const double x = r.number(v, key, "e/b in [-1, 1]");
+        if (!(x >= -1.0 && x <= 1.0))
+            r.fail(key, fmt::format("must be N's eccentricity e/b in [-1, 1] (the top face's corners), got {}",
+                                    io::dump_json(v)));
         return x;
     }
     if (k == "xi") {

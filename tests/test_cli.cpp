@@ -176,6 +176,21 @@ TEST(CliWall, OverburdenAndDensityReachTheClosedForms) {
     EXPECT_EQ(j["xi"].get<double>(), 0.5);
 }
 
+// N at a corner: the wall reports the lower threshold of the two directions, Eq. (12e) with N's arm 2b + k(b - e),
+// which at e/b = +1 is N over the hinge's lever alone (2b): the same as e/b = -1 by mirror symmetry.
+TEST(CliWall, EccentricOverburdenGivesTheLowerThresholdOfTheTwoDirections) {
+    const std::vector<std::string> base = {"wall", "--height", "1.5", "--thickness", "0.11", "--hinge", "0.6", "--xi",
+                                           "0.5"};
+    const vssw::VsswGeometry w = vssw::make_vssw(1.5, 0.11, 0.6, 0.5);
+    const double over_hinge = std::tan(w.alpha1) * (w.g * (w.m1 + w.m2 * (2.0 + w.k)) + 2.0 * w.N) / (w.m1 + w.m2);
+    for (const char* eps : {"1", "-1"}) {
+        const Json j = run_json(base + std::vector<std::string>{"--overburden-eccentricity", eps});
+        EXPECT_NEAR(j["threshold_g"].get<double>(), over_hinge / w.g, kRoundoff) << eps;
+        EXPECT_EQ(j["overburden_eccentricity"].get<double>(), std::stod(eps));
+    }
+    EXPECT_FALSE(run_json(base).contains("overburden_eccentricity"));  // centred: the output of before
+}
+
 TEST(CliWall, RollerLimitIsNullAtAndBelowMidHeight) {
     for (const char* hinge : {"0.5", "0.46"}) {
         const Json j = run_json({"wall", "--height", "4", "--thickness", "0.4", "--hinge", hinge});
@@ -450,6 +465,9 @@ INSTANTIATE_TEST_SUITE_P(
         bad("HingeAboveOne", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "1.2"}, {"hinge", "1.2"}),
         bad("HingeZero", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0"}, {"hinge", "got 0"}),
         bad("NegativeXi", with_fig6({"wall", "--xi", "-0.1"}), {"xi", "-0.1"}),
+        bad("EccentricityPastTheCorner",
+            with_fig6({"compare", "--engine", "analytic", "--overburden-eccentricity", "1.5"}),
+            {"overburden eccentricity e/b", "[-1, 1]", "got 1.5"}),
         bad("NanHeight", {"wall", "--height", "nan", "--thickness", "0.4", "--hinge", "0.7"}, {"height", "nan"}),
         bad("NonNumericHeight", {"wall", "--height", "abc", "--thickness", "0.4", "--hinge", "0.7"},
             {"--height", "abc"}),

@@ -16,6 +16,7 @@
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/simulate.hpp"
+#include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
 #include "compare/metrics.hpp"
 #include "compare/targets.hpp"
@@ -181,6 +182,29 @@ TEST_P(CrossEngine, OverburdenRaisesTheThresholdAsEq12Says) {
     const compare::ThresholdResult heavy = compare::find_threshold(*engine_, settings_, table1_specimen11(0.5));
     const double expected = eq12_threshold(*table1_specimen11(0.5).vssw) / eq12_threshold(*table1_specimen11(0.0).vssw);
     EXPECT_NEAR(heavy.value_g / light.value_g / expected - 1.0, 0.0, 2.0 * kThresholdTarget);
+}
+
+// N at a corner of the top face (docs/model/analytic-core.md, "The overburden's position"): on Table 1 #7 at xi 0.5
+// the threshold differs by the side of tipping (Eq. 12e: 0.328 g toward the corner, 0.246 g away from it), and the
+// engine must find each side's; on a parapet with N over the corner it pivots about, N has no arm (Eq. 17e: Housner's
+// g b / h whatever N), so the threshold is the bare block's, which N at the centre would raise by a half.
+TEST_P(CrossEngine, EccentricOverburdenThresholdIsEq12eOnEitherSide) {
+    const WallScene wall = WallScene::of(with_eccentricity(make_vssw(4.88, 0.200, 0.50, 0.5), 1.0));
+    for (int side : {1, -1}) {
+        compare::ThresholdOptions o;
+        o.side = side;
+        const double closed_form = eq12_threshold(*wall.vssw, 0.0, side) / wall.vssw->g;
+        const double error = compare::find_threshold(*engine_, settings_, wall, o).value_g / closed_form - 1.0;
+        RecordProperty(side > 0 ? "error_toward_corner" : "error_away_from_corner", std::to_string(error));
+        EXPECT_NEAR(error, 0.0, kThresholdTarget) << "side " << side;
+    }
+    const ParapetGeometry p = with_eccentricity(make_parapet(1.2, 0.2, 0.5), 1.0);
+    compare::ThresholdOptions toward_pivot;
+    toward_pivot.side = 1;
+    const double error = compare::find_threshold(*engine_, settings_, WallScene::of(p), toward_pivot).value_g /
+                             (eq17_parapet_threshold(make_parapet(1.2, 0.2)) / p.g) - 1.0;
+    RecordProperty("error_parapet_over_pivot", std::to_string(error));
+    EXPECT_NEAR(error, 0.0, kThresholdTarget);
 }
 
 TEST_P(CrossEngine, SlidingIsReportedNotHidden) {

@@ -115,7 +115,7 @@ TEST_P(ExactLagrangian, StageRatesAreTheEquationOfMotionFromTheTerms) {
                  std::abs(t.C) * theta_dot * theta_dot) / t.M;
             const double force_size = std::abs(a_h * t.X) + std::abs(a_v * t.Y);
             for (int side : {1, -1}) {
-                const RockingRates want = rocking_rates(t, side, theta_dot, a_h, a_v, w.g, w.N);
+                const RockingRates want = rocking_rates(t, side, theta_dot, a_h, a_v, w.g, w.N, 0.0);
                 const RockingRates got = m->rates(side, q, theta_dot, a_h, a_v);
                 EXPECT_NEAR(got.acceleration, want.acceleration, kReformulated * term_size)
                     << to_string(k) << " q " << q << " side " << side;

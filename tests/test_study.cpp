@@ -169,6 +169,7 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {"[wall]\nheight = nan\nthickness = 0.4\nhinge = 0.7\n" + threshold, "wall.height: must be a finite number"},
         {"[wall]\nheight = 4\nthickness = 0.4\nhinge = 1.5\n" + threshold, "hinge ratio h1/h must be strictly between"},
         {"[wall]\nheight = 4\nthickness = 0.4\n" + threshold, "a VSSW needs 'hinge'"},
+        {wall + "overburden_eccentricity = 1.5\n" + threshold, "wall.overburden_eccentricity: must be N's eccentricity"},
         {"[wall]\nheight = 4\nalpha = 0.1\nR = 2\nhinge = 0.7\n" + threshold, "give the geometry one way"},
         {wall, "no [excitation] table"},
         {wall + "[excitation]\nkind = \"earthquake\"\n", "excitation.kind: must be one of"},
@@ -297,6 +298,21 @@ TEST(StudyMeasure, ThresholdIsEq12AndDoesNotDependOnSize) {
         EXPECT_NEAR(value_of(t, "threshold_closed_form_g", {{"R", R}}), eq12, kRoundoff * eq12);
         EXPECT_NEAR(value_of(t, "threshold_g", {{"R", R}}) / eq12 - 1.0, 0.0, kThresholdBracket) << "R " << R;
     }
+}
+
+// N's position as a wall axis: each case's wall has it, and the threshold is Eq. (17e)'s lower direction; N over the
+// parapet's pivot (e/b = 1) leaves Housner's g b / h, a third below the centred N's at xi 0.5.
+TEST(StudyMeasure, OverburdenEccentricityIsAWallAxis) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_g\"]\n[wall]\nmodel = \"parapet\"\nheight = 1.2\n"
+                                  "thickness = 0.2\nxi = 0.5\noverburden_eccentricity = [0.0, 1.0]\n"
+                                  "[excitation]\nkind = \"threshold\"\n"));
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const double b_over_h = 0.2 / 1.2;
+    EXPECT_NEAR(value_of(t, "threshold_g", {{"overburden_eccentricity", "0"}}) / (1.5 * b_over_h) - 1.0, 0.0,
+                kThresholdBracket);
+    EXPECT_NEAR(value_of(t, "threshold_g", {{"overburden_eccentricity", "1"}}) / b_over_h - 1.0, 0.0,
+                kThresholdBracket);
 }
 
 // A free vibration's restitution is the run's impact law (Eq. 19, the whole mechanism's) and its period the model's.

@@ -286,7 +286,8 @@ public:
           lower_(w.lower()),
           upper_(w.upper()),
           top_body_(upper_ ? *upper_ : lower_),
-          top_half_(upper_ ? block_sizes(scene).h_upper : block_sizes(scene).h_lower) {}
+          top_half_(upper_ ? block_sizes(scene).h_upper : block_sizes(scene).h_lower),
+          load_x_(scene.overburden_offset()) {}
 
     void drive(const GroundStep& g) {
         if (knobs_.moving_supports) {
@@ -295,7 +296,7 @@ public:
             w_.world().SetGravity(vec(-g.a_h, -g_));  // -m a_h at every centre of mass: gravity tilted
         }
     }
-    void push_overburden() { top_body_.ApplyForce(vec(0.0, -N_), world_point(top_body_, 0.0, top_half_), true); }
+    void push_overburden() { top_body_.ApplyForce(vec(0.0, -N_), world_point(top_body_, load_x_, top_half_), true); }
     void step(const StepTimes& st, const GroundStep&) { w_.step(st.dt); }
     WallState state(const GroundStep&) {
         const double x_g = w_.ground().GetPosition().x, v_ground = w_.ground().GetLinearVelocity().x;
@@ -316,7 +317,7 @@ public:
                                         body.GetAngularVelocity());
         };
         energy_.fill(p, {kinetic(lower_), upper_ ? kinetic(*upper_) : 0.0, lower_.GetPosition().y,
-                         upper_ ? upper_->GetPosition().y : 0.0, world_point(top_body_, 0.0, top_half_).y});
+                         upper_ ? upper_->GetPosition().y : 0.0, world_point(top_body_, load_x_, top_half_).y});
         p.contacts = w_.contact_points();
     }
 
@@ -329,6 +330,7 @@ private:
     b2Body* upper_;
     b2Body& top_body_;
     double top_half_;
+    double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
 };
 
 Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

@@ -252,6 +252,7 @@ public:
           upper_(w.upper()),
           top_body_(upper_ ? *upper_ : lower_),
           top_half_(upper_ ? s_.h_upper : s_.h_lower),
+          load_x_(scene.overburden_offset()),
           dt_(dt) {}
 
     void drive(const GroundStep& g) {
@@ -270,7 +271,7 @@ public:
     // on Table 1 #14 at xi 0.5 off the roller), friction doing work F v_t: a loss first order in the step
     // (docs/engines.md "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
     void push_overburden() {
-        top_body_.applyImpulse(btVector3(0, -N_ * dt_, 0), top_centre() - top_body_.getCenterOfMassPosition());
+        top_body_.applyImpulse(btVector3(0, -N_ * dt_, 0), load_point() - top_body_.getCenterOfMassPosition());
     }
     void step(const StepTimes& st, const GroundStep&) { w_.step(st.dt); }
     WallState state(const GroundStep& g) const {
@@ -292,11 +293,12 @@ public:
             return 0.5 * m * v.length2() + 0.5 * I * wv.z() * wv.z();  // Bullet's own 3-D sum (v.z() is 0)
         };
         energy_.fill(p, {kinetic(lower_), upper_ ? kinetic(*upper_) : 0.0, lower_.getCenterOfMassPosition().y(),
-                         upper_ ? upper_->getCenterOfMassPosition().y() : 0.0, top_centre().y()});
+                         upper_ ? upper_->getCenterOfMassPosition().y() : 0.0, load_point().y()});
         p.contacts = w_.contact_points();
     }
 private:
-    btVector3 top_centre() const { return top_body_.getWorldTransform() * btVector3(0, top_half_, 0); }
+    // N's point: the top face's centre, or e from it toward theta1 > 0 (analytic/geometry.hpp).
+    btVector3 load_point() const { return top_body_.getWorldTransform() * btVector3(load_x_, top_half_, 0); }
 
     BulletWorld& w_;
     const Knobs& knobs_;
@@ -307,6 +309,7 @@ private:
     btRigidBody* upper_;
     btRigidBody& top_body_;
     double top_half_;
+    double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
     double dt_;
 };
 

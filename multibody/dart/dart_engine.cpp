@@ -306,11 +306,12 @@ public:
           lower_(w.lower()),
           upper_(w.upper()),
           top_body_(upper_ ? upper_ : lower_),
-          top_half_(upper_ ? block_sizes(scene).h_upper : block_sizes(scene).h_lower) {}
+          top_half_(upper_ ? block_sizes(scene).h_upper : block_sizes(scene).h_lower),
+          load_x_(scene.overburden_offset()) {}
 
     void drive(const GroundStep&) {}  // the ground motion goes to DartScene::step (gravity or the ground's command)
     void push_overburden() {
-        top_body_->addExtForce(Vector3d(0.0, -N_, 0.0), Vector3d(0.0, top_half_, 0.0), false, true);
+        top_body_->addExtForce(Vector3d(0.0, -N_, 0.0), Vector3d(load_x_, top_half_, 0.0), false, true);
     }
     void step(const StepTimes&, const GroundStep& g) { w_.step(g.a_h, g.v); }
     WallState state(const GroundStep& g) const {
@@ -331,7 +332,7 @@ public:
             return 0.5 * body.getMass() * v.squaredNorm() + 0.5 * wv.dot(body.getInertia().getMoment() * wv);
         };
         energy_.fill(p, {kinetic(*lower_), upper_ ? kinetic(*upper_) : 0.0, lower_->getCOM().y(),
-                         upper_ ? upper_->getCOM().y() : 0.0, world_point(*top_body_, 0.0, top_half_).y()});
+                         upper_ ? upper_->getCOM().y() : 0.0, world_point(*top_body_, load_x_, top_half_).y()});
         p.contacts = w_.contacts();
     }
 
@@ -345,6 +346,7 @@ private:
     dd::BodyNode* upper_;
     dd::BodyNode* top_body_;
     double top_half_;
+    double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
 };
 
 Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

@@ -18,7 +18,7 @@ inline double block_kinetic_energy(double mass, double inertia, double vx, doubl
 struct EnergyReading {
     double kinetic_lower, kinetic_upper;  // [J] for the scene's depth, relative to the ground
     double y_lower, y_upper;              // the centres' heights [m]
-    double y_top;                         // the height of the centre of the top face [m] (where N acts)
+    double y_top;                         // the height of N's point on the top face [m] (its centre unless eccentric)
 };
 
 class WallEnergy {

@@ -73,6 +73,7 @@ WallParts::WallParts(std::string engine, const WallScene& scene, const Mechanism
       vssw_(scene.vssw.has_value()),
       g_(scene.gravity()),
       N_(scene.overburden()),
+      load_x_(scene.overburden_offset()),
       gap_(contact_gap),
       penetration_(penetration),
       energy_gain_(energy_gain * figures.reference_energy),
@@ -89,11 +90,11 @@ double WallParts::energy(const WallState& s) const {
     };
     double e = block(s.lower, rest_.lower, sizes_.m_lower, sizes_.h_lower);
     if (vssw_) e += block(s.upper, rest_.upper, sizes_.m_upper, sizes_.h_upper);
-    // N's potential: it presses on the centre of the top face.
+    // N's potential: it presses on the top face at load_x_ from its centre (analytic/geometry.hpp).
     const BlockState& top = vssw_ ? s.upper : s.lower;
     const BlockState& top_rest = vssw_ ? rest_.upper : rest_.lower;
     const double h_top = vssw_ ? sizes_.h_upper : sizes_.h_lower;
-    return e + N_ * (point_of(top, 0.0, h_top).y - point_of(top_rest, 0.0, h_top).y);
+    return e + N_ * (point_of(top, load_x_, h_top).y - point_of(top_rest, load_x_, h_top).y);
 }
 
 // The most work the ground motion can have done on the blocks since the last check: its pseudo-force -m a_h (at most

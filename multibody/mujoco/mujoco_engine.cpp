@@ -282,14 +282,15 @@ public:
           vssw_(scene.vssw.has_value()),
           lower_(lower),
           upper_(upper),
-          top_(vssw_ ? upper_ : lower_) {}
+          top_(vssw_ ? upper_ : lower_),
+          load_x_(scene.overburden_offset()) {}
 
     // The ground motion as a uniform field.
     void drive(const GroundStep& g) { m_->opt.gravity[0] = -g.a_h; }
-    // N at the centre of the top face: the force at the centre of mass and its moment about it (about +y: r_z F_x -
+    // N on the top face (its centre, or load_x_ from it): the force at the centre of mass and its moment about it (about +y: r_z F_x -
     // r_x F_z with r the arm from the centre, F = (0, 0, -N)).
     void push_overburden() {
-        const double arm_x = world(top_, 0.0, top_.half_h)[0] - centre_x(top_);
+        const double arm_x = world(top_, load_x_, top_.half_h)[0] - centre_x(top_);
         double* f = d_->xfrc_applied + 6 * top_.body;
         f[2] = -N_;
         f[4] = arm_x * N_;
@@ -310,7 +311,7 @@ public:
             return block_kinetic_energy(k.mass, k.inertia, d_->qvel[k.q], d_->qvel[k.q + 1], d_->qvel[k.q + 2]);
         };
         energy_.fill(p, {kinetic(lower_), vssw_ ? kinetic(upper_) : 0.0, centre_y(lower_),
-                         vssw_ ? centre_y(upper_) : 0.0, world(top_, 0.0, top_.half_h)[1]});
+                         vssw_ ? centre_y(upper_) : 0.0, world(top_, load_x_, top_.half_h)[1]});
         p.contacts = d_->ncon;
     }
 
@@ -335,6 +336,7 @@ private:
     const Block& lower_;
     const Block& upper_;
     const Block& top_;
+    double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
 };
 
 Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

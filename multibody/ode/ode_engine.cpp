@@ -470,7 +470,8 @@ public:
           lower_(w.lower()),
           upper_(w.upper()),
           top_body_(upper_ ? upper_ : lower_),
-          top_half_(upper_ ? s_.h_upper : s_.h_lower) {}
+          top_half_(upper_ ? s_.h_upper : s_.h_lower),
+          load_x_(scene.overburden_offset()) {}
 
     void drive(const GroundStep& g) {
         if (knobs_.moving_supports || g.a_h == 0.0) return;  // moving supports: the ground's velocity goes to step()
@@ -478,7 +479,7 @@ public:
         if (upper_) dBodyAddForce(upper_, -s_.m_upper * kDepth * g.a_h, 0.0, 0.0);
     }
     void push_overburden() {
-        const Vec2 top = world_point(top_body_, 0.0, top_half_);
+        const Vec2 top = world_point(top_body_, load_x_, top_half_);
         dBodyAddForceAtPos(top_body_, 0.0, -N_, 0.0, top.x, top.y, 0.0);
     }
     void step(const StepTimes&, const GroundStep& g) { w_.step(g.v); }
@@ -513,7 +514,7 @@ public:
                    0.5 * (m.I[0] * wv[0] * wv[0] + m.I[5] * wv[1] * wv[1] + m.I[10] * wv[2] * wv[2]);
         };
         energy_.fill(p, {kinetic(lower_), upper_ ? kinetic(upper_) : 0.0, dBodyGetPosition(lower_)[1],
-                         upper_ ? dBodyGetPosition(upper_)[1] : 0.0, world_point(top_body_, 0.0, top_half_).y});
+                         upper_ ? dBodyGetPosition(upper_)[1] : 0.0, world_point(top_body_, load_x_, top_half_).y});
         p.contacts = w_.contacts();
     }
 
@@ -525,6 +526,7 @@ private:
     double N_;
     dBodyID lower_, upper_, top_body_;
     double top_half_;
+    double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
     const int messages_before_ = g_ode_messages;
 };
 

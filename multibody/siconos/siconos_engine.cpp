@@ -367,7 +367,7 @@ public:
 };
 
 // The stepping kit's hooks (step_loop.hpp) on a SiconosScene: the generalised force of the run's loads at the current
-// pose (gravity, the ground motion's pseudo-forces, then N at the centre of the top face, its moment about the top
+// pose (gravity, the ground motion's pseudo-forces, then N on the top face at load_x_ from its centre, its moment about the top
 // block's centre r x (0, -N) = -N r_x), the one-step problem, the blocks' coordinates.
 class SiconosStepping {
 public:
@@ -377,7 +377,8 @@ public:
           s_(block_sizes(scene)),
           vssw_(scene.is_vssw()),
           g_(scene.gravity()),
-          N_(scene.overburden() * kDepth) {}
+          N_(scene.overburden() * kDepth),
+          load_x_(scene.overburden_offset()) {}
 
     void drive(const GroundStep& ground) {
         SiconosVector& f = w_.forces();
@@ -392,7 +393,7 @@ public:
     void push_overburden() {
         SiconosVector& f = w_.forces();
         const unsigned i = 3u * static_cast<unsigned>(vssw_ ? kUpper : kLower);
-        const Vec2 r = rotated({0.0, vssw_ ? s_.h_upper : s_.h_lower}, w_.q().getValue(i + 2));
+        const Vec2 r = rotated({load_x_, vssw_ ? s_.h_upper : s_.h_lower}, w_.q().getValue(i + 2));
         f.setValue(i + 1, f.getValue(i + 1) - N_);
         f.setValue(i + 2, -N_ * r.x);
     }
@@ -413,7 +414,7 @@ public:
         const double top_half = vssw_ ? s_.h_upper : s_.h_lower;
         energy_.fill(p, {kinetic(kLower, s_.m_lower, s_.h_lower), vssw_ ? kinetic(kUpper, s_.m_upper, s_.h_upper) : 0.0,
                          w_.q().getValue(1), vssw_ ? w_.q().getValue(4) : 0.0,
-                         w_.world_point(vssw_ ? kUpper : kLower, {0.0, top_half}).y});
+                         w_.world_point(vssw_ ? kUpper : kLower, {load_x_, top_half}).y});
         p.contacts = w_.active_contacts();
     }
 
@@ -429,6 +430,7 @@ private:
     BlockSizes s_;
     bool vssw_;
     double g_, N_;
+    double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
 };
 
 Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

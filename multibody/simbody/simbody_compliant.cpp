@@ -172,7 +172,8 @@ public:
         const double N = scene.overburden() * kDepth;
         // a_h at the integrator's own times: the error control follows a record between its samples.
         SimTK::Force::Custom(forces_, new WallLoads([&a_h = ex.horizontal](const State& st) { return a_h(st.getTime()); },
-                                                    lower_, has_upper_ ? &upper_ : nullptr, sizes_, N));
+                                                    lower_, has_upper_ ? &upper_ : nullptr, sizes_, N,
+                                                    scene.overburden_offset()));
 
         state_ = system_.realizeTopology();
         const WallPose pose = pose_at(scene, ex.theta0);
@@ -301,7 +302,7 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
     const SimTK::MobilizedBody& lower = w.lower();
     const SimTK::MobilizedBody& upper = w.upper();
     // Rest positions: the analytic ones lifted by the spheres (r under the lower block, 2r under the upper one).
-    const WallBodies bodies{lower, upper, vssw, s, WallEnergy(scene, kDepth, r)};
+    const WallBodies bodies{lower, upper, vssw, s, WallEnergy(scene, kDepth, r), scene.overburden_offset()};
 
     const QuietStdout quiet;
     std::unique_ptr<SimTK::Integrator> integ;

@@ -179,7 +179,8 @@ public:
         const double N = scene.overburden() * kDepth;
         // The ground motion of the step (its midpoint value, set by the loop before each step).
         SimTK::Force::Custom(forces_, new WallLoads([&in = inputs_](const State&) { return in.a_h; }, lower_,
-                                                    has_upper_ ? &upper_ : nullptr, sizes_, N));
+                                                    has_upper_ ? &upper_ : nullptr, sizes_, N,
+                                                    scene.overburden_offset()));
 
         state_ = system_.realizeTopology();
         const WallPose pose = pose_at(scene, theta0);
@@ -333,7 +334,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     SimbodyScene w(scene, ex.theta0);
-    const WallBodies bodies{w.lower(), w.upper(), w.has_upper(), block_sizes(scene), WallEnergy(scene, kDepth)};
+    const WallBodies bodies{w.lower(), w.upper(), w.has_upper(), block_sizes(scene), WallEnergy(scene, kDepth), scene.overburden_offset()};
 
     const QuietStdout quiet;
     SimTK::SemiExplicitEulerTimeStepper ts(w.system());

@@ -18,13 +18,14 @@ namespace vssw::multibody::simbody_wall {
 
 constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
 
-// Pseudo-forces -m a_h at the centres of mass (fixed supports) and N at the centre of the top face (only when N > 0).
+// Pseudo-forces -m a_h at the centres of mass (fixed supports) and N on the top face, at load_x from its centre toward
+// theta1 > 0 (only when N > 0).
 // The acceleration comes from the route: the rigid route's step midpoint value, the compliant route's a_h(t).
 class WallLoads : public SimTK::Force::Custom::Implementation {
 public:
     WallLoads(std::function<double(const SimTK::State&)> a_h, const SimTK::MobilizedBody& lower,
-              const SimTK::MobilizedBody* upper, const BlockSizes& sizes, double N)
-        : a_h_(std::move(a_h)), lower_(lower), has_upper_(upper != nullptr), sizes_(sizes), N_(N) {
+              const SimTK::MobilizedBody* upper, const BlockSizes& sizes, double N, double load_x)
+        : a_h_(std::move(a_h)), lower_(lower), has_upper_(upper != nullptr), sizes_(sizes), N_(N), load_x_(load_x) {
         if (upper) upper_ = *upper;
     }
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
@@ -40,7 +41,7 @@ public:
         if (N_ > 0.0) {
             const SimTK::MobilizedBody& top = has_upper_ ? upper_ : lower_;
             const double half = has_upper_ ? sizes_.h_upper : sizes_.h_lower;
-            top.applyForceToBodyPoint(s, SimTK::Vec3(0, half, 0), SimTK::Vec3(0, -N_, 0), body_forces);
+            top.applyForceToBodyPoint(s, SimTK::Vec3(load_x_, half, 0), SimTK::Vec3(0, -N_, 0), body_forces);
         }
     }
     SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0.0; }
@@ -51,6 +52,7 @@ private:
     bool has_upper_;
     BlockSizes sizes_;
     double N_;
+    double load_x_;  // N's point on the top face from its centre [m]
 };
 
 // Clockwise angle of a body about z.
@@ -76,6 +78,7 @@ struct WallBodies {
     bool vssw;
     BlockSizes sizes;
     WallEnergy energy;
+    double load_x;  // N's point on the top face from its centre, toward theta1 > 0 [m]
 };
 
 // The lower body's rotation and rate of a state realized to Velocity.
@@ -105,7 +108,7 @@ inline void fill_sample(const WallBodies& w, const SimTK::State& st, TrajectoryS
     w.energy.fill(p, {kinetic(w.lower, s.m_lower * kDepth, s.h_lower),
                       w.vssw ? kinetic(w.upper, s.m_upper * kDepth, s.h_upper) : 0.0,
                       w.lower.getBodyOriginLocation(st)[1], w.vssw ? w.upper.getBodyOriginLocation(st)[1] : 0.0,
-                      world_point(top_body, st, 0.0, top_half)[1]});
+                      world_point(top_body, st, w.load_x, top_half)[1]});
 }
 
 // The sample of a state realized to Velocity (contacts left to the route).
