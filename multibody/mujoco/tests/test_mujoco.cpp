@@ -8,11 +8,11 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
-#include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
 #include "compare/targets.hpp"
 #include "multibody/engine.hpp"
 #include "tests/engine_available.hpp"
+#include "tests/engine_scenes.hpp"
 #include "tests/refused_knobs.hpp"
 
 namespace vssw {
@@ -22,17 +22,16 @@ using multibody::EngineFailure;
 using multibody::WallScene;
 using compare::kRestitutionTarget;  // the project's target (compare/targets.hpp)
 using testing::engine_available;
+using testing::fig6_parapet;  // the wall of Fig. 6 (4 m x 0.4 m, hinge 0.7) and its parapet
+using testing::fig6_vssw;
 
-// The wall of Fig. 6 (height 4 m, thickness 0.4 m, hinge 0.7) and its parapet.
-WallScene fig6_wall() { return WallScene::of(make_vssw(4.0, 0.4, 0.7)); }
-WallScene fig6_parapet_wall() { return WallScene::of(make_parapet(4.0, 0.4)); }
 
 // MuJoCo (multibody/mujoco/mujoco_engine.cpp): its contacts are soft. At MuJoCo's own defaults (solref 0.02 s,
 // solimp 0.9/0.95) the parapet's impact loses 5.5 % too much energy (restitution from the amplitudes either side);
 // with the time constant at 2 dt and the impedance near 1 (the adapter's defaults) it is Housner's. Suite named in
 // lower case for `ctest -R mujoco`.
 double mujoco_amplitude_restitution(const multibody::Engine& engine, const multibody::EngineSettings& s) {
-    const WallScene scene = fig6_parapet_wall();
+    const WallScene scene = fig6_parapet();
     const compare::FreeVibrationResult r = compare::run_free_vibration(engine, s, scene);
     if (r.amplitude.empty()) return NAN;
     return r.amplitude.front().energy / housner_restitution(scene.parapet->alpha) - 1.0;
@@ -67,14 +66,14 @@ TEST(mujoco, AnUpperBlockFallingThroughTheHingeFailsTheRun) {
     multibody::EngineSettings s = engine->default_settings();
     s.knobs["solimp_dmin"] = 1e-4;
     multibody::Excitation free;
-    free.theta0 = 0.5 * fig6_wall().alpha();
+    free.theta0 = 0.5 * fig6_vssw().alpha();
     free.t_end = 3.0;
     multibody::Excitation pulse;
     pulse.horizontal = sine_pulse(0.5 * 9.81, 0.5);
     pulse.t_end = 3.0;
     for (const multibody::Excitation& ex : {free, pulse}) {
         try {
-            (void)engine->simulate(fig6_wall(), ex, s);
+            (void)engine->simulate(fig6_vssw(), ex, s);
             ADD_FAILURE() << "the run went on";
         } catch (const EngineFailure& e) {
             EXPECT_NE(std::string(e.what()).find("through the hinge"), std::string::npos) << e.what();
@@ -91,7 +90,7 @@ TEST(mujoco, AWarningOfMujocoFailsTheRunWithItsText) {
     ex.horizontal = constant_motion(1e30, 1.0);  // qacc far past MuJoCo's mjMAXVAL (1e10)
     ex.t_end = 0.1;
     try {
-        engine->simulate(fig6_wall(), ex, engine->default_settings());
+        engine->simulate(fig6_vssw(), ex, engine->default_settings());
         ADD_FAILURE() << "the run went on";
     } catch (const EngineFailure& e) {
         EXPECT_NE(std::string(e.what()).find("MuJoCo warned"), std::string::npos) << e.what();
