@@ -57,10 +57,14 @@ io::Json to_json(const WallFigures& f) {
 
 void print_wall(std::ostream& out, const WallFigures& f) {
     const bool has_overburden = f.inputs.xi != 0.0;
+    // N off the centre: the thresholds are Eq. (12e) and (17e), the lower of the two directions of tipping, and the
+    // optimal hinge (Eq. 15) is still the centred N's (docs/model/analytic-core.md, "The overburden's position").
+    const bool eccentric = has_overburden && f.inputs.eccentricity != 0.0;
     Table(describe_wall(f.inputs, WallKind::vssw))
         .add("alpha1, alpha2", io::num(f.alpha1) + ", " + io::num(f.alpha2), "rad", "atan(b/h1), atan(b/h2)")
         .add("R1, R2", io::num(f.R1) + ", " + io::num(f.R2), "m", "half-diagonals")
-        .add("threshold acceleration", io::num(f.threshold_g), "g", "Eq. (12)")
+        .add("threshold acceleration", io::num(f.threshold_g), "g",
+             eccentric ? "Eq. (12e), the lower of the two sides" : "Eq. (12)")
         .add("coefficient of restitution", io::num(f.restitution), "", "Eq. (19)")
         .add("A", io::num(f.A), "rad", has_overburden ? "Eq. (21a), linearised, ignores N" : "Eq. (21a), linearised")
         .add("P", io::num(f.P), "1/s", has_overburden ? "Eq. (21b), linearised, ignores N" : "Eq. (21b), linearised")
@@ -73,13 +77,17 @@ void print_wall(std::ostream& out, const WallFigures& f) {
                  ? "where Eq. (3) locks (cos A2 = 0), before Eq. (26)"  // margin: kRollerLimitMargin is 1e-6
                  : (f.theta_lim ? "just below Eq. (26)" : "pi/2: the lower body lies on its face"))
         .add("reference velocity", io::num(f.reference_velocity), "rad/s", "Eq. (24)")
-        .add("optimal hinge ratio h1/h", io::num(f.optimal_hinge_ratio), "", "Eq. (15) at this xi")
-        .add("threshold VSSW / parapet", io::num(f.threshold_ratio_vssw_over_parapet), "", "Eq. (12) / Eq. (17)")
+        .add("optimal hinge ratio h1/h", io::num(f.optimal_hinge_ratio), "",
+             eccentric ? "Eq. (15) at this xi, N at the centre" : "Eq. (15) at this xi")
+        .add("threshold VSSW / parapet", io::num(f.threshold_ratio_vssw_over_parapet), "",
+             eccentric ? "Eq. (12e) / Eq. (17e)" : "Eq. (12) / Eq. (17)")
         .print(out);
-    Table("Parapet of the same height, thickness and xi (Housner 1963)")
+    Table(eccentric ? "Parapet of the same height, thickness, xi and e/b (Housner 1963)"
+                    : "Parapet of the same height, thickness and xi (Housner 1963)")
         .add("alpha", io::num(f.parapet.alpha), "rad", "atan(b/h)")
         .add("R", io::num(f.parapet.R), "m", "half-diagonal")
-        .add("threshold acceleration", io::num(f.parapet.threshold_g), "g", "Eq. (17)")
+        .add("threshold acceleration", io::num(f.parapet.threshold_g), "g",
+             eccentric ? "Eq. (17e), the lower of the two sides" : "Eq. (17)")
         .add("coefficient of restitution", io::num(f.parapet.restitution), "", "1 - 3/2 sin^2(alpha)")
         .add("frequency parameter p", io::num(f.parapet.p), "1/s", "sqrt(3g / 4R)")
         .print(out);

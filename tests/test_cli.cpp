@@ -191,6 +191,21 @@ TEST(CliWall, EccentricOverburdenGivesTheLowerThresholdOfTheTwoDirections) {
     EXPECT_FALSE(run_json(base).contains("overburden_eccentricity"));  // centred: the output of before
 }
 
+// The table names what it printed: with N off the centre the thresholds are Eq. (12e)/(17e) (the lower side) and the
+// optimal hinge of Eq. (15) is still the centred N's; a centred N's table names Eq. (12) as before.
+TEST(CliWall, TableNamesTheEccentricThresholdAndTheCentredHinge) {
+    const std::vector<std::string> base = {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--xi", "0.5"};
+    const CliResult off = run_cli(base + std::vector<std::string>{"--overburden-eccentricity", "1"});
+    ASSERT_EQ(off.code, 0) << off.err;
+    for (const char* said : {"Eq. (12e), the lower of the two sides", "Eq. (15) at this xi, N at the centre",
+                             "Eq. (17e), the lower of the two sides", "xi and e/b"})
+        EXPECT_NE(off.out.find(said), std::string::npos) << said << "\n" << off.out;
+    const CliResult centred = run_cli(base);
+    ASSERT_EQ(centred.code, 0) << centred.err;
+    EXPECT_EQ(centred.out.find("12e"), std::string::npos) << centred.out;
+    EXPECT_NE(centred.out.find("Eq. (12)"), std::string::npos) << centred.out;
+}
+
 TEST(CliWall, RollerLimitIsNullAtAndBelowMidHeight) {
     for (const char* hinge : {"0.5", "0.46"}) {
         const Json j = run_json({"wall", "--height", "4", "--thickness", "0.4", "--hinge", hinge});
