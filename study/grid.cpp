@@ -267,16 +267,19 @@ void Grid::build_runs() {
 }
 
 // Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
-// repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
+// repeats of a parapet's hinge, the combinations off the first level of two one_at_a_time keys and (where a part asks)
+// the releases from which the analytic model falls left out.
 void Grid::list_cases() {
     for (std::size_t pi = 0; pi < parts_.size(); ++pi) {
         const PartSpec& part = spec_.parts[pi];
-        const auto axis_index = [&](const char* key) -> std::optional<std::size_t> {
+        const auto axis_index = [&](const std::string& key) -> std::optional<std::size_t> {
             for (std::size_t i = 0; i < parts_[pi].axes.size(); ++i)
                 if (parts_[pi].axes[i]->key == key) return i;
             return std::nullopt;
         };
         const std::optional<std::size_t> hinge = axis_index("hinge"), duration = axis_index("duration");
+        std::vector<std::size_t> one_at_a_time;  // the axes varied one at a time from their first level
+        for (const std::string& k : part.one_at_a_time) one_at_a_time.push_back(*axis_index(k));
         // A parapet has neither kinematics nor roller: its analytic run is the part's first analytic run built.
         for (const RunSpec& r : runs_)
             if (r.part == pi && r.engine == "analytic") {
@@ -284,8 +287,11 @@ void Grid::list_cases() {
                 break;
             }
         for (std::size_t p = 0; p < parts_[pi].size; ++p) {
-            const CaseSpec c = make_case(static_cast<int>(parts_[pi].first + p));
             const std::vector<std::size_t> d = digits(p, parts_[pi].axes);
+            // Left out before it is built: a combination no one asked for may be no wall at all.
+            if (std::count_if(one_at_a_time.begin(), one_at_a_time.end(), [&](std::size_t a) { return d[a] != 0; }) > 1)
+                continue;
+            const CaseSpec c = make_case(static_cast<int>(parts_[pi].first + p));
             if (c.model == "parapet" && hinge && d[*hinge] != 0) continue;
             if (duration && c.shape != "harmonic" && d[*duration] != 0) continue;  // only a harmonic lasts `duration`
             if (part.skip_falling_releases && falls_from(c.scene, c.theta0)) continue;

@@ -24,8 +24,11 @@
 #include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
 #include "multibody/engine.hpp"
+#include "study/effects.hpp"
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
+#include "study/study_data.hpp"
+#include "study/study_plots.hpp"
 #include "validation/suite_file.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
@@ -215,6 +218,12 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {"[wall]\nalpha1 = 0.1\nalpha2 = 0.2\nR1 = 1.5\nhinge = 0.6\n" + threshold, "fix the hinge"},
         {"[wall]\nspecimen = 1e10\n" + threshold, "must be a Table 1 specimen number"},
         {"[settings.analytic]\ndt = 1e-3\n" + wall + threshold, "no step or iterations to set"},
+        {"one_at_a_time = [\"xi\"]\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\nxi = [0, 0.1]\n" + threshold,
+         "one_at_a_time: must list two or more wall or excitation keys"},
+        {"one_at_a_time = [\"speed\", \"xi\"]\n" + wall + threshold, "'speed' is not a wall or excitation key"},
+        {"one_at_a_time = [\"xi\", \"hinge\"]\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\nxi = [0, 0.1]\n" +
+             threshold,
+         "one_at_a_time: 'hinge' is not given as a list"},
         {"[settings.analytic]\nrtol = 1e-9\n[[part]]\n[part.wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
          "[part.excitation]\nkind = \"threshold\"\n[part.settings.analytic]\nrtol = 1e-8\n",
          "part[1].settings.analytic.rtol: given in the study's [settings.analytic] too"},
@@ -244,6 +253,58 @@ TEST(StudyGrid, CaseIdsArePositionsAndAParapetHasNoHingeToVary) {
     EXPECT_DOUBLE_EQ(c.thickness, 0.4);
     EXPECT_TRUE(std::isnan(c.hinge));
     EXPECT_EQ(grid.varied_parameters(), (std::vector<std::string>{"model", "thickness", "hinge"}));
+}
+
+// one_at_a_time: a baseline (every such key at its first level) and one case per further level of each, crossed with
+// the rest of the grid; ids stay positions in the whole product. A product would give 2 x 3 x 3 = 18 cases.
+TEST(StudyGrid, KeysVariedOneAtATimeGiveABaselineAndOneCasePerFurtherLevel) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "one_at_a_time = [\"overburden_eccentricity\", \"xi\"]\n[wall]\nheight = 4\n"
+                                  "thickness = [0.2, 0.4]\nhinge = 0.7\nxi = [0.1, 0.2, 0.3]\n"
+                                  "overburden_eccentricity = [0, 0.5, 1]\n[excitation]\nkind = \"threshold\"\n"));
+    EXPECT_EQ(grid.product_size(), 18u);
+    ASSERT_EQ(grid.case_ids().size(), 10u);  // 2 thicknesses x (1 + 2 + 2)
+    std::set<std::pair<double, double>> seen;
+    for (int id : grid.case_ids()) {
+        const study::CaseSpec c = grid.make_case(id);
+        const double e = c.scene.overburden_eccentricity();
+        EXPECT_TRUE(c.xi == 0.1 || e == 0.0) << "case " << id << " leaves the baseline in both keys";
+        seen.insert({c.xi, e});
+    }
+    const std::set<std::pair<double, double>> expected = {{0.1, 0.0}, {0.2, 0.0}, {0.3, 0.0}, {0.1, 0.5}, {0.1, 1.0}};
+    EXPECT_EQ(seen, expected);
+}
+
+// The pairs of a one-at-a-time study are its cases and their baseline: the parapet's threshold with N at the pivot's
+// corner over N at the centre is Eq. (17e) over Eq. (17), 1 / (1 + xi) (xi = 0.5: -1/3), whatever else varies alone.
+TEST(StudyMeasure, EffectsOfAOneAtATimeStudyPairEachCaseWithItsBaseline) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_g\"]\none_at_a_time = [\"overburden_eccentricity\", "
+                                  "\"density\"]\n[wall]\nmodel = \"parapet\"\nheight = 1.2\nthickness = 0.2\n"
+                                  "xi = 0.5\ndensity = [1800, 2200]\noverburden_eccentricity = [0.0, 1.0]\n"
+                                  "[excitation]\nkind = \"threshold\"\n"));
+    (void)run_into(grid, dir / "out", 2);
+    const study::StudyData d = study::read_study_data(dir / "out");
+    const std::vector<study::Effect> effects = study::parameter_effects(d);
+    const auto of = [&](const std::string& parameter) {
+        const auto it = std::find_if(effects.begin(), effects.end(),
+                                     [&](const study::Effect& e) { return e.parameter == parameter; });
+        return it == effects.end() ? study::Effect{} : *it;
+    };
+    const study::Effect ecc = of("overburden_eccentricity"), density = of("density");
+    EXPECT_TRUE(ecc.physical);
+    EXPECT_FALSE(density.physical);
+    EXPECT_EQ(ecc.pairs, 1);
+    EXPECT_NEAR(ecc.median, 1.0 / 1.5 - 1.0, kThresholdBracket);
+    EXPECT_EQ(density.pairs, 1);
+    EXPECT_NEAR(density.median, 0.0, kThresholdBracket);  // the threshold does not depend on the density (Eq. 17)
+    // Its tornado chart is of the paper's physical assumptions, and it is the only one: no model assumption varies.
+    const study::StudyPlots plots = study::study_plot_scripts(d, effects);
+    std::vector<std::string> tornadoes;
+    for (const io::PlotScript& s : plots.scripts)
+        if (s.plot.name.rfind("tornado", 0) == 0) tornadoes.push_back(s.plot.name + " in " + s.plot.section);
+    EXPECT_EQ(tornadoes, (std::vector<std::string>{std::string("tornado_physical_threshold_g in ") +
+                                                   study::kPhysicalTornadoSection}));
 }
 
 TEST(StudyGrid, ThePapersKinematicsWithAUnilateralRollerIsNotAModel) {
