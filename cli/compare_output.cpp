@@ -98,7 +98,9 @@ void print_compare(std::ostream& out, const EngineCompareRun& run, const Compare
     row("restitution (first impact)", c.restitution, "", kRestitutionTarget);
     row("restitution (from peaks)", c.restitution_amplitude, "", kRestitutionTarget);
     t.add("closed forms", fmt::format("{} g, e = {}", io::num(c.threshold_closed_form_g), io::num(c.restitution_closed_form)),
-          "", "Eq. (12)/(17) threshold, Eq. (19)/Housner restitution");
+          "", fmt::format("Eq. ({}{}) threshold{}, Eq. (19)/Housner restitution", r.kind == WallKind::vssw ? "12" : "17",
+                          r.wall.eccentricity != 0.0 ? "e" : "",
+                          r.wall.eccentricity != 0.0 ? " (N off the centre: the lower side)" : ""));
     t.add("restitution, whole mechanism", io::num(r.restitution_whole_mechanism), "",
           fmt::format("plastic impact with the roller acting (docs/measurements/findings.md); engine / this - 1 = {:+.2e}",
                       c.restitution.engine / r.restitution_whole_mechanism - 1.0));

@@ -206,6 +206,18 @@ TEST(CliWall, TableNamesTheEccentricThresholdAndTheCentredHinge) {
     EXPECT_NE(centred.out.find("Eq. (12)"), std::string::npos) << centred.out;
 }
 
+// compare's closed-form line names the equation its number is: Eq. (12e) with N off the centre, Eq. (12) without.
+TEST(CliCompare, ClosedFormsLineNamesTheEccentricThreshold) {
+    const std::vector<std::string> base = {"compare", "--engine", "analytic", "--height", "4", "--thickness", "0.4",
+                                           "--hinge", "0.7", "--xi", "0.1"};
+    const CliResult off = run_cli(base + std::vector<std::string>{"--overburden-eccentricity", "1"});
+    ASSERT_EQ(off.code, 0) << off.err;
+    EXPECT_NE(off.out.find("Eq. (12e) threshold (N off the centre: the lower side)"), std::string::npos) << off.out;
+    const CliResult centred = run_cli(base);
+    ASSERT_EQ(centred.code, 0) << centred.err;
+    EXPECT_NE(centred.out.find("Eq. (12) threshold, Eq. (19)"), std::string::npos) << centred.out;
+}
+
 TEST(CliWall, RollerLimitIsNullAtAndBelowMidHeight) {
     for (const char* hinge : {"0.5", "0.46"}) {
         const Json j = run_json({"wall", "--height", "4", "--thickness", "0.4", "--hinge", hinge});
