@@ -32,6 +32,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/kit/energy.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/step_loop.hpp"
@@ -317,6 +318,9 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Bullet time step dt (s)", "a positive finite number",
             settings.dt);
     const Knobs knobs = read_knobs(settings);
+    require_sharp_corners("Bullet", scene,
+                          "its box-box contacts (btBoxBoxDetector) ignore the collision margin that "
+                          "would round them; a compound of boxes and cylinders is not built");
     BulletWorld w(scene, knobs, ex.theta0);
     BulletStepping stepping(w, scene, knobs, settings.dt);
     RunMonitor monitor("Bullet", scene, ex, settings.dt, knobs.limits);

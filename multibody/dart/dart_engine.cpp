@@ -55,6 +55,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/kit/energy.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/scene_geometry.hpp"
 #include "multibody/kit/settings_reader.hpp"
@@ -353,6 +354,7 @@ Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, co
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "DART time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_sharp_corners("DART", scene, "its boxes have no rounding; a mesh or cylinder outline is not built");
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     RunMonitor monitor("DART", scene, ex, dt, knobs.limits);

@@ -41,6 +41,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/kit/energy.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/scene_geometry.hpp"
 #include "multibody/kit/settings_reader.hpp"
@@ -343,6 +344,7 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "MuJoCo time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_sharp_corners("MuJoCo", scene, "its box geoms have no rounding; capsule corners are not built");
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     ensure_handlers();

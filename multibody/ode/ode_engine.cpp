@@ -43,6 +43,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/kit/energy.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/step_loop.hpp"
@@ -534,6 +535,7 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "ODE time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_sharp_corners("ODE", scene, "its boxes have no rounding; capsule corners are not built");
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     // dWorldQuickStep reorders its constraint rows with ODE's process-wide random generator: seeded at every run, so

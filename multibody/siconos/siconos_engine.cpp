@@ -60,6 +60,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/kit/energy.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/scene_geometry.hpp"
 #include "multibody/kit/settings_reader.hpp"
@@ -437,6 +438,7 @@ Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex,
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Siconos time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_sharp_corners("Siconos", scene, "its blocks are polygons of four vertices; an arc outline is not built");
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     t_solver_failures = 0;

@@ -43,6 +43,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/scene_geometry.hpp"
@@ -330,6 +331,9 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
             compliant_ ? "Simbody reporting interval dt (s)" : "Simbody time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_sharp_corners("Simbody", scene,
+                          "its blocks are contact points and spheres at the "
+                          "sharp corners; arcs are not built");
     if (compliant_) return simulate_compliant(scene, ex, settings);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
