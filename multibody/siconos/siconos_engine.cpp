@@ -438,7 +438,9 @@ Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex,
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Siconos time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
-    require_sharp_corners("Siconos", scene, "its blocks are polygons of four vertices; an arc outline is not built");
+    require_sharp_corners("Siconos", scene,
+                          "its contacts are corner points on lines, with their gap functions and Jacobians; "
+                          "an arc's are not written");
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     t_solver_failures = 0;

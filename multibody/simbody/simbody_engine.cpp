@@ -332,8 +332,8 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
             settings.dt);
     require_one_description(scene);
     require_sharp_corners("Simbody", scene,
-                          "its blocks are contact points and spheres at the "
-                          "sharp corners; arcs are not built");
+                          "its contacts are corner points (rigid) and small corner spheres on half-spaces "
+                          "(compliant); an arc rolling on an arc is not written");
     if (compliant_) return simulate_compliant(scene, ex, settings);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
