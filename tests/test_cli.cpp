@@ -587,11 +587,11 @@ TEST(CliCompare, RoundedCornersReportEachEngineAndTheirSpread) {
     EXPECT_NEAR(j["engines"][0]["threshold_rel_error"].get<double>(), 0.0, vssw::compare::kThresholdTarget);
     EXPECT_GT(j["engines"][0]["period"].get<double>(), 0.0);
     EXPECT_TRUE(j["threshold_spread"].is_null());  // one engine: no spread
-    if (!vssw::testing::engine_available("siconos")) return;
-    const CliResult refused = run_cli(std::vector<std::string>{"compare", "--engine", "siconos"} +
+    if (!vssw::testing::engine_available("simbody")) return;
+    const CliResult refused = run_cli(std::vector<std::string>{"compare", "--engine", "simbody"} +
                                       std::vector<std::string>(wall.begin() + 1, wall.end()));
     EXPECT_EQ(refused.code, 2);
-    EXPECT_NE(refused.err.find("Siconos does not round its blocks yet ("), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("Simbody does not round its blocks yet ("), std::string::npos) << refused.err;
 }
 
 TEST(CliCompare, UnknownEngineIsBadInputNamingIt) {
