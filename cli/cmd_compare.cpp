@@ -20,11 +20,13 @@
 #include "cli/model_validity.hpp"
 #include "cli/option_values.hpp"
 #include "cli/compare_output.hpp"
+#include "cli/compare_rounded.hpp"
 #include "cli/settings_listing.hpp"
 #include "cli/simulation_failure.hpp"
 #include "cli/wall_options.hpp"
 #include "cli/run_budget_option.hpp"
 #include "compare/experiments.hpp"
+#include "compare/rounded_corners.hpp"
 #include "io/json.hpp"
 #include "study/response_comparison.hpp"
 #include "multibody/host/analytic_engine.hpp"
@@ -109,7 +111,40 @@ void run_compare_response(const CompareOptions& o, std::ostream& out) {
     print_response_comparison(result, chosen, seconds_since(start), o.json, o.strict, out);
 }
 
+// Rounded corners: the model gives the threshold only (Eq. 12r / 17r); each engine's threshold and period, and their
+// spread (compare/rounded_corners.hpp).
+void run_compare_rounded(const CompareOptions& o, const ChosenModel& chosen, std::ostream& out) {
+    require(std::isfinite(o.theta0) && o.theta0 >= kMinRelease && o.theta0 < 1.0, "--theta0",
+            fmt::format("from {:g} to below 1 (a fraction of alpha)", kMinRelease), o.theta0);
+    const multibody::WallScene scene(chosen.wall);
+    std::vector<std::unique_ptr<multibody::Engine>> engines;
+    std::vector<compare::RoundedEngine> runs;
+    for (const std::string& name : parse_engine_list("--engine", o.engines)) {
+        if (name == "analytic")
+            throw InputError("--engine analytic with --corner-radius: the analytic model's motion is the sharp "
+                             "blocks'; its threshold (Eq. 12r / 17r) is printed beside the engines'");
+        engines.push_back(multibody::make_engine(name));
+        runs.push_back({engines.back().get(), settings_of(*engines.back(), o)});
+        multibody::require_settings_fit_wall(engines.back()->display_name(), runs.back().settings,
+                                             engines.back()->setting_descriptions(), scene);
+    }
+    const compare::RoundedCornerComparison result = compare::compare_rounded_corners(runs, scene, o.theta0);
+    if (o.json)
+        out << io::dump_json(to_json(result, o.wall, chosen.kind), 2) << '\n';
+    else
+        print_rounded_corners(out, result, o.wall, chosen.kind);
+    std::vector<std::string> why;
+    for (const compare::RoundedEngineResult& e : result.engines)
+        if (!e.failure.empty()) why.push_back(e.engine + ": " + e.failure);
+        else if (!std::isfinite(e.period)) why.push_back(e.engine + ": no first impact resolved");
+    if (!why.empty()) throw SimulationFailure(fmt::format("{}", fmt::join(why, "; ")));
+}
+
 void run_compare(const CompareOptions& o, std::ostream& out) {
+    if (o.wall.corner_radius != 0.0 && (o.motion.record || o.motion.pulse))
+        throw InputError("--corner-radius with --record or --pulse: the analytic reference cannot roll on rounded "
+                         "corners; without a motion, compare gives each engine's threshold and period and their "
+                         "spread");
     if (o.motion.record || o.motion.pulse) {
         run_compare_response(o, out);
         return;
@@ -117,6 +152,10 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
     // Every input is checked before the first engine runs: the wall and the reference's model, the engines and each
     // one's settings, the release.
     const ChosenModel chosen = choose_model(o.wall, o.model);
+    if (o.wall.corner_radius != 0.0) {
+        run_compare_rounded(o, chosen, out);
+        return;
+    }
     const multibody::WallScene scene(chosen.wall);
     compare::ComparisonOptions options;
     options.reference = multibody::analytic_settings(chosen.assumptions);
@@ -177,6 +216,7 @@ Command add_compare_command(CLI::App& root) {
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
+    add_corner_radius_option(*cmd, o->wall);
     cmd->add_option_function<double>(
            "--theta0",
            [o](const double& r) {
@@ -230,7 +270,11 @@ Command add_compare_command(CLI::App& root) {
                "from rest under that motion instead, each run's peak rotation (theta1/alpha1), its time and overturning side\n"
                "by side: a one-case study (`vssw study` runs grids of them). JSON: {ground_motion, analytic_model, runs\n"
                "[{engine, version, settings, peak_rotation, peak_time, overturned, t_overturn, status, warnings (analytic),\n"
-               "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n\n"
+               "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n"
+               "With --corner-radius (rounded blocks, engines only: the analytic model gives Eq. 12r / 17r, not the\n"
+               "motion): each engine's threshold and period and their spread. JSON: {wall, corner_radius, closed_forms\n"
+               "{threshold_g, threshold_sharp_g}, theta0, engines [{engine, threshold_g, threshold_rel_error, period,\n"
+               "failure}], threshold_spread, period_spread}; exit 3 when an engine failed.\n\n"
                "Every backend's settings in this build (--list-settings prints them alone):\n\n") +
                settings_listing({}, false);
     });

@@ -50,6 +50,13 @@ void add_wall_options(CLI::App& cmd, WallOptions& o, bool model_choice) {
     cmd.add_option("--g", o.g, fmt::format("gravity [m/s^2] (default {})", kDefaultGravity));
 }
 
+void add_corner_radius_option(CLI::App& cmd, WallOptions& o) {
+    cmd.add_option("--corner-radius", o.corner_radius,
+                   fmt::format("round every block corner to r = this * b, r/b in [0, {:g}]: 0 sharp corners (the "
+                               "paper's blocks, default); the base pivot and the hinge move in to b - r (Eq. 12r, "
+                               "17r); engines that cannot round their blocks refuse it",
+                               kMaxCornerRadius));
+}
 
 void add_model_options(CLI::App& cmd, ModelOptions& o) {
     cmd.add_option("--model", o.model, "vssw (two blocks with a top roller) or parapet (one block) (default vssw)");
@@ -97,11 +104,15 @@ std::string unilateral_with_paper_kinematics(const ModelOptions& o) {
 
 VsswGeometry vssw_geometry(const WallOptions& o) {
     if (!o.hinge) throw InputError("--hinge (the hinge height ratio h1/h) is required for a VSSW");
-    return with_eccentricity(make_vssw(o.height, o.thickness, *o.hinge, o.xi, o.density, o.g), o.eccentricity);
+    return with_corner_radius(
+        with_eccentricity(make_vssw(o.height, o.thickness, *o.hinge, o.xi, o.density, o.g), o.eccentricity),
+        o.corner_radius);
 }
 
 ParapetGeometry parapet_geometry(const WallOptions& o) {
-    return with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity);
+    return with_corner_radius(
+        with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity),
+        o.corner_radius);
 }
 
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
@@ -139,15 +150,17 @@ io::Json wall_inputs_json(const WallOptions& o, WallKind kind) {
     j["density"] = o.density;
     j["g"] = o.g;
     if (o.eccentricity != 0.0) j["overburden_eccentricity"] = o.eccentricity;
+    if (o.corner_radius != 0.0) j["corner_radius"] = o.corner_radius;
     return j;
 }
 
 std::string describe_wall(const WallOptions& o, WallKind kind) {
     const std::string hinge = kind == WallKind::vssw && o.hinge ? fmt::format(", hinge h1/h {}", *o.hinge) : "";
     const std::string at = o.eccentricity != 0.0 ? fmt::format(" at e/b {}", o.eccentricity) : "";
-    return fmt::format("{}: height {} m, thickness {} m{}, xi {}{}, density {} kg/m^3, g {} m/s^2",
+    const std::string corners = o.corner_radius != 0.0 ? fmt::format(", corners rounded r/b {}", o.corner_radius) : "";
+    return fmt::format("{}: height {} m, thickness {} m{}, xi {}{}, density {} kg/m^3, g {} m/s^2{}",
                        kind == WallKind::vssw ? "VSSW" : "parapet", o.height, o.thickness, hinge, o.xi, at, o.density,
-                       o.g);
+                       o.g, corners);
 }
 
 }  // namespace vssw::cli

@@ -30,6 +30,7 @@ struct WallOptions {
     double eccentricity = 0.0;    // e/b of N on the (upper) body's top face, in [-1, 1] (analytic/geometry.hpp)
     double density = kDefaultDensity;
     double g = kDefaultGravity;
+    double corner_radius = 0.0;   // r/b of the blocks' rounded corners, in [0, kMaxCornerRadius] (analytic/wall.hpp)
 };
 
 // The wall of Fig. 6 of the paper, the subject of `vssw summary`.
@@ -58,6 +59,9 @@ Assumptions resolve_assumptions(const ModelOptions& options);
 // command also takes --model) only changes the help of --hinge: whether a hinge is required is decided by
 // vssw_geometry(), so that a parapet can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
+// --corner-radius: on the commands whose answer holds for rounded corners (compare, wall); the analytic model's
+// motion is the sharp blocks' (docs/model/analytic-core.md, "Rounded corners"), so free and history do not take it.
+void add_corner_radius_option(CLI::App& cmd, WallOptions& options);
 // --model.
 void add_model_options(CLI::App& cmd, ModelOptions& options);
 // --assumptions (paper | mechanism) and the overrides --kinematics, --impact, --roller: the analytic model's
@@ -91,7 +95,8 @@ io::Json assumptions_json(const ChosenModel& chosen);
 std::string describe_assumptions(const ChosenModel& chosen);
 
 // The wall as given, for the JSON outputs: height, thickness, hinge_ratio (null for a parapet), xi, density, g, and
-// overburden_eccentricity when it is not 0 (a centred N's outputs are those of before it existed).
+// overburden_eccentricity and corner_radius when they are not 0 (a centred N's and sharp corners' outputs are those of
+// before they existed).
 io::Json wall_inputs_json(const WallOptions& options, WallKind kind);
 // One line naming the wall, e.g. "VSSW  height 4 m, thickness 0.4 m, hinge h1/h 0.7, xi 0, density 1800 kg/m^3".
 std::string describe_wall(const WallOptions& options, WallKind kind);

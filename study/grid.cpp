@@ -37,7 +37,8 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "overburden_eccentricity",
                                                 "units", "duration", "tolerance", "max_pga", "step", "perturbation",
-                                                "pgv", "sa", "arias", "sa_period", "sa_damping", "response_tail"};
+                                                "pgv", "sa", "arias", "sa_period", "sa_damping", "response_tail",
+                                                "corner_radius"};
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
@@ -445,17 +446,20 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
         thickness = 2.0 * l.num("R", 0.0) * std::sin(l.num("alpha", 0.0));
     }
     const double eccentricity = l.num("overburden_eccentricity", 0.0);  // N's e/b (analytic/geometry.hpp)
+    const double corners = l.num("corner_radius", 0.0);  // r/b of the rounded corners (analytic/wall.hpp)
     if (c.model == "parapet") {
-        c.scene = multibody::WallScene::of(
-            with_eccentricity(make_parapet(height, thickness, c.xi, c.density, c.g), eccentricity));
+        c.scene = multibody::WallScene::of(with_corner_radius(
+            with_eccentricity(make_parapet(height, thickness, c.xi, c.density, c.g), eccentricity), corners));
     } else if (l.has("alpha1")) {
-        c.scene = multibody::WallScene::of(with_eccentricity(
-            make_vssw_from_angles(l.num("alpha1", 0.0), l.num("alpha2", 0.0), l.num("R1", 0.0), c.xi, c.density, c.g),
-            eccentricity));
+        c.scene = multibody::WallScene::of(with_corner_radius(
+            with_eccentricity(make_vssw_from_angles(l.num("alpha1", 0.0), l.num("alpha2", 0.0), l.num("R1", 0.0),
+                                                    c.xi, c.density, c.g),
+                              eccentricity),
+            corners));
     } else {
         if (!hinge) throw InputError("a VSSW needs a hinge ratio");
-        c.scene = multibody::WallScene::of(
-            with_eccentricity(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g), eccentricity));
+        c.scene = multibody::WallScene::of(with_corner_radius(
+            with_eccentricity(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g), eccentricity), corners));
     }
 }
 

@@ -15,6 +15,7 @@
 #include "analytic/input_file.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/intensity_measures.hpp"
+#include "analytic/wall.hpp"
 #include "io/config_file.hpp"
 #include "io/csv.hpp"
 #include "io/json.hpp"
@@ -30,9 +31,9 @@ namespace vssw::study {
 
 const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thickness", "alpha", "R",      "alpha1",
                                             "alpha2", "R1",      "hinge",  "xi",        "overburden_eccentricity",
-                                            "density", "g"};
+                                            "density", "g", "corner_radius"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
-const std::vector<std::string> kPhysicalAssumptionKeys = {"overburden_eccentricity"};
+const std::vector<std::string> kPhysicalAssumptionKeys = {"overburden_eccentricity", "corner_radius"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "pgv",      "sa",        "arias",
                                                   "shape",        "amplitude", "pulse_period",
@@ -178,6 +179,13 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
         if (!(x >= -1.0 && x <= 1.0))
             r.fail(key, fmt::format("must be N's eccentricity e/b in [-1, 1] (the top face's corners), got {}",
                                     io::dump_json(v)));
+        return x;
+    }
+    if (k == "corner_radius") {
+        const double x = r.number(v, key, fmt::format("r/b in [0, {:g}]", kMaxCornerRadius));
+        if (!(x >= 0.0 && x <= kMaxCornerRadius))
+            r.fail(key, fmt::format("must be the corners' radius r/b in [0, {:g}] (0: sharp), got {}",
+                                    kMaxCornerRadius, io::dump_json(v)));
         return x;
     }
     if (k == "xi") {

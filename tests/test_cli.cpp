@@ -22,6 +22,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/wall.hpp"
 #include "cli/option_values.hpp"
+#include "compare/targets.hpp"
 #include "multibody/engine.hpp"
 #include "tests/table1.hpp"
 
@@ -216,6 +217,29 @@ TEST(CliCompare, ClosedFormsLineNamesTheEccentricThreshold) {
     const CliResult centred = run_cli(base);
     ASSERT_EQ(centred.code, 0) << centred.err;
     EXPECT_NE(centred.out.find("Eq. (12) threshold, Eq. (19)"), std::string::npos) << centred.out;
+}
+
+// Rounded corners (docs/model/analytic-core.md, "Rounded corners"): with N at the centre Eq. (12r) and (17r) are the
+// sharp thresholds times (1 - r/b), each taken from the sharp wall's own closed form; r/b = 0 is the output of before,
+// character for character.
+TEST(CliWall, RoundedCornersScaleTheThresholdsByTheFlatShare) {
+    const std::vector<std::string> base = {"wall", "--height", "1.5", "--thickness", "0.11", "--hinge", "0.6", "--xi",
+                                           "0.5"};
+    const Json j = run_json(base + std::vector<std::string>{"--corner-radius", "0.2"});
+    const vssw::VsswGeometry w = vssw::make_vssw(1.5, 0.11, 0.6, 0.5);
+    EXPECT_NEAR(j["threshold_g"].get<double>() / (vssw::eq12_threshold(w) / w.g), 0.8, kRoundoff);
+    EXPECT_NEAR(j["parapet"]["threshold_g"].get<double>() /
+                    (vssw::eq17_parapet_threshold(vssw::make_parapet(1.5, 0.11, 0.5)) / w.g),
+                0.8, kRoundoff);
+    EXPECT_EQ(j["corner_radius"].get<double>(), 0.2);
+    const CliResult table = run_cli(base + std::vector<std::string>{"--corner-radius", "0.2"});
+    for (const char* said : {"Eq. (12r)", "Eq. (17r)", "Eq. (19), sharp corners", "xi and r/b"})
+        EXPECT_NE(table.out.find(said), std::string::npos) << said << "\n" << table.out;
+    for (bool json : {false, true}) {
+        std::vector<std::string> plain = base, zero = base + std::vector<std::string>{"--corner-radius", "0"};
+        if (json) plain.push_back("--json"), zero.push_back("--json");
+        EXPECT_EQ(run_cli(zero).out, run_cli(plain).out);  // must fail if r = 0 changed a character
+    }
 }
 
 TEST(CliWall, RollerLimitIsNullAtAndBelowMidHeight) {
@@ -492,6 +516,15 @@ INSTANTIATE_TEST_SUITE_P(
         bad("HingeAboveOne", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "1.2"}, {"hinge", "1.2"}),
         bad("HingeZero", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0"}, {"hinge", "got 0"}),
         bad("NegativeXi", with_fig6({"wall", "--xi", "-0.1"}), {"xi", "-0.1"}),
+        bad("CornerRadiusPastHalfTheThickness", with_fig6({"wall", "--corner-radius", "0.6"}),
+            {"corner radius r/b", "[0, 0.5]", "got 0.6"}),
+        bad("CornerRadiusOnTheAnalyticModel",
+            with_fig6({"compare", "--engine", "analytic", "--corner-radius", "0.1"}),
+            {"--engine analytic with --corner-radius", "Eq. 12r"}),
+        bad("CornerRadiusUnderAPulse",
+            with_fig6({"compare", "--engine", "box2d", "--corner-radius", "0.1", "--pulse", "ricker", "--amplitude",
+                       "0.4", "--pulse-period", "0.5"}),
+            {"--corner-radius with --record or --pulse"}),
         bad("EccentricityPastTheCorner",
             with_fig6({"compare", "--engine", "analytic", "--overburden-eccentricity", "1.5"}),
             {"overburden eccentricity e/b", "[-1, 1]", "got 1.5"}),
@@ -550,6 +583,27 @@ TEST(CliCompare, AnalyticAgainstItselfHasNoErrorAndKeepsTheContract) {
     EXPECT_TRUE(j["wall_time_s"].is_number());
     EXPECT_TRUE(j["failures"].is_array() && j["failures"].empty());
     EXPECT_TRUE(j["closed_forms"]["threshold_g"].is_number());
+}
+
+// Rounded corners: each engine that rounds its blocks beside Eq. (17r) (a parapet: its runs are short), and the
+// engines' spread; an engine that does not round them refuses the wall, naming why.
+TEST(CliCompare, RoundedCornersReportEachEngineAndTheirSpread) {
+    const std::vector<std::string> wall = {"compare", "--model", "parapet", "--height", "1.2", "--thickness", "0.2",
+                                           "--xi", "0.5", "--corner-radius", "0.1", "--json"};
+    if (!vssw::testing::engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
+    const Json j = run_json(std::vector<std::string>{"compare", "--engine", "box2d"} +
+                            std::vector<std::string>(wall.begin() + 1, wall.end()));
+    const vssw::ParapetGeometry p = vssw::with_corner_radius(vssw::make_parapet(1.2, 0.2, 0.5), 0.1);
+    EXPECT_NEAR(j["closed_forms"]["threshold_g"].get<double>(), vssw::eq17_parapet_threshold(p) / p.g, kRoundoff);
+    ASSERT_EQ(j["engines"].size(), 1u);
+    EXPECT_NEAR(j["engines"][0]["threshold_rel_error"].get<double>(), 0.0, vssw::compare::kThresholdTarget);
+    EXPECT_GT(j["engines"][0]["period"].get<double>(), 0.0);
+    EXPECT_TRUE(j["threshold_spread"].is_null());  // one engine: no spread
+    if (!vssw::testing::engine_available("simbody")) return;
+    const CliResult refused = run_cli(std::vector<std::string>{"compare", "--engine", "simbody"} +
+                                      std::vector<std::string>(wall.begin() + 1, wall.end()));
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_NE(refused.err.find("Simbody does not round its blocks yet ("), std::string::npos) << refused.err;
 }
 
 TEST(CliCompare, UnknownEngineIsBadInputNamingIt) {

@@ -376,6 +376,21 @@ TEST(StudyMeasure, OverburdenEccentricityIsAWallAxis) {
                 kThresholdBracket);
 }
 
+// corner_radius is a wall axis: an engine that rounds its blocks lifts the parapet at Eq. (17r), (1 - r/b) times the
+// sharp threshold (1 + xi) b/h; at r/b 0.2 the sharp value would be 25 % off, and r/b 0 must give it.
+TEST(StudyMeasure, CornerRadiusIsAWallAxis) {
+    if (!vssw::testing::engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
+    constexpr double kEngineThreshold = 5e-3;  // the project's threshold target (compare/targets.hpp)
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_g\"]\nengines = [\"box2d\"]\n[wall]\nmodel = \"parapet\"\n"
+                                  "height = 1.2\nthickness = 0.2\nxi = 0.5\ncorner_radius = [0.0, 0.2]\n"
+                                  "[excitation]\nkind = \"threshold\"\n"));
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const double sharp = 1.5 * 0.2 / 1.2;
+    EXPECT_NEAR(value_of(t, "threshold_g", {{"corner_radius", "0"}}) / sharp - 1.0, 0.0, kEngineThreshold);
+    EXPECT_NEAR(value_of(t, "threshold_g", {{"corner_radius", "0.2"}}) / (0.8 * sharp) - 1.0, 0.0, kEngineThreshold);
+}
+
 // A free vibration's restitution is the run's impact law (Eq. 19, the whole mechanism's) and its period the model's.
 TEST(StudyMeasure, FreeVibrationGivesTheModelsImpactLawAndPeriod) {
     const TempDir dir;

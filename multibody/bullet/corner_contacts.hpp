@@ -23,10 +23,11 @@ class CornerContacts {
 public:
     // ground: the static (or kinematic) box whose top face is y = 0; upper may be null (a parapet). b: half width;
     // h_lower, h_upper: half heights; friction at the ground and the hinge (the roller is frictionless).
+    // corner_radius: r of every block corner (kit/rounded_corners.hpp), 0 for the sharp blocks.
     CornerContacts(btRigidBody& ground, btRigidBody& lower, btRigidBody* upper, double b, double h_lower,
-                   double h_upper, double friction)
+                   double h_upper, double friction, double corner_radius = 0.0)
         : lower_(lower), upper_(upper), ground_(ground), b_(b), h_lower_(h_lower), h_upper_(h_upper),
-          friction_(friction) {
+          friction_(friction), r_(corner_radius) {
         manifolds_[0] = make(lower, ground);
         if (upper) {
             manifolds_[1] = make(*upper, lower);
@@ -36,6 +37,10 @@ public:
 
     // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground).
     void update() {
+        if (r_ > 0.0) {
+            update_rounded();
+            return;
+        }
         const double x0 = ground_.getWorldTransform().getOrigin().x();
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
@@ -83,6 +88,43 @@ public:
     }
 
 private:
+    // Rounded corners: each corner is an arc of radius r about a centre r inside both faces. The base: per side the
+    // lowest point of the arc's circle, or, when the block has turned that side up (the circle's lowest point is then
+    // inside the block, past the arc's end), the arc's end on the flat base, the flat part's corner; at rest both are
+    // the flat's end (b - r, 0). The hinge: per side the two arcs' circles (the lower block's top one, the upper
+    // block's bottom one), normal along their centres' line, distance that line's length less 2 r: at rest the flats'
+    // common end, then the arcs rolling on each other; the circles lie inside the blocks, so the distance never
+    // reports an overlap the outlines do not have. The roller holds the nominal top corners, as for sharp blocks.
+    void update_rounded() {
+        const double x0 = ground_.getWorldTransform().getOrigin().x(), in = b_ - r_;
+        btPersistentManifold& base = *manifolds_[0];
+        base.clearManifold();
+        const btTransform& tl = lower_.getWorldTransform();
+        for (double side : {-1.0, 1.0}) {
+            const btVector3 centre = tl * btVector3(side * in, -(h_lower_ - r_), 0);
+            const btVector3 down = tl.getBasis().transpose() * btVector3(0, -1, 0);  // the world's down, block frame
+            const btVector3 lowest = side * down.x() >= 0.0 ? centre - btVector3(0, r_, 0)
+                                                            : tl * btVector3(side * in, -h_lower_, 0);
+            add(base, lowest, btVector3(lowest.x(), 0, 0), btVector3(0, 1, 0), friction_);
+        }
+        if (!upper_) return;
+        btPersistentManifold& hinge = *manifolds_[1];
+        hinge.clearManifold();
+        const btTransform& tu = upper_->getWorldTransform();
+        for (double side : {-1.0, 1.0}) {
+            const btVector3 c_lower = tl * btVector3(side * in, h_lower_ - r_, 0);
+            const btVector3 c_upper = tu * btVector3(side * in, -(h_upper_ - r_), 0);
+            const btVector3 n = (c_upper - c_lower).normalized();  // on the lower block, towards the upper
+            add(hinge, c_upper - n * r_, c_lower + n * r_, n, friction_);
+        }
+        btPersistentManifold& roller = *manifolds_[2];
+        roller.clearManifold();
+        for (double side : {-1.0, 1.0}) {
+            const btVector3 corner = tu * btVector3(side * b_, h_upper_, 0);
+            add(roller, corner, btVector3(x0 + side * b_, corner.y(), 0), btVector3(-side, 0, 0), 0.0);
+        }
+    }
+
     std::unique_ptr<btPersistentManifold> make(btRigidBody& a, btRigidBody& b) {
         constexpr double kEverywhere = 1e30;  // every point written is solved: the manifold filters none
         auto m = std::make_unique<btPersistentManifold>(&a, &b, 0, kEverywhere, kEverywhere);
@@ -109,6 +151,7 @@ private:
     btRigidBody* upper_;
     btRigidBody& ground_;
     double b_, h_lower_, h_upper_, friction_;
+    double r_;  // the corners' radius (0: sharp)
     std::array<std::unique_ptr<btPersistentManifold>, 3> manifolds_{};
     std::array<btPersistentManifold*, 3> raw_{};
     int count_ = 0;
