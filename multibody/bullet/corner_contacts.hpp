@@ -22,11 +22,12 @@ namespace vssw::multibody {
 class CornerContacts {
 public:
     // ground: the static (or kinematic) box whose top face is y = 0; upper may be null (a parapet). b: half width;
-    // h_lower, h_upper: half heights; friction at the ground and the hinge (the roller is frictionless).
+    // h_lower, h_upper: half heights; friction at the ground and at the hinge (the roller is frictionless): each
+    // point's m_combinedFriction, Bullet's Coulomb bound on its two friction rows, set here rather than mixed.
     CornerContacts(btRigidBody& ground, btRigidBody& lower, btRigidBody* upper, double b, double h_lower,
-                   double h_upper, double friction)
+                   double h_upper, double friction, double hinge_friction)
         : lower_(lower), upper_(upper), ground_(ground), b_(b), h_lower_(h_lower), h_upper_(h_upper),
-          friction_(friction) {
+          friction_(friction), hinge_friction_(hinge_friction) {
         manifolds_[0] = make(lower, ground);
         if (upper) {
             manifolds_[1] = make(*upper, lower);
@@ -52,7 +53,7 @@ public:
         const btVector3 face = tl * btVector3(0, h_lower_, 0);
         for (double side : {-1.0, 1.0}) {
             const btVector3 corner = tu * btVector3(side * b_, -h_upper_, 0);
-            add(hinge, corner, corner - n * (corner - face).dot(n), n, friction_);
+            add(hinge, corner, corner - n * (corner - face).dot(n), n, hinge_friction_);
         }
         btPersistentManifold& roller = *manifolds_[2];
         roller.clearManifold();
@@ -108,7 +109,7 @@ private:
     btRigidBody& lower_;
     btRigidBody* upper_;
     btRigidBody& ground_;
-    double b_, h_lower_, h_upper_, friction_;
+    double b_, h_lower_, h_upper_, friction_, hinge_friction_;
     std::array<std::unique_ptr<btPersistentManifold>, 3> manifolds_{};
     std::array<btPersistentManifold*, 3> raw_{};
     int count_ = 0;

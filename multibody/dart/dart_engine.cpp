@@ -28,6 +28,8 @@
 // of make_engine() is a forked child anyway).
 #include "multibody/dart/dart_engine.hpp"
 
+#include <algorithm>
+
 #include <dart/collision/CollisionFilter.hpp>
 #include <dart/collision/CollisionObject.hpp>
 #include <dart/collision/dart/DARTCollisionDetector.hpp>
@@ -46,6 +48,7 @@
 #include <dart/simulation/World.hpp>
 
 #include <cmath>
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
@@ -195,14 +198,17 @@ public:
         }
         dd::ShapeNode* ground_box = add_shape(
             ground_body_, std::make_shared<dd::BoxShape>(Vector3d(2.0 * half_width, 2.0 * h, 4.0 * kDepth)),
-            Vector3d(0.0, -h, 0.0), scene.friction);
+            Vector3d(0.0, -h, 0.0), scene.base_mu());
 
         dd::ShapeNode* lower_box = nullptr;
-        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, scene.friction, lower_box);
+        // DART 6 takes the smaller of two shapes' coefficients: the lower block carries the larger of the base's and
+        // the hinge's, so that the ground's sets the base's and the upper block's the hinge's.
+        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, std::max(scene.base_mu(), scene.hinge_mu()),
+                           lower_box);
         filter->allow(ground_box, lower_box);
         if (scene.vssw) {
             dd::ShapeNode* upper_box = nullptr;
-            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.friction, upper_box);
+            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.hinge_mu(), upper_box);
             filter->allow(lower_box, upper_box);
             // The roller: a sphere centred at each top corner, a guide whose face is the radius outside x = +-b.
             const double r = kRollerRadiusShare * b, guide_half = b;

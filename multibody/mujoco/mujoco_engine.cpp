@@ -162,7 +162,9 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
     const double tc = k.solref_steps * dt;
     const std::string contact = fmt::format("solref='{} {}' solimp='{} {} {} 0.5 2'", num(tc), num(k.dampratio),
                                             num(k.solimp_dmin), num(k.solimp_dmax), num(k.solimp_width));
-    const std::string friction = fmt::format("friction='{0} {0} 0.005 0.0001 0.0001'", num(scene.friction));
+    // A pair's friction overrides the geoms' mixing: the base's pair carries the base's, the hinge's the hinge's.
+    auto friction_of = [](double mu) { return fmt::format("friction='{0} {0} 0.005 0.0001 0.0001'", num(mu)); };
+    const std::string friction = friction_of(scene.base_mu()), hinge_friction = friction_of(scene.hinge_mu());
     std::string xml = fmt::format(
         "<mujoco model='vssw'>\n<compiler angle='radian' inertiafromgeom='false'/>\n"
         "<option timestep='{}' gravity='0 0 {}' integrator='{}' cone='pyramidal' impratio='1' "
@@ -195,7 +197,8 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
     xml += fmt::format("<pair geom1='ground' geom2='lower' condim='3' {} {}/>\n", friction, contact);
     if (scene.vssw) {
         for (const char* corner : {"bottom_right", "bottom_left"})
-            xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, friction, contact);
+            xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, hinge_friction,
+                               contact);
         xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
         xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
     }

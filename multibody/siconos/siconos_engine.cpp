@@ -279,10 +279,11 @@ public:
 
         nsds_ = std::make_shared<NonSmoothDynamicalSystem>(0.0, 1e300);
         nsds_->insertDynamicalSystem(system_);
-        const double b = sizes_.b, h1 = sizes_.h_lower, h2 = sizes_.h_upper, mu = scene.friction;
+        const double b = sizes_.b, h1 = sizes_.h_lower, h2 = sizes_.h_upper, mu = scene.base_mu();
         for (double side : {1.0, -1.0}) {
             add_contact({kLower, {side * b, -h1}, kGround, {0.0, 0.0}, {0.0, 1.0}}, knobs.e_ground, mu);
-            if (vssw_) add_contact({kUpper, {side * b, -h2}, kLower, {0.0, h1}, {0.0, 1.0}}, knobs.e_hinge, mu);
+            if (vssw_) add_contact({kUpper, {side * b, -h2}, kLower, {0.0, h1}, {0.0, 1.0}}, knobs.e_hinge,
+                                   scene.hinge_mu());
         }
         if (vssw_) {
             auto guide = [&](double side) -> PointOnLineR::Geometry {
