@@ -142,6 +142,22 @@ GroundMotion case_motion(const Grid& grid, const CaseSpec& c, double scale) {
     }
 }
 
+// The finite-friction metrics (compare/metric_catalog.cpp) of a run: NaN (empty) where the run has none, nullopt for
+// another metric.
+std::optional<double> friction_metric(const std::string& metric, const compare::Response& r) {
+    const auto slip = [&](double multibody::SlipMeasures::*field) {
+        return r.slip ? (*r.slip).*field / r.slip->b : kNaN;
+    };
+    if (metric == "base_slip") return slip(&multibody::SlipMeasures::base_largest);
+    if (metric == "hinge_slip") return slip(&multibody::SlipMeasures::hinge_largest);
+    if (metric == "residual_base_slip") return slip(&multibody::SlipMeasures::base_residual);
+    if (metric == "residual_hinge_slip") return slip(&multibody::SlipMeasures::hinge_residual);
+    if (metric == "slid_before_rocking") return r.slip ? (r.slip->slid_before_rocking() ? 1.0 : 0.0) : kNaN;
+    if (metric == "base_friction_needed") return r.base_friction_needed.value_or(kNaN);
+    if (metric == "hinge_friction_needed") return r.hinge_friction_needed.value_or(kNaN);
+    return std::nullopt;
+}
+
 Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, const CaseSpec& c,
                          const GroundMotion& motion) {
     multibody::Excitation ex;
@@ -408,6 +424,8 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                                 const Trajectory t = run_from_rest(engine, run, c, case_motion(grid, c, c.scale));
                                 response = response_of(t, c.scene);
                                 response_warnings = t.warnings;
+                                // A wall that slid off its support ended there (multibody::SlipMeter): said.
+                                if (t.slip && t.slip->slid_off) response_warnings->push_back(*t.slip->slid_off);
                             }
                         },
                         response_failure);
@@ -422,6 +440,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 else if (metric == "t_overturn") add(m, r.t_overturn.value_or(kNaN), kOk);
                 else if (metric == "energy_balance_error") add(m, r.energy_error.value_or(kNaN), kOk);
                 else if (metric == "roller_tension_time") add(m, r.tension_at.value_or(kNaN), kOk);
+                else if (const std::optional<double> v = friction_metric(metric, r)) add(m, *v, kOk);
                 break;
             }
             case compare::MetricSource::collapse: {

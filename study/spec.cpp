@@ -30,7 +30,7 @@ namespace vssw::study {
 
 const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thickness", "alpha", "R",      "alpha1",
                                             "alpha2", "R1",      "hinge",  "xi",        "overburden_eccentricity",
-                                            "density", "g"};
+                                            "density", "g",      "friction", "hinge_friction"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "pgv",      "sa",        "arias",
@@ -177,6 +177,12 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
         if (!(x >= -1.0 && x <= 1.0))
             r.fail(key, fmt::format("must be N's eccentricity e/b in [-1, 1] (the top face's corners), got {}",
                                     io::dump_json(v)));
+        return x;
+    }
+    if (k == "friction" || k == "hinge_friction") {  // the contacts' Coulomb coefficient (multibody/engine.hpp)
+        const double x = r.number(v, key, "a friction coefficient > 0");
+        if (!(x > 0.0 && std::isfinite(x)))
+            r.fail(key, fmt::format("must be a friction coefficient > 0, got {}", io::dump_json(v)));
         return x;
     }
     if (k == "xi") {
