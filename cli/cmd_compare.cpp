@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/compare_response.hpp"
 #include "cli/early_output.hpp"
+#include "cli/friction_option.hpp"
 #include "cli/ground_motion_options.hpp"
 #include "cli/model_validity.hpp"
 #include "cli/option_values.hpp"
@@ -48,6 +49,7 @@ struct CompareOptions {
     GroundMotionOptions motion;  // --record or --pulse: a comparison under a ground motion (compare_response.hpp)
     bool theta0_given = false;
     bool strict = false;  // exit 3 when the analytic reference's own assumptions fail (its warnings)
+    std::optional<std::string> friction;  // --friction as typed (friction_option.hpp)
 };
 
 multibody::EngineSettings settings_of(const multibody::Engine& engine, const CompareOptions& o) {
@@ -104,8 +106,8 @@ void run_compare_response(const CompareOptions& o, std::ostream& out) {
     // The reference's assumptions as resolved: a parapet ignores its kinematics and roller.
     const multibody::AnalyticAssumptions& reference = chosen.assumptions;
     const auto start = std::chrono::steady_clock::now();
-    const study::ResponseComparison result =
-        study::compare_response(multibody::WallScene(chosen.wall), reference, motion, engines);
+    const study::ResponseComparison result = study::compare_response(
+        with_friction(multibody::WallScene(chosen.wall), o.friction), reference, motion, engines);
     print_response_comparison(result, chosen, seconds_since(start), o.json, o.strict, out);
 }
 
@@ -117,7 +119,7 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
     // Every input is checked before the first engine runs: the wall and the reference's model, the engines and each
     // one's settings, the release.
     const ChosenModel chosen = choose_model(o.wall, o.model);
-    const multibody::WallScene scene(chosen.wall);
+    const multibody::WallScene scene = with_friction(multibody::WallScene(chosen.wall), o.friction);
     compare::ComparisonOptions options;
     options.reference = multibody::analytic_settings(chosen.assumptions);
     std::vector<std::unique_ptr<multibody::Engine>> engines;
@@ -177,6 +179,7 @@ Command add_compare_command(CLI::App& root) {
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
+    add_friction_option(*cmd, o->friction);
     cmd->add_option_function<double>(
            "--theta0",
            [o](const double& r) {
