@@ -32,7 +32,9 @@ void add_friction_fields(const RunResult& r, const study::CaseSpec& c, io::Json&
         e["slip"] = {{"base", contact(r.base_slip, r.residual_base_slip)},
                      {"hinge", contact(r.hinge_slip, r.residual_hinge_slip)},
                      {"slid_before_rocking", std::isfinite(r.slid_before_rocking)
-                                                 ? io::Json(r.slid_before_rocking == 1.0) : io::Json(nullptr)}};
+                                                 ? io::Json(r.slid_before_rocking == 1.0) : io::Json(nullptr)},
+                     // An engine's only warning: the wall slid off its support, which ended the run.
+                     {"slid_off", r.warnings.empty() ? io::Json(nullptr) : io::Json(r.warnings)}};
         return;
     }
     const multibody::WallScene& s = c.scene;
@@ -50,9 +52,10 @@ std::string friction_line(const RunResult& r) {
         return fmt::format("friction needed: base {:.3g}, hinge {:.3g}", r.base_friction_needed,
                            r.hinge_friction_needed);
     }
-    return fmt::format("slip: base {:.3g} b (residual {:+.3g} b), hinge {:.3g} b (residual {:+.3g} b){}", r.base_slip,
+    return fmt::format("slip: base {:.3g} b (residual {:+.3g} b), hinge {:.3g} b (residual {:+.3g} b){}{}", r.base_slip,
                        r.residual_base_slip, r.hinge_slip, r.residual_hinge_slip,
-                       r.slid_before_rocking == 1.0 ? ", slid before it rocked" : "");
+                       r.slid_before_rocking == 1.0 ? ", slid before it rocked" : "",
+                       r.warnings.empty() ? "" : ", slid off its support (the run ended there)");
 }
 
 }  // namespace

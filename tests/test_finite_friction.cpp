@@ -203,16 +203,24 @@ TEST_P(FiniteFriction, ParapetSlidesBeforeItRocksBelowTanAlpha) {
                                               << above.t_first_lift.value_or(NAN);
 }
 
-// The VSSW's onset: at Eq. (12)'s threshold the mechanism's reactions are determinate (base, hinge and roller at their
-// corners, theta1'' = 0), and the base needs |T|/N of them. Below it the wall slides before it rocks; above, it lifts
-// first.
+// The VSSW's onset: at Eq. (12)'s threshold a_c the mechanism's reactions are determinate (base pivot, hinge and roller
+// at their corners, theta1'' = 0). The upper block's moments about the hinge give the roller R = b (W2 + N) / (2 h2) +
+// m2 a_c / 2, so the hinge carries T_h = R - m2 a_c and the base T_b = T_h - m1 a_c, under W1 + W2 + N
+// (docs/model/analytic-core.md "Finite friction"):
+//     mu_base = |(a_c/g)(m1 + m2/2) - (tan(alpha2)/2)(m2 + N/g)| / (m1 + m2 + N/g).
+// Below it the wall slides before it rocks; above, it lifts first. The model's two-block reactions at the onset are
+// the same number (a closed form against the model's Newton-Euler solve).
 TEST_P(FiniteFriction, VsswSlidesBeforeItRocksBelowTheOnsetsFriction) {
     const WallScene wall = table1_wall();
+    const VsswGeometry& w = *wall.vssw;
     const auto model = testing::analytic_reference(wall);
-    const SupportMonitor supports(*model);
+    const double a_c = model->rest_threshold(0.0), g = w.g;
+    const double m1 = w.m1, m2 = w.m2, n = w.N / g;  // per unit depth [kg/m]
+    const double F = std::abs(a_c / g * (m1 + 0.5 * m2) - 0.5 * std::tan(w.alpha2) * (m2 + n)) / (m1 + m2 + n);
     // theta1 > 0 is the side a negative a_h tips the wall to (multibody/engine.hpp).
-    const TwoBlockReactions onset = supports.reactions(1, 0.0, 0.0, 0.0, -model->rest_threshold(0.0), 0.0);
-    const double F = onset.base_friction;
+    const TwoBlockReactions onset = SupportMonitor(*model).reactions(1, 0.0, 0.0, 0.0, -a_c, 0.0);
+    constexpr double kSolve = 1e-9;  // the Newton-Euler solve's round-off on a ratio of order 0.1
+    EXPECT_NEAR(onset.base_friction, F, kSolve);
     const Excitation ex = rocking_pulse();
     const SlipMeasures below = slips(with_mu(wall, kBelow * F, kBelow * F), ex);
     const SlipMeasures above = slips(with_mu(wall, kAbove * F, kAbove * F), ex);
