@@ -233,7 +233,10 @@ Command add_compare_command(CLI::App& root) {
                "from rest under that motion instead, each run's peak rotation (theta1/alpha1), its time and overturning side\n"
                "by side: a one-case study (`vssw study` runs grids of them). JSON: {ground_motion, analytic_model, runs\n"
                "[{engine, version, settings, peak_rotation, peak_time, overturned, t_overturn, status, warnings (analytic),\n"
-               "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n\n"
+               "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n"
+               "With --friction as well: friction {base, hinge}; each engine's run slip {base, hinge {largest_b, largest_m,\n"
+               "residual_b, residual_m}, slid_before_rocking, slid_off}, the analytic run's friction_needed {base, hinge}\n"
+               "and would_slide {base, hinge} (docs/guide/program.md, \"Finite friction\").\n\n"
                "Every backend's settings in this build (--list-settings prints them alone):\n\n") +
                settings_listing({}, false);
     });

@@ -158,6 +158,14 @@ std::optional<double> friction_metric(const std::string& metric, const compare::
     return std::nullopt;
 }
 
+// A run's warnings: the analytic model's own, or an engine's wall that slid off its support, which ended the run
+// there (multibody::SlipMeter).
+std::vector<std::string> warnings_of(const Trajectory& t) {
+    std::vector<std::string> w = t.warnings;
+    if (t.slip && t.slip->slid_off) w.push_back(*t.slip->slid_off);
+    return w;
+}
+
 Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, const CaseSpec& c,
                          const GroundMotion& motion) {
     multibody::Excitation ex;
@@ -423,9 +431,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                             } else {
                                 const Trajectory t = run_from_rest(engine, run, c, case_motion(grid, c, c.scale));
                                 response = response_of(t, c.scene);
-                                response_warnings = t.warnings;
-                                // A wall that slid off its support ended there (multibody::SlipMeter): said.
-                                if (t.slip && t.slip->slid_off) response_warnings->push_back(*t.slip->slid_off);
+                                response_warnings = warnings_of(t);
                             }
                         },
                         response_failure);
