@@ -236,7 +236,9 @@ Command add_compare_command(CLI::App& root) {
                "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n"
                "With --friction as well: friction {base, hinge}; each engine's run slip {base, hinge {largest_b, largest_m,\n"
                "residual_b, residual_m}, slid_before_rocking, slid_off}, the analytic run's friction_needed {base, hinge}\n"
-               "and would_slide {base, hinge} (docs/guide/program.md, \"Finite friction\").\n\n"
+               "and would_slide {base, hinge} (docs/guide/program.md, \"Finite friction\"); without a ground motion each\n"
+               "engine's free_vibration_slip {base, hinge, tolerance_b, t_first_slip, t_first_lift, slid_before_rocking,\n"
+               "slid_off}.\n\n"
                "Every backend's settings in this build (--list-settings prints them alone):\n\n") +
                settings_listing({}, false);
     });
