@@ -30,7 +30,7 @@ void add_friction_fields(const RunResult& r, const study::CaseSpec& c, io::Json&
                             {"residual_b", number_or_null(residual)}, {"residual_m", number_or_null(residual * b)}};
         };
         e["slip"] = {{"base", contact(r.base_slip, r.residual_base_slip)},
-                     {"hinge", contact(r.hinge_slip, r.residual_hinge_slip)},
+                     {"hinge", c.scene.vssw ? contact(r.hinge_slip, r.residual_hinge_slip) : io::Json(nullptr)},
                      {"slid_before_rocking", std::isfinite(r.slid_before_rocking)
                                                  ? io::Json(r.slid_before_rocking == 1.0) : io::Json(nullptr)},
                      // An engine's only warning: the wall slid off its support, which ended the run.
@@ -46,14 +46,15 @@ void add_friction_fields(const RunResult& r, const study::CaseSpec& c, io::Json&
 }
 
 // The table's line of a run's sliding (friction given).
-std::string friction_line(const RunResult& r) {
+std::string friction_line(const RunResult& r, bool vssw) {
     if (r.engine == "analytic") {
         if (!std::isfinite(r.base_friction_needed)) return "friction needed: not computed (a parapet)";
         return fmt::format("friction needed: base {:.3g}, hinge {:.3g}", r.base_friction_needed,
                            r.hinge_friction_needed);
     }
-    return fmt::format("slip: base {:.3g} b (residual {:+.3g} b), hinge {:.3g} b (residual {:+.3g} b){}{}", r.base_slip,
-                       r.residual_base_slip, r.hinge_slip, r.residual_hinge_slip,
+    const std::string hinge =
+        vssw ? fmt::format(", hinge {:.3g} b (residual {:+.3g} b)", r.hinge_slip, r.residual_hinge_slip) : "";
+    return fmt::format("slip: base {:.3g} b (residual {:+.3g} b){}{}{}", r.base_slip, r.residual_base_slip, hinge,
                        r.slid_before_rocking == 1.0 ? ", slid before it rocked" : "",
                        r.warnings.empty() ? "" : ", slid off its support (the run ended there)");
 }
@@ -114,7 +115,8 @@ void print_response_comparison(const study::ResponseComparison& result, const Ch
                                                           100.0 * (r.peak / ref.peak - 1.0));
             t.add(name, fmt::format("{:.6g}", r.peak), "alpha",
                   fmt::format("peak at {:.4g} s, {}{}", r.peak_time, fell, error));
-            if (c.scene.slip_measured) t.text("", friction_line(r));  // the model's need or the engine's slips
+            // The model's need or the engine's slips.
+            if (c.scene.slip_measured) t.text("", friction_line(r, c.scene.vssw.has_value()));
         }
         if (!ref.warnings.empty()) t.text("analytic model warns", ref.warnings);
         t.add("wall time", fmt::format("{:.1f}", seconds), "s");
