@@ -139,15 +139,15 @@ struct LocatedEvents {
 };
 
 // Sliding measured along an engine's run when the scene's friction was given (WallScene::slip_measured): at the base,
-// the pivot corner's drift from its place on the ground; at the hinge, the upper block's corner's drift along the lower
-// block's top face (the nearer of the two corners to its place, as the run monitor's no-sliding check). Signed slips
-// are along +x (base) or the lower block's top face (hinge) [m]; a parapet's hinge stays 0.
+// the contact corner's drift from its place on the ground; at the hinge, the upper block's contact corner's drift
+// along the lower block's top face (multibody/kit/slip_meter.hpp). Signed slips are along +x (base) or the lower
+// block's top face (hinge) [m]; a parapet's hinge stays 0.
 struct SlipMeasures {
     double base_largest = 0.0, base_residual = 0.0;    // largest |slip| over the run and the slip at its end [m]
     double hinge_largest = 0.0, hinge_residual = 0.0;  // the same at the hinge [m]
     double b = 0.0;                                    // the half-thickness the slips are given in units of [m]
     // The first time either slip passed kSlipTolerance b, and the first time |theta1| passed kLiftTolerance alpha
-    // (run_monitor.hpp); unset when it never did.
+    // (slip_meter.hpp); unset when it never did.
     std::optional<double> t_first_slip, t_first_lift;
     // The wall left its support: a slip past kSlidOffLimit b ended the run (RunMonitor), with this reason.
     std::optional<std::string> slid_off;
