@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/compare_response.hpp"
 #include "cli/early_output.hpp"
+#include "cli/friction_option.hpp"
 #include "cli/ground_motion_options.hpp"
 #include "cli/model_validity.hpp"
 #include "cli/option_values.hpp"
@@ -50,6 +51,7 @@ struct CompareOptions {
     GroundMotionOptions motion;  // --record or --pulse: a comparison under a ground motion (compare_response.hpp)
     bool theta0_given = false;
     bool strict = false;  // exit 3 when the analytic reference's own assumptions fail (its warnings)
+    std::optional<std::string> friction;  // --friction as typed (friction_option.hpp)
 };
 
 multibody::EngineSettings settings_of(const multibody::Engine& engine, const CompareOptions& o) {
@@ -106,8 +108,8 @@ void run_compare_response(const CompareOptions& o, std::ostream& out) {
     // The reference's assumptions as resolved: a parapet ignores its kinematics and roller.
     const multibody::AnalyticAssumptions& reference = chosen.assumptions;
     const auto start = std::chrono::steady_clock::now();
-    const study::ResponseComparison result =
-        study::compare_response(multibody::WallScene(chosen.wall), reference, motion, engines);
+    const study::ResponseComparison result = study::compare_response(
+        with_friction(multibody::WallScene(chosen.wall), o.friction), reference, motion, engines);
     print_response_comparison(result, chosen, seconds_since(start), o.json, o.strict, out);
 }
 
@@ -156,7 +158,7 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
         run_compare_rounded(o, chosen, out);
         return;
     }
-    const multibody::WallScene scene(chosen.wall);
+    const multibody::WallScene scene = with_friction(multibody::WallScene(chosen.wall), o.friction);
     compare::ComparisonOptions options;
     options.reference = multibody::analytic_settings(chosen.assumptions);
     std::vector<std::unique_ptr<multibody::Engine>> engines;
@@ -217,6 +219,7 @@ Command add_compare_command(CLI::App& root) {
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
     add_corner_radius_option(*cmd, o->wall);
+    add_friction_option(*cmd, o->friction);
     cmd->add_option_function<double>(
            "--theta0",
            [o](const double& r) {
@@ -275,6 +278,11 @@ Command add_compare_command(CLI::App& root) {
                "motion): each engine's threshold and period and their spread. JSON: {wall, corner_radius, closed_forms\n"
                "{threshold_g, threshold_sharp_g}, theta0, engines [{engine, threshold_g, threshold_rel_error, period,\n"
                "failure}], threshold_spread, period_spread}; exit 3 when an engine failed.\n\n"
+               "With --friction as well: friction {base, hinge}; each engine's run slip {base, hinge {largest_b, largest_m,\n"
+               "residual_b, residual_m}, slid_before_rocking, slid_off}, the analytic run's friction_needed {base, hinge}\n"
+               "and would_slide {base, hinge} (docs/guide/program.md, \"Finite friction\"); without a ground motion each\n"
+               "engine's free_vibration_slip {base, hinge, tolerance_b, t_first_slip, t_first_lift, slid_before_rocking,\n"
+               "slid_off}.\n\n"
                "Every backend's settings in this build (--list-settings prints them alone):\n\n") +
                settings_listing({}, false);
     });

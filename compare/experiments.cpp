@@ -379,6 +379,7 @@ EngineComparison compare_with_analytic(const multibody::Engine& engine, const mu
                                              "impact, or a ratio outside (0, 1]", who));
     }
     c.analytic_warnings = a.trajectory.warnings;
+    c.free_vibration_slip = e.trajectory.slip;
     c.analytic_impacts = static_cast<int>(a.impacts.size());
     c.engine_impacts = static_cast<int>(e.impacts.size());
 

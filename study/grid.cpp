@@ -36,9 +36,9 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "file",  "scale",     "pga",       "shape",  "amplitude",
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "overburden_eccentricity",
-                                                "units", "duration", "tolerance", "max_pga", "step", "perturbation",
-                                                "pgv", "sa", "arias", "sa_period", "sa_damping", "response_tail",
-                                                "corner_radius"};
+                                                "friction", "hinge_friction", "units", "duration", "tolerance", "max_pga",
+                                                "step", "perturbation", "pgv", "sa", "arias", "sa_period", "sa_damping",
+                                                "response_tail", "corner_radius"};
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
@@ -460,6 +460,13 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
         if (!hinge) throw InputError("a VSSW needs a hinge ratio");
         c.scene = multibody::WallScene::of(with_corner_radius(
             with_eccentricity(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g), eccentricity), corners));
+    }
+    // The contacts' friction, a property of the wall's joints that every engine of the case shares (and the analytic
+    // model compares with what it needs): given, sliding is measured rather than a failure (multibody/engine.hpp).
+    if (l.has("friction") || l.has("hinge_friction")) {
+        c.scene.slip_measured = true;
+        if (l.has("friction")) c.scene.friction = l.num("friction", 0.0);
+        if (l.has("hinge_friction")) c.scene.hinge_friction = l.num("hinge_friction", 0.0);
     }
 }
 

@@ -31,9 +31,10 @@ namespace vssw::study {
 
 const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thickness", "alpha", "R",      "alpha1",
                                             "alpha2", "R1",      "hinge",  "xi",        "overburden_eccentricity",
-                                            "density", "g", "corner_radius"};
+                                            "density", "g", "corner_radius", "friction", "hinge_friction"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
-const std::vector<std::string> kPhysicalAssumptionKeys = {"overburden_eccentricity", "corner_radius"};
+const std::vector<std::string> kPhysicalAssumptionKeys = {"overburden_eccentricity", "friction", "hinge_friction",
+                                                         "corner_radius"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "pgv",      "sa",        "arias",
                                                   "shape",        "amplitude", "pulse_period",
@@ -186,6 +187,12 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
         if (!(x >= 0.0 && x <= kMaxCornerRadius))
             r.fail(key, fmt::format("must be the corners' radius r/b in [0, {:g}] (0: sharp), got {}",
                                     kMaxCornerRadius, io::dump_json(v)));
+        return x;
+    }
+    if (k == "friction" || k == "hinge_friction") {  // the contacts' Coulomb coefficient (multibody/engine.hpp)
+        const double x = r.number(v, key, "a friction coefficient > 0");
+        if (!(x > 0.0 && std::isfinite(x)))
+            r.fail(key, fmt::format("must be a friction coefficient > 0, got {}", io::dump_json(v)));
         return x;
     }
     if (k == "xi") {

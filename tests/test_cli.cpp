@@ -528,6 +528,12 @@ INSTANTIATE_TEST_SUITE_P(
         bad("EccentricityPastTheCorner",
             with_fig6({"compare", "--engine", "analytic", "--overburden-eccentricity", "1.5"}),
             {"overburden eccentricity e/b", "[-1, 1]", "got 1.5"}),
+        bad("ZeroFriction", with_fig6({"compare", "--engine", "analytic", "--friction", "0"}),
+            {"--friction", "> 0", "got '0'"}),
+        bad("FrictionWithAnEmptyHinge", with_fig6({"compare", "--engine", "analytic", "--friction", "0.5,"}),
+            {"--friction", "MU_BASE,MU_HINGE", "got '0.5,'"}),
+        bad("InfiniteFriction", with_fig6({"compare", "--engine", "analytic", "--friction", "0.5,inf"}),
+            {"--friction", "finite", "got '0.5,inf'"}),
         bad("NanHeight", {"wall", "--height", "nan", "--thickness", "0.4", "--hinge", "0.7"}, {"height", "nan"}),
         bad("NonNumericHeight", {"wall", "--height", "abc", "--thickness", "0.4", "--hinge", "0.7"},
             {"--height", "abc"}),
@@ -1306,4 +1312,31 @@ TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
     }
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--run-budget", ""},
                      {"--run-budget must be a number, got an empty value"});
+}
+
+// --friction under a pulse: the JSON names the friction, each engine's slips and the model's need and whether it would
+// slide. Table 1 #2 under a 0.35 g sine pulse needs 0.169 at the base (FiniteFriction's wall): at 0.12 Box2D slides
+// before it rocks and the model says it would; without --friction none of these keys is printed.
+TEST(CliCompare, FrictionMakesSlidingAMeasuredResponse) {
+    if (!engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
+    const std::vector<std::string> run = std::vector<std::string>{"compare", "--engine", "analytic,box2d", "--pulse",
+                                                                  "sine", "--amplitude", "0.35", "--pulse-period",
+                                                                  "0.5"} +
+                                         specimen_args(2);
+    const Json j = run_json(run + std::vector<std::string>{"--friction", "0.12,0.3"});
+    EXPECT_EQ(j["friction"]["base"].get<double>(), 0.12);
+    EXPECT_EQ(j["friction"]["hinge"].get<double>(), 0.3);
+    const Json& model = j["runs"][0];
+    EXPECT_GT(model["friction_needed"]["base"].get<double>(), 0.12);
+    EXPECT_TRUE(model["would_slide"]["base"].get<bool>());
+    EXPECT_FALSE(model["would_slide"]["hinge"].get<bool>());
+    const Json& slip = j["runs"][1]["slip"];
+    constexpr double kSlid = 5e-2;  // the default friction's failure limit in b; measured 0.14 b
+    EXPECT_GT(slip["base"]["largest_b"].get<double>(), kSlid);
+    EXPECT_NEAR(slip["base"]["largest_m"].get<double>() / slip["base"]["largest_b"].get<double>(), 0.178, 1e-12);
+    EXPECT_TRUE(slip["slid_before_rocking"].get<bool>());
+    const Json plain = run_json(run);
+    EXPECT_FALSE(plain.contains("friction"));
+    EXPECT_FALSE(plain["runs"][1].contains("slip"));
+    EXPECT_FALSE(plain["runs"][0].contains("would_slide"));
 }

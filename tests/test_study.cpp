@@ -391,6 +391,21 @@ TEST(StudyMeasure, CornerRadiusIsAWallAxis) {
     EXPECT_NEAR(value_of(t, "threshold_g", {{"corner_radius", "0.2"}}) / (0.8 * sharp) - 1.0, 0.0, kEngineThreshold);
 }
 
+// Friction as a wall axis: each case's scene has it, and the analytic model reports the friction it needs, the same at
+// every level, as is its motion (the model cannot slide).
+TEST(StudyMeasure, FrictionIsAWallAxis) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"base_friction_needed\", \"peak_rotation\"]\nengines = [\"analytic\"]\n"
+                                  "[wall]\nspecimen = 2\nfriction = [0.1, 0.3]\n[excitation]\nkind = \"pulse\"\n"
+                                  "shape = \"sine\"\namplitude = 0.35\npulse_period = 0.5\n"));
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const double low = value_of(t, "base_friction_needed", {{"friction", "0.1"}});
+    EXPECT_GT(low, 0.1);  // 0.169 measured: the pulse asks more than 0.1 and less than 0.3 of the base
+    EXPECT_LT(low, 0.3);
+    EXPECT_EQ(value_of(t, "base_friction_needed", {{"friction", "0.3"}}), low);
+    EXPECT_EQ(value_of(t, "peak_rotation", {{"friction", "0.3"}}), value_of(t, "peak_rotation", {{"friction", "0.1"}}));
+}
+
 // A free vibration's restitution is the run's impact law (Eq. 19, the whole mechanism's) and its period the model's.
 TEST(StudyMeasure, FreeVibrationGivesTheModelsImpactLawAndPeriod) {
     const TempDir dir;

@@ -5,6 +5,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "validation/assumptions_part.hpp"
 
@@ -19,6 +20,7 @@ std::string change_text(double change, bool binary) {
 
 std::string engines_text(const RelaxationEffect& e) {
     if (e.engine_pairs == 0) return "-";
+    if (e.absolute) return fmt::format("{:.2g} to {:.2g} b", e.engines_lo, e.engines_hi);
     if (e.engines_lo == e.engines_hi) return change_text(e.engines_lo, e.binary);
     return fmt::format("{} to {}", change_text(e.engines_lo, e.binary), change_text(e.engines_hi, e.binary));
 }
@@ -44,7 +46,8 @@ std::vector<std::string> conclusions(const AssumptionsPart& p) {
         if (said.count(it->parameter)) continue;
         const RelaxationEffect* largest = nullptr;
         for (const RelaxationEffect& e : p.effects)
-            if (e.parameter == it->parameter && e.to == it->to && !e.binary && (!largest || reach(e) > reach(*largest)))
+            if (e.parameter == it->parameter && e.to == it->to && !e.binary && !e.absolute &&
+                (!largest || reach(e) > reach(*largest)))
                 largest = &e;
         if (!largest) continue;
         said.insert(it->parameter);
@@ -52,6 +55,15 @@ std::vector<std::string> conclusions(const AssumptionsPart& p) {
                                   largest->metric, change_text(largest->model, false), engines_text(*largest)));
     }
     std::reverse(out.begin(), out.end());
+    // The slips each relaxation lets the engines make (the runs' own values, not changes), one line per level.
+    std::vector<std::pair<std::string, std::vector<std::string>>> slips;
+    for (const RelaxationEffect& e : p.effects) {
+        if (!e.absolute) continue;
+        if (slips.empty() || slips.back().first != relaxation_text(e)) slips.push_back({relaxation_text(e), {}});
+        slips.back().second.push_back(fmt::format("{} up to {:.2g} b", e.metric, e.engines_hi));
+    }
+    for (const auto& [where, what] : slips)
+        out.push_back(fmt::format("Sliding, measured by the engines ({}): {}.", where, fmt::join(what, ", ")));
     long followed = 0, within = 0;
     for (const RelaxationEffect& e : p.effects)
         if (std::isfinite(e.model) && e.engine_pairs > 0) {
@@ -85,7 +97,8 @@ std::vector<io::DocBlock> assumptions_section(const AssumptionsPart& p) {
     }
     io::DocBlock t = io::table({"relaxation", "metric", "the model", "the engines", "pairs (model, engines)"}, 2);
     for (const RelaxationEffect& e : p.effects)
-        t.rows.push_back({{relaxation_text(e)}, {e.metric}, {change_text(e.model, e.binary)}, {engines_text(e)},
+        t.rows.push_back({{relaxation_text(e)}, {e.absolute ? e.metric + " (the runs' own, not a change)" : e.metric},
+                          {change_text(e.model, e.binary)}, {engines_text(e)},
                           {fmt::format("{}, {}", e.model_pairs, e.engine_pairs)}});
     if (!t.rows.empty()) b.push_back(t);
     if (!p.refusals.empty()) {
@@ -106,6 +119,7 @@ io::Json assumptions_json(const AssumptionsPart& p) {
                            {"to", e.to},
                            {"metric", e.metric},
                            {"binary", e.binary},
+                           {"absolute", e.absolute},
                            {"model_change", number(e.model)},
                            {"model_pairs", e.model_pairs},
                            {"engines_change_min", number(e.engines_lo)},

@@ -42,6 +42,37 @@ study::StudyData rows_of(const study::StudyData& d, bool analytic) {
     return out;
 }
 
+// The slips (metrics in b) of the engines' runs at each relaxed level: the range of the values themselves.
+void add_slips(const study::StudyData& d, std::vector<RelaxationEffect>& out) {
+    const std::size_t engine = d.column("engine");
+    for (const std::string& key : study::kPhysicalAssumptionKeys) {
+        const std::size_t column = d.column(key);
+        if (column == std::string::npos || !d.columns[column].varied) continue;
+        const study::ColumnLevels& c = d.columns[column];
+        for (std::size_t level = 1; level < c.order.size(); ++level)
+            for (std::size_t m = 0; m < d.metrics.size(); ++m) {
+                if (d.metrics[m].unit != "b") continue;
+                RelaxationEffect e;
+                e.parameter = key;
+                e.from = c.texts[c.order.front()];
+                e.to = c.texts[c.order[level]];
+                e.metric = d.metrics[m].name;
+                e.absolute = true;
+                e.model = kNaN;
+                e.engines_lo = std::numeric_limits<double>::infinity();
+                e.engines_hi = -e.engines_lo;
+                for (const study::StudyRow& r : d.rows)
+                    if (r.metric == m && r.levels[column] == c.order[level] && d.text(r, engine) != "analytic" &&
+                        std::isfinite(r.value)) {
+                        e.engines_lo = std::min(e.engines_lo, r.value);
+                        e.engines_hi = std::max(e.engines_hi, r.value);
+                        ++e.engine_pairs;
+                    }
+                if (e.engine_pairs > 0) out.push_back(e);
+            }
+    }
+}
+
 // The physical assumptions' effects of the model and of the engines, one entry per (parameter level, metric) that
 // either has pairs for, in the study's order.
 std::vector<RelaxationEffect> relaxation_effects(const study::StudyData& d) {
@@ -61,19 +92,23 @@ std::vector<RelaxationEffect> relaxation_effects(const study::StudyData& d) {
         out.push_back(r);
         return out.back();
     };
+    const auto relative = [&](const study::Effect& e) {
+        return e.physical && e.pairs > 0 && d.metrics[e.metric].unit != "b";
+    };
     for (const study::Effect& e : model)
-        if (e.physical && e.pairs > 0) {
+        if (relative(e)) {
             RelaxationEffect& r = entry(e);
             r.model = e.median;
             r.model_pairs = e.pairs;
         }
     for (const study::Effect& e : engines)
-        if (e.physical && e.pairs > 0) {
+        if (relative(e)) {
             RelaxationEffect& r = entry(e);
             r.engines_lo = e.lo;
             r.engines_hi = e.hi;
             r.engine_pairs = e.pairs;
         }
+    add_slips(d, out);
     // The study's order: the parameter's column, its level's position, the metric's.
     const auto rank = [&](const RelaxationEffect& r) {
         const study::ColumnLevels& c = d.columns[d.column(r.parameter)];

@@ -22,6 +22,9 @@ struct RelaxationEffect {
     std::string parameter, from, to;  // the study key, the paper's level and the relaxed one
     std::string metric;               // the study's metric name
     bool binary = false;
+    // A slip (unit b: its paired value is about 0, so a relative change is noise): the relaxed runs' values
+    // themselves, in b, in engines_lo and engines_hi, and no model value (the model cannot slide).
+    bool absolute = false;
     double model = 0.0;                   // the analytic model's median change; NaN where it ran no pair
     double engines_lo = 0.0, engines_hi = 0.0;  // the smallest and largest over the engines' pairs; NaN without
     long model_pairs = 0, engine_pairs = 0;

@@ -127,6 +127,17 @@ b2Vec2 vec(double x, double y) { return b2Vec2(static_cast<float>(x), static_cas
 // A point given in a body's frame, in world coordinates.
 b2Vec2 world_point(const b2Body& body, double lx, double ly) { return body.GetWorldPoint(vec(lx, ly)); }
 
+// The fixtures' friction: Box2D mixes two fixtures' coefficients as sqrt(mu1 mu2) (b2MixFriction). One coefficient
+// for all three gives itself at both contacts (the default scene, as before); a hinge of its own takes the lower
+// block at 1, the ground at mu_base^2 and the upper block at mu_hinge^2, which mix to mu_base and mu_hinge.
+struct Frictions {
+    double ground, lower, upper;
+};
+Frictions fixture_frictions(const WallScene& scene) {
+    if (!scene.hinge_friction) return {scene.friction, scene.friction, scene.friction};
+    return {scene.base_mu() * scene.base_mu(), 1.0, scene.hinge_mu() * scene.hinge_mu()};
+}
+
 class Box2dScene {
 public:
     Box2dScene(const WallScene& scene, const Knobs& knobs, double theta0)
@@ -148,12 +159,13 @@ public:
         const double y_edge = -2.0 * knobs.skin;
         edge.SetTwoSided(vec(-half_width, y_edge), vec(half_width, y_edge));
         edge.m_radius = static_cast<float>(knobs.skin);  // 0 by default: no skin (see the top of the file)
-        add_fixture(*ground_, edge, 0.0, scene.friction, kGroundBits, kBlockBits);
+        const Frictions mu = fixture_frictions(scene);
+        add_fixture(*ground_, edge, 0.0, mu.ground, kGroundBits, kBlockBits);
 
         const WallPose pose = pose_at(scene, theta0);
-        lower_ = add_block(sizes_.h_lower, sizes_.m_lower, pose.lower, scene.friction);
+        lower_ = add_block(sizes_.h_lower, sizes_.m_lower, pose.lower, mu.lower);
         if (scene.vssw) {
-            upper_ = add_block(sizes_.h_upper, sizes_.m_upper, pose.upper, scene.friction);
+            upper_ = add_block(sizes_.h_upper, sizes_.m_upper, pose.upper, mu.upper);
             add_roller(2.0 * h);
         }
     }

@@ -143,7 +143,8 @@ public:
         if (scene.vssw) upper_ = add_block(sizes_.b, sizes_.h_upper, sizes_.m_upper);
         set_pose(pose_at(scene, theta0));
         contacts_ = std::make_unique<CornerContacts>(ground, *lower_, upper_, sizes_.b, sizes_.h_lower,
-                                                     sizes_.h_upper, scene.friction, scene.corner_radius());
+                                                     sizes_.h_upper, scene.base_mu(), scene.hinge_mu(),
+                                                     scene.corner_radius());
     }
 
     // One step of dt (forces applied before it act during it).

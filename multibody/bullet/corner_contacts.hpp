@@ -22,12 +22,13 @@ namespace vssw::multibody {
 class CornerContacts {
 public:
     // ground: the static (or kinematic) box whose top face is y = 0; upper may be null (a parapet). b: half width;
-    // h_lower, h_upper: half heights; friction at the ground and the hinge (the roller is frictionless).
+    // h_lower, h_upper: half heights; friction at the ground and at the hinge (the roller is frictionless): each
+    // point's m_combinedFriction, Bullet's Coulomb bound on its two friction rows, set here rather than mixed.
     // corner_radius: r of every block corner (kit/rounded_corners.hpp), 0 for the sharp blocks.
     CornerContacts(btRigidBody& ground, btRigidBody& lower, btRigidBody* upper, double b, double h_lower,
-                   double h_upper, double friction, double corner_radius = 0.0)
+                   double h_upper, double friction, double hinge_friction, double corner_radius = 0.0)
         : lower_(lower), upper_(upper), ground_(ground), b_(b), h_lower_(h_lower), h_upper_(h_upper),
-          friction_(friction), r_(corner_radius) {
+          friction_(friction), hinge_friction_(hinge_friction), r_(corner_radius) {
         manifolds_[0] = make(lower, ground);
         if (upper) {
             manifolds_[1] = make(*upper, lower);
@@ -57,7 +58,7 @@ public:
         const btVector3 face = tl * btVector3(0, h_lower_, 0);
         for (double side : {-1.0, 1.0}) {
             const btVector3 corner = tu * btVector3(side * b_, -h_upper_, 0);
-            add(hinge, corner, corner - n * (corner - face).dot(n), n, friction_);
+            add(hinge, corner, corner - n * (corner - face).dot(n), n, hinge_friction_);
         }
         btPersistentManifold& roller = *manifolds_[2];
         roller.clearManifold();
@@ -115,7 +116,7 @@ private:
             const btVector3 c_lower = tl * btVector3(side * in, h_lower_ - r_, 0);
             const btVector3 c_upper = tu * btVector3(side * in, -(h_upper_ - r_), 0);
             const btVector3 n = (c_upper - c_lower).normalized();  // on the lower block, towards the upper
-            add(hinge, c_upper - n * r_, c_lower + n * r_, n, friction_);
+            add(hinge, c_upper - n * r_, c_lower + n * r_, n, hinge_friction_);
         }
         btPersistentManifold& roller = *manifolds_[2];
         roller.clearManifold();
@@ -150,7 +151,7 @@ private:
     btRigidBody& lower_;
     btRigidBody* upper_;
     btRigidBody& ground_;
-    double b_, h_lower_, h_upper_, friction_;
+    double b_, h_lower_, h_upper_, friction_, hinge_friction_;
     double r_;  // the corners' radius (0: sharp)
     std::array<std::unique_ptr<btPersistentManifold>, 3> manifolds_{};
     std::array<btPersistentManifold*, 3> raw_{};

@@ -31,6 +31,8 @@
 // of make_engine() is a forked child anyway).
 #include "multibody/dart/dart_engine.hpp"
 
+#include <algorithm>
+
 #include <dart/collision/CollisionFilter.hpp>
 #include <dart/collision/CollisionObject.hpp>
 #include <dart/collision/dart/DARTCollisionDetector.hpp>
@@ -50,6 +52,7 @@
 #include <dart/simulation/World.hpp>
 
 #include <cmath>
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
@@ -199,22 +202,26 @@ public:
         }
         dd::ShapeNode* ground_box = add_shape(
             ground_body_, std::make_shared<dd::BoxShape>(Vector3d(2.0 * half_width, 2.0 * h, 4.0 * kDepth)),
-            Vector3d(0.0, -h, 0.0), scene.friction);
+            Vector3d(0.0, -h, 0.0), scene.base_mu());
 
         dd::ShapeNode* lower_box = nullptr;
-        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, scene.friction, lower_box);
+        // DART 6 takes the smaller of two shapes' coefficients: the lower block carries the larger of the base's and
+        // the hinge's, so that the ground's sets the base's and the upper block's the hinge's.
+        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, std::max(scene.base_mu(), scene.hinge_mu()),
+                           lower_box);
         filter->allow(ground_box, lower_box);
         const double rc = scene.corner_radius();
         if (rc > 0.0)  // the base arcs (see add_rounding)
-            for (dd::ShapeNode* arc : add_rounding(lower_, sizes_.h_lower, rc, scene.friction, -1.0))
+            for (dd::ShapeNode* arc : add_rounding(lower_, sizes_.h_lower, rc, std::max(scene.base_mu(), scene.hinge_mu()), -1.0))
                 filter->allow(ground_box, arc);
         if (scene.vssw) {
             dd::ShapeNode* upper_box = nullptr;
-            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.friction, upper_box);
+            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.hinge_mu(), upper_box);
             filter->allow(lower_box, upper_box);
             if (rc > 0.0) {  // the hinge's arcs, each rolling on the one of its side
-                const auto lower_top = add_rounding(lower_, sizes_.h_lower, rc, scene.friction, 1.0);
-                const auto upper_bottom = add_rounding(upper_, sizes_.h_upper, rc, scene.friction, -1.0);
+                const auto lower_top =
+                    add_rounding(lower_, sizes_.h_lower, rc, std::max(scene.base_mu(), scene.hinge_mu()), 1.0);
+                const auto upper_bottom = add_rounding(upper_, sizes_.h_upper, rc, scene.hinge_mu(), -1.0);
                 for (std::size_t i = 0; i < lower_top.size(); ++i) filter->allow(lower_top[i], upper_bottom[i]);
             }
             // The roller: a sphere centred at each top corner, a guide whose face is the radius outside x = +-b.

@@ -89,8 +89,9 @@ Trajectory run_fixed_steps(W& world, const Excitation& ex, const StepLoop& loop,
         if constexpr (HasCheckStep<W>::value) world.check_step(st.t);
         const auto verdict = monitor.check(st.t, world.state(ground));
         if (RunMonitor::records(i, n_steps, loop.every, verdict)) record(st.t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
+        if (RunMonitor::ends_run(verdict, out)) break;
     }
+    out.slip = monitor.slip();
     return out;
 }
 

@@ -168,8 +168,9 @@ std::string capsule_xml(const std::string& name, double r, double x, double z) {
                        num(0.5 * kDepth), num(x), num(z));
 }
 
+// friction, hinge_friction: the base's and the hinge's pair attributes (model_xml).
 std::string rounded_model_xml(const WallScene& scene, const std::string& head, const std::string& friction,
-                              const std::string& contact) {
+                              const std::string& hinge_friction, const std::string& contact) {
     const BlockSizes s = block_sizes(scene);
     const double r = scene.corner_radius(), in = s.b - r;
     std::string xml = head;
@@ -199,7 +200,7 @@ std::string rounded_model_xml(const WallScene& scene, const std::string& head, c
     if (scene.vssw) {
         for (const char* pair : {"geom1='hinge_face' geom2='upper_br'", "geom1='hinge_face' geom2='upper_bl'",
                                  "geom1='lower_tr' geom2='upper_br'", "geom1='lower_tl' geom2='upper_bl'"})
-            xml += fmt::format("<pair {} condim='3' {} {}/>\n", pair, friction, contact);
+            xml += fmt::format("<pair {} condim='3' {} {}/>\n", pair, hinge_friction, contact);
         xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
         xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
     }
@@ -213,7 +214,9 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
     const double tc = k.solref_steps * dt;
     const std::string contact = fmt::format("solref='{} {}' solimp='{} {} {} 0.5 2'", num(tc), num(k.dampratio),
                                             num(k.solimp_dmin), num(k.solimp_dmax), num(k.solimp_width));
-    const std::string friction = fmt::format("friction='{0} {0} 0.005 0.0001 0.0001'", num(scene.friction));
+    // A pair's friction overrides the geoms' mixing: the base's pair carries the base's, the hinge's the hinge's.
+    auto friction_of = [](double mu) { return fmt::format("friction='{0} {0} 0.005 0.0001 0.0001'", num(mu)); };
+    const std::string friction = friction_of(scene.base_mu()), hinge_friction = friction_of(scene.hinge_mu());
     std::string xml = fmt::format(
         "<mujoco model='vssw'>\n<compiler angle='radian' inertiafromgeom='false'/>\n"
         "<option timestep='{}' gravity='0 0 {}' integrator='{}' cone='pyramidal' impratio='1' "
@@ -222,7 +225,7 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
         "<geom name='ground' type='plane' size='100 100 1'/>\n",
         num(dt), num(-scene.gravity()), kIntegrators[k.integrator], k.noslip_iterations, k.iterations,
         num(k.tolerance));
-    if (scene.corner_radius() > 0.0) return rounded_model_xml(scene, xml, friction, contact);
+    if (scene.corner_radius() > 0.0) return rounded_model_xml(scene, xml, friction, hinge_friction, contact);
     // The hinge's face: a box on the lower block whose top face is the block's, twice as wide, so that the upper
     // block's corner spheres always meet that face and never the box's sides.
     const std::string face = scene.vssw ? fmt::format("<geom name='hinge_face' type='box' size='{0} {1} {2}' pos='0 0 {3}'/>",
@@ -247,7 +250,8 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
     xml += fmt::format("<pair geom1='ground' geom2='lower' condim='3' {} {}/>\n", friction, contact);
     if (scene.vssw) {
         for (const char* corner : {"bottom_right", "bottom_left"})
-            xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, friction, contact);
+            xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, hinge_friction,
+                               contact);
         xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
         xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
     }

@@ -208,8 +208,8 @@ double out_of_plane_tilt(dBodyID body) {
 class OdeScene {
 public:
     OdeScene(const WallScene& scene, const Knobs& knobs, double theta0, double dt)
-        : knobs_(knobs), dt_(dt), sizes_(block_sizes(scene)), friction_(scene.friction),
-          corner_radius_(scene.corner_radius()) {
+        : knobs_(knobs), dt_(dt), sizes_(block_sizes(scene)), friction_(scene.base_mu()),
+          hinge_friction_(scene.hinge_mu()), corner_radius_(scene.corner_radius()) {
         ensure_ode();
         world_ = dWorldCreate();
         group_ = dJointGroupCreate(0);
@@ -277,17 +277,19 @@ public:
         if (ground_body_) dBodySetLinearVel(ground_body_, ground_velocity, 0.0, 0.0);
         dJointGroupEmpty(group_);
         contacts_ = 0;
-        add_pair(ground_geom_, lower_geom_, {0.0, 1.0}, {ground_x(), 0.0});
+        add_pair(ground_geom_, lower_geom_, {0.0, 1.0}, {ground_x(), 0.0}, friction_);
         // Rounded corners: the base arcs on the ground (its box raised by the margin, as for the block's box); each
         // top arc of the lower block on the upper block's bottom arc of its side (no margin: skin 0).
         if (!arcs_.empty())
-            for (std::size_t i : {0u, 1u}) add_pair(ground_geom_, arcs_[i], {0.0, 1.0}, {ground_x(), 0.0});
+            for (std::size_t i : {0u, 1u}) add_pair(ground_geom_, arcs_[i], {0.0, 1.0}, {ground_x(), 0.0}, friction_);
         if (upper_) {
             const dReal* r = dBodyGetRotation(lower_);
             // The lower block's top face: its centre and its y axis, along which its collision box reaches past it.
-            add_pair(lower_geom_, upper_geom_, {r[1], r[5]}, world_point(lower_, 0.0, sizes_.h_lower));
+            add_pair(lower_geom_, upper_geom_, {r[1], r[5]}, world_point(lower_, 0.0, sizes_.h_lower),
+                     hinge_friction_);
             if (!arcs_.empty())
-                for (std::size_t i : {2u, 3u}) add_pair(arcs_[i], arcs_[i + 2], {0.0, 0.0}, {0.0, 0.0});
+                for (std::size_t i : {2u, 3u})
+                    add_pair(arcs_[i], arcs_[i + 2], {0.0, 0.0}, {0.0, 0.0}, hinge_friction_);
             add_roller();
         }
         if (knobs_.quickstep_iterations > 0)
@@ -348,7 +350,7 @@ private:
     // along the in-plane tangent only (dContactFDir1 and mu2 = 0: the plane joint holds z). mu = dInfinity, the
     // other choice, makes a speculative contact's friction row bilateral even while its normal row is idle: measured,
     // the lifting corner of the 0.9 m x 0.11 m parapet was held sideways and its period came out 9 % long.
-    void add_pair(dGeomID g1, dGeomID g2, Vec2 skin, Vec2 surface) {
+    void add_pair(dGeomID g1, dGeomID g2, Vec2 skin, Vec2 surface, double mu) {
         std::array<dContactGeom, 8> found{};
         const int n = dCollide(g1, g2, static_cast<int>(found.size()), found.data(), sizeof(dContactGeom));
         std::array<dContactGeom, 8> merged{};
@@ -384,7 +386,7 @@ private:
                 c.geom.pos[1] -= knobs_.margin * skin.y;
             }
             c.surface.mode = dContactMu2 | dContactFDir1 | dContactApprox1_1;
-            c.surface.mu = friction_;
+            c.surface.mu = mu;
             c.surface.mu2 = 0.0;
             c.fdir1[0] = -g.normal[1];
             c.fdir1[1] = g.normal[0];
@@ -445,7 +447,7 @@ private:
     Knobs knobs_;
     double dt_;
     BlockSizes sizes_;
-    double friction_;
+    double friction_, hinge_friction_;  // the base's and the hinge's Coulomb coefficients
     double corner_radius_;       // r [m] of every block corner (0: sharp boxes)
     std::vector<dGeomID> arcs_;  // the rounded corners' capsules (add_rounding)
     dWorldID world_ = nullptr;

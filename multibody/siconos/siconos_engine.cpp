@@ -302,18 +302,19 @@ public:
 
         nsds_ = std::make_shared<NonSmoothDynamicalSystem>(0.0, 1e300);
         nsds_->insertDynamicalSystem(system_);
-        const double b = sizes_.b, h1 = sizes_.h_lower, h2 = sizes_.h_upper, mu = scene.friction;
+        const double b = sizes_.b, h1 = sizes_.h_lower, h2 = sizes_.h_upper, mu = scene.base_mu();
         const double r = scene.corner_radius(), in = b - r;
         for (double side : {1.0, -1.0}) {
             if (r > 0.0) {  // the base arcs on the ground, each pair of hinge arcs (PointOnLineR::Geometry::radius)
                 add_contact({kLower, {side * in, -(h1 - r)}, kGround, {0.0, 0.0}, {0.0, 1.0}, r}, knobs.e_ground, mu);
                 if (vssw_)
                     add_contact({kUpper, {side * in, -(h2 - r)}, kLower, {side * in, h1 - r}, {0.0, 1.0}, r, true},
-                                knobs.e_hinge, mu);
+                                knobs.e_hinge, scene.hinge_mu());
                 continue;
             }
             add_contact({kLower, {side * b, -h1}, kGround, {0.0, 0.0}, {0.0, 1.0}}, knobs.e_ground, mu);
-            if (vssw_) add_contact({kUpper, {side * b, -h2}, kLower, {0.0, h1}, {0.0, 1.0}}, knobs.e_hinge, mu);
+            if (vssw_) add_contact({kUpper, {side * b, -h2}, kLower, {0.0, h1}, {0.0, 1.0}}, knobs.e_hinge,
+                                   scene.hinge_mu());
         }
         if (vssw_) {
             auto guide = [&](double side) -> PointOnLineR::Geometry {
