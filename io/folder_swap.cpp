@@ -33,11 +33,11 @@ const std::vector<KindInfo>& kinds() {
     static const std::vector<KindInfo> table = {
         {OutKind::study, "a study", "a study's results",
          {"results.csv", "results.json", "manifest.json", "journal.csv", "plots", "study.md", "study.html",
-          "fragility.csv", "agreement.csv"},
+          "fragility.csv", "agreement.csv", "ida.csv"},
          {"manifest.json", "journal.csv", "results.csv", "study.md", "study.html"}},
         {OutKind::report, "a report", "a report",
          {"report.md", "report.html", "results.json", "metrics.csv", "failures.csv", "traces.csv", "plots",
-          "earthquake"},
+          "earthquake", "relaxations"},
          {"report.md", "report.html", "metrics.csv", "failures.csv", "traces.csv"}},
         {OutKind::bench, "a bench", "a bench's results",
          {"bench.json", "bench.csv", "bench.md", "plots"},

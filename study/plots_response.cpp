@@ -169,6 +169,73 @@ io::PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturn
     return line_figure_script(f);
 }
 
+// The rocking curves of one physical assumption relaxed under one record: peak rotation against alpha, a panel per
+// backend (the analytic model's first), a line per level of the relaxation (the paper's first), every other physical
+// assumption at the paper's level (its first), other parameters summarised by their median.
+// None when no row of that record has a peak (an ensemble's records measure collapse).
+std::optional<io::PlotScript> relaxation_curves(const StudyData& d, std::size_t peak, const Overturning& over,
+                                                std::size_t key, std::optional<std::uint32_t> file) {
+    const std::size_t alpha = d.column("alpha"), file_column = d.column("file");
+    const ColumnLevels& kc = d.columns[key];
+    const auto at_papers = [&](const StudyRow& r) {  // every other physical assumption at its first level
+        for (std::size_t c = 0; c < d.columns.size(); ++c)
+            if (c != key && d.columns[c].physical && d.columns[c].varied && r.levels[c] != kEmptyLevel &&
+                r.levels[c] != d.columns[c].order.front())
+                return false;
+        return true;
+    };
+    std::vector<double> xs;  // the alphas of the rows drawn, ascending
+    for (const StudyRow& r : d.rows)
+        if (r.metric == peak && (!file || r.levels[file_column] == *file) && at_papers(r))
+            xs.push_back(d.columns[alpha].values[r.levels[alpha]]);
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    if (xs.size() < 2) return std::nullopt;  // a curve needs two slendernesses
+    const std::size_t panels = std::min(d.series.size(), kMaxPanels);
+    LineFigure f;
+    f.section = kRelaxationSection;
+    const std::string record = file ? record_label(d.columns[file_column], *file) : "";
+    f.name = io::file_stem("relaxed_" + kc.key + (record.empty() ? "" : "_" + record));
+    f.title = fmt::format("Rocking curves with {} relaxed{}{}: peak rotation against alpha, a line per level (the "
+                          "paper's first), a panel per backend",
+                          kc.key, record.empty() ? "" : ", ", record);
+    f.xlabel = parameter_label("alpha");
+    f.ylabel = "peak rotation [alpha]";
+    f.xname = "alpha";
+    f.yunit = "alpha";
+    for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back(d.series[p].label);
+    for (std::size_t l = 0; l < kc.order.size(); ++l)
+        f.lines.push_back({fmt::format("{} {}{}", kc.key, kc.texts[kc.order[l]], l == 0 ? " (the paper's)" : ""),
+                           // The paper's level black and solid, the others a spare colour each (io/palette.hpp).
+                           io::series_style(l == 0 ? "analytic" : fmt::format("relaxed level {}", l), 0)});
+    f.x = xs;
+    f.marker_title = over.measured() ? "overturned" : "";
+    f.setup = "set xrange [0:*]\nset yrange [0:*]\nset arrow from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc "
+              "rgb '#999999'\n";
+    f.resize();
+    using Buckets = std::vector<std::vector<std::vector<double>>>;  // level -> point -> peaks
+    std::vector<Buckets> peaks(panels, Buckets(kc.order.size(), std::vector<std::vector<double>>(xs.size())));
+    for (const StudyRow& r : d.rows) {
+        if (r.metric != peak || !std::isfinite(r.value) || (file && r.levels[file_column] != *file) || !at_papers(r))
+            continue;
+        const std::size_t l = level_position(kc, r.levels[key]);
+        const std::size_t k = static_cast<std::size_t>(
+            std::lower_bound(xs.begin(), xs.end(), d.columns[alpha].values[r.levels[alpha]]) - xs.begin());
+        if (l >= kc.order.size() || k >= xs.size()) continue;
+        for (std::size_t p = 0; p < panels; ++p)
+            if (d.in_series(r, d.series[p])) peaks[p][l][k].push_back(over.overturned(r) ? kOverturned : r.value);
+    }
+    for (std::size_t p = 0; p < panels; ++p)
+        for (std::size_t l = 0; l < kc.order.size(); ++l)
+            for (std::size_t k = 0; k < xs.size(); ++k)
+                if (!peaks[p][l][k].empty()) {
+                    const auto [value, overturned] = peak_point(peaks[p][l][k]);
+                    f.y[p][l][k] = value;
+                    f.marked[p][l][k] = overturned;
+                }
+    return line_figure_script(f);
+}
+
 // The overturning map of one plot: a panel per series (the first kMaxPanels), a point per amplitude and pulse period.
 io::PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, const Overturning& over,
                     const PanelSplit& split, std::size_t plot, const std::vector<std::uint32_t>& combo) {
@@ -273,6 +340,24 @@ void add_overturning_maps(const StudyData& d, StudyPlots& out) {
     const PanelSplit split = plot_split(d, {"amplitude", "pulse_period"}, {});
     const auto combos = combinations(d, split.split);
     for (std::size_t i = 0; i < combos.size(); ++i) out.scripts.push_back(map_plot(d, peak, over, split, i, combos[i]));
+}
+
+// Record rows (of a record study, or a study of several kinds) with alpha varied and a physical assumption relaxed:
+// a plot per relaxation and record.
+void add_relaxation_curves(const StudyData& d, StudyPlots& out) {
+    const std::optional<std::size_t> peak = metric_index(d, "peak_rotation");
+    const std::size_t alpha = d.column("alpha");
+    if (!peak || alpha == std::string::npos || !d.columns[alpha].varied || !d.columns[alpha].numeric) return;
+    const Overturning over(d);
+    const std::size_t file = d.column("file");
+    std::vector<std::optional<std::uint32_t>> records = {std::nullopt};
+    if (file != std::string::npos && !d.columns[file].order.empty())
+        records.assign(d.columns[file].order.begin(), d.columns[file].order.end());
+    for (std::size_t c = 0; c < d.columns.size(); ++c)
+        if (d.columns[c].physical && d.columns[c].varied)
+            for (const std::optional<std::uint32_t>& r : records)
+                if (std::optional<io::PlotScript> s = relaxation_curves(d, *peak, over, c, r))
+                    out.scripts.push_back(std::move(*s));
 }
 
 }  // namespace vssw::study

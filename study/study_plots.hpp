@@ -11,6 +11,9 @@
 //                                  ...), over the model and the engines alike: the bar spans walls and backends
 //   rocking_<record>...            record studies: peak rotation against alpha, a panel per R, an open circle at 1
 //                                  where the run overturned (the paper's Fig. 10/11), a plot per record and level
+//   relaxed_<key>_<record>         record rows with alpha varied and a physical assumption relaxed: peak rotation
+//                                  against alpha, a panel per backend, a line per level of the relaxation (the paper's
+//                                  first), the other physical assumptions at the paper's level
 //   overturning_map...             pulse studies: amplitude against pulse period, each run coloured by its peak
 //                                  rotation (capped at 1), overturned runs marked, a panel per series
 #include <string>
@@ -36,11 +39,13 @@ extern const char* const kValueSection;
 extern const char* const kTornadoSection;
 extern const char* const kPhysicalTornadoSection;
 extern const char* const kRockingSection;
+extern const char* const kRelaxationSection;
 extern const char* const kMapSection;
 
 void add_value_plots(const StudyData& d, StudyPlots& out);
 void add_tornado_plots(const StudyData& d, const std::vector<Effect>& effects, StudyPlots& out);
 void add_rocking_curves(const StudyData& d, StudyPlots& out);
+void add_relaxation_curves(const StudyData& d, StudyPlots& out);
 void add_overturning_maps(const StudyData& d, StudyPlots& out);
 
 // All of the above.

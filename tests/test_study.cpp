@@ -24,6 +24,7 @@
 #include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
 #include "multibody/engine.hpp"
+#include "io/gnuplot.hpp"
 #include "study/effects.hpp"
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
@@ -305,6 +306,35 @@ TEST(StudyMeasure, EffectsOfAOneAtATimeStudyPairEachCaseWithItsBaseline) {
         if (s.plot.name.rfind("tornado", 0) == 0) tornadoes.push_back(s.plot.name + " in " + s.plot.section);
     EXPECT_EQ(tornadoes, (std::vector<std::string>{std::string("tornado_physical_threshold_g in ") +
                                                    study::kPhysicalTornadoSection}));
+}
+
+// Rocking curves per relaxation: a record study over alpha with N's position relaxed draws, per record, peak rotation
+// against alpha with a line per level of the relaxation (the paper's first) in a panel per backend; the model's line
+// at e/b 0 is the run at that level, point for point.
+TEST(StudyPlotsRelaxed, ARelaxationsRockingCurvesHaveALinePerLevel) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"peak_rotation\", \"overturned\"]\n[wall]\nmodel = \"parapet\"\n"
+                                  "alpha = [0.15, 0.2]\nR = 1\nxi = 0.5\noverburden_eccentricity = [0.0, 1.0]\n"
+                                  "[excitation]\nkind = \"record\"\nfile = \"" +
+                                      std::string(VSSW_DATA_DIR) + "/elcentro_chopra.txt\"\npga = 0.3\n"));
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const study::StudyData d = study::read_study_data(dir / "out");
+    const study::StudyPlots plots = study::study_plot_scripts(d, study::parameter_effects(d));
+    const auto it = std::find_if(plots.scripts.begin(), plots.scripts.end(), [](const io::PlotScript& s) {
+        return s.plot.name == "relaxed_overburden_eccentricity_elcentro_chopra";
+    });
+    ASSERT_NE(it, plots.scripts.end());
+    EXPECT_EQ(it->plot.section, study::kRelaxationSection);
+    EXPECT_NE(it->dat.find("line 1: overburden_eccentricity 0 (the paper's)"), std::string::npos) << it->dat;
+    EXPECT_NE(it->dat.find("line 2: overburden_eccentricity 1"), std::string::npos) << it->dat;
+    // A standing run is drawn at its peak, unmarked (an overturned one at 1, marked).
+    for (const char* alpha : {"0.15", "0.2"}) {
+        const std::vector<std::pair<std::string, std::string>> run = {{"overburden_eccentricity", "0"}, {"alpha", alpha}};
+        const bool fell = value_of(t, "overturned", run) == 1.0;
+        const std::string point = fmt::format("{} {} {} ", alpha, fell ? "1" : io::gp_number(value_of(t, "peak_rotation", run)),
+                                              fell ? 1 : 0);
+        EXPECT_NE(it->dat.find(point), std::string::npos) << point << "\n" << it->dat;
+    }
 }
 
 TEST(StudyGrid, ThePapersKinematicsWithAUnilateralRollerIsNotAModel) {

@@ -473,6 +473,23 @@ TEST(StudyCli, AStudyAndAReportRefuseEachOthersFolder) {
 
 // The folder is replaced whole: a second study leaves none of the first's files, and the files that are not vssw's
 // (a user's notes, study_slurm.sh's shards/) are carried over.
+// Resuming a finished incremental dynamic analysis rewrites its outputs in place: ida.csv is the study's own file (it
+// was carried over as a user's file and clashed with the new one: "cannot carry its other files over").
+TEST(StudyCli, AFinishedIdaResumesAndRewritesItsOutputs) {
+    const TempDir dir;
+    const std::string file = write_file(dir / "ida.toml", "engines = [\"analytic\"]\n[wall]\nheight = 4\n"
+                                                          "thickness = 0.4\nhinge = 0.7\n[excitation]\n"
+                                                          "kind = \"scale-to-collapse\"\nfile = \"" +
+                                                              std::string(VSSW_DATA_DIR) + "/elcentro_chopra.txt\"\n")
+                                     .string();
+    const std::string out = (dir / "out").string();
+    ASSERT_EQ(run_cli({"study", file, "--out", out, "--no-plots"}).code, 0);
+    ASSERT_TRUE(std::filesystem::exists(dir / "out" / "ida.csv"));
+    const auto again = run_cli({"study", file, "--out", out, "--no-plots", "--resume"});
+    EXPECT_EQ(again.code, 0) << again.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / "ida.csv"));
+}
+
 TEST(StudyCli, ASecondStudyReplacesTheFolderWholeAndKeepsTheUsersFiles) {
     const TempDir dir;
     const std::string file = write_file(dir / "s.toml", kStudy).string(), out = (dir / "out").string();
