@@ -36,6 +36,7 @@
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/step_loop.hpp"
 #include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/top_support.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -316,6 +317,9 @@ private:
 Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Bullet time step dt (s)", "a positive finite number",
             settings.dt);
+    require_rigid_top(scene, "Bullet",
+                      "its roller guides are fixed to the ground, not "
+                      "yet carried by a body of their own");
     const Knobs knobs = read_knobs(settings);
     BulletWorld w(scene, knobs, ex.theta0);
     BulletStepping stepping(w, scene, knobs, settings.dt);

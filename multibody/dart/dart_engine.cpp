@@ -59,6 +59,7 @@
 #include "multibody/kit/scene_geometry.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/step_loop.hpp"
+#include "multibody/kit/top_support.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -353,6 +354,9 @@ Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, co
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "DART time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_rigid_top(scene, "DART",
+                      "its roller guides are part of the ground skeleton, "
+                      "not yet carried by a body of their own");
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     RunMonitor monitor("DART", scene, ex, dt, knobs.limits);

@@ -46,6 +46,7 @@
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/top_support.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -330,6 +331,9 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
             compliant_ ? "Simbody reporting interval dt (s)" : "Simbody time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_rigid_top(scene, "Simbody",
+                      "both routes drive the wall by pseudo-forces and "
+                      "cannot prescribe the motion of a support");
     if (compliant_) return simulate_compliant(scene, ex, settings);
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
