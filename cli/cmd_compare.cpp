@@ -177,6 +177,7 @@ Command add_compare_command(CLI::App& root) {
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
+    add_diaphragm_options(*cmd, o->wall);
     cmd->add_option_function<double>(
            "--theta0",
            [o](const double& r) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "analytic/assumption_sets.hpp"
+#include "analytic/diaphragm.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
@@ -30,6 +31,7 @@ struct WallOptions {
     double eccentricity = 0.0;    // e/b of N on the (upper) body's top face, in [-1, 1] (analytic/geometry.hpp)
     double density = kDefaultDensity;
     double g = kDefaultGravity;
+    Diaphragm diaphragm;  // the VSSW's top support (--diaphragm-period, --diaphragm-damping): rigid unless given
 };
 
 // The wall of Fig. 6 of the paper, the subject of `vssw summary`.
@@ -58,6 +60,9 @@ Assumptions resolve_assumptions(const ModelOptions& options);
 // command also takes --model) only changes the help of --hinge: whether a hinge is required is decided by
 // vssw_geometry(), so that a parapet can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
+// --diaphragm-period, --diaphragm-damping: the VSSW's top support carried by a diaphragm (analytic/diaphragm.hpp), for
+// the commands that run a wall under a ground motion (history, compare). Checked by choose_model.
+void add_diaphragm_options(CLI::App& cmd, WallOptions& options);
 // --model.
 void add_model_options(CLI::App& cmd, ModelOptions& options);
 // --assumptions (paper | mechanism) and the overrides --kinematics, --impact, --roller: the analytic model's

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "analytic/closed_forms.hpp"
+#include "analytic/diaphragm.hpp"
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "analytic/specimens.hpp"
@@ -36,6 +37,7 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "file",  "scale",     "pga",       "shape",  "amplitude",
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "overburden_eccentricity",
+                                                "diaphragm_period", "diaphragm_damping",
                                                 "units", "duration", "tolerance", "max_pga", "step", "perturbation",
                                                 "pgv", "sa", "arias", "sa_period", "sa_damping", "response_tail"};
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
@@ -451,6 +453,11 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
         c.scene = multibody::WallScene::of(
             with_eccentricity(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g), eccentricity));
     }
+    // The VSSW's top support (analytic/diaphragm.hpp): rigid unless the file gives a period; a parapet has none.
+    c.scene.diaphragm = {l.num("diaphragm_period", 0.0), l.num("diaphragm_damping", kDefaultDiaphragmDamping)};
+    if (c.model == "parapet" && !c.scene.diaphragm.is_rigid())
+        throw InputError(fmt::format("diaphragm_period = {:g} s: a parapet has no top support for a diaphragm to carry",
+                                     c.scene.diaphragm.period));
 }
 
 // The record (scaled by the factor given or to the PGA given) or the pulse, and scale-to-collapse's search bounds.
