@@ -75,14 +75,15 @@ TEST_P(TopSupport, MovesItsRollerOrSaysWhyNot) {
     EXPECT_GT(soft->peak / rigid.peak - 1.0, kMoved);
 }
 
-// T_d -> 0: a 5 ms diaphragm moves the top by u_d ~ a T_d^2 / (4 pi^2) = 1.2e-6 m (b = 0.1 m): the run is the rigid
-// top's. (Between 0.01 and 0.04 s the offset, 5e-6 to 8e-5 m, crosses the engines' contact tolerances and the peak
-// moves by up to 3 % before it grows smoothly with T_d: docs/model/top-support.md, "The engines".)
+// T_d -> 0: a 5 ms diaphragm moves the top by u_d ~ a T_d^2 / (4 pi^2) = 1.5e-6 m (b = 0.1 m): under 0.25 g (a
+// peak of 0.7 alpha1) the run is the rigid top's. (Near the threshold, under 0.2 g, a peak of 0.13 alpha1 moves by up
+// to 7 % for offsets of 1e-7 to 1e-5 m in some engines: the response there is sensitive to any perturbation,
+// docs/model/top-support.md, "The engines".)
 TEST_P(TopSupport, StiffDiaphragmIsTheRigidTop) {
-    const Response rigid = *run(GetParam(), 0.0, 0.2);
-    const auto stiff = run(GetParam(), 0.005, 0.2);
+    const Response rigid = *run(GetParam(), 0.0, 0.25);
+    const auto stiff = run(GetParam(), 0.005, 0.25);
     if (!stiff) GTEST_SKIP() << GetParam() << " refuses a flexible top support (its reason checked above)";
-    constexpr double kStiff = 1e-3;  // measured: within 0.02 % (ODE and Box2D)
+    constexpr double kStiff = 1e-3;  // measured: within 0.03 % (ODE, Box2D, DART)
     EXPECT_NEAR(stiff->peak / rigid.peak, 1.0, kStiff);
     EXPECT_FALSE(stiff->overturned);
 }
@@ -96,7 +97,7 @@ std::string backend_name(const ::testing::TestParamInfo<std::string>& param_info
 INSTANTIATE_TEST_SUITE_P(Engines, TopSupport, ::testing::ValuesIn(multibody::available_engines()), backend_name);
 
 // The engines that move their roller have independent contact schemes (ODE's LCP rows, Box2D's sequential impulses
-// on circles and guides): their spread is the answer's uncertainty where the model cannot follow. Under 0.2 g they
+// on circles and guides, DART's LCP on spheres and guide boxes): their spread is the answer's uncertainty where the model cannot follow. Under 0.2 g they
 // agree on the peak as well as they do with a rigid top; under 0.25 g a 0.2 or 0.3 s diaphragm overturns the wall in
 // both, at the same time. The rigid top's peak is far outside the soft one's band: the check can fail.
 TEST(TopSupportAgreement, EnginesThatMoveTheRollerAgree) {
@@ -104,20 +105,24 @@ TEST(TopSupportAgreement, EnginesThatMoveTheRollerAgree) {
     for (const std::string& name : multibody::available_engines())
         if (name != "analytic" && run(name, 0.2, 0.2)) movers.push_back(name);
     if (movers.size() < 2) GTEST_SKIP() << "fewer than two engines of this build move their roller";
-    // Measured: rigid 5.6 % apart (ODE 0.1235, Box2D 0.1304), T_d 0.2 s 2.8 %, 0.3 s 1.4 %.
+    // Measured: rigid 5.6 % apart (ODE 0.1235, Box2D 0.1304, DART 0.1300); at T_d 0.2 s 2.8 %, at 0.3 s 4.5 %.
     constexpr double kPeakSpread = 0.07;
-    // Measured: 1.4 % at T_d 0.2 s (1.459 s, 1.438 s), 0.4 % at 0.3 s (1.324 s, 1.318 s).
+    // Measured: 1.4 % at T_d 0.2 s (1.459, 1.438, 1.438 s), 0.5 % at 0.3 s (1.324, 1.318, 1.318 s).
     constexpr double kOverturnTime = 0.03;
     for (double period : {0.2, 0.3}) {
         SCOPED_TRACE(period);
-        const Response a = *run(movers[0], period, 0.2), b = *run(movers[1], period, 0.2);
-        EXPECT_FALSE(a.overturned || b.overturned);
-        EXPECT_NEAR(a.peak / b.peak, 1.0, kPeakSpread) << movers[0] << " / " << movers[1];
+        const Response a = *run(movers[0], period, 0.2), fall_a = *run(movers[0], period, 0.25);
         const Response rigid = *run(movers[0], 0.0, 0.2);
-        EXPECT_GT(std::abs(rigid.peak / b.peak - 1.0), 5.0 * kPeakSpread);  // the check tells T_d from rigid
-        const Response fall_a = *run(movers[0], period, 0.25), fall_b = *run(movers[1], period, 0.25);
-        EXPECT_TRUE(fall_a.overturned && fall_b.overturned);
-        EXPECT_NEAR(fall_a.end / fall_b.end, 1.0, kOverturnTime);
+        EXPECT_GT(std::abs(rigid.peak / a.peak - 1.0), 5.0 * kPeakSpread);  // the check tells T_d from rigid
+        EXPECT_TRUE(fall_a.overturned);
+        for (std::size_t i = 1; i < movers.size(); ++i) {
+            SCOPED_TRACE(movers[0] + " / " + movers[i]);
+            const Response b = *run(movers[i], period, 0.2), fall_b = *run(movers[i], period, 0.25);
+            EXPECT_FALSE(a.overturned || b.overturned);
+            EXPECT_NEAR(a.peak / b.peak, 1.0, kPeakSpread);
+            EXPECT_TRUE(fall_b.overturned);
+            EXPECT_NEAR(fall_a.end / fall_b.end, 1.0, kOverturnTime);
+        }
     }
     EXPECT_FALSE(run(movers[0], 0.0, 0.25)->overturned);  // a rigid top keeps the wall standing under 0.25 g
 }
