@@ -22,7 +22,7 @@ void require_model_follows_top(const Wall& wall, const GroundMotion& ground) {
         "the analytic model cannot follow a flexible diaphragm (T_d = {:g} s) under a ground motion: the top lags "
         "the ground, so the wall lifts off with its upper block turning about the hinge on the pivot's side "
         "(Eq. 9e), a mechanism its one degree of freedom does not hold (docs/model/top-support.md); run an engine "
-        "that moves its roller (ode, box2d, dart)",
+        "that moves its roller (ode, box2d, dart, bullet)",
         wall.diaphragm.period));
 }
 

@@ -83,7 +83,7 @@ TEST_P(TopSupport, StiffDiaphragmIsTheRigidTop) {
     const Response rigid = *run(GetParam(), 0.0, 0.25);
     const auto stiff = run(GetParam(), 0.005, 0.25);
     if (!stiff) GTEST_SKIP() << GetParam() << " refuses a flexible top support (its reason checked above)";
-    constexpr double kStiff = 1e-3;  // measured: within 0.03 % (ODE, Box2D, DART)
+    constexpr double kStiff = 1e-3;  // measured: within 0.03 % (Bullet, ODE, Box2D, DART)
     EXPECT_NEAR(stiff->peak / rigid.peak, 1.0, kStiff);
     EXPECT_FALSE(stiff->overturned);
 }
@@ -97,7 +97,7 @@ std::string backend_name(const ::testing::TestParamInfo<std::string>& param_info
 INSTANTIATE_TEST_SUITE_P(Engines, TopSupport, ::testing::ValuesIn(multibody::available_engines()), backend_name);
 
 // The engines that move their roller have independent contact schemes (ODE's LCP rows, Box2D's sequential impulses
-// on circles and guides, DART's LCP on spheres and guide boxes): their spread is the answer's uncertainty where the model cannot follow. Under 0.2 g they
+// on circles and guides, DART's LCP on spheres and guide boxes, Bullet's sequential impulses on corner rows): their spread is the answer's uncertainty where the model cannot follow. Under 0.2 g they
 // agree on the peak as well as they do with a rigid top; under 0.25 g a 0.2 or 0.3 s diaphragm overturns the wall in
 // both, at the same time. The rigid top's peak is far outside the soft one's band: the check can fail.
 TEST(TopSupportAgreement, EnginesThatMoveTheRollerAgree) {
@@ -105,9 +105,10 @@ TEST(TopSupportAgreement, EnginesThatMoveTheRollerAgree) {
     for (const std::string& name : multibody::available_engines())
         if (name != "analytic" && run(name, 0.2, 0.2)) movers.push_back(name);
     if (movers.size() < 2) GTEST_SKIP() << "fewer than two engines of this build move their roller";
-    // Measured: rigid 5.6 % apart (ODE 0.1235, Box2D 0.1304, DART 0.1300); at T_d 0.2 s 2.8 %, at 0.3 s 4.5 %.
+    // Measured: rigid 6.0 % apart (Bullet 0.1230, ODE 0.1235, Box2D 0.1304, DART 0.1300); at T_d 0.2 s 3.3 %, at
+    // 0.3 s 4.5 %.
     constexpr double kPeakSpread = 0.07;
-    // Measured: 1.4 % at T_d 0.2 s (1.459, 1.438, 1.438 s), 0.5 % at 0.3 s (1.324, 1.318, 1.318 s).
+    // Measured: 1.5 % at T_d 0.2 s (1.458, 1.459, 1.438, 1.438 s), 0.5 % at 0.3 s (1.322, 1.324, 1.318, 1.318 s).
     constexpr double kOverturnTime = 0.03;
     for (double period : {0.2, 0.3}) {
         SCOPED_TRACE(period);

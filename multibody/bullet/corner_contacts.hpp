@@ -22,21 +22,24 @@ namespace vssw::multibody {
 class CornerContacts {
 public:
     // ground: the static (or kinematic) box whose top face is y = 0; upper may be null (a parapet). b: half width;
-    // h_lower, h_upper: half heights; friction at the ground and the hinge (the roller is frictionless).
+    // h_lower, h_upper: half heights; friction at the ground and the hinge (the roller is frictionless). roller: the
+    // body whose x the guides' lines follow, the ground's unless a flexible top support carries them (its origin's x
+    // is then the lines' offset, as the ground's is).
     CornerContacts(btRigidBody& ground, btRigidBody& lower, btRigidBody* upper, double b, double h_lower,
-                   double h_upper, double friction)
-        : lower_(lower), upper_(upper), ground_(ground), b_(b), h_lower_(h_lower), h_upper_(h_upper),
-          friction_(friction) {
+                   double h_upper, double friction, btRigidBody* roller = nullptr)
+        : lower_(lower), upper_(upper), roller_(roller ? *roller : ground), b_(b), h_lower_(h_lower),
+          h_upper_(h_upper), friction_(friction) {
         manifolds_[0] = make(lower, ground);
         if (upper) {
             manifolds_[1] = make(*upper, lower);
-            manifolds_[2] = make(*upper, ground);
+            manifolds_[2] = make(*upper, roller_);
         }
     }
 
-    // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground).
+    // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground, or with the
+    // flexible top support's carrier).
     void update() {
-        const double x0 = ground_.getWorldTransform().getOrigin().x();
+        const double x0 = roller_.getWorldTransform().getOrigin().x();
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
         const btTransform& tl = lower_.getWorldTransform();
@@ -107,7 +110,7 @@ private:
 
     btRigidBody& lower_;
     btRigidBody* upper_;
-    btRigidBody& ground_;
+    btRigidBody& roller_;  // what the guides' lines follow: the ground, or a flexible top support's carrier
     double b_, h_lower_, h_upper_, friction_;
     std::array<std::unique_ptr<btPersistentManifold>, 3> manifolds_{};
     std::array<btPersistentManifold*, 3> raw_{};
