@@ -9,6 +9,8 @@
 #include "analytic/diaphragm.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
+#include "analytic/model.hpp"
+#include "analytic/top_support_model.hpp"
 #include "analytic/wall.hpp"
 #include "analytic/wall_scene.hpp"
 
@@ -68,7 +70,8 @@ TEST(Diaphragm, StepInputFollowsTheClosedForm) {
 }
 
 // Under a long harmonic the transient dies out (zeta 0.2: below e^-15 of its start after 10 s, even at T_d = 0.8 s)
-// and the offset's amplitude is the textbook steady state a / omega^2 / sqrt((1 - r^2)^2 + (2 zeta r)^2), r = Omega / omega.
+// and the offset's amplitude is the textbook steady state a / omega^2 / sqrt((1 - r^2)^2 + (2 zeta r)^2),
+// r = Omega / omega.
 TEST(Diaphragm, HarmonicReachesTheSteadyStateAmplitude) {
     const double a = 1.0, T = 0.5, zeta = 0.2;
     for (double period : {0.1, 0.3, 0.5, 0.8}) {  // below, near and at resonance, above
@@ -163,6 +166,98 @@ TEST(Diaphragm, WallsRefuseWhatTheyCannotHold) {
     EXPECT_NO_THROW(require_model_follows_top(vssw, GroundMotion::none()));
     vssw.diaphragm.period = 0.0;
     EXPECT_NO_THROW(require_model_follows_top(vssw, sine_pulse(3.0, 0.5)));
+}
+
+
+// The bodies of the exact VSSW in the mechanism's frame with the top held at w (Eq. 1 with Eq. 2d): the lower centre
+// and its turn q, the upper centre and psi = alpha2 + theta2, and N's point (the top face's centre) height.
+struct Bodies {
+    double x1, y1, turn1, x2, y2, turn2, y_load;
+};
+Bodies bodies(const VsswGeometry& g, double q, double w) {
+    const double a = g.alpha1 - q, psi = std::asin(g.s * std::sin(a) + w / (2.0 * g.R2));
+    const double hinge_x = -2.0 * g.R1 * std::sin(a), hinge_y = 2.0 * g.R1 * std::cos(a), theta2 = psi - g.alpha2;
+    return {-g.R1 * std::sin(a), g.R1 * std::cos(a), q, hinge_x + g.R2 * std::sin(psi), hinge_y + g.R2 * std::cos(psi),
+            psi, hinge_y + 2.0 * g.h2 * std::cos(theta2) - g.b * std::sin(theta2)};
+}
+
+// Eq. (10d)'s left side against d'Alembert's principle on the bodies' positions: along q(tau) = q + v tau + A tau^2/2
+// with the top at w(tau) = w + w' tau + w'' tau^2/2, the inertia forces sum_i m_i a_i . dr_i/dq + I_i turn_i''
+// dturn_i/dq by finite differences. Without the moving constraint's velocity term dM/dt q' the check must fail.
+TEST(TopSupportModel, EquationOfMotionIsDAlembertsOnTheBodies) {
+    const VsswGeometry g = make_vssw(4.88, 0.2, 0.5);
+    constexpr double kFiniteDifference = 1e-6;  // of the force's scale: central differences' h^2 and rounding/h^2
+    for (double q : {0.2 * g.alpha1, 0.6 * g.alpha1}) {
+        const double travel = 2.0 * g.R1 * (g.sin_a1 - std::sin(g.alpha1 - q));
+        for (double w : {-0.003, 0.3 * travel}) {
+            SCOPED_TRACE(::testing::Message() << "q " << q << " w " << w);
+            ASSERT_TRUE(holds_mechanism(g, q, w));
+            const TopOffsetState top{w, 0.05, -2.0};
+            const double v = 0.3, A = 1.5, h = 1e-4, dq = 1e-6;
+            auto at = [&](double tau) {
+                return bodies(g, q + v * tau + 0.5 * A * tau * tau, w + top.w_dot * tau + 0.5 * top.w_ddot * tau * tau);
+            };
+            const Bodies b0 = at(0.0), bp = at(h), bm = at(-h);
+            const Bodies qp = bodies(g, q + dq, w), qm = bodies(g, q - dq, w);
+            auto acc = [&](double Bodies::*f) { return (bp.*f - 2.0 * b0.*f + bm.*f) / (h * h); };
+            auto lever = [&](double Bodies::*f) { return (qp.*f - qm.*f) / (2.0 * dq); };
+            const double inertia =
+                g.m1 * (acc(&Bodies::x1) * lever(&Bodies::x1) + acc(&Bodies::y1) * lever(&Bodies::y1)) +
+                g.I1 * acc(&Bodies::turn1) * lever(&Bodies::turn1) +
+                g.m2 * (acc(&Bodies::x2) * lever(&Bodies::x2) + acc(&Bodies::y2) * lever(&Bodies::y2)) +
+                g.I2 * acc(&Bodies::turn2) * lever(&Bodies::turn2);
+            const RheonomicTerms t = top_support_terms(g, q, top);
+            const double scale = t.M * A;
+            EXPECT_NEAR(t.M * A + t.C * v * v + t.dM_dt * v + t.F, inertia, kFiniteDifference * scale);
+            EXPECT_GT(std::abs(t.M * A + t.C * v * v + t.F - inertia), 100.0 * kFiniteDifference * scale);
+            EXPECT_NEAR(t.X, g.m1 * lever(&Bodies::x1) + g.m2 * lever(&Bodies::x2), kFiniteDifference * std::abs(t.X));
+            EXPECT_NEAR(t.Y, g.m1 * lever(&Bodies::y1) + g.m2 * lever(&Bodies::y2), kFiniteDifference * std::abs(t.X));
+            EXPECT_NEAR(t.L, lever(&Bodies::y_load), kFiniteDifference * g.R1);
+        }
+    }
+}
+
+// w = 0 is the paper's constraint: Eq. (10d)'s terms are the exact model's Eq. (10) terms and the top's own terms
+// vanish.
+TEST(TopSupportModel, StillTopIsTheExactModel) {
+    const VsswGeometry g = make_vssw(4.0, 0.4, 0.7);
+    const auto model = make_vssw_model(g, Kinematics::exact);
+    constexpr double kRounding = 1e-12;  // the same formulas in another order
+    for (double q : {0.0, 0.3 * g.alpha1, 0.9 * g.alpha1}) {
+        const ModelTerms m = model->terms(q);
+        const RheonomicTerms t = top_support_terms(g, q, TopOffsetState{});
+        EXPECT_NEAR(t.M / m.M, 1.0, kRounding);
+        EXPECT_NEAR(t.C, m.C, kRounding * m.M);
+        EXPECT_NEAR(t.X / m.X, 1.0, kRounding);
+        EXPECT_NEAR(t.Y, m.Y, kRounding * std::abs(m.X));
+        EXPECT_NEAR(t.L, m.L, kRounding * g.R1);
+        EXPECT_EQ(t.dM_dt, 0.0);
+        EXPECT_EQ(t.F, 0.0);
+    }
+}
+
+// Eq. (9e): at rest only the side with sigma u_d <= 0 has the mechanism; at the bound the upper block stands square on
+// the lower one (theta2 = 0). And the lagging top: under a sine pulse the diaphragm's offset has the sign of -a_h when
+// the ground first reaches the wall's threshold, so toward the side the ground tips it (sigma = -sgn a_h) sigma u_d > 0
+// and Eq. (9e) fails at lift-off, whatever the diaphragm's period from stiff to soft.
+TEST(TopSupportModel, TheLaggingTopLeavesThePapersMechanismAtLiftOff) {
+    const VsswGeometry g = make_vssw(4.88, 0.2, 0.5);
+    EXPECT_TRUE(holds_mechanism(g, 0.0, -1e-4));
+    EXPECT_FALSE(holds_mechanism(g, 0.0, 1e-4));
+    const double q = 0.4 * g.alpha1, bound = 2.0 * g.R1 * (g.sin_a1 - std::sin(g.alpha1 - q));
+    EXPECT_TRUE(holds_mechanism(g, q, 0.999 * bound));
+    EXPECT_FALSE(holds_mechanism(g, q, 1.001 * bound));
+    EXPECT_NEAR(bodies(g, q, bound).turn2 - g.alpha2, 0.0, 1e-12);
+    const double threshold = make_vssw_model(g, Kinematics::exact)->rest_threshold(0.0);
+    const GroundMotion pulse = sine_pulse(1.22 * threshold, 0.5);
+    double t_c = 0.0;
+    while (std::abs(pulse(t_c)) < threshold) t_c += 1e-5;  // the first time the ground can tip the wall
+    for (double period : {0.02, 0.1, 0.2, 0.3}) {
+        const double u = TopSupportMotion(pulse, Diaphragm{period, 0.05})(t_c).u;
+        const double sigma = pulse(t_c) > 0.0 ? -1.0 : 1.0;
+        EXPECT_GT(sigma * u, 0.0) << period;
+        EXPECT_FALSE(holds_mechanism(g, 0.0, sigma * u)) << period;
+    }
 }
 
 }  // namespace

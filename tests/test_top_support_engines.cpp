@@ -97,9 +97,10 @@ std::string backend_name(const ::testing::TestParamInfo<std::string>& param_info
 INSTANTIATE_TEST_SUITE_P(Engines, TopSupport, ::testing::ValuesIn(multibody::available_engines()), backend_name);
 
 // The engines that move their roller have independent contact schemes (ODE's LCP rows, Box2D's sequential impulses
-// on circles and guides, DART's LCP on spheres and guide boxes, Bullet's sequential impulses on corner rows): their spread is the answer's uncertainty where the model cannot follow. Under 0.2 g they
-// agree on the peak as well as they do with a rigid top; under 0.25 g a 0.2 or 0.3 s diaphragm overturns the wall in
-// both, at the same time. The rigid top's peak is far outside the soft one's band: the check can fail.
+// on circles and guides, DART's LCP on spheres and guide boxes, Bullet's sequential impulses on corner rows): their
+// spread is the answer's uncertainty where the model cannot follow. Under 0.2 g they agree on the peak as well as
+// they do with a rigid top; under 0.25 g a 0.2 or 0.3 s diaphragm overturns the wall in all of them, at the same
+// time. The rigid top's peak is far outside the soft one's band: the check can fail.
 TEST(TopSupportAgreement, EnginesThatMoveTheRollerAgree) {
     std::vector<std::string> movers;
     for (const std::string& name : multibody::available_engines())
