@@ -491,6 +491,8 @@ INSTANTIATE_TEST_SUITE_P(
         bad("DiaphragmOnAParapet",
             with_fig6({"compare", "--engine", "analytic", "--model", "parapet", "--diaphragm-period", "0.2"}),
             {"--diaphragm-period 0.2", "a parapet has no top support"}),
+        bad("DiaphragmWithoutAGroundMotion", with_fig6({"compare", "--engine", "ode", "--diaphragm-period", "0.2"}),
+            {"--diaphragm-period 0.2", "--pulse or --record"}),
         bad("HistoryUnderAFlexibleTop",
             with_fig6({"history", "--pulse", "sine", "--amplitude", "0.3", "--pulse-period", "0.5",
                        "--diaphragm-period", "0.2"}),
