@@ -136,6 +136,12 @@ double eq12_threshold(const VsswGeometry& w, double a_v, int side) {
     require(side == 1 || side == -1, "side of tipping", "+1 or -1", side);
     const double g_eff = w.g + a_v;
     // eps = 0: (1 + 0) k = k exactly, so a centred N gives Eq. (12)'s number bit for bit.
+    if (w.corner_radius > 0.0) {
+        // Eq. (12r): the pivots at b - r; N's eccentric lever k e is measured from the hinge and keeps its size.
+        const double flat = 1.0 - w.corner_radius;  // (b - r) / b
+        const double lever_N = (2.0 + w.k) * flat + w.k * side * w.eccentricity;
+        return std::tan(w.alpha1) * (g_eff * (w.m1 + w.m2 * (2.0 + w.k)) * flat + w.N * lever_N) / (w.m1 + w.m2);
+    }
     const double lever_N = 2.0 + w.k * (1.0 + side * w.eccentricity);
     return std::tan(w.alpha1) * (g_eff * (w.m1 + w.m2 * (2.0 + w.k)) + w.N * lever_N) / (w.m1 + w.m2);
 }
@@ -160,6 +166,10 @@ double eq16_cracking_hinge_ratio(double xi, double t) {
 
 double eq17_parapet_threshold(const ParapetGeometry& p, int side) {
     require(side == 1 || side == -1, "side of tipping", "+1 or -1", side);
+    if (p.corner_radius > 0.0) {  // Eq. (17r): the pivot at b - r, N's point still e from the centre
+        const double flat = 1.0 - p.corner_radius;
+        return p.b / p.h * p.g * (flat * (1.0 + p.xi) - p.xi * side * p.eccentricity);
+    }
     return p.b / p.h * p.g * (1.0 + p.xi * (1.0 - side * p.eccentricity));  // eps = 0: Eq. (17) bit for bit
 }
 

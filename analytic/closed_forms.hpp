@@ -102,6 +102,10 @@ inline Eq11Evaluator::Scaled Eq11Evaluator::scaled(double abs_theta1) const {
 // (docs/model/analytic-core.md, "The overburden's position"):
 //   a_c(side) = tan(alpha1) [(g + a_v)(m1 + m2 (2 + k)) + N (2 + k (1 + side eps))] / (m1 + m2).      (12e)
 // Without a side, the lower of the two (the side with side eps <= 0); eps = 0 gives Eq. (12) itself.
+// With the corners rounded to r = rho b (geometry.hpp) the base pivot and the hinge sit at b - r from the centreline,
+// the roller still at the top corner (docs/model/analytic-core.md, "Rounded corners"):
+//   a_c(side) = tan(alpha1) [(1 - rho)((g + a_v)(m1 + m2 (2 + k)) + N (2 + k)) + N k side eps] / (m1 + m2).   (12r)
+// rho = 0 is Eq. (12e) bit for bit.
 double eq12_threshold(const VsswGeometry& w, double a_v = 0.0);
 double eq12_threshold(const VsswGeometry& w, double a_v, int side);
 // Eq. (13): the same for homogeneous bodies without N: 2 (g + a_v) tan(alpha1) [m/s^2].
@@ -116,6 +120,8 @@ double eq16_cracking_hinge_ratio(double xi, double t);
 // With N at e = eps b, toward side +1 (the pivot's corner at eps = +1) its lever at rest is b - e:
 //   a_c(side) = (b / h) g [1 + xi (1 - side eps)]                                                      (17e)
 // so at eps = side, N over the pivot, it is Housner's g b / h whatever N. Without a side, the lower of the two.
+// With the base corners rounded to r = rho b, the pivot at b - r:
+//   a_c(side) = (b / h) g [(1 - rho)(1 + xi) - xi side eps]                                          (17r)
 double eq17_parapet_threshold(const ParapetGeometry& p);
 double eq17_parapet_threshold(const ParapetGeometry& p, int side);
 // Eq. (18): VSSW/PW threshold ratio with the hinge at Eq. (15).

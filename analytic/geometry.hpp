@@ -27,6 +27,7 @@ struct VsswGeometry {
     // Trigonometric functions of the constant angles, which the equation of motion uses at every evaluation.
     double sin_a1, cos_a1, tan_a1, sin_a2, cos_a2, tan_a2;
     double eccentricity = 0.0;  // e/b of N on the upper body's top face, in [-1, 1] (with_eccentricity, wall.hpp)
+    double corner_radius = 0.0;  // r/b of the rounded rocking corners, in [0, kMaxCornerRadius] (with_corner_radius)
 
     double h() const { return h1 + h2; }
     double hinge_ratio() const { return h1 / h(); }
@@ -40,6 +41,7 @@ struct ParapetGeometry {
     double m, I_G, I_O;      // mass, centroidal and corner polar inertia per unit depth
     double W, N;
     double eccentricity = 0.0;  // e/b of N on the top face, in [-1, 1] (with_eccentricity, wall.hpp)
+    double corner_radius = 0.0;  // r/b of the rounded base corners, in [0, kMaxCornerRadius] (with_corner_radius)
 };
 
 }  // namespace vssw

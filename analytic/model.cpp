@@ -43,6 +43,7 @@ public:
     double gravity() const override { return w_.g; }
     double overburden() const override { return w_.N; }
     double eccentricity() const override { return w_.eccentricity * w_.b; }
+    double flat_share() const override { return 1.0 - w_.corner_radius; }
     const VsswGeometry* vssw_geometry() const override { return &w_; }
 
 protected:
@@ -202,6 +203,7 @@ public:
     double mass_moment_height(double q) const override { return p_.m * p_.R * std::cos(p_.alpha - q); }
     double load_height(double q) const override { return 2.0 * p_.h * std::cos(q) + p_.b * std::sin(q); }
     double eccentricity() const override { return p_.eccentricity * p_.b; }
+    double flat_share() const override { return 1.0 - p_.corner_radius; }
     double load_height_per_eccentricity(double q) const override { return -std::sin(q); }
     double restitution() const override { return housner_restitution(p_.alpha); }
     double reference_angle() const override { return p_.alpha; }
@@ -298,6 +300,8 @@ double RockingModel::unstable_equilibrium() const {
 
 double RockingModel::rest_threshold(double a_v, int side) const {
     const ModelTerms t = terms(0.0);
+    if (const double flat = flat_share(); flat < 1.0)  // Eq. (12r) / (17r): Y and L at rest are b times a lever
+        return ((gravity() + a_v) * t.Y * flat + overburden() * (t.L * flat + side * eccentricity() * t.Le)) / t.X;
     return ((gravity() + a_v) * t.Y + overburden() * (t.L + side * eccentricity() * t.Le)) / t.X;
 }
 
@@ -329,6 +333,7 @@ public:
     double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
     double load_height(double q) const override { return model_->load_height(q); }
     double eccentricity() const override { return model_->eccentricity(); }
+    double flat_share() const override { return model_->flat_share(); }
     double load_height_per_eccentricity(double q) const override { return model_->load_height_per_eccentricity(q); }
     double restitution() const override { return e_; }
     double reference_angle() const override { return model_->reference_angle(); }
@@ -356,6 +361,7 @@ public:
     double mass_moment_height(double q) const override { return model_->mass_moment_height(q); }
     double load_height(double q) const override { return model_->load_height(q); }
     double eccentricity() const override { return model_->eccentricity(); }
+    double flat_share() const override { return model_->flat_share(); }
     double load_height_per_eccentricity(double q) const override { return model_->load_height_per_eccentricity(q); }
     double restitution() const override { return model_->restitution(); }
     double reference_angle() const override { return model_->reference_angle(); }

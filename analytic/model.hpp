@@ -62,6 +62,10 @@ public:
     // metre of it at q >= 0 on side +1: N's point is at load_height(q) + side e load_height_per_eccentricity(q).
     virtual double eccentricity() const { return 0.0; }
     virtual double load_height_per_eccentricity(double /*q*/) const { return 0.0; }
+    // (b - r) / b: the share of the half-thickness between the centreline and the pivots at rest, 1 for sharp corners
+    // (the paper's blocks). Only rest_threshold reads it (Eq. 12r / 17r); the motion stays the sharp blocks'
+    // (docs/model/analytic-core.md, "Rounded corners": the analytic backend refuses a rounded wall's runs).
+    virtual double flat_share() const { return 1.0; }
     virtual double restitution() const = 0;     // impact map theta1'+ = e theta1'- (Eq. 19, or Housner's e)
     virtual double reference_angle() const = 0; // alpha1 (VSSW) or alpha (PW): where rotations are normalised
     virtual double collapse_angle() const = 0;  // |theta1| at which the wall counts as overturned (docs/model/analytic-core.md, "Overturning")

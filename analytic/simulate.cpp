@@ -1049,6 +1049,13 @@ std::optional<double> first_weightless(const GroundMotion& vertical, double g, d
 
 SimulationResult simulate(const RockingModel& model, const GroundMotion& horizontal, const GroundMotion& vertical,
                           InitialState initial, const SimulationOptions& options) {
+    // Rounded corners roll: the pivots move along the arcs as the wall turns, which the equation of motion (10) does
+    // not hold. The model gives their threshold in closed form only (docs/model/analytic-core.md, "Rounded corners").
+    if (model.flat_share() < 1.0)
+        throw InputError(fmt::format("corner radius r/b {:g}: the analytic model's motion is the sharp blocks' (its "
+                                     "threshold, Eq. 12r / 17r, is all it gives for rounded corners); the engines "
+                                     "measure the rest",
+                                     1.0 - model.flat_share()));
     Simulator sim(model, horizontal, vertical, options);
     SimulationResult r = sim.run(initial);
     r.weightless_at = first_weightless(vertical, model.gravity(), r.t_final);

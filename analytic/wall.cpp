@@ -1,5 +1,6 @@
 #include "wall.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -175,7 +176,28 @@ double checked_eccentricity(double ratio) {
     return ratio;
 }
 
+double checked_corner_radius(double ratio) {
+    require(std::isfinite(ratio) && ratio >= 0.0 && ratio <= kMaxCornerRadius, "corner radius r/b",
+            fmt::format("a number in [0, {:g}] (0: sharp corners, the paper's blocks)", kMaxCornerRadius), ratio);
+    return ratio;
+}
+
 }  // namespace
+
+VsswGeometry with_corner_radius(VsswGeometry w, double ratio) {
+    w.corner_radius = checked_corner_radius(ratio);
+    // A block lower than its two arcs has no flat side for the roller and the hinge to act along.
+    require(ratio * w.b <= std::min(w.h1, w.h2), "corner radius r/b",
+            fmt::format("at most {:.6g} on this wall (r no larger than the shorter block's half-height)",
+                        std::min(w.h1, w.h2) / w.b),
+            ratio);
+    return w;
+}
+
+ParapetGeometry with_corner_radius(ParapetGeometry p, double ratio) {
+    p.corner_radius = checked_corner_radius(ratio);
+    return p;
+}
 
 VsswGeometry with_eccentricity(VsswGeometry w, double ratio) {
     w.eccentricity = checked_eccentricity(ratio);

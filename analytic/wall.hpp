@@ -35,6 +35,14 @@ VsswGeometry make_vssw_from_angles(double alpha1, double alpha2, double R1, doub
 // the ratio is a number in [-1, 1] (the face's corners).
 VsswGeometry with_eccentricity(VsswGeometry w, double ratio);
 ParapetGeometry with_eccentricity(ParapetGeometry p, double ratio);
+// The largest corner radius r/b a wall takes: half the half-thickness. Past it the flat part of a face (2b - 2r) is
+// shorter than the arcs; at r = b the base is a half disc and the threshold of Eq. (12r) is 0.
+constexpr double kMaxCornerRadius = 0.5;
+// The same wall with the blocks' corners rounded to the radius r = ratio * b (docs/model/analytic-core.md, "Rounded
+// corners"): the base pivot and the hinge move inward to b - r, the threshold follows (Eq. 12r, 17r). InputError
+// unless the ratio is a number in [0, kMaxCornerRadius].
+VsswGeometry with_corner_radius(VsswGeometry w, double ratio);
+ParapetGeometry with_corner_radius(ParapetGeometry p, double ratio);
 ParapetGeometry make_parapet(double height, double thickness, double xi = 0.0, double density = kDefaultDensity,
                              double g = kDefaultGravity);
 

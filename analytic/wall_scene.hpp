@@ -30,6 +30,9 @@ struct Wall {
     // N's point on the (upper) body's top face: e/b in [-1, 1], and e [m] toward the side theta1 > 0 (geometry.hpp).
     double overburden_eccentricity() const { return vssw ? vssw->eccentricity : parapet->eccentricity; }
     double overburden_offset() const { return overburden_eccentricity() * (vssw ? vssw->b : parapet->b); }
+    // The blocks' rounded corners: r/b in [0, kMaxCornerRadius], and r [m] (geometry.hpp; 0: the paper's sharp ones).
+    double corner_radius_ratio() const { return vssw ? vssw->corner_radius : parapet->corner_radius; }
+    double corner_radius() const { return corner_radius_ratio() * (vssw ? vssw->b : parapet->b); }
 };
 
 // Throws InputError unless exactly one description (VSSW or parapet) is set and the diaphragm is in range and rigid

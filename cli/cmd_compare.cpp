@@ -16,15 +16,18 @@
 #include "cli/commands.hpp"
 #include "cli/compare_response.hpp"
 #include "cli/early_output.hpp"
+#include "cli/friction_option.hpp"
 #include "cli/ground_motion_options.hpp"
 #include "cli/model_validity.hpp"
 #include "cli/option_values.hpp"
 #include "cli/compare_output.hpp"
+#include "cli/compare_rounded.hpp"
 #include "cli/settings_listing.hpp"
 #include "cli/simulation_failure.hpp"
 #include "cli/wall_options.hpp"
 #include "cli/run_budget_option.hpp"
 #include "compare/experiments.hpp"
+#include "compare/rounded_corners.hpp"
 #include "io/json.hpp"
 #include "study/response_comparison.hpp"
 #include "multibody/host/analytic_engine.hpp"
@@ -48,6 +51,7 @@ struct CompareOptions {
     GroundMotionOptions motion;  // --record or --pulse: a comparison under a ground motion (compare_response.hpp)
     bool theta0_given = false;
     bool strict = false;  // exit 3 when the analytic reference's own assumptions fail (its warnings)
+    std::optional<std::string> friction;  // --friction as typed (friction_option.hpp)
 };
 
 multibody::EngineSettings settings_of(const multibody::Engine& engine, const CompareOptions& o) {
@@ -104,12 +108,45 @@ void run_compare_response(const CompareOptions& o, std::ostream& out) {
     // The reference's assumptions as resolved: a parapet ignores its kinematics and roller.
     const multibody::AnalyticAssumptions& reference = chosen.assumptions;
     const auto start = std::chrono::steady_clock::now();
-    const study::ResponseComparison result =
-        study::compare_response(multibody::WallScene(chosen.wall), reference, motion, engines);
+    const study::ResponseComparison result = study::compare_response(
+        with_friction(multibody::WallScene(chosen.wall), o.friction), reference, motion, engines);
     print_response_comparison(result, chosen, seconds_since(start), o.json, o.strict, out);
 }
 
+// Rounded corners: the model gives the threshold only (Eq. 12r / 17r); each engine's threshold and period, and their
+// spread (compare/rounded_corners.hpp).
+void run_compare_rounded(const CompareOptions& o, const ChosenModel& chosen, std::ostream& out) {
+    require(std::isfinite(o.theta0) && o.theta0 >= kMinRelease && o.theta0 < 1.0, "--theta0",
+            fmt::format("from {:g} to below 1 (a fraction of alpha)", kMinRelease), o.theta0);
+    const multibody::WallScene scene(chosen.wall);
+    std::vector<std::unique_ptr<multibody::Engine>> engines;
+    std::vector<compare::RoundedEngine> runs;
+    for (const std::string& name : parse_engine_list("--engine", o.engines)) {
+        if (name == "analytic")
+            throw InputError("--engine analytic with --corner-radius: the analytic model's motion is the sharp "
+                             "blocks'; its threshold (Eq. 12r / 17r) is printed beside the engines'");
+        engines.push_back(multibody::make_engine(name));
+        runs.push_back({engines.back().get(), settings_of(*engines.back(), o)});
+        multibody::require_settings_fit_wall(engines.back()->display_name(), runs.back().settings,
+                                             engines.back()->setting_descriptions(), scene);
+    }
+    const compare::RoundedCornerComparison result = compare::compare_rounded_corners(runs, scene, o.theta0);
+    if (o.json)
+        out << io::dump_json(to_json(result, o.wall, chosen.kind), 2) << '\n';
+    else
+        print_rounded_corners(out, result, o.wall, chosen.kind);
+    std::vector<std::string> why;
+    for (const compare::RoundedEngineResult& e : result.engines)
+        if (!e.failure.empty()) why.push_back(e.engine + ": " + e.failure);
+        else if (!std::isfinite(e.period)) why.push_back(e.engine + ": no first impact resolved");
+    if (!why.empty()) throw SimulationFailure(fmt::format("{}", fmt::join(why, "; ")));
+}
+
 void run_compare(const CompareOptions& o, std::ostream& out) {
+    if (o.wall.corner_radius != 0.0 && (o.motion.record || o.motion.pulse))
+        throw InputError("--corner-radius with --record or --pulse: the analytic reference cannot roll on rounded "
+                         "corners; without a motion, compare gives each engine's threshold and period and their "
+                         "spread");
     if (o.motion.record || o.motion.pulse) {
         run_compare_response(o, out);
         return;
@@ -119,12 +156,17 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
     const ChosenModel chosen = choose_model(o.wall, o.model);
     // The metrics' threshold is the analytic model's under a constant acceleration, which a moving top takes out of
     // its mechanism (docs/model/top-support.md); the free vibration has no ground motion for a diaphragm to follow.
+    // Checked before the rounded corners' branch, whose runs are free vibrations too.
     if (!chosen.wall.diaphragm.is_rigid())
         throw InputError(fmt::format("--diaphragm-period {:g} applies to a run under --pulse or --record: the "
                                      "threshold's reference, the analytic model, cannot follow a moving top, and a "
                                      "free vibration has no ground motion for the diaphragm to follow",
                                      chosen.wall.diaphragm.period));
-    const multibody::WallScene scene(chosen.wall);
+    if (o.wall.corner_radius != 0.0) {
+        run_compare_rounded(o, chosen, out);
+        return;
+    }
+    const multibody::WallScene scene = with_friction(multibody::WallScene(chosen.wall), o.friction);
     compare::ComparisonOptions options;
     options.reference = multibody::analytic_settings(chosen.assumptions);
     std::vector<std::unique_ptr<multibody::Engine>> engines;
@@ -185,6 +227,8 @@ Command add_compare_command(CLI::App& root) {
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
     add_diaphragm_options(*cmd, o->wall);
+    add_corner_radius_option(*cmd, o->wall);
+    add_friction_option(*cmd, o->friction);
     cmd->add_option_function<double>(
            "--theta0",
            [o](const double& r) {
@@ -238,7 +282,16 @@ Command add_compare_command(CLI::App& root) {
                "from rest under that motion instead, each run's peak rotation (theta1/alpha1), its time and overturning side\n"
                "by side: a one-case study (`vssw study` runs grids of them). JSON: {ground_motion, analytic_model, runs\n"
                "[{engine, version, settings, peak_rotation, peak_time, overturned, t_overturn, status, warnings (analytic),\n"
-               "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n\n"
+               "peak_rotation_rel_error (engines)}], wall_time_s}; exit 3 when a run failed.\n"
+               "With --corner-radius (rounded blocks, engines only: the analytic model gives Eq. 12r / 17r, not the\n"
+               "motion): each engine's threshold and period and their spread. JSON: {wall, corner_radius, closed_forms\n"
+               "{threshold_g, threshold_sharp_g}, theta0, engines [{engine, threshold_g, threshold_rel_error, period,\n"
+               "failure}], threshold_spread, period_spread}; exit 3 when an engine failed.\n\n"
+               "With --friction as well: friction {base, hinge}; each engine's run slip {base, hinge {largest_b, largest_m,\n"
+               "residual_b, residual_m}, slid_before_rocking, slid_off}, the analytic run's friction_needed {base, hinge}\n"
+               "and would_slide {base, hinge} (docs/guide/program.md, \"Finite friction\"); without a ground motion each\n"
+               "engine's free_vibration_slip {base, hinge, tolerance_b, t_first_slip, t_first_lift, slid_before_rocking,\n"
+               "slid_off}.\n\n"
                "Every backend's settings in this build (--list-settings prints them alone):\n\n") +
                settings_listing({}, false);
     });

@@ -26,6 +26,7 @@
 #include "cli/progress.hpp"
 #include "cli/run_budget_option.hpp"
 #include "compare/targets.hpp"
+#include "validation/assumptions_part.hpp"
 #include "validation/earthquake.hpp"
 #include "validation/suite.hpp"
 #include "multibody/engine.hpp"
@@ -56,6 +57,9 @@ struct ReportCommandOptions {
     // the shipped one, "none" runs none. Not given with --cases: none (a case subset is a quick run).
     std::string earthquake = "default";
     CLI::Option* earthquake_option = nullptr;
+    // --relaxations: the study that relaxes the paper's physical assumptions (validation/assumptions_part.hpp).
+    std::string relaxations = "default";
+    CLI::Option* relaxations_option = nullptr;
     // --assumptions: the reference's set (analytic/assumption_sets.hpp); the other set gets its own row.
     std::string assumptions = to_string(kDefaultAssumptionSet);
     CLI::Option* assumptions_option = nullptr;
@@ -142,6 +146,33 @@ std::optional<validation::EarthquakePart> run_earthquake(const ReportCommandOpti
     return part;
 }
 
+// The study file of the relaxations: --relaxations, else the suite's default; none with --cases unless asked.
+std::string relaxations_study_file(const ReportCommandOptions& o, const std::vector<std::string>& engines) {
+    const bool given = o.relaxations_option->count() > 0;
+    if (!given && !o.cases.empty()) return "";
+    return validation::assumptions_study_file(
+        given ? o.relaxations : validation::default_assumptions_for_suite(o.suite), engines);
+}
+
+// The relaxations of the paper's assumptions (validation/assumptions_part.hpp) into `dir`; none when no file is asked.
+std::optional<validation::AssumptionsPart> run_relaxations(const ReportCommandOptions& o, const std::string& file,
+                                                           const std::vector<std::string>& engines,
+                                                           const std::filesystem::path& dir, Progress& progress) {
+    if (file.empty()) return std::nullopt;
+    validation::AssumptionsRunOptions run;
+    run.threads = o.threads;
+    run.plots = !o.no_plots;
+    run.gnuplot = o.gnuplot;
+    run.commit = VSSW_GIT_COMMIT;
+    if (progress.on())
+        run.progress = [&progress](long done, long total, const std::string& what) {
+            progress.show(done, total, "relaxations: " + what);
+        };
+    std::optional<validation::AssumptionsPart> part = validation::run_assumptions_part(file, engines, dir, run);
+    progress.clear();
+    return part;
+}
+
 // What --help says after the options: the files, the targets (formatted from the constants the report judges by:
 // compare/targets.hpp, validation/earthquake.hpp), the JSON keys and CSV columns, the exit codes.
 std::string report_footer() {
@@ -182,6 +213,31 @@ std::string report_footer() {
 
 }  // namespace
 
+// --assumptions (the reference's set), --earthquake and --relaxations (the two studies the report runs beside the
+// suite).
+void add_part_options(CLI::App& cmd, ReportCommandOptions& o) {
+    o.assumptions_option = cmd.add_option(
+        "--assumptions", o.assumptions,
+        fmt::format("the free-vibration cases' reference: the analytic model under the set {} or {} (default {}); "
+                    "the analytic model under the other set is measured like an engine in a row of its own, with no "
+                    "verdict. Under records the reference is always the set mechanism (what the engines realise), "
+                    "and the paper's model is the row of its own",
+                    describe(AssumptionSet::mechanism), describe(AssumptionSet::paper),
+                    to_string(kDefaultAssumptionSet)));
+    o.earthquake_option = cmd.add_option(
+        "--earthquake", o.earthquake,
+        "the record ensemble judged under \"Under earthquake records\": default (studies/ensemble-report.toml: 4 "
+        "records x 4 PGAs on the Fig. 6 VSSW), full (studies/ensemble-report-full.toml: the 26 shipped records x the "
+        "same PGAs), a study file of kind \"ensemble\" with levels, or none (default: full with --suite full, else "
+        "default; none with --cases)");
+    o.relaxations_option = cmd.add_option(
+        "--relaxations", o.relaxations,
+        "the study under \"What the paper's assumptions cost\": default (studies/assumptions-report.toml: the Fig. 6 "
+        "VSSW's threshold and free vibration with each physical assumption relaxed alone), full "
+        "(studies/assumptions-physical.toml: Table 1 walls, rocking curves and fragility too; minutes), a study file "
+        "that varies one of them, or none (default: full with --suite full, else default; none with --cases)");
+}
+
 Command add_report_command(CLI::App& root) {
     auto o = std::make_shared<ReportCommandOptions>();
     CLI::App* cmd = root.add_subcommand(
@@ -201,20 +257,7 @@ Command add_report_command(CLI::App& root) {
     cmd->add_option("--bench", o->bench,
                     "a finished `vssw bench --out DIR` folder: its cheapest settings and work-precision plots end the "
                     "report (the report does not run the sweep)");
-    o->assumptions_option = cmd->add_option(
-        "--assumptions", o->assumptions,
-        fmt::format("the free-vibration cases' reference: the analytic model under the set {} or {} (default {}); "
-                    "the analytic model under the other set is measured like an engine in a row of its own, with no "
-                    "verdict. Under records the reference is always the set mechanism (what the engines realise), "
-                    "and the paper's model is the row of its own",
-                    describe(AssumptionSet::mechanism), describe(AssumptionSet::paper),
-                    to_string(kDefaultAssumptionSet)));
-    o->earthquake_option = cmd->add_option(
-        "--earthquake", o->earthquake,
-        "the record ensemble judged under \"Under earthquake records\": default (studies/ensemble-report.toml: 4 "
-        "records x 4 PGAs on the Fig. 6 VSSW), full (studies/ensemble-report-full.toml: the 26 shipped records x the "
-        "same PGAs), a study file of kind \"ensemble\" with levels, or none (default: full with --suite full, else "
-        "default; none with --cases)");
+    add_part_options(*cmd, *o);
     cmd->add_option("--gnuplot", o->gnuplot, "the gnuplot program (default: gnuplot from PATH)");
     cmd->add_option("--data", o->data, "folder of the ground-motion records (default: $VSSW_DATA_DIR, else <prefix>/share/vssw/data beside an installed vssw, else the source tree's data/)");
     cmd->add_option("--out", o->out, "folder to write into (created if missing) (required)")->required();
@@ -234,6 +277,7 @@ Command add_report_command(CLI::App& root) {
                                                         : validation::default_earthquake_for_suite(o->suite);
                 const std::string earthquake_file =
                     earthquake_asked ? validation::earthquake_study_file(earthquake_name, engines) : std::string();
+                const std::string relaxations_file = relaxations_study_file(*o, engines);
                 const std::filesystem::path dir = o->out;
                 // After every other check, before the suite runs. Nothing is made in --out until the report is
                 // complete: it is written into a staging folder that then replaces --out whole (a failed run leaves
@@ -271,6 +315,9 @@ Command add_report_command(CLI::App& root) {
                 const std::optional<validation::EarthquakePart> earthquake =
                     run_earthquake(*o, earthquake_file, engines, staged.path() / "earthquake", progress);
                 if (earthquake) options.earthquake = &*earthquake;
+                const std::optional<validation::AssumptionsPart> relaxations =
+                    run_relaxations(*o, relaxations_file, engines, staged.path() / "relaxations", progress);
+                if (relaxations) options.relaxations = &*relaxations;
                 validation::ReportFiles files = validation::write_suite_report(staged.path(), suite, results, meta, options);
                 staged.commit();
                 for (std::filesystem::path* p : {&files.dir, &files.markdown, &files.html, &files.json})
@@ -288,6 +335,8 @@ Command add_report_command(CLI::App& root) {
                 for (const std::string& line : files.summary_lines) out << line << '\n';
                 if (earthquake)
                     for (const std::string& line : validation::earthquake_summary_lines(*earthquake)) out << line << '\n';
+                if (relaxations)
+                    for (const std::string& line : validation::assumptions_summary_lines(*relaxations)) out << line << '\n';
                 if (!results.failures.empty())
                     out << fmt::format("{} engine failure{}: see the report's Failures section\n",
                                        results.failures.size(), results.failures.size() == 1 ? "" : "s");

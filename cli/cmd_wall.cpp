@@ -19,6 +19,7 @@ Command add_wall_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "wall", "Closed forms of a VSSW (Sorrentino, Masiani & Griffith 2008) and of the parapet of the same size");
     add_wall_options(*cmd, o->wall, false);
+    add_corner_radius_option(*cmd, o->wall);
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     cmd->footer(
         "Angles in rad, lengths in m, accelerations in g (the wall's --g), velocities in rad/s.\n"
@@ -26,7 +27,9 @@ Command add_wall_command(CLI::App& root) {
         "restitution (Eq. 19), A, P (Eq. 21), theta_lim (Eq. 26; null with the hinge at or below mid-height),\n"
         "period_half_A (Eq. 22 at A/2), collapse_angle, reference_velocity (Eq. 24),\n"
         "threshold_ratio_vssw_over_parapet, optimal_hinge_ratio (Eq. 15),\n"
-        "parapet {alpha, R, threshold_g (Eq. 17), restitution, p} (Housner 1963).");
+        "parapet {alpha, R, threshold_g (Eq. 17), restitution, p} (Housner 1963).\n"
+        "With --corner-radius, corner_radius and the thresholds of Eq. (12r) and (17r); every other figure is the\n"
+        "sharp blocks'.");
     return {cmd, [o](std::ostream& out) {
                 const WallFigures figures = wall_figures(o->wall);
                 if (o->json)

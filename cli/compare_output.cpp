@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/friction_option.hpp"
 #include "cli/table.hpp"
 #include "compare/targets.hpp"
 
@@ -49,7 +50,7 @@ io::Json to_json(const EngineCompareRun& run, const CompareReference& r) {
     const compare::EngineComparison& c = run.comparison;
     io::Json knobs = io::Json::object();
     for (const auto& [k, v] : run.settings.knobs) knobs[k] = v;
-    return {{"engine", run.engine},
+    io::Json j = {{"engine", run.engine},
             {"version", run.version},
             {"analytic_model", analytic_model_json(r)},
             {"threshold", metric_json(c.threshold_g, kThresholdTarget)},
@@ -67,6 +68,9 @@ io::Json to_json(const EngineCompareRun& run, const CompareReference& r) {
             {"failures", c.failures},
             {"analytic_warnings", c.analytic_warnings},
             {"wall", wall_inputs_json(r.wall, r.kind)}};
+    // With --friction: the engine's slips along its free vibration (friction_option.hpp).
+    if (c.free_vibration_slip) j["free_vibration_slip"] = slip_json(*c.free_vibration_slip);
+    return j;
 }
 
 io::Json to_json(const std::vector<EngineCompareRun>& runs, const CompareReference& reference, double seconds) {
@@ -98,13 +102,18 @@ void print_compare(std::ostream& out, const EngineCompareRun& run, const Compare
     row("restitution (first impact)", c.restitution, "", kRestitutionTarget);
     row("restitution (from peaks)", c.restitution_amplitude, "", kRestitutionTarget);
     t.add("closed forms", fmt::format("{} g, e = {}", io::num(c.threshold_closed_form_g), io::num(c.restitution_closed_form)),
-          "", "Eq. (12)/(17) threshold, Eq. (19)/Housner restitution");
+          "", fmt::format("Eq. ({}{}) threshold{}, Eq. (19)/Housner restitution", r.kind == WallKind::vssw ? "12" : "17",
+                          r.wall.eccentricity != 0.0 ? "e" : "",
+                          r.wall.eccentricity != 0.0 ? " (N off the centre: the lower side)" : ""));
     t.add("restitution, whole mechanism", io::num(r.restitution_whole_mechanism), "",
           fmt::format("plastic impact with the roller acting (docs/measurements/findings.md); engine / this - 1 = {:+.2e}",
                       c.restitution.engine / r.restitution_whole_mechanism - 1.0));
     t.add("wall time", fmt::format("{:.1f}", run.seconds), "s");
     for (const std::string& f : c.failures) t.text("not measured", f);
     for (const std::string& w : c.analytic_warnings) t.text("analytic model warns", w);
+    if (const auto& s = c.free_vibration_slip)
+        t.text("slip (free vibration)", fmt::format("base {:.3g} b, hinge {:.3g} b (largest){}", s->base_largest / s->b,
+                                                    s->hinge_largest / s->b, s->slid_off ? ": " + *s->slid_off : ""));
     t.print(out);
 }
 

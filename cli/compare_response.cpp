@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "io/json.hpp"
+#include "cli/friction_option.hpp"
 #include "cli/simulation_failure.hpp"
 #include "cli/table.hpp"
 
@@ -17,6 +18,46 @@ namespace {
 using RunResult = study::ResponseRun;
 
 io::Json number_or_null(double x) { return io::finite_or_null(x); }
+
+// With the wall's friction given (docs/guide/program.md "Finite friction"): an engine's slips at the base and the
+// hinge (largest and residual, in m and in b) and whether it slid before it rocked; the analytic model's friction
+// needed and whether it exceeds the given one (the model would slide).
+void add_friction_fields(const RunResult& r, const study::CaseSpec& c, io::Json& e) {
+    const double b = 0.5 * c.thickness;
+    if (r.engine != "analytic") {
+        auto contact = [&](double largest, double residual) {
+            return io::Json{{"largest_b", number_or_null(largest)}, {"largest_m", number_or_null(largest * b)},
+                            {"residual_b", number_or_null(residual)}, {"residual_m", number_or_null(residual * b)}};
+        };
+        e["slip"] = {{"base", contact(r.base_slip, r.residual_base_slip)},
+                     {"hinge", c.scene.vssw ? contact(r.hinge_slip, r.residual_hinge_slip) : io::Json(nullptr)},
+                     {"slid_before_rocking", std::isfinite(r.slid_before_rocking)
+                                                 ? io::Json(r.slid_before_rocking == 1.0) : io::Json(nullptr)},
+                     // An engine's only warning: the wall slid off its support, which ended the run.
+                     {"slid_off", r.warnings.empty() ? io::Json(nullptr) : io::Json(r.warnings)}};
+        return;
+    }
+    const multibody::WallScene& s = c.scene;
+    auto exceeds = [](double needed, double mu) { return std::isfinite(needed) ? io::Json(needed > mu) : io::Json(nullptr); };
+    e["friction_needed"] = {{"base", number_or_null(r.base_friction_needed)},
+                            {"hinge", number_or_null(r.hinge_friction_needed)}};
+    e["would_slide"] = {{"base", exceeds(r.base_friction_needed, s.base_mu())},
+                        {"hinge", exceeds(r.hinge_friction_needed, s.hinge_mu())}};
+}
+
+// The table's line of a run's sliding (friction given).
+std::string friction_line(const RunResult& r, bool vssw) {
+    if (r.engine == "analytic") {
+        if (!std::isfinite(r.base_friction_needed)) return "friction needed: not computed (a parapet)";
+        return fmt::format("friction needed: base {:.3g}, hinge {:.3g}", r.base_friction_needed,
+                           r.hinge_friction_needed);
+    }
+    const std::string hinge =
+        vssw ? fmt::format(", hinge {:.3g} b (residual {:+.3g} b)", r.hinge_slip, r.residual_hinge_slip) : "";
+    return fmt::format("slip: base {:.3g} b (residual {:+.3g} b){}{}{}", r.base_slip, r.residual_base_slip, hinge,
+                       r.slid_before_rocking == 1.0 ? ", slid before it rocked" : "",
+                       r.warnings.empty() ? "" : ", slid off its support (the run ended there)");
+}
 
 }  // namespace
 
@@ -38,6 +79,7 @@ void print_response_comparison(const study::ResponseComparison& result, const Ch
                               {"scale", c.file.empty() ? io::Json(nullptr) : io::Json(c.scale)},
                               {"pga_g", c.file.empty() ? io::Json(c.amplitude_g) : io::Json(c.pga_g)}};
         j["analytic_model"] = assumptions_json(chosen);
+        if (c.scene.slip_measured) j["friction"] = friction_json(c.scene);
         io::Json list = io::Json::array();
         for (const RunResult& r : runs) {
             io::Json e = {{"engine", r.engine},
@@ -52,6 +94,7 @@ void print_response_comparison(const study::ResponseComparison& result, const Ch
                 e["peak_rotation_rel_error"] = number_or_null(r.peak / ref.peak - 1.0);
             else
                 e["warnings"] = r.warnings;
+            if (c.scene.slip_measured) add_friction_fields(r, c, e);
             list.push_back(e);
         }
         j["runs"] = list;
@@ -72,6 +115,8 @@ void print_response_comparison(const study::ResponseComparison& result, const Ch
                                                           100.0 * (r.peak / ref.peak - 1.0));
             t.add(name, fmt::format("{:.6g}", r.peak), "alpha",
                   fmt::format("peak at {:.4g} s, {}{}", r.peak_time, fell, error));
+            // The model's need or the engine's slips.
+            if (c.scene.slip_measured) t.text("", friction_line(r, c.scene.vssw.has_value()));
         }
         if (!ref.warnings.empty()) t.text("analytic model warns", ref.warnings);
         t.add("wall time", fmt::format("{:.1f}", seconds), "s");
@@ -123,9 +168,11 @@ study::ResponseMotion response_motion(const GroundMotionOptions& m, LoadedMotion
 }
 
 study::ResponseComparison compare_under_motion(const ChosenModel& chosen, const GroundMotionOptions& motion,
-                                               const std::vector<study::ResponseEngine>& engines) {
+                                               const std::vector<study::ResponseEngine>& engines,
+                                               const std::optional<std::string>& friction) {
     const study::ResponseMotion m = response_motion(motion, load_ground_motion(motion));
-    return study::compare_response(multibody::WallScene(chosen.wall), chosen.assumptions, m, engines);
+    return study::compare_response(with_friction(multibody::WallScene(chosen.wall), friction), chosen.assumptions, m,
+                                   engines);
 }
 
 }  // namespace vssw::cli

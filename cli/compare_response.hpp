@@ -3,6 +3,8 @@
 // analytic model from rest under one ground motion, each run's peak rotation, its time and overturning side by side,
 // as a table or JSON.
 #include <iosfwd>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "cli/ground_motion_options.hpp"
@@ -20,7 +22,8 @@ study::ResponseMotion response_motion(const GroundMotionOptions& m, LoadedMotion
 // (study::compare_response): the Python module's vssw.compare(record=...). InputError as response_motion and
 // compare_response say.
 study::ResponseComparison compare_under_motion(const ChosenModel& chosen, const GroundMotionOptions& motion,
-                                               const std::vector<study::ResponseEngine>& engines);
+                                               const std::vector<study::ResponseEngine>& engines,
+                                               const std::optional<std::string>& friction = std::nullopt);
 
 // Prints the comparison (table or JSON); `options` names the reference's assumptions as given. SimulationFailure
 // (exit 3) when any run failed, or with `strict` when the analytic run warns (after printing).

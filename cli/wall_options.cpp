@@ -50,6 +50,13 @@ void add_wall_options(CLI::App& cmd, WallOptions& o, bool model_choice) {
     cmd.add_option("--g", o.g, fmt::format("gravity [m/s^2] (default {})", kDefaultGravity));
 }
 
+void add_corner_radius_option(CLI::App& cmd, WallOptions& o) {
+    cmd.add_option("--corner-radius", o.corner_radius,
+                   fmt::format("round every block corner to r = this * b, r/b in [0, {:g}]: 0 sharp corners (the "
+                               "paper's blocks, default); the base pivot and the hinge move in to b - r (Eq. 12r, "
+                               "17r); engines that cannot round their blocks refuse it",
+                               kMaxCornerRadius));
+}
 
 void add_diaphragm_options(CLI::App& cmd, WallOptions& o) {
     cmd.add_option("--diaphragm-period", o.diaphragm.period,
@@ -108,11 +115,15 @@ std::string unilateral_with_paper_kinematics(const ModelOptions& o) {
 
 VsswGeometry vssw_geometry(const WallOptions& o) {
     if (!o.hinge) throw InputError("--hinge (the hinge height ratio h1/h) is required for a VSSW");
-    return with_eccentricity(make_vssw(o.height, o.thickness, *o.hinge, o.xi, o.density, o.g), o.eccentricity);
+    return with_corner_radius(
+        with_eccentricity(make_vssw(o.height, o.thickness, *o.hinge, o.xi, o.density, o.g), o.eccentricity),
+        o.corner_radius);
 }
 
 ParapetGeometry parapet_geometry(const WallOptions& o) {
-    return with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity);
+    return with_corner_radius(
+        with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity),
+        o.corner_radius);
 }
 
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
@@ -161,6 +172,7 @@ io::Json wall_inputs_json(const WallOptions& o, WallKind kind) {
         j["diaphragm_period"] = o.diaphragm.period;
         j["diaphragm_damping"] = o.diaphragm.damping;
     }
+    if (o.corner_radius != 0.0) j["corner_radius"] = o.corner_radius;
     return j;
 }
 
@@ -170,9 +182,10 @@ std::string describe_wall(const WallOptions& o, WallKind kind) {
     const std::string top = o.diaphragm.is_rigid() ? ""
                             : fmt::format(", top support on a diaphragm T_d {} s zeta_d {}", o.diaphragm.period,
                                           o.diaphragm.damping);
-    return fmt::format("{}: height {} m, thickness {} m{}, xi {}{}, density {} kg/m^3, g {} m/s^2{}",
+    const std::string corners = o.corner_radius != 0.0 ? fmt::format(", corners rounded r/b {}", o.corner_radius) : "";
+    return fmt::format("{}: height {} m, thickness {} m{}, xi {}{}, density {} kg/m^3, g {} m/s^2{}{}",
                        kind == WallKind::vssw ? "VSSW" : "parapet", o.height, o.thickness, hinge, o.xi, at, o.density,
-                       o.g, top);
+                       o.g, top, corners);
 }
 
 }  // namespace vssw::cli

@@ -32,6 +32,7 @@ struct WallOptions {
     double density = kDefaultDensity;
     double g = kDefaultGravity;
     Diaphragm diaphragm;  // the VSSW's top support (--diaphragm-period, --diaphragm-damping): rigid unless given
+    double corner_radius = 0.0;   // r/b of the blocks' rounded corners, in [0, kMaxCornerRadius] (analytic/wall.hpp)
 };
 
 // The wall of Fig. 6 of the paper, the subject of `vssw summary`.
@@ -63,6 +64,9 @@ void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
 // --diaphragm-period, --diaphragm-damping: the VSSW's top support carried by a diaphragm (analytic/diaphragm.hpp), for
 // the commands that run a wall under a ground motion (history, compare). Checked by choose_model.
 void add_diaphragm_options(CLI::App& cmd, WallOptions& options);
+// --corner-radius: on the commands whose answer holds for rounded corners (compare, wall); the analytic model's
+// motion is the sharp blocks' (docs/model/analytic-core.md, "Rounded corners"), so free and history do not take it.
+void add_corner_radius_option(CLI::App& cmd, WallOptions& options);
 // --model.
 void add_model_options(CLI::App& cmd, ModelOptions& options);
 // --assumptions (paper | mechanism) and the overrides --kinematics, --impact, --roller: the analytic model's
@@ -96,7 +100,8 @@ io::Json assumptions_json(const ChosenModel& chosen);
 std::string describe_assumptions(const ChosenModel& chosen);
 
 // The wall as given, for the JSON outputs: height, thickness, hinge_ratio (null for a parapet), xi, density, g, and
-// overburden_eccentricity when it is not 0 (a centred N's outputs are those of before it existed).
+// overburden_eccentricity and corner_radius when they are not 0 (a centred N's and sharp corners' outputs are those of
+// before they existed).
 io::Json wall_inputs_json(const WallOptions& options, WallKind kind);
 // One line naming the wall, e.g. "VSSW  height 4 m, thickness 0.4 m, hinge h1/h 0.7, xi 0, density 1800 kg/m^3".
 std::string describe_wall(const WallOptions& options, WallKind kind);

@@ -1,6 +1,9 @@
 #include "cli/wall_output.hpp"
 
 #include <ostream>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "analytic/closed_forms.hpp"
 #include "cli/table.hpp"
@@ -60,34 +63,40 @@ void print_wall(std::ostream& out, const WallFigures& f) {
     // N off the centre: the thresholds are Eq. (12e) and (17e), the lower of the two directions of tipping, and the
     // optimal hinge (Eq. 15) is still the centred N's (docs/model/analytic-core.md, "The overburden's position").
     const bool eccentric = has_overburden && f.inputs.eccentricity != 0.0;
+    // Rounded corners: the thresholds are Eq. (12r) and (17r); the other closed forms are the sharp blocks' (docs/model/
+    // analytic-core.md, "Rounded corners").
+    const bool rounded = f.inputs.corner_radius != 0.0;
+    auto sharp = [rounded](std::string what) { return rounded ? what + ", sharp corners" : what; };
+    const std::string vssw_threshold = rounded ? "Eq. (12r)" : eccentric ? "Eq. (12e)" : "Eq. (12)";
+    const std::string parapet_threshold = rounded ? "Eq. (17r)" : eccentric ? "Eq. (17e)" : "Eq. (17)";
+    const std::string lower_side = eccentric ? ", the lower of the two sides" : "";
     Table(describe_wall(f.inputs, WallKind::vssw))
         .add("alpha1, alpha2", io::num(f.alpha1) + ", " + io::num(f.alpha2), "rad", "atan(b/h1), atan(b/h2)")
         .add("R1, R2", io::num(f.R1) + ", " + io::num(f.R2), "m", "half-diagonals")
-        .add("threshold acceleration", io::num(f.threshold_g), "g",
-             eccentric ? "Eq. (12e), the lower of the two sides" : "Eq. (12)")
-        .add("coefficient of restitution", io::num(f.restitution), "", "Eq. (19)")
+        .add("threshold acceleration", io::num(f.threshold_g), "g", vssw_threshold + lower_side)
+        .add("coefficient of restitution", io::num(f.restitution), "", sharp("Eq. (19)"))
         .add("A", io::num(f.A), "rad", has_overburden ? "Eq. (21a), linearised, ignores N" : "Eq. (21a), linearised")
         .add("P", io::num(f.P), "1/s", has_overburden ? "Eq. (21b), linearised, ignores N" : "Eq. (21b), linearised")
         .add("period from theta10 = A/2", io::num(f.period_half_A), "s",
-             has_overburden ? "Eq. (22), ignores N" : "Eq. (22)")
+             sharp(has_overburden ? "Eq. (22), ignores N" : "Eq. (22)"))
         .add("roller limit theta1,lim", num_or(f.theta_lim, "none"), f.theta_lim ? "rad" : "",
              f.theta_lim ? "Eq. (26)" : "Eq. (26) needs the hinge above mid-height")
         .add("collapse angle (paper model)", io::num(f.collapse_angle), "rad",
              f.collapse_angle < (1.0 - 1e-5) * f.theta_lim.value_or(1.5707963267948966)
                  ? "where Eq. (3) locks (cos A2 = 0), before Eq. (26)"  // margin: kRollerLimitMargin is 1e-6
                  : (f.theta_lim ? "just below Eq. (26)" : "pi/2: the lower body lies on its face"))
-        .add("reference velocity", io::num(f.reference_velocity), "rad/s", "Eq. (24)")
+        .add("reference velocity", io::num(f.reference_velocity), "rad/s", sharp("Eq. (24)"))
         .add("optimal hinge ratio h1/h", io::num(f.optimal_hinge_ratio), "",
              eccentric ? "Eq. (15) at this xi, N at the centre" : "Eq. (15) at this xi")
         .add("threshold VSSW / parapet", io::num(f.threshold_ratio_vssw_over_parapet), "",
-             eccentric ? "Eq. (12e) / Eq. (17e)" : "Eq. (12) / Eq. (17)")
+             vssw_threshold + " / " + parapet_threshold)
         .print(out);
-    Table(eccentric ? "Parapet of the same height, thickness, xi and e/b (Housner 1963)"
-                    : "Parapet of the same height, thickness and xi (Housner 1963)")
+    Table(eccentric || rounded ? fmt::format("Parapet of the same height, thickness, xi{}{} (Housner 1963)",
+                                             eccentric ? " and e/b" : "", rounded ? " and r/b" : "")
+                               : "Parapet of the same height, thickness and xi (Housner 1963)")
         .add("alpha", io::num(f.parapet.alpha), "rad", "atan(b/h)")
         .add("R", io::num(f.parapet.R), "m", "half-diagonal")
-        .add("threshold acceleration", io::num(f.parapet.threshold_g), "g",
-             eccentric ? "Eq. (17e), the lower of the two sides" : "Eq. (17)")
+        .add("threshold acceleration", io::num(f.parapet.threshold_g), "g", parapet_threshold + lower_side)
         .add("coefficient of restitution", io::num(f.parapet.restitution), "", "1 - 3/2 sin^2(alpha)")
         .add("frequency parameter p", io::num(f.parapet.p), "1/s", "sqrt(3g / 4R)")
         .print(out);

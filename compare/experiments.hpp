@@ -200,6 +200,8 @@ struct EngineComparison {
     // The analytic model's own assumptions failing along its free vibration (analytic/validity.hpp): its numbers
     // above are the model's, but the model may not hold there (e.g. a roller that would have to pull).
     std::vector<std::string> analytic_warnings;
+    // The engine's slips along its free vibration when the scene's friction was given (WallScene::slip_measured).
+    std::optional<multibody::SlipMeasures> free_vibration_slip;
 };
 
 // The free vibrations of a comparison: the analytic model at `reference` (AnalyticEngine's settings, e.g.

@@ -10,6 +10,11 @@ namespace vssw::compare {
 Response response_of(const multibody::Trajectory& run, const multibody::WallScene& scene) {
     Response r;
     r.overturned = run.overturned;
+    r.slip = run.slip;
+    if (run.located && run.located->supports_computed) {
+        r.base_friction_needed = run.located->base_friction_needed;
+        if (scene.vssw) r.hinge_friction_needed = run.located->hinge_friction_needed;
+    }
     if (run.located) {
         r.peak = run.located->max_abs_theta1;
         r.peak_time = run.located->t_max_abs_theta1;

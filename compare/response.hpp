@@ -16,6 +16,10 @@ struct Response {
     std::optional<double> t_overturn;    // [s]
     std::optional<double> energy_error;  // the analytic model's energy balance (located events only)
     std::optional<double> tension_at;    // first time the bilateral roller would pull [s] (located events only)
+    // Finite friction (multibody::WallScene::slip_measured): an engine's slips, and the friction the analytic model
+    // needed at the base and the hinge (located events only, its supports computed).
+    std::optional<multibody::SlipMeasures> slip;
+    std::optional<double> base_friction_needed, hinge_friction_needed;
 };
 
 Response response_of(const multibody::Trajectory& run, const multibody::WallScene& scene);

@@ -28,6 +28,13 @@ namespace vssw::multibody {
 struct WallScene : Wall {
     // Coulomb friction at the ground and at the hinge: high enough that nothing slides (sliding is reported).
     double friction = 2.0;
+    // Finite friction given by the user (docs/model/analytic-core.md "Finite friction"): the hinge's coefficient when
+    // it differs from `friction` (which is then the base's), and whether sliding is a measured response (Trajectory::
+    // slip) rather than a failed run. Unset: the default friction, where a slide is still a failure (a bug).
+    std::optional<double> hinge_friction;
+    bool slip_measured = false;
+    double base_mu() const { return friction; }
+    double hinge_mu() const { return hinge_friction.value_or(friction); }
 
     static WallScene of(const VsswGeometry& w) { return WallScene(Wall::of(w)); }
     static WallScene of(const ParapetGeometry& p) { return WallScene(Wall::of(p)); }
@@ -127,6 +134,24 @@ struct LocatedEvents {
     double energy_balance_error = 0.0;  // the run's, relative to the largest energy in play (analytic/simulate.hpp)
     bool supports_computed = false;     // the supports' demand was computed (a VSSW)
     std::optional<double> roller_tension_at;  // first time the bilateral roller would have to pull [s]
+    // The friction the no-sliding assumption needs while each contact pushes (largest |T|/N; 0 when not computed).
+    double base_friction_needed = 0.0, hinge_friction_needed = 0.0;
+};
+
+// Sliding measured along an engine's run when the scene's friction was given (WallScene::slip_measured): at the base,
+// the contact corner's drift from its place on the ground; at the hinge, the upper block's contact corner's drift
+// along the lower block's top face (multibody/kit/slip_meter.hpp). Signed slips are along +x (base) or the lower
+// block's top face (hinge) [m]; a parapet's hinge stays 0.
+struct SlipMeasures {
+    double base_largest = 0.0, base_residual = 0.0;    // largest |slip| over the run and the slip at its end [m]
+    double hinge_largest = 0.0, hinge_residual = 0.0;  // the same at the hinge [m]
+    double b = 0.0;                                    // the half-thickness the slips are given in units of [m]
+    // The first time either slip passed kSlipTolerance b, and the first time |theta1| passed kLiftTolerance alpha
+    // (slip_meter.hpp); unset when it never did.
+    std::optional<double> t_first_slip, t_first_lift;
+    // The wall left its support: a slip past kSlidOffLimit b ended the run (RunMonitor), with this reason.
+    std::optional<std::string> slid_off;
+    bool slid_before_rocking() const { return t_first_slip && (!t_first_lift || *t_first_slip < *t_first_lift); }
 };
 
 struct Trajectory {
@@ -138,6 +163,7 @@ struct Trajectory {
     // analytic/validity.hpp); empty for the engines, whose physics is their own.
     std::vector<std::string> warnings;
     std::optional<LocatedEvents> located;  // the analytic model only
+    std::optional<SlipMeasures> slip;      // an engine's, when the scene's friction was given (WallScene::slip_measured)
 };
 
 // A run the engine could not finish honestly: NaN, blow-up, penetration past a bound, sliding. The message names the

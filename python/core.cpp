@@ -314,6 +314,7 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     if (friction) {
         require(std::isfinite(*friction) && *friction > 0.0, "friction", "a positive finite coefficient", *friction);
         scene.friction = *friction;
+        scene.slip_measured = true;  // the user's friction: sliding is measured (multibody/engine.hpp)
     }
     const bool shaken = motion_options.record || motion_options.pulse;
     vssw::multibody::Excitation ex;
@@ -360,6 +361,21 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
                           ? py::cast(chosen.kinematics() == vssw::Kinematics::exact ? "exact" : "paper")
                           : py::none();
     d["ground_motion"] = shaken ? py::cast(ex.horizontal.name()) : py::none();
+    d["slip"] = py::none();
+    if (traj.slip) {  // the engines' measured sliding, friction given (vssw compare --friction's slip, in m)
+        const vssw::multibody::SlipMeasures& s = *traj.slip;
+        py::dict slip;
+        slip["base_largest"] = s.base_largest;
+        slip["base_residual"] = s.base_residual;
+        slip["hinge_largest"] = s.hinge_largest;
+        slip["hinge_residual"] = s.hinge_residual;
+        slip["b"] = s.b;
+        slip["t_first_slip"] = s.t_first_slip ? py::cast(*s.t_first_slip) : py::none();
+        slip["t_first_lift"] = s.t_first_lift ? py::cast(*s.t_first_lift) : py::none();
+        slip["slid_before_rocking"] = s.slid_before_rocking();
+        slip["slid_off"] = s.slid_off ? py::cast(*s.slid_off) : py::none();
+        d["slip"] = slip;
+    }
     return d;
 }
 

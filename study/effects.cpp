@@ -58,6 +58,7 @@ Effect effect_of(const StudyData& d, std::size_t column, std::uint32_t level, st
     e.from = c.texts[c.order.front()];
     e.to = c.texts[level];
     e.assumption = c.assumption;
+    e.physical = c.physical;
     e.metric = metric;
     e.binary = d.metrics[metric].binary;
     e.pairs = t.pairs;

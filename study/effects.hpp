@@ -17,7 +17,8 @@ namespace vssw::study {
 struct Effect {
     std::size_t column = 0;  // the parameter, in StudyData::columns
     std::string parameter, from, to;  // its key, its first level and the level compared with it
-    bool assumption = false;
+    bool assumption = false;  // the analytic model's (kinematics, impact, roller)
+    bool physical = false;    // one of the paper's physical assumptions relaxed (kPhysicalAssumptionKeys)
     std::size_t metric = 0;  // in StudyData::metrics
     bool binary = false;
     long pairs = 0;          // pairs with a finite change (binary: with both values)

@@ -37,9 +37,10 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
                                                "file",  "scale",     "pga",       "shape",  "amplitude",
                                                "pulse_period", "alpha", "R"};
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "overburden_eccentricity",
-                                                "diaphragm_period", "diaphragm_damping",
-                                                "units", "duration", "tolerance", "max_pga", "step", "perturbation",
-                                                "pgv", "sa", "arias", "sa_period", "sa_damping", "response_tail"};
+                                                "friction", "hinge_friction", "units", "duration", "tolerance", "max_pga",
+                                                "step", "perturbation", "pgv", "sa", "arias", "sa_period", "sa_damping",
+                                                "response_tail", "corner_radius", "diaphragm_period",
+                                                "diaphragm_damping"};
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
@@ -269,16 +270,19 @@ void Grid::build_runs() {
 }
 
 // Cases: every combination of every part, each built (a wall out of range is refused here, naming the case), the
-// repeats of a parapet's hinge and (where a part asks) the releases from which the analytic model falls left out.
+// repeats of a parapet's hinge, the combinations off the first level of two one_at_a_time keys and (where a part asks)
+// the releases from which the analytic model falls left out.
 void Grid::list_cases() {
     for (std::size_t pi = 0; pi < parts_.size(); ++pi) {
         const PartSpec& part = spec_.parts[pi];
-        const auto axis_index = [&](const char* key) -> std::optional<std::size_t> {
+        const auto axis_index = [&](const std::string& key) -> std::optional<std::size_t> {
             for (std::size_t i = 0; i < parts_[pi].axes.size(); ++i)
                 if (parts_[pi].axes[i]->key == key) return i;
             return std::nullopt;
         };
         const std::optional<std::size_t> hinge = axis_index("hinge"), duration = axis_index("duration");
+        std::vector<std::size_t> one_at_a_time;  // the axes varied one at a time from their first level
+        for (const std::string& k : part.one_at_a_time) one_at_a_time.push_back(*axis_index(k));
         // A parapet has neither kinematics nor roller: its analytic run is the part's first analytic run built.
         for (const RunSpec& r : runs_)
             if (r.part == pi && r.engine == "analytic") {
@@ -286,8 +290,11 @@ void Grid::list_cases() {
                 break;
             }
         for (std::size_t p = 0; p < parts_[pi].size; ++p) {
-            const CaseSpec c = make_case(static_cast<int>(parts_[pi].first + p));
             const std::vector<std::size_t> d = digits(p, parts_[pi].axes);
+            // Left out before it is built: a combination no one asked for may be no wall at all.
+            if (std::count_if(one_at_a_time.begin(), one_at_a_time.end(), [&](std::size_t a) { return d[a] != 0; }) > 1)
+                continue;
+            const CaseSpec c = make_case(static_cast<int>(parts_[pi].first + p));
             if (c.model == "parapet" && hinge && d[*hinge] != 0) continue;
             if (duration && c.shape != "harmonic" && d[*duration] != 0) continue;  // only a harmonic lasts `duration`
             if (part.skip_falling_releases && falls_from(c.scene, c.theta0)) continue;
@@ -441,17 +448,27 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
         thickness = 2.0 * l.num("R", 0.0) * std::sin(l.num("alpha", 0.0));
     }
     const double eccentricity = l.num("overburden_eccentricity", 0.0);  // N's e/b (analytic/geometry.hpp)
+    const double corners = l.num("corner_radius", 0.0);  // r/b of the rounded corners (analytic/wall.hpp)
     if (c.model == "parapet") {
-        c.scene = multibody::WallScene::of(
-            with_eccentricity(make_parapet(height, thickness, c.xi, c.density, c.g), eccentricity));
+        c.scene = multibody::WallScene::of(with_corner_radius(
+            with_eccentricity(make_parapet(height, thickness, c.xi, c.density, c.g), eccentricity), corners));
     } else if (l.has("alpha1")) {
-        c.scene = multibody::WallScene::of(with_eccentricity(
-            make_vssw_from_angles(l.num("alpha1", 0.0), l.num("alpha2", 0.0), l.num("R1", 0.0), c.xi, c.density, c.g),
-            eccentricity));
+        c.scene = multibody::WallScene::of(with_corner_radius(
+            with_eccentricity(make_vssw_from_angles(l.num("alpha1", 0.0), l.num("alpha2", 0.0), l.num("R1", 0.0),
+                                                    c.xi, c.density, c.g),
+                              eccentricity),
+            corners));
     } else {
         if (!hinge) throw InputError("a VSSW needs a hinge ratio");
-        c.scene = multibody::WallScene::of(
-            with_eccentricity(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g), eccentricity));
+        c.scene = multibody::WallScene::of(with_corner_radius(
+            with_eccentricity(make_vssw(height, thickness, *hinge, c.xi, c.density, c.g), eccentricity), corners));
+    }
+    // The contacts' friction, a property of the wall's joints that every engine of the case shares (and the analytic
+    // model compares with what it needs): given, sliding is measured rather than a failure (multibody/engine.hpp).
+    if (l.has("friction") || l.has("hinge_friction")) {
+        c.scene.slip_measured = true;
+        if (l.has("friction")) c.scene.friction = l.num("friction", 0.0);
+        if (l.has("hinge_friction")) c.scene.hinge_friction = l.num("hinge_friction", 0.0);
     }
     // The VSSW's top support (analytic/diaphragm.hpp): rigid unless the file gives a period; a parapet has none.
     c.scene.diaphragm = {l.num("diaphragm_period", 0.0), l.num("diaphragm_damping", kDefaultDiaphragmDamping)};

@@ -142,6 +142,30 @@ GroundMotion case_motion(const Grid& grid, const CaseSpec& c, double scale) {
     }
 }
 
+// The finite-friction metrics (compare/metric_catalog.cpp) of a run: NaN (empty) where the run has none, nullopt for
+// another metric.
+std::optional<double> friction_metric(const std::string& metric, const compare::Response& r) {
+    const auto slip = [&](double multibody::SlipMeasures::*field) {
+        return r.slip ? (*r.slip).*field / r.slip->b : kNaN;
+    };
+    if (metric == "base_slip") return slip(&multibody::SlipMeasures::base_largest);
+    if (metric == "hinge_slip") return slip(&multibody::SlipMeasures::hinge_largest);
+    if (metric == "residual_base_slip") return slip(&multibody::SlipMeasures::base_residual);
+    if (metric == "residual_hinge_slip") return slip(&multibody::SlipMeasures::hinge_residual);
+    if (metric == "slid_before_rocking") return r.slip ? (r.slip->slid_before_rocking() ? 1.0 : 0.0) : kNaN;
+    if (metric == "base_friction_needed") return r.base_friction_needed.value_or(kNaN);
+    if (metric == "hinge_friction_needed") return r.hinge_friction_needed.value_or(kNaN);
+    return std::nullopt;
+}
+
+// A run's warnings: the analytic model's own, or an engine's wall that slid off its support, which ended the run
+// there (multibody::SlipMeter).
+std::vector<std::string> warnings_of(const Trajectory& t) {
+    std::vector<std::string> w = t.warnings;
+    if (t.slip && t.slip->slid_off) w.push_back(*t.slip->slid_off);
+    return w;
+}
+
 Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, const CaseSpec& c,
                          const GroundMotion& motion) {
     multibody::Excitation ex;
@@ -317,6 +341,10 @@ void require_runs_resolve(const Grid& grid, const std::vector<int>& case_ids) {
 Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t run_index,
                               const multibody::Engine& engine) {
     const std::size_t m = threshold_metric(grid);
+    // A rounded wall's threshold is the analytic model's closed form, Eq. (12r) / (17r): it cannot simulate the
+    // rolling blocks (docs/model/analytic-core.md, "Rounded corners"), so the bisection's trials would all refuse.
+    if (engine.name() == "analytic" && c.scene.corner_radius() > 0.0)
+        return {m, analytic_model(c.scene, Kinematics::exact)->rest_threshold(0.0) / c.scene.gravity(), kOk, {}};
     try {
         return {m, compare::find_threshold(engine, grid.runs().at(run_index).settings, c.scene).value_g, kOk, {}};
     } catch (const EngineFailure& e) {
@@ -407,7 +435,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                             } else {
                                 const Trajectory t = run_from_rest(engine, run, c, case_motion(grid, c, c.scale));
                                 response = response_of(t, c.scene);
-                                response_warnings = t.warnings;
+                                response_warnings = warnings_of(t);
                             }
                         },
                         response_failure);
@@ -422,6 +450,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                 else if (metric == "t_overturn") add(m, r.t_overturn.value_or(kNaN), kOk);
                 else if (metric == "energy_balance_error") add(m, r.energy_error.value_or(kNaN), kOk);
                 else if (metric == "roller_tension_time") add(m, r.tension_at.value_or(kNaN), kOk);
+                else if (const std::optional<double> v = friction_metric(metric, r)) add(m, *v, kOk);
                 break;
             }
             case compare::MetricSource::collapse: {

@@ -1,4 +1,5 @@
-// Tornado charts: the effect of each varied assumption of the analytic model on a metric (study/study_plots.hpp).
+// Tornado charts: the effect of each varied assumption of the analytic model on a metric, and of each of the paper's
+// physical assumptions relaxed (study/study_plots.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -22,7 +23,16 @@ constexpr const char* kMedianStyle = "pt 7 ps 1.4 lc rgb 'black'";
 
 std::string bar_label(const Effect& e) { return fmt::format("{}: {} -> {}", e.parameter, e.from, e.to); }
 
-io::PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Effect*> bars) {
+// The two kinds of chart: the analytic model's assumptions (engines ignore them) and the paper's physical ones.
+struct TornadoKind {
+    const char* prefix;  // of the plot's name
+    const char* what;    // in the title: "each assumption", "each physical assumption relaxed"
+};
+constexpr TornadoKind kModelTornado{"tornado_", "each assumption"};
+constexpr TornadoKind kPhysicalTornado{"tornado_physical_", "each physical assumption relaxed (model and engines)"};
+
+io::PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const Effect*> bars, const TornadoKind& kind,
+                       const char* section) {
     // Largest first, at the top: the bar's reach, then its median.
     std::stable_sort(bars.begin(), bars.end(), [](const Effect* a, const Effect* b) {
         if (a->extent() != b->extent()) return a->extent() > b->extent();
@@ -30,11 +40,11 @@ io::PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const
     });
     const MetricMeta& m = d.metrics[metric];
     io::PlotScript s;
-    s.plot.section = kTornadoSection;
-    s.plot.name = io::file_stem("tornado_" + m.name);
+    s.plot.section = section;
+    s.plot.name = io::file_stem(kind.prefix + m.name);
     s.plot.title = m.binary
                        ? fmt::format("{}: share of paired runs that flip (right: to 1, left: to 0; dot: net)", m.name)
-                       : fmt::format("{}: change with each assumption (bar: smallest to largest; dot: median)", m.name);
+                       : fmt::format("{}: change with {} (bar: smallest to largest; dot: median)", m.name, kind.what);
     s.dat = fmt::format("# {}\n# y label lo median hi pairs hover_text   (changes as fractions; binary metric: "
                         "shares of pairs, lo = -(1 -> 0), hi = +(0 -> 1), median = net)\n",
                         io::gp_comment(m.name));
@@ -72,17 +82,24 @@ io::PlotScript tornado(const StudyData& d, std::size_t metric, std::vector<const
 }  // namespace
 
 void add_tornado_plots(const StudyData& d, const std::vector<Effect>& effects, StudyPlots& out) {
-    bool any_assumption = false;
-    for (std::size_t c : d.varied()) any_assumption = any_assumption || d.columns[c].assumption;
-    if (!any_assumption) {
-        out.notes.push_back("No assumption of the analytic model varies: there are no tornado charts.");
+    bool any_assumption = false, any_physical = false;
+    for (std::size_t c : d.varied()) {
+        any_assumption = any_assumption || d.columns[c].assumption;
+        any_physical = any_physical || d.columns[c].physical;
+    }
+    if (!any_assumption && !any_physical) {
+        out.notes.push_back("No assumption of the analytic model or of the paper varies: there are no tornado charts.");
         return;
     }
     for (std::size_t m = 0; m < d.metrics.size(); ++m) {
-        std::vector<const Effect*> bars;
+        std::vector<const Effect*> model, physical;
         for (const Effect& e : effects)
-            if (e.assumption && e.metric == m && e.pairs > 0) bars.push_back(&e);
-        if (!bars.empty()) out.scripts.push_back(tornado(d, m, bars));
+            if (e.metric == m && e.pairs > 0) {
+                if (e.assumption) model.push_back(&e);
+                if (e.physical) physical.push_back(&e);
+            }
+        if (!physical.empty()) out.scripts.push_back(tornado(d, m, physical, kPhysicalTornado, kPhysicalTornadoSection));
+        if (!model.empty()) out.scripts.push_back(tornado(d, m, model, kModelTornado, kTornadoSection));
     }
 }
 

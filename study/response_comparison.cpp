@@ -11,7 +11,10 @@
 namespace vssw::study {
 namespace {
 
-const std::vector<std::string> kMetrics = {"peak_rotation", "peak_time", "overturned", "t_overturn"};
+const std::vector<std::string> kMetrics = {"peak_rotation",       "peak_time",          "overturned",
+                                           "t_overturn",          "base_slip",          "hinge_slip",
+                                           "residual_base_slip",  "residual_hinge_slip", "slid_before_rocking",
+                                           "base_friction_needed", "hinge_friction_needed"};
 
 // The one case: the wall as built, the motion as the study's excitation keys would give it.
 CaseSpec one_case(const multibody::WallScene& wall, const ResponseMotion& m) {
@@ -90,6 +93,13 @@ ResponseRun measured(const Grid& grid, const CaseSpec& c, std::size_t r) {
         if (metric == "peak_time") res.peak_time = m.value;
         if (metric == "overturned") res.overturned = m.value;
         if (metric == "t_overturn") res.t_overturn = m.value;
+        if (metric == "base_slip") res.base_slip = m.value;
+        if (metric == "hinge_slip") res.hinge_slip = m.value;
+        if (metric == "residual_base_slip") res.residual_base_slip = m.value;
+        if (metric == "residual_hinge_slip") res.residual_hinge_slip = m.value;
+        if (metric == "slid_before_rocking") res.slid_before_rocking = m.value;
+        if (metric == "base_friction_needed") res.base_friction_needed = m.value;
+        if (metric == "hinge_friction_needed") res.hinge_friction_needed = m.value;
         if (m.status != "ok") res.status = m.status;
         res.warnings = m.warnings;
     }

@@ -41,6 +41,12 @@ struct ResponseRun {
     double t_overturn = std::numeric_limits<double>::quiet_NaN();
     std::string status = "ok";  // or "failed: <reason>"
     std::string warnings;       // the analytic model's own assumptions failing along the run, "; "-joined
+    // Finite friction (the wall's friction given): the response metrics of the same names (compare/metric_catalog),
+    // NaN where a run has none (slips: the engines; the friction needed: the analytic model).
+    double base_slip = std::numeric_limits<double>::quiet_NaN(), hinge_slip = base_slip;  // largest, in b
+    double residual_base_slip = base_slip, residual_hinge_slip = base_slip;             // at the end, in b
+    double slid_before_rocking = base_slip;                                             // 1 or 0
+    double base_friction_needed = base_slip, hinge_friction_needed = base_slip;
 };
 
 struct ResponseComparison {

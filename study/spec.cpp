@@ -16,6 +16,7 @@
 #include "analytic/input_file.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/intensity_measures.hpp"
+#include "analytic/wall.hpp"
 #include "io/config_file.hpp"
 #include "io/csv.hpp"
 #include "io/json.hpp"
@@ -31,8 +32,11 @@ namespace vssw::study {
 
 const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thickness", "alpha", "R",      "alpha1",
                                             "alpha2", "R1",      "hinge",  "xi",        "overburden_eccentricity",
-                                            "density", "g", "diaphragm_period", "diaphragm_damping"};
+                                            "density", "g", "corner_radius", "friction", "hinge_friction",
+                                            "diaphragm_period", "diaphragm_damping"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
+const std::vector<std::string> kPhysicalAssumptionKeys = {"overburden_eccentricity", "friction", "hinge_friction",
+                                                         "corner_radius", "diaphragm_period"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "pgv",      "sa",        "arias",
                                                   "shape",        "amplitude", "pulse_period",
@@ -60,10 +64,10 @@ using nlohmann::json;
 
 constexpr const char* kWhat = "study file";
 const std::vector<std::string> kTopKeys = {"name",        "description", "metrics",  "engines", "wall",
-                                           "assumptions", "excitation",  "settings", "part"};
+                                           "assumptions", "excitation",  "settings", "part", "one_at_a_time"};
 const std::vector<std::string> kPartKeys = {"wall",        "excitation", "metrics",     "settings",
                                             "wall_name",   "wall_label", "record_name", "record_label",
-                                            "skip_falling_releases"};
+                                            "skip_falling_releases", "one_at_a_time"};
 // The smallest release and the most iterations, as vssw compare's (compare/experiments.hpp, multibody/engine.hpp).
 constexpr double kMinTheta0 = compare::kMinRelease;
 constexpr double kMinCollapseStep = 1e-3;  // scale-to-collapse's smallest relative step (read_value, "step")
@@ -188,6 +192,19 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
         if (!(x >= -1.0 && x <= 1.0))
             r.fail(key, fmt::format("must be N's eccentricity e/b in [-1, 1] (the top face's corners), got {}",
                                     io::dump_json(v)));
+        return x;
+    }
+    if (k == "corner_radius") {
+        const double x = r.number(v, key, fmt::format("r/b in [0, {:g}]", kMaxCornerRadius));
+        if (!(x >= 0.0 && x <= kMaxCornerRadius))
+            r.fail(key, fmt::format("must be the corners' radius r/b in [0, {:g}] (0: sharp), got {}",
+                                    kMaxCornerRadius, io::dump_json(v)));
+        return x;
+    }
+    if (k == "friction" || k == "hinge_friction") {  // the contacts' Coulomb coefficient (multibody/engine.hpp)
+        const double x = r.number(v, key, "a friction coefficient > 0");
+        if (!(x > 0.0 && std::isfinite(x)))
+            r.fail(key, fmt::format("must be a friction coefficient > 0, got {}", io::dump_json(v)));
         return x;
     }
     if (k == "xi") {
@@ -632,6 +649,36 @@ std::vector<std::string> read_metrics(const Reader& r, const json& m, const std:
     return out;
 }
 
+// Whether the part varies a wall or excitation key.
+auto varied_in(const PartSpec& p) {
+    return [&p](const std::string& k) {
+        const Axis* a = p.wall_axis(k) ? p.wall_axis(k) : p.excitation_axis(k);
+        return a && a->varied();
+    };
+}
+
+// one_at_a_time = [KEY, ...]: wall or excitation keys, each once. `varied(key)` says whether the grid varies it: a key it
+// does not vary is refused when `strict` (a part's own list), skipped otherwise (the study's list, read for each part).
+template <class Varied>
+std::vector<std::string> read_one_at_a_time(const Reader& r, const json& v, const std::string& key, Varied varied,
+                                            bool strict) {
+    if (!v.is_array() || v.size() < 2)
+        r.fail(key, fmt::format("must list two or more wall or excitation keys that vary (one key alone is the "
+                                "product), got {}",
+                                io::dump_json(v)));
+    std::vector<std::string> out;
+    for (const json& k : v) {
+        if (!k.is_string()) r.fail(key, fmt::format("must list key names, got {}", io::dump_json(k)));
+        const std::string name = k.get<std::string>();
+        if (!contains(kWallKeys, name) && !contains(kExcitationKeys, name))
+            r.fail(key, fmt::format("'{}' is not a wall or excitation key", name));
+        if (contains(out, name)) r.fail(key, fmt::format("names '{}' twice", name));
+        if (varied(name)) out.push_back(name);
+        else if (strict) r.fail(key, fmt::format("'{}' is not given as a list: nothing to vary one at a time", name));
+    }
+    return out;
+}
+
 // One grid: the whole study's [wall] and [excitation] (where ""), or a [[part]]'s (where "part[N]").
 // A record is scaled one way: by a factor (scale) or to a level of one intensity measure (pga, pgv, sa, arias); Sa's
 // oscillator (sa_period, needed; sa_damping) goes with sa, or with a search that reports collapse_sa.
@@ -758,6 +805,8 @@ PartSpec read_part(const Reader& r, const json& t, const std::string& where, con
         }
     }
 
+    if (t.contains("one_at_a_time"))  // a part's own, or a study of one grid's (the study's list is the part's)
+        p.one_at_a_time = read_one_at_a_time(r, t["one_at_a_time"], key("one_at_a_time"), varied_in(p), true);
     if (!where.empty()) {
         for (auto [name, target] : {std::pair{"wall_name", &p.names.wall_name}, std::pair{"wall_label", &p.names.wall_label},
                                     std::pair{"record_name", &p.names.record_name},
@@ -858,6 +907,22 @@ StudySpec study_from_json(const json& doc, const std::string& name, const std::s
             if (!parts[i].is_object()) r.fail(where, "must be a table of keys");
             r.unknown_keys(parts[i], where, kPartKeys);
             s.parts.push_back(read_part(r, parts[i], where, s));
+        }
+        // The study's one_at_a_time: each key varied in some part, applied to every part without its own list.
+        if (doc.contains("one_at_a_time")) {
+            std::vector<std::string> seen;
+            for (std::size_t i = 0; i < s.parts.size(); ++i) {
+                PartSpec& p = s.parts[i];
+                const std::vector<std::string> keys =
+                    read_one_at_a_time(r, doc["one_at_a_time"], "one_at_a_time", varied_in(p), false);
+                for (const std::string& k : keys)
+                    if (!contains(seen, k)) seen.push_back(k);
+                if (!parts[i].contains("one_at_a_time")) p.one_at_a_time = keys;
+            }
+            for (const json& k : doc["one_at_a_time"])
+                if (!contains(seen, k.get<std::string>()))
+                    r.fail("one_at_a_time", fmt::format("'{}' is given as a list in no part: nothing to vary one at "
+                                                        "a time", k.get<std::string>()));
         }
         // Every metric the study names is measured somewhere.
         for (const std::string& metric : s.metrics)

@@ -6,8 +6,9 @@
 //   name = "hinge-and-overburden"
 //   metrics = ["threshold_g", "period", "restitution"]
 //   engines = ["analytic", "ode"]            # or [engines.ode] dt = 2e-4 (a table of engines with their settings)
-//   [wall]          model, height, thickness, hinge, xi, overburden_eccentricity, density, g, diaphragm_period,
-//                   diaphragm_damping (the VSSW's top support: analytic/diaphragm.hpp)   (or alpha and R;
+//   [wall]          model, height, thickness, hinge, xi, overburden_eccentricity, density, g, corner_radius, friction (the
+//                   base's, and the hinge's unless hinge_friction; given, the engines measure sliding), diaphragm_period,
+//                   diaphragm_damping (the VSSW's top support: analytic/diaphragm.hpp) (or alpha and R;
 //                   alpha1, alpha2 and R1;
 //                   specimen: a Table 1 number, data/table1.csv)
 //   [assumptions]   set (paper | mechanism, default mechanism: analytic/assumption_sets.hpp), one name, never a list;
@@ -15,6 +16,10 @@
 //                   (bilateral | unilateral), each the set's unless given: the analytic model's; engines ignore them
 //   [excitation]    kind = closed-form | threshold | free | pulse | record | scale-to-collapse | ensemble, and its keys
 //   [settings.ode]  dt = 2e-4, iterations, knobs by name (a list varies them)
+//
+// one_at_a_time = ["overburden_eccentricity", "xi"] (the study's or a part's): those keys vary one at a time from
+// their first level, the rest of the grid crossed with each: a baseline and one case per other level of each, not their
+// product (what a sensitivity or tornado study needs: study/effects.hpp pairs each case with its baseline).
 //
 // A study may instead be several grids, each a [[part]] with its own [part.wall], [part.excitation] (any kind),
 // optional metrics and [part.settings.ENGINE], sharing the study's engines and assumptions; its cases follow the
@@ -73,6 +78,9 @@ struct EngineSpec {
 // alpha2, R1), then hinge, xi, density, g.
 extern const std::vector<std::string> kWallKeys;
 extern const std::vector<std::string> kAssumptionKeys;  // kinematics, impact, roller
+// The wall keys that relax one of the paper's physical assumptions (N at the centreline, ...), whose first level in a
+// study is the paper's: model and engines both follow them, and their tornado charts say what each assumption costs.
+extern const std::vector<std::string> kPhysicalAssumptionKeys;
 extern const std::vector<std::string> kExcitationKeys;  // theta0, file, units, scale, pga, pgv, sa, arias, shape, ...
 // The keys that scale a record to a level of an intensity measure (analytic/intensity_measures.hpp), each the measure's
 // word: pga [g], pgv [m/s], sa [g] at sa_period [s] and sa_damping (default 0.05), arias [m/s]. A record part gives at
@@ -118,6 +126,10 @@ struct PartSpec {
     std::vector<EngineSpec> engines;   // the study's engines, each with this part's settings where it gives them
     NameTemplates names;
     bool skip_falling_releases = false;  // free: leave out a release from which the analytic model (exact) falls
+    // Wall and excitation keys varied one at a time from their first level (a sensitivity design): a case whose levels
+    // leave the first level in more than one of them is left out of the product (Grid::list_cases). The study's
+    // `one_at_a_time`, else the part's own. Empty: the whole product.
+    std::vector<std::string> one_at_a_time;
     std::optional<EnsembleSpec> ensemble;  // kind = "ensemble" in the file (kind is then record or scale-to-collapse)
 
     // As results.csv's `kind` column and results.json say it: "ensemble" for an ensemble, else to_string(kind).

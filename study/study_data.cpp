@@ -111,6 +111,8 @@ void classify_columns(StudyData& d) {
     for (const io::Json& v : d.manifest.at("varied")) varied.insert(v.get<std::string>());
     for (ColumnLevels& c : d.columns) {
         c.assumption = std::find(kAssumptionKeys.begin(), kAssumptionKeys.end(), c.key) != kAssumptionKeys.end();
+        c.physical = std::find(kPhysicalAssumptionKeys.begin(), kPhysicalAssumptionKeys.end(), c.key) !=
+                     kPhysicalAssumptionKeys.end();
         c.varied = varied.count(c.key) > 0;
         const auto is_number = [&](std::uint32_t id) { return std::isfinite(c.values[id]); };
         c.numeric = !kIdColumns.count(c.key) && !c.order.empty() &&

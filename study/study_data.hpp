@@ -28,6 +28,7 @@ struct ColumnLevels {
                                       // assumptions in the order of the manifest's runs)
     bool numeric = false;             // every non-empty level a number, and the column a quantity (not an id)
     bool assumption = false;          // kinematics, impact, roller
+    bool physical = false;            // one of the paper's physical assumptions relaxed (kPhysicalAssumptionKeys)
     bool varied = false;              // in the manifest's "varied"
 };
 

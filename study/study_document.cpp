@@ -39,21 +39,30 @@ void add_introduction(Blocks& b, const StudyData& d) {
                                       study.value("identity", std::string()))));
 }
 
-// The study's main figures, which open the page: those of the first of these sections that has any (the paper's
-// rocking curves, an ensemble's fragility, the overturning maps, the values against the varied parameters), at most
+// The study's main figures, which open the page: the first tornado chart of the paper's physical assumptions (what a
+// study that relaxes them is for), then those of the first of these sections that has any (the paper's rocking
+// curves, an ensemble's fragility, the overturning maps, the values against the varied parameters), at most
 // kGlanceFigures of them, then the first tornado chart (the largest effects of the model's assumptions).
 std::vector<io::Plot> main_figures(const io::PlotResult& plots) {
     std::vector<io::Plot> out;
-    for (const char* section : {kRockingSection, kEnsembleSection, kMapSection, kValueSection}) {
+    const auto first_of = [&](const char* section) {
         for (const io::Plot& p : plots.plots)
-            if (p.made && p.section == section && out.size() < kGlanceFigures) out.push_back(p);
-        if (!out.empty()) break;
+            if (p.made && p.section == section) {
+                out.push_back(p);
+                return;
+            }
+    };
+    first_of(kPhysicalTornadoSection);
+    for (const char* section : {kRockingSection, kEnsembleSection, kMapSection, kValueSection}) {
+        std::size_t added = 0;
+        for (const io::Plot& p : plots.plots)
+            if (p.made && p.section == section && added < kGlanceFigures) {
+                out.push_back(p);
+                ++added;
+            }
+        if (added > 0) break;
     }
-    for (const io::Plot& p : plots.plots)
-        if (p.made && p.section == kTornadoSection) {
-            out.push_back(p);
-            break;
-        }
+    first_of(kTornadoSection);
     return out;
 }
 
@@ -188,11 +197,12 @@ void add_sensitivities(Blocks& b, const StudyData& d, const std::vector<Effect>&
             sentences.push_back(effect_sentence(d, e));
     if (sentences.empty()) b.push_back(io::paragraph("No pair of runs gives a change: every paired value is missing."));
     else b.push_back(io::list(sentences));
-    const bool any_assumption = std::any_of(d.columns.begin(), d.columns.end(),
-                                            [](const ColumnLevels& c) { return c.assumption && c.varied; });
+    const bool any_assumption = std::any_of(d.columns.begin(), d.columns.end(), [](const ColumnLevels& c) {
+        return (c.assumption || c.physical) && c.varied;
+    });
     if (!any_assumption)
-        b.push_back(io::paragraph("No assumption of the analytic model varied: nothing here is the effect of one, and "
-                              "there are no tornado charts."));
+        b.push_back(io::paragraph("No assumption of the analytic model or of the paper varied: nothing here is the "
+                                  "effect of one, and there are no tornado charts."));
     b.push_back(effects_table(d, effects));
 }
 

@@ -4,6 +4,7 @@ namespace vssw::study {
 
 const char* const kValueSection = "Each metric against each varied parameter";
 const char* const kTornadoSection = "What the analytic model's assumptions change (tornado charts)";
+const char* const kPhysicalTornadoSection = "What the paper's physical assumptions cost (tornado charts)";
 const char* const kRockingSection = "Rocking curves (the paper's Fig. 10/11)";
 const char* const kMapSection = "Overturning maps";
 

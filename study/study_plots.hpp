@@ -7,6 +7,8 @@
 //                                  over the last ones); a number on a numeric axis, a word as categories
 //   tornado_<metric>               each varied assumption's effect on the metric (study/effects.hpp), largest first:
 //                                  the bar spans the smallest to the largest change, the mark is the median
+//   tornado_physical_<metric>      the same for each of the paper's physical assumptions relaxed (N off the centre,
+//                                  ...), over the model and the engines alike: the bar spans walls and backends
 //   rocking_<record>...            record studies: peak rotation against alpha, a panel per R, an open circle at 1
 //                                  where the run overturned (the paper's Fig. 10/11), a plot per record and level
 //   overturning_map...             pulse studies: amplitude against pulse period, each run coloured by its peak
@@ -32,6 +34,7 @@ struct StudyPlots {
 // The document sections the plots appear under.
 extern const char* const kValueSection;
 extern const char* const kTornadoSection;
+extern const char* const kPhysicalTornadoSection;
 extern const char* const kRockingSection;
 extern const char* const kMapSection;
 

@@ -22,6 +22,7 @@
 #include "analytic/closed_forms.hpp"
 #include "analytic/wall.hpp"
 #include "cli/option_values.hpp"
+#include "compare/targets.hpp"
 #include "multibody/engine.hpp"
 #include "tests/table1.hpp"
 
@@ -204,6 +205,41 @@ TEST(CliWall, TableNamesTheEccentricThresholdAndTheCentredHinge) {
     ASSERT_EQ(centred.code, 0) << centred.err;
     EXPECT_EQ(centred.out.find("12e"), std::string::npos) << centred.out;
     EXPECT_NE(centred.out.find("Eq. (12)"), std::string::npos) << centred.out;
+}
+
+// compare's closed-form line names the equation its number is: Eq. (12e) with N off the centre, Eq. (12) without.
+TEST(CliCompare, ClosedFormsLineNamesTheEccentricThreshold) {
+    const std::vector<std::string> base = {"compare", "--engine", "analytic", "--height", "4", "--thickness", "0.4",
+                                           "--hinge", "0.7", "--xi", "0.1"};
+    const CliResult off = run_cli(base + std::vector<std::string>{"--overburden-eccentricity", "1"});
+    ASSERT_EQ(off.code, 0) << off.err;
+    EXPECT_NE(off.out.find("Eq. (12e) threshold (N off the centre: the lower side)"), std::string::npos) << off.out;
+    const CliResult centred = run_cli(base);
+    ASSERT_EQ(centred.code, 0) << centred.err;
+    EXPECT_NE(centred.out.find("Eq. (12) threshold, Eq. (19)"), std::string::npos) << centred.out;
+}
+
+// Rounded corners (docs/model/analytic-core.md, "Rounded corners"): with N at the centre Eq. (12r) and (17r) are the
+// sharp thresholds times (1 - r/b), each taken from the sharp wall's own closed form; r/b = 0 is the output of before,
+// character for character.
+TEST(CliWall, RoundedCornersScaleTheThresholdsByTheFlatShare) {
+    const std::vector<std::string> base = {"wall", "--height", "1.5", "--thickness", "0.11", "--hinge", "0.6", "--xi",
+                                           "0.5"};
+    const Json j = run_json(base + std::vector<std::string>{"--corner-radius", "0.2"});
+    const vssw::VsswGeometry w = vssw::make_vssw(1.5, 0.11, 0.6, 0.5);
+    EXPECT_NEAR(j["threshold_g"].get<double>() / (vssw::eq12_threshold(w) / w.g), 0.8, kRoundoff);
+    EXPECT_NEAR(j["parapet"]["threshold_g"].get<double>() /
+                    (vssw::eq17_parapet_threshold(vssw::make_parapet(1.5, 0.11, 0.5)) / w.g),
+                0.8, kRoundoff);
+    EXPECT_EQ(j["corner_radius"].get<double>(), 0.2);
+    const CliResult table = run_cli(base + std::vector<std::string>{"--corner-radius", "0.2"});
+    for (const char* said : {"Eq. (12r)", "Eq. (17r)", "Eq. (19), sharp corners", "xi and r/b"})
+        EXPECT_NE(table.out.find(said), std::string::npos) << said << "\n" << table.out;
+    for (bool json : {false, true}) {
+        std::vector<std::string> plain = base, zero = base + std::vector<std::string>{"--corner-radius", "0"};
+        if (json) plain.push_back("--json"), zero.push_back("--json");
+        EXPECT_EQ(run_cli(zero).out, run_cli(plain).out);  // must fail if r = 0 changed a character
+    }
 }
 
 TEST(CliWall, RollerLimitIsNullAtAndBelowMidHeight) {
@@ -480,6 +516,15 @@ INSTANTIATE_TEST_SUITE_P(
         bad("HingeAboveOne", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "1.2"}, {"hinge", "1.2"}),
         bad("HingeZero", {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0"}, {"hinge", "got 0"}),
         bad("NegativeXi", with_fig6({"wall", "--xi", "-0.1"}), {"xi", "-0.1"}),
+        bad("CornerRadiusPastHalfTheThickness", with_fig6({"wall", "--corner-radius", "0.6"}),
+            {"corner radius r/b", "[0, 0.5]", "got 0.6"}),
+        bad("CornerRadiusOnTheAnalyticModel",
+            with_fig6({"compare", "--engine", "analytic", "--corner-radius", "0.1"}),
+            {"--engine analytic with --corner-radius", "Eq. 12r"}),
+        bad("CornerRadiusUnderAPulse",
+            with_fig6({"compare", "--engine", "box2d", "--corner-radius", "0.1", "--pulse", "ricker", "--amplitude",
+                       "0.4", "--pulse-period", "0.5"}),
+            {"--corner-radius with --record or --pulse"}),
         bad("EccentricityPastTheCorner",
             with_fig6({"compare", "--engine", "analytic", "--overburden-eccentricity", "1.5"}),
             {"overburden eccentricity e/b", "[-1, 1]", "got 1.5"}),
@@ -497,6 +542,21 @@ INSTANTIATE_TEST_SUITE_P(
             with_fig6({"history", "--pulse", "sine", "--amplitude", "0.3", "--pulse-period", "0.5",
                        "--diaphragm-period", "0.2"}),
             {"cannot follow a flexible diaphragm", "T_d = 0.2 s", "Eq. 9e"}),
+        // compare's rounded corners run without a ground motion, a diaphragm needs one: the pair is refused, and with a
+        // motion the rounded corners are (the analytic reference cannot roll on them).
+        bad("DiaphragmOnARoundedWallWithoutAGroundMotion",
+            with_fig6({"compare", "--engine", "ode", "--corner-radius", "0.1", "--diaphragm-period", "0.2"}),
+            {"--diaphragm-period 0.2", "--pulse or --record"}),
+        bad("DiaphragmOnARoundedWallUnderAPulse",
+            with_fig6({"compare", "--engine", "ode", "--corner-radius", "0.1", "--diaphragm-period", "0.2", "--pulse",
+                       "sine", "--amplitude", "0.3", "--pulse-period", "0.5"}),
+            {"--corner-radius with --record or --pulse"}),
+        bad("ZeroFriction", with_fig6({"compare", "--engine", "analytic", "--friction", "0"}),
+            {"--friction", "> 0", "got '0'"}),
+        bad("FrictionWithAnEmptyHinge", with_fig6({"compare", "--engine", "analytic", "--friction", "0.5,"}),
+            {"--friction", "MU_BASE,MU_HINGE", "got '0.5,'"}),
+        bad("InfiniteFriction", with_fig6({"compare", "--engine", "analytic", "--friction", "0.5,inf"}),
+            {"--friction", "finite", "got '0.5,inf'"}),
         bad("NanHeight", {"wall", "--height", "nan", "--thickness", "0.4", "--hinge", "0.7"}, {"height", "nan"}),
         bad("NonNumericHeight", {"wall", "--height", "abc", "--thickness", "0.4", "--hinge", "0.7"},
             {"--height", "abc"}),
@@ -552,6 +612,27 @@ TEST(CliCompare, AnalyticAgainstItselfHasNoErrorAndKeepsTheContract) {
     EXPECT_TRUE(j["wall_time_s"].is_number());
     EXPECT_TRUE(j["failures"].is_array() && j["failures"].empty());
     EXPECT_TRUE(j["closed_forms"]["threshold_g"].is_number());
+}
+
+// Rounded corners: each engine that rounds its blocks beside Eq. (17r) (a parapet: its runs are short), and the
+// engines' spread; an engine that does not round them refuses the wall, naming why.
+TEST(CliCompare, RoundedCornersReportEachEngineAndTheirSpread) {
+    const std::vector<std::string> wall = {"compare", "--model", "parapet", "--height", "1.2", "--thickness", "0.2",
+                                           "--xi", "0.5", "--corner-radius", "0.1", "--json"};
+    if (!vssw::testing::engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
+    const Json j = run_json(std::vector<std::string>{"compare", "--engine", "box2d"} +
+                            std::vector<std::string>(wall.begin() + 1, wall.end()));
+    const vssw::ParapetGeometry p = vssw::with_corner_radius(vssw::make_parapet(1.2, 0.2, 0.5), 0.1);
+    EXPECT_NEAR(j["closed_forms"]["threshold_g"].get<double>(), vssw::eq17_parapet_threshold(p) / p.g, kRoundoff);
+    ASSERT_EQ(j["engines"].size(), 1u);
+    EXPECT_NEAR(j["engines"][0]["threshold_rel_error"].get<double>(), 0.0, vssw::compare::kThresholdTarget);
+    EXPECT_GT(j["engines"][0]["period"].get<double>(), 0.0);
+    EXPECT_TRUE(j["threshold_spread"].is_null());  // one engine: no spread
+    if (!vssw::testing::engine_available("simbody")) return;
+    const CliResult refused = run_cli(std::vector<std::string>{"compare", "--engine", "simbody"} +
+                                      std::vector<std::string>(wall.begin() + 1, wall.end()));
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_NE(refused.err.find("Simbody does not round its blocks yet ("), std::string::npos) << refused.err;
 }
 
 TEST(CliCompare, UnknownEngineIsBadInputNamingIt) {
@@ -1254,4 +1335,31 @@ TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
     }
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic", "--run-budget", ""},
                      {"--run-budget must be a number, got an empty value"});
+}
+
+// --friction under a pulse: the JSON names the friction, each engine's slips and the model's need and whether it would
+// slide. Table 1 #2 under a 0.35 g sine pulse needs 0.169 at the base (FiniteFriction's wall): at 0.12 Box2D slides
+// before it rocks and the model says it would; without --friction none of these keys is printed.
+TEST(CliCompare, FrictionMakesSlidingAMeasuredResponse) {
+    if (!engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
+    const std::vector<std::string> run = std::vector<std::string>{"compare", "--engine", "analytic,box2d", "--pulse",
+                                                                  "sine", "--amplitude", "0.35", "--pulse-period",
+                                                                  "0.5"} +
+                                         specimen_args(2);
+    const Json j = run_json(run + std::vector<std::string>{"--friction", "0.12,0.3"});
+    EXPECT_EQ(j["friction"]["base"].get<double>(), 0.12);
+    EXPECT_EQ(j["friction"]["hinge"].get<double>(), 0.3);
+    const Json& model = j["runs"][0];
+    EXPECT_GT(model["friction_needed"]["base"].get<double>(), 0.12);
+    EXPECT_TRUE(model["would_slide"]["base"].get<bool>());
+    EXPECT_FALSE(model["would_slide"]["hinge"].get<bool>());
+    const Json& slip = j["runs"][1]["slip"];
+    constexpr double kSlid = 5e-2;  // the default friction's failure limit in b; measured 0.14 b
+    EXPECT_GT(slip["base"]["largest_b"].get<double>(), kSlid);
+    EXPECT_NEAR(slip["base"]["largest_m"].get<double>() / slip["base"]["largest_b"].get<double>(), 0.178, 1e-12);
+    EXPECT_TRUE(slip["slid_before_rocking"].get<bool>());
+    const Json plain = run_json(run);
+    EXPECT_FALSE(plain.contains("friction"));
+    EXPECT_FALSE(plain["runs"][1].contains("slip"));
+    EXPECT_FALSE(plain["runs"][0].contains("would_slide"));
 }

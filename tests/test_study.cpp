@@ -24,8 +24,11 @@
 #include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
 #include "multibody/engine.hpp"
+#include "study/effects.hpp"
 #include "study/merge.hpp"
 #include "study/outputs.hpp"
+#include "study/study_data.hpp"
+#include "study/study_plots.hpp"
 #include "validation/suite_file.hpp"
 #include "tests/engine_available.hpp"
 #include "tests/study_fixtures.hpp"
@@ -215,6 +218,12 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {"[wall]\nalpha1 = 0.1\nalpha2 = 0.2\nR1 = 1.5\nhinge = 0.6\n" + threshold, "fix the hinge"},
         {"[wall]\nspecimen = 1e10\n" + threshold, "must be a Table 1 specimen number"},
         {"[settings.analytic]\ndt = 1e-3\n" + wall + threshold, "no step or iterations to set"},
+        {"one_at_a_time = [\"xi\"]\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\nxi = [0, 0.1]\n" + threshold,
+         "one_at_a_time: must list two or more wall or excitation keys"},
+        {"one_at_a_time = [\"speed\", \"xi\"]\n" + wall + threshold, "'speed' is not a wall or excitation key"},
+        {"one_at_a_time = [\"xi\", \"hinge\"]\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\nxi = [0, 0.1]\n" +
+             threshold,
+         "one_at_a_time: 'hinge' is not given as a list"},
         {"[settings.analytic]\nrtol = 1e-9\n[[part]]\n[part.wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
          "[part.excitation]\nkind = \"threshold\"\n[part.settings.analytic]\nrtol = 1e-8\n",
          "part[1].settings.analytic.rtol: given in the study's [settings.analytic] too"},
@@ -244,6 +253,58 @@ TEST(StudyGrid, CaseIdsArePositionsAndAParapetHasNoHingeToVary) {
     EXPECT_DOUBLE_EQ(c.thickness, 0.4);
     EXPECT_TRUE(std::isnan(c.hinge));
     EXPECT_EQ(grid.varied_parameters(), (std::vector<std::string>{"model", "thickness", "hinge"}));
+}
+
+// one_at_a_time: a baseline (every such key at its first level) and one case per further level of each, crossed with
+// the rest of the grid; ids stay positions in the whole product. A product would give 2 x 3 x 3 = 18 cases.
+TEST(StudyGrid, KeysVariedOneAtATimeGiveABaselineAndOneCasePerFurtherLevel) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "one_at_a_time = [\"overburden_eccentricity\", \"xi\"]\n[wall]\nheight = 4\n"
+                                  "thickness = [0.2, 0.4]\nhinge = 0.7\nxi = [0.1, 0.2, 0.3]\n"
+                                  "overburden_eccentricity = [0, 0.5, 1]\n[excitation]\nkind = \"threshold\"\n"));
+    EXPECT_EQ(grid.product_size(), 18u);
+    ASSERT_EQ(grid.case_ids().size(), 10u);  // 2 thicknesses x (1 + 2 + 2)
+    std::set<std::pair<double, double>> seen;
+    for (int id : grid.case_ids()) {
+        const study::CaseSpec c = grid.make_case(id);
+        const double e = c.scene.overburden_eccentricity();
+        EXPECT_TRUE(c.xi == 0.1 || e == 0.0) << "case " << id << " leaves the baseline in both keys";
+        seen.insert({c.xi, e});
+    }
+    const std::set<std::pair<double, double>> expected = {{0.1, 0.0}, {0.2, 0.0}, {0.3, 0.0}, {0.1, 0.5}, {0.1, 1.0}};
+    EXPECT_EQ(seen, expected);
+}
+
+// The pairs of a one-at-a-time study are its cases and their baseline: the parapet's threshold with N at the pivot's
+// corner over N at the centre is Eq. (17e) over Eq. (17), 1 / (1 + xi) (xi = 0.5: -1/3), whatever else varies alone.
+TEST(StudyMeasure, EffectsOfAOneAtATimeStudyPairEachCaseWithItsBaseline) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_g\"]\none_at_a_time = [\"overburden_eccentricity\", "
+                                  "\"density\"]\n[wall]\nmodel = \"parapet\"\nheight = 1.2\nthickness = 0.2\n"
+                                  "xi = 0.5\ndensity = [1800, 2200]\noverburden_eccentricity = [0.0, 1.0]\n"
+                                  "[excitation]\nkind = \"threshold\"\n"));
+    (void)run_into(grid, dir / "out", 2);
+    const study::StudyData d = study::read_study_data(dir / "out");
+    const std::vector<study::Effect> effects = study::parameter_effects(d);
+    const auto of = [&](const std::string& parameter) {
+        const auto it = std::find_if(effects.begin(), effects.end(),
+                                     [&](const study::Effect& e) { return e.parameter == parameter; });
+        return it == effects.end() ? study::Effect{} : *it;
+    };
+    const study::Effect ecc = of("overburden_eccentricity"), density = of("density");
+    EXPECT_TRUE(ecc.physical);
+    EXPECT_FALSE(density.physical);
+    EXPECT_EQ(ecc.pairs, 1);
+    EXPECT_NEAR(ecc.median, 1.0 / 1.5 - 1.0, kThresholdBracket);
+    EXPECT_EQ(density.pairs, 1);
+    EXPECT_NEAR(density.median, 0.0, kThresholdBracket);  // the threshold does not depend on the density (Eq. 17)
+    // Its tornado chart is of the paper's physical assumptions, and it is the only one: no model assumption varies.
+    const study::StudyPlots plots = study::study_plot_scripts(d, effects);
+    std::vector<std::string> tornadoes;
+    for (const io::PlotScript& s : plots.scripts)
+        if (s.plot.name.rfind("tornado", 0) == 0) tornadoes.push_back(s.plot.name + " in " + s.plot.section);
+    EXPECT_EQ(tornadoes, (std::vector<std::string>{std::string("tornado_physical_threshold_g in ") +
+                                                   study::kPhysicalTornadoSection}));
 }
 
 TEST(StudyGrid, ThePapersKinematicsWithAUnilateralRollerIsNotAModel) {
@@ -338,6 +399,36 @@ TEST(StudyMeasure, DiaphragmOnAParapetIsRefused) {
     EXPECT_THROW(Grid(study_of(dir, "metrics = [\"threshold_g\"]\n[wall]\nmodel = \"parapet\"\nheight = 1.2\n"
                                     "thickness = 0.2\ndiaphragm_period = 0.2\n[excitation]\nkind = \"threshold\"\n")),
                  InputError);
+}
+
+// corner_radius is a wall axis: an engine that rounds its blocks lifts the parapet at Eq. (17r), (1 - r/b) times the
+// sharp threshold (1 + xi) b/h; at r/b 0.2 the sharp value would be 25 % off, and r/b 0 must give it.
+TEST(StudyMeasure, CornerRadiusIsAWallAxis) {
+    if (!vssw::testing::engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
+    constexpr double kEngineThreshold = 5e-3;  // the project's threshold target (compare/targets.hpp)
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_g\"]\nengines = [\"box2d\"]\n[wall]\nmodel = \"parapet\"\n"
+                                  "height = 1.2\nthickness = 0.2\nxi = 0.5\ncorner_radius = [0.0, 0.2]\n"
+                                  "[excitation]\nkind = \"threshold\"\n"));
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const double sharp = 1.5 * 0.2 / 1.2;
+    EXPECT_NEAR(value_of(t, "threshold_g", {{"corner_radius", "0"}}) / sharp - 1.0, 0.0, kEngineThreshold);
+    EXPECT_NEAR(value_of(t, "threshold_g", {{"corner_radius", "0.2"}}) / (0.8 * sharp) - 1.0, 0.0, kEngineThreshold);
+}
+
+// Friction as a wall axis: each case's scene has it, and the analytic model reports the friction it needs, the same at
+// every level, as is its motion (the model cannot slide).
+TEST(StudyMeasure, FrictionIsAWallAxis) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"base_friction_needed\", \"peak_rotation\"]\nengines = [\"analytic\"]\n"
+                                  "[wall]\nspecimen = 2\nfriction = [0.1, 0.3]\n[excitation]\nkind = \"pulse\"\n"
+                                  "shape = \"sine\"\namplitude = 0.35\npulse_period = 0.5\n"));
+    const ResultsTable t = run_into(grid, dir / "out", 2);
+    const double low = value_of(t, "base_friction_needed", {{"friction", "0.1"}});
+    EXPECT_GT(low, 0.1);  // 0.169 measured: the pulse asks more than 0.1 and less than 0.3 of the base
+    EXPECT_LT(low, 0.3);
+    EXPECT_EQ(value_of(t, "base_friction_needed", {{"friction", "0.3"}}), low);
+    EXPECT_EQ(value_of(t, "peak_rotation", {{"friction", "0.3"}}), value_of(t, "peak_rotation", {{"friction", "0.1"}}));
 }
 
 // A free vibration's restitution is the run's impact law (Eq. 19, the whole mechanism's) and its period the model's.

@@ -18,6 +18,7 @@
 #include "study/spec.hpp"
 #include "study/study_data.hpp"
 #include "validation/earthquake_plots.hpp"
+#include "validation/study_engines.hpp"
 
 namespace vssw::validation {
 namespace {
@@ -25,30 +26,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kShippedStudy = "ensemble-report.toml";
 constexpr const char* kShippedFullStudy = "ensemble-report-full.toml";
-
-// The study file with its engines replaced by the analytic model (the reference) and the report's; the settings it
-// gives engines that are not run are dropped (the report chooses the engines, at the file's settings for those it
-// names).
-study::StudySpec with_engines(const std::string& file, const std::vector<std::string>& engines) {
-    const study::StudySpec read = study::read_study_file(file);
-    io::Json doc = read.as_read;
-    io::Json names = io::Json::array({"analytic"});
-    for (const std::string& e : engines)
-        if (e != "analytic") names.push_back(e);
-    doc["engines"] = names;
-    const auto prune = [&names](io::Json& table) {
-        if (!table.contains("settings") || !table["settings"].is_object()) return;
-        for (auto it = table["settings"].begin(); it != table["settings"].end();)
-            it = std::find(names.begin(), names.end(), it.key()) == names.end() ? table["settings"].erase(it)
-                                                                                 : std::next(it);
-    };
-    prune(doc);
-    if (doc.contains("part") && doc["part"].is_array())
-        for (io::Json& part : doc["part"]) prune(part);
-    study::StudySpec spec = study::study_from_json(nlohmann::json::parse(io::dump_json(doc)), file, read.base_dir);
-    spec.path = read.path;
-    return spec;
-}
 
 // What the report can judge: one wall, stripes of at least two records that measure overturning and peaks, one run
 // per engine (a verdict per engine), and the reference among the analytic model's assumption sets.

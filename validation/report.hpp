@@ -38,13 +38,15 @@ struct ReportMeta {
     std::string plots_note;  // why there are no plots (or which failed), empty when all were made
 };
 
-struct EarthquakePart;  // validation/earthquake.hpp
+struct EarthquakePart;   // validation/earthquake.hpp
+struct AssumptionsPart;  // validation/assumptions_part.hpp
 
 struct ReportInput {
     const Suite& suite;  // labels and kinds of the cases; may hold no cases (kinds then come from the ids)
     const SuiteResults& results;
     ReportMeta meta;
     const EarthquakePart* earthquake = nullptr;  // the record ensemble's part, when it ran
+    const AssumptionsPart* relaxations = nullptr;  // the paper's assumptions relaxed, when it ran
 };
 
 // The kind of a case: from the suite when it lists the case, else from the shape of its id (validation/suite.hpp).

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "multibody/host/contact_schemes.hpp"
+#include "validation/assumptions_part.hpp"
 #include "validation/earthquake.hpp"
 
 namespace vssw::validation {
@@ -186,6 +187,7 @@ io::Json results_json(const ReportInput& in) {
             {"step_study", steps},
             {"traces", traces},
             {"earthquake", in.earthquake ? earthquake_json(*in.earthquake) : io::Json(nullptr)},
+            {"relaxations", in.relaxations ? assumptions_json(*in.relaxations) : io::Json(nullptr)},
             {"plots", {{"made", in.meta.plots_made}, {"note", in.meta.plots_note}}},
             {"wall_time_s", io::finite_or_null(res.wall_time_s)},
             {"threads", res.threads}};

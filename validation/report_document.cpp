@@ -10,6 +10,7 @@
 #include "io/text.hpp"
 #include "multibody/host/contact_schemes.hpp"
 #include "multibody/engine.hpp"
+#include "validation/assumptions_part.hpp"
 #include "validation/earthquake.hpp"
 
 namespace vssw::validation {
@@ -449,6 +450,8 @@ io::Document build_document(const ReportInput& in, const io::PlotResult& plots, 
     add_findings(b, in);
     if (in.earthquake)
         for (io::DocBlock& block : earthquake_section(*in.earthquake)) b.push_back(std::move(block));
+    if (in.relaxations)
+        for (io::DocBlock& block : assumptions_section(*in.relaxations)) b.push_back(std::move(block));
     add_failures(b, in);
     add_model_warnings(b, in);
     add_metric_tables(b, in);

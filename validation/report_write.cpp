@@ -49,7 +49,7 @@ ReportFiles write_suite_report(const fs::path& dir, const Suite& suite, const Su
     }
     meta.plots_made = options.plots && plots.all_made;
     meta.plots_note = options.plots ? plots.note : "not made (--no-plots)";
-    const ReportInput in{suite, results, meta, options.earthquake};
+    const ReportInput in{suite, results, meta, options.earthquake, options.relaxations};
 
     io::write_file(files.json, [&](std::ostream& out) { out << io::dump_json(results_json(in), 2) << '\n'; });
     io::write_file(dir / "metrics.csv", [&](std::ostream& out) { write_metrics_csv(out, results); });

@@ -19,6 +19,8 @@ struct ReportOptions {
     std::string bench_dir;
     // The earthquake part (validation/earthquake.hpp), already run into the folder's earthquake/; nullptr: none.
     const EarthquakePart* earthquake = nullptr;
+    // The relaxations of the paper's assumptions (validation/assumptions_part.hpp), run into relaxations/; nullptr: none.
+    const AssumptionsPart* relaxations = nullptr;
 };
 
 struct ReportFiles {

@@ -7,6 +7,9 @@
 //  - ground: a static body (kinematic with moving_supports = 1) with one edge along y = 0 (y = -2 skin with a skin);
 //  - lower and upper blocks: dynamic bodies with one box polygon each, (b, h1) and (b, h2) (one (b, h) for a
 //    parapet); density m / (4 b h), so Box2D's mass and central inertia are the block's, m (b^2 + h^2) / 3;
+//  - with a corner radius r (WallScene::corner_radius, kit/rounded_corners.hpp) each block is a rounded box: the core
+//    polygon (b - r, h_i - r) with m_radius = r, Box2D's own rounded polygon (b2MakeRoundedBox of Box2D 3), its outline
+//    the rectangle's with every corner an exact arc; its mass data set to the rectangle's (Box2D leaves the skin out);
 //  - every polygon and the edge with m_radius = 0 (unless the skin setting puts it back). Box2D gives polygons and edges a skin of b2_polygonRadius = 1 cm
 //    by default: the block then rolls on rounded corners, which raises its effective I_O by 2 r h / (4/3 R^2) and
 //    the period by 0.37 % (measured on the 4 x 0.4 m parapet: +0.30 % at 1 ms against -0.072 % with radius 0;
@@ -127,10 +130,22 @@ b2Vec2 vec(double x, double y) { return b2Vec2(static_cast<float>(x), static_cas
 // A point given in a body's frame, in world coordinates.
 b2Vec2 world_point(const b2Body& body, double lx, double ly) { return body.GetWorldPoint(vec(lx, ly)); }
 
+// The fixtures' friction: Box2D mixes two fixtures' coefficients as sqrt(mu1 mu2) (b2MixFriction). One coefficient
+// for all three gives itself at both contacts (the default scene, as before); a hinge of its own takes the lower
+// block at 1, the ground at mu_base^2 and the upper block at mu_hinge^2, which mix to mu_base and mu_hinge.
+struct Frictions {
+    double ground, lower, upper;
+};
+Frictions fixture_frictions(const WallScene& scene) {
+    if (!scene.hinge_friction) return {scene.friction, scene.friction, scene.friction};
+    return {scene.base_mu() * scene.base_mu(), 1.0, scene.hinge_mu() * scene.hinge_mu()};
+}
+
 class Box2dScene {
 public:
     Box2dScene(const WallScene& scene, const Knobs& knobs, double theta0)
-        : world_(vec(0.0, -scene.gravity())), knobs_(knobs), sizes_(block_sizes(scene)) {
+        : world_(vec(0.0, -scene.gravity())), knobs_(knobs), sizes_(block_sizes(scene)),
+          corner_radius_(scene.corner_radius()) {
         world_.SetAllowSleeping(false);
         world_.SetWarmStarting(knobs.warm_starting);
         world_.SetContinuousPhysics(knobs.continuous);
@@ -147,7 +162,8 @@ public:
         const double y_edge = -2.0 * knobs.skin;
         edge.SetTwoSided(vec(-half_width, y_edge), vec(half_width, y_edge));
         edge.m_radius = static_cast<float>(knobs.skin);  // 0 by default: no skin (see the top of the file)
-        add_fixture(*ground_, edge, 0.0, scene.friction, kGroundBits, kBlockBits);
+        const Frictions mu = fixture_frictions(scene);
+        add_fixture(*ground_, edge, 0.0, mu.ground, kGroundBits, kBlockBits);
 
         if (scene.vssw && !scene.diaphragm.is_rigid()) {  // a flexible top support: the roller's own carrier
             b2BodyDef carrier_def;
@@ -155,9 +171,9 @@ public:
             carrier_ = world_.CreateBody(&carrier_def);
         }
         const WallPose pose = pose_at(scene, theta0);
-        lower_ = add_block(sizes_.h_lower, sizes_.m_lower, pose.lower, scene.friction);
+        lower_ = add_block(sizes_.h_lower, sizes_.m_lower, pose.lower, mu.lower);
         if (scene.vssw) {
-            upper_ = add_block(sizes_.h_upper, sizes_.m_upper, pose.upper, scene.friction);
+            upper_ = add_block(sizes_.h_upper, sizes_.m_upper, pose.upper, mu.upper);
             add_roller(2.0 * h);
         }
     }
@@ -205,9 +221,21 @@ private:
         def.allowSleep = false;
         b2Body* body = world_.CreateBody(&def);
         b2PolygonShape box;
+        const double density = mass_per_depth * kDepth / (4.0 * sizes_.b * half_h);
+        if (corner_radius_ > 0.0) {  // a rounded box: the core r inside each face, its skin r (top of the file)
+            box.SetAsBox(static_cast<float>(sizes_.b - corner_radius_), static_cast<float>(half_h - corner_radius_));
+            box.m_radius = static_cast<float>(corner_radius_);
+            add_fixture(*body, box, density, friction, kBlockBits, kGroundBits | kBlockBits);
+            // Box2D's polygon mass leaves the skin out: the rectangle's mass and inertia, set (rounded_corners.hpp).
+            b2MassData mass{};
+            mass.mass = static_cast<float>(mass_per_depth * kDepth);
+            mass.center = vec(0.0, 0.0);
+            mass.I = static_cast<float>(mass_per_depth * kDepth * (sizes_.b * sizes_.b + half_h * half_h) / 3.0);
+            body->SetMassData(&mass);
+            return body;
+        }
         box.SetAsBox(static_cast<float>(sizes_.b), static_cast<float>(half_h));
         box.m_radius = static_cast<float>(knobs_.skin);  // 0 by default: no skin (see the top of the file)
-        const double density = mass_per_depth * kDepth / (4.0 * sizes_.b * half_h);
         add_fixture(*body, box, density, friction, kBlockBits, kGroundBits | kBlockBits);
         return body;
     }
@@ -254,6 +282,7 @@ private:
     b2World world_;
     Knobs knobs_;
     BlockSizes sizes_;
+    double corner_radius_;  // r [m] of every block corner (0: sharp boxes)
     b2Body* ground_ = nullptr;
     b2Body* carrier_ = nullptr;  // a flexible top support only
     b2Body* lower_ = nullptr;
@@ -356,6 +385,8 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
     // energy in): the setting is for the single block (parapet_only), where it shows what Box2D's default does to
     // the period.
     require_settings_fit_wall("Box2D", settings, setting_table(), scene);
+    if (knobs.skin > 0.0 && scene.corner_radius() > 0.0)
+        throw InputError("Box2D: the setting skin and a corner radius both set the blocks' polygon radius: give one");
     Box2dScene w(scene, knobs, ex.theta0);
     Box2dStepping stepping(w, scene, knobs);
     RunMonitor monitor("Box2D", scene, ex, settings.dt, knobs.limits);

@@ -10,6 +10,9 @@
 //    speculative row, so every corner that closes within a step takes its share of an impact in that step. A contact
 //    guide surface cannot be the roller: below the held corner the upper block's face leans outwards (it turns about
 //    that corner), so any guide surface covering the heights the corner rises through is penetrated by the face;
+//  - rounded corners (corner radius r > 0): the same manifolds from arcs instead of corners (corner_contacts.hpp:
+//    each base arc's lowest point on the ground, each pair of hinge arcs by their centres' distance less 2 r); the
+//    boxes only give the masses and inertias, the rectangles';
 //  - no broadphase, narrowphase, islands or sleeping (planar_world.hpp);
 //  - N: a force at the centre of the top face, only when xi > 0;
 //  - ground motion: by default pseudo-forces -m a_h(t) at the centres of mass on fixed supports; with the setting
@@ -151,7 +154,8 @@ public:
         if (scene.vssw) upper_ = add_block(sizes_.b, sizes_.h_upper, sizes_.m_upper);
         set_pose(pose_at(scene, theta0));
         contacts_ = std::make_unique<CornerContacts>(ground, *lower_, upper_, sizes_.b, sizes_.h_lower,
-                                                     sizes_.h_upper, scene.friction, carrier);
+                                                     sizes_.h_upper, scene.base_mu(), scene.hinge_mu(),
+                                                     scene.corner_radius(), carrier);
     }
 
     // One step of dt (forces applied before it act during it).

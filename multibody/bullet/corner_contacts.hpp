@@ -22,13 +22,16 @@ namespace vssw::multibody {
 class CornerContacts {
 public:
     // ground: the static (or kinematic) box whose top face is y = 0; upper may be null (a parapet). b: half width;
-    // h_lower, h_upper: half heights; friction at the ground and the hinge (the roller is frictionless). roller: the
-    // body whose x the guides' lines follow, the ground's unless a flexible top support carries them (its origin's x
-    // is then the lines' offset, as the ground's is).
+    // h_lower, h_upper: half heights; friction at the ground and at the hinge (the roller is frictionless): each
+    // point's m_combinedFriction, Bullet's Coulomb bound on its two friction rows, set here rather than mixed.
+    // corner_radius: r of every block corner (kit/rounded_corners.hpp), 0 for the sharp blocks. roller: the body whose
+    // x the guides' lines follow, the ground's unless a flexible top support carries them (its origin's x is then the
+    // lines' offset, as the ground's is); the roller holds the nominal top corners, rounded or not.
     CornerContacts(btRigidBody& ground, btRigidBody& lower, btRigidBody* upper, double b, double h_lower,
-                   double h_upper, double friction, btRigidBody* roller = nullptr)
+                   double h_upper, double friction, double hinge_friction, double corner_radius = 0.0,
+                   btRigidBody* roller = nullptr)
         : lower_(lower), upper_(upper), roller_(roller ? *roller : ground), b_(b), h_lower_(h_lower),
-          h_upper_(h_upper), friction_(friction) {
+          h_upper_(h_upper), friction_(friction), hinge_friction_(hinge_friction), r_(corner_radius) {
         manifolds_[0] = make(lower, ground);
         if (upper) {
             manifolds_[1] = make(*upper, lower);
@@ -39,6 +42,10 @@ public:
     // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground, or with the
     // flexible top support's carrier).
     void update() {
+        if (r_ > 0.0) {
+            update_rounded();
+            return;
+        }
         const double x0 = roller_.getWorldTransform().getOrigin().x();
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
@@ -55,7 +62,7 @@ public:
         const btVector3 face = tl * btVector3(0, h_lower_, 0);
         for (double side : {-1.0, 1.0}) {
             const btVector3 corner = tu * btVector3(side * b_, -h_upper_, 0);
-            add(hinge, corner, corner - n * (corner - face).dot(n), n, friction_);
+            add(hinge, corner, corner - n * (corner - face).dot(n), n, hinge_friction_);
         }
         btPersistentManifold& roller = *manifolds_[2];
         roller.clearManifold();
@@ -86,6 +93,43 @@ public:
     }
 
 private:
+    // Rounded corners: each corner is an arc of radius r about a centre r inside both faces. The base: per side the
+    // lowest point of the arc's circle, or, when the block has turned that side up (the circle's lowest point is then
+    // inside the block, past the arc's end), the arc's end on the flat base, the flat part's corner; at rest both are
+    // the flat's end (b - r, 0). The hinge: per side the two arcs' circles (the lower block's top one, the upper
+    // block's bottom one), normal along their centres' line, distance that line's length less 2 r: at rest the flats'
+    // common end, then the arcs rolling on each other; the circles lie inside the blocks, so the distance never
+    // reports an overlap the outlines do not have. The roller holds the nominal top corners, as for sharp blocks.
+    void update_rounded() {
+        const double x0 = roller_.getWorldTransform().getOrigin().x(), in = b_ - r_;
+        btPersistentManifold& base = *manifolds_[0];
+        base.clearManifold();
+        const btTransform& tl = lower_.getWorldTransform();
+        for (double side : {-1.0, 1.0}) {
+            const btVector3 centre = tl * btVector3(side * in, -(h_lower_ - r_), 0);
+            const btVector3 down = tl.getBasis().transpose() * btVector3(0, -1, 0);  // the world's down, block frame
+            const btVector3 lowest = side * down.x() >= 0.0 ? centre - btVector3(0, r_, 0)
+                                                            : tl * btVector3(side * in, -h_lower_, 0);
+            add(base, lowest, btVector3(lowest.x(), 0, 0), btVector3(0, 1, 0), friction_);
+        }
+        if (!upper_) return;
+        btPersistentManifold& hinge = *manifolds_[1];
+        hinge.clearManifold();
+        const btTransform& tu = upper_->getWorldTransform();
+        for (double side : {-1.0, 1.0}) {
+            const btVector3 c_lower = tl * btVector3(side * in, h_lower_ - r_, 0);
+            const btVector3 c_upper = tu * btVector3(side * in, -(h_upper_ - r_), 0);
+            const btVector3 n = (c_upper - c_lower).normalized();  // on the lower block, towards the upper
+            add(hinge, c_upper - n * r_, c_lower + n * r_, n, hinge_friction_);
+        }
+        btPersistentManifold& roller = *manifolds_[2];
+        roller.clearManifold();
+        for (double side : {-1.0, 1.0}) {
+            const btVector3 corner = tu * btVector3(side * b_, h_upper_, 0);
+            add(roller, corner, btVector3(x0 + side * b_, corner.y(), 0), btVector3(-side, 0, 0), 0.0);
+        }
+    }
+
     std::unique_ptr<btPersistentManifold> make(btRigidBody& a, btRigidBody& b) {
         constexpr double kEverywhere = 1e30;  // every point written is solved: the manifold filters none
         auto m = std::make_unique<btPersistentManifold>(&a, &b, 0, kEverywhere, kEverywhere);
@@ -111,7 +155,8 @@ private:
     btRigidBody& lower_;
     btRigidBody* upper_;
     btRigidBody& roller_;  // what the guides' lines follow: the ground, or a flexible top support's carrier
-    double b_, h_lower_, h_upper_, friction_;
+    double b_, h_lower_, h_upper_, friction_, hinge_friction_;
+    double r_;  // the corners' radius (0: sharp)
     std::array<std::unique_ptr<btPersistentManifold>, 3> manifolds_{};
     std::array<btPersistentManifold*, 3> raw_{};
     int count_ = 0;

@@ -16,6 +16,9 @@
 //    the contact holds the corner itself on x <= +b (right) or x >= -b (left), y free. The force is horizontal through
 //    the sphere's centre, the corner: the same line of action as a contact at the corner. A guide cannot meet the
 //    upper block's box itself (below the held corner the face leans outwards: docs/engines.md "Bullet");
+//  - rounded corners (corner radius r > 0): each block's box is its flat part, b - r wide, with capsules of radius r
+//    along the depth at the arcs' centres (add_rounding): the base capsules meet the ground, each top capsule of the
+//    lower block the bottom capsule of the upper block on its side; masses and inertias stay the rectangles';
 //  - N: an external force at the centre of the top face each step (DART clears external forces after each step),
 //    only when xi > 0; ground motion: the world's gravity (-a_h(t), -g) each step, a_h at the step's midpoint (a
 //    uniform pseudo-force -m a_h on every block), or (moving_supports = 1) the ground and the guides moving;
@@ -30,6 +33,8 @@
 // of make_engine() is a forked child anyway).
 #include "multibody/dart/dart_engine.hpp"
 
+#include <algorithm>
+
 #include <dart/collision/CollisionFilter.hpp>
 #include <dart/collision/CollisionObject.hpp>
 #include <dart/collision/dart/DARTCollisionDetector.hpp>
@@ -39,6 +44,7 @@
 #include <dart/constraint/ContactConstraint.hpp>
 #include <dart/dynamics/BodyNode.hpp>
 #include <dart/dynamics/BoxShape.hpp>
+#include <dart/dynamics/CapsuleShape.hpp>
 #include <dart/dynamics/PlanarJoint.hpp>
 #include <dart/dynamics/PrismaticJoint.hpp>
 #include <dart/dynamics/ShapeNode.hpp>
@@ -48,6 +54,7 @@
 #include <dart/simulation/World.hpp>
 
 #include <cmath>
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -167,7 +174,7 @@ dd::ShapeNode* add_shape(dd::BodyNode* body, const dd::ShapePtr& shape, const Ve
 class DartScene {
 public:
     DartScene(const WallScene& scene, const Knobs& knobs, double theta0, double dt)
-        : sizes_(block_sizes(scene)), g_(scene.gravity()) {
+        : sizes_(block_sizes(scene)), corner_radius_(scene.corner_radius()), g_(scene.gravity()) {
         world_ = dart::simulation::World::create("vssw");
         world_->setTimeStep(dt);
         world_->setGravity(Vector3d(0.0, -g_, 0.0));
@@ -191,15 +198,28 @@ public:
         }
         dd::ShapeNode* ground_box = add_shape(
             ground_body_, std::make_shared<dd::BoxShape>(Vector3d(2.0 * half_width, 2.0 * h, 4.0 * kDepth)),
-            Vector3d(0.0, -h, 0.0), scene.friction);
+            Vector3d(0.0, -h, 0.0), scene.base_mu());
 
         dd::ShapeNode* lower_box = nullptr;
-        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, scene.friction, lower_box);
+        // DART 6 takes the smaller of two shapes' coefficients: the lower block carries the larger of the base's and
+        // the hinge's, so that the ground's sets the base's and the upper block's the hinge's.
+        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, std::max(scene.base_mu(), scene.hinge_mu()),
+                           lower_box);
         filter->allow(ground_box, lower_box);
+        const double rc = scene.corner_radius();
+        if (rc > 0.0)  // the base arcs (see add_rounding)
+            for (dd::ShapeNode* arc : add_rounding(lower_, sizes_.h_lower, rc, std::max(scene.base_mu(), scene.hinge_mu()), -1.0))
+                filter->allow(ground_box, arc);
         if (scene.vssw) {
             dd::ShapeNode* upper_box = nullptr;
-            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.friction, upper_box);
+            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.hinge_mu(), upper_box);
             filter->allow(lower_box, upper_box);
+            if (rc > 0.0) {  // the hinge's arcs, each rolling on the one of its side
+                const auto lower_top =
+                    add_rounding(lower_, sizes_.h_lower, rc, std::max(scene.base_mu(), scene.hinge_mu()), 1.0);
+                const auto upper_bottom = add_rounding(upper_, sizes_.h_upper, rc, scene.hinge_mu(), -1.0);
+                for (std::size_t i = 0; i < lower_top.size(); ++i) filter->allow(lower_top[i], upper_bottom[i]);
+            }
             // A flexible top support: the guides on a skeleton of their own, slid at the ground's velocity plus
             // u_d's (docs/model/top-support.md), kinematic as the moving ground is.
             dd::BodyNode* guide_body = ground_body_;
@@ -263,9 +283,22 @@ private:
         auto box = std::make_shared<dd::BoxShape>(Vector3d(2.0 * sizes_.b, 2.0 * half_h, kDepth));
         const double m = mass_per_depth * kDepth;
         body->setInertia(dd::Inertia(m, Vector3d::Zero(), box->computeInertia(m)));
+        if (corner_radius_ > 0.0)  // rounded: the box is the flat part, b - r wide; the inertia stays the rectangle's
+            box = std::make_shared<dd::BoxShape>(Vector3d(2.0 * (sizes_.b - corner_radius_), 2.0 * half_h, kDepth));
         box_node = add_shape(body, box, Vector3d::Zero(), friction);
         world_->addSkeleton(skeleton);
         return body;
+    }
+
+    // Rounded corners (kit/rounded_corners.hpp): capsules of radius r along the depth (DART's capsule axis, z) at the
+    // arcs' centres of one face (end -1: the bottom, +1: the top), left then right; no mass of their own (the body's
+    // inertia is set, the rectangle's). With the box b - r wide they make the block's rounded outline.
+    std::vector<dd::ShapeNode*> add_rounding(dd::BodyNode* body, double half_h, double r, double friction, double end) {
+        std::vector<dd::ShapeNode*> arcs;
+        for (double side : {-1.0, 1.0})
+            arcs.push_back(add_shape(body, std::make_shared<dd::CapsuleShape>(r, kDepth),
+                                     Vector3d(side * (sizes_.b - r), end * (half_h - r), 0.0), friction));
+        return arcs;
     }
 
     // q = (x, y, counter-clockwise angle), checked against the transform DART derives from it: a plane or sign
@@ -283,6 +316,7 @@ private:
     }
 
     BlockSizes sizes_;
+    double corner_radius_;  // r [m] of every block corner (0: sharp boxes)
     double g_;
     dart::simulation::WorldPtr world_;
     dd::BodyNode* ground_body_ = nullptr;

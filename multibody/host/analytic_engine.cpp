@@ -149,6 +149,20 @@ Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& ex
     located.energy_balance_error = r.energy_balance_error;
     located.supports_computed = r.supports.computed;
     located.roller_tension_at = r.supports.roller_tension_at;
+    if (r.supports.computed) {
+        located.base_friction_needed = r.supports.base_friction;
+        located.hinge_friction_needed = r.supports.hinge_friction;
+    }
+    // The user's friction: the model cannot slide, so it says where it would (docs/model/analytic-core.md "Finite
+    // friction").
+    if (scene.slip_measured)
+        for (const std::string& where : would_slide_at(located, scene)) {
+            const bool base = where == "base";
+            out.warnings.push_back(fmt::format(
+                "the model would slide: the {} needs a friction coefficient of {:.3g}, above the given {:g}", where,
+                base ? located.base_friction_needed : located.hinge_friction_needed,
+                base ? scene.base_mu() : scene.hinge_mu()));
+        }
     out.located = located;
     out.samples.reserve(r.samples.size());
     const double top_at_rest = model->load_height(0.0);
@@ -220,6 +234,14 @@ EngineSettings analytic_settings(const AnalyticAssumptions& assumptions) {
     EngineSettings s = AnalyticEngine().default_settings();
     set_assumptions(s, assumptions);
     return s;
+}
+
+std::vector<std::string> would_slide_at(const LocatedEvents& located, const WallScene& scene) {
+    std::vector<std::string> at;
+    if (!located.supports_computed) return at;
+    if (located.base_friction_needed > scene.base_mu()) at.emplace_back("base");
+    if (scene.vssw && located.hinge_friction_needed > scene.hinge_mu()) at.emplace_back("hinge");
+    return at;
 }
 
 }  // namespace vssw::multibody

@@ -71,4 +71,9 @@ AnalyticAssumptions read_assumptions(const EngineSettings& settings);
 // assumptions' knobs set.
 EngineSettings analytic_settings(const Assumptions& assumptions);
 
+// The contacts at which the analytic model's run needed more friction than the scene's given one (WallScene::
+// slip_measured): "base", "hinge", in that order; none when its supports were not computed (a parapet, a threshold
+// trial). The model cannot slide: it runs as before and says that it would have (docs/model/analytic-core.md).
+std::vector<std::string> would_slide_at(const LocatedEvents& located, const WallScene& scene);
+
 }  // namespace vssw::multibody

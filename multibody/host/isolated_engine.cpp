@@ -89,6 +89,41 @@ private:
     std::unique_ptr<Engine> inner_;
 };
 
+void put_time(std::string& out, const std::optional<double>& t) {
+    put(out, t.has_value());
+    put(out, t.value_or(0.0));
+}
+
+std::optional<double> read_time(Reader& r) {
+    const bool has = r.get<bool>();
+    const double t = r.get<double>();
+    return has ? std::optional(t) : std::nullopt;
+}
+
+void append_slip(const std::optional<SlipMeasures>& slip, std::string& out) {
+    put(out, slip.has_value());
+    if (!slip) return;
+    for (const double v : {slip->base_largest, slip->base_residual, slip->hinge_largest, slip->hinge_residual, slip->b})
+        put(out, v);
+    put_time(out, slip->t_first_slip);
+    put_time(out, slip->t_first_lift);
+    put(out, slip->slid_off.has_value());
+    put_text(out, slip->slid_off.value_or(""));
+}
+
+std::optional<SlipMeasures> read_slip(Reader& r) {
+    if (!r.get<bool>()) return std::nullopt;
+    SlipMeasures m;
+    for (double* v : {&m.base_largest, &m.base_residual, &m.hinge_largest, &m.hinge_residual, &m.b})
+        *v = r.get<double>();
+    m.t_first_slip = read_time(r);
+    m.t_first_lift = read_time(r);
+    const bool slid_off = r.get<bool>();
+    std::string why = r.text();
+    if (slid_off) m.slid_off = std::move(why);
+    return m;
+}
+
 }  // namespace
 
 std::unique_ptr<Engine> isolated(std::unique_ptr<Engine> inner) {
@@ -114,7 +149,10 @@ void append_trajectory(const Trajectory& t, std::string& out) {
         put(out, e.supports_computed);
         put(out, e.roller_tension_at.has_value());
         put(out, e.roller_tension_at.value_or(0.0));
+        put(out, e.base_friction_needed);
+        put(out, e.hinge_friction_needed);
     }
+    append_slip(t.slip, out);
 }
 
 Trajectory read_trajectory(std::string_view bytes) {
@@ -143,8 +181,11 @@ Trajectory read_trajectory(std::string_view bytes) {
         const bool has_tension = r.get<bool>();
         const double tension_at = r.get<double>();
         if (has_tension) e.roller_tension_at = tension_at;
+        e.base_friction_needed = r.get<double>();
+        e.hinge_friction_needed = r.get<double>();
         t.located = e;
     }
+    t.slip = read_slip(r);
     return t;
 }
 

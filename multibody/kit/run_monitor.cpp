@@ -62,11 +62,17 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       stop_at_rest_(ex.stop_at_rest),
       limits_(limits),
       parts_(engine_, scene, figures_, ex, limits.penetration * b_, limits.energy_gain, contact_gap),
+      slip_(scene.slip_measured ? std::optional<SlipMeter>(std::in_place, scene, block_sizes(scene)) : std::nullopt),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
       quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))),
       folded_needed_(std::max(1, static_cast<int>(std::lround(kFoldedFor / dt)))) {
     require_step_resolves(engine_, scene, ex, dt, dt_steps_the_motion);
+}
+
+double RunMonitor::default_drift(const WallState& s) const {
+    const double right_dx = point_of(s.lower, b_, -h_lower_).x - b_, left_dx = point_of(s.lower, -b_, -h_lower_).x + b_;
+    return std::abs(right_dx) < std::abs(left_dx) ? right_dx : left_dx;
 }
 
 RunMonitor::Verdict RunMonitor::check(double t, const WallState& s) {
@@ -78,9 +84,9 @@ RunMonitor::Verdict RunMonitor::check(double t, const WallState& s) {
         throw EngineFailure(fmt::format("{}: blow-up, theta1' = {:.3g} rad/s at t = {:.6g} s", engine_, rate, t));
     // No sliding: while rocking the pivot corner stays put, at rest both do; the smaller drift of the two base
     // corners from their places (+b and -b) covers both cases.
-    const double right_dx = point_of(s.lower, b_, -h_lower_).x - b_, left_dx = point_of(s.lower, -b_, -h_lower_).x + b_;
-    const double drift = std::abs(right_dx) < std::abs(left_dx) ? right_dx : left_dx;
-    if (std::abs(drift) > limits_.slide * b_)
+    if (slip_) {  // the user's friction: sliding is measured (SlipMeter), and ends the run only off the support
+        if (slip_->record(t, s)) return Verdict::slid_off;
+    } else if (const double drift = default_drift(s); std::abs(drift) > limits_.slide * b_)
         throw EngineFailure(fmt::format("{}: the wall slid {:.3g} m at its base at t = {:.6g} s (friction {})",
                                         engine_, drift, t, friction_));
     parts_.check(t, s);

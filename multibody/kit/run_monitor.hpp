@@ -15,11 +15,13 @@
 // Rest ends a run once the shaking can no longer lift the wall: past the record's last acceleration above
 // kRestCannotLiftShare of the rest threshold, not only past its end (the quiet tail of a record is most of it).
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "multibody/engine.hpp"
 #include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/slip_meter.hpp"
 #include "multibody/kit/step_resolution.hpp"  // kMaxStepsPerRun, require_step_resolves
 #include "multibody/kit/wall_parts.hpp"
 
@@ -55,7 +57,8 @@ constexpr double kFoldedFor = 0.5;
 
 class RunMonitor {
 public:
-    enum class Verdict { go_on, stop, overturned, at_rest };
+    // slid_off: the wall left its support (SlipMeter, a scene whose friction was given): the run ends there.
+    enum class Verdict { go_on, stop, overturned, at_rest, slid_off };
 
     // InputError when dt is not usable for the run (require_step_resolves: too many steps, or too coarse), naming dt.
     // dt_steps_the_motion false: dt is a reporting interval (the integrator picks its own steps).
@@ -68,12 +71,19 @@ public:
     Verdict check(double t, const WallState& state);
     // True when the verdict ends the run, having marked the trajectory overturned or at rest as it says.
     static bool ends_run(Verdict verdict, Trajectory& out);
+    // The run's slips when the scene's friction was given (WallScene::slip_measured), else none: Trajectory::slip.
+    std::optional<SlipMeasures> slip() const {
+        return slip_ ? std::optional(slip_->measures()) : std::nullopt;
+    }
     // Whether step i of n is recorded: every `every` steps, the last, and the one that ends the run.
     static bool records(long i, long n, long every, Verdict verdict) {
         return i % every == 0 || i == n || verdict != Verdict::go_on;
     }
 
 private:
+    // The default friction's slide: the smaller drift of the two base corners from their places.
+    double default_drift(const WallState& s) const;
+
     MechanismFigures figures_;  // first: the members after it read it
     std::string engine_;
     double b_, h_lower_, friction_, collapse_, unstable_, unstable2_, v_ref_, alpha_, motion_end_, quiet_from_,
@@ -81,6 +91,7 @@ private:
     bool stop_at_rest_;
     FailureLimits limits_;
     WallParts parts_;
+    std::optional<SlipMeter> slip_;  // a scene whose friction was given: sliding measured, not a failure
     int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_, folded_needed_;
 };
 

@@ -6,6 +6,7 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/model.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -30,6 +31,7 @@ BlockSizes block_sizes(const WallScene& scene) {
 }
 
 WallPose pose_at(const WallScene& scene, double theta1) {
+    if (scene.corner_radius() > 0.0) return rounded_pose_at(scene, theta1);  // rounded_corners.hpp
     const BlockSizes s = block_sizes(scene);
     const double side = theta1 < 0.0 ? -1.0 : 1.0;  // tipping towards +x turns about (+b, 0)
     WallPose p{};

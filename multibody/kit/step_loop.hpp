@@ -108,8 +108,9 @@ Trajectory run_fixed_steps(W& world, const Excitation& ex, const StepLoop& loop,
         state.top_offset = ground.top_u;
         const auto verdict = monitor.check(st.t, state);
         if (RunMonitor::records(i, n_steps, loop.every, verdict)) record(st.t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
+        if (RunMonitor::ends_run(verdict, out)) break;
     }
+    out.slip = monitor.slip();
     return out;
 }
 

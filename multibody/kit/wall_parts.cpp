@@ -75,6 +75,7 @@ WallParts::WallParts(std::string engine, const WallScene& scene, const Mechanism
       N_(scene.overburden()),
       load_x_(scene.overburden_offset()),
       gap_(contact_gap),
+      radius_(scene.corner_radius()),
       penetration_(penetration),
       // A moving roller does work on the wall that the ground's pseudo-forces do not bound (its force is the
       // engine's): with a flexible top support the energy check is off and the geometric ones stay.
@@ -114,9 +115,12 @@ double WallParts::input_bound(double t, const WallState& s) {
 
 void WallParts::check_contacts(double t, const WallState& s) const {
     const BlockSizes& z = sizes_;
-    const Corners lower = corners_of(s.lower, z.b, z.h_lower);
+    // Rounded corners (rounded_corners.hpp): each corner's arc centre, r inside both faces; a block's lowest point is
+    // an arc centre less r, and two blocks overlap by their cores' overlap plus 2 r. r = 0: the corners themselves.
+    const double r = radius_;
+    const Corners lower = corners_of(s.lower, z.b - r, z.h_lower - r);
     double lowest = HUGE_VAL;
-    for (const PlanePoint& p : lower) lowest = std::min(lowest, p.y - gap_);
+    for (const PlanePoint& p : lower) lowest = std::min(lowest, p.y - r - gap_);
     if (-lowest > penetration_)
         throw EngineFailure(fmt::format("{}: the lower block sank {:.3g} m into the ground at t = {:.6g} s", engine_,
                                         -lowest, t));
@@ -126,17 +130,18 @@ void WallParts::check_contacts(double t, const WallState& s) const {
     // Bullet and MuJoCo on the Fig. 6 wall under Rinaldi at 0.7 g, theta2 -2.7 rad, the block hanging from the hinge
     // against the lower one's face). The sweep's block falling through the hinge stays inside (theta2 -0.16 to -0.53).
     if (!vssw_ || std::abs(s.upper.angle) >= upright_range_) return;
-    const Corners upper = corners_of(s.upper, z.b, z.h_upper);
-    for (const PlanePoint& p : upper) lowest = std::min(lowest, p.y - gap_);
+    const Corners upper = corners_of(s.upper, z.b - r, z.h_upper - r);
+    for (const PlanePoint& p : upper) lowest = std::min(lowest, p.y - r - gap_);
     if (-lowest > penetration_)
         throw EngineFailure(fmt::format("{}: the upper block reached {:.3g} m into the ground at t = {:.6g} s",
                                         engine_, -lowest, t));
-    if (const double depth = overlap(lower, s.lower, upper, s.upper); depth > penetration_)
+    if (const double depth = overlap(lower, s.lower, upper, s.upper) + 2.0 * r; depth > penetration_)
         throw EngineFailure(fmt::format("{}: the upper block sank {:.3g} m into the lower block (through the hinge) "
                                         "at t = {:.6g} s",
                                         engine_, depth, t));
-    // The top corners, between the guides at x = u_d - b and u_d + b (u_d = 0: a rigid top support).
-    for (const PlanePoint& p : {upper[2], upper[3]})
+    // The nominal top corners (the roller holds them, not the outline), between the guides at x = u_d - b and u_d + b
+    // (u_d = 0: a rigid top support).
+    for (const PlanePoint& p : {point_of(s.upper, -z.b, z.h_upper), point_of(s.upper, z.b, z.h_upper)})
         if (const double out = std::abs(p.x - s.top_offset) - z.b; out > penetration_)
             throw EngineFailure(fmt::format("{}: the top passed {:.3g} m through the roller at t = {:.6g} s", engine_,
                                             out, t));

@@ -78,7 +78,9 @@ private:
     bool vssw_;
     double g_, N_;
     double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
-    double gap_, penetration_, energy_gain_, upright_range_;
+    double gap_;
+    double radius_;  // the blocks' corner radius r [m] (rounded_corners.hpp)
+    double penetration_, energy_gain_, upright_range_;
     const GroundMotion* motion_;
     WallState rest_, last_;
     double e0_, input_ = 0.0, t_last_ = 0.0;

@@ -145,8 +145,9 @@ std::string num(double v) { return fmt::format("{:.17g}", v); }
 // A block's <body>: at its place at rest, on slide-x, slide-z and hinge-y joints at its centre (the slides first, so
 // that their axes stay the world's), with its mass and inertia per depth kDepth, and a box geom.
 std::string block_xml(const std::string& name, double b, double h, double mass_per_depth, double z_rest,
-                      const std::string& extra_geoms) {
+                      const std::string& extra_geoms, double box_b = -1.0) {
     const double m = mass_per_depth * kDepth, w = 2.0 * b, H = 2.0 * h, d = kDepth;
+    if (box_b < 0.0) box_b = b;  // the box geom's half-width: b, or b - r for a rounded block (its flat part)
     return fmt::format(
         "<body name='{0}' pos='0 0 {1}'>"
         "<joint name='{0}_x' type='slide' axis='1 0 0'/><joint name='{0}_z' type='slide' axis='0 0 1'/>"
@@ -154,7 +155,58 @@ std::string block_xml(const std::string& name, double b, double h, double mass_p
         "<inertial pos='0 0 0' mass='{2}' diaginertia='{3} {4} {5}'/>"
         "<geom name='{0}' type='box' size='{6} {7} {8}'/>{9}</body>\n",
         name, num(z_rest), num(m), num(m * (d * d + H * H) / 12.0), num(m * (w * w + H * H) / 12.0),
-        num(m * (w * w + d * d) / 12.0), num(b), num(0.5 * d), num(h), extra_geoms);
+        num(m * (w * w + d * d) / 12.0), num(box_b), num(0.5 * d), num(h), extra_geoms);
+}
+
+// Rounded corners (kit/rounded_corners.hpp): each block's outline as MuJoCo's convex pieces, a box of half-width b - r
+// (its bottom face the flat part, on the ground) and capsules of radius r along the depth at the arcs' centres
+// (capsule-plane, capsule-box and capsule-capsule are MuJoCo's analytic pairs; a capsule's caps stick out of the
+// depth, where nothing is). The hinge: the upper block's bottom capsules on the lower block's face box, now b - r wide
+// (the flats), and on the lower block's top capsules (the arcs rolling on each other). The roller's spheres stay at
+// the nominal top corners. Names: "<block>_<b|t><r|l>" (bottom/top, right/left).
+std::string capsule_xml(const std::string& name, double r, double x, double z) {
+    return fmt::format("<geom name='{}' type='capsule' size='{} {}' pos='{} 0 {}' zaxis='0 1 0'/>", name, num(r),
+                       num(0.5 * kDepth), num(x), num(z));
+}
+
+// friction, hinge_friction: the base's and the hinge's pair attributes (model_xml).
+std::string rounded_model_xml(const WallScene& scene, const std::string& head, const std::string& friction,
+                              const std::string& hinge_friction, const std::string& contact) {
+    const BlockSizes s = block_sizes(scene);
+    const double r = scene.corner_radius(), in = s.b - r;
+    std::string xml = head;
+    std::string lower_extra = capsule_xml("lower_br", r, in, -(s.h_lower - r)) +
+                              capsule_xml("lower_bl", r, -in, -(s.h_lower - r));
+    if (scene.vssw)
+        lower_extra += fmt::format("<geom name='hinge_face' type='box' size='{0} {1} {2}' pos='0 0 {3}'/>", num(in),
+                                   num(0.5 * kDepth), num(s.b), num(s.h_lower - s.b)) +
+                       capsule_xml("lower_tr", r, in, s.h_lower - r) + capsule_xml("lower_tl", r, -in, s.h_lower - r);
+    // The box geom is the flat part's: b - r wide; the block's mass and inertia are given, the rectangle's.
+    xml += block_xml("lower", s.b, s.h_lower, s.m_lower, s.h_lower, lower_extra, in);
+    if (scene.vssw) {
+        const double rs = kRollerSphereRadius;
+        xml += fmt::format("<geom name='guide_right' type='plane' size='100 100 1' pos='{} 0 0' zaxis='-1 0 0'/>\n"
+                           "<geom name='guide_left' type='plane' size='100 100 1' pos='{} 0 0' zaxis='1 0 0'/>\n",
+                           num(s.b), num(-s.b));
+        const std::string upper_extra =
+            fmt::format("<geom name='top_right' type='sphere' size='{0}' pos='{1} 0 {3}'/>"
+                        "<geom name='top_left' type='sphere' size='{0}' pos='{2} 0 {3}'/>",
+                        num(rs), num(s.b - rs), num(-(s.b - rs)), num(s.h_upper)) +
+            capsule_xml("upper_br", r, in, -(s.h_upper - r)) + capsule_xml("upper_bl", r, -in, -(s.h_upper - r));
+        xml += block_xml("upper", s.b, s.h_upper, s.m_upper, 2.0 * s.h_lower + s.h_upper, upper_extra, in);
+    }
+    xml += "</worldbody>\n<contact>\n";
+    for (const char* geom : {"lower", "lower_br", "lower_bl"})
+        xml += fmt::format("<pair geom1='ground' geom2='{}' condim='3' {} {}/>\n", geom, friction, contact);
+    if (scene.vssw) {
+        for (const char* pair : {"geom1='hinge_face' geom2='upper_br'", "geom1='hinge_face' geom2='upper_bl'",
+                                 "geom1='lower_tr' geom2='upper_br'", "geom1='lower_tl' geom2='upper_bl'"})
+            xml += fmt::format("<pair {} condim='3' {} {}/>\n", pair, hinge_friction, contact);
+        xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
+        xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
+    }
+    xml += "</contact>\n</mujoco>\n";
+    return xml;
 }
 
 // The model for a scene and settings, as MuJoCo's XML.
@@ -163,7 +215,9 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
     const double tc = k.solref_steps * dt;
     const std::string contact = fmt::format("solref='{} {}' solimp='{} {} {} 0.5 2'", num(tc), num(k.dampratio),
                                             num(k.solimp_dmin), num(k.solimp_dmax), num(k.solimp_width));
-    const std::string friction = fmt::format("friction='{0} {0} 0.005 0.0001 0.0001'", num(scene.friction));
+    // A pair's friction overrides the geoms' mixing: the base's pair carries the base's, the hinge's the hinge's.
+    auto friction_of = [](double mu) { return fmt::format("friction='{0} {0} 0.005 0.0001 0.0001'", num(mu)); };
+    const std::string friction = friction_of(scene.base_mu()), hinge_friction = friction_of(scene.hinge_mu());
     std::string xml = fmt::format(
         "<mujoco model='vssw'>\n<compiler angle='radian' inertiafromgeom='false'/>\n"
         "<option timestep='{}' gravity='0 0 {}' integrator='{}' cone='pyramidal' impratio='1' "
@@ -172,6 +226,7 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
         "<geom name='ground' type='plane' size='100 100 1'/>\n",
         num(dt), num(-scene.gravity()), kIntegrators[k.integrator], k.noslip_iterations, k.iterations,
         num(k.tolerance));
+    if (scene.corner_radius() > 0.0) return rounded_model_xml(scene, xml, friction, hinge_friction, contact);
     // The hinge's face: a box on the lower block whose top face is the block's, twice as wide, so that the upper
     // block's corner spheres always meet that face and never the box's sides.
     const std::string face = scene.vssw ? fmt::format("<geom name='hinge_face' type='box' size='{0} {1} {2}' pos='0 0 {3}'/>",
@@ -196,7 +251,8 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
     xml += fmt::format("<pair geom1='ground' geom2='lower' condim='3' {} {}/>\n", friction, contact);
     if (scene.vssw) {
         for (const char* corner : {"bottom_right", "bottom_left"})
-            xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, friction, contact);
+            xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, hinge_friction,
+                               contact);
         xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
         xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
     }

@@ -16,6 +16,9 @@
 //    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards; docs/engines.md,
 //    "Bullet"). Only the guide whose corner is further out is given to the solver (Bullet gives both: with one,
 //    its xi 0.5 restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target, docs/engines.md "ODE");
+//  - rounded corners (corner radius r > 0): each box is its block's flat part, b - r wide, with capsules of radius r
+//    along the depth at the arcs' centres (add_rounding), the base ones on the ground, each top one of the lower
+//    block on the upper block's bottom one of its side; the masses stay the rectangles';
 //  - N: a force at the centre of the top face, only when xi > 0; ground motion: pseudo-forces -m a_h(t) at the centres
 //    of mass at each step's midpoint, or (moving_supports = 1) the ground and the roller's anchor moving;
 //  - a flexible top support (WallScene::diaphragm, T_d > 0): the roller's contact is made with a kinematic body of its
@@ -41,6 +44,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -207,7 +211,8 @@ double out_of_plane_tilt(dBodyID body) {
 class OdeScene {
 public:
     OdeScene(const WallScene& scene, const Knobs& knobs, double theta0, double dt)
-        : knobs_(knobs), dt_(dt), sizes_(block_sizes(scene)), friction_(scene.friction) {
+        : knobs_(knobs), dt_(dt), sizes_(block_sizes(scene)), friction_(scene.base_mu()),
+          hinge_friction_(scene.hinge_mu()), corner_radius_(scene.corner_radius()) {
         ensure_ode();
         world_ = dWorldCreate();
         group_ = dJointGroupCreate(0);
@@ -237,18 +242,21 @@ public:
         // rounding.
         lower_ = add_block(sizes_.b, sizes_.h_lower, sizes_.m_lower);
         const double top_skin = scene.vssw ? m : 0.0;
-        lower_geom_ = dCreateBox(nullptr, 2.0 * b, 2.0 * sizes_.h_lower + top_skin, 2.0 * kDepth);
+        // Rounded corners: the boxes are the flat parts, b - r wide (add_rounding); r = 0: b, as always.
+        const double box_b = b - corner_radius_;
+        lower_geom_ = dCreateBox(nullptr, 2.0 * box_b, 2.0 * sizes_.h_lower + top_skin, 2.0 * kDepth);
         dGeomSetBody(lower_geom_, lower_);
         dGeomSetOffsetPosition(lower_geom_, 0.0, 0.5 * top_skin, 0.0);
         if (scene.vssw) {
             upper_ = add_block(sizes_.b, sizes_.h_upper, sizes_.m_upper);
-            upper_geom_ = dCreateBox(nullptr, 2.0 * b, 2.0 * sizes_.h_upper, kDepth);
+            upper_geom_ = dCreateBox(nullptr, 2.0 * box_b, 2.0 * sizes_.h_upper, kDepth);
             dGeomSetBody(upper_geom_, upper_);
         }
         if (scene.vssw && !scene.diaphragm.is_rigid()) {  // the roller's own carrier, at the ground's place at rest
             top_body_ = dBodyCreate(world_);
             dBodySetKinematic(top_body_);
         }
+        if (corner_radius_ > 0.0) add_rounding();
         const WallPose pose = pose_at(scene, theta0);
         place(lower_, pose.lower);
         if (upper_) place(upper_, pose.upper);
@@ -258,6 +266,7 @@ public:
         dJointGroupDestroy(group_);
         for (dGeomID g : {ground_geom_, lower_geom_, upper_geom_})
             if (g) dGeomDestroy(g);
+        for (dGeomID g : arcs_) dGeomDestroy(g);
         dWorldDestroy(world_);  // the bodies and the plane joints with it
     }
     OdeScene(const OdeScene&) = delete;
@@ -277,11 +286,19 @@ public:
         if (top_body_) dBodySetLinearVel(top_body_, ground_velocity + top_velocity, 0.0, 0.0);
         dJointGroupEmpty(group_);
         contacts_ = 0;
-        add_pair(ground_geom_, lower_geom_, {0.0, 1.0}, {ground_x(), 0.0});
+        add_pair(ground_geom_, lower_geom_, {0.0, 1.0}, {ground_x(), 0.0}, friction_);
+        // Rounded corners: the base arcs on the ground (its box raised by the margin, as for the block's box); each
+        // top arc of the lower block on the upper block's bottom arc of its side (no margin: skin 0).
+        if (!arcs_.empty())
+            for (std::size_t i : {0u, 1u}) add_pair(ground_geom_, arcs_[i], {0.0, 1.0}, {ground_x(), 0.0}, friction_);
         if (upper_) {
             const dReal* r = dBodyGetRotation(lower_);
             // The lower block's top face: its centre and its y axis, along which its collision box reaches past it.
-            add_pair(lower_geom_, upper_geom_, {r[1], r[5]}, world_point(lower_, 0.0, sizes_.h_lower));
+            add_pair(lower_geom_, upper_geom_, {r[1], r[5]}, world_point(lower_, 0.0, sizes_.h_lower),
+                     hinge_friction_);
+            if (!arcs_.empty())
+                for (std::size_t i : {2u, 3u})
+                    add_pair(arcs_[i], arcs_[i + 2], {0.0, 0.0}, {0.0, 0.0}, hinge_friction_);
             add_roller();
         }
         if (knobs_.quickstep_iterations > 0)
@@ -302,6 +319,23 @@ private:
             dJointAttach(plane, body, nullptr);
         }
         return body;
+    }
+
+    // Rounded corners (kit/rounded_corners.hpp): capsules of radius r along the depth (ODE's capsule axis, z) at the
+    // arcs' centres, no mass of their own (the body's mass is set, the rectangle's). arcs_: the lower block's bottom
+    // left and right, then (VSSW) its top left and right, then the upper block's bottom left and right.
+    void add_rounding() {
+        const double r = corner_radius_, in = sizes_.b - r;
+        auto arc = [&](dBodyID body, double x, double y) {
+            dGeomID g = dCreateCapsule(nullptr, r, kDepth);
+            dGeomSetBody(g, body);
+            dGeomSetOffsetPosition(g, x, y, 0.0);
+            arcs_.push_back(g);
+        };
+        for (double side : {-1.0, 1.0}) arc(lower_, side * in, -(sizes_.h_lower - r));
+        if (!upper_) return;
+        for (double side : {-1.0, 1.0}) arc(lower_, side * in, sizes_.h_lower - r);
+        for (double side : {-1.0, 1.0}) arc(upper_, side * in, -(sizes_.h_upper - r));
     }
 
     static void place(dBodyID body, const BlockPose& p) {
@@ -325,7 +359,7 @@ private:
     // along the in-plane tangent only (dContactFDir1 and mu2 = 0: the plane joint holds z). mu = dInfinity, the
     // other choice, makes a speculative contact's friction row bilateral even while its normal row is idle: measured,
     // the lifting corner of the 0.9 m x 0.11 m parapet was held sideways and its period came out 9 % long.
-    void add_pair(dGeomID g1, dGeomID g2, Vec2 skin, Vec2 surface) {
+    void add_pair(dGeomID g1, dGeomID g2, Vec2 skin, Vec2 surface, double mu) {
         std::array<dContactGeom, 8> found{};
         const int n = dCollide(g1, g2, static_cast<int>(found.size()), found.data(), sizeof(dContactGeom));
         std::array<dContactGeom, 8> merged{};
@@ -361,7 +395,7 @@ private:
                 c.geom.pos[1] -= knobs_.margin * skin.y;
             }
             c.surface.mode = dContactMu2 | dContactFDir1 | dContactApprox1_1;
-            c.surface.mu = friction_;
+            c.surface.mu = mu;
             c.surface.mu2 = 0.0;
             c.fdir1[0] = -g.normal[1];
             c.fdir1[1] = g.normal[0];
@@ -422,7 +456,9 @@ private:
     Knobs knobs_;
     double dt_;
     BlockSizes sizes_;
-    double friction_;
+    double friction_, hinge_friction_;  // the base's and the hinge's Coulomb coefficients
+    double corner_radius_;       // r [m] of every block corner (0: sharp boxes)
+    std::vector<dGeomID> arcs_;  // the rounded corners' capsules (add_rounding)
     dWorldID world_ = nullptr;
     dJointGroupID group_ = nullptr;
     dGeomID ground_geom_ = nullptr, lower_geom_ = nullptr, upper_geom_ = nullptr;

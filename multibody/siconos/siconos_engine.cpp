@@ -12,6 +12,8 @@
 //    block's top face (the hinge); the upper block's two top corners on the roller's two guides (x = -b and x = +b,
 //    frictionless). Which corner carries load is the solver's business: both guides are given at all times (the
 //    one on the pivot's side binds, the other opens), as are both corners of each pair;
+//  - rounded corners (corner radius r > 0): the base corners become arcs (circles of radius r, centres r inside both
+//    faces) on the ground and each pair of hinge corners two such circles on each other (PointOnLineR's radius);
 //  - N: a force (0, -N) at the centre of the top face, its moment taken at the step's start pose (as the other
 //    adapters apply it); ground motion: pseudo-forces -m a_h(t) at the centres of mass, a_h at the step's midpoint.
 //
@@ -109,6 +111,13 @@ public:
         int line_body;     // kGround or kLower
         Vec2 line_origin;  // in the line body's frame [m]
         Vec2 line_normal;  // unit, in the line body's frame, pointing to the side the point must stay on
+        // Rounded corners (kit/rounded_corners.hpp): radius > 0 makes `point` the centre of a circle of that radius,
+        // touching the line with its point nearest it; with `circle_on_circle`, `line_origin` is the centre of a
+        // second circle of the same radius on the line body, and the "line" is the tangent between them (normal along
+        // the centres' line, gap their distance less twice the radius). The rows then act at the contact point, so
+        // the normal row is still the gap's exact gradient (the offset from a centre to it lies along the normal).
+        double radius = 0.0;
+        bool circle_on_circle = false;
     };
     explicit PointOnLineR(const Geometry& g) : geometry_(g) {}
 
@@ -145,8 +154,22 @@ private:
     };
     Frame frame(const BlockVector& q) const {
         const Pose a = pose_of(q, geometry_.point_body), b = pose_of(q, geometry_.line_body);
+        if (geometry_.radius > 0.0) return rounded_frame(a, b);
         const Vec2 n = rotated(geometry_.line_normal, b.phi);
         return {a.to_world(geometry_.point), a.origin, b.to_world(geometry_.line_origin), b.origin, n, {n.y, -n.x}};
+    }
+    Frame rounded_frame(const Pose& a, const Pose& b) const {
+        const double r = geometry_.radius;
+        const Vec2 centre = a.to_world(geometry_.point), other = b.to_world(geometry_.line_origin);
+        Vec2 n = rotated(geometry_.line_normal, b.phi), origin = other;
+        if (geometry_.circle_on_circle) {
+            const Vec2 d = centre - other;
+            const double length = std::hypot(d.x, d.y);
+            n = {d.x / length, d.y / length};
+            origin = {other.x + r * n.x, other.y + r * n.y};
+        }
+        const Vec2 point{centre.x - r * n.x, centre.y - r * n.y};
+        return {point, a.origin, origin, b.origin, n, {n.y, -n.x}};
     }
     Geometry geometry_;
 };
@@ -280,10 +303,19 @@ public:
 
         nsds_ = std::make_shared<NonSmoothDynamicalSystem>(0.0, 1e300);
         nsds_->insertDynamicalSystem(system_);
-        const double b = sizes_.b, h1 = sizes_.h_lower, h2 = sizes_.h_upper, mu = scene.friction;
+        const double b = sizes_.b, h1 = sizes_.h_lower, h2 = sizes_.h_upper, mu = scene.base_mu();
+        const double r = scene.corner_radius(), in = b - r;
         for (double side : {1.0, -1.0}) {
+            if (r > 0.0) {  // the base arcs on the ground, each pair of hinge arcs (PointOnLineR::Geometry::radius)
+                add_contact({kLower, {side * in, -(h1 - r)}, kGround, {0.0, 0.0}, {0.0, 1.0}, r}, knobs.e_ground, mu);
+                if (vssw_)
+                    add_contact({kUpper, {side * in, -(h2 - r)}, kLower, {side * in, h1 - r}, {0.0, 1.0}, r, true},
+                                knobs.e_hinge, scene.hinge_mu());
+                continue;
+            }
             add_contact({kLower, {side * b, -h1}, kGround, {0.0, 0.0}, {0.0, 1.0}}, knobs.e_ground, mu);
-            if (vssw_) add_contact({kUpper, {side * b, -h2}, kLower, {0.0, h1}, {0.0, 1.0}}, knobs.e_hinge, mu);
+            if (vssw_) add_contact({kUpper, {side * b, -h2}, kLower, {0.0, h1}, {0.0, 1.0}}, knobs.e_hinge,
+                                   scene.hinge_mu());
         }
         if (vssw_) {
             auto guide = [&](double side) -> PointOnLineR::Geometry {

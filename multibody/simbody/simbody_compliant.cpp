@@ -201,14 +201,14 @@ private:
     // that cannot touch (cliques aside) at every evaluation.
     void add_corner_contacts(const WallScene& scene, const Knobs& k) {
         using SimTK::Vec3;
-        const double b = sizes_.b, mu = scene.friction;
+        const double b = sizes_.b, mu = scene.base_mu(), mu_hinge = scene.hinge_mu();
         std::vector<CornerPair> pairs;
         const SimTK::MobilizedBody& ground = matter_.Ground();
         for (double side : {1.0, -1.0}) {
             pairs.push_back({ground, lower_, Vec3(0), Vec3(0, 1, 0), Vec3(side * b, -sizes_.h_lower, 0), mu});
             if (has_upper_) {
                 pairs.push_back({lower_, upper_, Vec3(0, sizes_.h_lower, 0), Vec3(0, 1, 0),
-                                 Vec3(side * b, -sizes_.h_upper, 0), mu});
+                                 Vec3(side * b, -sizes_.h_upper, 0), mu_hinge});
                 // The guide's face at x = side (b + r), its normal pointing back at the wall.
                 pairs.push_back({ground, upper_, Vec3(side * (b + r_), 0, 0), Vec3(-side, 0, 0),
                                  Vec3(side * b, sizes_.h_upper, 0), 0.0});
@@ -223,10 +223,13 @@ private:
         using namespace SimTK;
         tracker_ = std::make_unique<ContactTrackerSubsystem>(system_);
         contact_ = std::make_unique<CompliantContactSubsystem>(system_, *tracker_);
-        const double b = sizes_.b, mu = scene.friction;
-        // Equal materials on both sides combine as E_material / 2^1.5 (Simbody's 2/3-power rule).
+        const double b = sizes_.b, mu = scene.base_mu(), mu_hinge = scene.hinge_mu();
+        // Equal materials on both sides combine as E_material / 2^1.5 (Simbody's 2/3-power rule), and equal
+        // friction coefficients as themselves (Simbody's 2 mu1 mu2 / (mu1 + mu2)): the base's surfaces carry the
+        // base's, the hinge's the hinge's.
         const double E = k.stiffness * std::pow(2.0, 1.5);
         const ContactMaterial rough(E, k.dissipation, mu, mu, 0.0);
+        const ContactMaterial rough_hinge(E, k.dissipation, mu_hinge, mu_hinge, 0.0);
         const ContactMaterial smooth(E, k.dissipation, 0.0, 0.0, 0.0);
         contact_->setTransitionVelocity(k.transition_velocity);
 
@@ -245,11 +248,11 @@ private:
         if (!has_upper_) return;
         // the hinge: the lower block's top face, y < h1 in its frame
         lower_body.addContactSurface(Transform(Rotation(-0.5 * Pi, ZAxis), Vec3(0, sizes_.h_lower, 0)),
-                                     ContactSurface(ContactGeometry::HalfSpace(), rough).joinClique(planes));
+                                     ContactSurface(ContactGeometry::HalfSpace(), rough_hinge).joinClique(planes));
         Body& upper_body = upper_.updBody();
         for (double side : {1.0, -1.0}) {
             upper_body.addContactSurface(Transform(Vec3(side * b, -sizes_.h_upper, 0)),
-                                         ContactSurface(ContactGeometry::Sphere(r_), rough).joinClique(guides));
+                                         ContactSurface(ContactGeometry::Sphere(r_), rough_hinge).joinClique(guides));
             upper_body.addContactSurface(Transform(Vec3(side * b, sizes_.h_upper, 0)),
                                          ContactSurface(ContactGeometry::Sphere(r_), smooth));
         }
@@ -373,8 +376,9 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& ex, cons
         const auto verdict =
             monitor.check(t, {block_state(lower, now), vssw ? block_state(upper, now) : kNoBlock});
         if (RunMonitor::records(i, n_reports, every, verdict)) record(t);
-        if (RunMonitor::ends_run(verdict, out)) return out;
+        if (RunMonitor::ends_run(verdict, out)) break;
     }
+    out.slip = monitor.slip();
     return out;
 }
 

@@ -12,6 +12,8 @@
 //    against the upper block's bottom face would be the same points once the hinge is shut (the blocks share their
 //    width): four rows where two hold, so they are left out; the corner pair that opens is the other side's, caught
 //    by the upper block's corner on that side. Nothing else can touch (no ground-upper pair);
+//  - rounded corners (corner radius r > 0): SpherePlaneContact of each base arc on the ground and SphereSphereContact of
+//    each pair of hinge arcs instead of the corner points (add_rounded_contacts); the compliant route refuses them;
 //  - the roller (VSSW only): a frictionless PointPlaneFrictionlessContact of each top corner of the upper block against
 //    a vertical plane, x <= +b for the right corner and x >= -b for the left one, y free. Only the guide whose corner
 //    is further out is offered to the stepper (its proximity test is gated; the Bullet and ODE adapters' rule;
@@ -43,6 +45,7 @@
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
+#include "multibody/kit/rounded_corners.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/scene_geometry.hpp"
@@ -157,20 +160,27 @@ public:
     SimbodyScene(const WallScene& scene, double theta0)
         : matter_(system_), forces_(system_), sizes_(block_sizes(scene)) {
         using namespace SimTK;
-        const double b = sizes_.b, mu = scene.friction;
+        const double b = sizes_.b, mu = scene.base_mu(), mu_hinge = scene.hinge_mu();
         SimTK::Force::UniformGravity(forces_, matter_, Vec3(0, -scene.gravity(), 0));
         base_ = matter_.Ground();
         lower_ = add_block(sizes_.h_lower, sizes_.m_lower);
-        for (double side : {1.0, -1.0})
-            matter_.adoptUnilateralContact(new PointPlaneContact(base_, UnitVec3(0, 1, 0), 0.0, lower_,
-                                                                 Vec3(side * b, -sizes_.h_lower, 0), 0.0, mu, mu, 0.0));
-        if (scene.vssw) {
-            upper_ = add_block(sizes_.h_upper, sizes_.m_upper);
-            has_upper_ = true;
+        const double rc = scene.corner_radius();
+        if (rc > 0.0) {  // rounded corners: the base arcs as spheres on the ground (add_rounded_contacts)
+            add_rounded_contacts(rc, mu, mu_hinge, scene.vssw.has_value());
+        } else {
             for (double side : {1.0, -1.0})
-                matter_.adoptUnilateralContact(new PointPlaneContact(lower_, UnitVec3(0, 1, 0), sizes_.h_lower,
-                                                                     upper_, Vec3(side * b, -sizes_.h_upper, 0),
-                                                                     0.0, mu, mu, 0.0));
+                matter_.adoptUnilateralContact(new PointPlaneContact(
+                    base_, UnitVec3(0, 1, 0), 0.0, lower_, Vec3(side * b, -sizes_.h_lower, 0), 0.0, mu, mu, 0.0));
+        }
+        if (scene.vssw) {
+            if (rc <= 0.0) {
+                upper_ = add_block(sizes_.h_upper, sizes_.m_upper);
+                has_upper_ = true;
+                for (double side : {1.0, -1.0})
+                    matter_.adoptUnilateralContact(new PointPlaneContact(lower_, UnitVec3(0, 1, 0), sizes_.h_lower,
+                                                                         upper_, Vec3(side * b, -sizes_.h_upper, 0),
+                                                                         0.0, mu_hinge, mu_hinge, 0.0));
+            }
             // Roller guides: n . p >= height, i.e. -x >= -b (right corner) and x >= -b (left corner).
             matter_.adoptUnilateralContact(new GatedGuide(base_, UnitVec3(-1, 0, 0), -b, upper_,
                                                           Vec3(b, sizes_.h_upper, 0), inputs_.right_guide));
@@ -199,6 +209,27 @@ public:
     StepInputs& inputs() { return inputs_; }
 
 private:
+    // Rounded corners (kit/rounded_corners.hpp), for r > 0: the lower block's base arcs as spheres of radius r (their
+    // centres r inside both faces) on the ground plane, and, for a VSSW, the upper block made here with each of its
+    // bottom arcs a sphere on the lower block's top arc of the same side (Simbody's SpherePlaneContact and
+    // SphereSphereContact, Coulomb friction mu at the base and mu_hinge at the hinge). At rest every sphere touches at a flat's end; the spheres lie inside
+    // the blocks, so they report no contact the outlines do not have.
+    void add_rounded_contacts(double r, double mu, double mu_hinge, bool vssw) {
+        using namespace SimTK;
+        const double in = sizes_.b - r;
+        for (double side : {1.0, -1.0})
+            matter_.adoptUnilateralContact(new SpherePlaneContact(base_, UnitVec3(0, 1, 0), 0.0, lower_,
+                                                                  Vec3(side * in, -(sizes_.h_lower - r), 0), r, 0.0,
+                                                                  mu, mu, 0.0));
+        if (!vssw) return;
+        upper_ = add_block(sizes_.h_upper, sizes_.m_upper);
+        has_upper_ = true;
+        for (double side : {1.0, -1.0})
+            matter_.adoptUnilateralContact(new SphereSphereContact(upper_, Vec3(side * in, -(sizes_.h_upper - r), 0), r,
+                                                                   lower_, Vec3(side * in, sizes_.h_lower - r, 0), r,
+                                                                   0.0, mu_hinge, mu_hinge, 0.0));
+    }
+
     SimTK::MobilizedBody add_block(double half_h, double mass_per_depth) {
         using namespace SimTK;
         // I_z = m (b^2 + h^2) / 3 = m R^2 / 3, as the analytic model's homogeneous blocks.
@@ -334,8 +365,18 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     require_rigid_top(scene, "Simbody",
                       "both routes drive the wall by pseudo-forces and "
                       "cannot prescribe the motion of a support");
-    if (compliant_) return simulate_compliant(scene, ex, settings);
+    if (compliant_) {
+        require_sharp_corners("Simbody", scene,
+                              "its compliant contacts are small corner spheres on half-spaces with Hertz's law for "
+                              "their radius; an arc rolling on an arc is not written (simbody-rigid rounds them)");
+        return simulate_compliant(scene, ex, settings);
+    }
     const Knobs knobs = read_knobs(settings);
+    // PLUS holds a contact past Coulomb's bound: measured, the Fig. 6 parapet under a sine pulse of 0.15 g stayed put at
+    // mu = 0.08 (2.6e-5 b) where Coulomb lets it slide and every other engine, and PGS, slid 0.05 b and more.
+    if (scene.slip_measured && knobs.solver == 0)
+        throw InputError("simbody-rigid cannot measure sliding with its PLUS impulse solver (solver = 0), which holds "
+                         "the contacts past the friction given: set solver = 1 (PGS) for a friction given");
     const double dt = settings.dt;
     SimbodyScene w(scene, ex.theta0);
     const WallBodies bodies{w.lower(), w.upper(), w.has_upper(), block_sizes(scene), WallEnergy(scene, kDepth), scene.overburden_offset()};

@@ -83,3 +83,19 @@ def test_free_vibration_first_impact_follows_the_impact_law():
     for impact, expected in [("eq19", eq19), (0.6, 0.6)]:
         first = vssw.free(**FIG6, theta0=0.5, impact=impact)["impacts"][0]
         assert first["theta_dot_after"] / first["theta_dot_before"] == pytest.approx(expected, rel=CLOSED_FORM_RTOL)
+
+
+# Finite friction (docs/model/analytic-core.md "Finite friction"): the Fig. 6 parapet under a sine pulse of 3 times
+# its threshold slides before it rocks below tan(alpha) = 0.1 and lifts first above it; at the default friction no slip
+# is measured (None) and the same pulse rocks it.
+@pytest.mark.skipif("ode" not in vssw.engines(), reason="no ODE in this build")
+def test_friction_given_measures_sliding_below_tan_alpha():
+    parapet = dict(model="parapet", height=4.0, thickness=0.4)
+    pulse = dict(pulse="sine", amplitude=0.3, pulse_period=0.5, t_end=2.0)
+    slid = vssw.simulate("ode", **parapet, **pulse, friction=0.08).slip
+    held = vssw.simulate("ode", **parapet, **pulse, friction=0.12).slip
+    slid_limit = 5e-2  # in b: the default friction's failure limit; measured 0.27 b below tan(alpha)
+    assert slid["slid_before_rocking"] and slid["t_first_lift"] is None
+    assert slid["base_largest"] / slid["b"] > slid_limit
+    assert held["t_first_lift"] is not None and not held["slid_before_rocking"]
+    assert vssw.simulate("ode", **parapet, **pulse).slip is None

@@ -169,7 +169,9 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
             printed: Eq. 3, Eq. 19, a bilateral roller).
         kinematics, impact, roller (analytic only): override one part of the set: "exact" (Eq. 2) or "paper"
             (Eq. 3); "eq19", "whole-mechanism" or a number e in [0, 1]; "bilateral" or "unilateral".
-        friction: Coulomb friction of the engines' contacts (default 2: nothing slides; sliding is a failure).
+        friction: Coulomb friction of the engines' contacts at the base and the hinge (default None: 2, where nothing
+            slides and a slide fails the run). Given, sliding is measured (Simulation.slip) rather than a failure,
+            and the analytic model warns where it would slide (it needs more friction than given).
         run_budget: CPU seconds one engine run may take (default 30 s + 1 ms per step).
     Raises InputError (a ValueError) naming a bad value, SimulationError (a RuntimeError) when the run fails."""
     result = _with_python_names(lambda: _core.simulate(

@@ -44,7 +44,9 @@ class Simulation:
     located turning point of the analytic model, the collapse angle and the overturning when it overturned), assumptions
     (analytic: "mechanism", "paper" or "custom"; None for an engine), kinematics (analytic: "exact" or "paper"; None
     for an engine or a parapet), ground_motion (its name, None in free
-    vibration)."""
+    vibration), slip (an engine run's sliding when friction was given, else None: {base_largest, base_residual,
+    hinge_largest, hinge_residual [m], b [m], t_first_slip, t_first_lift [s or None], slid_before_rocking,
+    slid_off (the reason the run ended off its support, or None)})."""
 
     engine: str
     version: str
@@ -74,6 +76,7 @@ class Simulation:
     assumptions: Optional[str]
     kinematics: Optional[str]
     ground_motion: Optional[str]
+    slip: Optional[dict] = None
 
     @property
     def theta1_over_alpha(self):

@@ -1,0 +1,201 @@
+#include "validation/assumptions_part.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "analytic/data_dir.hpp"
+#include "analytic/error.hpp"
+#include "multibody/engine.hpp"
+#include "study/effects.hpp"
+#include "study/grid.hpp"
+#include "study/outputs.hpp"
+#include "study/runner.hpp"
+#include "study/spec.hpp"
+#include "study/study_data.hpp"
+#include "validation/study_engines.hpp"
+
+namespace vssw::validation {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* kShippedStudy = "assumptions-report.toml";
+constexpr const char* kShippedFullStudy = "assumptions-physical.toml";
+
+bool varies_a_physical_assumption(const study::StudySpec& spec) {
+    for (const study::PartSpec& part : spec.parts)
+        for (const std::string& key : study::kPhysicalAssumptionKeys)
+            if (const study::Axis* a = part.wall_axis(key); a && a->varied()) return true;
+    return false;
+}
+
+// The study's rows of the analytic model alone, or of the engines alone: each pairs within itself.
+study::StudyData rows_of(const study::StudyData& d, bool analytic) {
+    study::StudyData out = d;
+    const std::size_t engine = d.column("engine");
+    out.rows.erase(std::remove_if(out.rows.begin(), out.rows.end(),
+                                  [&](const study::StudyRow& r) { return (d.text(r, engine) == "analytic") != analytic; }),
+                   out.rows.end());
+    return out;
+}
+
+// The slips (metrics in b) of the engines' runs at each relaxed level: the range of the values themselves.
+void add_slips(const study::StudyData& d, std::vector<RelaxationEffect>& out) {
+    const std::size_t engine = d.column("engine");
+    for (const std::string& key : study::kPhysicalAssumptionKeys) {
+        const std::size_t column = d.column(key);
+        if (column == std::string::npos || !d.columns[column].varied) continue;
+        const study::ColumnLevels& c = d.columns[column];
+        for (std::size_t level = 1; level < c.order.size(); ++level)
+            for (std::size_t m = 0; m < d.metrics.size(); ++m) {
+                if (d.metrics[m].unit != "b") continue;
+                RelaxationEffect e;
+                e.parameter = key;
+                e.from = c.texts[c.order.front()];
+                e.to = c.texts[c.order[level]];
+                e.metric = d.metrics[m].name;
+                e.absolute = true;
+                e.model = kNaN;
+                e.engines_lo = std::numeric_limits<double>::infinity();
+                e.engines_hi = -e.engines_lo;
+                for (const study::StudyRow& r : d.rows)
+                    if (r.metric == m && r.levels[column] == c.order[level] && d.text(r, engine) != "analytic" &&
+                        std::isfinite(r.value)) {
+                        e.engines_lo = std::min(e.engines_lo, r.value);
+                        e.engines_hi = std::max(e.engines_hi, r.value);
+                        ++e.engine_pairs;
+                    }
+                if (e.engine_pairs > 0) out.push_back(e);
+            }
+    }
+}
+
+// The physical assumptions' effects of the model and of the engines, one entry per (parameter level, metric) that
+// either has pairs for, in the study's order.
+std::vector<RelaxationEffect> relaxation_effects(const study::StudyData& d) {
+    const std::vector<study::Effect> model = study::parameter_effects(rows_of(d, true));
+    const std::vector<study::Effect> engines = study::parameter_effects(rows_of(d, false));
+    std::vector<RelaxationEffect> out;
+    const auto entry = [&](const study::Effect& e) -> RelaxationEffect& {
+        for (RelaxationEffect& r : out)
+            if (r.parameter == e.parameter && r.to == e.to && r.metric == d.metrics[e.metric].name) return r;
+        RelaxationEffect r;
+        r.parameter = e.parameter;
+        r.from = e.from;
+        r.to = e.to;
+        r.metric = d.metrics[e.metric].name;
+        r.binary = e.binary;
+        r.model = r.engines_lo = r.engines_hi = kNaN;
+        out.push_back(r);
+        return out.back();
+    };
+    const auto relative = [&](const study::Effect& e) {
+        return e.physical && e.pairs > 0 && d.metrics[e.metric].unit != "b";
+    };
+    for (const study::Effect& e : model)
+        if (relative(e)) {
+            RelaxationEffect& r = entry(e);
+            r.model = e.median;
+            r.model_pairs = e.pairs;
+        }
+    for (const study::Effect& e : engines)
+        if (relative(e)) {
+            RelaxationEffect& r = entry(e);
+            r.engines_lo = e.lo;
+            r.engines_hi = e.hi;
+            r.engine_pairs = e.pairs;
+        }
+    add_slips(d, out);
+    // The study's order: the parameter's column, its level's position, the metric's.
+    const auto rank = [&](const RelaxationEffect& r) {
+        const study::ColumnLevels& c = d.columns[d.column(r.parameter)];
+        std::size_t level = 0;
+        while (level < c.order.size() && c.texts[c.order[level]] != r.to) ++level;
+        std::size_t metric = 0;
+        while (metric < d.metrics.size() && d.metrics[metric].name != r.metric) ++metric;
+        return std::tuple(d.column(r.parameter), level, metric);
+    };
+    std::stable_sort(out.begin(), out.end(),
+                     [&](const RelaxationEffect& a, const RelaxationEffect& b) { return rank(a) < rank(b); });
+    return out;
+}
+
+// What each engine could not run: its failed rows grouped by reason.
+std::vector<std::string> refusals(const study::StudyData& d) {
+    const std::size_t engine = d.column("engine");
+    std::map<std::pair<std::string, std::string>, long> count;
+    for (const study::StudyRow& r : d.rows) {
+        const std::string& status = d.statuses[r.status];
+        if (status.rfind("failed", 0) != 0) continue;
+        const auto colon = status.find(": ");
+        ++count[{d.text(r, engine), colon == std::string::npos ? status : status.substr(colon + 2)}];
+    }
+    std::vector<std::string> out;
+    for (const auto& [key, n] : count)
+        out.push_back(fmt::format("{}: {} ({} row{})", multibody::engine_display_name(key.first), key.second, n,
+                                  n == 1 ? "" : "s"));
+    return out;
+}
+
+}  // namespace
+
+std::string assumptions_study_file(const std::string& name_or_path, const std::vector<std::string>& engines) {
+    if (name_or_path == "none") return "";
+    const std::string file = name_or_path == "default" ? shipped_studies_dir() + "/" + kShippedStudy
+                             : name_or_path == "full"  ? shipped_studies_dir() + "/" + kShippedFullStudy
+                                                       : name_or_path;
+    if (!varies_a_physical_assumption(with_engines(file, engines)))
+        throw InputError(fmt::format("--assumptions {}: the study varies none of the paper's physical assumptions "
+                                     "(wall keys {})",
+                                     file, fmt::join(study::kPhysicalAssumptionKeys, ", ")));
+    return file;
+}
+
+std::string default_assumptions_for_suite(const std::string& suite) { return suite == "full" ? "full" : "default"; }
+
+AssumptionsPart run_assumptions_part(const std::string& study_file, const std::vector<std::string>& engines,
+                                     const std::filesystem::path& dir, const AssumptionsRunOptions& options) {
+    const study::StudySpec spec = with_engines(study_file, engines);
+    const study::Grid grid(spec);
+    study::StudyRunOptions run;
+    run.threads = options.threads;
+    run.commit = options.commit;
+    run.progress = options.progress;
+    study::StudyRunResult result;
+    {
+        const io::FolderLock lock = study::prepare_study_dir(grid, dir, run);
+        result = study::run_study(grid, dir, run);
+    }
+    study::OutputOptions output;
+    output.plots = options.plots;
+    output.gnuplot = options.gnuplot;
+    study::write_study_outputs(dir, output);
+    const study::StudyData d = study::read_study_data(dir);
+
+    AssumptionsPart part;
+    part.study_file = study_file;
+    part.study_name = spec.name;
+    part.description = spec.description;
+    part.folder = dir;
+    part.rows = result.rows;
+    part.failed_rows = result.failed_rows;
+    part.wall_time_s = result.meta.wall_time_s;
+    part.effects = relaxation_effects(d);
+    part.refusals = refusals(d);
+    for (const study::MetricMeta& m : d.metrics) {
+        const std::string name = "tornado_physical_" + m.name;
+        if (std::filesystem::exists(dir / "plots" / (name + ".svg"))) {
+            part.tornadoes.push_back("../" + dir.filename().string() + "/plots/" + name);
+            part.tornado_titles.push_back(fmt::format(
+                "What the paper's physical assumptions cost: {} (bar: smallest to largest change over walls and "
+                "backends; dot: median)",
+                m.name));
+        }
+    }
+    return part;
+}
+
+}  // namespace vssw::validation
