@@ -153,6 +153,8 @@ struct WallArgs {
     double xi, density, g;
     std::string assumptions;                                // a named set: paper | mechanism
     std::optional<std::string> kinematics, impact, roller;  // each overrides the set's
+    double overburden_eccentricity = 0.0;  // e/b of N on the (upper) body's top face (analytic/geometry.hpp)
+    double corner_radius = 0.0;            // r/b of every block corner (analytic/wall.hpp with_corner_radius)
 };
 
 vssw::cli::ChosenModel chosen_model(const WallArgs& a) {
@@ -163,6 +165,8 @@ vssw::cli::ChosenModel chosen_model(const WallArgs& a) {
     w.xi = a.xi;
     w.density = a.density;
     w.g = a.g;
+    w.eccentricity = a.overburden_eccentricity;
+    w.corner_radius = a.corner_radius;
     vssw::cli::ModelOptions m;
     m.model = a.model;
     m.assumptions = a.assumptions;
@@ -542,10 +546,11 @@ PYBIND11_MODULE(_core, m) {
           "run(args) with the GIL released and the command's progress lines given to progress(done, total, what).");
     py::class_<WallArgs>(m, "WallArgs")
         .def(py::init<std::string, double, double, std::optional<double>, double, double, double, std::string,
-                      std::optional<std::string>, std::optional<std::string>, std::optional<std::string>>(),
+                      std::optional<std::string>, std::optional<std::string>, std::optional<std::string>, double,
+                      double>(),
              py::arg("model"), py::arg("height"), py::arg("thickness"), py::arg("hinge"), py::arg("xi"),
              py::arg("density"), py::arg("g"), py::arg("assumptions"), py::arg("kinematics"), py::arg("impact"),
-             py::arg("roller"));
+             py::arg("roller"), py::arg("overburden_eccentricity") = 0.0, py::arg("corner_radius") = 0.0);
     m.def(
         "simulate",
         [](const std::string& engine, const WallArgs& wall, double theta0, std::optional<double> t_end,

@@ -1340,6 +1340,24 @@ TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
 // --friction under a pulse: the JSON names the friction, each engine's slips and the model's need and whether it would
 // slide. Table 1 #2 under a 0.35 g sine pulse needs 0.169 at the base (FiniteFriction's wall): at 0.12 Box2D slides
 // before it rocks and the model says it would; without --friction none of these keys is printed.
+// A wall that overturns with its friction given has not slid: past the unstable equilibrium the blocks fold, and the
+// drift of their corners is the collapse (before the slip meter stopped there, the hinge "slid" a whole b as the upper
+// block fell, and the run ended as slid off).
+TEST(CliCompare, AWallThatOverturnsHasNotSlid) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "no ODE in this build";
+    // alpha 0.06, R 2 m, h1/h 0.7, xi 0.1 under Rinaldi at 0.4 g: the model and ODE overturn.
+    const Json j = run_json({"compare", "--engine", "ode", "--height", "3.9928", "--thickness", "0.239856", "--hinge",
+                             "0.7", "--xi", "0.1", "--record", "data/NGA_no_1063_RRS228.AT2", "--pga", "0.4",
+                             "--friction", "2", "--json"});
+    const Json& ode = j["runs"][1];
+    ASSERT_EQ(ode["engine"], "ode");
+    EXPECT_TRUE(ode["overturned"].get<bool>());
+    EXPECT_TRUE(ode["slip"]["slid_off"].is_null());
+    constexpr double kCountedSlip = 1e-3;  // [b] multibody/kit/slip_meter.hpp kSlipTolerance: no slip counted
+    EXPECT_LT(ode["slip"]["hinge"]["largest_b"].get<double>(), kCountedSlip);
+    EXPECT_LT(ode["slip"]["base"]["largest_b"].get<double>(), kCountedSlip);
+}
+
 TEST(CliCompare, FrictionMakesSlidingAMeasuredResponse) {
     if (!engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
     const std::vector<std::string> run = std::vector<std::string>{"compare", "--engine", "analytic,box2d", "--pulse",

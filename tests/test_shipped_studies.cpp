@@ -14,6 +14,7 @@
 #include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
 #include "study/ensemble_measures.hpp"
+#include "study/spec.hpp"
 #include "study/study_data.hpp"
 #include "tests/study_fixtures.hpp"
 
@@ -285,6 +286,47 @@ TEST(ShippedStudies, EnsembleIntensityIsTheReferencesIdaInFourMeasures) {
     const study::CaseSpec c = grid.make_case(grid.case_ids().front());
     EXPECT_EQ(c.intensity.sa_period, 1.0);
     EXPECT_EQ(c.intensity.sa_damping, kDefaultSaDamping);
+}
+
+// The studies of what the paper's physical assumptions cost (the report's and the full one): every physical key they
+// vary starts at the paper's level and varies one at a time, so that each case pairs with its baseline: a baseline and
+// one case per further level, per wall (a product would be L^N cases).
+TEST(ShippedStudies, AssumptionStudiesRelaxEachPhysicalAssumptionAloneFromThePapers) {
+    // The paper's level of each key: N at the centre, sharp corners, a rigid top, and friction that holds (the
+    // scene's default, multibody/engine.hpp).
+    const std::map<std::string, double> papers = {
+        {"overburden_eccentricity", 0.0}, {"corner_radius", 0.0}, {"diaphragm_period", 0.0}, {"friction", 2.0}};
+    for (const char* name : {"assumptions-report", "assumptions-physical"}) {
+        const study::StudySpec spec = study::read_study_file(std::string(VSSW_STUDIES_DIR) + "/" + name + ".toml");
+        const Grid grid(spec);
+        std::size_t expected = 0;
+        for (const study::PartSpec& part : spec.parts) {
+            std::size_t walls = 1, one_at_a_time = 1, relaxed = 0;
+            for (const study::Axis& a : part.wall) {
+                const bool physical = std::find(study::kPhysicalAssumptionKeys.begin(),
+                                                study::kPhysicalAssumptionKeys.end(),
+                                                a.key) != study::kPhysicalAssumptionKeys.end();
+                if (!physical) {
+                    walls *= a.levels.size();
+                    continue;
+                }
+                ++relaxed;
+                ASSERT_TRUE(papers.count(a.key)) << name << ": no paper's level known for " << a.key;
+                EXPECT_EQ(study::to_text(a.levels.front()), study::to_text(papers.at(a.key))) << name << " " << a.key;
+                EXPECT_NE(std::find(part.one_at_a_time.begin(), part.one_at_a_time.end(), a.key),
+                          part.one_at_a_time.end())
+                    << name << ": " << a.key << " is not varied one at a time";
+                one_at_a_time += a.levels.size() - 1;
+            }
+            EXPECT_GE(relaxed, 3u) << name;
+            for (const study::Axis& a : part.excitation) walls *= part.ensemble ? 1 : a.levels.size();
+            expected += part.ensemble ? 0 : walls * one_at_a_time;
+        }
+        std::size_t listed = 0;
+        for (int id : grid.case_ids())
+            listed += spec.parts[grid.make_case(id).part].ensemble ? 0 : 1;
+        EXPECT_EQ(listed, expected) << name;
+    }
 }
 
 }  // namespace

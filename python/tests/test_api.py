@@ -389,3 +389,25 @@ def test_fraction_and_decimal_are_numbers_taken_as_the_nearest_float():
         import shutil
 
         shutil.rmtree(s.folder)
+
+
+# N at the corner the parapet pivots about has no lever at rest: Eq. (17e) gives Housner's b / h whatever N, and the
+# engine lifts off there too (the threshold target, 0.5 %).
+def test_overburden_eccentricity_moves_the_parapets_threshold_to_housners():
+    if "ode" not in vssw.engines():
+        pytest.skip("no ODE in this build")
+    c = vssw.compare("ode", model="parapet", height=1.2, thickness=0.2, xi=0.5, overburden_eccentricity=1.0)
+    assert c.closed_forms.threshold_g == pytest.approx(0.2 / 1.2, rel=1e-12)
+    assert c.threshold.reference == pytest.approx(0.2 / 1.2, rel=BISECTION_RTOL)
+    assert abs(c.threshold.rel_error) <= c.threshold.target
+
+
+# Rounded corners: an engine rolls on them, the analytic model refuses to (it gives Eq. 12r's threshold alone).
+def test_corner_radius_runs_in_an_engine_and_the_model_refuses_it():
+    wall = dict(model="parapet", height=1.2, thickness=0.2, xi=0.5, theta0=0.3, t_end=0.5)
+    with pytest.raises(vssw.InputError, match="corner radius r/b 0.1"):
+        vssw.simulate("analytic", corner_radius=0.1, **wall)
+    if "ode" in vssw.engines():
+        assert len(vssw.simulate("ode", corner_radius=0.1, **wall).t) > 1
+    with pytest.raises(vssw.InputError, match="e/b must be a number in"):
+        vssw.simulate("analytic", overburden_eccentricity=1.5, **wall)

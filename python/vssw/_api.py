@@ -102,7 +102,7 @@ def _knobs(settings):
 
 
 def _wall(model, height, thickness, hinge, xi, density, g, assumptions=None, kinematics=None, impact=None,
-          roller=None):
+          roller=None, overburden_eccentricity=0.0, corner_radius=0.0):
     """The wall and the analytic model's assumptions: a named set (default "mechanism", as every command's), any of
     kinematics, impact, roller overriding one part of it."""
     return _core.WallArgs(
@@ -111,7 +111,9 @@ def _wall(model, height, thickness, hinge, xi, density, g, assumptions=None, kin
         xi=_number("xi", xi), density=_number("density", density), g=_number("g", g),
         assumptions=_word("assumptions", assumptions, _core.DEFAULT_ASSUMPTIONS),
         kinematics=_word("kinematics", kinematics, None), impact=_word("impact", impact, None),
-        roller=_word("roller", roller, None))
+        roller=_word("roller", roller, None),
+        overburden_eccentricity=_number("overburden_eccentricity", overburden_eccentricity),
+        corner_radius=_number("corner_radius", corner_radius))
 
 
 def _record_path(record):
@@ -133,7 +135,7 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
              g=_GRAVITY, theta0=0.0, t_end=None, record=None, scale=None, pga=None, pulse=None, amplitude=None,
              pulse_period=None, duration=None, dt=None, sample_dt=None, iterations=None, settings=None,
              assumptions=None, kinematics=None, impact=None, roller=None, friction=None, stop_at_rest=True,
-             run_budget=None):
+             run_budget=None, overburden_eccentricity=0.0, corner_radius=0.0):
     """One backend's run of one wall: its trajectory as NumPy arrays (a vssw.Simulation).
 
     engine: "analytic" (the two-block model, this project's own DOP853 integration) or an engine of this build
@@ -144,6 +146,10 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
         hinge: the hinge's height ratio h1/h in (0, 1) (required for model="vssw"; ignored for a parapet).
         model: "vssw" (two blocks with a top roller, the paper's) or "parapet" (one block, Housner's).
         xi: overburden N/W on the top (0: none). density [kg/m^3] (default 1800). g [m/s^2] (default 9.81).
+        overburden_eccentricity: where N acts on the (upper) block's top face, e/b in [-1, 1] (0: the centre, the
+            paper's; +1: the corner on the side the wall tips to when theta1 > 0).
+        corner_radius: r/b of every block corner in [0, 0.5] (0: the paper's sharp blocks). Engines only for the
+            motion: the analytic model refuses a rounded wall (its pivots roll); its threshold is Eq. (12r).
     How it starts and what shakes it (one of a release and a ground motion, or both):
         theta0: release from rest at theta0 * alpha (a fraction of alpha1, or alpha for a parapet; -1 < theta0 < 1;
             the sign is the side: positive tips the wall towards +x).
@@ -176,7 +182,8 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
     Raises InputError (a ValueError) naming a bad value, SimulationError (a RuntimeError) when the run fails."""
     result = _with_python_names(lambda: _core.simulate(
         engine=_word("engine", engine, "analytic"),
-        wall=_wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller),
+        wall=_wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller,
+                   overburden_eccentricity, corner_radius),
         theta0=_number("theta0", theta0), t_end=_number("t_end", t_end, True), dt=_number("dt", dt, True),
         sample_dt=_number("sample_dt", sample_dt, True), iterations=_integer("iterations", iterations),
         knobs=_knobs(settings), record=_record_path(record), scale=_number("scale", scale, True),
@@ -285,7 +292,7 @@ def _with_python_names(call):
 def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY, g=_GRAVITY,
             theta0=None, record=None, scale=None, pga=None, pulse=None, amplitude=None, pulse_period=None,
             duration=None, assumptions=None, kinematics=None, impact=None, roller=None, dt=None, iterations=None,
-            settings=None, run_budget=None, progress=False):
+            settings=None, run_budget=None, progress=False, overburden_eccentricity=0.0):
     """Engines against the analytic model on the metrics the project holds them to (`vssw compare`, over the
     library): the threshold acceleration [g] (the smallest constant ground acceleration that lifts the wall off
     rest, by bisection on simulations to 1e-4), the period [s] (4 x the time from the release at theta0 to the first
@@ -295,8 +302,8 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     engine: a backend name (returns one vssw.Comparison), a list of names or "all" (every engine of this build but
         the analytic model and simbody-rigid; returns a list of Comparison, one whose engine failed carrying its
         `error` and NaN metrics).
-    height, thickness [m], hinge (h1/h), model ("vssw" | "parapet"), xi (N/W), density [kg/m^3], g [m/s^2]: the
-        wall, as vssw.simulate.
+    height, thickness [m], hinge (h1/h), model ("vssw" | "parapet"), xi (N/W), density [kg/m^3], g [m/s^2],
+        overburden_eccentricity (e/b): the wall, as vssw.simulate.
     theta0: release for the period and restitution, a fraction of alpha from 0.01 to below 1 (default 0.5).
     record (with scale or pga) or pulse (with amplitude, pulse_period, duration), as vssw.simulate takes them:
         instead, the engines and the analytic model from rest under that ground motion (`vssw compare --record`):
@@ -313,7 +320,8 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     Raises InputError naming a bad value before any engine runs; SimulationError when the one engine asked fails."""
     _progress(progress)
     names, several = _engine_list(engine)
-    wall = _wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller)
+    wall = _wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller,
+                 overburden_eccentricity)
     motion = dict(scale=scale, pga=pga, amplitude=amplitude, pulse_period=pulse_period, duration=duration)
     if record is None and pulse is None:
         given = [name for name, value in motion.items() if value is not None]
