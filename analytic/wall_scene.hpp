@@ -6,6 +6,8 @@
 #include <memory>
 #include <optional>
 
+#include "analytic/diaphragm.hpp"
+#include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
 #include "analytic/wall.hpp"
 
@@ -15,9 +17,12 @@ namespace vssw {
 struct Wall {
     std::optional<VsswGeometry> vssw;
     std::optional<ParapetGeometry> parapet;
+    // The VSSW's top support (docs/model/top-support.md): rigid (T_d = 0, the paper's Eq. 9) unless given; a parapet
+    // has no top support and refuses a flexible one (require_one_description).
+    Diaphragm diaphragm;
 
-    static Wall of(const VsswGeometry& w) { return {w, std::nullopt}; }
-    static Wall of(const ParapetGeometry& p) { return {std::nullopt, p}; }
+    static Wall of(const VsswGeometry& w) { return {w, std::nullopt, {}}; }
+    static Wall of(const ParapetGeometry& p) { return {std::nullopt, p, {}}; }
     bool is_vssw() const { return vssw.has_value(); }
     double alpha() const { return vssw ? vssw->alpha1 : parapet->alpha; }  // reference angle alpha1 or alpha
     double gravity() const { return vssw ? vssw->g : parapet->g; }
@@ -30,8 +35,14 @@ struct Wall {
     double corner_radius() const { return corner_radius_ratio() * (vssw ? vssw->b : parapet->b); }
 };
 
-// Throws InputError unless exactly one description (VSSW or parapet) is set: every backend's first check.
+// Throws InputError unless exactly one description (VSSW or parapet) is set and the diaphragm is in range and rigid
+// for a parapet (it has no top support): every backend's first check.
 void require_one_description(const Wall& wall);
+
+// Throws InputError when the wall's top support is flexible and a ground motion shakes it: the one-degree-of-freedom
+// model cannot follow u_d != 0 (docs/model/top-support.md, "What the model can follow"). Without ground motion u_d = 0
+// and the paper's model holds as it is.
+void require_model_follows_top(const Wall& wall, const GroundMotion& ground);
 
 // The rocking model of a wall: make_vssw_model(*wall.vssw, k) or make_parapet_model(*wall.parapet) (the parapet has
 // one kinematics; k is ignored). Throws InputError unless exactly one description is set.

@@ -17,6 +17,7 @@ HistoryRun prepare_history(const WallOptions& wall, const ModelOptions& model, c
                            const HistoryRequest& request) {
     ChosenModel chosen = choose_model(wall, model);
     LoadedMotion input = load_ground_motion(motion);
+    require_model_follows_top(chosen.wall, input.motion);  // history is the analytic model's
     SimulationOptions options;
     options.output_dt = request.output_dt.value_or(input.sample_dt);
     require(std::isfinite(options.output_dt) && options.output_dt > 0.0, "output interval (--output-dt) [s]",

@@ -58,6 +58,17 @@ void add_corner_radius_option(CLI::App& cmd, WallOptions& o) {
                                kMaxCornerRadius));
 }
 
+void add_diaphragm_options(CLI::App& cmd, WallOptions& o) {
+    cmd.add_option("--diaphragm-period", o.diaphragm.period,
+                   fmt::format("period T_d [s] of the diaphragm that carries a VSSW's top roller, in [0, {:g}]: the "
+                               "roller follows its response to the ground motion (Eq. 9d); 0 a rigid diaphragm, the "
+                               "top moving with the ground (the paper's Eq. 9, default)",
+                               kMaxDiaphragmPeriod));
+    cmd.add_option("--diaphragm-damping", o.diaphragm.damping,
+                   fmt::format("the diaphragm's damping ratio zeta_d in [0, {:g}] (default {:g})", kMaxDiaphragmDamping,
+                               kDefaultDiaphragmDamping));
+}
+
 void add_model_options(CLI::App& cmd, ModelOptions& o) {
     cmd.add_option("--model", o.model, "vssw (two blocks with a top roller) or parapet (one block) (default vssw)");
 }
@@ -118,13 +129,20 @@ ParapetGeometry parapet_geometry(const WallOptions& o) {
 ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
     const WallKind kind = parse_wall_kind(options.model);
     const Assumptions a = resolve_assumptions(options);  // checked even where a parapet ignores a part
+    require_diaphragm(wall.diaphragm, "--diaphragm-period T_d (s)", "--diaphragm-damping zeta_d");
     if (kind == WallKind::parapet) {
+        if (!wall.diaphragm.is_rigid())
+            throw InputError(fmt::format("--diaphragm-period {:g}: a parapet has no top support for a diaphragm to "
+                                         "carry (give it for a VSSW, or 0)",
+                                         wall.diaphragm.period));
         const ParapetGeometry p = parapet_geometry(wall);
         return {kind, Wall::of(p), with_impact_law(make_parapet_model(p), a.impact), a};
     }
     const VsswGeometry w = vssw_geometry(wall);
     require_a_model(a, unilateral_with_paper_kinematics(options));
-    return {kind, Wall::of(w), with_impact_law(make_vssw_model(w, a.kinematics), a.impact), a};
+    Wall built = Wall::of(w);
+    built.diaphragm = wall.diaphragm;
+    return {kind, built, with_impact_law(make_vssw_model(w, a.kinematics), a.impact), a};
 }
 
 io::Json assumptions_json(const ChosenModel& c) {
@@ -150,6 +168,10 @@ io::Json wall_inputs_json(const WallOptions& o, WallKind kind) {
     j["density"] = o.density;
     j["g"] = o.g;
     if (o.eccentricity != 0.0) j["overburden_eccentricity"] = o.eccentricity;
+    if (!o.diaphragm.is_rigid()) {  // a rigid top's outputs are those of before the diaphragm existed
+        j["diaphragm_period"] = o.diaphragm.period;
+        j["diaphragm_damping"] = o.diaphragm.damping;
+    }
     if (o.corner_radius != 0.0) j["corner_radius"] = o.corner_radius;
     return j;
 }
@@ -157,10 +179,13 @@ io::Json wall_inputs_json(const WallOptions& o, WallKind kind) {
 std::string describe_wall(const WallOptions& o, WallKind kind) {
     const std::string hinge = kind == WallKind::vssw && o.hinge ? fmt::format(", hinge h1/h {}", *o.hinge) : "";
     const std::string at = o.eccentricity != 0.0 ? fmt::format(" at e/b {}", o.eccentricity) : "";
+    const std::string top = o.diaphragm.is_rigid() ? ""
+                            : fmt::format(", top support on a diaphragm T_d {} s zeta_d {}", o.diaphragm.period,
+                                          o.diaphragm.damping);
     const std::string corners = o.corner_radius != 0.0 ? fmt::format(", corners rounded r/b {}", o.corner_radius) : "";
-    return fmt::format("{}: height {} m, thickness {} m{}, xi {}{}, density {} kg/m^3, g {} m/s^2{}",
+    return fmt::format("{}: height {} m, thickness {} m{}, xi {}{}, density {} kg/m^3, g {} m/s^2{}{}",
                        kind == WallKind::vssw ? "VSSW" : "parapet", o.height, o.thickness, hinge, o.xi, at, o.density,
-                       o.g, corners);
+                       o.g, top, corners);
 }
 
 }  // namespace vssw::cli

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "analytic/assumption_sets.hpp"
+#include "analytic/diaphragm.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
 #include "analytic/simulate.hpp"
@@ -30,6 +31,7 @@ struct WallOptions {
     double eccentricity = 0.0;    // e/b of N on the (upper) body's top face, in [-1, 1] (analytic/geometry.hpp)
     double density = kDefaultDensity;
     double g = kDefaultGravity;
+    Diaphragm diaphragm;  // the VSSW's top support (--diaphragm-period, --diaphragm-damping): rigid unless given
     double corner_radius = 0.0;   // r/b of the blocks' rounded corners, in [0, kMaxCornerRadius] (analytic/wall.hpp)
 };
 
@@ -59,6 +61,9 @@ Assumptions resolve_assumptions(const ModelOptions& options);
 // command also takes --model) only changes the help of --hinge: whether a hinge is required is decided by
 // vssw_geometry(), so that a parapet can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
+// --diaphragm-period, --diaphragm-damping: the VSSW's top support carried by a diaphragm (analytic/diaphragm.hpp), for
+// the commands that run a wall under a ground motion (history, compare). Checked by choose_model.
+void add_diaphragm_options(CLI::App& cmd, WallOptions& options);
 // --corner-radius: on the commands whose answer holds for rounded corners (compare, wall); the analytic model's
 // motion is the sharp blocks' (docs/model/analytic-core.md, "Rounded corners"), so free and history do not take it.
 void add_corner_radius_option(CLI::App& cmd, WallOptions& options);

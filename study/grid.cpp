@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "analytic/closed_forms.hpp"
+#include "analytic/diaphragm.hpp"
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "analytic/specimens.hpp"
@@ -38,7 +39,8 @@ const std::vector<std::string> kBaseColumns = {"model", "height",    "thickness"
 const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "specimen", "overburden_eccentricity",
                                                 "friction", "hinge_friction", "units", "duration", "tolerance", "max_pga",
                                                 "step", "perturbation", "pgv", "sa", "arias", "sa_period", "sa_damping",
-                                                "response_tail", "corner_radius"};
+                                                "response_tail", "corner_radius", "diaphragm_period",
+                                                "diaphragm_damping"};
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
@@ -468,6 +470,11 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
         if (l.has("friction")) c.scene.friction = l.num("friction", 0.0);
         if (l.has("hinge_friction")) c.scene.hinge_friction = l.num("hinge_friction", 0.0);
     }
+    // The VSSW's top support (analytic/diaphragm.hpp): rigid unless the file gives a period; a parapet has none.
+    c.scene.diaphragm = {l.num("diaphragm_period", 0.0), l.num("diaphragm_damping", kDefaultDiaphragmDamping)};
+    if (c.model == "parapet" && !c.scene.diaphragm.is_rigid())
+        throw InputError(fmt::format("diaphragm_period = {:g} s: a parapet has no top support for a diaphragm to carry",
+                                     c.scene.diaphragm.period));
 }
 
 // The record (scaled by the factor given or to the PGA given) or the pulse, and scale-to-collapse's search bounds.

@@ -25,7 +25,8 @@ using Json = nlohmann::ordered_json;
 const std::set<std::string> kNumericColumns = {
     "case_id", "height", "thickness", "hinge",  "xi",     "density",  "g",        "theta0",   "scale",
     "pga",     "amplitude", "pulse_period", "alpha", "R", "alpha1", "alpha2", "R1", "specimen", "duration",
-    "tolerance", "max_pga", "step", "overburden_eccentricity", "friction", "hinge_friction", "value", "corner_radius"};
+    "tolerance", "max_pga", "step", "overburden_eccentricity", "friction", "hinge_friction", "value", "corner_radius",
+    "diaphragm_period", "diaphragm_damping"};
 
 }  // namespace
 

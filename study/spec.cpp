@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/diaphragm.hpp"
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "analytic/ground_motion.hpp"
@@ -31,10 +32,11 @@ namespace vssw::study {
 
 const std::vector<std::string> kWallKeys = {"model", "specimen", "height", "thickness", "alpha", "R",      "alpha1",
                                             "alpha2", "R1",      "hinge",  "xi",        "overburden_eccentricity",
-                                            "density", "g", "corner_radius", "friction", "hinge_friction"};
+                                            "density", "g", "corner_radius", "friction", "hinge_friction",
+                                            "diaphragm_period", "diaphragm_damping"};
 const std::vector<std::string> kAssumptionKeys = {"kinematics", "impact", "roller"};
 const std::vector<std::string> kPhysicalAssumptionKeys = {"overburden_eccentricity", "friction", "hinge_friction",
-                                                         "corner_radius"};
+                                                         "corner_radius", "diaphragm_period"};
 const std::vector<std::string> kExcitationKeys = {"theta0",       "file",     "units",     "scale",
                                                   "pga",          "pgv",      "sa",        "arias",
                                                   "shape",        "amplitude", "pulse_period",
@@ -173,6 +175,16 @@ Level wall_level(const Reader& r, const std::string& key, const json& v) {
         const double x = r.number(v, key, "a Table 1 specimen number");
         if (x != std::floor(x) || x < 1.0 || x > kMaxSpecimen)
             r.fail(key, fmt::format("must be a Table 1 specimen number, got {}", io::dump_json(v)));
+        return x;
+    }
+    if (k == "diaphragm_period" || k == "diaphragm_damping") {  // the VSSW's top support (analytic/diaphragm.hpp)
+        const bool period = k == "diaphragm_period";
+        const double limit = period ? kMaxDiaphragmPeriod : kMaxDiaphragmDamping;
+        const double x = r.number(v, key, period ? "T_d in s" : "zeta_d");
+        if (!(x >= 0.0 && x <= limit))
+            r.fail(key, fmt::format("must be {} in [0, {:g}], got {}", period ? "the diaphragm's period T_d [s]"
+                                                                              : "the diaphragm's damping ratio",
+                                    limit, io::dump_json(v)));
         return x;
     }
     if (k == "overburden_eccentricity") {

@@ -7,7 +7,8 @@
 //   metrics = ["threshold_g", "period", "restitution"]
 //   engines = ["analytic", "ode"]            # or [engines.ode] dt = 2e-4 (a table of engines with their settings)
 //   [wall]          model, height, thickness, hinge, xi, overburden_eccentricity, density, g, corner_radius, friction (the
-//                   base's, and the hinge's unless hinge_friction; given, the engines measure sliding) (or alpha and R;
+//                   base's, and the hinge's unless hinge_friction; given, the engines measure sliding), diaphragm_period,
+//                   diaphragm_damping (the VSSW's top support: analytic/diaphragm.hpp) (or alpha and R;
 //                   alpha1, alpha2 and R1;
 //                   specimen: a Table 1 number, data/table1.csv)
 //   [assumptions]   set (paper | mechanism, default mechanism: analytic/assumption_sets.hpp), one name, never a list;

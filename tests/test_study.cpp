@@ -406,6 +406,31 @@ TEST(StudyMeasure, OverburdenEccentricityIsAWallAxis) {
                 kThresholdBracket);
 }
 
+// diaphragm_period is a wall axis: T_d = 0 is the rigid top's row; T_d > 0 under a pulse is a failed row of the analytic
+// model naming the reason (it cannot follow the moving top: docs/model/top-support.md), never a silent rigid run.
+TEST(StudyMeasure, DiaphragmPeriodIsAWallAxis) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"peak_rotation\"]\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
+                                  "diaphragm_period = [0.0, 0.2]\n[excitation]\nkind = \"pulse\"\nshape = \"sine\"\n"
+                                  "amplitude = 0.3\npulse_period = 0.5\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    const std::size_t period = t.column("diaphragm_period"), status = t.column("status");
+    ASSERT_EQ(t.rows.size(), 2u);
+    for (const auto& row : t.rows) {
+        if (row[period] == "0") EXPECT_EQ(row[status], "ok");
+        else EXPECT_NE(row[status].find("cannot follow a flexible diaphragm"), std::string::npos) << row[status];
+    }
+    EXPECT_GT(value_of(t, "peak_rotation", {{"diaphragm_period", "0"}}), 0.0);
+}
+
+// A parapet has no top support: a diaphragm period for it is refused.
+TEST(StudyMeasure, DiaphragmOnAParapetIsRefused) {
+    const TempDir dir;
+    EXPECT_THROW(Grid(study_of(dir, "metrics = [\"threshold_g\"]\n[wall]\nmodel = \"parapet\"\nheight = 1.2\n"
+                                    "thickness = 0.2\ndiaphragm_period = 0.2\n[excitation]\nkind = \"threshold\"\n")),
+                 InputError);
+}
+
 // corner_radius is a wall axis: an engine that rounds its blocks lifts the parapet at Eq. (17r), (1 - r/b) times the
 // sharp threshold (1 + xi) b/h; at r/b 0.2 the sharp value would be 25 % off, and r/b 0 must give it.
 TEST(StudyMeasure, CornerRadiusIsAWallAxis) {

@@ -31,6 +31,9 @@
 //  - ground motion: by default the pseudo-forces -m a_h(t) as a tilt of gravity, (-a_h, -g), set before each step
 //    at its midpoint; with moving_supports = 1 the ground body (edge and guides) is kinematic, its velocity for the
 //    step V_k = V_{k-1} + dt a_h(t_{k-1/2}) (ODE's rule: the same impulse per step as the pseudo-forces);
+//  - a flexible top support (WallScene::diaphragm, T_d > 0): the guides (or the wheel joint) on a kinematic carrier
+//    of their own, moved at the ground's velocity plus u_d's, so that it sits u_d(t) of Eq. (9d) from the ground at
+//    each step's end (docs/model/top-support.md);
 //  - sleeping off (a slowly rocking wall must not be put to sleep), continuous collision off (nothing here moves a
 //    body's size in a step; docs/engines.md "Box2D"), restitution 0 at every contact.
 #include "multibody/box2d/box2d_engine.hpp"
@@ -162,6 +165,11 @@ public:
         const Frictions mu = fixture_frictions(scene);
         add_fixture(*ground_, edge, 0.0, mu.ground, kGroundBits, kBlockBits);
 
+        if (scene.vssw && !scene.diaphragm.is_rigid()) {  // a flexible top support: the roller's own carrier
+            b2BodyDef carrier_def;
+            carrier_def.type = b2_kinematicBody;
+            carrier_ = world_.CreateBody(&carrier_def);
+        }
         const WallPose pose = pose_at(scene, theta0);
         lower_ = add_block(sizes_.h_lower, sizes_.m_lower, pose.lower, mu.lower);
         if (scene.vssw) {
@@ -174,6 +182,9 @@ public:
     b2Body& lower() { return *lower_; }
     b2Body* upper() { return upper_; }
     b2Body& ground() { return *ground_; }
+    // What holds the roller: the ground, or with a flexible top support its carrier, moved by u_d from the ground.
+    b2Body& carrier() { return carrier_ ? *carrier_ : *ground_; }
+    bool has_carrier() const { return carrier_ != nullptr; }
 
     // One step of dt; forces and gravity for it must have been set.
     void step(double dt) {
@@ -243,7 +254,7 @@ private:
             b2EdgeShape guide;
             guide.SetTwoSided(vec(side * (b + r), y_top - reach), vec(side * (b + r), y_top + reach));
             guide.m_radius = 0.0f;
-            add_fixture(*ground_, guide, 0.0, 0.0, kGuideBits, kRollerCornerBits);
+            add_fixture(carrier(), guide, 0.0, 0.0, kGuideBits, kRollerCornerBits);
         }
     }
 
@@ -251,7 +262,7 @@ private:
     // the ground, rotation free, no spring (stiffness 0 and damping 0, b2WheelJointDef's defaults). Moved to the
     // other corner when that one's guide binds (the corners' rule of every adapter, left_guide_binds).
     void place_wheel() {
-        const double b = sizes_.b, x0 = ground_->GetPosition().x;
+        const double b = sizes_.b, x0 = carrier().GetPosition().x;
         const b2Vec2 right = world_point(*upper_, b, sizes_.h_upper), left = world_point(*upper_, -b, sizes_.h_upper);
         const int side = left_guide_binds(right.x, left.x, x0, b) ? -1 : 1;
         if (wheel_ && side == wheel_side_) return;
@@ -259,7 +270,7 @@ private:
         b2WheelJointDef def;
         const b2Vec2 corner = side > 0 ? right : left;
         // The anchor on the line itself (x = x0 +- b), at the corner's height: the joint then holds the corner there.
-        def.Initialize(ground_, upper_, vec(x0 + side * b, corner.y), b2Vec2(0.0f, 1.0f));
+        def.Initialize(&carrier(), upper_, vec(x0 + side * b, corner.y), b2Vec2(0.0f, 1.0f));
         def.localAnchorB = vec(side * b, sizes_.h_upper);
         def.stiffness = 0.0f;
         def.damping = 0.0f;
@@ -273,6 +284,7 @@ private:
     BlockSizes sizes_;
     double corner_radius_;  // r [m] of every block corner (0: sharp boxes)
     b2Body* ground_ = nullptr;
+    b2Body* carrier_ = nullptr;  // a flexible top support only
     b2Body* lower_ = nullptr;
     b2Body* upper_ = nullptr;
     b2Joint* wheel_ = nullptr;
@@ -324,6 +336,8 @@ public:
         } else {
             w_.world().SetGravity(vec(-g.a_h, -g_));  // -m a_h at every centre of mass: gravity tilted
         }
+        // The roller's carrier sits u_d(t) from the ground at the step's end (step_loop.hpp, GroundStep::top_v).
+        if (w_.has_carrier()) w_.carrier().SetLinearVelocity(vec(g.v + g.top_v, 0.0));
     }
     void push_overburden() { top_body_.ApplyForce(vec(0.0, -N_), world_point(top_body_, load_x_, top_half_), true); }
     void step(const StepTimes& st, const GroundStep&) { w_.step(st.dt); }
@@ -377,7 +391,7 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
     Box2dStepping stepping(w, scene, knobs);
     RunMonitor monitor("Box2D", scene, ex, settings.dt, knobs.limits);
     const StepLoop loop{settings.dt, sample_every(settings, settings.dt), knobs.moving_supports,
-                        scene.overburden() > 0.0};
+                        scene.overburden() > 0.0, scene.diaphragm};
     return run_fixed_steps(stepping, ex, loop, monitor);
 }
 

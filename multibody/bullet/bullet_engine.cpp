@@ -18,7 +18,9 @@
 //  - ground motion: by default pseudo-forces -m a_h(t) at the centres of mass on fixed supports; with the setting
 //    moving_supports = 1 the ground (and the roller, anchored to it) moves instead, as a kinematic body following
 //    x_g(t), the ground acceleration integrated twice. For rigid bodies the two are the same motion relative to the
-//    ground; the cross-engine suite checks that they agree.
+//    ground; the cross-engine suite checks that they agree;
+//  - a flexible top support (WallScene::diaphragm, T_d > 0): the roller's lines on a kinematic carrier of their own,
+//    moved to the ground's displacement plus u_d(t) of Eq. (9d) each step (docs/model/top-support.md).
 #include "multibody/bullet/bullet_engine.hpp"
 
 #include <btBulletDynamicsCommon.h>
@@ -139,12 +141,21 @@ public:
             ground.setActivationState(DISABLE_DEACTIVATION);
         }
         ground_ = &ground;
+        // A flexible top support: the guides' lines on a kinematic carrier of their own, its origin's x their offset.
+        btRigidBody* carrier = nullptr;
+        if (scene.vssw && !scene.diaphragm.is_rigid()) {
+            carrier = &add_static(btVector3(b, b, kDepth), btVector3(0, 0, 0));
+            carrier_motion_ = std::make_unique<GroundMotionState>(btVector3(0, 0, 0));
+            carrier->setMotionState(carrier_motion_.get());
+            carrier->setCollisionFlags(carrier->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+            carrier->setActivationState(DISABLE_DEACTIVATION);
+        }
         lower_ = add_block(sizes_.b, sizes_.h_lower, sizes_.m_lower);
         if (scene.vssw) upper_ = add_block(sizes_.b, sizes_.h_upper, sizes_.m_upper);
         set_pose(pose_at(scene, theta0));
         contacts_ = std::make_unique<CornerContacts>(ground, *lower_, upper_, sizes_.b, sizes_.h_lower,
                                                      sizes_.h_upper, scene.base_mu(), scene.hinge_mu(),
-                                                     scene.corner_radius());
+                                                     scene.corner_radius(), carrier);
     }
 
     // One step of dt (forces applied before it act during it).
@@ -156,6 +167,10 @@ public:
     // Moves the ground (moving supports only) to x for the coming step.
     void move_ground(double x) {
         if (ground_motion_) ground_motion_->set_displacement(x);
+    }
+    // Moves a flexible top support's carrier to x (the ground's displacement plus u_d) for the coming step.
+    void move_top(double x) {
+        if (carrier_motion_) carrier_motion_->set_displacement(x);
     }
     double ground_velocity() const { return ground_ ? ground_->getLinearVelocity().x() : 0.0; }
     btRigidBody& lower() { return *lower_; }
@@ -208,6 +223,7 @@ private:
     std::vector<std::unique_ptr<btRigidBody>> bodies_;
     std::unique_ptr<CornerContacts> contacts_;
     std::unique_ptr<GroundMotionState> ground_motion_;
+    std::unique_ptr<GroundMotionState> carrier_motion_;  // a flexible top support only
     btRigidBody* ground_ = nullptr;
     btRigidBody* lower_ = nullptr;
     btRigidBody* upper_ = nullptr;
@@ -266,6 +282,7 @@ public:
             lower_.applyCentralForce(btVector3(-s_.m_lower * kDepth * g.a_h, 0, 0));
             if (upper_) upper_->applyCentralForce(btVector3(-s_.m_upper * kDepth * g.a_h, 0, 0));
         }
+        w_.move_top(g.x + g.top_u);  // u_d(t) from the ground at the step's end (step_loop.hpp)
     }
     // N as its impulse over the step, added to the velocities before the solve, not as a force: Bullet's solver adds a
     // force's torque to a body's spin only after the solve, and its friction rows leave that torque out of the
@@ -325,7 +342,7 @@ Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, 
     BulletStepping stepping(w, scene, knobs, settings.dt);
     RunMonitor monitor("Bullet", scene, ex, settings.dt, knobs.limits);
     const StepLoop loop{settings.dt, sample_every(settings, settings.dt), knobs.moving_supports,
-                        scene.overburden() > 0.0};
+                        scene.overburden() > 0.0, scene.diaphragm};
     return run_fixed_steps(stepping, ex, loop, monitor);
 }
 

@@ -24,25 +24,29 @@ public:
     // ground: the static (or kinematic) box whose top face is y = 0; upper may be null (a parapet). b: half width;
     // h_lower, h_upper: half heights; friction at the ground and at the hinge (the roller is frictionless): each
     // point's m_combinedFriction, Bullet's Coulomb bound on its two friction rows, set here rather than mixed.
-    // corner_radius: r of every block corner (kit/rounded_corners.hpp), 0 for the sharp blocks.
+    // corner_radius: r of every block corner (kit/rounded_corners.hpp), 0 for the sharp blocks. roller: the body whose
+    // x the guides' lines follow, the ground's unless a flexible top support carries them (its origin's x is then the
+    // lines' offset, as the ground's is); the roller holds the nominal top corners, rounded or not.
     CornerContacts(btRigidBody& ground, btRigidBody& lower, btRigidBody* upper, double b, double h_lower,
-                   double h_upper, double friction, double hinge_friction, double corner_radius = 0.0)
-        : lower_(lower), upper_(upper), ground_(ground), b_(b), h_lower_(h_lower), h_upper_(h_upper),
-          friction_(friction), hinge_friction_(hinge_friction), r_(corner_radius) {
+                   double h_upper, double friction, double hinge_friction, double corner_radius = 0.0,
+                   btRigidBody* roller = nullptr)
+        : lower_(lower), upper_(upper), roller_(roller ? *roller : ground), b_(b), h_lower_(h_lower),
+          h_upper_(h_upper), friction_(friction), hinge_friction_(hinge_friction), r_(corner_radius) {
         manifolds_[0] = make(lower, ground);
         if (upper) {
             manifolds_[1] = make(*upper, lower);
-            manifolds_[2] = make(*upper, ground);
+            manifolds_[2] = make(*upper, roller_);
         }
     }
 
-    // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground).
+    // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground, or with the
+    // flexible top support's carrier).
     void update() {
         if (r_ > 0.0) {
             update_rounded();
             return;
         }
-        const double x0 = ground_.getWorldTransform().getOrigin().x();
+        const double x0 = roller_.getWorldTransform().getOrigin().x();
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
         const btTransform& tl = lower_.getWorldTransform();
@@ -97,7 +101,7 @@ private:
     // common end, then the arcs rolling on each other; the circles lie inside the blocks, so the distance never
     // reports an overlap the outlines do not have. The roller holds the nominal top corners, as for sharp blocks.
     void update_rounded() {
-        const double x0 = ground_.getWorldTransform().getOrigin().x(), in = b_ - r_;
+        const double x0 = roller_.getWorldTransform().getOrigin().x(), in = b_ - r_;
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
         const btTransform& tl = lower_.getWorldTransform();
@@ -150,7 +154,7 @@ private:
 
     btRigidBody& lower_;
     btRigidBody* upper_;
-    btRigidBody& ground_;
+    btRigidBody& roller_;  // what the guides' lines follow: the ground, or a flexible top support's carrier
     double b_, h_lower_, h_upper_, friction_, hinge_friction_;
     double r_;  // the corners' radius (0: sharp)
     std::array<std::unique_ptr<btPersistentManifold>, 3> manifolds_{};

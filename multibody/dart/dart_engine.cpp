@@ -21,7 +21,9 @@
 //    lower block the bottom capsule of the upper block on its side; masses and inertias stay the rectangles';
 //  - N: an external force at the centre of the top face each step (DART clears external forces after each step),
 //    only when xi > 0; ground motion: the world's gravity (-a_h(t), -g) each step, a_h at the step's midpoint (a
-//    uniform pseudo-force -m a_h on every block), or (moving_supports = 1) the ground and the guides moving.
+//    uniform pseudo-force -m a_h on every block), or (moving_supports = 1) the ground and the guides moving;
+//  - a flexible top support (WallScene::diaphragm, T_d > 0): the guides on a velocity-driven skeleton of their own,
+//    slid at the ground's velocity plus u_d's, so that they sit u_d(t) of Eq. (9d) from the ground at each step's end;
 //
 // Impacts: the LCP resolves a landing with every closing contact (new pivot, hinge, roller) at once, restitution 0:
 // the whole new mechanism's plastic impact, as in every other engine (docs/engines.md "DART").
@@ -55,6 +57,7 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -189,14 +192,7 @@ public:
         const double half_width = knobs.moving_supports ? 1e4 : 4.0 * h + 10.0 * b;
         dd::SkeletonPtr ground = dd::Skeleton::create("ground");
         if (knobs.moving_supports) {
-            dd::PrismaticJoint::Properties slide;
-            slide.mAxis = Vector3d::UnitX();
-            auto pair = ground->createJointAndBodyNodePair<dd::PrismaticJoint>(nullptr, slide);
-            ground_joint_ = pair.first;
-            ground_joint_->setActuatorType(dd::Joint::VELOCITY);
-            ground_body_ = pair.second;
-            // A kinematic joint's body takes no impulse; its mass only keeps the articulated inertia regular.
-            ground_body_->setMass(1.0);
+            std::tie(ground_joint_, ground_body_) = x_slider(ground);
         } else {
             ground_body_ = ground->createJointAndBodyNodePair<dd::WeldJoint>().second;
         }
@@ -224,13 +220,21 @@ public:
                 const auto upper_bottom = add_rounding(upper_, sizes_.h_upper, rc, scene.hinge_mu(), -1.0);
                 for (std::size_t i = 0; i < lower_top.size(); ++i) filter->allow(lower_top[i], upper_bottom[i]);
             }
+            // A flexible top support: the guides on a skeleton of their own, slid at the ground's velocity plus
+            // u_d's (docs/model/top-support.md), kinematic as the moving ground is.
+            dd::BodyNode* guide_body = ground_body_;
+            if (!scene.diaphragm.is_rigid()) {
+                dd::SkeletonPtr top = dd::Skeleton::create("top support");
+                std::tie(top_joint_, guide_body) = x_slider(top);
+                world_->addSkeleton(top);
+            }
             // The roller: a sphere centred at each top corner, a guide whose face is the radius outside x = +-b.
             const double r = kRollerRadiusShare * b, guide_half = b;
             for (double side : {-1.0, 1.0}) {
                 dd::ShapeNode* sphere =
                     add_shape(upper_, std::make_shared<dd::SphereShape>(r), Vector3d(side * b, sizes_.h_upper, 0.0), 0.0);
                 dd::ShapeNode* guide = add_shape(
-                    ground_body_, std::make_shared<dd::BoxShape>(Vector3d(2.0 * guide_half, 4.0 * h, 2.0 * kDepth)),
+                    guide_body, std::make_shared<dd::BoxShape>(Vector3d(2.0 * guide_half, 4.0 * h, 2.0 * kDepth)),
                     Vector3d(side * (b + r + guide_half), 2.0 * h, 0.0), 0.0);
                 filter->allow(sphere, guide);
             }
@@ -247,9 +251,11 @@ public:
     double ground_velocity() const { return ground_joint_ ? ground_joint_->getVelocity(0) : 0.0; }
     int contacts() const { return static_cast<int>(world_->getLastCollisionResult().getNumContacts()); }
 
-    // One step: the pseudo-force as gravity (-a_h, -g), or the ground's velocity for the step (moving supports).
-    // External forces must have been added before; DART clears them after the step.
-    void step(double a_h, double ground_velocity) {
+    // One step: the pseudo-force as gravity (-a_h, -g), or the ground's velocity for the step (moving supports); a
+    // flexible top support's guides at the ground's velocity plus u_d's. External forces must have been added
+    // before; DART clears them after the step.
+    void step(double a_h, double ground_velocity, double top_velocity) {
+        if (top_joint_) top_joint_->setCommand(0, ground_velocity + top_velocity);
         if (ground_joint_) {
             ground_joint_->setCommand(0, ground_velocity);
         } else {
@@ -259,6 +265,17 @@ public:
     }
 
 private:
+    // A body slid along x by a velocity-driven prismatic joint: kinematic, as a velocity joint's body takes no
+    // impulse; its mass only keeps the articulated inertia regular.
+    static std::pair<dd::PrismaticJoint*, dd::BodyNode*> x_slider(const dd::SkeletonPtr& skeleton) {
+        dd::PrismaticJoint::Properties slide;
+        slide.mAxis = Vector3d::UnitX();
+        auto pair = skeleton->createJointAndBodyNodePair<dd::PrismaticJoint>(nullptr, slide);
+        pair.first->setActuatorType(dd::Joint::VELOCITY);
+        pair.second->setMass(1.0);
+        return {pair.first, pair.second};
+    }
+
     dd::BodyNode* add_block(const std::string& name, double half_h, double mass_per_depth, double friction,
                             dd::ShapeNode*& box_node) {
         dd::SkeletonPtr skeleton = dd::Skeleton::create(name);
@@ -304,6 +321,7 @@ private:
     dart::simulation::WorldPtr world_;
     dd::BodyNode* ground_body_ = nullptr;
     dd::PrismaticJoint* ground_joint_ = nullptr;
+    dd::PrismaticJoint* top_joint_ = nullptr;  // a flexible top support's guides
     dd::BodyNode* lower_ = nullptr;
     dd::BodyNode* upper_ = nullptr;
 };
@@ -347,7 +365,7 @@ public:
     void push_overburden() {
         top_body_->addExtForce(Vector3d(0.0, -N_, 0.0), Vector3d(load_x_, top_half_, 0.0), false, true);
     }
-    void step(const StepTimes&, const GroundStep& g) { w_.step(g.a_h, g.v); }
+    void step(const StepTimes&, const GroundStep& g) { w_.step(g.a_h, g.v, g.top_v); }
     WallState state(const GroundStep& g) const {
         const double x_g = w_.ground_x();
         auto block = [&](const dd::BodyNode& body) {  // relative to the (moving) ground
@@ -397,7 +415,8 @@ Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, co
     dart::constraint::ContactConstraint::setErrorAllowance(knobs.allowance);
     DartScene w(scene, knobs, ex.theta0, dt);
     DartStepping stepping(w, scene);
-    const StepLoop loop{dt, sample_every(settings, dt), knobs.moving_supports, scene.overburden() > 0.0};
+    const StepLoop loop{dt, sample_every(settings, dt), knobs.moving_supports, scene.overburden() > 0.0,
+                        scene.diaphragm};
     return run_fixed_steps(stepping, ex, loop, monitor);
 }
 

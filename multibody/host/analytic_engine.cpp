@@ -91,6 +91,13 @@ void AnalyticEngine::check_settings(const EngineSettings& settings) const {
 Trajectory AnalyticEngine::simulate(const WallScene& scene, const Excitation& excitation,
                                     const EngineSettings& settings) const {
     const Knobs knobs = read_knobs(settings);
+    // A flexible top under a ground motion is no input error but a run this backend cannot make: the run fails with
+    // the reason, and the engines beside it in a comparison or a study still run.
+    try {
+        require_model_follows_top(scene, excitation.horizontal);
+    } catch (const InputError& e) {
+        throw EngineFailure(e.what());
+    }
     std::unique_ptr<RockingModel> model =
         with_impact_law(analytic_model(scene, knobs.assumptions.kinematics), knobs.assumptions.impact);
     if (knobs.restitution_error != 0.0) {  // 0: the model itself, untouched (the same numbers to the bit)

@@ -52,8 +52,12 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),
       // From here on no acceleration can lift a wall at rest (kRestCannotLiftShare): rest ends the run.
-      quiet_from_(ex.horizontal.is_zero() ? 0.0
-                                          : ex.horizontal.quiet_after(kRestCannotLiftShare * figures_.rest_threshold)),
+      // A flexible top support rings on after the ground stops and can still turn the upper block: its runs go to
+      // their end.
+      quiet_from_(!scene.diaphragm.is_rigid() ? HUGE_VAL
+                  : ex.horizontal.is_zero()
+                      ? 0.0
+                      : ex.horizontal.quiet_after(kRestCannotLiftShare * figures_.rest_threshold)),
       stop_angle_(ex.stop_angle),
       stop_at_rest_(ex.stop_at_rest),
       limits_(limits),

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "analytic/diaphragm.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/wall_parts.hpp"
@@ -21,6 +22,10 @@ struct GroundStep {
     // Moving supports only (0 otherwise): the supports' velocity for the step, V_k = V_{k-1} + dt a_h (the velocity
     // change the pseudo-forces would give the blocks), and their displacement at its end by the midpoint rule.
     double v = 0.0, x = 0.0;
+    // A flexible top support only (0 otherwise: the paper's rigid diaphragm): the roller's offset from the ground at
+    // the step's end, u_d(t) of Eq. (9d), and the velocity relative to the ground that carries it there over the step,
+    // (u_d(t) - u_d(t0)) / dt, so that a guide moved at it sits exactly on u_d at every step's end.
+    double top_u = 0.0, top_v = 0.0;
 };
 
 // The times of step i (from 1): it runs from t0 to t.
@@ -54,7 +59,12 @@ struct StepLoop {
     long every;
     bool moving_supports;
     bool overburden;
+    // The VSSW's top support (the scene's): a flexible one moves the roller by u_d(t) relative to the ground
+    // (GroundStep::top_u, top_v); only an adapter whose roller follows it passes it (the others refuse a flexible one:
+    // require_rigid_top).
+    Diaphragm diaphragm{};
 };
+
 
 // The supports' velocity and displacement after one more step of acceleration a_h.
 inline void advance_supports(GroundStep& g, double dt) {
@@ -77,17 +87,26 @@ Trajectory run_fixed_steps(W& world, const Excitation& ex, const StepLoop& loop,
     const double dt = loop.dt;
     const long n_steps = std::lround(ex.t_end / dt);
     GroundStep ground;
+    const TopSupportMotion top(ex.horizontal, loop.diaphragm);  // once per run: u_d(t) of Eq. (9d)
+    double top_u_before = 0.0;
     record(0.0);
     for (long i = 1; i <= n_steps; ++i) {
         const StepTimes st{i, static_cast<double>(i - 1) * dt, static_cast<double>(i) * dt, dt};
         ground.a_h = ex.horizontal(st.t0 + 0.5 * dt);
         if (loop.moving_supports) advance_supports(ground, dt);
+        if (!top.is_rigid()) {
+            ground.top_u = top(st.t).u;
+            ground.top_v = (ground.top_u - top_u_before) / dt;
+            top_u_before = ground.top_u;
+        }
         world.drive(ground);
         if (loop.overburden) world.push_overburden();
         world.step(st, ground);
         ++out.steps;
         if constexpr (HasCheckStep<W>::value) world.check_step(st.t);
-        const auto verdict = monitor.check(st.t, world.state(ground));
+        WallState state = world.state(ground);
+        state.top_offset = ground.top_u;
+        const auto verdict = monitor.check(st.t, state);
         if (RunMonitor::records(i, n_steps, loop.every, verdict)) record(st.t);
         if (RunMonitor::ends_run(verdict, out)) break;
     }

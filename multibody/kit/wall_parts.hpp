@@ -29,6 +29,7 @@ struct BlockState {
 // What every adapter gives RunMonitor after each step: both blocks (upper ignored for a parapet).
 struct WallState {
     BlockState lower, upper;
+    double top_offset = 0.0;  // the roller guides' offset from the ground, u_d (a flexible top support; 0 rigid) [m]
 };
 
 // The upper block of a parapet's WallState: none.

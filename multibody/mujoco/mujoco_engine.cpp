@@ -45,6 +45,7 @@
 #include "multibody/kit/scene_geometry.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/step_loop.hpp"
+#include "multibody/kit/top_support.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -319,6 +320,9 @@ private:
 };
 
 Trajectory MujocoEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
+    require_rigid_top(scene, "MuJoCo",
+                      "a moving support needs a body whose velocity its contacts see, which "
+                      "the adapter cannot build (as for moving_supports)");
     try {
         return run(scene, ex, settings);
     } catch (const MujocoError& e) {

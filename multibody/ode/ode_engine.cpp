@@ -20,7 +20,10 @@
 //    along the depth at the arcs' centres (add_rounding), the base ones on the ground, each top one of the lower
 //    block on the upper block's bottom one of its side; the masses stay the rectangles';
 //  - N: a force at the centre of the top face, only when xi > 0; ground motion: pseudo-forces -m a_h(t) at the centres
-//    of mass at each step's midpoint, or (moving_supports = 1) the ground and the roller's anchor moving.
+//    of mass at each step's midpoint, or (moving_supports = 1) the ground and the roller's anchor moving;
+//  - a flexible top support (WallScene::diaphragm, T_d > 0): the roller's contact is made with a kinematic body of its
+//    own, moved each step at the ground's velocity plus u_d's (GroundStep::top_v), so that it sits u_d(t) of
+//    Eq. (9d) from the ground at every step's end; ODE's contact row sees the body's velocity (docs/model/top-support.md).
 //
 // Impacts: ODE resolves a landing with every closing contact and the roller in one LCP, perfectly plastic (no
 // dContactBounce). That is the plastic impact of the whole new mechanism (pivot, hinge, roller), not Eq. (19), which
@@ -249,6 +252,10 @@ public:
             upper_geom_ = dCreateBox(nullptr, 2.0 * box_b, 2.0 * sizes_.h_upper, kDepth);
             dGeomSetBody(upper_geom_, upper_);
         }
+        if (scene.vssw && !scene.diaphragm.is_rigid()) {  // the roller's own carrier, at the ground's place at rest
+            top_body_ = dBodyCreate(world_);
+            dBodySetKinematic(top_body_);
+        }
         if (corner_radius_ > 0.0) add_rounding();
         const WallPose pose = pose_at(scene, theta0);
         place(lower_, pose.lower);
@@ -271,10 +278,12 @@ public:
     double ground_velocity() const { return ground_body_ ? dBodyGetLinearVel(ground_body_)[0] : 0.0; }
     int contacts() const { return contacts_; }
 
-    // One step: the ground's velocity for the step (moving supports), the contacts at the start of the step, the
-    // solver. Forces other than gravity must have been added before.
-    void step(double ground_velocity) {
+    // One step: the ground's velocity for the step (moving supports) and the top support's relative to it (a
+    // flexible one), the contacts at the start of the step, the solver. Forces other than gravity must have been
+    // added before.
+    void step(double ground_velocity, double top_velocity) {
         if (ground_body_) dBodySetLinearVel(ground_body_, ground_velocity, 0.0, 0.0);
+        if (top_body_) dBodySetLinearVel(top_body_, ground_velocity + top_velocity, 0.0, 0.0);
         dJointGroupEmpty(group_);
         contacts_ = 0;
         add_pair(ground_geom_, lower_geom_, {0.0, 1.0}, {ground_x(), 0.0}, friction_);
@@ -404,7 +413,7 @@ private:
     // impact step the new guide's corner starts within 1e-10 m of its line and the guide takes its share of the
     // impulse).
     void add_roller() {
-        const double b = sizes_.b, x0 = ground_x();
+        const double b = sizes_.b, x0 = top_body_ ? dBodyGetPosition(top_body_)[0] : ground_x();
         const Vec2 right = world_point(upper_, b, sizes_.h_upper), left = world_point(upper_, -b, sizes_.h_upper);
         const double right_out = right.x - x0 - b, left_out = -b - (left.x - x0);  // also the guides' gaps
         const bool use_left = left_out > right_out;  // left_guide_binds (scene_geometry.hpp), with the gaps kept
@@ -415,7 +424,7 @@ private:
         c.geom.normal[0] = use_left ? 1.0 : -1.0;
         c.surface.mode = 0;
         c.surface.mu = 0.0;  // frictionless: y free
-        add_contact(c, (use_left ? left_out : right_out) - kRollerGap, upper_, ground_body_);
+        add_contact(c, (use_left ? left_out : right_out) - kRollerGap, upper_, top_body_ ? top_body_ : ground_body_);
     }
 
     // A contact joint for the solver: a penetration as ODE's depth (pushed out by erp beyond the surface layer), a
@@ -454,6 +463,7 @@ private:
     dJointGroupID group_ = nullptr;
     dGeomID ground_geom_ = nullptr, lower_geom_ = nullptr, upper_geom_ = nullptr;
     dBodyID ground_body_ = nullptr, lower_ = nullptr, upper_ = nullptr;
+    dBodyID top_body_ = nullptr;  // the roller's carrier: a flexible top support only
     int contacts_ = 0;
 };
 
@@ -518,7 +528,7 @@ public:
         const Vec2 top = world_point(top_body_, load_x_, top_half_);
         dBodyAddForceAtPos(top_body_, 0.0, -N_, 0.0, top.x, top.y, 0.0);
     }
-    void step(const StepTimes&, const GroundStep& g) { w_.step(g.v); }
+    void step(const StepTimes&, const GroundStep& g) { w_.step(g.v, g.top_v); }
     // ODE's messages (its error and debug handlers) and a block leaving the plane fail the run.
     void check_step(double t) const {
         if (g_ode_messages != messages_before_)
@@ -578,7 +588,8 @@ Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, con
     OdeScene w(scene, knobs, ex.theta0, dt);
     OdeStepping stepping(w, scene, knobs);
     RunMonitor monitor("ODE", scene, ex, dt, knobs.limits);
-    const StepLoop loop{dt, sample_every(settings, dt), knobs.moving_supports, scene.overburden() > 0.0};
+    const StepLoop loop{dt, sample_every(settings, dt), knobs.moving_supports, scene.overburden() > 0.0,
+                        scene.diaphragm};
     return run_fixed_steps(stepping, ex, loop, monitor);
 }
 

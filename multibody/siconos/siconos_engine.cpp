@@ -66,6 +66,7 @@
 #include "multibody/kit/scene_geometry.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/step_loop.hpp"
+#include "multibody/kit/top_support.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -469,6 +470,9 @@ Trajectory SiconosEngine::simulate(const WallScene& scene, const Excitation& ex,
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "Siconos time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_rigid_top(scene, "Siconos",
+                      "the roller would need its gap as a function of time "
+                      "(a rheonomous relation), not written");
     const Knobs knobs = read_knobs(settings);
     const double dt = settings.dt;
     t_solver_failures = 0;

@@ -49,6 +49,7 @@
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/scene_geometry.hpp"
+#include "multibody/kit/top_support.hpp"
 
 namespace vssw::multibody {
 namespace {
@@ -361,6 +362,9 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
             compliant_ ? "Simbody reporting interval dt (s)" : "Simbody time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
+    require_rigid_top(scene, "Simbody",
+                      "both routes drive the wall by pseudo-forces and "
+                      "cannot prescribe the motion of a support");
     if (compliant_) {
         require_sharp_corners("Simbody", scene,
                               "its compliant contacts are small corner spheres on half-spaces with Hertz's law for "
