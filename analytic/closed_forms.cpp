@@ -154,11 +154,13 @@ double eq13_threshold_no_overburden(const VsswGeometry& w, double a_v) {
     return 2.0 * (w.g + a_v) * std::tan(w.alpha1);
 }
 
-double eq14_threshold_over_g(double b, double h, double h1, double xi) {
-    return b * xi / (h - h1) + 2.0 * b * (1.0 + xi) / h1;
+double eq14_threshold_over_g(double b, double h, double h1, double xi, double eccentricity) {
+    return b * xi * (1.0 - std::abs(eccentricity)) / (h - h1) + 2.0 * b * (1.0 + xi) / h1;
 }
 
-double eq15_optimal_hinge_ratio(double xi) { return 1.0 / (1.0 + std::sqrt(xi / (2.0 * (1.0 + xi)))); }
+double eq15_optimal_hinge_ratio(double xi, double eccentricity) {
+    return 1.0 / (1.0 + std::sqrt(xi * (1.0 - std::abs(eccentricity)) / (2.0 * (1.0 + xi))));
+}
 
 double eq16_cracking_hinge_ratio(double xi, double t) {
     return 1.0 + (xi + t - std::sqrt((2.0 + t + 2.0 * xi) * (t + xi))) / (2.0 + xi);

@@ -110,10 +110,14 @@ double eq12_threshold(const VsswGeometry& w, double a_v = 0.0);
 double eq12_threshold(const VsswGeometry& w, double a_v, int side);
 // Eq. (13): the same for homogeneous bodies without N: 2 (g + a_v) tan(alpha1) [m/s^2].
 double eq13_threshold_no_overburden(const VsswGeometry& w, double a_v = 0.0);
-// Eq. (14): |x''_t / g| from b, h, h1 and xi (a_v = 0): the static collapse load multiplier.
-double eq14_threshold_over_g(double b, double h, double h1, double xi);
-// Eq. (15): the hinge ratio h1/h that minimises Eq. (14).
-double eq15_optimal_hinge_ratio(double xi);
+// Eq. (14): |x''_t / g| from b, h, h1 and xi (a_v = 0): the static collapse load multiplier. With N at the
+// eccentricity e/b = eps, Eq. (12e)'s lower side: N's extra lever k s eps tan(alpha1) is xi s eps b / (h - h1), so
+//   |x''_t / g| = b xi (1 - |eps|) / (h - h1) + 2 b (1 + xi) / h1                                       (14e)
+double eq14_threshold_over_g(double b, double h, double h1, double xi, double eccentricity = 0.0);
+// Eq. (15): the hinge ratio h1/h that minimises Eq. (14); with N at e/b = eps, the one that minimises Eq. (14e):
+//   h1 / h = 1 / (1 + sqrt(xi (1 - |eps|) / (2 (1 + xi))))                                              (15e)
+// N at a corner (|eps| = 1) puts it at the very top, as xi = 0 does: its lever no longer grows as the hinge rises.
+double eq15_optimal_hinge_ratio(double xi, double eccentricity = 0.0);
 // Eq. (16): the hinge ratio h1/h of first cracking, with t = f_mt / (W / 2b) the normalised mortar tensile strength.
 double eq16_cracking_hinge_ratio(double xi, double t);
 // Eq. (17): threshold of the parapet wall [m/s^2].

@@ -28,7 +28,7 @@ WallFigures wall_figures(const WallOptions& options) {
     f.collapse_angle = make_vssw_model(w, Kinematics::paper)->collapse_angle();
     f.reference_velocity = eq24_reference_velocity(w);
     f.threshold_ratio_vssw_over_parapet = eq12_threshold(w) / eq17_parapet_threshold(pw);
-    f.optimal_hinge_ratio = eq15_optimal_hinge_ratio(w.xi);
+    f.optimal_hinge_ratio = eq15_optimal_hinge_ratio(w.xi, w.eccentricity);
     f.parapet = {pw.alpha, pw.R, eq17_parapet_threshold(pw) / pw.g, housner_restitution(pw.alpha),
                  housner_p(pw.R, pw.g)};
     return f;
@@ -87,7 +87,7 @@ void print_wall(std::ostream& out, const WallFigures& f) {
                  : (f.theta_lim ? "just below Eq. (26)" : "pi/2: the lower body lies on its face"))
         .add("reference velocity", io::num(f.reference_velocity), "rad/s", sharp("Eq. (24)"))
         .add("optimal hinge ratio h1/h", io::num(f.optimal_hinge_ratio), "",
-             eccentric ? "Eq. (15) at this xi, N at the centre" : "Eq. (15) at this xi")
+             eccentric ? "Eq. (15e) at this xi and e/b" : "Eq. (15) at this xi")
         .add("threshold VSSW / parapet", io::num(f.threshold_ratio_vssw_over_parapet), "",
              vssw_threshold + " / " + parapet_threshold)
         .print(out);

@@ -155,6 +155,8 @@ struct WallArgs {
     std::optional<std::string> kinematics, impact, roller;  // each overrides the set's
     double overburden_eccentricity = 0.0;  // e/b of N on the (upper) body's top face (analytic/geometry.hpp)
     double corner_radius = 0.0;            // r/b of every block corner (analytic/wall.hpp with_corner_radius)
+    double diaphragm_period = 0.0;         // T_d [s] of the top support's diaphragm (analytic/diaphragm.hpp); 0 rigid
+    double diaphragm_damping = vssw::kDefaultDiaphragmDamping;  // zeta_d
 };
 
 vssw::cli::ChosenModel chosen_model(const WallArgs& a) {
@@ -167,6 +169,8 @@ vssw::cli::ChosenModel chosen_model(const WallArgs& a) {
     w.g = a.g;
     w.eccentricity = a.overburden_eccentricity;
     w.corner_radius = a.corner_radius;
+    w.diaphragm.period = a.diaphragm_period;
+    w.diaphragm.damping = a.diaphragm_damping;
     vssw::cli::ModelOptions m;
     m.model = a.model;
     m.assumptions = a.assumptions;
@@ -547,10 +551,11 @@ PYBIND11_MODULE(_core, m) {
     py::class_<WallArgs>(m, "WallArgs")
         .def(py::init<std::string, double, double, std::optional<double>, double, double, double, std::string,
                       std::optional<std::string>, std::optional<std::string>, std::optional<std::string>, double,
-                      double>(),
+                      double, double, double>(),
              py::arg("model"), py::arg("height"), py::arg("thickness"), py::arg("hinge"), py::arg("xi"),
              py::arg("density"), py::arg("g"), py::arg("assumptions"), py::arg("kinematics"), py::arg("impact"),
-             py::arg("roller"), py::arg("overburden_eccentricity") = 0.0, py::arg("corner_radius") = 0.0);
+             py::arg("roller"), py::arg("overburden_eccentricity") = 0.0, py::arg("corner_radius") = 0.0,
+             py::arg("diaphragm_period") = 0.0, py::arg("diaphragm_damping") = vssw::kDefaultDiaphragmDamping);
     m.def(
         "simulate",
         [](const std::string& engine, const WallArgs& wall, double theta0, std::optional<double> t_end,
@@ -603,6 +608,7 @@ PYBIND11_MODULE(_core, m) {
     m.attr("EXIT_SIMULATION_FAILED") = vssw::cli::kExitSimulationFailed;
     // The analytic model's default assumption set, the same in the module as in every command.
     m.attr("DEFAULT_ASSUMPTIONS") = vssw::to_string(vssw::kDefaultAssumptionSet);
+    m.attr("DEFAULT_DIAPHRAGM_DAMPING") = vssw::kDefaultDiaphragmDamping;
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);

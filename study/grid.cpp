@@ -431,7 +431,8 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
     std::optional<double> hinge;
     if (l.has("hinge")) {
         const Level& h = l.level.at("hinge");
-        hinge = std::holds_alternative<double>(h) ? as_number(h) : eq15_optimal_hinge_ratio(c.xi);
+        hinge = std::holds_alternative<double>(h) ? as_number(h)
+                                                  : eq15_optimal_hinge_ratio(c.xi, l.num("overburden_eccentricity", 0.0));
     }
     if (l.has("height")) {
         height = l.num("height", 0.0);

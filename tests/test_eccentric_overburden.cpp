@@ -162,5 +162,31 @@ TEST(EccentricOverburden, ACentredNIsEq12AsPrinted) {
     EXPECT_EQ(eq12_threshold(off), std::min(eq12_threshold(off, 0.0, 1), eq12_threshold(off, 0.0, -1)));
 }
 
+// Eq. (15e): the hinge that minimises Eq. (12e)'s lower side, found here by a golden-section search over walls built
+// at each hinge (the threshold of the code's own walls, not Eq. 14e), on walls where N's position matters and where
+// it does not (eps 0: Eq. 15 itself, bit for bit).
+TEST(EccentricOverburden, Eq15eIsTheHingeOfTheLowestThreshold) {
+    constexpr double kHingeBracket = 1e-7;  // the search's final bracket on h1/h
+    // At its minimum the threshold is flat to second order: round-off (1e-16) hides the argmin within sqrt(1e-16) =
+    // 1e-8 relative, times the curvature's scale; 1e-5 leaves two orders of room and still fails a wrong |eps| term.
+    constexpr double kArgmin = 1e-5;
+    for (double xi : {0.1, 0.5, 2.0})
+        for (double eps : {0.0, 0.5, -0.8}) {
+            const auto threshold = [&](double hinge) {
+                return eq12_threshold(with_eccentricity(make_vssw(4.0, 0.4, hinge, xi), eps));
+            };
+            double lo = 0.3, hi = 0.99;
+            const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+            while (hi - lo > kHingeBracket) {
+                const double a = hi - phi * (hi - lo), b = lo + phi * (hi - lo);
+                if (threshold(a) < threshold(b)) hi = b;
+                else lo = a;
+            }
+            EXPECT_NEAR(eq15_optimal_hinge_ratio(xi, eps), 0.5 * (lo + hi), kArgmin) << "xi " << xi << ", e/b " << eps;
+        }
+    EXPECT_EQ(eq15_optimal_hinge_ratio(0.5, 0.0), eq15_optimal_hinge_ratio(0.5));
+    EXPECT_EQ(eq15_optimal_hinge_ratio(0.5, 1.0), 1.0);  // N at the corner: the hinge at the very top, as xi = 0
+}
+
 }  // namespace
 }  // namespace vssw

@@ -102,7 +102,7 @@ def _knobs(settings):
 
 
 def _wall(model, height, thickness, hinge, xi, density, g, assumptions=None, kinematics=None, impact=None,
-          roller=None, overburden_eccentricity=0.0, corner_radius=0.0):
+          roller=None, overburden_eccentricity=0.0, corner_radius=0.0, diaphragm_period=0.0, diaphragm_damping=None):
     """The wall and the analytic model's assumptions: a named set (default "mechanism", as every command's), any of
     kinematics, impact, roller overriding one part of it."""
     return _core.WallArgs(
@@ -113,7 +113,10 @@ def _wall(model, height, thickness, hinge, xi, density, g, assumptions=None, kin
         kinematics=_word("kinematics", kinematics, None), impact=_word("impact", impact, None),
         roller=_word("roller", roller, None),
         overburden_eccentricity=_number("overburden_eccentricity", overburden_eccentricity),
-        corner_radius=_number("corner_radius", corner_radius))
+        corner_radius=_number("corner_radius", corner_radius),
+        diaphragm_period=_number("diaphragm_period", diaphragm_period),
+        diaphragm_damping=_core.DEFAULT_DIAPHRAGM_DAMPING if diaphragm_damping is None
+        else _number("diaphragm_damping", diaphragm_damping))
 
 
 def _record_path(record):
@@ -135,7 +138,8 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
              g=_GRAVITY, theta0=0.0, t_end=None, record=None, scale=None, pga=None, pulse=None, amplitude=None,
              pulse_period=None, duration=None, dt=None, sample_dt=None, iterations=None, settings=None,
              assumptions=None, kinematics=None, impact=None, roller=None, friction=None, stop_at_rest=True,
-             run_budget=None, overburden_eccentricity=0.0, corner_radius=0.0):
+             run_budget=None, overburden_eccentricity=0.0, corner_radius=0.0, diaphragm_period=0.0,
+             diaphragm_damping=None):
     """One backend's run of one wall: its trajectory as NumPy arrays (a vssw.Simulation).
 
     engine: "analytic" (the two-block model, this project's own DOP853 integration) or an engine of this build
@@ -150,6 +154,9 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
             paper's; +1: the corner on the side the wall tips to when theta1 > 0).
         corner_radius: r/b of every block corner in [0, 0.5] (0: the paper's sharp blocks). Engines only for the
             motion: the analytic model refuses a rounded wall (its pivots roll); its threshold is Eq. (12r).
+        diaphragm_period [s], diaphragm_damping: a VSSW's top roller carried by a diaphragm of that period and damping
+            ratio (default 0.05) under the ground motion (0: rigid, the paper's Eq. 9). Engines that move their roller
+            only (ODE, Box2D, DART, Bullet); the analytic model fails such a run under a ground motion (Eq. 9e).
     How it starts and what shakes it (one of a release and a ground motion, or both):
         theta0: release from rest at theta0 * alpha (a fraction of alpha1, or alpha for a parapet; -1 < theta0 < 1;
             the sign is the side: positive tips the wall towards +x).
@@ -183,7 +190,7 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
     result = _with_python_names(lambda: _core.simulate(
         engine=_word("engine", engine, "analytic"),
         wall=_wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller,
-                   overburden_eccentricity, corner_radius),
+                   overburden_eccentricity, corner_radius, diaphragm_period, diaphragm_damping),
         theta0=_number("theta0", theta0), t_end=_number("t_end", t_end, True), dt=_number("dt", dt, True),
         sample_dt=_number("sample_dt", sample_dt, True), iterations=_integer("iterations", iterations),
         knobs=_knobs(settings), record=_record_path(record), scale=_number("scale", scale, True),
