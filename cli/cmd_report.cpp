@@ -233,9 +233,9 @@ void add_part_options(CLI::App& cmd, ReportCommandOptions& o) {
     o.relaxations_option = cmd.add_option(
         "--relaxations", o.relaxations,
         "the study under \"What the paper's assumptions cost\": default (studies/assumptions-report.toml: the Fig. 6 "
-        "VSSW's threshold and free vibration with each physical assumption relaxed alone), full "
-        "(studies/assumptions-physical.toml: Table 1 walls, rocking curves and fragility too; minutes), a study file "
-        "that varies one of them, or none (default: full with --suite full, else default; none with --cases)");
+        "VSSW's threshold and free vibration with each physical assumption relaxed alone, a pulse for the diaphragm), "
+        "full (studies/assumptions-physical.toml: Table 1 walls, rocking curves and fragility too; minutes), a study "
+        "file that varies one of them, or none (default: full with --suite full, else default; none with --cases)");
 }
 
 Command add_report_command(CLI::App& root) {
