@@ -176,13 +176,7 @@ AssumptionsPart run_assumptions_part(const std::string& study_file, const std::v
     const study::StudyData d = study::read_study_data(dir);
 
     AssumptionsPart part;
-    part.study_file = study_file;
-    part.study_name = spec.name;
-    part.description = spec.description;
-    part.folder = dir;
-    part.rows = result.rows;
-    part.failed_rows = result.failed_rows;
-    part.wall_time_s = result.meta.wall_time_s;
+    static_cast<StudyPartRun&>(part) = study_part_run(study_file, spec, dir, result);
     part.effects = relaxation_effects(d);
     part.refusals = refusals(d);
     for (const study::MetricMeta& m : d.metrics) {

@@ -14,6 +14,7 @@
 
 #include "io/document.hpp"
 #include "io/json.hpp"
+#include "validation/study_engines.hpp"
 
 namespace vssw::validation {
 
@@ -30,11 +31,7 @@ struct RelaxationEffect {
     long model_pairs = 0, engine_pairs = 0;
 };
 
-struct AssumptionsPart {
-    std::string study_file, study_name, description;
-    std::filesystem::path folder;  // the report's assumptions/
-    long rows = 0, failed_rows = 0;
-    double wall_time_s = 0.0;
+struct AssumptionsPart : StudyPartRun {  // the study's file, name, folder (relaxations/), rows, time
     std::vector<RelaxationEffect> effects;  // the study's order of parameters and levels, then of metrics
     std::vector<std::string> tornadoes;      // the tornado charts drawn: "../assumptions/plots/<name>" (no extension)
     std::vector<std::string> tornado_titles;

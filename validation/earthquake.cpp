@@ -266,13 +266,7 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     study::write_study_outputs(dir, output, d, e);
 
     EarthquakePart part;
-    part.study_file = study_file;
-    part.study_name = spec.name;
-    part.description = spec.description;
-    part.folder = dir;
-    part.rows = result.rows;
-    part.failed_rows = result.failed_rows;
-    part.wall_time_s = result.meta.wall_time_s;
+    static_cast<StudyPartRun&>(part) = study_part_run(study_file, spec, dir, result);
     // Its own plots beside the study's (a missing gnuplot leaves their scripts and data, as the study's).
     if (options.plots) io::draw_plots(earthquake_plot_scripts(d, e), dir / "plots", options.gnuplot);
     if (e.has_reference) {

@@ -17,6 +17,7 @@
 #include "study/ensemble_measures.hpp"
 #include "io/document.hpp"
 #include "io/json.hpp"
+#include "validation/study_engines.hpp"
 
 namespace vssw::validation {
 
@@ -78,15 +79,11 @@ struct EarthquakeVerdict {
 // The verdict's rules on the measures of one series against the reference (the report's and the detection test's).
 EarthquakeVerdict judge_series(const std::string& engine, const study::SeriesMeasures& m);
 
-struct EarthquakePart {
-    std::string study_file, study_name, description;
+struct EarthquakePart : StudyPartRun {  // the study's file, name, folder, rows and time (study_engines.hpp)
     std::string reference;                 // the reference series' label
     bool preferred_reference = true;       // exact / whole-mechanism / unilateral (always, for a judged study)
     bool band = false;                     // the reference ran its perturbed repeats
-    std::filesystem::path folder;          // where its outputs are (inside the report's folder)
     std::size_t records = 0, levels = 0;   // the ensemble: records x PGA levels
-    long rows = 0, failed_rows = 0;
-    double wall_time_s = 0.0;
     compare::Interval reference_median{};  // the reference's fragility median [g] with its bootstrap interval
     std::string reference_note;            // why it is not resolved ("" when it is)
     std::vector<EarthquakeVerdict> engines;  // in the report's engine order

@@ -29,4 +29,9 @@ study::StudySpec with_engines(const std::string& file, const std::vector<std::st
     return spec;
 }
 
+StudyPartRun study_part_run(const std::string& file, const study::StudySpec& spec, const std::filesystem::path& dir,
+                            const study::StudyRunResult& result) {
+    return {file, spec.name, spec.description, dir, result.rows, result.failed_rows, result.meta.wall_time_s};
+}
+
 }  // namespace vssw::validation

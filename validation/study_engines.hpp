@@ -1,8 +1,11 @@
 #pragma once
-// A shipped study run by the report for the report's engines (the earthquake part, the assumptions part).
+// A shipped study run by the report for the report's engines (the earthquake part, the assumptions part), and what
+// each part says of that run.
+#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "study/runner.hpp"
 #include "study/spec.hpp"
 
 namespace vssw::validation {
@@ -11,5 +14,16 @@ namespace vssw::validation {
 // gives engines that are not run are dropped (the report chooses the engines, at the file's settings for those it
 // names).
 study::StudySpec with_engines(const std::string& file, const std::vector<std::string>& engines);
+
+// What a part of the report says of its study's run: the file, the study's name and description, its folder (inside
+// the report's), its rows and failed rows, its wall time.
+struct StudyPartRun {
+    std::string study_file, study_name, description;
+    std::filesystem::path folder;
+    long rows = 0, failed_rows = 0;
+    double wall_time_s = 0.0;
+};
+StudyPartRun study_part_run(const std::string& file, const study::StudySpec& spec, const std::filesystem::path& dir,
+                            const study::StudyRunResult& result);
 
 }  // namespace vssw::validation
