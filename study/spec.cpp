@@ -577,6 +577,7 @@ std::vector<Axis> read_settings(const Reader& r, const json& t, const std::strin
                 r.fail(key, fmt::format("must be an integer from 1 to {}, got {}", kMaxIterations, io::dump_json(v)));
             return x;
         }));
+        axes.back().key = k;  // the knob's own name: a name with a dot ("d.") is not cut at it, and is refused later
     }
     return axes;
 }
