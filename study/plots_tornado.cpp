@@ -96,8 +96,7 @@ void add_tornado_plots(const StudyData& d, const std::vector<Effect>& effects, S
         for (const Effect& e : effects)
             if (e.metric == m && e.pairs > 0) {
                 if (e.assumption) model.push_back(&e);
-                // A slip (in b) is about 0 at the paper's friction: its relative change is noise, not a cost.
-                if (e.physical && d.metrics[m].unit != "b") physical.push_back(&e);
+                if (e.physical && !d.metrics[m].is_slip()) physical.push_back(&e);
             }
         if (!physical.empty()) out.scripts.push_back(tornado(d, m, physical, kPhysicalTornado, kPhysicalTornadoSection));
         if (!model.empty()) out.scripts.push_back(tornado(d, m, model, kModelTornado, kTornadoSection));

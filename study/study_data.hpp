@@ -36,6 +36,9 @@ struct MetricMeta {
     std::string name, unit, description;
     bool binary = false;  // every finite value 0 or 1 (overturned): effects are shares of runs that flip
     bool any_value = false;
+    // A slip (in b): about 0 at the paper's friction, so a change relative to it is noise, not a cost; the tornado
+    // charts and the report's relaxations show its values instead.
+    bool is_slip() const { return unit == "b"; }
 };
 
 // A run of the study (the manifest's "runs"): one line in a plot.

@@ -11,6 +11,7 @@
 #include "analytic/error.hpp"
 #include "multibody/engine.hpp"
 #include "study/effects.hpp"
+#include "study/ensemble_measures.hpp"
 #include "study/grid.hpp"
 #include "study/outputs.hpp"
 #include "study/runner.hpp"
@@ -51,7 +52,7 @@ void add_slips(const study::StudyData& d, std::vector<RelaxationEffect>& out) {
         const study::ColumnLevels& c = d.columns[column];
         for (std::size_t level = 1; level < c.order.size(); ++level)
             for (std::size_t m = 0; m < d.metrics.size(); ++m) {
-                if (d.metrics[m].unit != "b") continue;
+                if (!d.metrics[m].is_slip()) continue;
                 RelaxationEffect e;
                 e.parameter = key;
                 e.from = c.texts[c.order.front()];
@@ -93,7 +94,7 @@ std::vector<RelaxationEffect> relaxation_effects(const study::StudyData& d) {
         return out.back();
     };
     const auto relative = [&](const study::Effect& e) {
-        return e.physical && e.pairs > 0 && d.metrics[e.metric].unit != "b";
+        return e.physical && e.pairs > 0 && !d.metrics[e.metric].is_slip();
     };
     for (const study::Effect& e : model)
         if (relative(e)) {
@@ -148,7 +149,7 @@ std::string assumptions_study_file(const std::string& name_or_path, const std::v
                              : name_or_path == "full"  ? shipped_studies_dir() + "/" + kShippedFullStudy
                                                        : name_or_path;
     if (!varies_a_physical_assumption(with_engines(file, engines)))
-        throw InputError(fmt::format("--assumptions {}: the study varies none of the paper's physical assumptions "
+        throw InputError(fmt::format("--relaxations {}: the study varies none of the paper's physical assumptions "
                                      "(wall keys {})",
                                      file, fmt::join(study::kPhysicalAssumptionKeys, ", ")));
     return file;
@@ -172,8 +173,8 @@ AssumptionsPart run_assumptions_part(const std::string& study_file, const std::v
     study::OutputOptions output;
     output.plots = options.plots;
     output.gnuplot = options.gnuplot;
-    study::write_study_outputs(dir, output);
-    const study::StudyData d = study::read_study_data(dir);
+    const study::StudyData d = study::read_study_data(dir);  // once: the study's outputs and the section read it
+    study::write_study_outputs(dir, output, d, study::ensemble_measures(d));
 
     AssumptionsPart part;
     static_cast<StudyPartRun&>(part) = study_part_run(study_file, spec, dir, result);
