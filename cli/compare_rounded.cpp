@@ -6,11 +6,11 @@
 #include <fmt/format.h>
 
 #include "cli/table.hpp"
+#include "io/json.hpp"
 
 namespace vssw::cli {
 namespace {
 
-io::Json number_or_null(double v) { return std::isfinite(v) ? io::Json(v) : io::Json(nullptr); }
 std::string text_or_none(double v, const char* format) {
     return std::isfinite(v) ? fmt::format(fmt::runtime(format), v) : std::string("none");
 }
@@ -21,17 +21,17 @@ io::Json to_json(const compare::RoundedCornerComparison& c, const WallOptions& w
     io::Json engines = io::Json::array();
     for (const compare::RoundedEngineResult& e : c.engines)
         engines.push_back({{"engine", e.engine},
-                           {"threshold_g", number_or_null(e.threshold_g)},
-                           {"threshold_rel_error", number_or_null(e.threshold_rel_error)},
-                           {"period", number_or_null(e.period)},
+                           {"threshold_g", io::finite_or_null(e.threshold_g)},
+                           {"threshold_rel_error", io::finite_or_null(e.threshold_rel_error)},
+                           {"period", io::finite_or_null(e.period)},
                            {"failure", e.failure}});
     return {{"wall", wall_inputs_json(wall, kind)},
             {"corner_radius", c.corner_radius_ratio},
             {"closed_forms", {{"threshold_g", c.closed_form_g}, {"threshold_sharp_g", c.sharp_closed_form_g}}},
             {"theta0", c.theta0},
             {"engines", engines},
-            {"threshold_spread", number_or_null(c.threshold_spread)},
-            {"period_spread", number_or_null(c.period_spread)}};
+            {"threshold_spread", io::finite_or_null(c.threshold_spread)},
+            {"period_spread", io::finite_or_null(c.period_spread)}};
 }
 
 void print_rounded_corners(std::ostream& out, const compare::RoundedCornerComparison& c, const WallOptions& wall,

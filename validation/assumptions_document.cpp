@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "io/json.hpp"
 #include "validation/assumptions_part.hpp"
 
 namespace vssw::validation {
@@ -111,7 +112,6 @@ std::vector<io::DocBlock> assumptions_section(const AssumptionsPart& p) {
 }
 
 io::Json assumptions_json(const AssumptionsPart& p) {
-    const auto number = [](double x) { return std::isfinite(x) ? io::Json(x) : io::Json(nullptr); };
     io::Json effects = io::Json::array();
     for (const RelaxationEffect& e : p.effects)
         effects.push_back({{"parameter", e.parameter},
@@ -120,10 +120,10 @@ io::Json assumptions_json(const AssumptionsPart& p) {
                            {"metric", e.metric},
                            {"binary", e.binary},
                            {"absolute", e.absolute},
-                           {"model_change", number(e.model)},
+                           {"model_change", io::finite_or_null(e.model)},
                            {"model_pairs", e.model_pairs},
-                           {"engines_change_min", number(e.engines_lo)},
-                           {"engines_change_max", number(e.engines_hi)},
+                           {"engines_change_min", io::finite_or_null(e.engines_lo)},
+                           {"engines_change_max", io::finite_or_null(e.engines_hi)},
                            {"engine_pairs", e.engine_pairs}});
     return {{"study", p.study_name},     {"file", p.study_file}, {"folder", p.folder.filename().string()},
             {"rows", p.rows},            {"failed_rows", p.failed_rows}, {"wall_time_s", p.wall_time_s},
