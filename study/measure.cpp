@@ -158,6 +158,11 @@ std::optional<double> friction_metric(const std::string& metric, const compare::
     return std::nullopt;
 }
 
+// The response metrics that follow the wall's rocking to the run's end (not its slips).
+bool is_rocking_metric(const std::string& metric) {
+    return metric == "peak_rotation" || metric == "peak_time" || metric == "overturned" || metric == "t_overturn";
+}
+
 // A run's warnings: the analytic model's own, or an engine's wall that slid off its support, which ended the run
 // there (multibody::SlipMeter).
 std::vector<std::string> warnings_of(const Trajectory& t) {
@@ -202,6 +207,9 @@ Collapse collapse_scale(const Grid& grid, const CaseSpec& c, const RunSpec& run,
     Collapse out;
     const auto overturns = [&](double scale) {
         const Response r = response_of(run_from_rest(engine, run, c, case_motion(grid, c, scale)), c.scene);
+        // Off its support the wall neither stood nor overturned: the search cannot go on (multibody::SlipMeter).
+        if (r.slip && r.slip->slid_off)
+            throw EngineFailure(fmt::format("at scale {:.6g}: {}", scale, *r.slip->slid_off));
         out.points.push_back({scale, r.peak / c.scene.alpha(), r.overturned});
         return r.overturned;
     };
@@ -444,6 +452,12 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                     break;
                 }
                 const Response& r = *response;
+                // A wall that slid off its support ended its run there: its rocking (peak, overturning) was not
+                // followed to the end, so those metrics fail with the reason; the slips stay measured.
+                if (r.slip && r.slip->slid_off && is_rocking_metric(metric)) {
+                    add(m, kNaN, failed(*r.slip->slid_off));
+                    break;
+                }
                 if (metric == "peak_rotation") add(m, r.peak / alpha, kOk);
                 else if (metric == "peak_time") add(m, r.peak_time, kOk);
                 else if (metric == "overturned") add(m, r.overturned ? 1.0 : 0.0, kOk);

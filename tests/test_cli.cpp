@@ -1359,6 +1359,29 @@ TEST(CliCompare, AWallThatOverturnsHasNotSlid) {
     EXPECT_LT(ode["slip"]["base"]["largest_b"].get<double>(), kCountedSlip);
 }
 
+// A wall that slides off its support has neither stood nor overturned: its run ended there, so its rocking metrics
+// fail with that reason and the program exits 3, while its slips stay in the JSON and the table. (Before, ODE's
+// parapet here was "ok, stands" beside the model's overturning.) A 1.2 x 0.2 m parapet at mu 0.05 under a 0.5 g sine
+// pulse needs tan(alpha) = 0.167 not to slide: ODE slides a whole b before it rocks.
+TEST(CliCompare, AWallThatSlidOffIsNeitherStandingNorOverturned) {
+    if (!engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    const std::vector<std::string> run{"compare", "--engine", "ode", "--model", "parapet", "--height", "1.2",
+                                       "--thickness", "0.2", "--friction", "0.05", "--pulse", "sine", "--amplitude",
+                                       "0.5", "--pulse-period", "0.5"};
+    const CliResult r = run_cli(run + std::vector<std::string>{"--json"});
+    EXPECT_EQ(r.code, 3) << r.err;
+    const Json ode = Json::parse(r.out)["runs"][1];
+    ASSERT_EQ(ode["engine"], "ode");
+    EXPECT_TRUE(ode["overturned"].is_null());
+    EXPECT_TRUE(ode["peak_rotation"].is_null());
+    EXPECT_NE(ode["status"].get<std::string>().find("slid off its support"), std::string::npos) << ode["status"];
+    EXPECT_FALSE(ode["slip"]["slid_off"].is_null());
+    EXPECT_GE(ode["slip"]["base"]["largest_b"].get<double>(), 1.0);  // [b] the slip meter's kSlidOffLimit
+    const CliResult table = run_cli(run);
+    EXPECT_NE(table.out.find("slid off its support (the run ended there)"), std::string::npos) << table.out;
+    EXPECT_EQ(table.out.find("stands"), std::string::npos) << table.out;
+}
+
 TEST(CliCompare, FrictionMakesSlidingAMeasuredResponse) {
     if (!engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
     const std::vector<std::string> run = std::vector<std::string>{"compare", "--engine", "analytic,box2d", "--pulse",

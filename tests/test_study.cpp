@@ -461,6 +461,34 @@ TEST(StudyMeasure, FrictionIsAWallAxis) {
     EXPECT_EQ(value_of(t, "peak_rotation", {{"friction", "0.3"}}), value_of(t, "peak_rotation", {{"friction", "0.1"}}));
 }
 
+// A wall that slides off its support neither stood nor overturned: a collapse search cannot go on from it and fails
+// naming the slide, and the run's rocking metrics fail the same way (before, a slide-off read as "standing", and the
+// search climbed on to max_pga). A 1.2 x 0.2 m parapet at mu 0.05 needs tan(alpha) = 0.167 not to slide: ODE slides
+// off under Rinaldi at the first scale the search runs, where the model lifts off.
+TEST(StudyMeasure, AWallThatSlidOffFailsItsCollapseSearchAndRockingMetrics) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "no ODE in this build";
+    const TempDir dir;
+    const std::string record = std::string(VSSW_DATA_DIR) + "/NGA_no_1063_RRS228.AT2";
+    const std::string wall = "engines = [\"ode\"]\n[wall]\nmodel = \"parapet\"\nheight = 1.2\nthickness = 0.2\n"
+                             "friction = 0.05\n[excitation]\n";
+    const Grid collapse(study_of(dir, "metrics = [\"collapse_pga\"]\n" + wall + "kind = \"scale-to-collapse\"\nfile = \"" +
+                                          record + "\"\n", "collapse.toml"));
+    const Grid record_run(study_of(dir, "metrics = [\"overturned\", \"peak_rotation\", \"base_slip\"]\n" + wall +
+                                            "kind = \"record\"\nfile = \"" + record + "\"\npga = 0.5\n", "record.toml"));
+    for (const auto& [grid, out] : {std::pair{&collapse, "collapse"}, std::pair{&record_run, "record"}}) {
+        const ResultsTable t = run_into(*grid, dir / out);
+        const std::size_t metric = t.column("metric"), value = t.column("value"), status = t.column("status");
+        for (const auto& row : t.rows) {
+            if (row[metric] == "base_slip") {  // measured: a whole b, the slip meter's kSlidOffLimit
+                EXPECT_GE(std::stod(row[value]), 1.0);
+                continue;
+            }
+            EXPECT_TRUE(row[value].empty()) << row[metric];
+            EXPECT_NE(row[status].find("slid off its support"), std::string::npos) << row[metric] << ": " << row[status];
+        }
+    }
+}
+
 // A free vibration's restitution is the run's impact law (Eq. 19, the whole mechanism's) and its period the model's.
 TEST(StudyMeasure, FreeVibrationGivesTheModelsImpactLawAndPeriod) {
     const TempDir dir;
