@@ -14,6 +14,8 @@
 #include "analytic/ground_motion.hpp"
 #include "analytic/wall.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/kit/run_monitor.hpp"
+#include "multibody/kit/wall_parts.hpp"
 #include "tests/table1.hpp"
 
 namespace vssw {
@@ -160,6 +162,30 @@ TEST(TopSupportAgreement, EnginesThatMoveTheRollerAgree) {
         }
     }
     EXPECT_FALSE(run(movers[0], 0.0, 0.25)->overturned);  // a rigid top keeps the wall standing under 0.25 g
+}
+
+// The run monitor's energy check: off only where the roller moves, i.e. a flexible top under a ground motion (its
+// work is the engine's, unbounded by the ground's pseudo-forces). A still state given 4 rad/s from nowhere at 0.3
+// alpha1 is refused under a rigid top, and under a flexible one without shaking, where the roller stays put; under a
+// pulse the flexible top's check is off and only the geometric checks stand.
+TEST(TopSupportMonitor, EnergyCheckIsOffOnlyWhereTheRollerMoves) {
+    constexpr double kDt = 1e-3;  // [s] any step: one check
+    const auto energy_from_nowhere = [&](const WallScene& scene, const multibody::Excitation& ex) {
+        multibody::RunMonitor monitor("test", scene, ex, kDt, {});
+        const multibody::WallState s = multibody::still_state_at(scene, 0.3 * scene.alpha(), 4.0);
+        try {
+            monitor.check(kDt, s);
+        } catch (const multibody::EngineFailure& e) {
+            return std::string(e.what()).find("gained") != std::string::npos;
+        }
+        return false;
+    };
+    multibody::Excitation still;
+    still.t_end = 1.0;
+    EXPECT_TRUE(energy_from_nowhere(held_out_wall(0.0), still));
+    EXPECT_TRUE(energy_from_nowhere(held_out_wall(0.2), still));
+    EXPECT_TRUE(energy_from_nowhere(held_out_wall(0.0), pulse(0.2)));
+    EXPECT_FALSE(energy_from_nowhere(held_out_wall(0.2), pulse(0.2)));
 }
 
 }  // namespace
