@@ -16,26 +16,34 @@ PlanePoint local_of(const BlockState& k, double x, double y) {
 
 }  // namespace
 
-double base_slip(const WallState& s, const BlockSizes& z) {
-    const PlanePoint r = point_of(s.lower, z.b, -z.h_lower), l = point_of(s.lower, -z.b, -z.h_lower);
-    return r.y <= l.y ? r.x - z.b : l.x + z.b;
+// With rounded corners (r > 0) a rolling arc carries its nominal corner along with no slip: the slip is the drift of
+// the pivot's arc centre from where rolling without slip puts it (rounded_pose_at). At the base that is side (b - r) +
+// r theta1; at the hinge, in the lower block's frame, the upper arc's centre lies 2r from the lower's along the line
+// turned by half the blocks' relative rotation. With r = 0 the centres are the corners, and the places +b or -b.
+double base_slip(const WallState& s, const BlockSizes& z, double r) {
+    const double inner = z.b - r, roll = r * s.lower.angle;
+    const double below = -(z.h_lower - r);  // the base arcs' centres (the corners when r = 0), in the block's frame
+    const PlanePoint right = point_of(s.lower, inner, below), left = point_of(s.lower, -inner, below);
+    return right.y <= left.y ? right.x - (inner + roll) : left.x - (-inner + roll);
 }
 
-double hinge_slip(const WallState& s, const BlockSizes& z) {
+double hinge_slip(const WallState& s, const BlockSizes& z, double r) {
     if (z.h_upper <= 0.0 || std::isnan(s.upper.angle)) return 0.0;
-    const PlanePoint r = point_of(s.upper, z.b, -z.h_upper), l = point_of(s.upper, -z.b, -z.h_upper);
-    const PlanePoint r_on = local_of(s.lower, r.x, r.y), l_on = local_of(s.lower, l.x, l.y);
-    return r_on.y <= l_on.y ? r_on.x - z.b : l_on.x + z.b;
+    const double inner = z.b - r, roll = 2.0 * r * std::sin(0.5 * (s.upper.angle - s.lower.angle));
+    const double below = -(z.h_upper - r);
+    const PlanePoint right = point_of(s.upper, inner, below), left = point_of(s.upper, -inner, below);
+    const PlanePoint right_on = local_of(s.lower, right.x, right.y), left_on = local_of(s.lower, left.x, left.y);
+    return right_on.y <= left_on.y ? right_on.x - (inner + roll) : left_on.x - (-inner + roll);
 }
 
 SlipMeter::SlipMeter(const WallScene& scene, const BlockSizes& sizes)
-    : sizes_(sizes), vssw_(scene.vssw.has_value()), alpha_(scene.alpha()) {
+    : sizes_(sizes), radius_(scene.corner_radius()), vssw_(scene.vssw.has_value()), alpha_(scene.alpha()) {
     m_.b = sizes.b;
 }
 
 std::optional<std::string> SlipMeter::record(double t, const WallState& s) {
-    const double base = base_slip(s, sizes_);
-    const double hinge = vssw_ ? hinge_slip(s, sizes_) : 0.0;
+    const double base = base_slip(s, sizes_, radius_);
+    const double hinge = vssw_ ? hinge_slip(s, sizes_, radius_) : 0.0;
     m_.base_residual = base;
     m_.hinge_residual = hinge;
     m_.base_largest = std::max(m_.base_largest, std::abs(base));

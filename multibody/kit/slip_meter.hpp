@@ -25,11 +25,11 @@ constexpr double kSlidOffLimit = 1.0;
 
 // The base's slip: the drift from its place (+b or -b on the ground) of the lower of the lower block's two base
 // corners, along +x [m]: the pivot while it rocks (the other corner is lifted), either while it rests (both drift
-// alike).
-double base_slip(const WallState& s, const BlockSizes& sizes);
+// alike). With corners rounded to `radius` [m], the drift of that corner's arc centre from where rolling puts it.
+double base_slip(const WallState& s, const BlockSizes& sizes, double radius = 0.0);
 // The hinge's slip: the drift of the upper block's bottom corner nearer the lower block's top face (the hinge's pivot)
-// from its place on that face (+b or -b), along the face [m]; 0 for a parapet.
-double hinge_slip(const WallState& s, const BlockSizes& sizes);
+// from its place on that face (+b or -b), along the face [m]; 0 for a parapet. Rounded: as base_slip.
+double hinge_slip(const WallState& s, const BlockSizes& sizes, double radius = 0.0);
 
 class SlipMeter {
 public:
@@ -40,6 +40,7 @@ public:
 
 private:
     BlockSizes sizes_;
+    double radius_;  // the corners' [m] (WallScene::corner_radius)
     bool vssw_;
     double alpha_;
     SlipMeasures m_;
