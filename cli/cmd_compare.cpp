@@ -132,7 +132,7 @@ void run_compare_rounded(const CompareOptions& o, const ChosenModel& chosen, std
     }
     const compare::RoundedCornerComparison result = compare::compare_rounded_corners(runs, scene, o.theta0);
     if (o.json)
-        out << io::dump_json(to_json(result, o.wall, chosen.kind), 2) << '\n';
+        out << io::dump_json(to_json(result, o.wall, chosen.kind, o.theta0), 2) << '\n';
     else
         print_rounded_corners(out, result, o.wall, chosen.kind);
     std::vector<std::string> why;
@@ -163,6 +163,12 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
                                      "free vibration has no ground motion for the diaphragm to follow",
                                      chosen.wall.diaphragm.period));
     if (o.wall.corner_radius != 0.0) {
+        // Its runs give thresholds and periods, not slips: a friction would change them unreported.
+        if (o.friction)
+            throw InputError(fmt::format("--friction {} with --corner-radius: compare's rounded corners give each "
+                                         "engine's threshold and period, not its slips; a study with the keys "
+                                         "friction and corner_radius measures both",
+                                         *o.friction));
         run_compare_rounded(o, chosen, out);
         return;
     }
@@ -200,9 +206,11 @@ void run_compare(const CompareOptions& o, std::ostream& out) {
         if (i > 0) out << '\n';
         print_compare(out, run, reference);  // as each engine ends: a long run shows its progress
     }
-    if (o.json)
-        out << io::dump_json(several ? to_json(runs, reference, seconds_since(start)) : to_json(runs.front(), reference), 2)
-            << '\n';
+    if (o.json) {
+        io::Json j = several ? to_json(runs, reference, seconds_since(start)) : to_json(runs.front(), reference);
+        if (scene.slip_measured) j["friction"] = friction_json(scene);  // as under a motion: the run can be repeated
+        out << io::dump_json(j, 2) << '\n';
+    }
 
     std::vector<std::string> why;
     for (const EngineCompareRun& run : runs)
@@ -226,7 +234,7 @@ Command add_compare_command(CLI::App& root) {
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
-    add_diaphragm_options(*cmd, o->wall);
+    add_diaphragm_options(*cmd, o->wall, false);
     add_corner_radius_option(*cmd, o->wall);
     add_friction_option(*cmd, o->friction);
     cmd->add_option_function<double>(

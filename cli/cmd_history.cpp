@@ -35,7 +35,7 @@ Command add_history_command(CLI::App& root) {
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
-    add_diaphragm_options(*cmd, o->wall);
+    add_diaphragm_options(*cmd, o->wall, true);
     cmd->add_option_function<double>(
         "--output-dt", [o](const double& dt) { o->request.output_dt = dt; },
         "spacing of the CSV samples [s] (default: the record's sample spacing; T_p/100 for a pulse)");

@@ -69,7 +69,7 @@ io::Json to_json(const EngineCompareRun& run, const CompareReference& r) {
             {"analytic_warnings", c.analytic_warnings},
             {"wall", wall_inputs_json(r.wall, r.kind)}};
     // With --friction: the engine's slips along its free vibration (friction_option.hpp).
-    if (c.free_vibration_slip) j["free_vibration_slip"] = slip_json(*c.free_vibration_slip);
+    if (c.free_vibration_slip) j["free_vibration_slip"] = slip_json(*c.free_vibration_slip, r.kind == WallKind::vssw);
     return j;
 }
 

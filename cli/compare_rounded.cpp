@@ -17,7 +17,7 @@ std::string text_or_none(double v, const char* format) {
 
 }  // namespace
 
-io::Json to_json(const compare::RoundedCornerComparison& c, const WallOptions& wall, WallKind kind) {
+io::Json to_json(const compare::RoundedCornerComparison& c, const WallOptions& wall, WallKind kind, double release) {
     io::Json engines = io::Json::array();
     for (const compare::RoundedEngineResult& e : c.engines)
         engines.push_back({{"engine", e.engine},
@@ -28,7 +28,7 @@ io::Json to_json(const compare::RoundedCornerComparison& c, const WallOptions& w
     return {{"wall", wall_inputs_json(wall, kind)},
             {"corner_radius", c.corner_radius_ratio},
             {"closed_forms", {{"threshold_g", c.closed_form_g}, {"threshold_sharp_g", c.sharp_closed_form_g}}},
-            {"theta0", c.theta0},
+            {"theta0", release},  // as plain compare writes it: the fraction of alpha typed
             {"engines", engines},
             {"threshold_spread", io::finite_or_null(c.threshold_spread)},
             {"period_spread", io::finite_or_null(c.period_spread)}};

@@ -9,7 +9,8 @@
 
 namespace vssw::cli {
 
-io::Json to_json(const compare::RoundedCornerComparison& c, const WallOptions& wall, WallKind kind);
+// theta0 in the JSON is the release as typed (--theta0, a fraction of alpha), as plain compare writes it.
+io::Json to_json(const compare::RoundedCornerComparison& c, const WallOptions& wall, WallKind kind, double release);
 void print_rounded_corners(std::ostream& out, const compare::RoundedCornerComparison& c, const WallOptions& wall,
                            WallKind kind);
 

@@ -51,13 +51,13 @@ io::Json friction_json(const multibody::WallScene& scene) {
     return {{"base", scene.base_mu()}, {"hinge", scene.vssw ? io::Json(scene.hinge_mu()) : io::Json(nullptr)}};
 }
 
-io::Json slip_json(const multibody::SlipMeasures& s) {
+io::Json slip_json(const multibody::SlipMeasures& s, bool has_hinge) {
     auto contact = [&](double largest, double residual) {
         return io::Json{{"largest_m", largest}, {"largest_b", largest / s.b}, {"residual_m", residual},
                         {"residual_b", residual / s.b}};
     };
     return {{"base", contact(s.base_largest, s.base_residual)},
-            {"hinge", contact(s.hinge_largest, s.hinge_residual)},
+            {"hinge", has_hinge ? contact(s.hinge_largest, s.hinge_residual) : io::Json(nullptr)},
             {"tolerance_b", multibody::kSlipTolerance},
             {"t_first_slip", time_or_null(s.t_first_slip)},
             {"t_first_lift", time_or_null(s.t_first_lift)},

@@ -24,7 +24,7 @@ multibody::WallScene with_friction(multibody::WallScene scene, const std::option
 // {base, hinge} of a scene whose friction was given; null otherwise.
 io::Json friction_json(const multibody::WallScene& scene);
 // The measured slips of an engine run: {base {largest_m, largest_b, residual_m, residual_b}, hinge {...},
-// t_first_slip, t_first_lift, slid_before_rocking, slid_off}.
-io::Json slip_json(const multibody::SlipMeasures& slip);
+// t_first_slip, t_first_lift, slid_before_rocking, slid_off}; hinge null for a parapet (it has none).
+io::Json slip_json(const multibody::SlipMeasures& slip, bool has_hinge);
 
 }  // namespace vssw::cli

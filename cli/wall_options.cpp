@@ -58,15 +58,23 @@ void add_corner_radius_option(CLI::App& cmd, WallOptions& o) {
                                kMaxCornerRadius));
 }
 
-void add_diaphragm_options(CLI::App& cmd, WallOptions& o) {
+void add_diaphragm_options(CLI::App& cmd, WallOptions& o, bool model_only) {
+    const std::string follows =
+        model_only ? "the analytic model cannot follow a moving top (Eq. 9e), so a period > 0 is refused with that "
+                     "reason here: `vssw compare` runs it in the engines"
+                   : "the roller follows its response to the ground motion (Eq. 9d)";
     cmd.add_option("--diaphragm-period", o.diaphragm.period,
-                   fmt::format("period T_d [s] of the diaphragm that carries a VSSW's top roller, in [0, {:g}]: the "
-                               "roller follows its response to the ground motion (Eq. 9d); 0 a rigid diaphragm, the "
-                               "top moving with the ground (the paper's Eq. 9, default)",
-                               kMaxDiaphragmPeriod));
-    cmd.add_option("--diaphragm-damping", o.diaphragm.damping,
-                   fmt::format("the diaphragm's damping ratio zeta_d in [0, {:g}] (default {:g})", kMaxDiaphragmDamping,
-                               kDefaultDiaphragmDamping));
+                   fmt::format("period T_d [s] of the diaphragm that carries a VSSW's top roller, in [0, {:g}]: {}; 0 "
+                               "a rigid diaphragm, the top moving with the ground (the paper's Eq. 9, default)",
+                               kMaxDiaphragmPeriod, follows));
+    cmd.add_option_function<double>(
+        "--diaphragm-damping",
+        [&o](const double& damping) {
+            o.diaphragm.damping = damping;
+            o.diaphragm_damping_given = true;
+        },
+        fmt::format("the diaphragm's damping ratio zeta_d in [0, {:g}] (default {:g}), with --diaphragm-period",
+                    kMaxDiaphragmDamping, kDefaultDiaphragmDamping));
 }
 
 void add_model_options(CLI::App& cmd, ModelOptions& o) {
@@ -130,6 +138,10 @@ ChosenModel choose_model(const WallOptions& wall, const ModelOptions& options) {
     const WallKind kind = parse_wall_kind(options.model);
     const Assumptions a = resolve_assumptions(options);  // checked even where a parapet ignores a part
     require_diaphragm(wall.diaphragm, "--diaphragm-period T_d (s)", "--diaphragm-damping zeta_d");
+    if (wall.diaphragm_damping_given && wall.diaphragm.is_rigid())
+        throw InputError(fmt::format("--diaphragm-damping {:g} without --diaphragm-period: a rigid top support has no "
+                                     "damping to take (give the diaphragm's period T_d > 0)",
+                                     wall.diaphragm.damping));
     if (kind == WallKind::parapet) {
         if (!wall.diaphragm.is_rigid())
             throw InputError(fmt::format("--diaphragm-period {:g}: a parapet has no top support for a diaphragm to "

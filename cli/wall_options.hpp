@@ -32,6 +32,7 @@ struct WallOptions {
     double density = kDefaultDensity;
     double g = kDefaultGravity;
     Diaphragm diaphragm;  // the VSSW's top support (--diaphragm-period, --diaphragm-damping): rigid unless given
+    bool diaphragm_damping_given = false;  // refused without a period: a rigid top has no damping to take
     double corner_radius = 0.0;   // r/b of the blocks' rounded corners, in [0, kMaxCornerRadius] (analytic/wall.hpp)
 };
 
@@ -62,8 +63,9 @@ Assumptions resolve_assumptions(const ModelOptions& options);
 // vssw_geometry(), so that a parapet can be given without one.
 void add_wall_options(CLI::App& cmd, WallOptions& options, bool model_choice);
 // --diaphragm-period, --diaphragm-damping: the VSSW's top support carried by a diaphragm (analytic/diaphragm.hpp), for
-// the commands that run a wall under a ground motion (history, compare). Checked by choose_model.
-void add_diaphragm_options(CLI::App& cmd, WallOptions& options);
+// the commands that run a wall under a ground motion (history, compare). Checked by choose_model. `model_only`: the
+// command runs the analytic model alone (history), which cannot follow a flexible top and refuses it; its help says so.
+void add_diaphragm_options(CLI::App& cmd, WallOptions& options, bool model_only);
 // --corner-radius: on the commands whose answer holds for rounded corners (compare, wall); the analytic model's
 // motion is the sharp blocks' (docs/model/analytic-core.md, "Rounded corners"), so free and history do not take it.
 void add_corner_radius_option(CLI::App& cmd, WallOptions& options);

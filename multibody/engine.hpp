@@ -143,7 +143,9 @@ struct LocatedEvents {
 // along the lower block's top face (multibody/kit/slip_meter.hpp). Signed slips are along +x (base) or the lower
 // block's top face (hinge) [m]; a parapet's hinge stays 0.
 struct SlipMeasures {
-    double base_largest = 0.0, base_residual = 0.0;    // largest |slip| over the run and the slip at its end [m]
+    // Largest |slip| over the run and the last slip measured [m]: at the run's end, or where the wall left its
+    // mechanism (overturning: the blocks' drift as they fold is the collapse, not a slip).
+    double base_largest = 0.0, base_residual = 0.0;
     double hinge_largest = 0.0, hinge_residual = 0.0;  // the same at the hinge [m]
     double b = 0.0;                                    // the half-thickness the slips are given in units of [m]
     // The first time either slip passed kSlipTolerance b, and the first time |theta1| passed kLiftTolerance alpha

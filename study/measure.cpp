@@ -163,12 +163,38 @@ bool is_rocking_metric(const std::string& metric) {
     return metric == "peak_rotation" || metric == "peak_time" || metric == "overturned" || metric == "t_overturn";
 }
 
+// A response metric's row from a run: its value and status (nullopt: not a response metric).
+std::optional<std::pair<double, std::string>> response_row(const std::string& metric, const compare::Response& r,
+                                                           double alpha) {
+    // A wall that slid off its support ended its run there: its rocking (peak, overturning) was not followed to the
+    // end, so those metrics fail with the reason; the slips stay measured.
+    if (r.slip && r.slip->slid_off && is_rocking_metric(metric)) return std::pair{kNaN, failed(*r.slip->slid_off)};
+    std::optional<double> v;
+    if (metric == "peak_rotation") v = r.peak / alpha;
+    else if (metric == "peak_time") v = r.peak_time;
+    else if (metric == "overturned") v = r.overturned ? 1.0 : 0.0;
+    else if (metric == "t_overturn") v = r.t_overturn.value_or(kNaN);
+    else if (metric == "energy_balance_error") v = r.energy_error.value_or(kNaN);
+    else if (metric == "roller_tension_time") v = r.tension_at.value_or(kNaN);
+    else v = friction_metric(metric, r);
+    if (!v) return std::nullopt;
+    return std::pair{*v, std::string(kOk)};
+}
+
 // A run's warnings: the analytic model's own, or an engine's wall that slid off its support, which ended the run
 // there (multibody::SlipMeter).
 std::vector<std::string> warnings_of(const Trajectory& t) {
     std::vector<std::string> w = t.warnings;
     if (t.slip && t.slip->slid_off) w.push_back(*t.slip->slid_off);
     return w;
+}
+
+// Why a free vibration has no first impact: the wall overturned, slid off its support (which ended the run), or did
+// not come back within the run.
+std::string no_impact_reason(const Trajectory& t) {
+    if (t.overturned) return "no impact: the wall overturned";
+    if (t.slip && t.slip->slid_off) return "no impact: " + *t.slip->slid_off;
+    return "no impact within the run";
 }
 
 Trajectory run_from_rest(const multibody::Engine& engine, const RunSpec& run, const CaseSpec& c,
@@ -422,13 +448,12 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                     add(m, kNaN, failed(free_failure));
                 } else if (metric == "period") {
                     if (free->period) add(m, *free->period, kOk);
-                    else add(m, kNaN, failed(free->trajectory.overturned ? "no impact: the wall overturned"
-                                                                         : "no impact within the run"));
+                    else add(m, kNaN, failed(no_impact_reason(free->trajectory)));
                 } else {  // restitution
                     if (free->restitution) add(m, *free->restitution, kOk);
                     else if (!free->restitution_note.empty()) add(m, kNaN, failed(free->restitution_note));
                     else add(m, kNaN, failed(free->period ? "the first impact is not resolved by the samples"
-                                                          : "no impact within the run"));
+                                                          : no_impact_reason(free->trajectory)));
                 }
                 break;
             }
@@ -451,20 +476,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
                     add(m, kNaN, failed(response_failure));
                     break;
                 }
-                const Response& r = *response;
-                // A wall that slid off its support ended its run there: its rocking (peak, overturning) was not
-                // followed to the end, so those metrics fail with the reason; the slips stay measured.
-                if (r.slip && r.slip->slid_off && is_rocking_metric(metric)) {
-                    add(m, kNaN, failed(*r.slip->slid_off));
-                    break;
-                }
-                if (metric == "peak_rotation") add(m, r.peak / alpha, kOk);
-                else if (metric == "peak_time") add(m, r.peak_time, kOk);
-                else if (metric == "overturned") add(m, r.overturned ? 1.0 : 0.0, kOk);
-                else if (metric == "t_overturn") add(m, r.t_overturn.value_or(kNaN), kOk);
-                else if (metric == "energy_balance_error") add(m, r.energy_error.value_or(kNaN), kOk);
-                else if (metric == "roller_tension_time") add(m, r.tension_at.value_or(kNaN), kOk);
-                else if (const std::optional<double> v = friction_metric(metric, r)) add(m, *v, kOk);
+                if (auto row = response_row(metric, *response, alpha)) add(m, row->first, std::move(row->second));
                 break;
             }
             case compare::MetricSource::collapse: {
@@ -486,7 +498,7 @@ std::vector<Measurement> measure(const Grid& grid, const CaseSpec& c, std::size_
     if (ida && collapse) *ida = collapse->points;
     // The analytic model's warnings from the run the rows come from (a threshold's trials have none to report).
     std::vector<std::string> warnings;
-    if (free) warnings = free->trajectory.warnings;
+    if (free) warnings = warnings_of(free->trajectory);
     if (response_warnings) warnings = *response_warnings;
     std::string joined;
     for (const std::string& w : warnings) joined += (joined.empty() ? "" : "; ") + io::one_line(w);

@@ -557,6 +557,16 @@ INSTANTIATE_TEST_SUITE_P(
             {"--friction", "MU_BASE,MU_HINGE", "got '0.5,'"}),
         bad("InfiniteFriction", with_fig6({"compare", "--engine", "analytic", "--friction", "0.5,inf"}),
             {"--friction", "finite", "got '0.5,inf'"}),
+        // compare's rounded corners give thresholds and periods, not slips: a friction there would act unreported
+        // (it was dropped, and bad text passed with exit 0).
+        bad("FrictionWithRoundedCorners",
+            with_fig6({"compare", "--engine", "ode", "--corner-radius", "0.1", "--friction", "abc"}),
+            {"--friction abc with --corner-radius", "a study with the keys friction and corner_radius"}),
+        // A damping is the diaphragm's: without its period it would be ignored.
+        bad("DiaphragmDampingWithoutItsPeriod",
+            with_fig6({"compare", "--engine", "ode", "--diaphragm-damping", "0.1", "--pulse", "sine", "--amplitude",
+                       "0.3", "--pulse-period", "0.5"}),
+            {"--diaphragm-damping 0.1 without --diaphragm-period"}),
         bad("NanHeight", {"wall", "--height", "nan", "--thickness", "0.4", "--hinge", "0.7"}, {"height", "nan"}),
         bad("NonNumericHeight", {"wall", "--height", "abc", "--thickness", "0.4", "--hinge", "0.7"},
             {"--height", "abc"}),
@@ -628,6 +638,7 @@ TEST(CliCompare, RoundedCornersReportEachEngineAndTheirSpread) {
     EXPECT_NEAR(j["engines"][0]["threshold_rel_error"].get<double>(), 0.0, vssw::compare::kThresholdTarget);
     EXPECT_GT(j["engines"][0]["period"].get<double>(), 0.0);
     EXPECT_TRUE(j["threshold_spread"].is_null());  // one engine: no spread
+    EXPECT_EQ(j["theta0"].get<double>(), 0.5);  // the release as plain compare writes it: a fraction of alpha, as typed
     if (!vssw::testing::engine_available("simbody")) return;
     const CliResult refused = run_cli(std::vector<std::string>{"compare", "--engine", "simbody"} +
                                       std::vector<std::string>(wall.begin() + 1, wall.end()));
@@ -1337,9 +1348,6 @@ TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
                      {"--run-budget must be a number, got an empty value"});
 }
 
-// --friction under a pulse: the JSON names the friction, each engine's slips and the model's need and whether it would
-// slide. Table 1 #2 under a 0.35 g sine pulse needs 0.169 at the base (FiniteFriction's wall): at 0.12 Box2D slides
-// before it rocks and the model says it would; without --friction none of these keys is printed.
 // A wall that overturns with its friction given has not slid: past the unstable equilibrium the blocks fold, and the
 // drift of their corners is the collapse (before the slip meter stopped there, the hinge "slid" a whole b as the upper
 // block fell, and the run ended as slid off).
@@ -1382,6 +1390,21 @@ TEST(CliCompare, AWallThatSlidOffIsNeitherStandingNorOverturned) {
     EXPECT_EQ(table.out.find("stands"), std::string::npos) << table.out;
 }
 
+// A free vibration with --friction: the JSON names the friction given, as under a motion, so that the run can be
+// repeated from it; a parapet's slips have no hinge (null, not zeros).
+TEST(CliCompare, FrictionOfAFreeVibrationIsInItsJson) {
+    if (!engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
+    const Json j = run_json({"compare", "--engine", "ode", "--model", "parapet", "--height", "1.2", "--thickness", "0.2",
+                             "--friction", "0.5"});
+    EXPECT_EQ(j["friction"]["base"].get<double>(), 0.5);
+    EXPECT_TRUE(j["friction"]["hinge"].is_null());
+    EXPECT_TRUE(j["free_vibration_slip"]["hinge"].is_null());
+    EXPECT_TRUE(j["free_vibration_slip"]["base"]["largest_b"].is_number());
+}
+
+// --friction under a pulse: the JSON names the friction, each engine's slips and the model's need and whether it would
+// slide. Table 1 #2 under a 0.35 g sine pulse needs 0.169 at the base (FiniteFriction's wall): at 0.12 Box2D slides
+// before it rocks and the model says it would; without --friction none of these keys is printed.
 TEST(CliCompare, FrictionMakesSlidingAMeasuredResponse) {
     if (!engine_available("box2d")) GTEST_SKIP() << "no Box2D in this build";
     const std::vector<std::string> run = std::vector<std::string>{"compare", "--engine", "analytic,box2d", "--pulse",

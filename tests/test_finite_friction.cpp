@@ -23,7 +23,6 @@
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/slip_meter.hpp"
 #include "tests/engine_scenes.hpp"
-#include "tests/known_differences.hpp"
 #include "tests/table1.hpp"
 
 namespace vssw {
@@ -149,9 +148,6 @@ protected:
         settings_ = engine_->default_settings();
         // simbody-rigid refuses a friction given with its default PLUS solver (SimbodyRigidNeedsPgs): PGS slides.
         if (GetParam() == "simbody-rigid") settings_.knobs["solver"] = 1.0;
-        const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        if (const auto reason = testing::known_difference(GetParam(), name.substr(0, name.find('/'))))
-            GTEST_SKIP() << *reason;
     }
     SlipMeasures slips(const WallScene& scene, const Excitation& ex) const {
         const Trajectory t = engine_->simulate(scene, ex, settings_);

@@ -471,8 +471,6 @@ TEST(StudyCli, AStudyAndAReportRefuseEachOthersFolder) {
     EXPECT_FALSE(std::filesystem::exists(dir / "report" / "manifest.json"));
 }
 
-// The folder is replaced whole: a second study leaves none of the first's files, and the files that are not vssw's
-// (a user's notes, study_slurm.sh's shards/) are carried over.
 // Resuming a finished incremental dynamic analysis rewrites its outputs in place: ida.csv is the study's own file (it
 // was carried over as a user's file and clashed with the new one: "cannot carry its other files over").
 TEST(StudyCli, AFinishedIdaResumesAndRewritesItsOutputs) {
@@ -490,6 +488,8 @@ TEST(StudyCli, AFinishedIdaResumesAndRewritesItsOutputs) {
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / "ida.csv"));
 }
 
+// The folder is replaced whole: a second study leaves none of the first's files, and the files that are not vssw's
+// (a user's notes, study_slurm.sh's shards/) are carried over.
 TEST(StudyCli, ASecondStudyReplacesTheFolderWholeAndKeepsTheUsersFiles) {
     const TempDir dir;
     const std::string file = write_file(dir / "s.toml", kStudy).string(), out = (dir / "out").string();

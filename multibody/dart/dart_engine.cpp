@@ -54,7 +54,6 @@
 #include <dart/simulation/World.hpp>
 
 #include <cmath>
-#include <algorithm>
 #include <memory>
 #include <string>
 #include <tuple>

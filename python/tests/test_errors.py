@@ -256,3 +256,22 @@ def test_an_exception_from_progress_stops_a_study_and_leaves_it_resumable(tmp_pa
     vssw.study(tmp_path / "odes.toml", out_dir, threads=1, plots=False, resume=True)
     rows = (out_dir / "results.csv").read_text().splitlines()
     assert len(rows) == 1 + 20, "the resumed study holds every run once"
+
+
+# The wall's newer keywords are named as Python takes them (not as the command line's --options), and a damping
+# without a diaphragm's period is refused rather than ignored.
+@pytest.mark.parametrize("keyword, value, named", [
+    ("diaphragm_period", -1.0, r"^diaphragm_period T_d \(s\).*got -1"),
+    ("overburden_eccentricity", 1.5, r"overburden eccentricity e/b.*got 1.5"),
+    ("corner_radius", 0.6, r"corner radius r/b.*got 0.6"),
+])
+def test_a_wall_keyword_out_of_range_is_named_as_python_takes_it(keyword, value, named):
+    wall = dict(height=3.05, thickness=0.143, hinge=0.6)
+    with pytest.raises(vssw.InputError, match=named) as raised:
+        vssw.simulate("ode", theta0=0.5, **{keyword: value}, **wall)
+    assert "--" not in str(raised.value)
+
+
+def test_a_diaphragm_damping_without_its_period_is_refused():
+    with pytest.raises(vssw.InputError, match="diaphragm_damping 0.1 without diaphragm_period"):
+        vssw.simulate("ode", theta0=0.5, height=3.05, thickness=0.143, hinge=0.6, diaphragm_damping=0.1)

@@ -105,6 +105,9 @@ def _wall(model, height, thickness, hinge, xi, density, g, assumptions=None, kin
           roller=None, overburden_eccentricity=0.0, corner_radius=0.0, diaphragm_period=0.0, diaphragm_damping=None):
     """The wall and the analytic model's assumptions: a named set (default "mechanism", as every command's), any of
     kinematics, impact, roller overriding one part of it."""
+    if diaphragm_damping is not None and diaphragm_period == 0.0:
+        raise InputError(f"diaphragm_damping {diaphragm_damping!r} without diaphragm_period: a rigid top support has "
+                         "no damping to take (give the diaphragm's period > 0)", _core.EXIT_BAD_INPUT)
     return _core.WallArgs(
         model=_word("model", model, "vssw"), height=_number("height", height),
         thickness=_number("thickness", thickness), hinge=_number("hinge", hinge, optional=True),
@@ -280,7 +283,8 @@ def _check_engines(names):
 _OPTION_NAMES = {f"--{name.replace('_', '-')}": name
                  for name in ["record", "scale", "pga", "pulse", "amplitude", "pulse_period", "duration", "model",
                               "height", "thickness", "hinge", "xi", "density", "g", "assumptions", "kinematics", "impact",
-                              "roller"]}
+                              "roller", "overburden_eccentricity", "corner_radius", "diaphragm_period",
+                              "diaphragm_damping", "friction"]}
 
 
 def _with_python_names(call):
