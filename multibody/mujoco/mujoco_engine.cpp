@@ -169,6 +169,25 @@ std::string capsule_xml(const std::string& name, double r, double x, double z) {
                        num(0.5 * kDepth), num(x), num(z));
 }
 
+// The roller (VSSW only): a plane at x = +b and one at x = -b, each pushing on the sphere at the upper block's top
+// corner on its side (one-sided each), and the pairs that make them meet.
+std::string guides_xml(const BlockSizes& s) {
+    return fmt::format("<geom name='guide_right' type='plane' size='100 100 1' pos='{} 0 0' zaxis='-1 0 0'/>\n"
+                       "<geom name='guide_left' type='plane' size='100 100 1' pos='{} 0 0' zaxis='1 0 0'/>\n",
+                       num(s.b), num(-s.b));
+}
+std::string top_spheres_xml(const BlockSizes& s) {
+    return fmt::format("<geom name='top_right' type='sphere' size='{0}' pos='{1} 0 {3}'/>"
+                       "<geom name='top_left' type='sphere' size='{0}' pos='{2} 0 {3}'/>",
+                       num(kRollerSphereRadius), num(s.b - kRollerSphereRadius), num(-(s.b - kRollerSphereRadius)),
+                       num(s.h_upper));
+}
+std::string roller_pairs_xml(const std::string& contact) {
+    return fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {0}/>\n"
+                       "<pair geom1='guide_left' geom2='top_left' condim='1' {0}/>\n",
+                       contact);
+}
+
 // friction, hinge_friction: the base's and the hinge's pair attributes (model_xml).
 std::string rounded_model_xml(const WallScene& scene, const std::string& head, const std::string& friction,
                               const std::string& hinge_friction, const std::string& contact) {
@@ -184,15 +203,9 @@ std::string rounded_model_xml(const WallScene& scene, const std::string& head, c
     // The box geom is the flat part's: b - r wide; the block's mass and inertia are given, the rectangle's.
     xml += block_xml("lower", s.b, s.h_lower, s.m_lower, s.h_lower, lower_extra, in);
     if (scene.vssw) {
-        const double rs = kRollerSphereRadius;
-        xml += fmt::format("<geom name='guide_right' type='plane' size='100 100 1' pos='{} 0 0' zaxis='-1 0 0'/>\n"
-                           "<geom name='guide_left' type='plane' size='100 100 1' pos='{} 0 0' zaxis='1 0 0'/>\n",
-                           num(s.b), num(-s.b));
-        const std::string upper_extra =
-            fmt::format("<geom name='top_right' type='sphere' size='{0}' pos='{1} 0 {3}'/>"
-                        "<geom name='top_left' type='sphere' size='{0}' pos='{2} 0 {3}'/>",
-                        num(rs), num(s.b - rs), num(-(s.b - rs)), num(s.h_upper)) +
-            capsule_xml("upper_br", r, in, -(s.h_upper - r)) + capsule_xml("upper_bl", r, -in, -(s.h_upper - r));
+        xml += guides_xml(s);
+        const std::string upper_extra = top_spheres_xml(s) + capsule_xml("upper_br", r, in, -(s.h_upper - r)) +
+                                        capsule_xml("upper_bl", r, -in, -(s.h_upper - r));
         xml += block_xml("upper", s.b, s.h_upper, s.m_upper, 2.0 * s.h_lower + s.h_upper, upper_extra, in);
     }
     xml += "</worldbody>\n<contact>\n";
@@ -202,8 +215,7 @@ std::string rounded_model_xml(const WallScene& scene, const std::string& head, c
         for (const char* pair : {"geom1='hinge_face' geom2='upper_br'", "geom1='hinge_face' geom2='upper_bl'",
                                  "geom1='lower_tr' geom2='upper_br'", "geom1='lower_tl' geom2='upper_bl'"})
             xml += fmt::format("<pair {} condim='3' {} {}/>\n", pair, hinge_friction, contact);
-        xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
-        xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
+        xml += roller_pairs_xml(contact);
     }
     xml += "</contact>\n</mujoco>\n";
     return xml;
@@ -234,17 +246,12 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
                                         : std::string();
     xml += block_xml("lower", s.b, s.h_lower, s.m_lower, s.h_lower, face);
     if (scene.vssw) {
-        const double r = kRollerSphereRadius;
-        xml += fmt::format("<geom name='guide_right' type='plane' size='100 100 1' pos='{} 0 0' zaxis='-1 0 0'/>\n"
-                           "<geom name='guide_left' type='plane' size='100 100 1' pos='{} 0 0' zaxis='1 0 0'/>\n",
-                           num(s.b), num(-s.b));
-        const std::string top = fmt::format(
-            "<geom name='top_right' type='sphere' size='{0}' pos='{1} 0 {3}'/>"
-            "<geom name='top_left' type='sphere' size='{0}' pos='{2} 0 {3}'/>"
-            "<geom name='bottom_right' type='sphere' size='{4}' pos='{5} 0 {6}'/>"
-            "<geom name='bottom_left' type='sphere' size='{4}' pos='{7} 0 {6}'/>",
-            num(r), num(s.b - r), num(-(s.b - r)), num(s.h_upper), num(kHingeSphereRadius), num(s.b),
-            num(-s.h_upper + kHingeSphereRadius), num(-s.b));
+        xml += guides_xml(s);
+        const std::string top = top_spheres_xml(s) +
+                                fmt::format("<geom name='bottom_right' type='sphere' size='{0}' pos='{1} 0 {2}'/>"
+                                            "<geom name='bottom_left' type='sphere' size='{0}' pos='{3} 0 {2}'/>",
+                                            num(kHingeSphereRadius), num(s.b), num(-s.h_upper + kHingeSphereRadius),
+                                            num(-s.b));
         xml += block_xml("upper", s.b, s.h_upper, s.m_upper, 2.0 * s.h_lower + s.h_upper, top);
     }
     xml += "</worldbody>\n<contact>\n";
@@ -253,8 +260,7 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
         for (const char* corner : {"bottom_right", "bottom_left"})
             xml += fmt::format("<pair geom1='hinge_face' geom2='{}' condim='3' {} {}/>\n", corner, hinge_friction,
                                contact);
-        xml += fmt::format("<pair geom1='guide_right' geom2='top_right' condim='1' {}/>\n", contact);
-        xml += fmt::format("<pair geom1='guide_left' geom2='top_left' condim='1' {}/>\n", contact);
+        xml += roller_pairs_xml(contact);
     }
     xml += "</contact>\n</mujoco>\n";
     return xml;
