@@ -46,7 +46,6 @@ public:
             update_rounded();
             return;
         }
-        const double x0 = roller_.getWorldTransform().getOrigin().x();
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
         const btTransform& tl = lower_.getWorldTransform();
@@ -64,18 +63,7 @@ public:
             const btVector3 corner = tu * btVector3(side * b_, -h_upper_, 0);
             add(hinge, corner, corner - n * (corner - face).dot(n), n, hinge_friction_);
         }
-        btPersistentManifold& roller = *manifolds_[2];
-        roller.clearManifold();
-        // Both guides, each pushing its corner back inside (normal from the line towards the wall). The corner off
-        // the pivot's side sits inside its line by about b theta2^2, a speculative row that stays idle. Measured:
-        // with only the pivot's guide in the solve (chosen before the step, by the corners), the guide of the new
-        // pivot missed the impact step and took its impulse a step later, a second impact that moved the Table 1
-        // walls' restitution by up to 2.8 % at xi 0.5; with both, within 1 % (docs/engines.md "Bullet"). (Two guides as
-        // Bullet joint limits had squeezed the top with opposing impulses; as unilateral contact rows they do not.)
-        for (double side : {-1.0, 1.0}) {
-            const btVector3 corner = tu * btVector3(side * b_, h_upper_, 0);
-            add(roller, corner, btVector3(x0 + side * b_, corner.y(), 0), btVector3(-side, 0, 0), 0.0);
-        }
+        update_roller(tu);
     }
 
     // The constructor always makes the base's manifold, so the list is never empty.
@@ -101,7 +89,7 @@ private:
     // common end, then the arcs rolling on each other; the circles lie inside the blocks, so the distance never
     // reports an overlap the outlines do not have. The roller holds the nominal top corners, as for sharp blocks.
     void update_rounded() {
-        const double x0 = roller_.getWorldTransform().getOrigin().x(), in = b_ - r_;
+        const double in = b_ - r_;
         btPersistentManifold& base = *manifolds_[0];
         base.clearManifold();
         const btTransform& tl = lower_.getWorldTransform();
@@ -122,6 +110,18 @@ private:
             const btVector3 n = (c_upper - c_lower).normalized();  // on the lower block, towards the upper
             add(hinge, c_upper - n * r_, c_lower + n * r_, n, hinge_friction_);
         }
+        update_roller(tu);
+    }
+
+    // The roller, rounded corners or not: both guides, each pushing the nominal top corner on its side back inside
+    // (normal from the line towards the wall). The corner off the pivot's side sits inside its line by about
+    // b theta2^2, a speculative row that stays idle. Measured: with only the pivot's guide in the solve (chosen before
+    // the step, by the corners), the guide of the new pivot missed the impact step and took its impulse a step later,
+    // a second impact that moved the Table 1 walls' restitution by up to 2.8 % at xi 0.5; with both, within 1 %
+    // (docs/engines.md "Bullet"). (Two guides as Bullet joint limits had squeezed the top with opposing impulses; as
+    // unilateral contact rows they do not.) The lines follow the roller's body (the ground, or a flexible top's).
+    void update_roller(const btTransform& tu) {
+        const double x0 = roller_.getWorldTransform().getOrigin().x();
         btPersistentManifold& roller = *manifolds_[2];
         roller.clearManifold();
         for (double side : {-1.0, 1.0}) {
