@@ -164,23 +164,11 @@ public:
         SimTK::Force::UniformGravity(forces_, matter_, Vec3(0, -scene.gravity(), 0));
         base_ = matter_.Ground();
         lower_ = add_block(sizes_.h_lower, sizes_.m_lower);
-        const double rc = scene.corner_radius();
-        if (rc > 0.0) {  // rounded corners: the base arcs as spheres on the ground (add_rounded_contacts)
-            add_rounded_contacts(rc, mu, mu_hinge, scene.vssw.has_value());
-        } else {
-            for (double side : {1.0, -1.0})
-                matter_.adoptUnilateralContact(new PointPlaneContact(
-                    base_, UnitVec3(0, 1, 0), 0.0, lower_, Vec3(side * b, -sizes_.h_lower, 0), 0.0, mu, mu, 0.0));
-        }
+        add_base_contacts(scene.corner_radius(), mu);
         if (scene.vssw) {
-            if (rc <= 0.0) {
-                upper_ = add_block(sizes_.h_upper, sizes_.m_upper);
-                has_upper_ = true;
-                for (double side : {1.0, -1.0})
-                    matter_.adoptUnilateralContact(new PointPlaneContact(lower_, UnitVec3(0, 1, 0), sizes_.h_lower,
-                                                                         upper_, Vec3(side * b, -sizes_.h_upper, 0),
-                                                                         0.0, mu_hinge, mu_hinge, 0.0));
-            }
+            upper_ = add_block(sizes_.h_upper, sizes_.m_upper);
+            has_upper_ = true;
+            add_hinge_contacts(scene.corner_radius(), mu_hinge);
             // Roller guides: n . p >= height, i.e. -x >= -b (right corner) and x >= -b (left corner).
             matter_.adoptUnilateralContact(new GatedGuide(base_, UnitVec3(-1, 0, 0), -b, upper_,
                                                           Vec3(b, sizes_.h_upper, 0), inputs_.right_guide));
@@ -209,25 +197,40 @@ public:
     StepInputs& inputs() { return inputs_; }
 
 private:
-    // Rounded corners (kit/rounded_corners.hpp), for r > 0: the lower block's base arcs as spheres of radius r (their
-    // centres r inside both faces) on the ground plane, and, for a VSSW, the upper block made here with each of its
-    // bottom arcs a sphere on the lower block's top arc of the same side (Simbody's SpherePlaneContact and
-    // SphereSphereContact, Coulomb friction mu at the base and mu_hinge at the hinge). At rest every sphere touches at a flat's end; the spheres lie inside
-    // the blocks, so they report no contact the outlines do not have.
-    void add_rounded_contacts(double r, double mu, double mu_hinge, bool vssw) {
+    // The lower block on the ground, Coulomb friction mu: its two bottom corners as points on the plane, or, with
+    // rounded corners (kit/rounded_corners.hpp, r > 0), its base arcs as spheres of radius r (their centres r inside
+    // both faces; Simbody's SpherePlaneContact). At rest every sphere touches at a flat's end; the spheres lie inside
+    // the block, so they report no contact the outline does not have.
+    void add_base_contacts(double r, double mu) {
         using namespace SimTK;
         const double in = sizes_.b - r;
-        for (double side : {1.0, -1.0})
-            matter_.adoptUnilateralContact(new SpherePlaneContact(base_, UnitVec3(0, 1, 0), 0.0, lower_,
-                                                                  Vec3(side * in, -(sizes_.h_lower - r), 0), r, 0.0,
-                                                                  mu, mu, 0.0));
-        if (!vssw) return;
-        upper_ = add_block(sizes_.h_upper, sizes_.m_upper);
-        has_upper_ = true;
-        for (double side : {1.0, -1.0})
-            matter_.adoptUnilateralContact(new SphereSphereContact(upper_, Vec3(side * in, -(sizes_.h_upper - r), 0), r,
-                                                                   lower_, Vec3(side * in, sizes_.h_lower - r, 0), r,
-                                                                   0.0, mu_hinge, mu_hinge, 0.0));
+        for (double side : {1.0, -1.0}) {
+            if (r > 0.0)
+                matter_.adoptUnilateralContact(new SpherePlaneContact(base_, UnitVec3(0, 1, 0), 0.0, lower_,
+                                                                      Vec3(side * in, -(sizes_.h_lower - r), 0), r,
+                                                                      0.0, mu, mu, 0.0));
+            else
+                matter_.adoptUnilateralContact(new PointPlaneContact(base_, UnitVec3(0, 1, 0), 0.0, lower_,
+                                                                     Vec3(side * sizes_.b, -sizes_.h_lower, 0), 0.0,
+                                                                     mu, mu, 0.0));
+        }
+    }
+
+    // The hinge, Coulomb friction mu: the upper block's two bottom corners as points on the lower block's top face,
+    // or, rounded, each bottom arc a sphere on the lower block's top arc of the same side (SphereSphereContact).
+    void add_hinge_contacts(double r, double mu) {
+        using namespace SimTK;
+        const double in = sizes_.b - r;
+        for (double side : {1.0, -1.0}) {
+            const Vec3 upper_arc(side * in, -(sizes_.h_upper - r), 0), lower_arc(side * in, sizes_.h_lower - r, 0);
+            if (r > 0.0)
+                matter_.adoptUnilateralContact(
+                    new SphereSphereContact(upper_, upper_arc, r, lower_, lower_arc, r, 0.0, mu, mu, 0.0));
+            else
+                matter_.adoptUnilateralContact(new PointPlaneContact(lower_, UnitVec3(0, 1, 0), sizes_.h_lower, upper_,
+                                                                     Vec3(side * sizes_.b, -sizes_.h_upper, 0), 0.0,
+                                                                     mu, mu, 0.0));
+        }
     }
 
     SimTK::MobilizedBody add_block(double half_h, double mass_per_depth) {
