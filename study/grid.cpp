@@ -64,7 +64,8 @@ std::vector<std::size_t> digits(std::size_t position, const std::vector<const Ax
 // The combination after `d` (levels, the last axis fastest) that leaves the first level in at most one of the axes
 // varied alone: false after the last. Only these are visited: a product of 6 keys of 25 levels is 2.4e8 combinations
 // for 145 cases.
-bool next_combination(std::vector<std::size_t>& d, const std::vector<const Axis*>& axes, const std::vector<bool>& alone) {
+bool next_combination(std::vector<std::size_t>& d, const std::vector<const Axis*>& axes,
+                      const std::vector<bool>& alone) {
     for (std::size_t i = d.size(); i-- > 0;) {
         // Axis i steps up (those after it back to their first level) unless it is varied alone and one before it has
         // left its first level already: then every later combination of this prefix leaves two.
@@ -471,8 +472,10 @@ Grid::CaseLevels Grid::case_levels(CaseSpec& c) const {
             wall_index = wall_index * walls[i]->levels.size() + d[i];
             continue;
         }
-        for (std::size_t lv = 0; lv < d[i]; ++lv)
-            wall_index += static_cast<std::size_t>(case_count(walls, g.one_at_a_time, i + 1, left || (g.alone[i] && lv != 0)));
+        for (std::size_t lv = 0; lv < d[i]; ++lv) {
+            const bool leaves = left || (g.alone[i] && lv != 0);
+            wall_index += static_cast<std::size_t>(case_count(walls, g.one_at_a_time, i + 1, leaves));
+        }
         left = left || (g.alone[i] && d[i] != 0);
     }
     c.wall_index = wall_index;

@@ -7,8 +7,9 @@
 // order depend on the file alone, never on threads, shards or processes. Keys varied one at a time (one_at_a_time)
 // leave out the combinations off the first level of two of them, their ids unused; a part whose product is beyond
 // ints, but not its cases (8 keys of 16 levels: 121 cases of 16^8), numbers its cases one after the other instead, in
-// the same order. A case that would repeat another is left out and its id unused: a parapet has no hinge, so only the first hinge level gives parapet cases; a part that asks for it
-// leaves out the releases from which the analytic model (exact kinematics) falls.
+// the same order. A case that would repeat another is left out and its id unused: a parapet has no hinge, so only
+// the first hinge level gives parapet cases; a part that asks for it leaves out the releases from which the analytic
+// model (exact kinematics) falls.
 //
 // A run is what is done to every case: the analytic model under one combination of the assumptions (and of its
 // settings), or one engine under one combination of its settings. Engines ignore the assumptions (their physics is

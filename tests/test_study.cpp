@@ -1014,8 +1014,8 @@ TEST(StudyGrid, AGridWhoseSizeOverflowsIsRefusedBeforeAnythingIsBuilt) {
 // (height) last.
 TEST(StudyGrid, EightKeysOfSixteenLevelsOneAtATimeAre121Cases) {
     const TempDir dir;
-    const Grid grid(study_of(dir, "metrics = [\"threshold_closed_form_g\"]\none_at_a_time = [\"height\", \"thickness\", "
-                                  "\"hinge\", \"xi\", \"overburden_eccentricity\", \"density\", \"g\", "
+    const Grid grid(study_of(dir, "metrics = [\"threshold_closed_form_g\"]\none_at_a_time = [\"height\", "
+                                  "\"thickness\", \"hinge\", \"xi\", \"overburden_eccentricity\", \"density\", \"g\", "
                                   "\"corner_radius\"]\n[wall]\nheight = " + number_list(16, 3.0, 0.1) +
                                   "\nthickness = " + number_list(16, 0.3, 0.01) + "\nhinge = " +
                                   number_list(16, 0.6, 0.01) + "\nxi = " + number_list(16, 0.0, 0.02) +
