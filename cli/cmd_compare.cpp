@@ -84,10 +84,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// What every engine is measured against; the release checked first.
-CompareReference reference_of(const CompareOptions& o, const ChosenModel& chosen, const multibody::WallScene& scene) {
+// The free vibration's release: a fraction of alpha, from kMinRelease to below 1.
+void require_release(const CompareOptions& o) {
     require(std::isfinite(o.theta0) && o.theta0 >= kMinRelease && o.theta0 < 1.0, "--theta0",
             fmt::format("from {:g} to below 1 (a fraction of alpha)", kMinRelease), o.theta0);
+}
+
+// What every engine is measured against; the release checked first.
+CompareReference reference_of(const CompareOptions& o, const ChosenModel& chosen, const multibody::WallScene& scene) {
+    require_release(o);
     const bool vssw = chosen.kind == WallKind::vssw;
     // What an engine's impact should give: every constraint of the new mechanism acting at once.
     const double whole = vssw ? restitution_whole_mechanism(*scene.vssw) : housner_restitution(scene.parapet->alpha);
@@ -116,8 +121,7 @@ void run_compare_response(const CompareOptions& o, std::ostream& out) {
 // Rounded corners: the model gives the threshold only (Eq. 12r / 17r); each engine's threshold and period, and their
 // spread (compare/rounded_corners.hpp).
 void run_compare_rounded(const CompareOptions& o, const ChosenModel& chosen, std::ostream& out) {
-    require(std::isfinite(o.theta0) && o.theta0 >= kMinRelease && o.theta0 < 1.0, "--theta0",
-            fmt::format("from {:g} to below 1 (a fraction of alpha)", kMinRelease), o.theta0);
+    require_release(o);
     const multibody::WallScene scene(chosen.wall);
     std::vector<std::unique_ptr<multibody::Engine>> engines;
     std::vector<compare::RoundedEngine> runs;

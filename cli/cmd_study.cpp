@@ -78,17 +78,8 @@ study::Shard parse_shard(const std::string& text) {
 double tasks_at_most(const study::StudySpec& spec) {
     double total = 0.0;
     for (const study::PartSpec& part : spec.parts) {
-        // The product, but a baseline and one case per further level of the keys varied one at a time.
-        double cases = 1.0, runs = 0.0, one_at_a_time = 1.0;
-        for (const auto* axes : {&part.wall, &part.excitation})
-            for (const study::Axis& a : *axes) {
-                const double n = static_cast<double>(a.levels.size());
-                const bool alone = std::find(part.one_at_a_time.begin(), part.one_at_a_time.end(), a.key) !=
-                                   part.one_at_a_time.end();
-                if (alone) one_at_a_time += n - 1.0;
-                else cases *= n;
-            }
-        cases *= one_at_a_time;
+        const double cases = study::case_count(part);
+        double runs = 0.0;
         for (const study::EngineSpec& e : part.engines) {
             double r = 1.0;
             for (const study::Axis& a : e.settings) r *= static_cast<double>(a.levels.size());

@@ -61,6 +61,25 @@ std::vector<std::size_t> digits(std::size_t position, const std::vector<const Ax
     return d;
 }
 
+// The combination after `d` (levels, the last axis fastest) that leaves the first level in at most one of the axes
+// varied alone: false after the last. Only these are visited: a product of 6 keys of 25 levels is 2.4e8 combinations
+// for 145 cases.
+bool next_combination(std::vector<std::size_t>& d, const std::vector<const Axis*>& axes,
+                      const std::vector<bool>& alone) {
+    for (std::size_t i = d.size(); i-- > 0;) {
+        // Axis i steps up (those after it back to their first level) unless it is varied alone and one before it has
+        // left its first level already: then every later combination of this prefix leaves two.
+        bool two = false;
+        for (std::size_t j = 0; j < i && alone[i]; ++j) two = two || (alone[j] && d[j] != 0);
+        if (!two && d[i] + 1 < axes[i]->levels.size()) {
+            ++d[i];
+            return true;
+        }
+        d[i] = 0;
+    }
+    return false;
+}
+
 std::string fnv1a(const std::string& text) {
     std::uint64_t h = 14695981039346656037ull;
     for (const char c : text) {
@@ -162,23 +181,30 @@ void Grid::read_specimens(std::string& identity_text) {
 
 // The grid's size first, before anything is read or built. Case ids are ints: a larger grid is a typo, not a study
 // (vssw study's --force bound is far below). Each product is checked before it is formed: unchecked, six lists whose
-// product is 2^64 + 418 wrapped to a grid of 418 cases that ran under --force.
+// product is 2^64 + 418 wrapped to a grid of 418 cases that ran under --force. A part with keys varied one at a time
+// whose product is beyond ints, but not its cases, numbers its cases (grid.hpp).
 void Grid::size_parts() {
     constexpr std::size_t kMaxCases = static_cast<std::size_t>(std::numeric_limits<int>::max());
-    const auto too_many = [&] {
-        return InputError(fmt::format("{} {}: a grid of more than {} cases (case ids are ints), even with --force",
-                                      kWhat, spec_.path, kMaxCases));
-    };
     product_size_ = 0;
     for (const PartSpec& part : spec_.parts) {
         PartGrid g;
-        for (const Axis& a : part.wall) g.axes.push_back(&a);
-        for (const Axis& a : part.excitation) g.axes.push_back(&a);
+        g.axes = part.axes();
+        g.one_at_a_time = part.one_at_a_time;
+        for (const Axis* a : g.axes)
+            g.alone.push_back(std::find(g.one_at_a_time.begin(), g.one_at_a_time.end(), a->key) !=
+                              g.one_at_a_time.end());
+        const std::size_t room = kMaxCases - product_size_;
+        const double cases = case_count(g.axes, g.one_at_a_time);
+        if (!(cases <= static_cast<double>(room)))
+            throw InputError(fmt::format("{} {}: a grid of more than {} cases (case ids are ints), even with --force",
+                                         kWhat, spec_.path, kMaxCases));
+        bool fits = true;
         for (const Axis* a : g.axes) {
-            if (a->levels.size() > kMaxCases / g.size) throw too_many();
-            g.size *= a->levels.size();
+            fits = fits && a->levels.size() <= room / g.size;
+            if (fits) g.size *= a->levels.size();
         }
-        if (g.size > kMaxCases - product_size_) throw too_many();
+        g.numbered = !fits || g.size > room;
+        if (g.numbered) g.size = static_cast<std::size_t>(cases);
         g.first = product_size_ + 1;
         product_size_ += g.size;
         parts_.push_back(std::move(g));
@@ -281,20 +307,20 @@ void Grid::list_cases() {
             return std::nullopt;
         };
         const std::optional<std::size_t> hinge = axis_index("hinge"), duration = axis_index("duration");
-        std::vector<std::size_t> one_at_a_time;  // the axes varied one at a time from their first level
-        for (const std::string& k : part.one_at_a_time) one_at_a_time.push_back(*axis_index(k));
         // A parapet has neither kinematics nor roller: its analytic run is the part's first analytic run built.
         for (const RunSpec& r : runs_)
             if (r.part == pi && r.engine == "analytic") {
                 parapet_run_.emplace(pi, std::make_pair(r.assumptions[0], r.assumptions[2]));
                 break;
             }
-        for (std::size_t p = 0; p < parts_[pi].size; ++p) {
-            const std::vector<std::size_t> d = digits(p, parts_[pi].axes);
-            // Left out before it is built: a combination no one asked for may be no wall at all.
-            if (std::count_if(one_at_a_time.begin(), one_at_a_time.end(), [&](std::size_t a) { return d[a] != 0; }) > 1)
-                continue;
-            const CaseSpec c = make_case(static_cast<int>(parts_[pi].first + p));
+        const PartGrid& g = parts_[pi];
+        // Only the combinations asked for are visited (a combination no one asked for may be no wall at all).
+        std::vector<std::size_t> d(g.axes.size(), 0);
+        std::size_t n = 0;  // the combination's place among those visited
+        for (bool more = true; more; more = next_combination(d, g.axes, g.alone), ++n) {
+            std::size_t position = 0;
+            for (std::size_t i = 0; i < d.size(); ++i) position = position * g.axes[i]->levels.size() + d[i];
+            const CaseSpec c = make_case(static_cast<int>(g.first + (g.numbered ? n : position)));
             if (c.model == "parapet" && hinge && d[*hinge] != 0) continue;
             if (duration && c.shape != "harmonic" && d[*duration] != 0) continue;  // only a harmonic lasts `duration`
             if (part.skip_falling_releases && falls_from(c.scene, c.theta0)) continue;
@@ -402,12 +428,36 @@ CaseSpec Grid::make_case(int id) const {
     return c;
 }
 
-// The case's part, its levels (digit i of its position in the mixed radix of the axes' sizes) and its wall's position.
+// A position in the product: digit i in the mixed radix of the axes' sizes. A numbered part's n-th case: each axis in
+// turn takes the level whose combinations after it (counted as case_count counts them) hold the n-th.
+std::vector<std::size_t> Grid::levels_at(const PartGrid& g, std::size_t index) const {
+    if (!g.numbered) return digits(index, g.axes);
+    std::vector<std::size_t> d(g.axes.size(), 0);
+    double n = static_cast<double>(index);
+    bool left = false;  // a key varied alone has left its first level
+    for (std::size_t i = 0; i < g.axes.size(); ++i)
+        for (std::size_t l = 0; l < g.axes[i]->levels.size(); ++l) {
+            const bool leaves = g.alone[i] && l != 0;
+            if (leaves && left) break;
+            const double after = case_count(g.axes, g.one_at_a_time, i + 1, left || leaves);
+            if (n < after) {
+                d[i] = l;
+                left = left || leaves;
+                break;
+            }
+            n -= after;
+        }
+    return d;
+}
+
+// The case's part, its levels (levels_at) and its wall's position: in the product of the wall axes, or (a numbered
+// part, whose wall axes' product may be beyond any integer) among the walls its one-at-a-time keys give, in order.
+// Cases that differ only in their excitation share it.
 Grid::CaseLevels Grid::case_levels(CaseSpec& c) const {
     const PartGrid& g = part_of(c.id, c.part);
     const PartSpec& part = spec_.parts[c.part];
     const std::vector<const Axis*>& axes = g.axes;
-    const std::vector<std::size_t> d = digits(static_cast<std::size_t>(c.id) - g.first, axes);
+    const std::vector<std::size_t> d = levels_at(g, static_cast<std::size_t>(c.id) - g.first);
     CaseLevels l;
     for (std::size_t i = 0; i < axes.size(); ++i) {
         c.levels.push_back(axes[i]->levels[d[i]]);
@@ -415,7 +465,19 @@ Grid::CaseLevels Grid::case_levels(CaseSpec& c) const {
         l.described += fmt::format("{}{} {}", l.described.empty() ? "" : ", ", axes[i]->key, to_text(c.levels.back()));
     }
     std::size_t wall_index = 0;
-    for (std::size_t i = 0; i < part.wall.size(); ++i) wall_index = wall_index * part.wall[i].levels.size() + d[i];
+    const std::vector<const Axis*> walls(axes.begin(), axes.begin() + static_cast<std::ptrdiff_t>(part.wall.size()));
+    bool left = false;  // a key varied alone has left its first level
+    for (std::size_t i = 0; i < walls.size(); ++i) {
+        if (!g.numbered) {
+            wall_index = wall_index * walls[i]->levels.size() + d[i];
+            continue;
+        }
+        for (std::size_t lv = 0; lv < d[i]; ++lv) {
+            const bool leaves = left || (g.alone[i] && lv != 0);
+            wall_index += static_cast<std::size_t>(case_count(walls, g.one_at_a_time, i + 1, leaves));
+        }
+        left = left || (g.alone[i] && d[i] != 0);
+    }
     c.wall_index = wall_index;
     return l;
 }

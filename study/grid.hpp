@@ -4,9 +4,12 @@
 // A case is one wall under one excitation: a combination of the levels of the [wall] and [excitation] keys (the
 // Cartesian product, the last key varying fastest in kWallKeys then kExcitationKeys order). Its id is its 1-based
 // position in that product (a study of several parts numbers each part's cases after the previous part's), so ids and
-// order depend on the file alone, never on threads, shards or processes. A case that would repeat another is left out
-// and its id unused: a parapet has no hinge, so only the first hinge level gives parapet cases; a part that asks for it
-// leaves out the releases from which the analytic model (exact kinematics) falls.
+// order depend on the file alone, never on threads, shards or processes. Keys varied one at a time (one_at_a_time)
+// leave out the combinations off the first level of two of them, their ids unused; a part whose product is beyond
+// ints, but not its cases (8 keys of 16 levels: 121 cases of 16^8), numbers its cases one after the other instead, in
+// the same order. A case that would repeat another is left out and its id unused: a parapet has no hinge, so only
+// the first hinge level gives parapet cases; a part that asks for it leaves out the releases from which the analytic
+// model (exact kinematics) falls.
 //
 // A run is what is done to every case: the analytic model under one combination of the assumptions (and of its
 // settings), or one engine under one combination of its settings. Engines ignore the assumptions (their physics is
@@ -46,7 +49,7 @@ struct RunSpec {
 };
 
 struct CaseSpec {
-    int id = 0;                     // 1-based position in the product (of all parts)
+    int id = 0;                     // 1-based position in the product (of all parts; see above)
     std::size_t part = 0;           // StudySpec::parts
     std::vector<Level> levels;      // one per wall axis, then one per excitation axis (StudySpec order)
     multibody::WallScene scene;
@@ -109,7 +112,7 @@ public:
     Grid& operator=(const Grid&) = delete;
 
     const StudySpec& spec() const { return spec_; }
-    std::size_t product_size() const { return product_size_; }  // every part's product
+    std::size_t product_size() const { return product_size_; }  // every part's ids: its product, or its cases
     const std::vector<int>& case_ids() const { return case_ids_; }  // the cases that run, in order
     CaseSpec make_case(int id) const;
     const std::vector<RunSpec>& runs() const { return runs_; }
@@ -143,8 +146,13 @@ public:
 private:
     struct PartGrid {
         std::vector<const Axis*> axes;  // wall axes, then excitation axes
-        std::size_t size = 1, first = 1;  // its product's size and its first case id
+        std::vector<std::string> one_at_a_time;  // the part's keys varied one at a time
+        std::vector<bool> alone;                 // per axis: whether it is one of them
+        std::size_t size = 1, first = 1;  // its ids: how many (its product's size, or its cases') and the first
+        bool numbered = false;            // its ids are its cases one after the other, not positions in the product
     };
+    // The levels (an index into each axis's) of a part's case `index` (its id - first).
+    std::vector<std::size_t> levels_at(const PartGrid& g, std::size_t index) const;
     struct CaseLevels;
     std::string render(const std::string& tmpl, const CaseSpec& c, const char* key) const;
     const PartGrid& part_of(int id, std::size_t& index) const;

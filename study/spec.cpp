@@ -863,6 +863,28 @@ const Axis* PartSpec::excitation_axis(const std::string& key) const {
 
 std::string PartSpec::kind_text() const { return ensemble ? "ensemble" : to_string(kind); }
 
+std::vector<const Axis*> PartSpec::axes() const {
+    std::vector<const Axis*> out;
+    for (const Axis& a : wall) out.push_back(&a);
+    for (const Axis& a : excitation) out.push_back(&a);
+    return out;
+}
+
+double case_count(const std::vector<const Axis*>& axes, const std::vector<std::string>& one_at_a_time,
+                  std::size_t from, bool left_baseline) {
+    double others = 1.0, further = 0.0;
+    for (std::size_t i = from; i < axes.size(); ++i) {
+        const double n = static_cast<double>(axes[i]->levels.size());
+        if (std::find(one_at_a_time.begin(), one_at_a_time.end(), axes[i]->key) != one_at_a_time.end())
+            further += n - 1.0;
+        else
+            others *= n;
+    }
+    return others * (left_baseline ? 1.0 : 1.0 + further);
+}
+
+double case_count(const PartSpec& part) { return case_count(part.axes(), part.one_at_a_time); }
+
 std::string StudySpec::kind_text() const {
     for (const PartSpec& p : parts)
         if (p.kind_text() != parts.front().kind_text()) return "mixed";

@@ -134,10 +134,21 @@ struct PartSpec {
 
     // As results.csv's `kind` column and results.json say it: "ensemble" for an ensemble, else to_string(kind).
     std::string kind_text() const;
+    // Its wall axes, then its excitation axes: the order of its grid (the last fastest).
+    std::vector<const Axis*> axes() const;
 
     const Axis* wall_axis(const std::string& key) const;        // nullptr when not given
     const Axis* excitation_axis(const std::string& key) const;  // nullptr when not given
 };
+
+// The cases of a grid before repeats are left out: the product of the axes' levels, but the keys varied one at a time
+// give a baseline and one case per further level of each: (the product of the other axes' levels) x (1 + the sum of
+// their levels - 1). The cases still to list after the first `from` axes are chosen count the same way, the keys
+// varied one at a time held at their first level when one of them before `from` has left it (`left_baseline`). A
+// double: exact below 2^53, far beyond any grid that is run (case ids are ints).
+double case_count(const std::vector<const Axis*>& axes, const std::vector<std::string>& one_at_a_time,
+                  std::size_t from = 0, bool left_baseline = false);
+double case_count(const PartSpec& part);
 
 struct StudySpec {
     std::string name;

@@ -8,10 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -266,6 +268,14 @@ TEST(StudyGrid, KeysVariedOneAtATimeGiveABaselineAndOneCasePerFurtherLevel) {
                                   "overburden_eccentricity = [0, 0.5, 1]\n[excitation]\nkind = \"threshold\"\n"));
     EXPECT_EQ(grid.product_size(), 18u);
     ASSERT_EQ(grid.case_ids().size(), 10u);  // 2 thicknesses x (1 + 2 + 2)
+    // Position (thickness, xi, e) = 9 t + 3 x + e, 1-based, in product order: each thickness's baseline, then e at its
+    // further levels, then xi at its.
+    EXPECT_EQ(grid.case_ids(), (std::vector<int>{1, 2, 3, 4, 7, 10, 11, 12, 13, 16}));
+    const study::CaseSpec off_e = grid.make_case(12), off_xi = grid.make_case(16);
+    EXPECT_EQ(std::make_tuple(off_e.thickness, off_e.xi, off_e.scene.overburden_eccentricity()),
+              std::make_tuple(0.4, 0.1, 1.0));
+    EXPECT_EQ(std::make_tuple(off_xi.thickness, off_xi.xi, off_xi.scene.overburden_eccentricity()),
+              std::make_tuple(0.4, 0.3, 0.0));
     std::set<std::pair<double, double>> seen;
     for (int id : grid.case_ids()) {
         const study::CaseSpec c = grid.make_case(id);
@@ -1004,6 +1014,52 @@ TEST(StudyGrid, AGridWhoseSizeOverflowsIsRefusedBeforeAnythingIsBuilt) {
                              "\n[excitation]\nkind = \"closed-form\"\ntheta0 = 0.5\n";
     const std::string message = refusal(dir, toml);
     EXPECT_NE(message.find("a grid of more than 2147483647 cases"), std::string::npos) << message;
+}
+
+// Eight keys of 16 levels varied one at a time are 1 + 8 x 15 = 121 cases, though their product, 16^8, is beyond
+// ints: they were refused as a grid of more than 2^31 - 1 cases. Such a part numbers its cases 1 to 121, in product
+// order: the baseline, then the last key (corner_radius, the last of kWallKeys) at its further levels, ..., the first
+// (height) last.
+TEST(StudyGrid, EightKeysOfSixteenLevelsOneAtATimeAre121Cases) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_closed_form_g\"]\none_at_a_time = [\"height\", "
+                                  "\"thickness\", \"hinge\", \"xi\", \"overburden_eccentricity\", \"density\", \"g\", "
+                                  "\"corner_radius\"]\n[wall]\nheight = " + number_list(16, 3.0, 0.1) +
+                                  "\nthickness = " + number_list(16, 0.3, 0.01) + "\nhinge = " +
+                                  number_list(16, 0.6, 0.01) + "\nxi = " + number_list(16, 0.0, 0.02) +
+                                  "\noverburden_eccentricity = " + number_list(16, 0.0, 0.05) + "\ndensity = " +
+                                  number_list(16, 1600.0, 10.0) + "\ng = " + number_list(16, 9.7, 0.01) +
+                                  "\ncorner_radius = " + number_list(16, 0.0, 0.005) +
+                                  "\n[excitation]\nkind = \"closed-form\"\n"));
+    std::vector<int> one_to_121(121);
+    std::iota(one_to_121.begin(), one_to_121.end(), 1);
+    EXPECT_EQ(grid.case_ids(), one_to_121);
+    const auto levels = [&](int id) {  // as the file gives them, in kWallKeys order
+        std::vector<double> out;
+        for (const study::Level& l : grid.make_case(id).levels) out.push_back(std::get<double>(l));
+        return out;
+    };
+    const std::vector<double> baseline = {3.0, 0.3, 0.6, 0.0, 0.0, 1600.0, 9.7, 0.0};
+    EXPECT_EQ(levels(1), baseline);
+    std::set<std::vector<double>> seen;
+    std::set<std::size_t> walls;
+    for (int id : grid.case_ids()) {
+        const std::vector<double> l = levels(id);
+        std::size_t off = 0;
+        for (std::size_t k = 0; k < l.size(); ++k) off += l[k] != baseline[k];
+        EXPECT_LE(off, 1u) << "case " << id << " leaves the baseline in two keys";
+        seen.insert(l);
+        walls.insert(grid.make_case(id).wall_index);
+    }
+    EXPECT_EQ(seen.size(), 121u);
+    EXPECT_EQ(walls.size(), 121u);  // each case a wall of its own: none shares another's threshold
+    std::vector<double> second = baseline, seventeenth = baseline, last = baseline;
+    second[7] = 0.0 + 1 * 0.005;     // corner_radius's second level
+    seventeenth[6] = 9.7 + 1 * 0.01;  // g's second level, after corner_radius's 15
+    last[0] = 3.0 + 15 * 0.1;         // height's last
+    EXPECT_EQ(levels(2), second);
+    EXPECT_EQ(levels(17), seventeenth);
+    EXPECT_EQ(levels(121), last);
 }
 
 // Duplicates were looked for pairwise: 400,000 values ran past 150 s. A list longer than the limit is refused at once;
