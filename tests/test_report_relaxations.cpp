@@ -157,17 +157,25 @@ TEST(ReportRelaxations, ABinaryMetricThatNoRunFlipsSaysSo) {
     EXPECT_EQ(cells.find("-0.0"), std::string::npos) << cells;
 }
 
+// A study file at `file`: the Fig. 6 VSSW (xi 0.1) released from 0.3 alpha1 under the set mechanism, measuring
+// `metrics` (TOML list items), with `wall` (TOML lines) added to its wall.
+std::filesystem::path fig6_free_study(const std::filesystem::path& file, const std::string& metrics,
+                                      const std::string& wall) {
+    std::ofstream(file) << "name = \"" << file.stem().string() << "\"\nmetrics = [" << metrics
+                        << "]\nengines = [\"analytic\"]\n[assumptions]\nset = \"mechanism\"\n[wall]\nheight = 4\n"
+                           "thickness = 0.4\nhinge = 0.7\nxi = 0.1\n"
+                        << wall << "\n[excitation]\nkind = \"free\"\ntheta0 = 0.3\n";
+    return file;
+}
+
 // `vssw report --relaxations FILE` on a friction the Fig. 6 wall slides at (0.05: its rocking needs 0.149 at the
 // base): ODE slides and its period changes; the model, which cannot slide, gives no change and says it would slide.
 // One engine, one case, no earthquake part, no plots: a fraction of a second.
 TEST(ReportRelaxations, TheReportOnAFrictionTheModelWouldSlideAtGivesNoModelChangeAndItsWarning) {
     if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "ODE not in this build";
     const TempDir dir;
-    const std::filesystem::path file = dir / "friction.toml";
-    std::ofstream(file) << "name = \"friction-0.05\"\nmetrics = [\"threshold_g\", \"period\", \"restitution\"]\n"
-                           "engines = [\"analytic\"]\n[assumptions]\nset = \"mechanism\"\n[wall]\nheight = 4\n"
-                           "thickness = 0.4\nhinge = 0.7\nxi = 0.1\nfriction = [2.0, 0.05]\n[excitation]\n"
-                           "kind = \"free\"\ntheta0 = 0.3\n";
+    const std::filesystem::path file =
+        fig6_free_study(dir / "friction.toml", R"("threshold_g", "period", "restitution")", "friction = [2.0, 0.05]");
     const std::filesystem::path out = dir / "report";
     const vssw::testing::CliResult r =
         vssw::testing::run_cli({"report", "--cases", "fig6-vssw", "--engines", "ode", "--relaxations", file.string(),
@@ -198,11 +206,8 @@ TEST(ReportRelaxations, TheReportOnAFrictionTheModelWouldSlideAtGivesNoModelChan
 // runs there are outside its validity, so moving N gives no change of the model's, and its warnings are listed.
 TEST(ReportRelaxations, TheModelsWarnedRunsGiveNoChange) {
     const TempDir dir;
-    const std::filesystem::path file = dir / "sliding.toml";
-    std::ofstream(file) << "name = \"sliding\"\nmetrics = [\"period\"]\nengines = [\"analytic\"]\n"
-                           "[assumptions]\nset = \"mechanism\"\n[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n"
-                           "xi = 0.1\nfriction = 0.05\noverburden_eccentricity = [0.0, 1.0]\n[excitation]\n"
-                           "kind = \"free\"\ntheta0 = 0.3\n";
+    const std::filesystem::path file = fig6_free_study(dir / "sliding.toml", R"("period")",
+                                                       "friction = 0.05\noverburden_eccentricity = [0.0, 1.0]");
     validation::PartRunOptions options;
     options.plots = false;
     options.threads = 2;
