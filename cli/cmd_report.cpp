@@ -126,24 +126,34 @@ std::vector<std::pair<std::string, std::filesystem::path>> report_inputs(const s
     return inputs;
 }
 
+// A part's study (the earthquake's, the relaxations') run by `run` with the report's options, its progress shown as
+// "<label>: ..."; none when no file is asked for.
+template <class Options, class Run>
+auto run_part(const ReportCommandOptions& o, const std::string& file, const std::string& label, Options options,
+              Progress& progress, const Run& run) -> std::optional<decltype(run(options))> {
+    if (file.empty()) return std::nullopt;
+    options.threads = o.threads;
+    options.plots = !o.no_plots;
+    options.gnuplot = o.gnuplot;
+    options.commit = VSSW_GIT_COMMIT;
+    if (progress.on())
+        options.progress = [&progress, label](long done, long total, const std::string& what) {
+            progress.show(done, total, label + ": " + what);
+        };
+    auto part = run(options);
+    progress.clear();
+    return part;
+}
+
 // The earthquake part (validation/earthquake.hpp) into the staging folder's `dir`; none when no file is asked for.
 std::optional<validation::EarthquakePart> run_earthquake(const ReportCommandOptions& o, const std::string& file,
                                                     const std::vector<std::string>& engines,
                                                     const std::filesystem::path& dir, Progress& progress) {
-    if (file.empty()) return std::nullopt;
     validation::EarthquakeRunOptions eq;
-    eq.threads = o.threads;
-    eq.plots = !o.no_plots;
-    eq.gnuplot = o.gnuplot;
-    eq.commit = VSSW_GIT_COMMIT;
     eq.paper_model = true;  // the paper's model's row under records (analytic runs only: cheap)
-    if (progress.on())
-        eq.progress = [&progress](long done, long total, const std::string& what) {
-            progress.show(done, total, "earthquake: " + what);
-        };
-    std::optional<validation::EarthquakePart> part = validation::run_earthquake_part(file, engines, dir, eq);
-    progress.clear();
-    return part;
+    return run_part(o, file, "earthquake", eq, progress, [&](const validation::EarthquakeRunOptions& run) {
+        return validation::run_earthquake_part(file, engines, dir, run);
+    });
 }
 
 // The study file of the relaxations: --relaxations, else the suite's default; none with --cases unless asked.
@@ -158,19 +168,10 @@ std::string relaxations_study_file(const ReportCommandOptions& o, const std::vec
 std::optional<validation::AssumptionsPart> run_relaxations(const ReportCommandOptions& o, const std::string& file,
                                                            const std::vector<std::string>& engines,
                                                            const std::filesystem::path& dir, Progress& progress) {
-    if (file.empty()) return std::nullopt;
-    validation::AssumptionsRunOptions run;
-    run.threads = o.threads;
-    run.plots = !o.no_plots;
-    run.gnuplot = o.gnuplot;
-    run.commit = VSSW_GIT_COMMIT;
-    if (progress.on())
-        run.progress = [&progress](long done, long total, const std::string& what) {
-            progress.show(done, total, "relaxations: " + what);
-        };
-    std::optional<validation::AssumptionsPart> part = validation::run_assumptions_part(file, engines, dir, run);
-    progress.clear();
-    return part;
+    return run_part(o, file, "relaxations", validation::PartRunOptions(), progress,
+                    [&](const validation::PartRunOptions& run) {
+                        return validation::run_assumptions_part(file, engines, dir, run);
+                    });
 }
 
 // What --help says after the options: the files, the targets (formatted from the constants the report judges by:

@@ -156,7 +156,7 @@ void read_rows(StudyData& d, const fs::path& path) {
     std::unordered_map<std::string, std::uint32_t> metric_index;
     for (std::size_t m = 0; m < d.metrics.size(); ++m) metric_index[d.metrics[m].name] = static_cast<std::uint32_t>(m);
     std::set<std::tuple<int, std::vector<std::uint32_t>>> warned_tasks;
-    std::unordered_map<std::string, std::uint32_t> status_index;
+    std::unordered_map<std::string, std::uint32_t> status_index, warning_index;
     try {
         while (io::read_csv_record(in, fields)) {
             if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
@@ -177,14 +177,17 @@ void read_rows(StudyData& d, const fs::path& path) {
                 status_index.try_emplace(fields[status], static_cast<std::uint32_t>(d.statuses.size()));
             if (added) d.statuses.push_back(fields[status]);
             row.status = st->second;
-            if (fields[status].rfind("failed", 0) == 0) {
+            if (is_failed(fields[status])) {
                 ++d.failed_rows;
-                const auto colon = fields[status].find(": ");
-                ++d.failure_reasons[colon == std::string::npos ? fields[status] : fields[status].substr(colon + 2)];
+                ++d.failure_reasons[failure_reason(fields[status])];
             }
             if (!fields[warnings].empty()) {
                 ++d.warned_rows;
                 warned_tasks.insert({row.case_id, row.levels});
+                const auto [w, new_warning] =
+                    warning_index.try_emplace(fields[warnings], static_cast<std::uint32_t>(d.warnings.size()));
+                if (new_warning) d.warnings.push_back(fields[warnings]);
+                row.warning = w->second;
             }
             d.rows.push_back(std::move(row));
         }
@@ -205,6 +208,13 @@ void classify_metrics(StudyData& d) {
 }
 
 }  // namespace
+
+bool is_failed(const std::string& status) { return status.rfind("failed", 0) == 0; }
+
+std::string failure_reason(const std::string& status) {
+    const auto colon = status.find(": ");
+    return colon == std::string::npos ? status : status.substr(colon + 2);
+}
 
 std::size_t StudyData::column(const std::string& key) const {
     for (std::size_t c = 0; c < columns.size(); ++c)

@@ -55,6 +55,7 @@ struct StudyRow {
     std::uint32_t metric = 0;         // index into StudyData::metrics
     double value = 0.0;               // NaN: empty (failed, or nothing to measure)
     std::uint32_t status = 0;         // index into StudyData::statuses ("ok", "failed: <reason>")
+    std::uint32_t warning = 0;        // index into StudyData::warnings (0: none)
     std::vector<std::uint32_t> levels;  // one per StudyData::columns
 };
 
@@ -67,8 +68,9 @@ struct StudyData {
     std::vector<Series> series;
     std::vector<StudyRow> rows;
     std::vector<std::string> statuses;  // the status column's texts, interned (a row's reason, e.g. a censored IDA)
+    std::vector<std::string> warnings = {""};  // the warnings column's texts, interned; [0] is a row without
     long failed_rows = 0, warned_rows = 0, warned_tasks = 0;
-    std::map<std::string, long> failure_reasons;  // "failed: <reason>" without the prefix, and how many rows
+    std::map<std::string, long> failure_reasons;  // failure_reason() of each failed row, and how many rows
 
     // Index of a column; npos when the study has none of that name.
     std::size_t column(const std::string& key) const;
@@ -83,6 +85,10 @@ struct StudyData {
     // "analytic kinematics=exact impact=eq19", "ODE dt=0.0002": the varied assumptions not in `ignored`, the settings.
     std::string series_label(const Series& s, const std::vector<std::size_t>& ignored = {}) const;
 };
+
+// Whether a status is a failed row's ("failed: <reason>"), and its reason (the status without "failed: ").
+bool is_failed(const std::string& status);
+std::string failure_reason(const std::string& status);
 
 // DIR/manifest.json and DIR/results.csv (InputError naming the file when either is missing or malformed).
 StudyData read_study_data(const std::filesystem::path& dir);

@@ -7,15 +7,21 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "compare/metric_catalog.hpp"
 #include "io/json.hpp"
 #include "validation/assumptions_part.hpp"
 
 namespace vssw::validation {
 namespace {
 
+// A change the model gives and one the engines give can differ by twice the metric's target with every engine within
+// the target of the model: a change is a ratio of two values, each held to the target (compare/targets.hpp).
+constexpr double kChangeTargetsPerValueTarget = 2.0;
+
 // A relative change as the report writes it ("-9.2 %"), a 0/1 metric's as the net share of runs that flip.
 std::string change_text(double change, bool binary) {
     if (!std::isfinite(change)) return "-";
+    if (binary && change == 0.0) return "no run flips";
     return binary ? fmt::format("{:+.1f} % of runs flip", 100.0 * change) : fmt::format("{:+.2f} %", 100.0 * change);
 }
 
@@ -23,20 +29,40 @@ std::string engines_text(const RelaxationEffect& e) {
     if (e.engine_pairs == 0) return "-";
     if (e.absolute) return fmt::format("{:.2g} to {:.2g} b", e.engines_lo, e.engines_hi);
     if (e.engines_lo == e.engines_hi) return change_text(e.engines_lo, e.binary);
-    return fmt::format("{} to {}", change_text(e.engines_lo, e.binary), change_text(e.engines_hi, e.binary));
+    if (e.binary) return fmt::format("{:+.1f} % to {:+.1f} % of runs flip", 100.0 * e.engines_lo, 100.0 * e.engines_hi);
+    return fmt::format("{} to {}", change_text(e.engines_lo, false), change_text(e.engines_hi, false));
 }
 
 std::string relaxation_text(const RelaxationEffect& e) { return fmt::format("{} {} -> {}", e.parameter, e.from, e.to); }
 
-// The largest change a relaxation gives (the model's, else the engines' farthest end).
+// The largest change a relaxation gives: the model's or either end of the engines', whichever is farthest from 0.
 double reach(const RelaxationEffect& e) {
-    if (std::isfinite(e.model)) return std::abs(e.model);
-    return std::max(std::abs(e.engines_lo), std::abs(e.engines_hi));
+    double out = 0.0;
+    for (const double change : {e.model, e.engines_lo, e.engines_hi})
+        if (std::isfinite(change)) out = std::max(out, std::abs(change));
+    return out;
 }
 
-// Where the model follows a relaxation: is its change inside the engines' range?
+// How far the model's change may lie outside the engines' range and still agree with them: the metric's target
+// (kChangeTargetsPerValueTarget of it) where it has one, none for a metric without (peak_rotation, a 0/1 metric).
+double change_tolerance(const RelaxationEffect& e) {
+    const compare::MetricInfo* m = compare::find_metric(e.metric);
+    return !e.binary && m ? kChangeTargetsPerValueTarget * m->target : 0.0;
+}
+
+// Where the model follows a relaxation: is its change inside the engines' range, widened by change_tolerance?
 bool model_within_engines(const RelaxationEffect& e) {
-    return std::isfinite(e.model) && e.engine_pairs > 0 && e.model >= e.engines_lo && e.model <= e.engines_hi;
+    const double tolerance = change_tolerance(e);
+    return std::isfinite(e.model) && e.engine_pairs > 0 && e.model >= e.engines_lo - tolerance &&
+           e.model <= e.engines_hi + tolerance;
+}
+
+// "<relaxation> moves <metric> most: ...", the model's and the engines' changes, either missing said as such.
+std::string largest_change_line(const RelaxationEffect& e) {
+    const std::string head = fmt::format("{} moves {} most: ", relaxation_text(e), e.metric);
+    if (!std::isfinite(e.model)) return head + engines_text(e) + " by the engines; the model does not follow it.";
+    if (e.engine_pairs == 0) return head + change_text(e.model, false) + " by the model; no engine measured it.";
+    return head + fmt::format("{} by the model, {} by the engines.", change_text(e.model, false), engines_text(e));
 }
 
 // One line per relaxed parameter: its farthest level's largest change.
@@ -52,8 +78,7 @@ std::vector<std::string> conclusions(const AssumptionsPart& p) {
                 largest = &e;
         if (!largest) continue;
         said.insert(it->parameter);
-        out.push_back(fmt::format("{} moves {} most: {} by the model, {} by the engines.", relaxation_text(*largest),
-                                  largest->metric, change_text(largest->model, false), engines_text(*largest)));
+        out.push_back(largest_change_line(*largest));
     }
     std::reverse(out.begin(), out.end());
     // The slips each relaxation lets the engines make (the runs' own values, not changes), one line per level.
@@ -72,8 +97,8 @@ std::vector<std::string> conclusions(const AssumptionsPart& p) {
             within += model_within_engines(e) ? 1 : 0;
         }
     if (followed > 0)
-        out.push_back(fmt::format("Where the model follows a relaxation, its change lies within the engines' range in "
-                                  "{} of {} relaxation-metric pairs.",
+        out.push_back(fmt::format("Where the model follows a relaxation, its change lies within the engines' range, "
+                                  "give or take twice the metric's target, in {} of {} relaxation-metric pairs.",
                                   within, followed));
     return out;
 }
@@ -102,8 +127,14 @@ std::vector<io::DocBlock> assumptions_section(const AssumptionsPart& p) {
                           {change_text(e.model, e.binary)}, {engines_text(e)},
                           {fmt::format("{}, {}", e.model_pairs, e.engine_pairs)}});
     if (!t.rows.empty()) b.push_back(t);
+    if (!p.model_warnings.empty()) {
+        b.push_back(io::paragraph("Where the model warns (outside its validity: those runs are left out of its "
+                                  "changes):"));
+        b.push_back(io::list(p.model_warnings));
+    }
     if (!p.refusals.empty()) {
-        b.push_back(io::paragraph("What an engine could not express (its runs are failed rows with its reason):"));
+        b.push_back(io::paragraph("Failed runs, by engine and reason (what an engine or the model cannot express, "
+                                  "and what it failed to measure):"));
         b.push_back(io::list(p.refusals));
     }
     b.push_back(io::paragraph(fmt::format("Every run is in {0}/results.csv; {0}/study.html is the study's own report.",
@@ -127,7 +158,8 @@ io::Json assumptions_json(const AssumptionsPart& p) {
                            {"engine_pairs", e.engine_pairs}});
     return {{"study", p.study_name},     {"file", p.study_file}, {"folder", p.folder.filename().string()},
             {"rows", p.rows},            {"failed_rows", p.failed_rows}, {"wall_time_s", p.wall_time_s},
-            {"effects", effects},        {"refusals", p.refusals}, {"conclusions", conclusions(p)}};
+            {"effects", effects},        {"refusals", p.refusals}, {"model_warnings", p.model_warnings},
+            {"conclusions", conclusions(p)}};
 }
 
 std::vector<std::string> assumptions_summary_lines(const AssumptionsPart& p) {

@@ -33,13 +33,21 @@ bool varies_a_physical_assumption(const study::StudySpec& spec) {
     return false;
 }
 
-// The study's rows of the analytic model alone, or of the engines alone: each pairs within itself.
+// The relaxations the model's motion cannot follow at all: it has no friction, so its rocking at any coefficient is
+// the paper's and a change of 0 would read as a prediction (it says where it would slide: a warning on its rows).
+bool model_cannot_follow(const std::string& key) { return key == "friction" || key == "hinge_friction"; }
+
+// The study's rows of the analytic model alone, or of the engines alone: each pairs within itself. The model's rows
+// that warn (outside its validity: it would slide, a pivot would pull) are no predictions: their values are left out.
 study::StudyData rows_of(const study::StudyData& d, bool analytic) {
     study::StudyData out = d;
     const std::size_t engine = d.column("engine");
     out.rows.erase(std::remove_if(out.rows.begin(), out.rows.end(),
                                   [&](const study::StudyRow& r) { return (d.text(r, engine) == "analytic") != analytic; }),
                    out.rows.end());
+    if (analytic)
+        for (study::StudyRow& r : out.rows)
+            if (r.warning != 0) r.value = kNaN;
     return out;
 }
 
@@ -97,7 +105,7 @@ std::vector<RelaxationEffect> relaxation_effects(const study::StudyData& d) {
         return e.physical && e.pairs > 0 && !d.metrics[e.metric].is_slip();
     };
     for (const study::Effect& e : model)
-        if (relative(e)) {
+        if (relative(e) && !model_cannot_follow(e.parameter)) {
             RelaxationEffect& r = entry(e);
             r.model = e.median;
             r.model_pairs = e.pairs;
@@ -105,7 +113,7 @@ std::vector<RelaxationEffect> relaxation_effects(const study::StudyData& d) {
     for (const study::Effect& e : engines)
         if (relative(e)) {
             RelaxationEffect& r = entry(e);
-            r.engines_lo = e.lo;
+            r.engines_lo = e.lo + 0.0;  // + 0: a binary metric's -down / pairs with none down is -0
             r.engines_hi = e.hi;
             r.engine_pairs = e.pairs;
         }
@@ -124,21 +132,42 @@ std::vector<RelaxationEffect> relaxation_effects(const study::StudyData& d) {
     return out;
 }
 
-// What each engine could not run: its failed rows grouped by reason.
-std::vector<std::string> refusals(const study::StudyData& d) {
-    const std::size_t engine = d.column("engine");
-    std::map<std::pair<std::string, std::string>, long> count;
-    for (const study::StudyRow& r : d.rows) {
-        const std::string& status = d.statuses[r.status];
-        if (status.rfind("failed", 0) != 0) continue;
-        const auto colon = status.find(": ");
-        ++count[{d.text(r, engine), colon == std::string::npos ? status : status.substr(colon + 2)}];
-    }
+// The reason of a failed row without the engine's own name before it ("ode: the wall did not lift" is ODE's).
+std::string reason_of(const std::string& status, const std::string& engine) {
+    const std::string reason = study::failure_reason(status);
+    const std::string own = engine + ": ";
+    return reason.rfind(own, 0) == 0 ? reason.substr(own.size()) : reason;
+}
+
+// "<engine>: <text> (n rows)" per engine and text, in engine then text order.
+std::vector<std::string> counted_lines(const std::map<std::pair<std::string, std::string>, long>& count) {
     std::vector<std::string> out;
     for (const auto& [key, n] : count)
         out.push_back(fmt::format("{}: {} ({} row{})", multibody::engine_display_name(key.first), key.second, n,
                                   n == 1 ? "" : "s"));
     return out;
+}
+
+// The failed rows, by engine and reason: what an engine (or the model) refused to express, and what it failed to
+// measure; the statuses do not tell the two apart.
+std::vector<std::string> failed_runs(const study::StudyData& d) {
+    const std::size_t engine = d.column("engine");
+    std::map<std::pair<std::string, std::string>, long> count;
+    for (const study::StudyRow& r : d.rows)
+        if (study::is_failed(d.statuses[r.status])) {
+            const std::string& name = d.text(r, engine);
+            ++count[{name, reason_of(d.statuses[r.status], name)}];
+        }
+    return counted_lines(count);
+}
+
+// The analytic model's warnings, by text: the runs whose changes the model does not give (rows_of).
+std::vector<std::string> model_warnings(const study::StudyData& d) {
+    const std::size_t engine = d.column("engine");
+    std::map<std::pair<std::string, std::string>, long> count;
+    for (const study::StudyRow& r : d.rows)
+        if (r.warning != 0 && d.text(r, engine) == "analytic") ++count[{"analytic", d.warnings[r.warning]}];
+    return counted_lines(count);
 }
 
 }  // namespace
@@ -158,13 +187,10 @@ std::string assumptions_study_file(const std::string& name_or_path, const std::v
 std::string default_assumptions_for_suite(const std::string& suite) { return suite == "full" ? "full" : "default"; }
 
 AssumptionsPart run_assumptions_part(const std::string& study_file, const std::vector<std::string>& engines,
-                                     const std::filesystem::path& dir, const AssumptionsRunOptions& options) {
+                                     const std::filesystem::path& dir, const PartRunOptions& options) {
     const study::StudySpec spec = with_engines(study_file, engines);
     const study::Grid grid(spec);
-    study::StudyRunOptions run;
-    run.threads = options.threads;
-    run.commit = options.commit;
-    run.progress = options.progress;
+    const study::StudyRunOptions run = study_run_options(options);
     study::StudyRunResult result;
     {
         const io::FolderLock lock = study::prepare_study_dir(grid, dir, run);
@@ -179,7 +205,8 @@ AssumptionsPart run_assumptions_part(const std::string& study_file, const std::v
     AssumptionsPart part;
     static_cast<StudyPartRun&>(part) = study_part_run(study_file, spec, dir, result);
     part.effects = relaxation_effects(d);
-    part.refusals = refusals(d);
+    part.refusals = failed_runs(d);
+    part.model_warnings = model_warnings(d);
     for (const study::MetricMeta& m : d.metrics) {
         const std::string name = "tornado_physical_" + m.name;
         if (std::filesystem::exists(dir / "plots" / (name + ".svg"))) {

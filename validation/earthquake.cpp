@@ -185,14 +185,6 @@ EarthquakeVerdict judge_series(const std::string& engine, const study::SeriesMea
 
 namespace {
 
-study::StudyRunOptions study_run_options(const EarthquakeRunOptions& options) {
-    study::StudyRunOptions run;
-    run.threads = options.threads;
-    run.commit = options.commit;
-    run.progress = options.progress;
-    return run;
-}
-
 // Runs the study of `spec` into dir (its rows only, no outputs) and reads them back: the stand-ins' and the paper's
 // model's ensembles beside the report's.
 study::StudyData run_rows(const study::StudySpec& spec, const std::filesystem::path& dir, const EarthquakeRunOptions& options) {

@@ -7,7 +7,6 @@
 // peaks switch branch for a 1 % change of the scale (the response's own sensitivity); these measures are what the
 // engines can be held to.
 #include <filesystem>
-#include <functional>
 #include <utility>
 #include <optional>
 #include <string>
@@ -106,12 +105,7 @@ std::string earthquake_study_file(const std::string& name_or_path, const std::ve
 // records), "default" otherwise.
 std::string default_earthquake_for_suite(const std::string& suite);
 
-struct EarthquakeRunOptions {
-    int threads = 0;  // 0: the available cores
-    bool plots = true;
-    std::string gnuplot = "gnuplot";
-    std::string commit;  // vssw's, for the study's manifest
-    std::function<void(long, long, const std::string&)> progress;  // as StudyRunOptions::progress
+struct EarthquakeRunOptions : PartRunOptions {
     bool paper_model = false;  // also run the analytic model under the set `paper` (EarthquakePart::paper_model)
 };
 

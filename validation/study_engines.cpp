@@ -29,6 +29,14 @@ study::StudySpec with_engines(const std::string& file, const std::vector<std::st
     return spec;
 }
 
+study::StudyRunOptions study_run_options(const PartRunOptions& options) {
+    study::StudyRunOptions run;
+    run.threads = options.threads;
+    run.commit = options.commit;
+    run.progress = options.progress;
+    return run;
+}
+
 StudyPartRun study_part_run(const std::string& file, const study::StudySpec& spec, const std::filesystem::path& dir,
                             const study::StudyRunResult& result) {
     return {file, spec.name, spec.description, dir, result.rows, result.failed_rows, result.meta.wall_time_s};

@@ -2,6 +2,7 @@
 // A shipped study run by the report for the report's engines (the earthquake part, the assumptions part), and what
 // each part says of that run.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,17 @@ struct StudyPartRun {
     long rows = 0, failed_rows = 0;
     double wall_time_s = 0.0;
 };
+// How the report runs a part's study: what `vssw report` passes on of its own options.
+struct PartRunOptions {
+    int threads = 0;  // 0: the available cores
+    bool plots = true;
+    std::string gnuplot = "gnuplot";
+    std::string commit;  // vssw's, for the study's manifest
+    std::function<void(long, long, const std::string&)> progress;  // as StudyRunOptions::progress
+};
+// The study runner's options of a part's (threads, commit, progress).
+study::StudyRunOptions study_run_options(const PartRunOptions& options);
+
 StudyPartRun study_part_run(const std::string& file, const study::StudySpec& spec, const std::filesystem::path& dir,
                             const study::StudyRunResult& result);
 
