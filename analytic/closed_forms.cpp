@@ -1,5 +1,6 @@
 #include "closed_forms.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "error.hpp"
@@ -158,8 +159,11 @@ double eq14_threshold_over_g(double b, double h, double h1, double xi, double ec
     return b * xi * (1.0 - std::abs(eccentricity)) / (h - h1) + 2.0 * b * (1.0 + xi) / h1;
 }
 
-double eq15_optimal_hinge_ratio(double xi, double eccentricity) {
-    return 1.0 / (1.0 + std::sqrt(xi * (1.0 - std::abs(eccentricity)) / (2.0 * (1.0 + xi))));
+double eq15_optimal_hinge_ratio(double xi, double eccentricity, double corner_radius) {
+    if (corner_radius == 0.0 || eccentricity == 0.0)  // Eq. (15e), and (15) at eps = 0: as printed, to the bit
+        return 1.0 / (1.0 + std::sqrt(xi * (1.0 - std::abs(eccentricity)) / (2.0 * (1.0 + xi))));
+    const double flat = 1.0 - corner_radius;  // (b - r) / b
+    return 1.0 / (1.0 + std::sqrt(xi * std::max(0.0, flat - std::abs(eccentricity)) / (2.0 * flat * (1.0 + xi))));
 }
 
 double eq16_cracking_hinge_ratio(double xi, double t) {

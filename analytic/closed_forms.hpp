@@ -117,7 +117,11 @@ double eq14_threshold_over_g(double b, double h, double h1, double xi, double ec
 // Eq. (15): the hinge ratio h1/h that minimises Eq. (14); with N at e/b = eps, the one that minimises Eq. (14e):
 //   h1 / h = 1 / (1 + sqrt(xi (1 - |eps|) / (2 (1 + xi))))                                              (15e)
 // N at a corner (|eps| = 1) puts it at the very top, as xi = 0 does: its lever no longer grows as the hinge rises.
-double eq15_optimal_hinge_ratio(double xi, double eccentricity = 0.0);
+// With the corners rounded to r = rho b as well, the one that minimises Eq. (12r)'s lower side:
+//   h1 / h = 1 / (1 + sqrt(xi max(0, 1 - rho - |eps|) / (2 (1 - rho)(1 + xi))))                         (15r)
+// (docs/model/analytic-core.md, "Rounded corners"); rho = 0 is Eq. (15e) bit for bit, and so is eps = 0 whatever rho
+// (the rounding then scales the whole threshold by 1 - rho). N at or past the flat's end (|eps| >= 1 - rho): the top.
+double eq15_optimal_hinge_ratio(double xi, double eccentricity = 0.0, double corner_radius = 0.0);
 // Eq. (16): the hinge ratio h1/h of first cracking, with t = f_mt / (W / 2b) the normalised mortar tensile strength.
 double eq16_cracking_hinge_ratio(double xi, double t);
 // Eq. (17): threshold of the parapet wall [m/s^2].

@@ -53,7 +53,8 @@ public:
     TopOffset operator()(double t) const;
     // The top support's absolute acceleration a_h + u_d'' = -(2 zeta omega u_d' + omega^2 u_d).
     double absolute_acceleration(double t) const;
-    // The largest |u_d| at the nodes (the peak relative drift of the top, for reports) [m].
+    // The largest |u_d| at the nodes [m]: a scale of the top's drift (the tests' tolerances and quasi-static check
+    // read it), not its peak, which can fall between two nodes and be larger.
     double peak_offset() const { return peak_u_; }
 
 private:

@@ -280,22 +280,37 @@ double RockingModel::reference_velocity() const {
     return std::sqrt(2.0 * std::abs(reference_energy()) / terms(0.0).M);
 }
 
-double RockingModel::unstable_equilibrium() const {
+double RockingModel::reference_energy() const {
+    const double v = potential(reference_angle());
+    if (eccentricity() == 0.0) return v;  // the two sides are one (the potential reads |theta1|)
+    const double other = potential(-reference_angle());
+    return std::abs(other) > std::abs(v) ? other : v;
+}
+
+double RockingModel::unstable_equilibrium(int side) const {
+    require(side == 1 || side == -1, "side of rocking", "+1 or -1", side);
     // The potential rises from rest to one maximum and falls to the collapse (a heavy overburden moves the maximum
     // below alpha1, never makes two): a scan brackets it, golden sections shrink the bracket to round-off.
     constexpr int kScan = 256;
     constexpr int kGoldenSteps = 80;  // 0.618^80 of a scan cell: below double's resolution of the angle
     const double top = collapse_angle();
+    auto v = [&](double q) { return potential(side * q); };
     int best = 1;
     for (int i = 2; i < kScan; ++i)
-        if (potential(top * i / kScan) > potential(top * best / kScan)) best = i;
+        if (v(top * i / kScan) > v(top * best / kScan)) best = i;
     double lo = top * (best - 1) / kScan, hi = top * (best + 1) / kScan;
     const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
     for (int k = 0; k < kGoldenSteps; ++k) {
         const double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-        (potential(a) < potential(b) ? lo : hi) = potential(a) < potential(b) ? a : b;
+        (v(a) < v(b) ? lo : hi) = v(a) < v(b) ? a : b;
     }
     return 0.5 * (lo + hi);
+}
+
+double RockingModel::unstable_equilibrium() const {
+    const double positive = unstable_equilibrium(1);
+    if (eccentricity() == 0.0) return positive;  // the two sides are one
+    return std::max(positive, unstable_equilibrium(-1));
 }
 
 double RockingModel::rest_threshold(double a_v, int side) const {

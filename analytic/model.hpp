@@ -94,8 +94,10 @@ public:
     double overburden_work(double theta) const;
     double potential(double theta) const { return weight_potential(theta) - overburden_work(theta); }
     double kinetic(double theta, double theta_dot) const;
-    // V_r: potential energy at the reference angle (the paper's normalising energy, Sect. 7).
-    double reference_energy() const { return potential(reference_angle()); }
+    // V_r: potential energy at the reference angle (the paper's normalising energy, Sect. 7). With N off-centre the
+    // two sides differ (N's lever is longer on one); V_r is then the side's of the larger |V|, so that every tolerance
+    // scaled by it (the energy a run may gain, the blow-up rate) holds on both sides. A centred N: V(alpha1) itself.
+    double reference_energy() const;
     // Reference velocity: sqrt(2 |V_r| / M(0)); equals Eq. (24) for the VSSW with N = 0.
     double reference_velocity() const;
     // Smallest |a_h| that tips the wall off rest toward `side` (+1: theta1 > 0, which a_h < 0 does), from the
@@ -104,9 +106,12 @@ public:
     double rest_threshold(double a_v) const;
     // The side whose rest threshold is the lower: -1 (tipped by a_h > 0) on a tie, as on every centred wall.
     int easier_side() const;
-    // The unstable equilibrium: the |theta1| in (0, collapse angle) where the potential (weights and overburden) is
-    // largest. Past it, with the ground still, the wall falls outward; nothing standing can rest there, which is how
-    // a folded engine wall (at rest at 3-4 alpha1 short of the collapse angle) is told from a standing one.
+    // The unstable equilibrium on side `side` (+1: theta1 > 0): the |theta1| in (0, collapse angle) where the
+    // potential (weights and overburden) is largest. Past it, with the ground still, the wall falls outward; nothing
+    // standing can rest there, which is how a folded engine wall (at rest at 3-4 alpha1 short of the collapse angle) is
+    // told from a standing one. Without a side, the larger of the two (they differ only when N is eccentric): no
+    // standing wall, on either side, rests past it.
+    double unstable_equilibrium(int side) const;
     double unstable_equilibrium() const;
 };
 

@@ -182,6 +182,45 @@ double checked_corner_radius(double ratio) {
     return ratio;
 }
 
+// The largest |e/b| at which a threshold linear in |e/b| (Eq. 12r, 17r: at(0) at the centre, at(1) at a corner) is
+// still > 0.
+double largest_standing_eccentricity(double at_centre, double at_corner) {
+    return at_centre / (at_centre - at_corner);
+}
+
+// With the corners rounded the pivot (the hinge, for the VSSW's upper body) sits at b - r from the centreline, and an
+// eccentric N past it turns the wall outward at rest. When that moment outweighs the weights' (Eq. 12r or 17r <= 0 on
+// the lower side) nothing holds the wall up: no threshold, no rocking, a hold time of -nan. Refused, whichever of
+// with_eccentricity and with_corner_radius comes last. Sharp corners never get here: Eq. (12e) and (17e) stay > 0.
+void require_standing(const char* equation, double threshold, double g, double xi, double eccentricity,
+                      double corner_radius, double largest_eccentricity) {
+    if (threshold > 0.0) return;
+    throw InputError(fmt::format(
+        "this wall cannot stand: N at e/b {:g} (xi {:g}) acts outside the flat of its rounded pivot (r/b {:g} puts "
+        "the pivot at {:g} b) and turns it over at rest: Eq. ({}) gives a threshold of {:.3g} g; at this xi and r/b "
+        "|e/b| must be below {:.4g}",
+        eccentricity, xi, corner_radius, 1.0 - corner_radius, equation, threshold / g, largest_eccentricity));
+}
+
+template <class Wall, class Threshold>
+Wall standing(Wall w, const char* equation, Threshold threshold) {
+    if (w.corner_radius == 0.0 || w.eccentricity == 0.0) return w;
+    Wall centred = w, corner = w;
+    centred.eccentricity = 0.0;
+    corner.eccentricity = 1.0;
+    require_standing(equation, threshold(w), w.g, w.xi, w.eccentricity, w.corner_radius,
+                     largest_standing_eccentricity(threshold(centred), threshold(corner)));
+    return w;
+}
+
+VsswGeometry standing(const VsswGeometry& w) {
+    return standing(w, "12r", [](const VsswGeometry& x) { return eq12_threshold(x, 0.0); });
+}
+
+ParapetGeometry standing(const ParapetGeometry& p) {
+    return standing(p, "17r", [](const ParapetGeometry& x) { return eq17_parapet_threshold(x); });
+}
+
 }  // namespace
 
 VsswGeometry with_corner_radius(VsswGeometry w, double ratio) {
@@ -191,22 +230,22 @@ VsswGeometry with_corner_radius(VsswGeometry w, double ratio) {
             fmt::format("at most {:.6g} on this wall (r no larger than the shorter block's half-height)",
                         std::min(w.h1, w.h2) / w.b),
             ratio);
-    return w;
+    return standing(w);
 }
 
 ParapetGeometry with_corner_radius(ParapetGeometry p, double ratio) {
     p.corner_radius = checked_corner_radius(ratio);
-    return p;
+    return standing(p);
 }
 
 VsswGeometry with_eccentricity(VsswGeometry w, double ratio) {
     w.eccentricity = checked_eccentricity(ratio);
-    return w;
+    return standing(w);
 }
 
 ParapetGeometry with_eccentricity(ParapetGeometry p, double ratio) {
     p.eccentricity = checked_eccentricity(ratio);
-    return p;
+    return standing(p);
 }
 
 }  // namespace vssw

@@ -32,7 +32,8 @@ VsswGeometry make_vssw(double height, double thickness, double hinge_ratio, doub
 VsswGeometry make_vssw_from_angles(double alpha1, double alpha2, double R1, double xi = 0.0,
                                    double density = kDefaultDensity, double g = kDefaultGravity);
 // The same wall with N at the eccentricity e/b = ratio of the (upper) body's top face (geometry.hpp); InputError unless
-// the ratio is a number in [-1, 1] (the face's corners).
+// the ratio is a number in [-1, 1] (the face's corners), and, on a wall with rounded corners, when N acts so far
+// outside the rounded pivot's flat that the wall cannot stand (Eq. 12r / 17r <= 0; with_corner_radius checks the same).
 VsswGeometry with_eccentricity(VsswGeometry w, double ratio);
 ParapetGeometry with_eccentricity(ParapetGeometry p, double ratio);
 // The largest corner radius r/b a wall takes: half the half-thickness. Past it the flat part of a face (2b - 2r) is
@@ -40,7 +41,8 @@ ParapetGeometry with_eccentricity(ParapetGeometry p, double ratio);
 constexpr double kMaxCornerRadius = 0.5;
 // The same wall with the blocks' corners rounded to the radius r = ratio * b (docs/model/analytic-core.md, "Rounded
 // corners"): the base pivot and the hinge move inward to b - r, the threshold follows (Eq. 12r, 17r). InputError
-// unless the ratio is a number in [0, kMaxCornerRadius].
+// unless the ratio is a number in [0, kMaxCornerRadius], and when an eccentric N then acts outside the pivot's flat
+// with a moment that outweighs the weights' (the threshold <= 0: the wall cannot stand), naming xi, e/b and r/b.
 VsswGeometry with_corner_radius(VsswGeometry w, double ratio);
 ParapetGeometry with_corner_radius(ParapetGeometry p, double ratio);
 ParapetGeometry make_parapet(double height, double thickness, double xi = 0.0, double density = kDefaultDensity,

@@ -29,7 +29,8 @@ Command add_wall_command(CLI::App& root) {
         "threshold_ratio_vssw_over_parapet, optimal_hinge_ratio (Eq. 15),\n"
         "parapet {alpha, R, threshold_g (Eq. 17), restitution, p} (Housner 1963).\n"
         "With --corner-radius, corner_radius and the thresholds of Eq. (12r) and (17r); every other figure is the\n"
-        "sharp blocks'.");
+        "sharp blocks'. The parapet's threshold_g and the ratio are null when that parapet cannot stand (N off\n"
+        "centre outside its rounded pivot's flat); a VSSW that cannot stand is refused.");
     return {cmd, [o](std::ostream& out) {
                 const WallFigures figures = wall_figures(o->wall);
                 if (o->json)

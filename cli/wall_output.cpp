@@ -6,13 +6,39 @@
 #include <fmt/format.h>
 
 #include "analytic/closed_forms.hpp"
+#include "analytic/error.hpp"
 #include "cli/table.hpp"
 
 namespace vssw::cli {
 
+namespace {
+
+// The parapet of the VSSW's size, xi, e/b and r/b, and whether it stands: with rounded corners and N off-centre it
+// may not where the VSSW does (N's lever on the parapet is not lengthened by the upper block's k). The VSSW took
+// the same r/b, so with_corner_radius can refuse the parapet only because it cannot stand.
+struct SameSizeParapet {
+    ParapetGeometry geometry;
+    bool stands = true;
+};
+
+SameSizeParapet same_size_parapet(const WallOptions& o) {
+    const ParapetGeometry sharp =
+        with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity);
+    try {
+        return {with_corner_radius(sharp, o.corner_radius), true};
+    } catch (const InputError&) {
+        return {sharp, false};
+    }
+}
+
+}  // namespace
+
 WallFigures wall_figures(const WallOptions& options) {
     const VsswGeometry w = vssw_geometry(options);
-    const ParapetGeometry pw = parapet_geometry(options);
+    const SameSizeParapet same = same_size_parapet(options);
+    const ParapetGeometry& pw = same.geometry;
+    const std::optional<double> parapet_threshold =
+        same.stands ? std::optional(eq17_parapet_threshold(pw)) : std::nullopt;
     WallFigures f{};
     f.inputs = options;
     f.alpha1 = w.alpha1;
@@ -27,10 +53,10 @@ WallFigures wall_figures(const WallOptions& options) {
     f.period_half_A = eq22_period(w, f.A / 2.0);
     f.collapse_angle = make_vssw_model(w, Kinematics::paper)->collapse_angle();
     f.reference_velocity = eq24_reference_velocity(w);
-    f.threshold_ratio_vssw_over_parapet = eq12_threshold(w) / eq17_parapet_threshold(pw);
-    f.optimal_hinge_ratio = eq15_optimal_hinge_ratio(w.xi, w.eccentricity);
-    f.parapet = {pw.alpha, pw.R, eq17_parapet_threshold(pw) / pw.g, housner_restitution(pw.alpha),
-                 housner_p(pw.R, pw.g)};
+    if (parapet_threshold) f.threshold_ratio_vssw_over_parapet = eq12_threshold(w) / *parapet_threshold;
+    f.optimal_hinge_ratio = eq15_optimal_hinge_ratio(w.xi, w.eccentricity, w.corner_radius);
+    f.parapet = {pw.alpha, pw.R, parapet_threshold ? std::optional(*parapet_threshold / pw.g) : std::nullopt,
+                 housner_restitution(pw.alpha), housner_p(pw.R, pw.g)};
     return f;
 }
 
@@ -48,11 +74,11 @@ io::Json to_json(const WallFigures& f) {
     j["period_half_A"] = f.period_half_A;
     j["collapse_angle"] = f.collapse_angle;
     j["reference_velocity"] = f.reference_velocity;
-    j["threshold_ratio_vssw_over_parapet"] = f.threshold_ratio_vssw_over_parapet;
+    j["threshold_ratio_vssw_over_parapet"] = io::or_null(f.threshold_ratio_vssw_over_parapet);
     j["optimal_hinge_ratio"] = f.optimal_hinge_ratio;
     j["parapet"] = {{"alpha", f.parapet.alpha},
                     {"R", f.parapet.R},
-                    {"threshold_g", f.parapet.threshold_g},
+                    {"threshold_g", io::or_null(f.parapet.threshold_g)},
                     {"restitution", f.parapet.restitution},
                     {"p", f.parapet.p}};
     return j;
@@ -61,7 +87,8 @@ io::Json to_json(const WallFigures& f) {
 void print_wall(std::ostream& out, const WallFigures& f) {
     const bool has_overburden = f.inputs.xi != 0.0;
     // N off the centre: the thresholds are Eq. (12e) and (17e), the lower of the two directions of tipping, and the
-    // optimal hinge (Eq. 15) is still the centred N's (docs/model/analytic-core.md, "The overburden's position").
+    // optimal hinge is Eq. (15e)'s, Eq. (15r)'s with rounded corners (docs/model/analytic-core.md, "The overburden's
+    // position", "Rounded corners").
     const bool eccentric = has_overburden && f.inputs.eccentricity != 0.0;
     // Rounded corners: the thresholds are Eq. (12r) and (17r); the other closed forms are the sharp blocks' (docs/model/
     // analytic-core.md, "Rounded corners").
@@ -87,16 +114,20 @@ void print_wall(std::ostream& out, const WallFigures& f) {
                  : (f.theta_lim ? "just below Eq. (26)" : "pi/2: the lower body lies on its face"))
         .add("reference velocity", io::num(f.reference_velocity), "rad/s", sharp("Eq. (24)"))
         .add("optimal hinge ratio h1/h", io::num(f.optimal_hinge_ratio), "",
-             eccentric ? "Eq. (15e) at this xi and e/b" : "Eq. (15) at this xi")
-        .add("threshold VSSW / parapet", io::num(f.threshold_ratio_vssw_over_parapet), "",
-             vssw_threshold + " / " + parapet_threshold)
+             eccentric ? (rounded ? "Eq. (15r) at this xi, e/b and r/b" : "Eq. (15e) at this xi and e/b")
+                       : "Eq. (15) at this xi")
+        .add("threshold VSSW / parapet", num_or(f.threshold_ratio_vssw_over_parapet, "none"), "",
+             f.threshold_ratio_vssw_over_parapet ? vssw_threshold + " / " + parapet_threshold
+                                                 : "the parapet of its size cannot stand")
         .print(out);
     Table(eccentric || rounded ? fmt::format("Parapet of the same height, thickness, xi{}{} (Housner 1963)",
                                              eccentric ? " and e/b" : "", rounded ? " and r/b" : "")
                                : "Parapet of the same height, thickness and xi (Housner 1963)")
         .add("alpha", io::num(f.parapet.alpha), "rad", "atan(b/h)")
         .add("R", io::num(f.parapet.R), "m", "half-diagonal")
-        .add("threshold acceleration", io::num(f.parapet.threshold_g), "g", parapet_threshold + lower_side)
+        .add("threshold acceleration", num_or(f.parapet.threshold_g, "none"), f.parapet.threshold_g ? "g" : "",
+             f.parapet.threshold_g ? parapet_threshold + lower_side
+                                   : "it cannot stand: N outside its rounded pivot's flat tips it at rest")
         .add("coefficient of restitution", io::num(f.parapet.restitution), "", "1 - 3/2 sin^2(alpha)")
         .add("frequency parameter p", io::num(f.parapet.p), "1/s", "sqrt(3g / 4R)")
         .print(out);

@@ -11,7 +11,9 @@ namespace vssw::cli {
 
 struct ParapetFigures {
     double alpha, R;     // [rad], [m]
-    double threshold_g;  // Eq. (17) / g
+    // Eq. (17) / g; none when the parapet cannot stand (rounded corners and N outside the pivot's flat with a
+    // moment past the weight's: analytic/wall.hpp with_corner_radius), though the VSSW of its size does.
+    std::optional<double> threshold_g;
     double restitution;  // Housner's e = 1 - 3/2 sin^2(alpha)
     double p;            // Housner's frequency parameter sqrt(3g / 4R) [1/s]
 };
@@ -26,7 +28,7 @@ struct WallFigures {
     double period_half_A;                      // Eq. (22) at theta10 = A/2 [s]
     double collapse_angle;                     // where the paper-kinematics model counts the wall as overturned [rad]
     double reference_velocity;                 // Eq. (24) [rad/s]
-    double threshold_ratio_vssw_over_parapet;  // Eq. (12) / Eq. (17)
+    std::optional<double> threshold_ratio_vssw_over_parapet;  // Eq. (12) / Eq. (17); none as parapet.threshold_g
     double optimal_hinge_ratio;                // Eq. (15) at this xi
     ParapetFigures parapet;                    // the parapet of the same height, thickness, xi
 };

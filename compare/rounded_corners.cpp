@@ -33,15 +33,15 @@ multibody::WallScene with_sharp_corners(multibody::WallScene scene) {
 }
 
 RoundedCornerComparison compare_rounded_corners(const std::vector<RoundedEngine>& engines,
-                                                const multibody::WallScene& scene, double r,
+                                                const multibody::WallScene& scene, double release,
                                                 const ComparisonOptions& options) {
     RoundedCornerComparison out{};
     out.corner_radius_ratio = scene.corner_radius_ratio();
     out.closed_form_g = closed_form_threshold(scene) / scene.gravity();
     out.sharp_closed_form_g = closed_form_threshold(with_sharp_corners(scene)) / scene.gravity();
-    out.theta0 = r * scene.alpha();
+    out.theta0 = release * scene.alpha();
     FreeVibrationOptions free = options.free;
-    free.r = r;
+    free.r = release;
     if (free.t_end <= 0.0) free.t_end = free_vibration_duration(with_sharp_corners(scene), out.theta0, free.impacts);
     std::vector<double> thresholds, periods;
     for (const RoundedEngine& e : engines) {

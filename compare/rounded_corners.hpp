@@ -34,11 +34,12 @@ struct RoundedCornerComparison {
     double threshold_spread, period_spread;
 };
 
-// Each engine's threshold (its trials tipping the wall the easier way) and free-vibration period from r alpha, on the
+// Each engine's threshold (its trials tipping the wall the easier way) and free-vibration period from release * alpha
+// (the release angle's share of alpha; r is the corner radius everywhere else), on the
 // scene as given (its corner radius and all). The run's length is the sharp wall's automatic one (the analytic model
 // cannot run the rounded wall). An engine's EngineFailure is recorded, the others still run.
 RoundedCornerComparison compare_rounded_corners(const std::vector<RoundedEngine>& engines,
-                                                const multibody::WallScene& scene, double r,
+                                                const multibody::WallScene& scene, double release,
                                                 const ComparisonOptions& options = {});
 
 // The scene with sharp corners: the same wall, corner radius 0.

@@ -493,8 +493,10 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
     std::optional<double> hinge;
     if (l.has("hinge")) {
         const Level& h = l.level.at("hinge");
+        // Eq. (15), (15e) with N off-centre, (15r) with rounded corners as well (analytic/closed_forms.hpp).
+        const double eccentricity = l.num("overburden_eccentricity", 0.0), corners = l.num("corner_radius", 0.0);
         hinge = std::holds_alternative<double>(h) ? as_number(h)
-                                                  : eq15_optimal_hinge_ratio(c.xi, l.num("overburden_eccentricity", 0.0));
+                                                  : eq15_optimal_hinge_ratio(c.xi, eccentricity, corners);
     }
     if (l.has("height")) {
         height = l.num("height", 0.0);

@@ -61,9 +61,23 @@ double law_restitution(const RunSpec& run, const multibody::WallScene& scene) {
     return scene.vssw ? eq19_restitution(*scene.vssw) : housner_restitution(scene.parapet->alpha);
 }
 
-// The parapet of the same height, thickness, xi, density and g as the case's VSSW (the paper's comparisons).
+// The parapet of the same height, thickness, xi, density and g as the case's VSSW (the paper's comparisons), with
+// sharp corners and N at the centre: what the forms that ignore N's position and the corners (Housner's e and period)
+// read.
 ParapetGeometry same_size_parapet(const VsswGeometry& w) {
     return make_parapet(2.0 * w.h(), 2.0 * w.b, w.xi, w.density, w.g);
+}
+
+// The same parapet with N at the VSSW's e/b and its corners rounded to the same r/b, as `vssw wall`'s
+// (cli/wall_output.cpp): whose threshold (Eq. 17r / 17e) the VSSW's is compared with. nullopt when that parapet cannot
+// stand (N outside its rounded pivot's flat: with_corner_radius refuses it, the r/b itself accepted for the VSSW).
+std::optional<ParapetGeometry> same_parapet_with_n_and_corners(const VsswGeometry& w) {
+    const ParapetGeometry centred = with_eccentricity(same_size_parapet(w), w.eccentricity);
+    try {
+        return with_corner_radius(centred, w.corner_radius);
+    } catch (const InputError&) {
+        return std::nullopt;
+    }
 }
 
 // A closed form's value, or a reason it has none here.
@@ -94,7 +108,9 @@ ClosedForm closed_form(const std::string& metric, const CaseSpec& c, const RunSp
         return {w ? restitution_whole_mechanism(*w) : housner_restitution(p->alpha), ""};
     if (metric == "threshold_ratio_to_parapet") {
         if (auto no = vssw_only()) return *no;
-        return {eq12_threshold(*w) / eq17_parapet_threshold(same_size_parapet(*w)), ""};
+        const std::optional<ParapetGeometry> parapet = same_parapet_with_n_and_corners(*w);
+        if (!parapet) return {kNaN, "the parapet of this wall's size, xi, e/b and r/b cannot stand"};
+        return {eq12_threshold(*w) / eq17_parapet_threshold(*parapet), ""};
     }
     if (metric == "restitution_ratio_to_parapet") {
         if (auto no = vssw_only()) return *no;

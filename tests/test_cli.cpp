@@ -193,7 +193,7 @@ TEST(CliWall, EccentricOverburdenGivesTheLowerThresholdOfTheTwoDirections) {
 }
 
 // The table names what it printed: with N off the centre the thresholds are Eq. (12e)/(17e) (the lower side) and the
-// optimal hinge of Eq. (15) is still the centred N's; a centred N's table names Eq. (12) as before.
+// optimal hinge is Eq. (15e)'s at that e/b; a centred N's table names Eq. (12) as before.
 TEST(CliWall, TableNamesTheEccentricThresholdAndHinge) {
     const std::vector<std::string> base = {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--xi", "0.5"};
     const CliResult off = run_cli(base + std::vector<std::string>{"--overburden-eccentricity", "1"});
@@ -205,6 +205,34 @@ TEST(CliWall, TableNamesTheEccentricThresholdAndHinge) {
     ASSERT_EQ(centred.code, 0) << centred.err;
     EXPECT_EQ(centred.out.find("12e"), std::string::npos) << centred.out;
     EXPECT_NE(centred.out.find("Eq. (12)"), std::string::npos) << centred.out;
+}
+
+// With rounded corners and N off-centre the optimal hinge is Eq. (15r) (by hand at xi 0.5, e/b 0.5, r/b 0.1:
+// 1 / (1 + sqrt(0.5 * 0.4 / (2 * 0.9 * 1.5))) = 0.786; Eq. 15e's 0.776 would fail), and the table names it.
+TEST(CliWall, RoundedCornersAndAnEccentricNGiveEq15rsHinge) {
+    const std::vector<std::string> args = {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.7", "--xi",
+                                           "0.5", "--overburden-eccentricity", "0.5", "--corner-radius", "0.1"};
+    const Json j = run_json(args);
+    EXPECT_NEAR(j["optimal_hinge_ratio"].get<double>(), 1.0 / (1.0 + std::sqrt(0.5 * 0.4 / (2.0 * 0.9 * 1.5))),
+                kRoundoff);
+    const CliResult table = run_cli(args);
+    ASSERT_EQ(table.code, 0) << table.err;
+    EXPECT_NE(table.out.find("Eq. (15r) at this xi, e/b and r/b"), std::string::npos) << table.out;
+}
+
+// A VSSW that stands while the parapet of its size cannot (N at the corner, r/b 0.3, xi 4, h1/h 0.5: by hand the
+// parapet's 0.7 * 5 - 4 < 0, the VSSW's 0.7 (2 + 4 * 3) - 4 > 0 in Eq. 17r's and 12r's brackets): the wall is printed,
+// the parapet's threshold and the ratio are none (null), not a negative number.
+TEST(CliWall, AParapetOfTheSameSizeThatCannotStandHasNoThreshold) {
+    const std::vector<std::string> args = {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.5", "--xi",
+                                           "4", "--overburden-eccentricity", "1", "--corner-radius", "0.3"};
+    const Json j = run_json(args);
+    EXPECT_GT(j["threshold_g"].get<double>(), 0.0);
+    EXPECT_TRUE(j["parapet"]["threshold_g"].is_null());
+    EXPECT_TRUE(j["threshold_ratio_vssw_over_parapet"].is_null());
+    const CliResult table = run_cli(args);
+    ASSERT_EQ(table.code, 0) << table.err;
+    EXPECT_NE(table.out.find("it cannot stand"), std::string::npos) << table.out;
 }
 
 // compare's closed-form line names the equation its number is: Eq. (12e) with N off the centre, Eq. (12) without.
@@ -525,6 +553,16 @@ INSTANTIATE_TEST_SUITE_P(
             with_fig6({"compare", "--engine", "box2d", "--corner-radius", "0.1", "--pulse", "ricker", "--amplitude",
                        "0.4", "--pulse-period", "0.5"}),
             {"--corner-radius with --record or --pulse"}),
+        // N outside the rounded pivot's flat, its moment past the weights': Eq. (12r) <= 0, a wall that cannot stand
+        // (RoundedCorners.NOutsideTheRoundedPivotThatTipsTheWallAtRestIsRefused). Before: threshold -0.133 g, exit 0.
+        bad("EccentricNOutsideTheRoundedPivot",
+            {"wall", "--height", "4", "--thickness", "0.4", "--hinge", "0.9", "--xi", "2", "--overburden-eccentricity",
+             "1", "--corner-radius", "0.3"},
+            {"cannot stand", "e/b 1", "xi 2", "r/b 0.3", "Eq. (12r)"}),
+        bad("EccentricNOutsideTheRoundedPivotCompared",
+            {"compare", "--engine", "box2d", "--height", "4", "--thickness", "0.4", "--hinge", "0.9", "--xi", "2",
+             "--overburden-eccentricity", "-1", "--corner-radius", "0.3"},
+            {"cannot stand", "e/b -1", "xi 2", "r/b 0.3"}),
         bad("EccentricityPastTheCorner",
             with_fig6({"compare", "--engine", "analytic", "--overburden-eccentricity", "1.5"}),
             {"overburden eccentricity e/b", "[-1, 1]", "got 1.5"}),

@@ -3,6 +3,7 @@
 // wrong moment arm fails, the energy balance of a free run, the range check, and a centred N that is Eq. (12) itself.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -152,6 +153,43 @@ TEST(EccentricOverburden, APositionOffTheTopFaceIsRefusedNamingIt) {
     }
 }
 
+// With N off-centre the two sides of the mechanism differ: each has its own unstable equilibrium (the potential's
+// maximum, here found by a plain scan of the potential, not the model's golden search), the side-free one is the
+// larger (no standing wall on either side rests past it: RunMonitorFold.AnEccentricWallStandingOnTheSideOfTheLarger
+// EquilibriumIsNotFolded), and V_r is the side's of the larger |V| (docs/model/analytic-core.md, "Normalised
+// outputs"). Measured on this wall at e/b +1: 0.0818 rad and V(alpha1) = 282 J/m on side +1, 0.0614 rad and 141 J/m
+// on side -1; a mirrored N swaps them. A centred N keeps the one side's values to the bit.
+TEST(EccentricOverburden, EachSideHasItsUnstableEquilibriumAndVrIsTheLarger) {
+    constexpr int kFine = 20000;  // scan cells over (0, collapse angle): a cell of ~1e-5 rad on this wall
+    for (double eps : {1.0, -1.0}) {
+        const auto model = make_vssw_model(table1_no7(eps), Kinematics::exact);
+        const double top = model->collapse_angle(), cell = top / kFine;
+        double found[2] = {0.0, 0.0};
+        for (int side : {1, -1}) {
+            double best = 0.0, best_v = -HUGE_VAL;
+            for (int i = 1; i < kFine; ++i)
+                if (const double v = model->potential(side * i * cell); v > best_v) {
+                    best_v = v;
+                    best = i * cell;
+                }
+            found[side > 0 ? 0 : 1] = best;
+            EXPECT_NEAR(model->unstable_equilibrium(side), best, cell) << "e/b " << eps << ", side " << side;
+        }
+        // Must fail a one-sided equilibrium: the sides differ by a quarter.
+        EXPECT_GT(std::abs(found[0] - found[1]), 100.0 * cell) << "e/b " << eps;
+        EXPECT_EQ(model->unstable_equilibrium(),
+                  std::max(model->unstable_equilibrium(1), model->unstable_equilibrium(-1)));
+        const double a = model->reference_angle();
+        const double larger = std::max(std::abs(model->potential(a)), std::abs(model->potential(-a)));
+        EXPECT_EQ(std::abs(model->reference_energy()), larger) << "e/b " << eps;
+        EXPECT_GT(larger, 1.5 * std::min(std::abs(model->potential(a)), std::abs(model->potential(-a))));
+    }
+    const auto centred = make_vssw_model(table1_no7(0.0), Kinematics::exact);
+    EXPECT_EQ(centred->unstable_equilibrium(), centred->unstable_equilibrium(1));
+    EXPECT_EQ(centred->unstable_equilibrium(-1), centred->unstable_equilibrium(1));
+    EXPECT_EQ(centred->reference_energy(), centred->potential(centred->reference_angle()));
+}
+
 // At e = 0 the threshold is Eq. (12) as printed (a_v = 0), to the bit, and the lower of the two sides.
 TEST(EccentricOverburden, ACentredNIsEq12AsPrinted) {
     const VsswGeometry w = table1_no7(0.0);
@@ -162,30 +200,37 @@ TEST(EccentricOverburden, ACentredNIsEq12AsPrinted) {
     EXPECT_EQ(eq12_threshold(off), std::min(eq12_threshold(off, 0.0, 1), eq12_threshold(off, 0.0, -1)));
 }
 
-// Eq. (15e): the hinge that minimises Eq. (12e)'s lower side, found here by a golden-section search over walls built
-// at each hinge (the threshold of the code's own walls, not Eq. 14e), on walls where N's position matters and where
-// it does not (eps 0: Eq. 15 itself, bit for bit).
+// Eq. (15e) and (15r): the hinge that minimises Eq. (12e)'s / (12r)'s lower side, found here by a golden-section
+// search over walls built at each hinge (the threshold of the code's own walls, not Eq. 14e), on walls where N's
+// position matters and where it does not (eps 0: Eq. 15 itself, bit for bit), sharp and rounded (r/b 0.1, 0.3: with
+// N off-centre Eq. 15e is off, 0.776 against 0.786 at xi 0.5, e/b 0.5, r/b 0.1).
 TEST(EccentricOverburden, Eq15eIsTheHingeOfTheLowestThreshold) {
     constexpr double kHingeBracket = 1e-7;  // the search's final bracket on h1/h
     // At its minimum the threshold is flat to second order: round-off (1e-16) hides the argmin within sqrt(1e-16) =
     // 1e-8 relative, times the curvature's scale; 1e-5 leaves two orders of room and still fails a wrong |eps| term.
     constexpr double kArgmin = 1e-5;
-    for (double xi : {0.1, 0.5, 2.0})
-        for (double eps : {0.0, 0.5, -0.8}) {
-            const auto threshold = [&](double hinge) {
-                return eq12_threshold(with_eccentricity(make_vssw(4.0, 0.4, hinge, xi), eps));
-            };
-            double lo = 0.3, hi = 0.99;
-            const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
-            while (hi - lo > kHingeBracket) {
-                const double a = hi - phi * (hi - lo), b = lo + phi * (hi - lo);
-                if (threshold(a) < threshold(b)) hi = b;
-                else lo = a;
+    for (double rho : {0.0, 0.1, 0.3})
+        for (double xi : {0.1, 0.5, 2.0})
+            for (double eps : {0.0, 0.5, -0.6}) {
+                const auto threshold = [&](double hinge) {
+                    const VsswGeometry w = with_eccentricity(make_vssw(4.0, 0.4, hinge, xi), eps);
+                    return eq12_threshold(with_corner_radius(w, rho));
+                };
+                double lo = 0.3, hi = 0.96;  // up to h2 = 0.08 m: above r = 0.3 b = 0.06 m (with_corner_radius)
+                const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+                while (hi - lo > kHingeBracket) {
+                    const double a = hi - phi * (hi - lo), b = lo + phi * (hi - lo);
+                    if (threshold(a) < threshold(b)) hi = b;
+                    else lo = a;
+                }
+                EXPECT_NEAR(eq15_optimal_hinge_ratio(xi, eps, rho), 0.5 * (lo + hi), kArgmin)
+                    << "xi " << xi << ", e/b " << eps << ", r/b " << rho;
             }
-            EXPECT_NEAR(eq15_optimal_hinge_ratio(xi, eps), 0.5 * (lo + hi), kArgmin) << "xi " << xi << ", e/b " << eps;
-        }
     EXPECT_EQ(eq15_optimal_hinge_ratio(0.5, 0.0), eq15_optimal_hinge_ratio(0.5));
+    EXPECT_EQ(eq15_optimal_hinge_ratio(0.5, 0.5, 0.0), eq15_optimal_hinge_ratio(0.5, 0.5));
+    EXPECT_EQ(eq15_optimal_hinge_ratio(0.5, 0.0, 0.3), eq15_optimal_hinge_ratio(0.5));  // a centred N: Eq. (15)
     EXPECT_EQ(eq15_optimal_hinge_ratio(0.5, 1.0), 1.0);  // N at the corner: the hinge at the very top, as xi = 0
+    EXPECT_EQ(eq15_optimal_hinge_ratio(0.5, -0.7, 0.3), 1.0);  // N at the rounded flat's end: the same
 }
 
 }  // namespace

@@ -611,32 +611,59 @@ TEST(RunMonitorFold, PastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
     EXPECT_EQ(run(2.5, [&](double) { return 0.5 * alpha1; }), Verdict::go_on);  // inside the unstable equilibrium
 }
 
+// The monitor's verdict on a wall held still in `state` after a 2 s pulse: every 1 ms step from t = 2.5 s for
+// 1.5 kFoldedFor, the first verdict that is not go_on.
+multibody::RunMonitor::Verdict held_after_shaking(const multibody::WallScene& scene,
+                                                  const multibody::WallState& state) {
+    using Verdict = multibody::RunMonitor::Verdict;
+    const double dt = 1e-3;
+    multibody::Excitation ex;
+    ex.horizontal = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, 1.0, 0.0}, "pulse");
+    ex.t_end = 5.0;
+    multibody::RunMonitor monitor("test", scene, ex, dt, kRotationsOnly);
+    const int window = static_cast<int>(1.5 * multibody::kFoldedFor / dt);
+    for (int i = 0; i < window; ++i)
+        if (const Verdict v = monitor.check(2.5 + i * dt, state); v != Verdict::go_on) return v;
+    return Verdict::go_on;
+}
+
+// With N off-centre the two sides' unstable equilibria differ (Table 1 #7, xi 0.5, e/b -1: 0.0614 rad on side +1,
+// 0.0818 on side -1): a wall still at -0.07 rad after the shaking is inside its side's and stands. Before, the monitor
+// took side +1's alone and called it overturned. Past the larger one it has folded.
+TEST(RunMonitorFold, AnEccentricWallStandingOnTheSideOfTheLargerEquilibriumIsNotFolded) {
+    const multibody::WallScene scene =
+        multibody::WallScene::of(with_eccentricity(make_vssw(4.88, 0.200, 0.50, 0.5), -1.0));
+    const auto model = make_vssw_model(*scene.vssw, Kinematics::exact);
+    const double standing = -0.07;
+    ASSERT_LT(model->potential(standing), model->potential(1.01 * standing));  // still rising there: gravity restores
+    ASSERT_GT(std::abs(standing), model->unstable_equilibrium(1));             // past the other side's equilibrium
+    using Verdict = multibody::RunMonitor::Verdict;
+    const auto verdict = [&](double theta) {
+        return held_after_shaking(scene, multibody::still_state_at(scene, theta));
+    };
+    EXPECT_EQ(verdict(standing), Verdict::go_on);
+    ASSERT_LT(0.085, model->collapse_angle());
+    EXPECT_EQ(verdict(-0.085), Verdict::overturned);  // past both sides' equilibria, short of the collapse
+}
+
 // A wall whose upper block fell off the roller has collapsed though its lower block stands again (Simbody's Fig. 6
 // wall under LA Dam at 0.7 g: theta2 2.2 rad, theta1 back near 0): RunMonitor says overturned once the upper block
 // has stayed past the mechanism's theta2 at the unstable equilibrium for kFoldedFor after the shaking, and never
 // calls such a wall at rest. A standing wall's theta2 (the mechanism's, inside that range) does not.
 TEST(RunMonitorFold, AnUpperBlockThatFellIsOverturnedEvenWithTheLowerBlockUpright) {
     const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
-    const double dt = 1e-3;
     const double unstable2 = multibody::mechanism_theta2(scene, multibody::unstable_equilibrium(scene));
     ASSERT_TRUE(std::isfinite(unstable2));
     // The mechanism's theta2 at the unstable equilibrium lies between a rocking wall's (at half its angle) and a
     // fallen block's.
     ASSERT_GT(unstable2, std::abs(*eq2_theta2_exact(*scene.vssw, 0.5 * scene.alpha())));
     ASSERT_LT(unstable2, 2.0);
-    multibody::Excitation ex;
-    ex.horizontal = GroundMotion::sampled({0.0, 1.0, 2.0}, {0.0, 1.0, 0.0}, "pulse");
-    ex.t_end = 5.0;
     using Verdict = multibody::RunMonitor::Verdict;
-    // From t = 2.5 s (after the shaking): theta1 still at 0, theta2 as given, every step for 1.5 kFoldedFor.
+    // After the shaking: theta1 still at 0, theta2 as given.
     const auto verdict = [&](double theta2) {
-        multibody::RunMonitor monitor("test", scene, ex, dt, kRotationsOnly);
         multibody::WallState state = multibody::still_state_at(scene, 0.0);
         state.upper.angle = theta2;
-        const int window = static_cast<int>(1.5 * multibody::kFoldedFor / dt);
-        for (int i = 0; i < window; ++i)
-            if (const Verdict v = monitor.check(2.5 + i * dt, state); v != Verdict::go_on) return v;
-        return Verdict::go_on;
+        return held_after_shaking(scene, state);
     };
     EXPECT_EQ(verdict(2.2), Verdict::overturned);   // the block lying past the guide
     EXPECT_EQ(verdict(-2.2), Verdict::overturned);  // on the other side

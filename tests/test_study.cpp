@@ -442,6 +442,45 @@ TEST(StudyMeasure, DiaphragmOnAParapetIsRefused) {
                  InputError);
 }
 
+// threshold_ratio_to_parapet divides the VSSW's threshold by that of the parapet of its size with N at the same e/b and
+// the same rounded corners, as `vssw wall` does (Eq. 12r / 17r); before, by the sharp centred Eq. (17): 37 % low at
+// e/b 0.5, r/b 0.2. By hand, masses per unit depth over 4 b rho_m (m_i ~ h_i): h 2, h1 1.4, h2 0.6, k = 7/3, m1 + m2
+// = 2, N = 1 (xi 0.5), the lower sides: VSSW/g = (b/h1) [(1 - r)(m1 + m2 (2 + k) + N (2 + k)) - N k |e|] / 2,
+// parapet/g = (b/h) [(1 - r)(1 + xi) - xi |e|].
+TEST(StudyMeasure, ThresholdRatioToParapetIsOfTheSameSizedParapetWithNAndCornersAsTheWall) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_ratio_to_parapet\"]\n[wall]\nheight = 4\nthickness = 0.4\n"
+                                  "hinge = 0.7\nxi = 0.5\noverburden_eccentricity = [0.0, 0.5]\n"
+                                  "corner_radius = [0.0, 0.2]\n[excitation]\nkind = \"closed-form\"\ntheta0 = 0.5\n"));
+    const ResultsTable t = run_into(grid, dir / "out");
+    const double h = 2.0, h1 = 1.4, k = 1.4 / 0.6, xi = 0.5;
+    for (const char* e : {"0", "0.5"})
+        for (const char* r : {"0", "0.2"}) {
+            const double eps = std::stod(e), rho = std::stod(r);
+            const double vssw = ((1.0 - rho) * (1.4 + 0.6 * (2.0 + k) + 1.0 * (2.0 + k)) - k * eps) / (2.0 * h1);
+            const double parapet = ((1.0 - rho) * (1.0 + xi) - xi * eps) / h;
+            EXPECT_NEAR(value_of(t, "threshold_ratio_to_parapet", {{"overburden_eccentricity", e}, {"corner_radius", r}}),
+                        vssw / parapet, kRoundoff * vssw / parapet)
+                << "e/b " << e << ", r/b " << r;
+        }
+}
+
+// A wall N tips over at rest (N outside the rounded pivot's flat, Eq. 17r <= 0 past |e/b| 0.875 here:
+// RoundedCorners.NOutsideTheRoundedPivotThatTipsTheWallAtRestIsRefused) is refused with the study, naming the values;
+// before, its negative threshold was recorded as an ok row.
+TEST(StudyMeasure, AWallThatCannotStandIsRefused) {
+    const TempDir dir;
+    try {
+        (void)Grid(study_of(dir, "metrics = [\"threshold_g\"]\n[wall]\nmodel = \"parapet\"\nheight = 1.2\n"
+                                 "thickness = 0.2\nxi = 4\noverburden_eccentricity = [0.0, 1.0]\ncorner_radius = 0.3\n"
+                                 "[excitation]\nkind = \"threshold\"\n"));
+        ADD_FAILURE() << "not refused";
+    } catch (const InputError& e) {
+        for (const char* word : {"cannot stand", "e/b 1", "xi 4", "r/b 0.3"})
+            EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
+    }
+}
+
 // corner_radius is a wall axis: an engine that rounds its blocks lifts the parapet at Eq. (17r), (1 - r/b) times the
 // sharp threshold (1 + xi) b/h; at r/b 0.2 the sharp value would be 25 % off, and r/b 0 must give it.
 TEST(StudyMeasure, CornerRadiusIsAWallAxis) {

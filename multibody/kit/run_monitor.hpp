@@ -8,6 +8,8 @@
 // Fig. 6 wall under Rinaldi at 0.55 g: MuJoCo, Siconos and Simbody alike, never still). No standing wall can stay past
 // the unstable equilibrium (RockingModel::unstable_equilibrium) once the ground is still: there gravity turns it
 // outward, and only an inward speed brings it back, at once. Past it for kFoldedFor after the shaking: overturned.
+// With N off-centre the two sides' equilibria differ; the larger is taken, so a wall standing on the side of the
+// larger one is never called overturned.
 // The same holds for the upper block (theta2, where the adapter gives it): a wall whose upper block fell off the roller
 // and turned past the mechanism's theta2 at that equilibrium has collapsed even with its lower block upright again
 // (Simbody's Fig. 6 wall under LA Dam at 0.7 g: theta2 2.2 rad, the top 2.4 m down, theta1 back near 0). Such a wall is
