@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 
 namespace vssw {
@@ -30,6 +31,11 @@ std::unique_ptr<RockingModel> analytic_model(const Wall& wall, Kinematics kinema
     require_one_description(wall);
     if (wall.vssw) return make_vssw_model(*wall.vssw, kinematics);
     return make_parapet_model(*wall.parapet);
+}
+
+double closed_form_threshold(const Wall& wall) {
+    require_one_description(wall);
+    return wall.vssw ? eq12_threshold(*wall.vssw) : eq17_parapet_threshold(*wall.parapet);
 }
 
 }  // namespace vssw

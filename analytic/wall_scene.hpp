@@ -48,4 +48,8 @@ void require_model_follows_top(const Wall& wall, const GroundMotion& ground);
 // one kinematics; k is ignored). Throws InputError unless exactly one description is set.
 std::unique_ptr<RockingModel> analytic_model(const Wall& wall, Kinematics kinematics);
 
+// The wall's threshold acceleration at rest in closed form [m/s^2]: Eq. (12) for a VSSW, Eq. (17) for a parapet, with
+// N off the centre (12e, 17e) and rounded corners (12r, 17r) as the wall has them; the lower of the two sides.
+double closed_form_threshold(const Wall& wall);
+
 }  // namespace vssw

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "analytic/closed_forms.hpp"
 
 namespace vssw::compare {
 namespace {
@@ -18,10 +17,6 @@ double spread(const std::vector<double>& values) {
     if (measured.size() < 2) return kNaN;
     const auto [lo, hi] = std::minmax_element(measured.begin(), measured.end());
     return (*hi - *lo) / *lo;
-}
-
-double closed_form_threshold(const multibody::WallScene& scene) {
-    return scene.vssw ? eq12_threshold(*scene.vssw) : eq17_parapet_threshold(*scene.parapet);
 }
 
 }  // namespace

@@ -8,7 +8,6 @@
 
 #include <fmt/format.h>
 
-#include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
@@ -63,10 +62,6 @@ Setup free_vibration(WallScene scene, const EngineSettings& defaults, bool quick
     s.overturn_as_analytic = true;
     s.period_tol = kPeriodTol;
     return s;
-}
-
-double rest_threshold(const WallScene& scene) {
-    return scene.is_vssw() ? eq12_threshold(*scene.vssw) : eq17_parapet_threshold(*scene.parapet);
 }
 
 // The contact knobs at the soft and the stiff end of their range: each engine's CONTACT_SOFT and CONTACT_STIFF facts
@@ -135,7 +130,7 @@ std::vector<Case> make_cases() {
                      sign < 0,
                      [sign](const std::string& engine, const EngineSettings& d, bool) {
                          Setup s = start(fig6_vssw(), sampled(d));
-                         const double a = rest_threshold(s.scene) * (1.0 + sign * 1e-9);
+                         const double a = closed_form_threshold(s.scene) * (1.0 + sign * 1e-9);
                          const double hold = compare::threshold_hold_time(s.scene);
                          s.excitation.horizontal = compare::ramp_and_hold(a, 0.2, hold);
                          s.excitation.t_end = 0.2 + hold;
@@ -174,7 +169,7 @@ std::vector<Case> make_cases() {
                  "past 1e-2 alpha (below its threshold), no failure over 3e6 steps", false,
                  [](const std::string&, const EngineSettings& d, bool) {
                      Setup s = start(fig6_vssw(), sampled(d));
-                     s.excitation.horizontal = harmonic(0.5 * rest_threshold(s.scene), 0.3, 600.0);
+                     s.excitation.horizontal = harmonic(0.5 * closed_form_threshold(s.scene), 0.3, 600.0);
                      s.excitation.t_end = 600.0;
                      s.max_theta = kLiftAngle * s.scene.alpha();
                      return s;
