@@ -181,6 +181,19 @@ def test_compare_under_a_ground_motion_refuses_a_release_and_names_python_parame
     assert "(pga)" in str(raised.value) and "--pga" not in str(raised.value)
 
 
+# Defaults are numbers beside their numeric ranges (they were strings), None where a setting has none, and each lies
+# in its own range: a default outside it would be refused by the engine it describes.
+def test_engine_settings_defaults_are_numbers_within_their_ranges():
+    for engine in vssw.engines():
+        for s in vssw.engine_settings(engine):
+            assert s["default"] is None or isinstance(s["default"], float), (engine, s)
+            if s["default"] is not None:
+                assert s["min"] <= s["default"] <= s["max"], (engine, s)
+    ode = {s["name"]: s for s in vssw.engine_settings("ode")}
+    assert ode["dt"]["default"] == 1e-3  # the step docs/engines.md "ODE" measured its targets at
+    assert ode["iterations"]["default"] is None  # ODE's direct solver takes none
+
+
 def test_engine_settings_reach_the_engine():
     default = vssw.simulate("ode", **FIG6, theta0=0.5, t_end=0.3)
     loose = vssw.simulate("ode", **FIG6, theta0=0.5, t_end=0.3, settings={"erp": 0.5})

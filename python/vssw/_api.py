@@ -388,11 +388,23 @@ def engines():
     return list(_core.available_engines())
 
 
+def _default_number(text):
+    """A setting's default as the library writes it ("0.001", "inf", "none") as a number, None where it has none."""
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
 def engine_settings(engine):
-    """Every setting of one backend: a list of {name, default, unit, meaning, min, max} (min and max: the range a
-    value may take, both included; -inf/inf when unbounded). dt and iterations are given as simulate's dt and
-    iterations, every other one in settings={name: value}."""
-    return _core.engine_settings(_word("engine", engine, None))
+    """Every setting of one backend: a list of {name, default, unit, meaning, min, max}. default is a float, or None
+    where the setting has no default (it is off unless given); min and max are the range a value may take, both
+    included (-inf/inf when unbounded). dt and iterations are given as simulate's dt and iterations, every other one
+    in settings={name: value}."""
+    settings = _core.engine_settings(_word("engine", engine, None))
+    for s in settings:
+        s["default"] = _default_number(s["default"])
+    return settings
 
 
 def data_dir():
