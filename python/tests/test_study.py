@@ -98,15 +98,19 @@ def test_the_typed_study_gives_the_programs_results_and_its_folder(cli, tmp_path
     assert calls and calls[-1][0] == calls[-1][1], "the progress callback saw the last task"
 
 
-def test_the_typed_study_takes_a_dict_into_a_kept_folder():
-    result = vssw.study(FREE_STUDY, threads=1)
-    try:
-        assert len(result.results) == FREE_ROWS and (result.results["status"] == "ok").all()
-        assert (result.folder / "results.csv").is_file()
-    finally:
-        import shutil
+# Without `out` nothing is left behind: the study runs in a temporary folder that is removed once its results are read
+# (every call used to leave one in the temporary directory), and the same for a failed study.
+def test_the_typed_study_without_out_leaves_no_folder(tmp_path, monkeypatch):
+    import tempfile
 
-        shutil.rmtree(result.folder)
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    result = vssw.study(FREE_STUDY, threads=1)
+    assert len(result.results) == FREE_ROWS and (result.results["status"] == "ok").all()
+    assert result.folder is None
+    assert list(tmp_path.iterdir()) == []
+    with pytest.raises(vssw.InputError):
+        vssw.study({**FREE_STUDY, "metrics": ["no_such_metric"]}, threads=1)
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_the_typed_report_gives_its_csv_files_as_dataframes(tmp_path):

@@ -1,5 +1,6 @@
 """The typed API over the library (docs/guide/python.md): simulate, compare, study, report, engines, engine_settings."""
 
+import contextlib
 import decimal
 import json
 import math
@@ -419,21 +420,18 @@ def _read_csv(path):
     return pd.read_csv(path, float_precision="round_trip")
 
 
+@contextlib.contextmanager
 def _folder(out, prefix):
+    """The command's folder: `out` as given, or a temporary one removed when the call ends, whether it succeeded (what
+    it holds has been read into the result by then) or failed: no folder is left behind unless one is asked for."""
     if out is not None:
-        return pathlib.Path(os.fspath(out))
-    return pathlib.Path(tempfile.mkdtemp(prefix=prefix))
-
-
-def _run_into(folder, out, args, progress, description):
-    """_run_command writing into `folder`; a temporary folder made for it (out None) is removed when the run fails,
-    so that a failed call leaves nothing behind."""
+        yield pathlib.Path(os.fspath(out))
+        return
+    folder = pathlib.Path(tempfile.mkdtemp(prefix=prefix))
     try:
-        return _run_command(args, progress, description)
-    except BaseException:
-        if out is None:
-            shutil.rmtree(folder, ignore_errors=True)
-        raise
+        yield folder
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def _run_command(args, progress, description):
@@ -450,8 +448,8 @@ def study(file, out=None, *, threads=None, shard=None, resume=False, force=False
 
     file: a study file (.toml or .json) or a dict of its keys (a relative record `file` in it is read from the
         current directory).
-    out: the study folder to write (created if missing). None: a new temporary folder, kept (its path is
-        StudyResult.folder), without plots unless plots=True.
+    out: the study folder to write (created if missing). None: a temporary folder, removed once its results are read
+        (StudyResult.folder is then None), without plots unless plots=True.
     threads: worker threads (default: the available cores). shard: "K/N", run every N-th case from the K-th.
     resume: finish an interrupted study in `out`. force: run a study of more than 10000 tasks. strict: raise
         SimulationError when any row failed. plots: write the gnuplot plots (default: with `out` given).
@@ -460,16 +458,16 @@ def study(file, out=None, *, threads=None, shard=None, resume=False, force=False
         progress(done, total, what).
     Returns a vssw.StudyResult: results (results.csv as a pandas DataFrame), folder, summary (the JSON summary)."""
     _progress(progress)
-    folder = _folder(out, "vssw-study-")
-    with tempfile.TemporaryDirectory(prefix="vssw-study-file-") as scratch:
+    with _folder(out, "vssw-study-") as folder, tempfile.TemporaryDirectory(prefix="vssw-study-file-") as scratch:
         if isinstance(file, dict):
             file = cli._study_file_of(file, scratch)
         options = dict(threads=threads, shard=shard, resume=resume, force=force, strict=strict,
                        no_plots=not (plots if plots is not None else out is not None), gnuplot=gnuplot,
                        run_budget=run_budget)
         args = ["study", cli._text("file", os.fspath(file)), f"--out={folder}", *cli._arguments(options), "--json"]
-        summary = json.loads(_run_into(folder, out, args, progress, "study"))
-    return StudyResult(results=_read_csv(folder / "results.csv"), folder=folder, summary=summary)
+        summary = json.loads(_run_command(args, progress, "study"))
+        return StudyResult(results=_read_csv(folder / "results.csv"), folder=folder if out is not None else None,
+                           summary=summary)
 
 
 def _joined(name, names):
@@ -482,8 +480,8 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
     """Runs the validation suite and writes its report (`vssw report`): every case for the analytic model and each
     engine, the metrics against the references and targets, the plots.
 
-    out: the report folder (created if missing). None: a new temporary folder, kept (ReportResult.folder), without
-        plots unless plots=True.
+    out: the report folder (created if missing). None: a temporary folder, removed once its tables are read
+        (ReportResult.folder, markdown and html are then None), without plots unless plots=True.
     suite: "default", "full" or a suite file. engines: a list of engines (default every engine of this build but
         simbody-rigid). cases: only these case ids (a list). threads: worker threads (default the available cores).
     earthquake: "default", "none" or a study file of kind "ensemble" (default: "default", "none" with cases).
@@ -496,17 +494,19 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
     import pandas as pd
 
     _progress(progress)
-    folder = _folder(out, "vssw-report-")
     options = dict(suite=suite, engines=_joined("engines", engines), cases=_joined("cases", cases),
                    threads=threads, no_plots=not (plots if plots is not None else out is not None),
                    earthquake=earthquake, bench=bench, gnuplot=gnuplot, data=data, run_budget=run_budget)
-    summary = _run_into(folder, out, ["report", f"--out={folder}", *cli._arguments(options)], progress, "report")
-    with open(folder / "results.json", encoding="utf-8") as f:
-        results = json.load(f)
-    return ReportResult(metrics=_read_csv(folder / "metrics.csv"), failures=_read_csv(folder / "failures.csv"),
-                        rows=pd.DataFrame(results["rows"]), folder=folder, markdown=folder / "report.md",
-                        html=folder / "report.html", summary=summary, matrix=pd.DataFrame(results["matrix"]),
-                        earthquake=_earthquake_table(results["earthquake"]))
+    with _folder(out, "vssw-report-") as folder:
+        summary = _run_command(["report", f"--out={folder}", *cli._arguments(options)], progress, "report")
+        with open(folder / "results.json", encoding="utf-8") as f:
+            results = json.load(f)
+        kept = folder if out is not None else None
+        return ReportResult(metrics=_read_csv(folder / "metrics.csv"), failures=_read_csv(folder / "failures.csv"),
+                            rows=pd.DataFrame(results["rows"]), folder=kept,
+                            markdown=kept / "report.md" if kept else None, html=kept / "report.html" if kept else None,
+                            summary=summary, matrix=pd.DataFrame(results["matrix"]),
+                            earthquake=_earthquake_table(results["earthquake"]))
 
 
 def _earthquake_table(part):

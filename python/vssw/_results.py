@@ -260,10 +260,11 @@ def response_comparisons_from(d):
 @dataclasses.dataclass(frozen=True)
 class StudyResult:
     """A study's outputs (vssw.study): results (results.csv as a DataFrame, read to the last bit), folder (the study
-    folder: results.csv, results.json, manifest.json, study.md, plots/), summary (the command's JSON summary)."""
+    folder: results.csv, results.json, manifest.json, study.md, plots/; None when no `out` was given, the temporary
+    folder removed), summary (the command's JSON summary)."""
 
     results: "object"
-    folder: pathlib.Path
+    folder: "pathlib.Path | None"
     summary: dict
 
     def __repr__(self):
@@ -274,7 +275,8 @@ class StudyResult:
 class ReportResult:
     """A validation report's outputs (vssw.report): metrics (metrics.csv: case_id, engine, metric, unit, reference,
     analytic, engine_value, rel_error), failures (failures.csv: case_id, engine, message), rows (results.json's rows,
-    with target and within_target, as a DataFrame), folder, markdown (report.md), html (report.html), summary (the
+    with target and within_target, as a DataFrame), folder, markdown (report.md), html (report.html) (these three
+    None when no `out` was given, the temporary folder removed), summary (the
     command's printed summary, one line per engine), matrix (the engine x metric matrix at a glance: engine, metric,
     worst_rel_error, case_id, target, pass, ...), earthquake (one row per engine under the record ensemble:
     overturning_agreement with its lo, hi, runs and pass; fragility_median_ratio with its lo, hi, pass and note;
@@ -283,9 +285,9 @@ class ReportResult:
     metrics: "object"
     failures: "object"
     rows: "object"
-    folder: pathlib.Path
-    markdown: pathlib.Path
-    html: pathlib.Path
+    folder: "pathlib.Path | None"
+    markdown: "pathlib.Path | None"
+    html: "pathlib.Path | None"
     summary: str
     matrix: "object" = None
     earthquake: "object" = None
