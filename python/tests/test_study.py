@@ -164,3 +164,15 @@ def test_a_dict_chooses_the_analytic_models_assumption_set():
     default = vssw.cli.study(base, threads=1)
     assert default[columns].drop_duplicates().values.tolist() == [["exact", "whole-mechanism", "unilateral"]]
     assert paper["value"].iloc[0] != default["value"].iloc[0], "the two sets' periods differ"
+
+
+# A bad key or value in a study given as a dict is named in the dict, not against the temporary file it was written to
+# (the message said "study file /tmp/vssw-study-file-.../study.json: ..."), by the typed and the command's function.
+@pytest.mark.parametrize("run", [vssw.study, vssw.cli.study])
+def test_a_bad_study_dict_is_named_as_a_dict(run):
+    bad = {**FREE_STUDY, "wall": {**FREE_STUDY["wall"], "thickness": -0.4}}
+    with pytest.raises(vssw.InputError) as raised:
+        run(bad, threads=1)
+    message = str(raised.value)
+    assert message.startswith("study dict: wall.thickness: ") and "-0.4" in message, message
+    assert "study.json" not in message and "/tmp" not in message, message

@@ -459,13 +459,15 @@ def study(file, out=None, *, threads=None, shard=None, resume=False, force=False
     Returns a vssw.StudyResult: results (results.csv as a pandas DataFrame), folder, summary (the JSON summary)."""
     _progress(progress)
     with _folder(out, "vssw-study-") as folder, tempfile.TemporaryDirectory(prefix="vssw-study-file-") as scratch:
-        if isinstance(file, dict):
+        from_dict = isinstance(file, dict)
+        if from_dict:
             file = cli._study_file_of(file, scratch)
         options = dict(threads=threads, shard=shard, resume=resume, force=force, strict=strict,
                        no_plots=not (plots if plots is not None else out is not None), gnuplot=gnuplot,
                        run_budget=run_budget)
         args = ["study", cli._text("file", os.fspath(file)), f"--out={folder}", *cli._arguments(options), "--json"]
-        summary = json.loads(_run_command(args, progress, "study"))
+        with cli._errors_name_the_dict(file) if from_dict else contextlib.nullcontext():
+            summary = json.loads(_run_command(args, progress, "study"))
         return StudyResult(results=_read_csv(folder / "results.csv"), folder=folder if out is not None else None,
                            summary=summary)
 

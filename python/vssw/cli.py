@@ -25,6 +25,7 @@ a failed simulation (3) SimulationError, a RuntimeError; a bound out in `check` 
 from vssw.Error and keep the exit code, the program's stderr and, where the command printed one, its JSON (result).
 """
 
+import contextlib as _contextlib
 import decimal as _decimal
 import json as _json
 import math as _math
@@ -300,6 +301,20 @@ def _study_file_of(spec, folder):
     return path
 
 
+@_contextlib.contextmanager
+def _errors_name_the_dict(path):
+    """An InputError about a study given as a dict (written to `path`, a temporary file) names the dict, not the file:
+    "study dict: wall.thickness: ..." rather than "study file /tmp/.../study.json: wall.thickness: ..."."""
+    try:
+        yield
+    except InputError as e:
+        message = str(e.args[0]) if e.args else str(e)
+        renamed = message.replace(f"study file {path}", "study dict").replace(str(path), "the study dict")
+        if renamed == message:
+            raise
+        raise InputError(renamed, e.code, e.stderr, e.result) from None
+
+
 def study(file, out=None, **options):
     """`vssw study`: `file` is a study file (.toml or .json, README "Studies") or a dict of its keys (a relative
     record `file` in it is read from the current directory). Writes the study folder into `out` (plots and prose
@@ -309,12 +324,14 @@ def study(file, out=None, **options):
     dicts (the same columns; empty values None)."""
     _reserved(options, ["json"])
     with _tempfile.TemporaryDirectory(prefix="vssw-study-") as scratch:
-        if isinstance(file, dict):
+        from_dict = isinstance(file, dict)
+        if from_dict:
             file = _study_file_of(file, scratch)
         folder = _os.fspath(out) if out is not None else _os.path.join(scratch, "out")
         if out is None:
             options.setdefault("no_plots", True)
-        summary = run("study", file, out=folder, **options)
+        with _errors_name_the_dict(file) if from_dict else _contextlib.nullcontext():
+            summary = run("study", file, out=folder, **options)
         pandas = _pandas()
         if pandas is not None:
             # round_trip: pandas' default parser can be 1 ulp off the 17 digits written (measured on periods).
