@@ -29,6 +29,7 @@ def test_the_notebook_runs_and_prints_its_committed_outputs(monkeypatch):
 
     # The kernel imports the module this test imports (PYTHONPATH may be relative to another folder than the kernel's).
     monkeypatch.setenv("PYTHONPATH", str(pathlib.Path(vssw.__file__).resolve().parents[1]))
+    monkeypatch.setenv("PYDEVD_DISABLE_FILE_VALIDATION", "1")  # the kernel's debugger: no warning per start
     monkeypatch.chdir(REPO)
     notebook = nbformat.read(NOTEBOOK, as_version=4)
     committed = printed(json.loads(NOTEBOOK.read_text(encoding="utf-8")))

@@ -124,7 +124,8 @@ def test_the_drawn_blocks_stand_where_the_kinematics_put_them(release):
     # lower block turned 1 % too far, the upper block turned the wrong way, the upper block shifted off the hinge.
     k = swung[0]
     i = anim.sample_indices[k]
-    wrongs = {"pivot": dict(theta1=-release.theta1, theta2=-release.theta2), "theta1": dict(theta1=1.01 * release.theta1),
+    wrongs = {"pivot": dict(theta1=-release.theta1, theta2=-release.theta2),
+              "theta1": dict(theta1=1.01 * release.theta1),
               "roller line": dict(theta2=-release.theta2), "top rise": dict(theta2=-release.theta2)}
     for check, arrays in wrongs.items():
         errors = kinematics_errors(*drawn(dataclasses.replace(release, **arrays).animate(fps=10), k), release, i)

@@ -1,5 +1,6 @@
 """The wall drawn from the model's own geometry: where the blocks' corners, the pivot, the hinge, the roller corner and
-N's point are at (theta1, theta2), and matplotlib artists that draw them (Simulation.animate, scripts/draw_wall_sketch.py).
+N's point are at (theta1, theta2), and matplotlib artists that draw them (Simulation.animate and
+scripts/draw_wall_sketch.py).
 
 The kinematics are those of analytic/two_block.hpp, written in one physical frame: x horizontal along the side the
 wall tips to when theta1 > 0, y up, the origin at the base's centre at rest, both rotations clockwise positive. The
