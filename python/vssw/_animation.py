@@ -103,6 +103,9 @@ def animate_simulation(sim, path=None, fps=25, speed=1.0, t_start=None, t_stop=N
     target = None if path is None else pathlib.Path(os.fspath(path))
     writer = None if target is None else _writer(target, fps)
     indices = frame_samples(sim, fps, speed, t_start, t_stop)
+    if sim.geometry["model"] == "vssw" and np.isnan(sim.theta2[indices]).any():
+        raise InputError("theta2 is NaN in this run's samples (a run that sampled theta1 alone): the upper block "
+                         "cannot be drawn", _EXIT_BAD_INPUT)
     fig, ax = plt.subplots(figsize=(4.0, 6.0), layout="constrained")
     xlim, ylim = _limits(sim, indices)
     ax.set_xlim(*xlim)

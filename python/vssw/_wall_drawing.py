@@ -31,13 +31,17 @@ def _rot(t, v):
 
 @dataclasses.dataclass(frozen=True)
 class WallPose:
-    """Where the wall is at one (theta1, theta2), in metres: lower and upper (each block's four corners, counter-
-    clockwise from the base corner at -x at rest; upper None for a parapet), pivot (the base corner it turns about),
-    hinge (None for a parapet), roller_corner (the top corner the roller holds: the pivot's side), load_point (where N
-    acts on the top face), side (+1 while theta1 >= 0, else -1)."""
+    """Where the wall is at one (theta1, theta2), in metres: lower and upper (each block's four nominal corners,
+    counter-clockwise from the base corner at -x at rest; upper None for a parapet), lower_outline and upper_outline
+    (the blocks' outlines as drawn: the corners, or with rounded corners their arcs), pivot (where the lower block
+    touches the ground), hinge (where the blocks touch; None for a parapet), roller_corner (the nominal top corner
+    the roller holds: the pivot's side), load_point (where N acts on the top face), side (+1 while theta1 >= 0, else
+    -1)."""
 
     lower: np.ndarray
     upper: Optional[np.ndarray]
+    lower_outline: np.ndarray
+    upper_outline: Optional[np.ndarray]
     pivot: np.ndarray
     hinge: Optional[np.ndarray]
     roller_corner: np.ndarray
@@ -45,40 +49,72 @@ class WallPose:
     side: int
 
 
+_ARC_POINTS = 8  # points per rounded corner's quarter circle in a drawn outline
+
+
 def require_drawable(geometry):
-    """InputError unless the geometry is one these drawings are exact for: sharp blocks (rounded blocks roll on their
-    arcs, docs/model/analytic-core.md "Rounded corners", which is not drawn)."""
+    """InputError unless the Simulation carries the wall's geometry."""
     if geometry is None:
         raise InputError("this Simulation has no geometry to draw (made by an older vssw)", _EXIT_BAD_INPUT)
-    if geometry["corner_radius"] != 0.0:
-        raise InputError(f"corner_radius {geometry['corner_radius']:g}: the drawing shows sharp blocks turning about "
-                         "their corners; a wall with rounded corners rolls on its arcs and is not drawn",
-                         _EXIT_BAD_INPUT)
+
+
+def _rectangle(b, y0, y1):
+    return np.array([[-b, y0], [b, y0], [b, y1], [-b, y1]])
+
+
+def _outline(b, y0, y1, r):
+    """A block's outline at rest, counter-clockwise from its lower -x corner: the four corners, or each corner's arc
+    of radius r."""
+    if r == 0.0:
+        return _rectangle(b, y0, y1)
+    centres = [(-b + r, y0 + r), (b - r, y0 + r), (b - r, y1 - r), (-b + r, y1 - r)]
+    arcs = []
+    for k, centre in enumerate(centres):  # a quarter turn each, from 180 degrees at the lower -x corner
+        a = np.linspace(np.pi * (1 + k / 2), np.pi * (1.5 + k / 2), _ARC_POINTS)
+        arcs.append(np.array(centre) + r * np.stack([np.cos(a), np.sin(a)], axis=-1))
+    return np.vstack(arcs)
 
 
 def pose(geometry, theta1, theta2):
-    """The wall's corners at (theta1, theta2) [rad] (a parapet's theta2 is ignored): a WallPose."""
+    """The wall at (theta1, theta2) [rad] (a parapet's theta2 is ignored): a WallPose.
+
+    With rounded corners (r = corner_radius b > 0, docs/model/analytic-core.md "Rounded corners") the lower block
+    rolls without slip on its base arc (the arc's centre, (side (b - r), r) at rest, moves r theta1 along the ground)
+    and the upper block's bottom arc rolls on the lower block's top arc (equal circles: their line of centres turns by
+    the mean of the two rotations), as the engines place them (multibody/kit/rounded_corners.hpp). With r = 0 the arcs
+    are the corners and this is the pivoting of the header comment."""
     b, h1, h2 = geometry["b"], geometry["h1"], geometry["h2"]
+    r = geometry["corner_radius"] * b
     e = geometry["overburden_eccentricity"] * b
     side = 1 if theta1 >= 0 else -1
-    pivot = np.array([side * b, 0.0])
+    inner = b - r
+    base_rest = np.array([side * inner, r])  # the base arc's centre (the pivot itself when r = 0)
+    base = base_rest + [r * theta1, 0.0]
+
+    def on_lower(x):
+        return base + _rot(theta1, np.asarray(x) - base_rest)
+
+    top = 2 * h1 if geometry["model"] == "parapet" else 2 * (h1 + h2)
+    load_rest = np.array([e, top])
     if geometry["model"] == "parapet":
-        rest = np.array([[-b, 0.0], [b, 0.0], [b, 2 * h1], [-b, 2 * h1]])
-        lower = pivot + _rot(theta1, rest - pivot)
-        return WallPose(lower=lower, upper=None, pivot=pivot, hinge=None, roller_corner=lower[2 if side > 0 else 3],
-                        load_point=pivot + _rot(theta1, np.array([e, 2 * h1]) - pivot), side=side)
-    hinge_rest = np.array([-side * b, 2 * h1])
-    lower_rest = np.array([[-b, 0.0], [b, 0.0], [b, 2 * h1], [-b, 2 * h1]])
-    upper_rest = np.array([[-b, 2 * h1], [b, 2 * h1], [b, 2 * (h1 + h2)], [-b, 2 * (h1 + h2)]])
-    hinge = pivot + _rot(theta1, hinge_rest - pivot)
+        lower = on_lower(_rectangle(b, 0.0, 2 * h1))
+        return WallPose(lower=lower, upper=None, lower_outline=on_lower(_outline(b, 0.0, 2 * h1, r)),
+                        upper_outline=None, pivot=np.array([base[0], 0.0]), hinge=None,
+                        roller_corner=lower[2 if side > 0 else 3], load_point=on_lower(load_rest), side=side)
+    hinge_lower_rest = np.array([-side * inner, 2 * h1 - r])  # the lower block's top arc's centre
+    hinge_upper_rest = np.array([-side * inner, 2 * h1 + r])  # the upper block's bottom arc's centre
+    hinge_lower = on_lower(hinge_lower_rest)
+    hinge_upper = hinge_lower + _rot(0.5 * (theta1 + theta2), np.array([0.0, 2 * r]))
 
-    def upper_point(x):
-        return hinge + _rot(theta2, np.asarray(x) - hinge_rest)
+    def on_upper(x):
+        return hinge_upper + _rot(theta2, np.asarray(x) - hinge_upper_rest)
 
-    upper = upper_point(upper_rest)
-    return WallPose(lower=pivot + _rot(theta1, lower_rest - pivot), upper=upper, pivot=pivot, hinge=hinge,
-                    roller_corner=upper[2 if side > 0 else 3],
-                    load_point=upper_point(np.array([e, 2 * (h1 + h2)])), side=side)
+    upper = on_upper(_rectangle(b, 2 * h1, top))
+    return WallPose(lower=on_lower(_rectangle(b, 0.0, 2 * h1)), upper=upper,
+                    lower_outline=on_lower(_outline(b, 0.0, 2 * h1, r)),
+                    upper_outline=on_upper(_outline(b, 2 * h1, top, r)),
+                    pivot=np.array([base[0], 0.0]), hinge=0.5 * (hinge_lower + hinge_upper),
+                    roller_corner=upper[2 if side > 0 else 3], load_point=on_upper(load_rest), side=side)
 
 
 class WallArtists:
@@ -125,9 +161,9 @@ class WallArtists:
     def update(self, theta1, theta2):
         """Move every artist to (theta1, theta2); returns the WallPose drawn and the artists (for blitting)."""
         p = pose(self.geometry, theta1, theta2)
-        self.blocks[0].set_xy(p.lower)
+        self.blocks[0].set_xy(p.lower_outline)
         if p.upper is not None:
-            self.blocks[1].set_xy(p.upper)
+            self.blocks[1].set_xy(p.upper_outline)
             self.hinge_dot.set_data([p.hinge[0]], [p.hinge[1]])
         self.pivot_dot.set_data([p.pivot[0]], [p.pivot[1]])
         if self.rollers:
