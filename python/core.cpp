@@ -270,6 +270,35 @@ py::list impacts_list(const std::vector<vssw::compare::ImpactMetric>& impacts) {
     return l;
 }
 
+// The wall as the model built it, for drawing it (python/vssw/_plot.py): the paper's half dimensions [m] (b, h1, h2
+// of a VSSW, h2 None for a parapet, whose h is h1), alpha1 and alpha2 [rad], xi and N [N/m], N's e/b and the
+// corners' r/b (analytic/geometry.hpp).
+py::dict geometry_dict(const vssw::Wall& wall) {
+    py::dict d;
+    d["model"] = wall.is_vssw() ? "vssw" : "parapet";
+    if (wall.is_vssw()) {
+        const vssw::VsswGeometry& w = *wall.vssw;
+        d["b"] = w.b;
+        d["h1"] = w.h1;
+        d["h2"] = w.h2;
+        d["alpha1"] = w.alpha1;
+        d["alpha2"] = w.alpha2;
+        d["xi"] = w.xi;
+    } else {
+        const vssw::ParapetGeometry& p = *wall.parapet;
+        d["b"] = p.b;
+        d["h1"] = p.h;
+        d["h2"] = py::none();
+        d["alpha1"] = p.alpha;
+        d["alpha2"] = py::none();
+        d["xi"] = p.xi;
+    }
+    d["N"] = wall.overburden();
+    d["overburden_eccentricity"] = wall.overburden_eccentricity();
+    d["corner_radius"] = wall.corner_radius_ratio();
+    return d;
+}
+
 // A trajectory as NumPy arrays (one per sample field) and what the metrics code reads from it.
 py::dict trajectory_dict(const vssw::multibody::Trajectory& traj, const vssw::GroundMotion& motion) {
     using Sample = vssw::multibody::TrajectorySample;
@@ -358,6 +387,7 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     d["version"] = engine->version();
     d["settings"] = settings_dict(settings);
     d["alpha"] = scene.alpha();
+    d["geometry"] = geometry_dict(scene);
     // The measures a study, `vssw compare --record` and the report give this run (compare/response.hpp).
     const vssw::compare::Response response = vssw::compare::response_of(traj, scene);
     d["peak_rotation"] = response.peak / scene.alpha();

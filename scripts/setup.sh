@@ -31,6 +31,8 @@ packages=(
   python3-numpy python3-pandas       # its traces (NumPy arrays) and study() as a DataFrame (pandas: optional at run time)
   python3-pytest                     # its tests (the CTest vssw_python)
   python3-markdown                   # tests/markdown_scan.py: report.md and study.md rendered as MkDocs does
+  python3-matplotlib python3-pil     # Simulation.plot / animate (optional at run time), GIFs through Pillow, the wall sketch
+  python3-nbclient python3-nbformat python3-ipykernel  # docs/notebooks/first-steps.ipynb run by its test (nbclient)
   mkdocs mkdocs-material             # the documentation site (mkdocs.yml; the CTest vssw_docs builds it with --strict)
 )
 # Each engine's packages, from the DEBIAN lines of its folder's multibody/<engine>/engine.cmake.

@@ -46,7 +46,9 @@ class Simulation:
     for an engine or a parapet), ground_motion (its name, None in free
     vibration), slip (an engine run's sliding when friction was given, else None: {base_largest, base_residual,
     hinge_largest, hinge_residual [m], b [m], t_first_slip, t_first_lift [s or None], slid_before_rocking,
-    slid_off (the reason the run ended off its support, or None)})."""
+    slid_off (the reason the run ended off its support, or None)}), geometry (the wall as the model built it:
+    {model ("vssw" or "parapet"), b, h1, h2 [m] (half dimensions; h2 None for a parapet, h1 its h), alpha1, alpha2
+    [rad], xi, N [N/m], overburden_eccentricity (e/b), corner_radius (r/b)}: what plot() and animate() draw)."""
 
     engine: str
     version: str
@@ -77,6 +79,7 @@ class Simulation:
     kinematics: Optional[str]
     ground_motion: Optional[str]
     slip: Optional[dict] = None
+    geometry: Optional[dict] = None
 
     @property
     def theta1_over_alpha(self):
@@ -94,6 +97,20 @@ class Simulation:
         if self.impacts and self.impacts[0].resolved:
             return self.impacts[0].ratio
         return None
+
+    def plot(self, ax=None, quantities=None):
+        """theta1 and theta2 against time (and the top's rise and the energy where the run has them) on matplotlib
+        axes: vssw._plot.plot_simulation. Returns the Figure."""
+        from ._plot import plot_simulation
+
+        return plot_simulation(self, ax=ax, quantities=quantities)
+
+    def animate(self, path=None, fps=25, speed=1.0, t_start=None, t_stop=None):
+        """The two blocks and the roller moving as the run did, as a matplotlib Animation; written to path (.gif,
+        or .mp4 where ffmpeg is installed) when one is given: vssw._animation.animate_simulation."""
+        from ._animation import animate_simulation
+
+        return animate_simulation(self, path=path, fps=fps, speed=speed, t_start=t_start, t_stop=t_stop)
 
     def to_dataframe(self):
         """The arrays as a pandas DataFrame, one column each."""
