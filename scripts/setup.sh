@@ -32,6 +32,8 @@ packages=(
   python3-pytest                     # its tests (the CTest vssw_python)
   python3-markdown                   # tests/markdown_scan.py: report.md and study.md rendered as MkDocs does
   mkdocs mkdocs-material             # the documentation site (mkdocs.yml; the CTest vssw_docs builds it with --strict)
+  python3-pymdownx                   # its equations, marked by pymdownx.arithmatex (mkdocs-material depends on it too)
+  libjs-mathjax                      # rendered by MathJax 2.7, copied into the site (scripts/mkdocs_mathjax.py)
 )
 # Each engine's packages, from the DEBIAN lines of its folder's multibody/<engine>/engine.cmake.
 engine_packages="$(bash "$here/scripts/engine_packages.sh" "$here")"
