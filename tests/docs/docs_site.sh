@@ -33,7 +33,7 @@ fi
 # Offline equations: every script and stylesheet of every page is the site's own (MathJax copied in, no CDN, no web
 # fonts), and the model's pages hold equations marked for MathJax.
 /usr/bin/python3 "$src/tests/docs/check_site_offline.py" "$out/site" model/analytic-core.html model/top-support.html \
-  glossary.html
+  model/paper.html glossary.html
 # ... and the check can fail: a page loading a script from another host, one loading a file the site lacks, a page
 # named as holding equations that has none, and MathJax itself missing.
 mkdir -p "$out/online"
