@@ -72,17 +72,16 @@ def signature_block(name, obj):
         sig = inspect.signature(obj)
     except (TypeError, ValueError):
         return ""
+    params = list(sig.parameters.values())
     parts, star_done = [], False
-    for p in sig.parameters.values():
+    for i, p in enumerate(params):
         if p.kind is inspect.Parameter.KEYWORD_ONLY and not star_done:
             parts.append("*")
         if p.kind in (inspect.Parameter.KEYWORD_ONLY, inspect.Parameter.VAR_POSITIONAL):
             star_done = True
         parts.append(parameter_text(p))
-        if p.kind is inspect.Parameter.POSITIONAL_ONLY and (
-                list(sig.parameters.values())[-1] is p or
-                list(sig.parameters.values())[list(sig.parameters).index(p.name) + 1].kind
-                is not inspect.Parameter.POSITIONAL_ONLY):
+        following = params[i + 1].kind if i + 1 < len(params) else None
+        if p.kind is inspect.Parameter.POSITIONAL_ONLY and following is not inspect.Parameter.POSITIONAL_ONLY:
             parts.append("/")
     result = ""
     if sig.return_annotation is not inspect.Signature.empty:
