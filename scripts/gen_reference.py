@@ -254,6 +254,10 @@ program prints today):
 - [Study file keys](study-keys.md): every key a study file may hold, and the metrics;
 - [Engine settings](engines.md): every setting of every engine, with its default, unit, range and meaning;
 - [JSON keys](json-keys.md): the keys of each command's `--json` output.
+
+And from the Python module, by `scripts/gen_python_reference.py` (checked the same way):
+
+- [Python API](python.md): every public function and class of `import vssw`, with its signature and docstring.
 """
 
 

@@ -34,6 +34,8 @@ packages=(
   python3-matplotlib python3-pil     # Simulation.plot / animate (optional at run time), GIFs through Pillow, the wall sketch
   python3-nbclient python3-nbformat python3-ipykernel  # docs/notebooks/first-steps.ipynb run by its test (nbclient)
   mkdocs mkdocs-material             # the documentation site (mkdocs.yml; the CTest vssw_docs builds it with --strict)
+  python3-pymdownx                   # its equations, marked by pymdownx.arithmatex (mkdocs-material depends on it too)
+  libjs-mathjax                      # rendered by MathJax 2.7, copied into the site (scripts/mkdocs_mathjax.py)
 )
 # Each engine's packages, from the DEBIAN lines of its folder's multibody/<engine>/engine.cmake.
 engine_packages="$(bash "$here/scripts/engine_packages.sh" "$here")"

@@ -69,7 +69,7 @@ def commands(block_lines):
                 result.append((cmd, expected))
             cmd, expected = line[2:], []
             while cmd.endswith("\\"):
-                cmd = cmd[:-1] + "\n" + next(it).lstrip()
+                cmd = cmd + "\n" + next(it)  # bash reads the backslash and newline as one line
         elif cmd is not None:
             expected.append(line)
     if cmd is not None:
