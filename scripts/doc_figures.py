@@ -9,7 +9,9 @@ that measured it), an SVG drawn from it, and the page whose table shows the same
 
 - engine-cost-error: docs/data/engine-comparison.csv -> docs/img/engine-cost-error.svg, the table of docs/engines.md;
 - work-precision: docs/data/work-precision.csv -> docs/img/work-precision.svg, the "Measured" table of
-  docs/measurements/work-precision.md.
+  docs/measurements/work-precision.md;
+- suite-time: docs/data/suite-time.csv -> docs/img/suite-time.svg, the table of "Where the suite's time goes" on
+  docs/measurements/speed.md.
 
 Without --check it re-draws every SVG into docs/img/ (or --out). With --check it writes nothing there: it draws each
 figure into a temporary folder and exits 1 naming every SVG that differs from the committed one and every number of
@@ -137,6 +139,35 @@ def work_precision_program(rows, svg_name):
     return "\n".join(lines) + "\n"
 
 
+def suite_time_program(rows, svg_name):
+    """gnuplot's program for where the default suite's CPU goes: one bar per case kind, stacked by engine."""
+    styles = engine_styles()
+    engines = [("bullet", "Bullet"), ("ode", "ODE"), ("simbody", "Simbody (compliant)")]
+    lines = [
+        "set encoding utf8",
+        f"set terminal svg size 760,400 noenhanced font '{FONT}' background rgb 'white'",
+        f"set output '{svg_name}'",
+        "set grid ytics lc rgb '#dddddd'",
+        "set style data histograms",
+        "set style histogram rowstacked",
+        "set style fill solid 0.85 border rgb '#333333'",
+        "set boxwidth 0.6",
+        "set yrange [0:*]",
+        "set xrange [-0.6:3.6]",
+        "set ylabel 'task CPU time [s]'",
+        "set xlabel 'case kind of the default suite'",
+        "set key outside right top Left reverse box lc rgb '#cccccc'",
+        "$suite << EOD",
+    ]
+    # The bar's label is the kind's name without the page's count ("threshold (11 walls)": threshold).
+    lines += [f'"{r["kind"].split(" (")[0]}" ' + " ".join(r[f"{e}_s"] for e, _ in engines) for r in rows]
+    lines.append("EOD")
+    plots = [f"$suite using {i + 2}{':xtic(1)' if i == 0 else ''} lc rgb '{styles[e][0]}' title '{title}'"
+             for i, (e, title) in enumerate(engines)]
+    lines.append("plot " + ", \\\n     ".join(plots))
+    return "\n".join(lines) + "\n"
+
+
 def table_rows(page):
     """The cells of every table row of the page."""
     rows = []
@@ -184,6 +215,11 @@ def work_precision_mismatches(rows, page):
                          ("cpu_s", "threshold_pct", "period_pct", "restitution_pct"))
 
 
+def suite_time_mismatches(rows, page):
+    return rows_mismatch(rows, page, lambda r: [r["kind"]], lambda r: r["kind"],
+                         ("bullet_s", "ode_s", "simbody_s", "all_s"))
+
+
 def report_columns(folder):
     """The engine comparison's columns measured by `vssw report`: each engine's worst signed relative error in % on
     threshold, period and restitution (results.json `matrix`), and under records the median peak ratio and whether
@@ -211,6 +247,9 @@ FIGURES = {
     "work-precision": {"csv": "docs/data/work-precision.csv", "svg": "docs/img/work-precision.svg",
                        "page": "docs/measurements/work-precision.md", "program": work_precision_program,
                        "mismatches": work_precision_mismatches},
+    "suite-time": {"csv": "docs/data/suite-time.csv", "svg": "docs/img/suite-time.svg",
+                   "page": "docs/measurements/speed.md", "program": suite_time_program,
+                   "mismatches": suite_time_mismatches},
 }
 
 
