@@ -62,8 +62,7 @@ struct Excitation {
 // with them; 1000, 50 times the default, still ends a compare in minutes rather than days.
 constexpr int kMaxIterations = 1000;
 
-// Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why
-// (docs/contributing/engines.md).
+// Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (docs/contributing/engines.md).
 struct EngineSettings {
     double dt = 1e-4;        // engine step [s]
     int iterations = 0;      // solver iterations (0: the adapter's default)

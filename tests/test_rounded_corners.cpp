@@ -213,8 +213,7 @@ TEST(RoundedCorners, EnginesThatRoundAgreeOnThePeriod) {
             continue;
         }
         if (!rounds.count(name)) {
-            ADD_FAILURE() << name
-                          << ": neither rounds nor refuses in docs/contributing/engines.md, \"Rounded corners\"";
+            ADD_FAILURE() << name << ": neither rounds nor refuses in docs/contributing/engines.md, \"Rounded corners\"";
             continue;
         }
         ++rounding;  // built: the skip below counts these, not the ones that ran

@@ -295,8 +295,7 @@ class Box2dEngine final : public Engine {
 public:
     std::string name() const override { return "box2d"; }
     std::string display_name() const override { return "Box2D"; }
-    // At 1 ms, docs/contributing/engines.md "Box2D".
-    double cost_per_simulated_second() const override { return 1.6e-3; }
+    double cost_per_simulated_second() const override { return 1.6e-3; }  // at 1 ms, docs/contributing/engines.md "Box2D"
     std::string version() const override {
         return fmt::format("Box2D {}.{}.{} (single precision)", b2_version.major, b2_version.minor,
                            b2_version.revision);

@@ -118,9 +118,8 @@ private:
     // b theta2^2, a speculative row that stays idle. Measured: with only the pivot's guide in the solve (chosen before
     // the step, by the corners), the guide of the new pivot missed the impact step and took its impulse a step later,
     // a second impact that moved the Table 1 walls' restitution by up to 2.8 % at xi 0.5; with both, within 1 %
-    // (docs/contributing/engines.md "Bullet"). (Two guides as Bullet joint limits had squeezed the top with opposing
-    // impulses; as unilateral contact rows they do not.) The lines follow the roller's body (the ground, or a flexible
-    // top's).
+    // (docs/contributing/engines.md "Bullet"). (Two guides as Bullet joint limits had squeezed the top with opposing impulses;
+    // as unilateral contact rows they do not.) The lines follow the roller's body (the ground, or a flexible top's).
     void update_roller(const btTransform& tu) {
         const double x0 = roller_.getWorldTransform().getOrigin().x();
         btPersistentManifold& roller = *manifolds_[2];

@@ -79,8 +79,7 @@ constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses 
 
 // The detectors a run may use (setting "detector"; ODE's by default, above). DART's Bullet detector is not offered: it
 // links Debian's single-precision Bullet, which aborted ("malloc(): invalid size") beside vssw's double-precision
-// Bullet in one process. FCL, DART's default, is not offered either: it costs 4 times as much
-// (docs/contributing/engines.md "DART").
+// Bullet in one process. FCL, DART's default, is not offered either: it costs 4 times as much (docs/contributing/engines.md "DART").
 enum Detector { kDartDetector = 0, kOdeDetector = 1, kDetectorCount = 2 };
 
 // The roller sphere's radius, as a share of the half thickness b. Nothing depends on it (the guide's face stands the
@@ -91,15 +90,13 @@ constexpr double kRollerRadiusShare = 0.1;
 struct Knobs {
     Detector detector;
     // DART's ContactConstraint statics (docs/contributing/engines.md "DART" for the measurements): error reduction
-    // parameter, the cap on the velocity it may give, constraint force mixing, and the penetration allowed before erp
-    // acts.
+    // parameter, the cap on the velocity it may give, constraint force mixing, and the penetration allowed before erp acts.
     double erp, erv, cfm, allowance;
     FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
     bool moving_supports;
 };
 
-// DART's defaults for the four statics, kept (docs/contributing/engines.md "DART": measured on the parapet and the
-// VSSWs).
+// DART's defaults for the four statics, kept (docs/contributing/engines.md "DART": measured on the parapet and the VSSWs).
 constexpr double kDefaultErp = 0.01, kDefaultErv = 1e-3, kDefaultCfm = 1e-5, kDefaultAllowance = 0.0;
 
 // Ranges (SettingDescription::lo/hi). erp is a share in [0, 1]. cfm: DART clamps values below 1e-9 to 1e-9 (with a

@@ -2,8 +2,8 @@
 // How each backend's defaults integrate a rocking wall, grouped by what sets their dominant error. Engines of one
 // scheme share it: Bullet, ODE, Box2D, DART and MuJoCo with stiff contact all step with symplectic Euler and resolve
 // contacts as plastic impulses at the velocity level, and on the parapet their quarter-period errors at 1 ms agree to
-// three digits (-0.072 to -0.075 %; docs/engines.md, "Contact schemes"). Agreement among them is one piece
-// of evidence, not several; engines of different schemes agreeing is. The report groups the engines by scheme.
+// three digits (-0.072 to -0.075 %; docs/engines.md, "Contact schemes"). Agreement among them is one piece of
+// evidence, not several; engines of different schemes agreeing is. The report groups the engines by scheme.
 // Engine-free: a table by name, read without opening a plugin.
 #include <string>
 #include <vector>

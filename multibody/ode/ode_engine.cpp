@@ -13,10 +13,9 @@
 //    points for box-box, turned into planar contact joints each step (add_pair), speculative within `margin`;
 //  - the roller (VSSW only): a frictionless contact joint between the upper block and the ground (body 0, or the
 //    kinematic ground) at the top corner on the pivot's side, holding x <= +b (right corner) or x >= -b (left);
-//    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards;
-//    docs/contributing/engines.md, "Bullet"). Only the guide whose corner is further out is given to the solver (Bullet
-//    gives both: with one, its xi 0.5 restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target,
-//    docs/contributing/engines.md "ODE");
+//    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards; docs/contributing/engines.md,
+//    "Bullet"). Only the guide whose corner is further out is given to the solver (Bullet gives both: with one, its xi 0.5
+//    restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target, docs/contributing/engines.md "ODE");
 //  - rounded corners (corner radius r > 0): each box is its block's flat part, b - r wide, with capsules of radius r
 //    along the depth at the arcs' centres (add_rounding), the base ones on the ground, each top one of the lower
 //    block on the upper block's bottom one of its side; the masses stay the rectangles';

@@ -26,8 +26,7 @@
 //
 // Impacts: the stepper resolves an impact at the start of the step in which a contact is proximal and closing, with
 // every proximal contact at once (Simultaneous), coefficient of restitution 0 everywhere: the plastic impact of the
-// whole new mechanism, like ODE's LCP (docs/contributing/engines.md, "ODE"), not Eq. (19), which assumes no impulse at
-// the roller.
+// whole new mechanism, like ODE's LCP (docs/contributing/engines.md, "ODE"), not Eq. (19), which assumes no impulse at the roller.
 //
 // Defaults, each measured (vssw compare, bench/engine_accuracy.cpp; numbers in the comments where they are set).
 #include "multibody/simbody/simbody_engine.hpp"
@@ -257,9 +256,8 @@ private:
     SimTK::State state_;
 };
 
-// One class for both routes: `simbody` (compliant contact, simbody_compliant.cpp; the default,
-// docs/contributing/engines.md "Simbody" for why) and `simbody-rigid` (this file's rigid contact), each with its own
-// defaults.
+// One class for both routes: `simbody` (compliant contact, simbody_compliant.cpp; the default, docs/contributing/engines.md
+// "Simbody" for why) and `simbody-rigid` (this file's rigid contact), each with its own defaults.
 class SimbodyEngine final : public Engine {
 public:
     explicit SimbodyEngine(bool compliant) : compliant_(compliant) {}
