@@ -207,7 +207,7 @@ def rows_mismatch(rows, page, key, label, numbers):
 
 def cost_error_mismatches(rows, page):
     return rows_mismatch(rows, page, lambda r: [r["display"]], lambda r: r["display"],
-                         ("threshold_pct", "period_pct", "restitution_pct", "cost_vssw_ms"))
+                         ("threshold_pct", "period_pct", "restitution_pct", "cost_vssw_ms", "step_us", "peak_ratio"))
 
 
 def work_precision_mismatches(rows, page):
