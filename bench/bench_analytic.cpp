@@ -1,7 +1,7 @@
-// Speed of the analytic core at relative tolerance 1e-10 (docs/analytic-speed.md's goals on a 2-core machine: the
-// Fig. 6 free vibration to rest under 0.3 ms, met at about 0.22 ms; the Rinaldi record, through its whole length,
-// under 1 ms, met at about 0.91 ms since the fifth pass; docs/measurements/speed.md, docs/analytic-speed.md). Run:
-// build/bench/vssw_bench_analytic
+// Speed of the analytic core at relative tolerance 1e-10 (docs/contributing/analytic-speed.md's goals on a 2-core
+// machine: the Fig. 6 free vibration to rest under 0.3 ms, met at about 0.22 ms; the Rinaldi record, through its whole
+// length, under 1 ms, met at about 0.91 ms since the fifth pass; docs/measurements/speed.md,
+// docs/contributing/analytic-speed.md). Run: build/bench/vssw_bench_analytic
 //   --benchmark_repetitions=10 --benchmark_report_aggregates_only=true   and quote the medians (the CPU column when
 //   the machine is loaded).
 #include <benchmark/benchmark.h>

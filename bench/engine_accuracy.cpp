@@ -1,6 +1,6 @@
-// Accuracy of an engine against the analytic model (exact kinematics) on the reference walls (docs/engines.md), at
-// three steps: prints a Markdown table (relative errors of threshold, period and first-impact restitution) for
-// docs/engines.md.
+// Accuracy of an engine against the analytic model (exact kinematics) on the reference walls
+// (docs/contributing/engines.md), at three steps: prints a Markdown table (relative errors of threshold, period and
+// first-impact restitution) for docs/contributing/engines.md.
 //   build/bench/vssw_engine_accuracy bullet [dt1 dt2 dt3]
 #include <chrono>
 #include <cmath>
@@ -76,8 +76,8 @@ int main(int argc, char** argv) {
                     const auto t0 = std::chrono::steady_clock::now();
                     const compare::EngineComparison c = compare::compare_with_analytic(*engine, s, w.scene, 0.5);
                     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                    // The plastic impact of the whole new mechanism (roller included; docs/engines.md "Bullet"), VSSW
-                    // only.
+                    // The plastic impact of the whole new mechanism (roller included; docs/contributing/engines.md
+                    // "Bullet"), VSSW only.
                     const double whole =
                         w.scene.vssw ? c.restitution.engine / restitution_whole_mechanism(*w.scene.vssw) - 1.0 : NAN;
                     std::printf("| %s | %g | %+.2e | %+.2e | %+.2e | %+.2e | %.1f |\n", w.name.c_str(), dt,

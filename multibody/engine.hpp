@@ -57,12 +57,12 @@ struct Excitation {
 };
 
 // Solver iterations a caller may ask of an engine (`vssw compare --iterations`, a study's settings): Bullet's
-// sequential-impulse iterations per step (default 20; 100 changes nothing measured, docs/engines.md "Bullet"), ODE's
-// quickstep iterations (default 20), unused by Simbody and the analytic model. The cost grows linearly with them; 1000,
-// 50 times the default, still ends a compare in minutes rather than days.
+// sequential-impulse iterations per step (default 20; 100 changes nothing measured, docs/contributing/engines.md
+// "Bullet"), ODE's quickstep iterations (default 20), unused by Simbody and the analytic model. The cost grows linearly
+// with them; 1000, 50 times the default, still ends a compare in minutes rather than days.
 constexpr int kMaxIterations = 1000;
 
-// Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (docs/engines.md).
+// Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (docs/contributing/engines.md).
 struct EngineSettings {
     double dt = 1e-4;        // engine step [s]
     int iterations = 0;      // solver iterations (0: the adapter's default)
@@ -91,9 +91,9 @@ struct SettingDescription {
     std::string meaning;  // one line
     // The documented range of a knob, both ends included: a value outside it is refused (InputError naming it) before
     // the engine library sees it (SettingsReader). Each range holds every value the settings were measured at with a
-    // wide margin and stops where the library aborts, hangs or gives nothing a wall could mean (docs/engines.md
-    // "Isolation": an ODE margin of 1e308 aborted the process). Unbounded by default; dt and iterations are checked on
-    // their own.
+    // wide margin and stops where the library aborts, hangs or gives nothing a wall could mean
+    // (docs/contributing/engines.md "Isolation": an ODE margin of 1e308 aborted the process). Unbounded by default; dt
+    // and iterations are checked on their own.
     double lo = -std::numeric_limits<double>::infinity();
     double hi = std::numeric_limits<double>::infinity();
     // A setting for the single block only: any value but its default is refused for a VSSW, with the other settings
@@ -228,7 +228,7 @@ std::optional<std::string> engine_meant(const std::string& name);
 std::string engine_name_hint(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
 // except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold
-// bisections take minutes (docs/engines.md, "Simbody"); name it to include it.
+// bisections take minutes (docs/contributing/engines.md, "Simbody"); name it to include it.
 std::vector<std::string> default_compared_engines();
 
 }  // namespace vssw::multibody

@@ -1,8 +1,8 @@
 #pragma once
-// What an engine plugin exports (docs/architecture.md, "Plugins"; docs/engines.md, "Adding an engine"). Each engine
-// library's adapter is a shared module of its own (vssw_engine_<plugin>.so), opened by the program only when a run
-// needs that engine (registry.cpp, plugin_loader.hpp), so that a process that runs none (vssw free, vssw wall, the
-// analytic model) does not load Simbody, Siconos, Bullet, ODE and the dozens of libraries they bring.
+// What an engine plugin exports (docs/architecture.md, "Plugins"; docs/contributing/engines.md, "Adding an engine").
+// Each engine library's adapter is a shared module of its own (vssw_engine_<plugin>.so), opened by the program only
+// when a run needs that engine (registry.cpp, plugin_loader.hpp), so that a process that runs none (vssw free, vssw
+// wall, the analytic model) does not load Simbody, Siconos, Bullet, ODE and the dozens of libraries they bring.
 //
 // The plugin exports one symbol, kEnginePluginEntry, with C linkage (its name is not mangled, so dlsym finds it by
 // name), returning the description below. The types it hands over (Engine, WallScene, EngineSettings, ...) are C++

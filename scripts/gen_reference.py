@@ -95,8 +95,9 @@ def engines_page(vssw):
            "Every setting of every engine compiled into this build, from `vssw compare --list-settings --json`: ",
            "`--dt`, `--iterations` and each `--set NAME=VALUE` knob, with its default, unit, documented range ",
            "(empty: unbounded) and meaning. The same table decides which knobs an engine accepts, in `vssw compare`, ",
-           "in a study's `[settings.ENGINE]` and in the suites. How each default was chosen: ",
-           "[the engines' notes](../engines.md).\n\n"]
+           "in a study's `[settings.ENGINE]` and in the suites. Each engine's defaults and what they give: ",
+           "[Engines](../engines.md); how each default was chosen: ",
+           "[the adapters' notes](../contributing/engines.md).\n\n"]
     for engine in listing:
         out.append("## %s\n\n" % engine["engine"])
         out.append("Library version: %s.\n\n" % engine.get("version", "?"))

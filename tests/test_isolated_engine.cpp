@@ -1,8 +1,8 @@
 // Engine runs in child processes of their own (multibody/host/isolated_engine.hpp), with a CPU budget
 // (multibody/host/run_budget.hpp); knobs refused outside their documented ranges (SettingDescription::lo/hi); a step that
-// cannot resolve the wall or the ground motion refused (multibody/kit/step_resolution.hpp). docs/engines.md "Isolation": an
-// ODE setting aborted the process (and a Python interpreter), a Simbody setting hung forever, and a step of 1000 s gave
-// "ok, peak 0".
+// cannot resolve the wall or the ground motion refused (multibody/kit/step_resolution.hpp).
+// docs/contributing/engines.md "Isolation": an ODE setting aborted the process (and a Python interpreter), a Simbody
+// setting hung forever, and a step of 1000 s gave "ok, peak 0".
 #include <gtest/gtest.h>
 
 #include <signal.h>

@@ -182,11 +182,11 @@ TEST(RoundedCorners, TheAnalyticModelDoesNotRunARoundedWall) {
 
 // Past the closed form the engines are compared with each other (compare_rounded_corners' periods, run here alone: its
 // threshold searches are CrossEngine.RoundedCornersLiftOffAtEq12r's): every engine that rounds its blocks
-// (docs/engines.md, "Rounded corners": each must run, so one that regressed into refusing fails here; Simbody's
-// compliant route must refuse, InputError) on Table 1 #3 (xi 0.2, r/b 0.1) from 0.5 alpha1. Their periods agree within kPeriodSpread; each
-// is at least kRoundingEffect longer than the sharp wall's, so a rounding the engines ignored would fail (measured:
-// Box2D 1.3097, MuJoCo 1.3133, DART 1.3134, ODE 1.3129, Bullet 1.3134, simbody-rigid 1.3143, Siconos 1.3147 s: spread
-// 0.38 %; sharp analytic 1.1892 s).
+// (docs/contributing/engines.md, "Rounded corners": each must run, so one that regressed into refusing fails here;
+// Simbody's compliant route must refuse, InputError) on Table 1 #3 (xi 0.2, r/b 0.1) from 0.5 alpha1. Their periods
+// agree within kPeriodSpread; each is at least kRoundingEffect longer than the sharp wall's, so a rounding the engines
+// ignored would fail (measured: Box2D 1.3097, MuJoCo 1.3133, DART 1.3134, ODE 1.3129, Bullet 1.3134, simbody-rigid
+// 1.3143, Siconos 1.3147 s: spread 0.38 %; sharp analytic 1.1892 s).
 TEST(RoundedCorners, EnginesThatRoundAgreeOnThePeriod) {
     constexpr double kPeriodSpread = 1e-2;    // twice the period target (0.5 %) for two engines' errors of either sign
     constexpr double kRoundingEffect = 0.05;  // half the measured +10 %, far above any engine's period error
@@ -213,7 +213,7 @@ TEST(RoundedCorners, EnginesThatRoundAgreeOnThePeriod) {
             continue;
         }
         if (!rounds.count(name)) {
-            ADD_FAILURE() << name << ": neither rounds nor refuses in docs/engines.md, \"Rounded corners\"";
+            ADD_FAILURE() << name << ": neither rounds nor refuses in docs/contributing/engines.md, \"Rounded corners\"";
             continue;
         }
         ++rounding;  // built: the skip below counts these, not the ones that ran
@@ -221,7 +221,7 @@ TEST(RoundedCorners, EnginesThatRoundAgreeOnThePeriod) {
         try {
             run = compare::run_free_vibration(*engine, engine->default_settings(), scene, free);
         } catch (const InputError& e) {
-            ADD_FAILURE() << name << " rounds its blocks (docs/engines.md) but refused: " << e.what();
+            ADD_FAILURE() << name << " rounds its blocks (docs/contributing/engines.md) but refused: " << e.what();
             continue;
         }
         ASSERT_TRUE(run.period.has_value()) << name;

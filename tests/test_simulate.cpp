@@ -392,9 +392,9 @@ TEST(Simulate, VsswDampsMoreThanTheParapetLikeSection5Says) {
     EXPECT_GT(vssw, 1.5 * pw);
 }
 
-// The accuracy goal (docs/analytic-speed.md) for the default tolerance: impact times within 1e-8 s of a run at rtol
-// 1e-14 (measured: 1.2e-9 s paper, 1.6e-9 s exact kinematics over Fig. 6's 130 impacts; rtol 1e-9 gives 1.0e-8 and
-// 1.3e-8, so a looser default would fail here).
+// The accuracy goal (docs/contributing/analytic-speed.md) for the default tolerance: impact times within 1e-8 s of a
+// run at rtol 1e-14 (measured: 1.2e-9 s paper, 1.6e-9 s exact kinematics over Fig. 6's 130 impacts; rtol 1e-9 gives
+// 1.0e-8 and 1.3e-8, so a looser default would fail here).
 constexpr double kImpactTimeGoal = 1e-8;  // [s] the speed work's bound on impact times at the default tolerance
 constexpr double kReferenceRtol = 1e-14;  // four orders tighter than the default: its own error is negligible here
 

@@ -539,8 +539,8 @@ TEST(RunSuite, EngineRowsOnCheapCases) {
     EXPECT_EQ(r.engines[2].name, "ode");
     EXPECT_EQ(r.engines[1].settings.dt, multibody::make_engine("bullet")->default_settings().dt);
 
-    // The parapet: period and Housner's restitution within the targets (docs/engines.md: -0.015 % and -0.25 %
-    // measured).
+    // The parapet: period and Housner's restitution within the targets (docs/contributing/engines.md: -0.015 % and
+    // -0.25 % measured).
     const validation::MetricRow* period = find_row(r, "fig6-pw/r0.5", "bullet", "period");
     const validation::MetricRow* e = find_row(r, "fig6-pw/r0.5", "bullet", "restitution");
     ASSERT_TRUE(period && e);

@@ -255,7 +255,7 @@ TEST(WorkerProcess, AnOdeStudysResultsAreTheSameFileOnOneAndTwoThreads) {
 }
 
 // The validation suite runs ODE in its own process, its tasks taking turns on two threads (no worker processes there:
-// docs/engines.md, "ODE"): its rows, failures and traces are those of one thread.
+// docs/contributing/engines.md, "ODE"): its rows, failures and traces are those of one thread.
 TEST(WorkerProcess, OdesSuiteRowsAreTheSameOnOneAndTwoThreads) {
     if (!engine_available("ode")) GTEST_SKIP() << "ODE is not built";
     const validation::Suite s = validation::select_cases(validation::read_suite("default", VSSW_DATA_DIR), {"fig6-pw", "fig6-vssw/r0.5"});

@@ -28,7 +28,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The Fig. 6 walls (4 x 0.4 m; the VSSW's hinge at h1/h 0.7), the validation suite's.
 constexpr double kFig6Height = 4.0, kFig6Thickness = 0.4, kFig6Hinge = 0.7;
 // Table 1 #1 at xi 0.5: one of the walls on which Bullet's restitution misses its target at its defaults
-// (docs/engines.md "Bullet").
+// (docs/contributing/engines.md "Bullet").
 constexpr int kTable1Specimen = 1;
 constexpr double kTable1Xi = 0.5;
 // Release of the free vibrations, in units of alpha: the suite's middle release.

@@ -13,7 +13,7 @@
 //  - every polygon and the edge with m_radius = 0 (unless the skin setting puts it back). Box2D gives polygons and edges a skin of b2_polygonRadius = 1 cm
 //    by default: the block then rolls on rounded corners, which raises its effective I_O by 2 r h / (4/3 R^2) and
 //    the period by 0.37 % (measured on the 4 x 0.4 m parapet: +0.30 % at 1 ms against -0.072 % with radius 0;
-//    docs/engines.md "Box2D");
+//    docs/contributing/engines.md "Box2D");
 //  - contacts: Box2D's own (polygon-edge at the base, polygon-polygon at the hinge, at most 2 points per pair);
 //    collision filters keep the roller's parts apart from the blocks and the ground (the upper block and the ground
 //    may meet, but never come near each other);
@@ -22,12 +22,12 @@
 //    edge of the ground body at x = +-(b + r). A circle against a line holds its centre r from the line, so the
 //    corner is held on x <= +b (right) and x >= -b (left) exactly, with y free. Only the circles touch the guides:
 //    a guide surface the block's face could reach would be penetrated by it (the face below the held corner leans
-//    outwards; docs/engines.md "Bullet"). With roller = 1, the paper's bilateral roller instead: a b2WheelJoint
-//    (stiffness 0, damping 0: a point of the block held on a vertical line, rotation free) at the top corner whose
-//    guide binds (left_guide_binds), moved to the other corner when the other guide binds;
+//    outwards; docs/contributing/engines.md "Bullet"). With roller = 1, the paper's bilateral roller instead: a
+//    b2WheelJoint (stiffness 0, damping 0: a point of the block held on a vertical line, rotation free) at the top
+//    corner whose guide binds (left_guide_binds), moved to the other corner when the other guide binds;
 //  - N: a force at the centre of the top face each step, only when xi > 0 (Box2D adds a force's linear and angular
-//    impulse to the velocities before the solve, so every row sees it: Bullet's trap, docs/engines.md "Bullet",
-//    does not arise);
+//    impulse to the velocities before the solve, so every row sees it: Bullet's trap, docs/contributing/engines.md
+//    "Bullet", does not arise);
 //  - ground motion: by default the pseudo-forces -m a_h(t) as a tilt of gravity, (-a_h, -g), set before each step
 //    at its midpoint; with moving_supports = 1 the ground body (edge and guides) is kinematic, its velocity for the
 //    step V_k = V_{k-1} + dt a_h(t_{k-1/2}) (ODE's rule: the same impulse per step as the pseudo-forces);
@@ -35,7 +35,7 @@
 //    of their own, moved at the ground's velocity plus u_d's, so that it sits u_d(t) of Eq. (9d) from the ground at
 //    each step's end (docs/model/top-support.md);
 //  - sleeping off (a slowly rocking wall must not be put to sleep), continuous collision off (nothing here moves a
-//    body's size in a step; docs/engines.md "Box2D"), restitution 0 at every contact.
+//    body's size in a step; docs/contributing/engines.md "Box2D"), restitution 0 at every contact.
 #include "multibody/box2d/box2d_engine.hpp"
 
 #include <box2d/box2d.h>
@@ -295,14 +295,14 @@ class Box2dEngine final : public Engine {
 public:
     std::string name() const override { return "box2d"; }
     std::string display_name() const override { return "Box2D"; }
-    double cost_per_simulated_second() const override { return 1.6e-3; }  // at 1 ms, docs/engines.md "Box2D"
+    double cost_per_simulated_second() const override { return 1.6e-3; }  // at 1 ms, docs/contributing/engines.md "Box2D"
     std::string version() const override {
         return fmt::format("Box2D {}.{}.{} (single precision)", b2_version.major, b2_version.minor,
                            b2_version.revision);
     }
     EngineSettings default_settings() const override {
         EngineSettings s;
-        s.dt = 1e-3;  // measured: docs/engines.md "Box2D"
+        s.dt = 1e-3;  // measured: docs/contributing/engines.md "Box2D"
         s.iterations = kDefaultVelocityIterations;
         return s;
     }

@@ -4,7 +4,7 @@ vssw_engine(NAME box2d DISPLAY "Box2D" ORDER 50 LIBRARY libbox2d
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#882255"  # wine (Paul Tol's colour-blind safe "muted" set: Okabe-Ito's spares stay free)
   MARKER 1 1        # plus (no filled form)
-  # Box2D's sequential impulses: the step and the velocity iterations (docs/engines.md "Box2D").
+  # Box2D's sequential impulses: the step and the velocity iterations (docs/contributing/engines.md "Box2D").
   BENCH "dt={dt} it={iterations}: dt 1e-3 5e-4 2e-4 1e-4, iterations 4 8 16"
   DEBIAN libbox2d-dev
   HEADERS box2d/ b2_)

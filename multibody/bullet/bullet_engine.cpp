@@ -115,9 +115,9 @@ public:
         const double g = scene.gravity();
         world_.setGravity(btVector3(0, -g, 0));
         btContactSolverInfo& info = world_.getSolverInfo();
-        // Settings from docs/engines.md ("The libraries as Debian ships them"), each measured on a rocking block: no
-        // restitution below any velocity, no warm start (a rocking contact jumps from corner to corner), no slop,
-        // split impulse so that position correction adds no energy.
+        // Settings from docs/contributing/engines.md ("The libraries as Debian ships them"), each measured on a rocking
+        // block: no restitution below any velocity, no warm start (a rocking contact jumps from corner to corner), no
+        // slop, split impulse so that position correction adds no energy.
         info.m_numIterations = knobs.iterations;
         info.m_restitutionVelocityThreshold = 0;
         info.m_warmstartingFactor = 0;
@@ -125,7 +125,7 @@ public:
         info.m_splitImpulse = 1;
         // Bullet splits only a penetration deeper than this threshold (penetration is negative): +1e9 splits every
         // one. (It was -1e9, meant as "always" but meaning "never": penetration was pushed out through the velocity
-        // with m_erp, energy in at every landing; measured in docs/engines.md, "Bullet".)
+        // with m_erp, energy in at every landing; measured in docs/contributing/engines.md, "Bullet".)
         info.m_splitImpulsePenetrationThreshold = 1e9;
         info.m_erp2 = knobs.erp;
 
@@ -244,12 +244,12 @@ public:
     }
     EngineSettings default_settings() const override {
         EngineSettings s;
-        // Measured (docs/engines.md, "Bullet"): at 1, 0.5 and 0.2 ms with 10 iterations every wall of the issue is
-        // within the targets, errors in threshold and period falling with the step; 20 to 200 iterations move the
-        // restitution by 0.13 % at most (Table 1 #1 at xi 0.5). 1 ms is the cheapest of them. The flight off the roller
-        // that once kept the step at 0.2 ms (Table 1 #14, xi 0.5, from 0.8 alpha1: +3.16 % at 1 ms) was N's torque
-        // missing from Bullet's friction rows (simulate()); with N as an impulse it is -0.063 % at 1 ms against the
-        // analytic model with the unilateral roller, ODE's figure.
+        // Measured (docs/contributing/engines.md, "Bullet"): at 1, 0.5 and 0.2 ms with 10 iterations every wall of the
+        // issue is within the targets, errors in threshold and period falling with the step; 20 to 200 iterations move
+        // the restitution by 0.13 % at most (Table 1 #1 at xi 0.5). 1 ms is the cheapest of them. The flight off the
+        // roller that once kept the step at 0.2 ms (Table 1 #14, xi 0.5, from 0.8 alpha1: +3.16 % at 1 ms) was N's
+        // torque missing from Bullet's friction rows (simulate()); with N as an impulse it is -0.063 % at 1 ms against
+        // the analytic model with the unilateral roller, ODE's figure.
         s.dt = 1e-3;
         s.iterations = kDefaultIterations;
         return s;
@@ -290,7 +290,7 @@ public:
     // force's linear impulse but not its angular one; the normal rows read both). N is the one force here with a
     // torque about a centre of mass, so the hinge slid every step by the spin N's torque gave in it (5.4 mm/s at 1 ms
     // on Table 1 #14 at xi 0.5 off the roller), friction doing work F v_t: a loss first order in the step
-    // (docs/engines.md "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
+    // (docs/contributing/engines.md "Bullet"). As an impulse every row sees it; the same step of symplectic Euler.
     void push_overburden() {
         top_body_.applyImpulse(btVector3(0, -N_ * dt_, 0), load_point() - top_body_.getCenterOfMassPosition());
     }

@@ -8,10 +8,10 @@
 // roller). Each is one point in the plane, with its signed distance, every step. Bullet's box-box detector found the
 // same corners as two points each (the depth's two ends) and only once they overlapped: a contact found a step late
 // had already penetrated, and the landing, the hinge and the roller's guide were resolved at different steps (the
-// restitution moved by several % with the step; docs/engines.md "Bullet"). Here every corner is in the solve every
-// step: one that is apart by d becomes a speculative row (Bullet lets the gap close by d/dt and no more, then holds
-// it), so the base, the hinge and the roller all take the impact in the same step, and the roller is no longer a limit
-// that acts only once its corner is past the line.
+// restitution moved by several % with the step; docs/contributing/engines.md "Bullet"). Here every corner is in the
+// solve every step: one that is apart by d becomes a speculative row (Bullet lets the gap close by d/dt and no more,
+// then holds it), so the base, the hinge and the roller all take the impact in the same step, and the roller is no
+// longer a limit that acts only once its corner is past the line.
 #include <btBulletDynamicsCommon.h>
 
 #include <array>
@@ -118,8 +118,8 @@ private:
     // b theta2^2, a speculative row that stays idle. Measured: with only the pivot's guide in the solve (chosen before
     // the step, by the corners), the guide of the new pivot missed the impact step and took its impulse a step later,
     // a second impact that moved the Table 1 walls' restitution by up to 2.8 % at xi 0.5; with both, within 1 %
-    // (docs/engines.md "Bullet"). (Two guides as Bullet joint limits had squeezed the top with opposing impulses; as
-    // unilateral contact rows they do not.) The lines follow the roller's body (the ground, or a flexible top's).
+    // (docs/contributing/engines.md "Bullet"). (Two guides as Bullet joint limits had squeezed the top with opposing impulses;
+    // as unilateral contact rows they do not.) The lines follow the roller's body (the ground, or a flexible top's).
     void update_roller(const btTransform& tu) {
         const double x0 = roller_.getWorldTransform().getOrigin().x();
         btPersistentManifold& roller = *manifolds_[2];

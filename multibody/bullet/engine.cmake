@@ -1,6 +1,6 @@
 # Bullet in double precision: the pkg-config module bullet-float64 carries -DBT_USE_DOUBLE_PRECISION and the *-float64
-# libraries (find_package(Bullet) names a library Debian does not ship and drops the define; docs/engines.md "The
-# libraries as Debian ships them").
+# libraries (find_package(Bullet) names a library Debian does not ship and drops the define;
+# docs/contributing/engines.md "The libraries as Debian ships them").
 vssw_engine(NAME bullet DISPLAY "Bullet" ORDER 10 LIBRARY libBulletDynamics
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#0072B2"  # blue (Okabe-Ito)

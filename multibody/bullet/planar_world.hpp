@@ -7,7 +7,7 @@
 // bodies, manifolds and constraints, then a sort), runs actions and puts bodies to sleep. Here the contacts come from
 // the corners (corner_contacts.hpp), no body has a CCD threshold, the blocks are one island and never sleep, and there
 // are no actions. So a step is: the kinematic ground's transform and velocity, gravity, the caller's contacts, one
-// solve of every manifold, integration, forces cleared. Measured in docs/engines.md ("Bullet", where the time goes).
+// solve of every manifold, integration, forces cleared. Measured in docs/contributing/engines.md ("Bullet", where the time goes).
 #include <btBulletDynamicsCommon.h>
 
 #include <vector>

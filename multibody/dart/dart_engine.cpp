@@ -10,12 +10,12 @@
 //  - contacts: the ODE collision detector of libdart-collision-ode (detector = 1, the default; 0 is DART's own) on the
 //    shape pairs a collision filter allows, and only those: ground-lower box, lower-upper box and the roller's pairs
 //    below. The two detectors give the same free vibrations, but under the record of `vssw bench` at 1 ms DART's own
-//    gave a peak 14 % above the converged one where ODE's gave 1.3 % (docs/engines.md "DART");
+//    gave a peak 14 % above the converged one where ODE's gave 1.3 % (docs/contributing/engines.md "DART");
 //  - the roller (VSSW only), one-sided as in every other adapter: a small sphere on the upper block centred at each
 //    top corner, meeting a frictionless vertical guide box whose face is the sphere's radius outside x = +-b, so that
 //    the contact holds the corner itself on x <= +b (right) or x >= -b (left), y free. The force is horizontal through
 //    the sphere's centre, the corner: the same line of action as a contact at the corner. A guide cannot meet the
-//    upper block's box itself (below the held corner the face leans outwards: docs/engines.md "Bullet");
+//    upper block's box itself (below the held corner the face leans outwards: docs/contributing/engines.md "Bullet");
 //  - rounded corners (corner radius r > 0): each block's box is its flat part, b - r wide, with capsules of radius r
 //    along the depth at the arcs' centres (add_rounding): the base capsules meet the ground, each top capsule of the
 //    lower block the bottom capsule of the upper block on its side; masses and inertias stay the rectangles';
@@ -26,7 +26,7 @@
 //    slid at the ground's velocity plus u_d's, so that they sit u_d(t) of Eq. (9d) from the ground at each step's end;
 //
 // Impacts: the LCP resolves a landing with every closing contact (new pivot, hinge, roller) at once, restitution 0:
-// the whole new mechanism's plastic impact, as in every other engine (docs/engines.md "DART").
+// the whole new mechanism's plastic impact, as in every other engine (docs/contributing/engines.md "DART").
 //
 // Process-wide state: DART's ContactConstraint error reduction, its cap, constraint force mixing and error allowance
 // are static members, shared by every world in the process: simulate() sets all four at the start of each run (each run
@@ -79,7 +79,7 @@ constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses 
 
 // The detectors a run may use (setting "detector"; ODE's by default, above). DART's Bullet detector is not offered: it
 // links Debian's single-precision Bullet, which aborted ("malloc(): invalid size") beside vssw's double-precision
-// Bullet in one process. FCL, DART's default, is not offered either: it costs 4 times as much (docs/engines.md "DART").
+// Bullet in one process. FCL, DART's default, is not offered either: it costs 4 times as much (docs/contributing/engines.md "DART").
 enum Detector { kDartDetector = 0, kOdeDetector = 1, kDetectorCount = 2 };
 
 // The roller sphere's radius, as a share of the half thickness b. Nothing depends on it (the guide's face stands the
@@ -89,14 +89,14 @@ constexpr double kRollerRadiusShare = 0.1;
 
 struct Knobs {
     Detector detector;
-    // DART's ContactConstraint statics (docs/engines.md "DART" for the measurements): error reduction parameter, the
-    // cap on the velocity it may give, constraint force mixing, and the penetration allowed before erp acts.
+    // DART's ContactConstraint statics (docs/contributing/engines.md "DART" for the measurements): error reduction
+    // parameter, the cap on the velocity it may give, constraint force mixing, and the penetration allowed before erp acts.
     double erp, erv, cfm, allowance;
     FailureLimits limits;  // slide_limit, penetration_limit (run_monitor.hpp)
     bool moving_supports;
 };
 
-// DART's defaults for the four statics, kept (docs/engines.md "DART": measured on the parapet and the VSSWs).
+// DART's defaults for the four statics, kept (docs/contributing/engines.md "DART": measured on the parapet and the VSSWs).
 constexpr double kDefaultErp = 0.01, kDefaultErv = 1e-3, kDefaultCfm = 1e-5, kDefaultAllowance = 0.0;
 
 // Ranges (SettingDescription::lo/hi). erp is a share in [0, 1]. cfm: DART clamps values below 1e-9 to 1e-9 (with a
@@ -329,13 +329,13 @@ class DartEngine final : public Engine {
 public:
     std::string name() const override { return "dart"; }
     std::string display_name() const override { return "DART"; }
-    // At 1 ms, the Fig. 6 VSSW (the parapet: 1.1e-2), docs/engines.md "DART".
+    // At 1 ms, the Fig. 6 VSSW (the parapet: 1.1e-2), docs/contributing/engines.md "DART".
     double cost_per_simulated_second() const override { return 3.4e-2; }
     std::string version() const override { return fmt::format("DART {}", DART_VERSION); }
     EngineSettings default_settings() const override {
         EngineSettings s;
-        // Measured (docs/engines.md "DART"): 1 ms meets every target of the cross-engine suite and `vssw bench`;
-        // the period error is first order in the step, as Bullet's and ODE's (the same symplectic Euler).
+        // Measured (docs/contributing/engines.md "DART"): 1 ms meets every target of the cross-engine suite and `vssw
+        // bench`; the period error is first order in the step, as Bullet's and ODE's (the same symplectic Euler).
         s.dt = 1e-3;
         s.iterations = 0;
         return s;

@@ -2,9 +2,9 @@
 # /usr/include; not by dart.pc, which forces -std=c++11, puts /usr/include/dart on the include path and lacks libraries.
 # DART's Bullet detector is never linked: it is Debian's single-precision Bullet, which aborted beside the Bullet
 # adapter's double precision in one process. Its headers stay inside dart/dart_engine.cpp (about a minute to compile),
-# as system headers, compiled as C++17 (docs/engines.md "DART"). Optional: without it the build goes on and says so.
-# Its packages: DART, its ODE collision detector, and ikfast, which dart/dart.hpp needs though libdart-dev does not
-# depend on it. Heavy: libdart-dev pulls libboost-all-dev, about 108 packages and 224 MB installed.
+# as system headers, compiled as C++17 (docs/contributing/engines.md "DART"). Optional: without it the build goes on and
+# says so. Its packages: DART, its ODE collision detector, and ikfast, which dart/dart.hpp needs though libdart-dev does
+# not depend on it. Heavy: libdart-dev pulls libboost-all-dev, about 108 packages and 224 MB installed.
 vssw_engine(NAME dart DISPLAY "DART" ORDER 60 LIBRARY libdart.so
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#E69F00"  # orange (Okabe-Ito)

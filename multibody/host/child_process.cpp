@@ -72,7 +72,7 @@ void write_all(int fd, const char* data, std::size_t size) {
 // them. An answer can be large (a task's rows; the suite once sent whole trajectories); received into ordinary heap
 // pages, which the other threads' children share copy-on-write, every page written would fault, and in a
 // multi-threaded process each such fault flushes the other cores' TLBs (measured: most of the cost of a worker
-// process when answers were trajectories; docs/engines.md, "ODE").
+// process when answers were trajectories; docs/contributing/engines.md, "ODE").
 class ReceiveBuffer {
 public:
     ReceiveBuffer() = default;

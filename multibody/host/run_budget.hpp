@@ -1,12 +1,12 @@
 #pragma once
-// The CPU time one engine run may take before it fails (docs/engines.md "Isolation": a Simbody setting once made a run
-// go on forever). Each engine run is a forked child (isolated_engine.hpp) whose CPU time the kernel limits
+// The CPU time one engine run may take before it fails (docs/contributing/engines.md "Isolation": a Simbody setting once
+// made a run go on forever). Each engine run is a forked child (isolated_engine.hpp) whose CPU time the kernel limits
 // (RLIMIT_CPU): past the budget it is stopped and the run fails with a message naming the budget; the program goes on.
 //
 // The default grows with the run's steps, t_end / dt: kBaseSeconds for setting up and ending a run, plus
 // kSecondsPerStep for each step, ten times the slowest engine's measured cost per step (Simbody's rigid route,
-// 189 ms per simulated second at its 0.5 ms step: 95 us a step; docs/engines.md). A Fig. 6 free vibration at ODE's 1 ms
-// step (2,000 steps) may take 32 s; a 40 s record at 1 ms, 70 s. `--run-budget SECONDS` replaces the default.
+// 189 ms per simulated second at its 0.5 ms step: 95 us a step; docs/contributing/engines.md). A Fig. 6 free vibration at
+// ODE's 1 ms step (2,000 steps) may take 32 s; a 40 s record at 1 ms, 70 s. `--run-budget SECONDS` replaces the default.
 #include <optional>
 #include <string>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Work in a forked child of its own, its answer sent back through a pipe, its errors rethrown as their own types: how
 // each engine library's run is isolated (isolated_engine.hpp). The results are those of the same work in the
-// caller's process; what it costs more is a fork (docs/engines.md, "Isolation").
+// caller's process; what it costs more is a fork (docs/contributing/engines.md, "Isolation").
 #include <functional>
 #include <string>
 #include <string_view>

@@ -1,8 +1,8 @@
 #pragma once
-// Rounded corners in the engines' scenes (docs/engines.md, "Rounded corners"): every corner of every block rounded to
-// the scene's radius r (WallScene::corner_radius), the blocks' masses, inertias and centres kept the rectangles' (the
-// model's m_i and I_G,i: the corners removed are (4 - pi) r^2 of a block's 4 b h, 2e-4 of a Table 1 block at
-// r/b = 0.1), the roller's guides still holding the nominal top corner (a point of the block, not of its outline).
+// Rounded corners in the engines' scenes (docs/contributing/engines.md, "Rounded corners"): every corner of every block
+// rounded to the scene's radius r (WallScene::corner_radius), the blocks' masses, inertias and centres kept the
+// rectangles' (the model's m_i and I_G,i: the corners removed are (4 - pi) r^2 of a block's 4 b h, 2e-4 of a Table 1 block
+// at r/b = 0.1), the roller's guides still holding the nominal top corner (a point of the block, not of its outline).
 #include <string>
 
 #include "multibody/engine.hpp"

@@ -1,7 +1,7 @@
 #pragma once
-// Whether an engine's step can see what it is asked to simulate (docs/engines.md "Isolation": ODE at --dt 0.5 under a
-// 0.5 s sine pulse sampled the pulse only where it is zero and reported "ok, peak 0"; at --dt 1000 every engine did). A
-// step is refused, as bad input naming both time scales, when it is longer than
+// Whether an engine's step can see what it is asked to simulate (docs/contributing/engines.md "Isolation": ODE at --dt
+// 0.5 under a 0.5 s sine pulse sampled the pulse only where it is zero and reported "ok, peak 0"; at --dt 1000 every
+// engine did). A step is refused, as bad input naming both time scales, when it is longer than
 //  - a tenth of the wall's own time scale alpha / theta1'_r (1 / p for a parapet, p = sqrt(3 g / 4 R): 0.325 s for
 //    the Fig. 6 VSSW, 26 ms for a 1 cm specimen), so that a rocking half-cycle spans tens of steps; or
 //  - half the ground motion's time scale T_g, so that each rise and fall of the ground acceleration is seen by at

@@ -1,14 +1,14 @@
 # MuJoCo 2.2.2 (Debian libmujoco-dev). Found by its header and library, not by its CMake package: Debian's
 # mujoco-config.cmake lists /usr/include/libqhull_r among mujoco::mujoco's include directories, which only
 # libqhull-dev installs (libmujoco-dev does not depend on it), and find_package stops with "includes non-existent
-# path" without it (docs/engines.md "The libraries as Debian ships them"): setup.sh installs both. Optional: without
-# it the build goes on.
+# path" without it (docs/contributing/engines.md "The libraries as Debian ships them"): setup.sh installs both.
+# Optional: without it the build goes on.
 vssw_engine(NAME mujoco DISPLAY "MuJoCo" ORDER 70 LIBRARY libmujoco
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#332288"  # indigo (Paul Tol's colour-blind safe "muted" set; Okabe-Ito has no hue left)
   MARKER 2 2        # cross (no filled form)
   # The step with semi-implicit Euler (the default; the contacts' time constant follows it, solref_steps), and RK4
-  # at the default step (docs/engines.md "MuJoCo": the parapet's period to -0.002 %).
+  # at the default step (docs/contributing/engines.md "MuJoCo": the parapet's period to -0.002 %).
   BENCH "dt={dt}: dt 1e-3 5e-4 2e-4 1e-4"
   BENCH "dt={dt} integrator=rk4: integrator 1"
   DEBIAN libmujoco-dev libqhull-dev

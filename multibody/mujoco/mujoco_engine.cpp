@@ -11,20 +11,20 @@
 //  - contacts: only the pairs the wall can touch, declared as <pair>s (every geom's contype and conaffinity are 0):
 //    ground-lower (box-plane: the corners), the upper block's bottom-corner spheres on the lower block's face box
 //    (the hinge; flush box-box contact is broken in 2.2.2, below) with friction, and (VSSW only) the roller;
-//  - the roller, one-sided as in the other adapters (docs/engines.md "Bullet"): a tiny sphere at each top corner of
-//    the upper block, set in by its radius so that its outer point is the corner's line, against a frictionless
-//    (condim 1) plane at x = +b (normal -x) and one at x = -b (normal +x). Both guides are in every step; a sphere
-//    inside its line is a contact that is not active. Sphere-plane distances are exact to rounding at any depth;
+//  - the roller, one-sided as in the other adapters (docs/contributing/engines.md "Bullet"): a tiny sphere at each top
+//    corner of the upper block, set in by its radius so that its outer point is the corner's line, against a frictionless
+//    (condim 1) plane at x = +b (normal -x) and one at x = -b (normal +x). Both guides are in every step; a sphere inside
+//    its line is a contact that is not active. Sphere-plane distances are exact to rounding at any depth;
 //  - N: a force and its moment about the centre of mass (xfrc_applied), the force acting at the centre of the top
 //    face, set every step;
 //  - ground motion: pseudo-forces, the x component of gravity set to -a_h at each step's midpoint (a uniform field:
 //    -m a_h at every centre of mass). No moving supports: MuJoCo's planes must be static, and a mocap ground moves
-//    without a velocity the contacts would see (docs/engines.md "MuJoCo").
+//    without a velocity the contacts would see (docs/contributing/engines.md "MuJoCo").
 //
 // Contact: MuJoCo's contacts are soft (a spring-damper reference acceleration, solref, mixed with the constraint by
 // an impedance, solimp). At its defaults (solref 0.02 s, solimp 0.9/0.95) a rocking block loses 5.5 % too much
 // velocity at each impact, whatever the step; with the time constant at 2 dt (the smallest MuJoCo accepts: its
-// refsafe floor) and the impedance near 1 the impacts are those of rigid bodies (docs/engines.md "MuJoCo").
+// refsafe floor) and the impedance near 1 the impacts are those of rigid bodies (docs/contributing/engines.md "MuJoCo").
 #include "multibody/mujoco/mujoco_engine.hpp"
 
 #include <mujoco/mujoco.h>
@@ -86,7 +86,7 @@ constexpr double kRollerSphereRadius = 1e-6;
 // MuJoCo 2.2.2's box-box contact kicked the flush blocks at random (a trial's wall launched upwards at 1 m/s in its
 // third step), and its sphere-box distance stops at minus the radius once the centre is inside the box, so the radius
 // must exceed every penetration (about 1e-5 m at rest, 1e-4 m in an impact at 1 ms). The rounding is a bias: 1 mm gave
-// a period -1.5 % off on T1 #14 at xi 0.5 flying off the roller (0.2 mm: -0.31 %), docs/engines.md "MuJoCo".
+// a period -1.5 % off on T1 #14 at xi 0.5 flying off the roller (0.2 mm: -0.31 %), docs/contributing/engines.md "MuJoCo".
 constexpr double kHingeSphereRadius = 2e-4;
 
 struct Knobs {
@@ -306,11 +306,11 @@ public:
     MujocoEngine() { ensure_handlers(); }
     std::string name() const override { return "mujoco"; }
     std::string display_name() const override { return "MuJoCo"; }
-    double cost_per_simulated_second() const override { return 7.5e-3; }  // at 1 ms, docs/engines.md "MuJoCo"
+    double cost_per_simulated_second() const override { return 7.5e-3; }  // at 1 ms, docs/contributing/engines.md "MuJoCo"
     std::string version() const override { return fmt::format("MuJoCo {}", mj_versionString()); }
     EngineSettings default_settings() const override {
         EngineSettings s;
-        s.dt = 1e-3;  // docs/engines.md "MuJoCo": every target met at 1 ms, errors first order in the step
+        s.dt = 1e-3;  // docs/contributing/engines.md "MuJoCo": every target met at 1 ms, errors first order in the step
         s.iterations = kDefaultIterations;
         return s;
     }

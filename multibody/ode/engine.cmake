@@ -1,5 +1,5 @@
 # ODE 0.16.2 (Debian's build is double precision; pkg-config ode). Its headers define a macro dNaN that breaks
-# Simbody's: they stay inside ode/ode_engine.cpp (docs/engines.md "The libraries as Debian ships them").
+# Simbody's: they stay inside ode/ode_engine.cpp (docs/contributing/engines.md "The libraries as Debian ships them").
 vssw_engine(NAME ode DISPLAY "ODE" ORDER 20 LIBRARY libode.so
   CONTACT_SCHEME "impulse stepping"
   COLOUR "#D55E00"  # vermillion (Okabe-Ito)

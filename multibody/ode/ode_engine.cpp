@@ -13,9 +13,9 @@
 //    points for box-box, turned into planar contact joints each step (add_pair), speculative within `margin`;
 //  - the roller (VSSW only): a frictionless contact joint between the upper block and the ground (body 0, or the
 //    kinematic ground) at the top corner on the pivot's side, holding x <= +b (right corner) or x >= -b (left);
-//    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards; docs/engines.md,
-//    "Bullet"). Only the guide whose corner is further out is given to the solver (Bullet gives both: with one,
-//    its xi 0.5 restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target, docs/engines.md "ODE");
+//    y is free. A guide surface cannot be the roller (the face below the held corner leans outwards; docs/contributing/engines.md,
+//    "Bullet"). Only the guide whose corner is further out is given to the solver (Bullet gives both: with one, its xi 0.5
+//    restitution was up to 2.8 % low; ODE with one meets every `vssw bench` target, docs/contributing/engines.md "ODE");
 //  - rounded corners (corner radius r > 0): each box is its block's flat part, b - r wide, with capsules of radius r
 //    along the depth at the arcs' centres (add_rounding), the base ones on the ground, each top one of the lower
 //    block on the upper block's bottom one of its side; the masses stay the rectangles';
@@ -145,7 +145,7 @@ struct Knobs {
 
 // The largest contact gap (margin, surface_layer) a setting may give, 1 m: five times the Fig. 6 wall's half
 // thickness, a thousand times the default margin. A margin of 1e300 m made ODE's collision normalise a vector of
-// infinities and abort the process (assertion in dxNormalize4; docs/engines.md "Isolation").
+// infinities and abort the process (assertion in dxNormalize4; docs/contributing/engines.md "Isolation").
 constexpr double kMaxContactGap = 1.0;
 
 // Ranges (SettingDescription::lo/hi): erp and cfm are fractions in ODE's own terms (ODE's manual: erp in [0, 1]; a
@@ -406,11 +406,11 @@ private:
 
     // The roller: a frictionless contact between the upper block and the ground at the top corner on the pivot's
     // side, normal (-side, 0, 0) pointing back into the allowed side. Only the guide whose corner is further out is
-    // given to the solver (docs/engines.md, "Bullet": switching by the sign of theta1 let the free corner drift at
-    // rest, both at once made a redundant loop near theta1 = 0). It is given every step, speculative while its corner
-    // is inside the line: the solver lets the corner reach the line within the step and no further, so the roller
-    // engages in the very step the guides switch sides at an impact (measured on the Fig. 6 VSSW at 0.05 ms: in the
-    // impact step the new guide's corner starts within 1e-10 m of its line and the guide takes its share of the
+    // given to the solver (docs/contributing/engines.md, "Bullet": switching by the sign of theta1 let the free corner
+    // drift at rest, both at once made a redundant loop near theta1 = 0). It is given every step, speculative while its
+    // corner is inside the line: the solver lets the corner reach the line within the step and no further, so the
+    // roller engages in the very step the guides switch sides at an impact (measured on the Fig. 6 VSSW at 0.05 ms: in
+    // the impact step the new guide's corner starts within 1e-10 m of its line and the guide takes its share of the
     // impulse).
     void add_roller() {
         const double b = sizes_.b, x0 = top_body_ ? dBodyGetPosition(top_body_)[0] : ground_x();
@@ -487,9 +487,9 @@ public:
         // analytic model's bisection bracket at every step (1e-4; with a bracket of 1e-6 they are within 1.6e-6 of
         // Eq. 12 at 1 ms: the direct solver holds a wall at rest exactly); period errors are first order, -0.07 to
         // -0.19 % at 1 ms, -0.015 to -0.038 % at 0.2 ms, -0.004 to -0.009 % at 0.05 ms. 1 ms meets every target
-        // in `vssw bench` and on the full validation suite (docs/engines.md "Defaults, by measurement") for a fifth of
-        // 0.2 ms's cost. The error grows as dt over the period: a wall much smaller (faster) than Table 1's needs a
-        // smaller step (docs/engines.md, "ODE"). It is also the Bullet adapter's step.
+        // in `vssw bench` and on the full validation suite (docs/contributing/engines.md "Defaults, by measurement")
+        // for a fifth of 0.2 ms's cost. The error grows as dt over the period: a wall much smaller (faster) than Table
+        // 1's needs a smaller step (docs/contributing/engines.md, "ODE"). It is also the Bullet adapter's step.
         s.dt = 1e-3;
         s.iterations = 0;  // the direct solver has none; dWorldQuickStep (quickstep = 1) takes 20 unless set
         return s;

@@ -1,8 +1,8 @@
 # Siconos 4.4 kernel (Debian libsiconos-kernel-dev: kernel and numerics). Found by its headers and libraries, not by
 # its CMake package: Debian's siconos-config.cmake fails unless the `siconos` Python front end (and numpy) is installed
 # too. Only the kernel and numerics are linked: libsiconos_mechanics links Debian's single-precision Bullet, whose
-# symbols have the same names as the double-precision Bullet of the Bullet adapter (docs/engines.md "The libraries as
-# Debian ships them"). Optional: without it the build goes on with the other engines and says so.
+# symbols have the same names as the double-precision Bullet of the Bullet adapter (docs/contributing/engines.md "The
+# libraries as Debian ships them"). Optional: without it the build goes on with the other engines and says so.
 vssw_engine(NAME siconos DISPLAY "Siconos" ORDER 40 LIBRARY libsiconos_kernel
   CONTACT_SCHEME "Moreau-Jean"
   COLOUR "#CC79A7"  # reddish purple (Okabe-Ito)

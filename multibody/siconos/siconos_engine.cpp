@@ -20,7 +20,7 @@
 // Impacts: Newton's law at each contact, e = 0 by default (the plastic landing of every other adapter), so a landing is
 // the plastic impact of the whole new mechanism (pivot, hinge, roller; docs/guide/report.md "The validation report",
 // --impact whole-mechanism). Settings e_ground, e_hinge and e_roller set the coefficient per kind of contact
-// (docs/engines.md, "Siconos").
+// (docs/contributing/engines.md, "Siconos").
 //
 // Time stepping: Moreau-Jean (theta-method on the smooth part, impulses over the step; a contact joins the step's
 // problem when its gap predicted half a step ahead closes). The one-step problem is a 2-D frictional contact problem
@@ -28,7 +28,7 @@
 // Siconos 4.4's EventDriven and LsodarOSI on the Fig. 6 parapet, frictional contacts are refused ("LsodarOSI::
 // initializeWorkVectorsForInteraction not yet implemented for nonsmooth law of type NewtonImpactFrictionNSL"), and
 // frictionless ones (a block that would slide) stop at the first event ("output[2] and lambda[2] ... must be
-// nonnegative"; docs/engines.md, "Siconos").
+// nonnegative"; docs/contributing/engines.md, "Siconos").
 #include "multibody/siconos/siconos_engine.hpp"
 
 #include <BlockVector.hpp>
@@ -175,12 +175,12 @@ private:
 };
 
 // Settings (EngineSettings::knobs), each with its default and the measurement that chose it (bench/engine_accuracy.cpp
-// over 14 walls; docs/engines.md, "Siconos").
+// over 14 walls; docs/contributing/engines.md, "Siconos").
 struct Knobs {
     // e_ground, e_hinge, e_roller (default 0): Newton's coefficient of restitution at the base corners, at the hinge
     // (the upper block's bottom corners on the lower block's top face) and at the roller's guides. 0 everywhere is the
     // plastic landing the other adapters make; the three are set apart to ask which impulses Eq. (19) leaves out
-    // (docs/engines.md, "Siconos").
+    // (docs/contributing/engines.md, "Siconos").
     double e_ground, e_hinge, e_roller;
     // theta (default 0.5): Moreau-Jean's theta-method weight on the smooth forces. 0.5 (the trapezoidal rule) keeps
     // the energy of the free flights between impacts; 1 is implicit Euler, which damps them.

@@ -4,8 +4,8 @@
 // Stribeck friction; Simbody 3.7's CompliantContactSubsystem.cpp and ContactTracker.cpp, HalfSpaceSphere), evaluated
 // directly. Why: the subsystem re-pairs every surface with every other through ContactTrackerSubsystem at each
 // evaluation (cliques, type dispatch, cache entries behind dynamic_cast) though in a two-block planar wall the pairs
-// never change; measured share of the run time in docs/engines.md "Simbody (3.7)". Includes <Simbody.h>: only the
-// Simbody adapter's files may include this header.
+// never change; measured share of the run time in docs/contributing/engines.md "Simbody (3.7)". Includes <Simbody.h>:
+// only the Simbody adapter's files may include this header.
 #include <Simbody.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 # Simbody 3.7 (find_package(Simbody) CONFIG; its simbody.pc forces -std=c++11, so not pkg-config). Its headers do not
 # compile as C++20 with GCC 12 and must never meet ODE's (dNaN): they stay inside simbody/ (its two .cpp files and
-# simbody_wall.hpp, which only they include), compiled as C++17 (docs/engines.md "The libraries as Debian ships them").
-# One plugin for two routes (simbody_plugin.cpp): simbody, compliant contact, and simbody-rigid.
+# simbody_wall.hpp, which only they include), compiled as C++17 (docs/contributing/engines.md "The libraries as Debian
+# ships them"). One plugin for two routes (simbody_plugin.cpp): simbody, compliant contact, and simbody-rigid.
 vssw_engine(NAME simbody DISPLAY "Simbody" ORDER 30 LIBRARY libSimTKsimbody
   CONTACT_SCHEME "compliant"
   COLOUR "#009E73"  # bluish green (Okabe-Ito)

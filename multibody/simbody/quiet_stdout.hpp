@@ -17,8 +17,8 @@ namespace vssw::multibody {
 //  - the C stream `stdout` (glibc documents it as an assignable variable) is pointed at /dev/null opened READ-only:
 //    printf, puts and putchar on a stream not open for writing return EOF before formatting anything (glibc's
 //    check of _IO_NO_WRITES). Redirecting only the file descriptor, as before, let printf format every line and
-//    throw it away: 21 % of the rigid route's instructions on a Fig. 6 VSSW free vibration (docs/engines.md
-//    "Simbody (3.7)", where the time goes);
+//    throw it away: 21 % of the rigid route's instructions on a Fig. 6 VSSW free vibration
+//    (docs/contributing/engines.md "Simbody (3.7)", where the time goes);
 //  - file descriptor 1 goes to /dev/null as well, for anything written to it directly.
 // All three are restored, and what was buffered flushed, when the last run ends, normally or not.
 // This is process-wide state, so it is counted: runs on several threads at once (vssw report) share one silence,

@@ -125,14 +125,14 @@ Knobs read_knobs(const EngineSettings& s) {
     // interpolated reports the Fig. 6 VSSW's quarter-period error at reporting intervals 4 / 2 / 1 / 0.5 ms is
     // 4.1e-4 / 1.16e-4 / 8.4e-5 / 3.3e-5 at 3e-6 (the same as 1e-6: the sampling's), but 4.1e-4 / 1.15e-4 / 1.58e-4 /
     // 3.8e-5 at 1e-5: the integrator's error shows, and the error no longer falls with the interval. 1e-4 drifts
-    // (theta1 0.0167 rad instead of 0.0092 after 2 s of free vibration). Cost per accuracy: docs/engines.md "Simbody
-    // (3.7)". `vssw bench` finds 1e-5 the cheapest accuracy within every target (0.51 against 0.58 s of CPU at 1e-6 on
-    // the Fig. 6 free vibration), but there the quarter-period error rises as the reporting interval falls from 4 to 1
-    // ms (1.15e-4 at 2 ms, 1.58e-4 at 1 ms: CrossEngine.QuarterPeriodErrorFallsAsTheStepFalls fails with 1 ms reports).
-    // With the 2 ms reports (the default since 2026-11-25) that test holds at 1e-5 (8.1e-4, 4.1e-4, 1.6e-4 at 8, 4, 2
-    // ms), but 1e-5 bought no clear saving: the default report 0.94 of the CPU, the free vibration of the Fig. 6 VSSW
-    // 1.05 (both hyperfine, paired; docs/engines.md), and its error is then the sampling's size (1.6e-4 against
-    // 1.1e-4 at 3e-6). It stays 3e-6.
+    // (theta1 0.0167 rad instead of 0.0092 after 2 s of free vibration). Cost per accuracy: docs/contributing/engines.md
+    // "Simbody (3.7)". `vssw bench` finds 1e-5 the cheapest accuracy within every target (0.51 against 0.58 s of CPU at
+    // 1e-6 on the Fig. 6 free vibration), but there the quarter-period error rises as the reporting interval falls from
+    // 4 to 1 ms (1.15e-4 at 2 ms, 1.58e-4 at 1 ms: CrossEngine.QuarterPeriodErrorFallsAsTheStepFalls fails with 1 ms
+    // reports). With the 2 ms reports (the default since 2026-11-25) that test holds at 1e-5 (8.1e-4, 4.1e-4, 1.6e-4 at
+    // 8, 4, 2 ms), but 1e-5 bought no clear saving: the default report 0.94 of the CPU, the free vibration of the Fig. 6
+    // VSSW 1.05 (both hyperfine, paired; docs/contributing/engines.md), and its error is then the sampling's size
+    // (1.6e-4 against 1.1e-4 at 3e-6). It stays 3e-6.
     k.accuracy = r.positive("accuracy", 3e-6);
     // integrator 1 (CPodes, BDF): the contacts are stiff (friction slope mu N / vt); Runge-Kutta-Merson took 881k
     // steps and 141 s for a 3.6 s free vibration of the Fig. 6 VSSW (E 1e13, r 1e-3), CPodes 13k steps and 0.9 s, with
@@ -140,11 +140,11 @@ Knobs read_knobs(const EngineSettings& s) {
     k.integrator = r.choice("integrator", 1, 2);
     // contact_subsystem 0: the corner pairs evaluated directly (corner_contacts.hpp), Simbody's force law without
     // its contact tracking; 1 keeps CompliantContactSubsystem + ContactTrackerSubsystem (the former route, kept to
-    // check the two against each other: multibody/simbody/tests/test_simbody.cpp). Cost and agreement in docs/engines.md
-    // "Simbody (3.7)".
+    // check the two against each other: multibody/simbody/tests/test_simbody.cpp). Cost and agreement in
+    // docs/contributing/engines.md "Simbody (3.7)".
     k.contact_subsystem = r.flag("contact_subsystem");
     // interpolate 1 (was 0): a report no longer ends a step, so the integrator is not held to 1 ms steps where the
-    // wall is at rest or in flight, and the samples are CPodes' own interpolant, of the method's order. Cost: docs/engines.md "Simbody".
+    // wall is at rest or in flight, and the samples are CPodes' own interpolant, of the method's order. Cost: docs/contributing/engines.md "Simbody".
     k.interpolate = r.choice("interpolate", 1, 2) == 1;
     k.limits = FailureLimits::read(r);
     require(k.accuracy < 1.0, std::string(kName) + " setting accuracy", "below 1", k.accuracy);

@@ -26,7 +26,7 @@
 //
 // Impacts: the stepper resolves an impact at the start of the step in which a contact is proximal and closing, with
 // every proximal contact at once (Simultaneous), coefficient of restitution 0 everywhere: the plastic impact of the
-// whole new mechanism, like ODE's LCP (docs/engines.md, "ODE"), not Eq. (19), which assumes no impulse at the roller.
+// whole new mechanism, like ODE's LCP (docs/contributing/engines.md, "ODE"), not Eq. (19), which assumes no impulse at the roller.
 //
 // Defaults, each measured (vssw compare, bench/engine_accuracy.cpp; numbers in the comments where they are set).
 #include "multibody/simbody/simbody_engine.hpp"
@@ -256,7 +256,7 @@ private:
     SimTK::State state_;
 };
 
-// One class for both routes: `simbody` (compliant contact, simbody_compliant.cpp; the default, docs/engines.md
+// One class for both routes: `simbody` (compliant contact, simbody_compliant.cpp; the default, docs/contributing/engines.md
 // "Simbody" for why) and `simbody-rigid` (this file's rigid contact), each with its own defaults.
 class SimbodyEngine final : public Engine {
 public:
@@ -280,8 +280,8 @@ public:
         // Simbody a realization of the interpolated state through accelerations inside stepTo, so halving the reports
         // cut the Fig. 6 VSSW's free vibration from 78 to 65 ms per simulated second, while every wall of
         // vssw_engine_accuracy stays as far inside the targets as at 1 ms (period within 1.1e-4, restitution within
-        // 0.39 % of the whole mechanism's; docs/engines.md "Simbody (3.7)"). Rigid: the step; constraint_tol's
-        // comment: the restitution is converged from 0.5 ms down.
+        // 0.39 % of the whole mechanism's; docs/contributing/engines.md "Simbody (3.7)"). Rigid: the step;
+        // constraint_tol's comment: the restitution is converged from 0.5 ms down.
         s.dt = compliant_ ? 2e-3 : 5e-4;
         s.iterations = 0;  // neither route has iterations to set
         return s;

@@ -109,7 +109,7 @@ def test_an_engines_arrays_are_the_numbers_vssw_compare_measures(cli):
 def test_every_backend_gives_a_trajectory():
     for engine in vssw.engines():
         if engine == "simbody-rigid":
-            continue  # Simbody's second route: minutes per run (docs/engines.md)
+            continue  # Simbody's second route: minutes per run (docs/contributing/engines.md)
         r = vssw.simulate(engine, **FIG6, theta0=0.5, t_end=0.3)
         assert r.engine == engine
         assert len(r.t) == len(r.theta1) == len(r.theta1_dot) > 10, engine
@@ -190,7 +190,7 @@ def test_engine_settings_defaults_are_numbers_within_their_ranges():
             if s["default"] is not None:
                 assert s["min"] <= s["default"] <= s["max"], (engine, s)
     ode = {s["name"]: s for s in vssw.engine_settings("ode")}
-    assert ode["dt"]["default"] == 1e-3  # the step docs/engines.md "ODE" measured its targets at
+    assert ode["dt"]["default"] == 1e-3  # the step docs/contributing/engines.md "ODE" measured its targets at
     assert ode["iterations"]["default"] is None  # ODE's direct solver takes none
 
 

@@ -130,8 +130,8 @@ def test_bounds_error_from_check_carries_the_verdicts(cli, tmp_path):
 
 
 def test_a_setting_that_crashed_the_interpreter_is_an_input_error():
-    # An ODE margin of 1e308 once aborted inside ODE and took the Python process with it (docs/engines.md "Isolation"):
-    # every knob is now checked against its documented range before the library sees it.
+    # An ODE margin of 1e308 once aborted inside ODE and took the Python process with it (docs/contributing/engines.md
+    # "Isolation"): every knob is now checked against its documented range before the library sees it.
     with pytest.raises(ValueError, match="margin.*documented range.*1e\\+308"):
         vssw.cli.compare(engine="ode", **FIG6, pulse="sine", amplitude=0.5, pulse_period=0.5, set={"margin": 1e308})
 

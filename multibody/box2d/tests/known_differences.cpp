@@ -11,7 +11,7 @@ namespace {
      "roller guide), restitution 0: the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), not "
      "Eq. (19) (0.9508), which assumes no impulse at the roller. Measured on the Fig. 6 wall: 0.8261 / 0.8276 / "
      "0.8252 at 1 / 0.5 / 0.2 ms, -13.1 % against Eq. (19), +0.11 / +0.30 / +0.01 % against the whole mechanism "
-     "(docs/engines.md \"Box2D\")."},
+     "(docs/contributing/engines.md \"Box2D\")."},
 });
 
 }  // namespace

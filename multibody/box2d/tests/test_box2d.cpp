@@ -24,12 +24,12 @@ using testing::first_impact;
 using testing::fig6_parapet;
 using testing::table1;
 
-// Box2D (multibody/box2d/box2d_engine.cpp, docs/engines.md "Box2D"): the traps the adapter handles, held where they
-// live. Suite named in lower case for `ctest -R box2d`.
+// Box2D (multibody/box2d/box2d_engine.cpp, docs/contributing/engines.md "Box2D"): the traps the adapter handles, held
+// where they live. Suite named in lower case for `ctest -R box2d`.
 //
 // The skin: Box2D rounds polygons and edges by b2_polygonRadius (1 cm) unless told otherwise, and the block then rolls
 // on rounded corners. With radius 0 the 4 x 0.4 m parapet's period is -0.072 % off at 1 ms (the step's first-order
-// error, Bullet's and ODE's figure); with Box2D's 1 cm skin +0.30 % (measured, docs/engines.md "Box2D").
+// error, Bullet's and ODE's figure); with Box2D's 1 cm skin +0.30 % (measured, docs/contributing/engines.md "Box2D").
 constexpr double kSkinlessPeriod = 1.5e-3;  // twice the measured -0.072 %, half the skin's +0.30 %
 constexpr double kSkinBias = 2.0e-3;        // two thirds of the skin's measured +0.30 %: the bias is there
 

@@ -11,7 +11,7 @@ namespace {
      "plastic: the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which "
      "assumes no impulse at the roller. Measured on the Fig. 6 wall at 1 ms, 10 iterations: 0.820 "
      "(-13.8 % against Eq. (19), -0.6 % against the whole mechanism; -0.02 % at 0.2 ms), unchanged by iterations "
-     "10 to 200 (docs/engines.md \"Bullet\")."},
+     "10 to 200 (docs/contributing/engines.md \"Bullet\")."},
 });
 
 }  // namespace

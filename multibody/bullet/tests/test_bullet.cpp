@@ -26,7 +26,7 @@ using testing::table1;
 
 // Bullet's restitution once missed the whole-mechanism impact by 5-6 % on the Table 1 walls at xi 0.5 and did not
 // settle as the step fell on Fig. 6 (+0.2, -2.3, -2.3, -0.4 % at 1, 0.5, 0.2, 0.1 ms): contacts found a step late and
-// pushed out through the velocity (docs/engines.md "Bullet"). Held here on those walls and steps.
+// pushed out through the velocity (docs/contributing/engines.md "Bullet"). Held here on those walls and steps.
 TEST(BulletRestitution, Table1WallsUnderHeavyOverburdenTakeTheWholeMechanismImpact) {
     if (!engine_available("bullet")) GTEST_SKIP() << "Bullet is not compiled in";
     const auto engine = multibody::make_engine("bullet");
@@ -50,8 +50,8 @@ TEST(BulletRestitution, Fig6WallTakesTheWholeMechanismImpactAtEveryStep) {
 
 // Bullet's friction rows leave an applied force's torque out of the velocity they hold, so N applied as a force made
 // the hinge slide every step and lose energy, first order in the step: off the roller (Table 1 #14, xi 0.5, from
-// 0.8 alpha1) the period was +3.16 % at 1 ms against the unilateral roller's model (docs/engines.md "Bullet"). With N
-// as an impulse it is -0.063 %, ODE's figure; held at the 1 ms step explicitly, whatever the default.
+// 0.8 alpha1) the period was +3.16 % at 1 ms against the unilateral roller's model (docs/contributing/engines.md
+// "Bullet"). With N as an impulse it is -0.063 %, ODE's figure; held at the 1 ms step explicitly, whatever the default.
 TEST(BulletOffRoller, OverburdenTorqueDoesNotSlideTheHingeAtOneMillisecond) {
     if (!engine_available("bullet")) GTEST_SKIP() << "Bullet is not compiled in";
     const multibody::WallScene scene = multibody::WallScene::of(make_vssw(table1(14), 0.5));

@@ -11,7 +11,7 @@ namespace {
      "on its guide at once, restitution 0: the plastic impact of the whole new mechanism (0.8252 on the Fig. 6 wall), "
      "not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured on the Fig. 6 wall: 0.8262 / 0.8275 / "
      "0.8258 at 1 / 0.5 / 0.2 ms, -13.1 % against Eq. (19), +0.13 / +0.28 / +0.08 % against the whole mechanism "
-     "(docs/engines.md \"DART\")."},
+     "(docs/contributing/engines.md \"DART\")."},
 });
 
 }  // namespace

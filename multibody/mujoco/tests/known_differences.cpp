@@ -9,12 +9,12 @@ namespace {
     {"mujoco", kCannotMoveSupports,
      "The MuJoCo adapter applies the ground motion as pseudo-forces only (gravity's x component): MuJoCo 2.2.2 allows "
      "planes only in static bodies, and a mocap ground moves without a velocity its contacts would see "
-     "(docs/engines.md \"MuJoCo\")."},
+     "(docs/contributing/engines.md \"MuJoCo\")."},
     {"mujoco", "VsswRestitution",
      "MuJoCo's solver resolves the landing with the new pivot, the hinge corners and the roller at once (soft "
      "contacts at 2 dt, impedance 0.99-0.999): the whole new mechanism's plastic impact (0.8252 on the Fig. 6 wall), "
      "not Eq. (19) (0.9508). Measured on the Fig. 6 wall at 1 ms: 0.8299, -12.7 % against Eq. (19), +0.58 % against "
-     "the whole mechanism (docs/engines.md \"MuJoCo\")."},
+     "the whole mechanism (docs/contributing/engines.md \"MuJoCo\")."},
 });
 
 }  // namespace

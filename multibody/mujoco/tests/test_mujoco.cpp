@@ -45,7 +45,7 @@ TEST(mujoco, StiffContactGivesHousnersImpactWhereMujocosDefaultContactDoesNot) {
     s.knobs["solref_steps"] = 0.02 / s.dt;  // MuJoCo's default time constant, 0.02 s
     s.knobs["solimp_dmin"] = 0.9;
     s.knobs["solimp_dmax"] = 0.95;
-    constexpr double kDefaultContactLoss = -0.04;  // measured -5.5 % (docs/engines.md "MuJoCo"); beyond the target
+    constexpr double kDefaultContactLoss = -0.04;  // measured -5.5 % (docs/contributing/engines.md "MuJoCo"); beyond the target
     EXPECT_LT(mujoco_amplitude_restitution(*engine, s), kDefaultContactLoss);
 }
 

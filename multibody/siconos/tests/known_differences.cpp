@@ -19,7 +19,7 @@ namespace {
      "pivot, hinge corner, roller guide) in one frictional contact problem: the plastic impact of the whole new "
      "mechanism (0.8252 on the Fig. 6 wall), not Eq. (19) (0.9508), which assumes no impulse at the roller. Measured "
      "on the Fig. 6 wall: 0.8242 / 0.8246 at 1 / 0.2 ms, -13.3 % against Eq. (19), -0.12 % / -0.07 % against the "
-     "whole mechanism; no choice of Newton coefficients per contact reaches Eq. (19) (docs/engines.md \"Siconos\")."},
+     "whole mechanism; no choice of Newton coefficients per contact reaches Eq. (19) (docs/contributing/engines.md \"Siconos\")."},
 });
 
 }  // namespace

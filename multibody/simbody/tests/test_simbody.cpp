@@ -27,7 +27,7 @@ using testing::fmt_scene;
 // two sum the same forces in a different order and take different integrator steps from there, so they agree to the
 // integrator's accuracy (1e-5), not to rounding. Measured at the defaults: period 6e-6, restitution 5e-5 (Fig. 6
 // VSSW), both 1e-7 (parapet); a change of the law shows far above the bounds (a dissipation of 100 instead of
-// 1000 s/m moves the Fig. 6 restitution by 1.3 %, docs/engines.md).
+// 1000 s/m moves the Fig. 6 restitution by 1.3 %, docs/contributing/engines.md).
 constexpr double kSameLawPeriod = 5e-5;       // about 10x the measured difference, 1e-4 of the period target
 constexpr double kSameLawRestitution = 5e-4;  // 10x the measured difference, 1/40 of the restitution target
 
