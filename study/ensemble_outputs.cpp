@@ -203,6 +203,8 @@ io::PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const
     s.dat = "# " + io::gp_comment(s.plot.title) + "\n";
     std::string gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
                      io::gp_xlabel("alpha [rad]", !layout.multiplot()) + "set ylabel 'peak |theta1| / alpha1'\n" +
+                     // Room above 1, where an overturned median's ring sits, so the frame does not cut it.
+                     "set offsets 0, 0, graph 0.08, 0\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
