@@ -180,7 +180,8 @@ std::string report_footer() {
     return
         "Writes into --out: report.md and report.html (the same content; the HTML is self-contained, plots inline),\n"
         "results.json, metrics.csv, failures.csv, traces.csv and plots/ (gnuplot .svg, with the .gp script and .dat\n"
-        "data beside each: trace_<case>, error_<metric>, step_<metric>). rel_error = engine / reference - 1; "
+        "data beside each: trace_<case>, error_<metric>, step_<metric>). error: engine / reference - 1\n"
+        "(rms_difference: the RMS difference over the analytic peak; overturned: engine - reference, 0 or +-1); "
         "targets:\n" +
         fmt::format("threshold {:g} %, period {:g} %, restitution {:g} %; under records (earthquake/), run by run\n"
                     "against the reference: the median ln(peak / reference's) where both stand within +-{:g}, and\n"
@@ -190,10 +191,10 @@ std::string report_footer() {
                     validation::kOverturningAgreementTarget) +
         "results.json keys: vssw {commit, report_format}, date, suite {name, walls, records, cases [{id, kind, wall,\n"
         "r, record, dt}]}, engines [{name, version, contact_scheme, settings {dt, iterations (where set), knobs}}],\n"
-        "targets, rows [{case_id, engine, metric, unit, reference, analytic, engine_value, rel_error, target,\n"
+        "targets, rows [{case_id, engine, metric, unit, reference, analytic, engine_value, error, target,\n"
         "within_target}],\n"
         "failures [{case_id, engine, message}], summary [{engine, line, within, with_target, not_measured, failures,\n"
-        "max_error}], matrix [{engine, metric, worst_rel_error, case_id, target, pass, rows, not_measured, failed}],\n"
+        "max_error}], matrix [{engine, metric, worst_error, case_id, target, pass, rows, not_measured, failed}],\n"
         "reference_assumptions, other_set {engine, assumptions, label, finding, matrix (no pass), rows, failures},\n"
         "findings, step_study [{engine, case_id, metric, dt, rel_error, order}], traces [{case_id, engine,\n"
         "assumption, samples}], earthquake {study, folder, reference, reference_median_g, reference_median_note,\n"
@@ -205,7 +206,7 @@ std::string report_footer() {
         "for the analytic model under the set paper: no verdict in the report; null when it did not run]}\n"
         "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"
         "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
-        "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,rel_error;\n"
+        "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,error;\n"
         "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha,assumption (t to 6,\n"
         "theta1/alpha to 4 significant digits; assumption: the analytic model's set, mechanism or paper).\n"
         "An engine failing on a case is reported (exit 0). Exit 2 on bad input (unknown suite, engine or case, an\n"
@@ -325,11 +326,12 @@ Command add_report_command(CLI::App& root) {
                     *p = staged.final_path(*p);
                 for (const std::string& w : files.warnings) print_message_line(err, "warning", w);
 
-                out << fmt::format("vssw report: suite {}, {} case{}, {} engine{} besides the analytic model, "
+                // The count of cases report.html states (a step case of an engine not asked for did not run).
+                out << fmt::format("vssw report: suite {}, {}, {} engine{} besides the analytic model, "
                                    "{:.1f} s on {} thread{}\n",
-                                   results.suite, suite.cases.size(), suite.cases.size() == 1 ? "" : "s",
-                                   engines.size(), engines.size() == 1 ? "" : "s", results.wall_time_s,
-                                   results.threads, results.threads == 1 ? "" : "s");
+                                   results.suite, validation::case_count_text(suite, results), engines.size(),
+                                   engines.size() == 1 ? "" : "s", results.wall_time_s, results.threads,
+                                   results.threads == 1 ? "" : "s");
                 out << "  report.md     " << files.markdown.string() << '\n'
                     << "  report.html   " << files.html.string() << '\n'
                     << "  results.json  " << files.json.string() << '\n';

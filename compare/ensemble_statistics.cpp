@@ -26,7 +26,11 @@ double quantile_sorted(const std::vector<double>& x, double p) {
     const double h = static_cast<double>(x.size() - 1) * p;
     const auto lo = static_cast<std::size_t>(std::floor(h));
     if (lo + 1 >= x.size()) return x.back();
-    return x[lo] + (h - static_cast<double>(lo)) * (x[lo + 1] - x[lo]);
+    // On a value, or between equal ones, that value: an infinity (an overturned run's peak, study/
+    // overturned_runs.hpp) is not turned into 0 * inf or inf - inf, NaN. Finite values give what interpolation gives.
+    const double f = h - static_cast<double>(lo);
+    if (f == 0.0 || x[lo + 1] == x[lo]) return x[lo];
+    return x[lo] + f * (x[lo + 1] - x[lo]);
 }
 
 std::vector<double> sorted_without_nan(const std::vector<double>& values) {

@@ -12,8 +12,10 @@ const char* const kStyle = R"(
 body { font-family: system-ui, sans-serif; max-width: 1140px; margin: 2em auto; padding: 0 1em; color: #222;
        line-height: 1.45; }
 h1 { font-size: 1.6em; } h2 { border-bottom: 1px solid #ccc; margin-top: 1.8em; } h3 { margin-top: 1.4em; }
-table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.92em; }
+div.table { overflow-x: auto; margin: 0.8em 0; }
+table { border-collapse: collapse; font-size: 0.92em; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: right; vertical-align: top; }
+td:not(.text) { white-space: nowrap; }
 th { background: #f2f2f2; } .text { text-align: left; }
 td.flag { color: #b00020; font-weight: bold; }
 td.pass { background: #d9f2e3; } td.pass::after { content: " \2713"; color: #1b7a43; }
@@ -22,7 +24,7 @@ th.apart, td.apart { background: #f7f7f7; color: #555; font-style: italic; }
 th.first-apart, td.first-apart { border-left: 4px double #999; }
 table.matrix td, table.matrix th { padding: 0.35em 0.8em; } table.matrix td { white-space: nowrap; }
 nav.contents ul { margin: 0.2em 0; } nav.contents > ul { columns: 2; }
-figure { margin: 1em 0; } figcaption { font-size: 0.9em; color: #555; }
+figure { margin: 1.6em 0 1em; } figcaption { font-size: 0.9em; color: #555; margin-bottom: 0.3em; }
 figure svg { width: 100%; height: auto; display: block; }
 )";
 
@@ -79,7 +81,9 @@ void write_table(std::ostream& out, const DocBlock& b) {
         }
         return cls;
     };
-    out << (b.css_class.empty() ? std::string("<table>") : "<table class=\"" + html_escape(b.css_class) + "\">")
+    // The wrapper scrolls a table wider than the page (the matrix of many engines) inside it, its numbers unbroken.
+    out << "<div class=\"table\">"
+        << (b.css_class.empty() ? std::string("<table>") : "<table class=\"" + html_escape(b.css_class) + "\">")
         << "\n<thead><tr>";
     for (std::size_t i = 0; i < b.header.size(); ++i) {
         const std::string cls = column_class(i);
@@ -101,7 +105,7 @@ void write_table(std::ostream& out, const DocBlock& b) {
         }
         out << "</tr>\n";
     }
-    out << "</tbody>\n</table>\n";
+    out << "</tbody>\n</table></div>\n";
 }
 
 // The level-2 headings, each with its level-3 headings beneath.
@@ -157,11 +161,12 @@ void write_html(std::ostream& out, const Document& doc, const std::filesystem::p
             case DocBlock::Kind::plot: {
                 const std::string svg =
                     inline_svg(plots_dir / (b.plot_name + ".svg"), "p" + std::to_string(plot_index++) + "-");
-                out << "<figure>\n";
+                // The caption first: under its plot it read as the title of the next one.
+                out << "<figure>\n<figcaption>" << html_escape(b.text) << " (plots/" << html_escape(b.plot_name)
+                    << ".svg)</figcaption>\n";
                 if (svg.empty()) out << "<p>(plots/" << html_escape(b.plot_name) << ".svg could not be read)</p>\n";
                 else out << svg << '\n';
-                out << "<figcaption>" << html_escape(b.text) << " (plots/" << html_escape(b.plot_name)
-                    << ".svg)</figcaption>\n</figure>\n";
+                out << "</figure>\n";
                 break;
             }
         }

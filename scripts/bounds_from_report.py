@@ -47,7 +47,7 @@ groups = collections.OrderedDict()
 for r in rows:
     if r['engine'] == 'analytic' or r['metric'] not in TARGET: continue
     if mode == 'ci' and r['case_id'] not in CI_ENGINE_CASES: continue
-    e = r['rel_error']
+    e = r['error']
     if e is None: continue
     t = TARGET[r['metric']]
     if abs(e) <= 0.8 * t:

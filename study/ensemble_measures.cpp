@@ -13,6 +13,7 @@
 
 #include "analytic/intensity_measures.hpp"
 #include "compare/stripe_fragility.hpp"
+#include "study/overturned_runs.hpp"
 #include "study/plot_panels.hpp"
 #include "study/spec.hpp"
 
@@ -452,7 +453,9 @@ std::vector<RockingCurve> rocking_curves(const StudyData& d) {
     if (c.file == std::string::npos || d.columns[c.file].order.size() < 2 || alpha == std::string::npos ||
         !d.columns[alpha].varied || c.peak_metric == std::string::npos)
         return {};
-    // (series, R level, stripe) -> alpha level -> peaks and overturned runs over the records.
+    // (series, R level, stripe) -> alpha level -> peaks and overturned runs over the records; an overturned run's peak
+    // counts as the largest (study/overturned_runs.hpp), not as its collapse angle.
+    const Overturning over(d);
     using CurveKey = std::tuple<std::size_t, std::uint32_t, std::uint32_t>;
     std::map<CurveKey, std::map<std::uint32_t, std::pair<std::vector<double>, long>>> groups;
     for (const StudyRow& r : d.rows) {
@@ -461,7 +464,7 @@ std::vector<RockingCurve> rocking_curves(const StudyData& d) {
         const std::uint32_t R = size == std::string::npos ? kEmptyLevel : r.levels[size];
         for (std::size_t s = 0; s < d.series.size(); ++s)
             if (!repeats_earlier(d, s) && d.in_series(r, d.series[s]))
-                groups[{s, R, stripe}][r.levels[alpha]].first.push_back(r.value);
+                groups[{s, R, stripe}][r.levels[alpha]].first.push_back(over.overturned(r) ? kOverturnedPeak : r.value);
     }
     for (const StudyRow& r : d.rows) {  // the overturned runs, counted where their peak is
         if (r.metric != c.overturned_metric || !nominal(d, c, r) || !(r.value > 0.5)) continue;

@@ -106,8 +106,8 @@ EnsembleMeasures ensemble_measures(const StudyData& d);
 
 // The paper's Fig. 10 rocking curves with the ensemble's spread: per series, size R and stripe (PGA level), the peak
 // |theta1| / alpha1 over the records at each slenderness alpha of the whole wall (median and quartiles; an overturned
-// run counts at its collapse angle, as its peak does) and how many of them overturned. Empty unless the study varies
-// alpha and the record file (>= 2) and measures peak_rotation; perturbed repeats are left out.
+// run counts as the largest, kOverturnedPeak: study/overturned_runs.hpp) and how many of them overturned. Empty
+// unless the study varies alpha and the record file (>= 2) and measures peak_rotation; perturbed repeats are left out.
 struct RockingPoint {
     double alpha = 0.0;
     compare::Quartiles peak{};

@@ -9,6 +9,7 @@
 
 #include "io/csv.hpp"
 #include "io/gnuplot.hpp"
+#include "study/overturned_runs.hpp"
 #include "study/plot_panels.hpp"
 #include "study/study_prose.hpp"
 
@@ -121,7 +122,9 @@ std::string fragility_panel(const StudyData& d, const EnsembleMeasures& e, std::
     }
     if (cmd.empty()) return "set label 1 'no fit' at graph 0.5, graph 0.5 center\nplot [0:1][0:1] NaN notitle\n"
                             "unset label 1\n";
-    return fmt::format("set xrange [0:{}]\nset yrange [0:1]\n", io::gp_number(kAxisMargin * xmax)) + cmd + unfitted + "\n";
+    // y beyond [0, 1]: a point at a share of 0 or 1 drawn whole, not halved by the frame.
+    return fmt::format("set xrange [0:{}]\nset yrange [-0.05:1.05]\n", io::gp_number(kAxisMargin * xmax)) + cmd +
+           unfitted + "\n";
 }
 
 io::PlotScript fragility_plot(const StudyData& d, const EnsembleMeasures& e) {
@@ -174,7 +177,8 @@ io::PlotScript stripes_plot(const StudyData& d, const EnsembleMeasures& e) {
                                               style));
             ++block;
         }
-        gp += panel_begin(layout, e.walls[w]) + "set yrange [-0.05:1.05]\n" +
+        // Room beyond the first and last level: a bar there would lie on the frame and be hidden by it.
+        gp += panel_begin(layout, e.walls[w]) + "set yrange [-0.05:1.05]\nset offsets graph 0.05, graph 0.05, 0, 0\n" +
               (cmd.empty() ? "plot [0:1][0:1] NaN notitle\n" : cmd + "\n");
     }
     s.gp = gp + layout_end(layout, series_entries(d, styles));
@@ -199,6 +203,8 @@ io::PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const
     s.dat = "# " + io::gp_comment(s.plot.title) + "\n";
     std::string gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
                      io::gp_xlabel("alpha [rad]", !layout.multiplot()) + "set ylabel 'peak |theta1| / alpha1'\n" +
+                     // Room above 1, where an overturned median's ring sits, so the frame does not cut it.
+                     "set offsets 0, 0, graph 0.08, 0\n" +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
@@ -210,20 +216,27 @@ io::PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const
             const std::string style =
                 io::series_style(d.series[c.series].engine, styles.variants[c.series] * sizes.size() + r);
             const std::string label = d.series[c.series].label + (sizes.size() > 1 ? fmt::format(" R={:g}", c.R) : "");
-            s.dat += fmt::format("# {}: alpha median q1 q3 records overturned\n", io::gp_comment(label));
+            // An overturned quartile at 1, the median's point then ringed (study/overturned_runs.hpp).
+            const auto drawn = [](double q) { return io::gp_number(std::isinf(q) ? 1.0 : q); };
+            s.dat += fmt::format("# {}: alpha median q1 q3 records overturned median_overturned\n",
+                                 io::gp_comment(label));
             for (const RockingPoint& p : c.points)
-                s.dat += fmt::format("{} {} {} {} {} {}\n", io::gp_number(p.alpha), io::gp_number(p.peak.median),
-                                     io::gp_number(p.peak.q1), io::gp_number(p.peak.q3), p.peak.n, p.overturned);
+                s.dat += fmt::format("{} {} {} {} {} {} {}\n", io::gp_number(p.alpha), drawn(p.peak.median),
+                                     drawn(p.peak.q1), drawn(p.peak.q3), p.peak.n, p.overturned,
+                                     std::isinf(p.peak.median) ? 1 : 0);
             s.dat += "\n\n";
             // A single panel has its key below the frame (titles); several share the legend panel (entries).
-            cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} {}",
-                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block++, style,
-                               layout.multiplot() ? "notitle" : "title " + io::gp_string(label));
+            cmd += fmt::format("{}'{}.dat' index {} using 1:2:3:4 with yerrorlines {} {}, \\\n     "
+                               "'{}.dat' index {} using 1:($7 > 0.5 ? $2 : NaN) with points {} {}",
+                               cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block, style,
+                               layout.multiplot() ? "notitle" : "title " + io::gp_string(label), s.plot.name, block,
+                               kOverturnedRing, layout.multiplot() || block > 0 ? "notitle" : "title 'overturned'");
+            ++block;
             if (pga == stripes.front()) entries.push_back({label, style});
         }
         gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("{} {:g} {}", e.name, pga, e.unit)) + cmd + "\n";
     }
-    s.gp = gp + layout_end(layout, entries);
+    s.gp = gp + layout_end(layout, entries, fmt::format("NaN with points {} title 'overturned'", kOverturnedRing));
     return s;
 }
 

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "study/overturned_runs.hpp"  // kOverturnedRing
 #include "study/plot_panels.hpp"
 
 namespace vssw::study {
@@ -72,9 +73,9 @@ std::string panel_plot(const LineFigure& f, const PanelLayout& layout, std::size
                            io::gp_hover_layer(fmt::format("'{}.dat' index {} using 1:2:(stringcolumn(4))", f.name, index),
                                           f.lines[l].second));
         if (f.marker_title.empty()) continue;
-        cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:($3 > 0.5 ? $2 : NaN) with points pt 6 ps 2 lc rgb "
-                           "'black' {}",
-                           f.name, index, marker_titled ? "notitle" : "title " + io::gp_string(f.marker_title));
+        cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:($3 > 0.5 ? $2 : NaN) with points {} {}",
+                           f.name, index, kOverturnedRing,
+                           marker_titled ? "notitle" : "title " + io::gp_string(f.marker_title));
         marker_titled = true;
     }
     return s + cmd + "\n";
@@ -114,7 +115,8 @@ io::PlotScript line_figure_script(const LineFigure& f) {
     for (std::size_t p = 0; p < f.panel_titles.size(); ++p) gp += panel_plot(f, layout, p);
     std::vector<std::pair<std::string, std::string>> entries = f.lines;
     const std::string marker =
-        f.marker_title.empty() ? "" : "NaN with points pt 6 ps 2 lc rgb 'black' title " + io::gp_string(f.marker_title);
+        f.marker_title.empty() ? "" : fmt::format("NaN with points {} title {}", kOverturnedRing,
+                                                  io::gp_string(f.marker_title));
     gp += layout_end(layout, entries, marker);
     return {{f.section, f.name, f.title, false}, gp, data_of(f)};
 }

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "study/overturned_runs.hpp"
 #include "study/plot_lines.hpp"
 #include "study/plot_panels.hpp"
 #include "study/study_plots.hpp"
@@ -18,40 +19,6 @@
 
 namespace vssw::study {
 namespace {
-
-constexpr double kOverturned = std::numeric_limits<double>::infinity();
-
-// Whether each run overturned, by (case id, the run's columns): the metric overturned, else t_overturn (a time only
-// when it did). Empty when the study measured neither.
-class Overturning {
-public:
-    explicit Overturning(const StudyData& d) {
-        std::size_t metric = d.metrics.size();
-        bool from_time = false;
-        for (std::size_t m = 0; m < d.metrics.size(); ++m)
-            if (d.metrics[m].name == "overturned" && d.metrics[m].any_value) metric = m;
-        if (metric == d.metrics.size())
-            for (std::size_t m = 0; m < d.metrics.size(); ++m)
-                if (d.metrics[m].name == "t_overturn") {
-                    metric = m;
-                    from_time = true;
-                }
-        if (metric == d.metrics.size()) return;
-        measured_ = true;
-        for (const StudyRow& r : d.rows)
-            if (r.metric == metric)
-                runs_[{r.case_id, r.levels}] = from_time ? std::isfinite(r.value) : r.value == 1.0;
-    }
-    bool measured() const { return measured_; }
-    bool overturned(const StudyRow& r) const {
-        const auto it = runs_.find({r.case_id, r.levels});
-        return it != runs_.end() && it->second;
-    }
-
-private:
-    bool measured_ = false;
-    std::map<std::pair<int, std::vector<std::uint32_t>>, bool> runs_;
-};
 
 std::optional<std::size_t> metric_index(const StudyData& d, const std::string& name) {
     for (std::size_t m = 0; m < d.metrics.size(); ++m)
@@ -111,12 +78,6 @@ std::string split_name(const StudyData& d, const std::string& prefix, const Pane
     return io::file_stem(name);
 }
 
-// The point's value: the median peak, an overturned run counting as the largest; NaN for none.
-std::pair<double, bool> peak_point(const std::vector<double>& peaks) {
-    const double m = median(peaks);
-    return {std::isinf(m) ? 1.0 : m, std::isinf(m)};
-}
-
 io::PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturning& over, const PanelSplit& split,
                         std::size_t plot, const std::vector<std::uint32_t>& combo) {
     const std::size_t alpha = d.column("alpha"), R = d.column("R");
@@ -156,7 +117,7 @@ io::PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturn
         const std::size_t p = level_position(rc, r.levels[R]), k = level_position(ac, r.levels[alpha]);
         if (p >= panels || k >= f.x.size()) continue;
         for (std::size_t l = 0; l < d.series.size(); ++l)
-            if (d.in_series(r, d.series[l])) peaks[p][l][k].push_back(over.overturned(r) ? kOverturned : r.value);
+            if (d.in_series(r, d.series[l])) peaks[p][l][k].push_back(over.overturned(r) ? kOverturnedPeak : r.value);
     }
     for (std::size_t p = 0; p < panels; ++p)
         for (std::size_t l = 0; l < d.series.size(); ++l)
@@ -223,7 +184,7 @@ std::optional<io::PlotScript> relaxation_curves(const StudyData& d, std::size_t 
             std::lower_bound(xs.begin(), xs.end(), d.columns[alpha].values[r.levels[alpha]]) - xs.begin());
         if (l >= kc.order.size() || k >= xs.size()) continue;
         for (std::size_t p = 0; p < panels; ++p)
-            if (d.in_series(r, d.series[p])) peaks[p][l][k].push_back(over.overturned(r) ? kOverturned : r.value);
+            if (d.in_series(r, d.series[p])) peaks[p][l][k].push_back(over.overturned(r) ? kOverturnedPeak : r.value);
     }
     for (std::size_t p = 0; p < panels; ++p)
         for (std::size_t l = 0; l < kc.order.size(); ++l)
@@ -257,7 +218,7 @@ io::PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, con
         if (k >= points) continue;
         for (std::size_t l = 0; l < panels; ++l) {
             if (!d.in_series(r, d.series[l])) continue;
-            if (is_peak) peaks[l][k].push_back(over.overturned(r) ? kOverturned : r.value);
+            if (is_peak) peaks[l][k].push_back(over.overturned(r) ? kOverturnedPeak : r.value);
             else verdicts[l][k].push_back(over.overturned(r) ? 1.0 : 0.0);
         }
     }

@@ -1,4 +1,5 @@
 // Value plots: each metric against each varied parameter (study/study_plots.hpp).
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -6,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "analytic/simulate.hpp"  // SimulationOptions::energy_ceiling
+#include "compare/targets.hpp"
+#include "study/overturned_runs.hpp"
 #include "study/plot_lines.hpp"
 #include "study/plot_panels.hpp"
 #include "study/spec.hpp"
@@ -15,9 +18,17 @@
 namespace vssw::study {
 namespace {
 
-// A value plot's y axis spans at least 1 % of its largest |value|: differences below that are a study's rounding and
-// noise, not a trend to read, and with it the '%.4g' tic labels stay apart (tics a fifth of the span: 2e-3 of it).
-constexpr double kMinValueSpan = 0.01;
+// A value plot's y axis spans at least +- the metric's target around its values' middle (relative to their largest
+// |value|; compare/targets.hpp: threshold and period 0.5 %, restitution 2 %; a metric without one the smallest, 0.5 %):
+// differences below the accuracy asked of an engine are rounding and noise, not a trend to read, and they look flat.
+// With it the '%.4g' tic labels stay apart (tics a fifth of the span: 2e-3 of it at the smallest).
+double min_value_span(const std::string& metric) {
+    const double smallest = std::min({compare::kThresholdTarget, compare::kPeriodTarget, compare::kRestitutionTarget});
+    if (metric == "threshold_g") return 2.0 * compare::kThresholdTarget;
+    if (metric == "period") return 2.0 * compare::kPeriodTarget;
+    if (metric == "restitution") return 2.0 * compare::kRestitutionTarget;
+    return 2.0 * smallest;
+}
 
 // A line of a value plot: a series, with the x parameter left out of the analytic ones when it is an assumption (the
 // line then runs across that assumption's levels).
@@ -48,9 +59,11 @@ std::vector<std::size_t> panel_candidates(const StudyData& d, std::size_t x) {
     return out;
 }
 
-// The metric's values bucketed by panel, line and x level, then summarised into the figure.
+// The metric's values bucketed by panel, line and x level, then summarised into the figure. A peak rotation of an
+// overturned run (its collapse angle) counts and is drawn as the rocking curves draw it (study/overturned_runs.hpp).
 void fill_values(const StudyData& d, std::size_t metric, std::size_t x, const PanelSplit& split,
-                 const std::vector<ValueLine>& lines, const std::vector<std::size_t>& ignored, LineFigure& f) {
+                 const std::vector<ValueLine>& lines, const std::vector<std::size_t>& ignored,
+                 const Overturning* over, LineFigure& f) {
     const ColumnLevels& xc = d.columns[x];
     std::vector<std::vector<std::vector<std::vector<double>>>> buckets(
         f.panel_titles.size(),
@@ -64,14 +77,24 @@ void fill_values(const StudyData& d, std::size_t metric, std::size_t x, const Pa
         const std::vector<std::size_t> panels = combination_indices(d, r, split.split);
         for (std::size_t l = 0; l < lines.size(); ++l) {
             if (!d.in_series(r, lines[l].series, ignored)) continue;
+            const double value = over != nullptr && over->overturned(r) ? kOverturnedPeak : r.value;
             for (std::size_t p : panels)
-                for (std::size_t k : points) buckets[p][l][k].push_back(r.value);
+                for (std::size_t k : points) buckets[p][l][k].push_back(value);
         }
     }
     const bool share = d.metrics[metric].binary;
     for (std::size_t p = 0; p < buckets.size(); ++p)
         for (std::size_t l = 0; l < lines.size(); ++l)
-            for (std::size_t k = 0; k < f.x.size(); ++k) f.y[p][l][k] = summarise(buckets[p][l][k], share);
+            for (std::size_t k = 0; k < f.x.size(); ++k) {
+                if (over == nullptr) {
+                    f.y[p][l][k] = summarise(buckets[p][l][k], share);
+                    continue;
+                }
+                if (buckets[p][l][k].empty()) continue;
+                const auto [value, overturned] = peak_point(buckets[p][l][k]);
+                f.y[p][l][k] = value;
+                f.marked[p][l][k] = overturned;
+            }
 }
 
 // Empty when the metric has no value to draw against x.
@@ -90,9 +113,9 @@ std::optional<io::PlotScript> value_plot(const StudyData& d, std::size_t metric,
     f.ylabel = m.binary ? m.name + " (share of runs)" : metric_label(m);
     f.xname = xc.key;
     f.yunit = m.binary ? "share of runs" : m.unit;
-    // A share runs from 0 to 1 whatever its values; a value's axis is never narrower than kMinValueSpan of it.
+    // A share runs from 0 to 1 whatever its values; a value's axis is never narrower than its target allows.
     if (m.binary) f.setup = "set yrange [-0.05:1.05]\n";
-    else f.min_span = kMinValueSpan;
+    else f.min_span = min_value_span(m.name);
     // A run's energy balance error is a relative error that passes up to the ceiling simulate() allows (1e-6): below
     // that it is the integrator's round-off, which would fill the axis.
     if (m.name == "energy_balance_error") f.min_abs_span = SimulationOptions{}.energy_ceiling;
@@ -107,8 +130,15 @@ std::optional<io::PlotScript> value_plot(const StudyData& d, std::size_t metric,
         f.x.push_back(xc.numeric ? xc.values[xc.order[k]] : static_cast<double>(k));
         if (!xc.numeric) f.categories.push_back(xc.texts[xc.order[k]]);
     }
+    // The peak rotation of an overturned run: at 1, ringed ("overturned" in the legend), as in the rocking curves.
+    const Overturning overturning(d);
+    const Overturning* over = m.name == "peak_rotation" && overturning.measured() ? &overturning : nullptr;
+    if (over != nullptr) {
+        f.marker_title = "overturned";
+        f.setup += "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb '#999999'\n";
+    }
     f.resize();
-    fill_values(d, metric, x, split, lines, ignored, f);
+    fill_values(d, metric, x, split, lines, ignored, over, f);
     if (!f.any_value()) return std::nullopt;
     return line_figure_script(f);
 }

@@ -362,7 +362,7 @@ TEST(ReportFiles, JsonRoundTripsWithNaNAsNull) {
         EXPECT_EQ(x["reference"], r.reference);
         for (const auto& [key, value] : {std::pair<const char*, double>{"analytic", r.analytic},
                                          {"engine_value", r.engine_value},
-                                         {"rel_error", r.rel_error}}) {
+                                         {"error", r.rel_error}}) {
             if (std::isnan(value)) {
                 EXPECT_TRUE(x[key].is_null()) << i << ' ' << key;
             } else {
@@ -389,7 +389,7 @@ TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
     const vssw::validation::SuiteResults results = hand_results();
     const auto metrics = lines_of(read(w.dir.path / "metrics.csv"));
     ASSERT_EQ(metrics.size(), results.rows.size() + 1);
-    EXPECT_EQ(metrics[0], "case_id,engine,metric,unit,reference,analytic,engine_value,rel_error");
+    EXPECT_EQ(metrics[0], "case_id,engine,metric,unit,reference,analytic,engine_value,error");
     EXPECT_EQ(metrics[3].rfind("fig6-vssw,bullet,threshold_g,g,analytic model,0.28599999999999998,", 0), 0u)
         << metrics[3];
     // Read back the relative error of that row.
@@ -641,9 +641,9 @@ TEST(ReportAtAGlance, MatrixCellsAreTheWorstErrorOfMetricsCsvAndPassIffWithinTar
         ASSERT_NE(it, expected.end()) << engine << ' ' << metric;
         const Expected& e = it->second;
         if (std::isnan(e.worst)) {
-            EXPECT_TRUE(cell["worst_rel_error"].is_null()) << engine << ' ' << metric;
+            EXPECT_TRUE(cell["worst_error"].is_null()) << engine << ' ' << metric;
         } else {
-            EXPECT_NEAR(cell["worst_rel_error"].get<double>(), e.worst, kCsvRoundTrip) << engine << ' ' << metric;
+            EXPECT_NEAR(cell["worst_error"].get<double>(), e.worst, kCsvRoundTrip) << engine << ' ' << metric;
         }
         const bool has_target = w.json["targets"].contains(metric);
         const bool pass = has_target && !std::isnan(e.worst) && !e.any_nan && !e.any_outside && !e.failed;
@@ -708,6 +708,46 @@ TEST(ReportAtAGlance, CasesThatDidNotRunAreNotListed) {
     EXPECT_TRUE(contains(md, "| fig6-vssw/r0.5/dt0.0005/ode | step |")) << md;
     EXPECT_FALSE(contains(md, "fig6-vssw/r0.5/dt0.0005/bullet")) << md;
     EXPECT_TRUE(contains(md, "1 more case of the suite did not run")) << md;
+    // One count everywhere: the 7 that ran (the hand suite's 4 cases and ODE's 3 step cases), and the one that did
+    // not, as the program's line says it (cli/cmd_report.cpp prints the same text).
+    const std::string count = "7 cases (1 more of the suite did not run: step-study cases of engines not asked for)";
+    EXPECT_EQ(vssw::validation::case_count_text(suite, hand_results()), count);
+    EXPECT_TRUE(contains(md, "on " + count + "; ")) << md;
+    EXPECT_TRUE(contains(read(dir.path / "report.html"), "on " + count + "; ")) << "report.html";
+}
+
+// Every table of report.html scrolls inside the page in its own box (a matrix of many engines is wider than the
+// page), and every figure's caption comes before its plot, not under it where it reads as the next one's title.
+bool tables_scroll(const std::string& html) {
+    std::size_t tables = 0, wrapped = 0;
+    for (auto at = html.find("<table"); at != std::string::npos; at = html.find("<table", at + 1)) {
+        ++tables;
+        const std::string wrapper = "<div class=\"table\">";
+        wrapped += at >= wrapper.size() && html.compare(at - wrapper.size(), wrapper.size(), wrapper) == 0;
+    }
+    return tables > 0 && wrapped == tables;
+}
+bool captions_first(const std::string& html) {
+    std::size_t figures = 0, first = 0;
+    for (auto at = html.find("<figure>"); at != std::string::npos; at = html.find("<figure>", at + 1)) {
+        ++figures;
+        first += html.compare(at, 21, "<figure>\n<figcaption>") == 0;
+    }
+    return figures > 0 && first == figures;
+}
+
+TEST(ReportFiles, TablesScrollInsideThePageAndCaptionsComeFirst) {
+    // The checks fail on a page made wrong: a bare table, a caption under its plot.
+    EXPECT_FALSE(tables_scroll("<div class=\"table\"><table></table></div><table></table>"));
+    EXPECT_FALSE(captions_first("<figure>\n<figcaption>a</figcaption><svg/></figure><figure>\n<svg/>"
+                                "<figcaption>b</figcaption></figure>"));
+    const Written w = write_hand_report("scroll", no_plots());
+    EXPECT_TRUE(tables_scroll(w.html)) << w.html;
+    EXPECT_TRUE(contains(w.html, "div.table { overflow-x: auto;")) << "the wrapper scrolls";
+    EXPECT_TRUE(contains(w.html, "td:not(.text) { white-space: nowrap; }")) << "numbers are not broken";
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
+    const Written plotted = write_hand_report("captions", vssw::validation::ReportOptions{});
+    EXPECT_TRUE(captions_first(plotted.html));
 }
 
 // --- the plots ------------------------------------------------------------------------------------------------------
@@ -979,6 +1019,22 @@ TEST(ReportPlots, ErrorAxesSpanAtLeastTheTarget) {
     EXPECT_GE(std::stod(m[2]), band) << s->gp;
     EXPECT_TRUE(contains(s->gp, fmt::format("title 'target +/-{:g} %'", band))) << s->gp;
     EXPECT_FALSE(contains(s->gp, "bmargin")) << "gnuplot sizes the margin to the case labels: " << s->gp;
+}
+
+// The error plots' y axis names what they show: a relative error, but for the RMS difference its share of the peak.
+TEST(ReportPlots, ErrorAxesNameTheirQuantity) {
+    vssw::validation::SuiteResults results = hand_results();
+    // The RMS difference: analytic = the peak 0.40, engine = an RMS of 0.02, error = 5 % of the peak.
+    results.rows.push_back({"fig6-pw/rinaldi-x0.17", "ode", "rms_difference", 0.40, 0.02, 0.05, "analytic model",
+                            "alpha"});
+    const auto scripts = vssw::validation::report_plot_scripts({hand_suite(), results, {}});
+    const vssw::io::PlotScript* rms = script_named(scripts, "error_rms_difference");
+    const vssw::io::PlotScript* threshold = script_named(scripts, "error_threshold_g");
+    ASSERT_NE(rms, nullptr);
+    ASSERT_NE(threshold, nullptr);
+    EXPECT_TRUE(contains(rms->gp, "set ylabel 'RMS difference / analytic peak [%]'")) << rms->gp;
+    EXPECT_FALSE(contains(rms->gp, "engine / reference - 1")) << rms->gp;
+    EXPECT_TRUE(contains(threshold->gp, "set ylabel 'relative error [%] (engine / reference - 1)'")) << threshold->gp;
 }
 
 // One font for every plot: the terminal's, from gp_preamble, and no text of any plot in another.
@@ -1508,6 +1564,15 @@ TEST(ReportEarthquake, PeakAndFragilityPanelsHoldEachEnginesPairedRuns) {
             << e << "\n" << fragility_gp;
     }
     EXPECT_FALSE(contains(fragility_gp, "norm(log(x/")) << "no curve for a fit that is not resolved";
+    // Nothing at the frame: a share of 0 or 1 lies inside the y range, and the stripes' Wilson bars at the first and
+    // last level have room beside them (offsets on the autoscaled PGA axis).
+    const auto shares = gp_range(fragility_gp, 'y');
+    ASSERT_TRUE(shares.has_value()) << fragility_gp;
+    EXPECT_LT(shares->first, 0.0);
+    EXPECT_GT(shares->second, 1.0);
+    const std::string stripes_gp = read(plots / "stripes.gp");
+    EXPECT_TRUE(contains(stripes_gp, "set offsets graph 0.05, graph 0.05, 0, 0\n")) << stripes_gp;
+    EXPECT_FALSE(gp_range(stripes_gp, 'x').has_value()) << "offsets act on an autoscaled axis only\n" << stripes_gp;
     // The runs where both stand, from the rows: (reference peak, engine peak) per engine.
     const PairedRows runs = paired_rows(out / "earthquake" / "results.csv");
     for (const std::string& e : engines) {
@@ -1655,7 +1720,7 @@ TEST(ReportOtherSet, ThePaperRowIsWhatDirectRunsUnderEachSetGive) {
     const Json j = Json::parse(read(out / "results.json"));
     EXPECT_EQ(j["reference_assumptions"], "mechanism");
     std::map<std::string, double> rel;
-    for (const Json& x : j["other_set"]["rows"]) rel[x["metric"].get<std::string>()] = x["rel_error"].get<double>();
+    for (const Json& x : j["other_set"]["rows"]) rel[x["metric"].get<std::string>()] = x["error"].get<double>();
     EXPECT_NEAR(rel.at("period") + 1.0, period_ratio, kSampledAgainstLocated);
     EXPECT_NEAR(rel.at("restitution") + 1.0, restitution_ratio, kSampledAgainstLocated);
     // The sets differ (Eq. 19 0.951 against the whole mechanism's 0.825): the check has something to find.

@@ -513,6 +513,19 @@ TEST(StudyOutputs, RockingCurvesMarkOverturnedRunsAtOne) {
         EXPECT_NEAR(std::stod(lines[2][1]), 0.5, kDatDigits);
     }
     EXPECT_TRUE(fs::exists(plots / "rocking_NGA_no_1063_RRS228_pga0.3.svg"));
+    // The value plot of peak_rotation shows an overturned run as the rocking curves do, at 1 and marked, not at its
+    // collapse angle (4.2): one drawing of an overturned run under one label.
+    const auto values = dat_lines(plots / "value_peak_rotation_vs_alpha.dat");
+    std::size_t overturned_points = 0;
+    for (const auto& line : values) {
+        ASSERT_GE(line.size(), 3u);
+        if (line[0] != "0.05") continue;
+        ++overturned_points;
+        EXPECT_EQ(std::vector<std::string>(line.begin(), line.begin() + 3),
+                  (std::vector<std::string>{"0.05", "1", "1"}));
+    }
+    EXPECT_GT(overturned_points, 0u);
+    EXPECT_TRUE(contains(read(plots / "value_peak_rotation_vs_alpha.gp"), "title 'overturned'"));
 }
 
 // Pulse studies: the overturning map's points, peak capped at 1, overturned runs flagged, a block per series.

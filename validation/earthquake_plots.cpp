@@ -161,7 +161,8 @@ io::PlotScript fragility_plot(const study::StudyData& d, const study::EnsembleMe
         "fragility_by_engine",
         "Fragility per engine: its stripes (points) and lognormal fit (line) against the reference's (grey)", layout,
         e.label,
-        fmt::format("set ylabel {}\nset samples 300\nset xrange [0:{}]\nset yrange [0:1]\n",
+        // y beyond [0, 1]: a stripe at a share of 0 or 1 drawn whole, not halved by the frame.
+        fmt::format("set ylabel {}\nset samples 300\nset xrange [0:{}]\nset yrange [-0.05:1.05]\n",
                     io::gp_string("P(overturn | " + e.name + ")"), io::gp_number(kAxisReach * std::max(xmax, 1e-3))));
     std::string gp = std::move(s.gp);
     std::size_t block = 0;

@@ -38,6 +38,23 @@ std::string short_title(const std::string& metric) {
 
 bool within(double rel_error, double target) { return std::isfinite(rel_error) && std::abs(rel_error) <= target; }
 
+std::set<std::string> cases_that_ran(const SuiteResults& results) {
+    std::set<std::string> ran;
+    for (const MetricRow& r : results.rows) ran.insert(r.case_id);
+    for (const CaseFailure& f : results.failures) ran.insert(f.case_id);
+    return ran;
+}
+
+std::string case_count_text(const Suite& suite, const SuiteResults& results) {
+    const std::set<std::string> ran = cases_that_ran(results);
+    std::size_t not_run = 0;
+    for (const SuiteCase& c : suite.cases) not_run += ran.count(c.id) == 0 ? 1 : 0;
+    std::string text = fmt::format("{} case{}", ran.size(), ran.size() == 1 ? "" : "s");
+    if (not_run > 0)
+        text += fmt::format(" ({} more of the suite did not run: step-study cases of engines not asked for)", not_run);
+    return text;
+}
+
 std::optional<double> target_of(const std::string& metric) {
     const compare::MetricInfo* m = compare::find_metric(metric);
     if (m && m->target > 0.0) return m->target;

@@ -7,6 +7,7 @@
 // by hand (the tests).
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,13 @@ bool is_step_case(const ReportInput& in, const std::string& case_id);
 std::string short_title(const std::string& metric);
 // |rel_error| <= target; false when it was not measured.
 bool within(double rel_error, double target);
+
+// The cases that ran: those with a row or a failure (a step case of an engine not asked for did not run).
+std::set<std::string> cases_that_ran(const SuiteResults& results);
+// The one count of cases that report.html, report.md and the program's line all say: "42 cases" when every case of
+// the suite ran, else "42 cases (4 more of the suite did not run: step-study cases of engines not asked
+// for)".
+std::string case_count_text(const Suite& suite, const SuiteResults& results);
 
 // One engine in one line: how many metrics with a target are within it (step-study cases left out: they vary the
 // step on purpose), the largest |error| per metric (signed), the failures.

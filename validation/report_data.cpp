@@ -68,7 +68,9 @@ io::Json rows_json(const std::vector<MetricRow>& metric_rows) {
                         {"reference", r.reference},
                         {"analytic", io::finite_or_null(r.analytic)},
                         {"engine_value", io::finite_or_null(r.engine_value)},
-                        {"rel_error", io::finite_or_null(r.rel_error)},
+                        // "error": a relative error, but for rms_difference the RMS over the peak and for
+                        // overturned the difference (MetricRow, validation/suite.hpp).
+                        {"error", io::finite_or_null(r.rel_error)},
                         {"target", target ? io::Json(*target) : io::Json(nullptr)},
                         {"within_target", target ? io::Json(std::isfinite(r.rel_error) && std::abs(r.rel_error) <= *target)
                                                  : io::Json(nullptr)}});
@@ -87,7 +89,7 @@ io::Json failures_json(const std::vector<CaseFailure>& case_failures) {
 io::Json matrix_cell_json(const MatrixCell& c) {
     return {{"engine", c.engine},
             {"metric", c.metric},
-            {"worst_rel_error", io::finite_or_null(c.worst_rel_error)},
+            {"worst_error", io::finite_or_null(c.worst_rel_error)},
             {"case_id", c.case_id},
             {"target", c.target ? io::Json(*c.target) : io::Json(nullptr)},
             {"rows", c.rows},
@@ -135,7 +137,7 @@ io::Json results_json(const ReportInput& in) {
     for (const EngineSummary& s : summarize(in)) {
         io::Json max_error = io::Json::object();
         for (const MetricExtreme& x : s.extremes)
-            max_error[x.metric] = {{"rel_error", io::finite_or_null(x.rel_error)}, {"case_id", x.case_id}};
+            max_error[x.metric] = {{"error", io::finite_or_null(x.rel_error)}, {"case_id", x.case_id}};
         summary.push_back({{"engine", s.engine},
                            {"line", s.line},
                            {"within", s.within},
@@ -194,7 +196,7 @@ io::Json results_json(const ReportInput& in) {
 }
 
 void write_metrics_csv(std::ostream& out, const SuiteResults& results) {
-    out << "case_id,engine,metric,unit,reference,analytic,engine_value,rel_error\n";
+    out << "case_id,engine,metric,unit,reference,analytic,engine_value,error\n";
     for (const MetricRow& r : results.rows)
         out << io::csv_field(r.case_id) << ',' << io::csv_field(r.engine) << ',' << io::csv_field(r.metric) << ','
             << io::csv_field(r.unit) << ',' << io::csv_field(r.reference) << ',' << io::csv_number(r.analytic) << ','

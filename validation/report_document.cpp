@@ -48,25 +48,15 @@ std::string wall_label(const ReportInput& in, const std::string& id) {
     return id;
 }
 
-// The cases that ran: those with a row or a failure (a step case of an engine not asked for did not run).
-std::set<std::string> cases_that_ran(const SuiteResults& res) {
-    std::set<std::string> ran;
-    for (const MetricRow& r : res.rows) ran.insert(r.case_id);
-    for (const CaseFailure& f : res.failures) ran.insert(f.case_id);
-    return ran;
-}
-
 io::DocBlock introduction(const ReportInput& in) {
     const SuiteResults& res = in.results;
-    const std::set<std::string> case_ids = cases_that_ran(res);
     return io::paragraph(fmt::format(
-        "Made {} by vssw{} on {} case{} ({} thread{}, {:.1f} s). Every engine is measured against the analytic model "
+        "Made {} by vssw{} on {}; {} thread{}, {:.1f} s. Every engine is measured against the analytic model "
         "of Sorrentino, Masiani & Griffith (2008) under the assumption set {}, every metric by the same code for "
         "every backend; relative error = engine / reference - 1. Targets: threshold {:g} %, period {:g} %, "
         "restitution {:g} %.",
-        in.meta.date, in.meta.commit.empty() ? "" : " " + in.meta.commit, case_ids.size(),
-        case_ids.size() == 1 ? "" : "s", res.threads, res.threads == 1 ? "" : "s", res.wall_time_s,
-        describe(res.reference),
+        in.meta.date, in.meta.commit.empty() ? "" : " " + in.meta.commit, case_count_text(in.suite, res),
+        res.threads, res.threads == 1 ? "" : "s", res.wall_time_s, describe(res.reference),
         100.0 * kReportThresholdTarget, 100.0 * kReportPeriodTarget, 100.0 * kReportRestitutionTarget));
 }
 

@@ -62,6 +62,12 @@ std::string trace_title(const Trace& t) {
     return t.assumption.empty() ? "analytic (reference)" : fmt::format("analytic, {} (reference)", t.assumption);
 }
 
+// The error plot's y axis, naming what its points are: the RMS difference's is no relative error.
+std::string error_axis_label(const std::string& metric) {
+    return metric == "rms_difference" ? "RMS difference / analytic peak [%]"
+                                      : "relative error [%] (engine / reference - 1)";
+}
+
 }  // namespace
 
 TraceWindow trace_window(const std::vector<const Trace*>& traces, double motion_fraction) {
@@ -264,7 +270,8 @@ std::vector<io::PlotScript> error_scripts(const ReportInput& in) {
         const std::size_t engines = table.engines.size();
         s.dat = "# index case_id";
         for (const std::string& e : table.engines) s.dat += ' ' + io::gp_comment(e);
-        s.dat += "   (relative error in %), then the hover text of each\n";
+        s.dat += fmt::format("   ({} in %), then the hover text of each\n",
+                             table.metric == "rms_difference" ? "RMS difference / analytic peak" : "relative error");
         for (std::size_t i = 0; i < table.rows.size(); ++i) {
             const MetricTableRow& row = table.rows[i];
             s.dat += fmt::format("{} {}", i, io::gp_data_string(row.case_id));
@@ -302,9 +309,10 @@ std::vector<io::PlotScript> error_scripts(const ReportInput& in) {
                                "     -{0:g} with lines dt 2 lc rgb '#888888' notitle",
                                band);
         s.gp = io::gp_preamble("vssw report", s.plot.name, width, kPlotHeight + 80) +
-               fmt::format("set title {}\nset ylabel 'relative error [%] (engine / reference - 1)'\n"
+               fmt::format("set title {}\nset ylabel {}\n"
                            "set xrange [-0.6:{}]\nset yrange [*<{}:{}<*]\nset xtics rotate by -35 left\n{}",
-                           io::gp_string(s.plot.title), static_cast<double>(table.rows.size()) - 0.4,
+                           io::gp_string(s.plot.title), io::gp_string(error_axis_label(table.metric)),
+                           static_cast<double>(table.rows.size()) - 0.4,
                            io::gp_number(-kBandRoom * band), io::gp_number(kBandRoom * band), tics) +
                cmd + "\n";
         scripts.push_back(std::move(s));

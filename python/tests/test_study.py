@@ -124,7 +124,7 @@ def test_the_typed_report_gives_its_csv_files_as_dataframes(tmp_path):
     for _, m in result.metrics.iterrows():
         assert m["engine_value"] == from_json[(m["case_id"], m["engine"], m["metric"])], m["metric"]
     assert set(result.metrics["case_id"]) == {"fig6-vssw"}
-    assert {"rel_error", "target", "within_target"} <= set(result.rows.columns)
+    assert {"error", "target", "within_target"} <= set(result.rows.columns)
 
 
 def test_the_typed_report_gives_its_verdicts_at_a_glance_and_under_records(tmp_path):

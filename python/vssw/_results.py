@@ -291,11 +291,11 @@ class StudyResult:
 @dataclasses.dataclass(frozen=True)
 class ReportResult:
     """A validation report's outputs (vssw.report): metrics (metrics.csv: case_id, engine, metric, unit, reference,
-    analytic, engine_value, rel_error), failures (failures.csv: case_id, engine, message), rows (results.json's rows,
+    analytic, engine_value, error), failures (failures.csv: case_id, engine, message), rows (results.json's rows,
     with target and within_target, as a DataFrame), folder, markdown (report.md), html (report.html) (these three
     None when no `out` was given, the temporary folder removed), summary (the
     command's printed summary, one line per engine), matrix (the engine x metric matrix at a glance: engine, metric,
-    worst_rel_error, case_id, target, pass, ...), earthquake (one row per engine under the record ensemble:
+    worst_error, case_id, target, pass, ...), earthquake (one row per engine under the record ensemble:
     overturning_agreement with its lo, hi, runs and pass; fragility_median_ratio with its lo, hi, pass and note;
     peak_ratio_median; inside_band of band_runs; None when the report ran no earthquake part)."""
 
