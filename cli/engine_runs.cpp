@@ -61,9 +61,9 @@ void refuse_engine_settings(const CLI::App& cmd) {
 void refuse_analytic_options(const CLI::App& cmd, const std::vector<std::string>& names, const std::string& engine) {
     for (const std::string& name : names)
         if (cmd.count(name) > 0)
-            throw InputError(fmt::format("{} is an option of the analytic model: --engine {} cannot honour it (leave "
-                                         "it out, or run the analytic model)",
-                                         name, engine));
+            throw InputError(fmt::format("--engine {} cannot honour {} (only the analytic model takes it): leave it "
+                                         "out, or run the analytic model",
+                                         engine, name));
 }
 
 EngineRun prepare_engine_free(const std::string& engine, const EngineSettingOptions& settings,

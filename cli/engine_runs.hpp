@@ -57,8 +57,8 @@ struct EngineRun {
     multibody::Trajectory trajectory;   // after simulate_engine_run
 };
 
-// The options given that an engine's run cannot honour (the analytic model's: its assumptions, tolerance, --strict;
-// a vertical record): InputError naming the first one and the engine.
+// The options given that an engine's run cannot honour (what only the analytic model takes: its assumptions,
+// tolerance, --strict, a vertical record): InputError naming the first one and the engine.
 void refuse_analytic_options(const CLI::App& cmd, const std::vector<std::string>& names, const std::string& engine);
 
 // Everything checked (engine, settings, wall, release, step), nothing run. r from compare::kMinRelease to below 1.
