@@ -79,6 +79,7 @@ int run_unguarded(int argc, const char* const* argv, std::ostream& out, std::ost
         add_history_command(app),
         add_summary_command(app),
         add_compare_command(app),
+        add_scene_command(app),
         add_report_command(app),
         add_check_command(app),
         add_study_command(app),

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <memory>
 #include <ostream>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -16,6 +15,7 @@
 #include "cli/commands.hpp"
 #include "cli/compare_response.hpp"
 #include "cli/early_output.hpp"
+#include "cli/engine_setting_options.hpp"
 #include "cli/friction_option.hpp"
 #include "cli/ground_motion_options.hpp"
 #include "cli/model_validity.hpp"
@@ -44,9 +44,7 @@ struct CompareOptions {
     ModelOptions model;  // the reference's: the set `mechanism` unless --assumptions says otherwise
     std::vector<std::string> engines;  // as given, comma-separated lists split
     double theta0 = 0.5;
-    std::optional<double> dt;
-    std::optional<std::string> iterations;  // as typed, checked by parse_bounded_int
-    std::vector<std::string> knobs;  // NAME=VALUE
+    EngineSettingOptions engine_settings;  // --dt, --iterations, --set
     bool json = false;
     GroundMotionOptions motion;  // --record or --pulse: a comparison under a ground motion (compare_response.hpp)
     bool theta0_given = false;
@@ -55,29 +53,7 @@ struct CompareOptions {
 };
 
 multibody::EngineSettings settings_of(const multibody::Engine& engine, const CompareOptions& o) {
-    multibody::EngineSettings s = engine.default_settings();
-    if (o.dt) s.dt = *o.dt;
-    require(std::isfinite(s.dt) && s.dt > 0.0, "--dt (engine step, s)", "a positive finite number", s.dt);
-    if (o.iterations) {
-        s.iterations = parse_bounded_int("--iterations", *o.iterations, 1, multibody::kMaxIterations);
-    }
-    std::set<std::string> given;
-    for (const std::string& kv : o.knobs) {
-        const auto eq = kv.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw InputError(fmt::format("--set takes NAME=VALUE, got '{}'", kv));
-        const std::string value = kv.substr(eq + 1);
-        char* end = nullptr;
-        const double v = std::strtod(value.c_str(), &end);
-        if (value.empty() || *end != '\0' || !std::isfinite(v))
-            throw InputError(fmt::format("--set {}: '{}' is not a finite number", kv.substr(0, eq), value));
-        // Given twice, the last value won without a word (other options repeated are refused by CLI11).
-        if (!given.insert(kv.substr(0, eq)).second)
-            throw InputError(fmt::format("--set names '{}' more than once: give each setting once", kv.substr(0, eq)));
-        s.knobs[kv.substr(0, eq)] = v;
-    }
-    engine.check_settings(s);  // an unknown knob is refused before any engine runs, naming the engine
-    return s;
+    return engine_settings_of(engine, o.engine_settings);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -251,12 +227,12 @@ Command add_compare_command(CLI::App& root) {
                                 "{:g} to below 1 (default 0.5)",
                                 kMinRelease));
     add_ground_motion_options(*cmd, o->motion);
-    cmd->add_option("--dt", o->dt,
+    cmd->add_option("--dt", o->engine_settings.dt,
                     "engine step [s], for every engine named (default: each engine's own, see --list-settings)");
-    cmd->add_option("--iterations", o->iterations,
+    cmd->add_option("--iterations", o->engine_settings.iterations,
                     fmt::format("solver iterations, 1 to {}, for every engine named (default: each engine's own)",
                                 multibody::kMaxIterations));
-    cmd->add_option("--set", o->knobs,
+    cmd->add_option("--set", o->engine_settings.knobs,
                     "engine setting NAME=VALUE, for every engine named (repeatable; each adapter lists its own; one "
                     "that an engine does not know is refused)");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");

@@ -9,10 +9,13 @@
 
 #include "analytic/error.hpp"
 #include "cli/commands.hpp"
+#include "cli/engine_runs.hpp"
+#include "cli/engine_setting_options.hpp"
 #include "cli/model_validity.hpp"
 #include "cli/free_output.hpp"
 #include "cli/trajectory_csv.hpp"
 #include "io/json.hpp"
+#include "multibody/engine.hpp"
 
 namespace vssw::cli {
 namespace {
@@ -30,9 +33,12 @@ Command add_free_command(CLI::App& root) {
         std::optional<std::string> csv;  // --csv as given (empty is refused)
         bool json = false;
         bool strict = false;
+        std::string engine = "analytic";
+        EngineSettingOptions engine_settings;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = root.add_subcommand("free", "Free vibration released from rest, until the wall stops or overturns");
+    add_engine_choice(*cmd, o->engine);
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
@@ -49,7 +55,8 @@ Command add_free_command(CLI::App& root) {
                     fmt::format("spacing of the CSV samples [s] (default {})", o->request.output_dt));
     cmd->add_flag("--json", o->json, "print JSON instead of tables");
     add_strict_flag(*cmd, o->strict);
-    cmd->footer(
+    add_engine_setting_options(*cmd, o->engine_settings);
+    cmd->footer(std::string(kEngineRunHelp) +
         "Times in s, angular velocities in rad/s, rotations as |theta|/alpha.\n"
         "JSON keys: model, kinematics (null for a parapet), theta0 (r), alpha [rad],\n"
         "impacts [{t, theta_dot_before, theta_dot_after}], peaks (|theta|/alpha at each turning point, the release\n"
@@ -61,7 +68,20 @@ Command add_free_command(CLI::App& root) {
         "for a parapet),\n"
         "energy_balance_error (relative to the largest energy in play), impact_count, first_impact_time (a quarter period), end_time,\n"
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.");
-    return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) {
+    return {cmd, nullptr, [o, cmd](std::ostream& out, std::ostream& err) {
+                if (o->engine != "analytic") {
+                    refuse_analytic_options(*cmd, {"--rtol", "--assumptions", "--kinematics", "--impact", "--roller",
+                                                   "--strict"},
+                                            o->engine);
+                    EngineRun run = prepare_engine_free(o->engine, o->engine_settings, o->wall, o->model,
+                                                        o->request.theta0_over_alpha, o->request.output_dt);
+                    TrajectoryCsv csv(o->csv, o->json);
+                    simulate_engine_run(run);
+                    print_engine_outputs(out, err, csv, run, o->json,
+                                         "Free vibration of the " + describe_wall(o->wall, run.chosen.kind));
+                    return;
+                }
+                refuse_engine_settings(*cmd);
                 TrajectoryCsv csv(o->csv, o->json);
                 o->request.keep_trajectory = csv.wanted();
                 const FreeRun run = run_free(o->wall, o->model, o->request);

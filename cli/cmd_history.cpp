@@ -10,6 +10,8 @@
 
 #include "analytic/error.hpp"
 #include "cli/commands.hpp"
+#include "cli/engine_runs.hpp"
+#include "cli/engine_setting_options.hpp"
 #include "cli/model_validity.hpp"
 #include "cli/history_output.hpp"
 #include "cli/trajectory_csv.hpp"
@@ -26,11 +28,14 @@ Command add_history_command(CLI::App& root) {
         std::optional<std::string> csv;  // --csv as given (empty is refused)
         bool json = false;
         bool strict = false;
+        std::string engine = "analytic";
+        EngineSettingOptions engine_settings;
     };
     auto o = std::make_shared<Options>();
     CLI::App* cmd = root.add_subcommand(
         "history",
         "Response from rest to a ground motion: a record file (and its vertical component) or a synthetic pulse");
+    add_engine_choice(*cmd, o->engine);
     add_ground_motion_options(*cmd, o->motion, true);
     add_model_options(*cmd, o->model);
     add_assumption_options(*cmd, o->model);
@@ -49,7 +54,8 @@ Command add_history_command(CLI::App& root) {
                     "error stream): t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     add_strict_flag(*cmd, o->strict);
-    cmd->footer(
+    add_engine_setting_options(*cmd, o->engine_settings);
+    cmd->footer(std::string(kEngineRunHelp) +
         "Exactly one of --record and --pulse is required. Accelerations given in g use g0 = 9.80665 m/s^2.\n"
         "JSON keys: record (path, null for a pulse), input, scale_factor, pga_g (after scaling), duration [s], model,\n"
         "vertical_record (path or null), vertical_pga_g, kinematics, alpha, max_theta_over_alpha, max_theta [rad],\n"
@@ -61,12 +67,25 @@ Command add_history_command(CLI::App& root) {
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.\n"
         "CSV: theta_dot_over_ref = theta_dot / reference velocity; E = kinetic + weights' potential - work of N,\n"
         "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha); ag_g = a_h / g0.");
-    return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) {
-                o->request.keep_trajectory = o->csv.has_value();
-                HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
+    return {cmd, nullptr, [o, cmd](std::ostream& out, std::ostream& err) {
                 std::vector<std::string> inputs;  // the CSV must not replace them
                 for (const auto& file : {o->motion.record, o->motion.vertical_record})
                     if (file) inputs.push_back(*file);
+                if (o->engine != "analytic") {
+                    refuse_analytic_options(*cmd, {"--assumptions", "--kinematics", "--impact", "--roller", "--strict",
+                                                   "--vertical-record"},
+                                            o->engine);
+                    EngineRun run = prepare_engine_history(o->engine, o->engine_settings, o->wall, o->model, o->motion,
+                                                           o->request.output_dt, o->request.t_end);
+                    TrajectoryCsv csv(o->csv, o->json, inputs);
+                    simulate_engine_run(run);
+                    print_engine_outputs(out, err, csv, run, o->json,
+                                         "Time history of the " + describe_wall(o->wall, run.chosen.kind));
+                    return;
+                }
+                refuse_engine_settings(*cmd);
+                o->request.keep_trajectory = o->csv.has_value();
+                HistoryRun run = prepare_history(o->wall, o->model, o->motion, o->request);
                 TrajectoryCsv csv(o->csv, o->json, inputs);  // after the options are checked, before the run
                 simulate_history(run);
                 csv.write(out, *run.chosen.model, run.result);

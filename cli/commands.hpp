@@ -28,5 +28,6 @@ Command add_study_command(CLI::App& root);
 Command add_stress_command(CLI::App& root);
 Command add_bench_command(CLI::App& root);
 Command add_motions_command(CLI::App& root);
+Command add_scene_command(CLI::App& root);
 
 }  // namespace vssw::cli

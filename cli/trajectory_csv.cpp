@@ -41,9 +41,13 @@ TrajectoryCsv::TrajectoryCsv(const std::optional<std::string>& path, bool json, 
 }
 
 void TrajectoryCsv::write(std::ostream& out, const RockingModel& model, const SimulationResult& result) {
-    if (to_stdout_) write_trajectory_csv(out, model, result);
+    write_with(out, [&](std::ostream& to) { write_trajectory_csv(to, model, result); });
+}
+
+void TrajectoryCsv::write_with(std::ostream& out, const std::function<void(std::ostream&)>& rows) {
+    if (to_stdout_) rows(out);
     if (file_) {
-        write_trajectory_csv(file_->stream(), model, result);
+        rows(file_->stream());
         file_->commit();
     }
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The trajectory CSV of `vssw history --csv` and `vssw free --csv`: one row per sample, in the model's reference units,
 // to a file or to standard output.
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -27,6 +28,8 @@ public:
     bool wanted() const { return to_stdout_ || file_ != nullptr; }
     // After a successful run.
     void write(std::ostream& out, const RockingModel& model, const SimulationResult& result);
+    // The same with any writer of the rows (an engine's trajectory: cli/engine_runs.hpp).
+    void write_with(std::ostream& out, const std::function<void(std::ostream&)>& rows);
     // The stream the command's table or JSON goes to.
     std::ostream& summary(std::ostream& out, std::ostream& err) const { return to_stdout_ ? err : out; }
 

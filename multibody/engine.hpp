@@ -174,6 +174,14 @@ struct EngineFailure : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// The scene an engine runs, in the engine library's own file format (Engine::scene_file): the text the adapter builds
+// its world from, so that a user can open it in the library's own viewer or load it with its own parser.
+struct SceneFile {
+    std::string format;     // "MJCF" (MuJoCo's XML)
+    std::string extension;  // the format's usual file name ending, with its dot (".xml")
+    std::string text;
+};
+
 class Engine {
 public:
     virtual ~Engine() = default;
@@ -202,6 +210,15 @@ public:
     // Wall time per simulated second at the default settings [s/s], measured (docs/measurements/speed.md): callers
     // order their tasks longest first by it (compare/task_pool.hpp); only the order depends on it.
     virtual double cost_per_simulated_second() const = 0;
+    // The scene simulate() would build for this wall, release and settings, in the library's own format; unset for a
+    // backend whose library reads no scene file (it is built through the library's calls only: docs/engines.md
+    // "Scene files"). What a file cannot hold (a ground motion applied step by step, N pushed on the top) is said
+    // in it, as a comment. InputError on a bad scene or setting, as simulate() would.
+    virtual std::optional<SceneFile> scene_file(const WallScene& scene, const Excitation& excitation,
+                                                const EngineSettings& settings) const {
+        (void)scene, (void)excitation, (void)settings;
+        return std::nullopt;
+    }
 };
 
 // Backends of this build ("analytic" always, built in; "bullet", ... when found at configure time, each a plugin built

@@ -67,6 +67,12 @@ public:
     bool runs_concurrently() const override { return true; }
     bool dt_is_a_reporting_interval() const override { return inner_->dt_is_a_reporting_interval(); }
     double cost_per_simulated_second() const override { return inner_->cost_per_simulated_second(); }
+    // Text the adapter writes, as check_settings is: nothing of the library runs but its version string.
+    std::optional<SceneFile> scene_file(const WallScene& scene, const Excitation& excitation,
+                                        const EngineSettings& settings) const override {
+        require_settings_fit_wall(display_name(), settings, setting_descriptions(), scene);
+        return inner_->scene_file(scene, excitation, settings);
+    }
 
     Trajectory simulate(const WallScene& scene, const Excitation& excitation,
                         const EngineSettings& settings) const override {

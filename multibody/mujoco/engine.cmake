@@ -26,8 +26,23 @@ if(VSSW_WITH_MUJOCO)
     # MuJoCo's headers as system headers, so that our zero-warning rule holds.
     target_include_directories(vssw_engine_mujoco SYSTEM PRIVATE ${MUJOCO_INCLUDE_DIR})
     target_link_libraries(vssw_engine_mujoco PRIVATE ${MUJOCO_LIBRARY})
+    # The scene file (vssw scene) loaded back by MuJoCo's own parser: a test program of its own, the one that links
+    # MuJoCo beside the program's libraries (vssw_engine_tests links no engine library). Defined once the top
+    # CMakeLists.txt has found GoogleTest (after this folder).
+    if(VSSW_BUILD_TESTS)
+      cmake_language(DEFER DIRECTORY ${PROJECT_SOURCE_DIR} CALL vssw_mujoco_scene_tests)
+    endif()
   else()
     message(WARNING "MuJoCo (libmujoco-dev) not found: the mujoco engine is not built "
                     "(bash scripts/setup.sh installs it)")
   endif()
 endif()
+
+function(vssw_mujoco_scene_tests)
+  include(GoogleTest)
+  add_executable(vssw_mujoco_scene_tests ${PROJECT_SOURCE_DIR}/multibody/mujoco/tests/test_mujoco_scene.cpp)
+  target_compile_options(vssw_mujoco_scene_tests PRIVATE ${VSSW_WARNINGS})
+  target_include_directories(vssw_mujoco_scene_tests SYSTEM PRIVATE ${MUJOCO_INCLUDE_DIR})
+  target_link_libraries(vssw_mujoco_scene_tests PRIVATE vssw_compare ${MUJOCO_LIBRARY} GTest::gtest_main)
+  gtest_discover_tests(vssw_mujoco_scene_tests DISCOVERY_TIMEOUT 60)
+endfunction()

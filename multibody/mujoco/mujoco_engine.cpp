@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -141,6 +142,7 @@ Knobs read_knobs(const EngineSettings& s) {
 }
 
 std::string num(double v) { return fmt::format("{:.17g}", v); }
+std::string short_num(double v) { return fmt::format("{:.6g}", v); }  // for the reader of the file's comment
 
 // A block's <body>: at its place at rest, on slide-x, slide-z and hinge-y joints at its centre (the slides first, so
 // that their axes stay the world's), with its mass and inertia per depth kDepth, and a box geom.
@@ -217,11 +219,11 @@ std::string rounded_model_xml(const WallScene& scene, const std::string& head, c
             xml += fmt::format("<pair {} condim='3' {} {}/>\n", pair, hinge_friction, contact);
         xml += roller_pairs_xml(contact);
     }
-    xml += "</contact>\n</mujoco>\n";
+    xml += "</contact>\n";
     return xml;
 }
 
-// The model for a scene and settings, as MuJoCo's XML.
+// The model for a scene and settings, as MuJoCo's XML, up to its contacts (scene_xml closes it).
 std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
     const BlockSizes s = block_sizes(scene);
     const double tc = k.solref_steps * dt;
@@ -262,8 +264,58 @@ std::string model_xml(const WallScene& scene, const Knobs& k, double dt) {
                                contact);
         xml += roller_pairs_xml(contact);
     }
-    xml += "</contact>\n</mujoco>\n";
+    xml += "</contact>\n";
     return xml;
+}
+
+// The joints' positions at the release, in the model's order (each block's x, z, angle; the lower block first): the
+// blocks placed by the kit (pose_at), their heights from their places at rest. An angle within rounding of zero is 0.
+std::vector<double> release_qpos(const WallScene& scene, double theta0) {
+    const BlockSizes s = block_sizes(scene);
+    const WallPose pose = pose_at(scene, theta0);
+    auto joints = [](const BlockPose& p, double z_rest) {
+        return std::array<double, 3>{p.x, p.y - z_rest, std::abs(p.angle) < 1e-12 ? 0.0 : p.angle};
+    };
+    std::vector<double> q;
+    for (double v : joints(pose.lower, s.h_lower)) q.push_back(v);
+    if (scene.vssw)
+        for (double v : joints(pose.upper, 2.0 * s.h_lower + s.h_upper)) q.push_back(v);
+    return q;
+}
+
+// What a reader of the file needs and the file cannot hold: vssw applies the ground motion and N at every step.
+std::string scene_comment(const WallScene& scene, const Excitation& ex) {
+    const BlockSizes s = block_sizes(scene);
+    return fmt::format(
+        "<!-- The wall as vssw's MuJoCo adapter builds and steps it ({}). Units m, kg, s; depth {} m, so masses are "
+        "per unit depth. vssw's plane (x, y) is MuJoCo's (x, z); a block's rotation is its hinge joint (lower_r, "
+        "upper_r), positive tipping towards +x. Half-thickness b = {} m; the blocks' half-heights {} m (lower) and "
+        "{} m (upper). The keyframe 'release' is the start: theta1 = {} rad. Not in the file, applied by vssw at every "
+        "step: the ground motion a_h(t) as gravity's x component, -a_h at the step's midpoint (none in free "
+        "vibration), and the overburden N = {} N on the top face's centre (xfrc_applied). -->\n",
+        scene.vssw ? "a VSSW: two blocks, the roller at the top" : "a parapet: one block", short_num(kDepth),
+        short_num(s.b), short_num(s.h_lower), scene.vssw ? short_num(s.h_upper) : std::string("(none)"),
+        short_num(ex.theta0), short_num(scene.overburden() * kDepth));
+}
+
+// The whole text the run compiles and scene_file() gives: the comment, the model, and the release as the keyframe
+// 'release' (the run sets the same joints' positions itself; the keyframe is for a reader of the file).
+std::string scene_xml(const WallScene& scene, const Excitation& ex, const Knobs& k, double dt) {
+    std::string qpos;
+    for (double v : release_qpos(scene, ex.theta0)) qpos += (qpos.empty() ? "" : " ") + num(v);
+    return scene_comment(scene, ex) + model_xml(scene, k, dt) +
+           fmt::format("<keyframe><key name='release' time='0' qpos='{}'/></keyframe>\n</mujoco>\n", qpos);
+}
+
+// The checks a run and a scene file share, then the knobs: InputError on a bad scene, step or setting.
+Knobs checked_knobs(const WallScene& scene, const EngineSettings& settings) {
+    require_rigid_top(scene, "MuJoCo",
+                      "a moving support needs a body whose velocity its contacts see, which "
+                      "the adapter cannot build (as for moving_supports)");
+    require(std::isfinite(settings.dt) && settings.dt > 0.0, "MuJoCo time step dt (s)", "a positive finite number",
+            settings.dt);
+    require_one_description(scene);
+    return read_knobs(settings);
 }
 
 // mjModel and mjData of one run, freed with it.
@@ -320,15 +372,18 @@ public:
     // Each run has its own mjModel and mjData; the process-wide state is the two handlers (set once, a warning's
     // text kept per thread) and the XML compiler's, which MuJoCo guards with its own lock.
     bool runs_concurrently() const override { return true; }
+    // The text run() compiles (scene_xml), as MJCF.
+    std::optional<SceneFile> scene_file(const WallScene& scene, const Excitation& ex,
+                                        const EngineSettings& settings) const override {
+        const Knobs knobs = checked_knobs(scene, settings);
+        return SceneFile{"MJCF", ".xml", scene_xml(scene, ex, knobs, settings.dt)};
+    }
 
 private:
     Trajectory run(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const;
 };
 
 Trajectory MujocoEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
-    require_rigid_top(scene, "MuJoCo",
-                      "a moving support needs a body whose velocity its contacts see, which "
-                      "the adapter cannot build (as for moving_supports)");
     try {
         return run(scene, ex, settings);
     } catch (const MujocoError& e) {
@@ -406,14 +461,11 @@ private:
 };
 
 Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
-    require(std::isfinite(settings.dt) && settings.dt > 0.0, "MuJoCo time step dt (s)", "a positive finite number",
-            settings.dt);
-    require_one_description(scene);
-    const Knobs knobs = read_knobs(settings);
+    const Knobs knobs = checked_knobs(scene, settings);
     const double dt = settings.dt;
     ensure_handlers();
     const BlockSizes s = block_sizes(scene);
-    const auto model = compile(model_xml(scene, knobs, dt));
+    const auto model = compile(scene_xml(scene, ex, knobs, dt));
     mjModel* m = model.get();
     const std::unique_ptr<mjData, DataDeleter> data(mj_makeData(m));
     mjData* d = data.get();
@@ -433,15 +485,12 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
     const Block lower = block("lower", s.h_lower, s.h_lower, s.m_lower);
     const bool vssw = scene.vssw.has_value();
     const Block upper = vssw ? block("upper", 2.0 * s.h_lower + s.h_upper, s.h_upper, s.m_upper) : Block{};
-    // The joints are the only degrees of freedom (no free joints): qpos and qvel share their indices.
-    const WallPose pose = pose_at(scene, ex.theta0);
-    auto place = [&](const Block& k, const BlockPose& p) {
-        d->qpos[k.q] = p.x;
-        d->qpos[k.q + 1] = p.y - k.z_rest;
-        d->qpos[k.q + 2] = std::abs(p.angle) < 1e-12 ? 0.0 : p.angle;
-    };
-    place(lower, pose.lower);
-    if (vssw) place(upper, pose.upper);
+    // The joints are the only degrees of freedom (no free joints): qpos and qvel share their indices, the model's
+    // order the keyframe's (release_qpos).
+    if (lower.q != 0 || (vssw && upper.q != 3))
+        throw EngineFailure("MuJoCo: the blocks' joints are not in the model's order the release assumes");
+    const std::vector<double> release = release_qpos(scene, ex.theta0);
+    for (std::size_t i = 0; i < release.size(); ++i) d->qpos[i] = release[i];
 
     MujocoStepping stepping(m, d, scene, lower, upper);
     RunMonitor monitor("MuJoCo", scene, ex, dt, knobs.limits);

@@ -48,7 +48,7 @@ from ._api import compare, data_dir, engine_settings, engines, report, simulate,
 from ._errors import BoundsError, Error, InputError, SimulationError  # noqa: E402
 from ._results import (ClosedForms, Comparison, Impact, Metric, ReportResult, ResponseComparison,  # noqa: E402
                        ResponseRun, Simulation, StudyResult)
-from .cli import free, help, history, run, wall  # noqa: E402,A004 (help: the program's, as before)
+from .cli import export_scene, free, help, history, run, wall  # noqa: E402,A004 (help: the program's, as before)
 
 # The project's version (`project()` in CMakeLists.txt, the one place it is set); the commit the module was built
 # from is __commit__ ("" outside a git checkout; "+changes" when the work tree differed from it).
@@ -57,6 +57,7 @@ __commit__ = _core.COMMIT
 
 # help() is left out of __all__: `from vssw import *` must not hide the built-in help.
 __all__ = ["simulate", "compare", "study", "report", "engines", "engine_settings", "data_dir", "wall", "free",
+           "export_scene",
            "history", "run", "cli", "Simulation", "Impact", "Comparison", "Metric", "ClosedForms", "ResponseComparison",
            "ResponseRun", "StudyResult",
            "ReportResult", "Error", "InputError", "SimulationError", "BoundsError", "__version__"]

@@ -13,6 +13,7 @@ PATH) with its keyword arguments as the command's options, and returns the comma
     study(file, **kw)    `vssw study`: a study file (or a dict of its keys); its results.csv as a pandas DataFrame
     run(command, ...)    any command with --json, e.g. run("check", bounds="bounds/ci.toml")
     help(command)        the command's --help text: every option, unit and default
+    export_scene(engine, path, **wall)   `vssw scene`: the scene an engine runs, in its own format (MJCF for MuJoCo)
 
 Options: `name=value` is `--name value` with underscores as dashes (pulse_period=0.5 is --pulse-period 0.5); True
 is a bare flag and False or None leaves the option out; a list or tuple repeats the option (engine=["ode",
@@ -37,8 +38,8 @@ from . import _core
 from ._errors import BoundsError, Error, InputError, SimulationError
 
 # help() is left out of __all__: `from vssw import *` must not hide the built-in help.
-__all__ = ["wall", "free", "history", "compare", "study", "run", "Error", "InputError", "SimulationError",
-           "BoundsError"]
+__all__ = ["wall", "free", "history", "compare", "study", "run", "export_scene", "Error", "InputError",
+           "SimulationError", "BoundsError"]
 
 _EXCEPTIONS = {_core.EXIT_BAD_INPUT: InputError, _core.EXIT_SIMULATION_FAILED: SimulationError,
                _core.EXIT_OUT_OF_BOUNDS: BoundsError}
@@ -184,7 +185,11 @@ def free(trace=False, **options):
     kinematics, impact, roller (each overriding one part of the set), xi, density, g, rtol, output_dt, csv, strict (True:
     SimulationError when the model's own assumptions fail along the run, i.e. any warning). Returns the
     JSON: impacts [{t, theta_dot_before, theta_dot_after}], peaks, peak_times, stop_time, falls, warnings, roller,
-    ...; with trace=True also "trace", as for history()."""
+    ...; with trace=True also "trace", as for history(). engine="mujoco" (any engine of vssw.engines()) runs the
+    wall in that engine instead of the analytic model, with its settings dt, iterations, set (a dict {knob: value});
+    its trace has the columns t, theta_over_alpha, theta_dot_over_ref, theta2_over_alpha, top_dy, E_over_Vr, ag_g,
+    contacts, and the analytic model's options (assumptions, kinematics, impact, roller, rtol, strict) raise
+    InputError with it."""
     return _with_trace("free", trace, options)
 
 
@@ -205,8 +210,19 @@ def history(trace=False, **options):
     "sine"|"cosine"|"ricker"|"harmonic", amplitude=, pulse_period=). Other options as `free` (no theta0), and
     output_dt, t_end, csv (a file to write the time history to). Returns the JSON; with trace=True also "trace":
     the time history as NumPy arrays keyed by the CSV's columns (t, theta_over_alpha, theta_dot_over_ref,
-    E_over_Vr, ED_over_Vr, ag_g), read from csv= when given, else from a temporary file."""
+    E_over_Vr, ED_over_Vr, ag_g), read from csv= when given, else from a temporary file. engine= runs an engine
+    instead, as for free() (its trace's columns are free()'s with an engine)."""
     return _with_trace("history", trace, options)
+
+
+def export_scene(engine, path, **options):
+    """`vssw scene`: write the scene `engine` runs for a wall to `path` in the engine's own file format (MJCF for
+    "mujoco"; an engine without one raises InputError), without running it. Options: height, thickness, hinge
+    (required), model, xi, density, g, friction, theta0 (the release as a fraction of alpha, default 0), dt,
+    iterations, set. The file is written under a temporary name and renamed onto `path`. Returns the JSON: engine,
+    version, format, path, model, theta0, dt."""
+    _reserved(options, ["out"])
+    return run("scene", engine=engine, out=_os.fspath(path), **options)
 
 
 def _with_trace(command, trace, options):
