@@ -30,6 +30,8 @@ packages=(
   pybind11-dev python3-dev           # the Python module (python/, `import vssw`), built for Debian's /usr/bin/python3
   python3-numpy python3-pandas       # its traces (NumPy arrays) and study() as a DataFrame (pandas: optional at run time)
   python3-pytest                     # its tests (the CTest vssw_python)
+  dpkg-dev file                      # `cpack -G DEB`: dpkg-shlibdeps computes the package's Depends, finding the
+                                     # binaries with file (cmake/debian_package.cmake; the CTest vssw_deb_package)
   python3-markdown                   # tests/markdown_scan.py: report.md and study.md rendered as MkDocs does
   mkdocs mkdocs-material             # the documentation site (mkdocs.yml; the CTest vssw_docs builds it with --strict)
 )
