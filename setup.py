@@ -5,8 +5,8 @@ to that Python's site-packages, and the rest (bin/vssw, lib/vssw/plugins, share/
 (the wheel's data), the layout whose relative paths the package's _install.py holds. So `vssw` is on the
 environment's PATH, and `import vssw` finds the same plugins and data as that program.
 
-VSSW_PIP_BUILD_DIR=DIR builds in (and installs from) an existing CMake build folder, configured for this Python, instead
-of a new one; VSSW_PIP_WORK_DIR=DIR holds setuptools' own folders (build-pip/ by default).
+VSSW_PIP_BUILD_DIR=DIR installs from an existing CMake build folder, built and configured for this Python, instead of
+building a new one; VSSW_PIP_WORK_DIR=DIR holds setuptools' own folders (build-pip/ by default).
 """
 import glob
 import os
@@ -92,23 +92,22 @@ class CMakeBuild(build_ext):
                 DATA_FILES.append((os.path.relpath(folder, stage), [os.path.join(folder, f) for f in sorted(files)]))
 
     def cmake_build_dir(self):
-        """VSSW_PIP_BUILD_DIR, built (a no-op when up to date); else a folder of its own, configured for this Python
-        without the tests and benchmarks, and built."""
+        """VSSW_PIP_BUILD_DIR as it is built (not built again: a build folder's own tests run this while they use it);
+        else a folder of its own, configured for this Python without the tests and benchmarks, and built."""
         reused = os.environ.get("VSSW_PIP_BUILD_DIR")
         if reused:
             build_dir = os.path.abspath(reused)
             if not os.path.isfile(os.path.join(build_dir, "CMakeCache.txt")):
                 fail(f"VSSW_PIP_BUILD_DIR={reused} is not a CMake build folder (no CMakeCache.txt)")
-        else:
-            build_dir = os.path.join(WORK, "cmake")
-            generator = ["-G", "Ninja"] if shutil.which("ninja") else []
-            run(["cmake", "-S", HERE, "-B", build_dir, *generator, "-DCMAKE_BUILD_TYPE=Release",
-                 "-DVSSW_BUILD_TESTS=OFF", "-DVSSW_BUILD_BENCH=OFF", f"-DPython3_EXECUTABLE={sys.executable}"])
-        targets = ["vssw"]  # with every plugin, which the library depends on
-        if os.path.isdir(os.path.join(build_dir, "python", "CMakeFiles", "vssw_python_core.dir")):
-            targets.append("vssw_python_core")
+            if not os.path.isfile(os.path.join(build_dir, "vssw")):
+                fail(f"VSSW_PIP_BUILD_DIR={reused} holds no vssw program: build it first (cmake --build {reused})")
+            return build_dir
+        build_dir = os.path.join(WORK, "cmake")
+        generator = ["-G", "Ninja"] if shutil.which("ninja") else []
+        run(["cmake", "-S", HERE, "-B", build_dir, *generator, "-DCMAKE_BUILD_TYPE=Release", "-DVSSW_BUILD_TESTS=OFF",
+             "-DVSSW_BUILD_BENCH=OFF", f"-DPython3_EXECUTABLE={sys.executable}"])
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
-        run(["cmake", "--build", build_dir, "--parallel", jobs, "--target", *targets])
+        run(["cmake", "--build", build_dir, "--parallel", jobs])
         return build_dir
 
 
