@@ -56,7 +56,7 @@ def cached_python(build_dir):
     return found[1] if found else None
 
 
-class Distribution(Distribution):
+class BinaryDistribution(Distribution):
     def has_ext_modules(self):
         """The wheel holds compiled code (the module, the program, the plugins): tagged for this Python and machine."""
         return True
@@ -114,7 +114,7 @@ class CMakeBuild(build_ext):
 os.makedirs(WORK, exist_ok=True)
 setup(
     version=project_version(),
-    distclass=Distribution,
+    distclass=BinaryDistribution,
     cmdclass={"build_ext": CMakeBuild},
     packages=[],
     data_files=DATA_FILES,
