@@ -30,6 +30,10 @@ packages=(
   pybind11-dev python3-dev           # the Python module (python/, `import vssw`), built for Debian's /usr/bin/python3
   python3-numpy python3-pandas       # its traces (NumPy arrays) and study() as a DataFrame (pandas: optional at run time)
   python3-pytest                     # its tests (the CTest vssw_python)
+  python3-venv python3-pip python3-setuptools python3-wheel  # `pip install --no-build-isolation .` into a
+                                     # virtual environment (pyproject.toml, setup.py; the CTest vssw_pip_install)
+  dpkg-dev file                      # `cpack -G DEB`: dpkg-shlibdeps computes the package's Depends, finding the
+                                     # binaries with file (cmake/debian_package.cmake; the CTest vssw_deb_package)
   python3-markdown                   # tests/markdown_scan.py: report.md and study.md rendered as MkDocs does
   python3-matplotlib python3-pil     # Simulation.plot / animate (optional at run time), GIFs through Pillow, the wall sketch
   python3-nbclient python3-nbformat python3-ipykernel  # docs/notebooks/first-steps.ipynb run by its test (nbclient)

@@ -41,7 +41,36 @@ def _locate_installed_files():
         _os.environ["VSSW_STUDIES_DIR"] = _os.path.join(share, "studies")
 
 
+def _check_interpreter():
+    """The compiled part, _core, loads only into the Python version it was built for, whose tag its file name carries
+    (_core.cpython-311-x86_64-linux-gnu.so: CPython 3.11); and the package needs NumPy. Either missing is said here in
+    one message, instead of the import system's "partially initialized module ... circular import" or a bare
+    "No module named 'numpy'" from deep inside the package."""
+    import importlib.machinery
+    import re
+    import sys
+
+    here = _os.path.dirname(_os.path.abspath(__file__))
+    running = f"{sys.version_info.major}.{sys.version_info.minor}"
+    build = ("build it for this one with `pip install --no-build-isolation .` from vssw's source tree "
+             "(docs/guide/install.md)")
+    built = sorted(name for name in _os.listdir(here) if name.startswith("_core.") and name.endswith(".so"))
+    loadable = {"_core" + suffix for suffix in importlib.machinery.EXTENSION_SUFFIXES}
+    if built and not loadable.intersection(built):
+        tag = re.search(r"cpython-(\d)(\d+)", built[0])
+        built_for = f"{tag[1]}.{tag[2]}" if tag else "another Python"
+        raise ImportError(f"vssw was built for Python {built_for} ({built[0]} in {here}), and this is Python {running} "
+                          f"({sys.executable}): run it with Python {built_for}, or {build}")
+    try:
+        import numpy  # noqa: F401
+    except ImportError:
+        raise ImportError(f"vssw needs NumPy, which this Python {running} ({sys.executable}) does not have: run it "
+                          f"with a Python that has NumPy (Debian's /usr/bin/python3 with python3-numpy), or install "
+                          f"NumPy for this one") from None
+
+
 _locate_installed_files()
+_check_interpreter()
 
 from . import _core, cli  # noqa: E402 (after the environment is set)
 from ._api import compare, data_dir, engine_settings, engines, report, simulate, study  # noqa: E402
