@@ -16,8 +16,9 @@ CELL_TIMEOUT_S = 120  # a ceiling per cell against a hung kernel; the whole note
 
 
 def printed(notebook):
-    """Each code cell's printed text (its stream outputs), the figures left out: what the numbers are."""
-    return [["".join(o["text"]) for o in cell.get("outputs", []) if o["output_type"] == "stream"]
+    """Each code cell's printed text (its stream outputs joined: the kernel may send one print in several messages,
+    as its buffer is flushed), the figures left out: what the numbers are."""
+    return ["".join("".join(o["text"]) for o in cell.get("outputs", []) if o["output_type"] == "stream")
             for cell in notebook["cells"] if cell["cell_type"] == "code"]
 
 
