@@ -648,7 +648,8 @@ def report(out: Optional[Path] = None, *, suite: Path = "default", engines: Unio
     out: the report folder (created if missing). None: a temporary folder, removed once its tables are read
         (ReportResult.folder, markdown and html are then None), without plots unless plots=True.
     suite: "default", "full" or a suite file. engines: a list of engines, in any letter case (default every engine
-        of this build but simbody-rigid). cases: only these case ids (a list). threads: worker threads (default the available cores).
+        of this build but simbody-rigid). cases: only these case ids (a list). threads: worker threads (default the
+        available cores).
     earthquake: "default", "none" or a study file of kind "ensemble" (default: "default", "none" with cases).
     bench: a finished `vssw bench --out DIR` folder whose section ends the report. gnuplot: the gnuplot program.
     data: the records' folder. run_budget: CPU seconds one engine run may take.

@@ -53,8 +53,9 @@ class Simulation:
     failing along the run), impacts (list of Impact), peaks (list of (t [s], theta1 [rad]) turning points), period
     [s] (4 x release to first impact; None without a release or an impact), max_abs_theta1 [rad] (the largest
     sample of the whole run; impacts, peaks, period and max_abs_theta1 are read off the run's samples: an engine's
-    every step, the analytic model's at its output interval, which sample_dt sets), peak_rotation [alpha1] and peak_time [s] (the run's peak as a study and the report measure it: the
-    located turning point of the analytic model, the collapse angle and the overturning when it overturned), assumptions
+    every step, the analytic model's at its output interval, which sample_dt sets), peak_rotation [alpha1] and
+    peak_time [s] (the run's peak as a study and the report measure it: the located turning point of the analytic
+    model, the collapse angle and the overturning when it overturned), assumptions
     (analytic: "mechanism", "paper" or "custom"; None for an engine), kinematics (analytic: "exact" or "paper"; None
     for an engine or a parapet), ground_motion (its name, None in free
     vibration), slip (an engine run's sliding when friction was given, a Slip; else None)."""
