@@ -30,6 +30,7 @@
 #include "validation/earthquake.hpp"
 #include "validation/suite.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/host/engine_names.hpp"
 #include "validation/bench_files.hpp"
 #include "io/clock.hpp"
 #include "io/folder_swap.hpp"
@@ -88,11 +89,14 @@ std::vector<std::string> checked_engines(const std::vector<std::string>& asked) 
     if (asked.empty()) return multibody::default_compared_engines();
     const std::vector<std::string> available = multibody::available_engines();
     std::vector<std::string> engines;
-    for (const std::string& name : asked) {
-        if (std::find(available.begin(), available.end(), name) == available.end())
-            throw InputError(fmt::format("--engines: no engine '{}' in this build{} (available: {})", name,
-                                         multibody::engine_name_hint(name), fmt::join(available, ", ")));
-        if (name != "analytic") engines.push_back(name);
+    for (const std::string& given : asked) {
+        const std::optional<std::string> name = multibody::canonical_engine(given);  // "ODE" is ode
+        if (!name)
+            throw InputError(fmt::format("--engines: no engine '{}' in this build{} (available: {})", given,
+                                         multibody::engine_name_hint(given), fmt::join(available, ", ")));
+        if (std::find(engines.begin(), engines.end(), *name) != engines.end())
+            throw InputError(fmt::format("--engines names '{}' more than once", *name));
+        if (*name != "analytic") engines.push_back(*name);
     }
     return engines;
 }

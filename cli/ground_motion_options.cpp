@@ -104,7 +104,7 @@ LoadedMotion load_ground_motion(const GroundMotionOptions& o) {
     if (o.record) {
         std::optional<AccelUnits> units;
         if (o.units) units = parse_units(*o.units);
-        motion = read_record(*o.record, units ? &*units : nullptr, o.format);
+        motion = o.samples ? *o.samples : read_record(*o.record, units ? &*units : nullptr, o.format);
         sample_dt = mean_spacing(motion);
         if (o.vertical_record) vertical = read_record(*o.vertical_record, units ? &*units : nullptr, o.format);
     } else {

@@ -13,6 +13,9 @@ namespace vssw::cli {
 
 struct GroundMotionOptions {
     std::optional<std::string> record;   // file path (PEER AT2, two columns, one column with --record-dt, a CSV)
+    // The record as samples already in memory (the Python module's record=(t, values)), read in place of the file;
+    // `record` then only names it in messages and outputs.
+    std::optional<GroundMotion> samples;
     std::optional<std::string> units;    // overrides the record's units
     RecordFormat format;                 // --record-dt, --time-column, --accel-column
     std::optional<std::string> vertical_record;  // `vssw history` only: the vertical component, read as --record

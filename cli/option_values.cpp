@@ -10,6 +10,7 @@
 
 #include "analytic/error.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/host/engine_names.hpp"
 
 namespace vssw::cli {
 
@@ -34,7 +35,7 @@ std::vector<std::string> parse_engine_list(const std::string& option, const std:
     std::vector<std::string> engines;
     for (const std::string& name : names) {
         if (name == "all") engines.insert(engines.end(), defaults.begin(), defaults.end());
-        else engines.push_back(name);
+        else engines.push_back(multibody::canonical_engine(name).value_or(name));  // "ODE" is ode
     }
     const std::vector<std::string> available = multibody::available_engines();
     auto holds = [](const auto& begin, const auto& end, const std::string& name) {
@@ -52,11 +53,10 @@ std::vector<std::string> parse_engine_list(const std::string& option, const std:
     std::vector<std::string> problems;
     if (engines.empty()) problems.push_back("no engine given");
     if (!unknown.empty()) {
-        std::vector<std::string> meant;  // "'ode' for 'ODE'"
+        std::vector<std::string> named;  // "'mujuco' (did you mean 'mujoco'?)"
         for (const std::string& name : unknown)
-            if (const auto m = multibody::engine_meant(name)) meant.push_back(fmt::format("'{}' for '{}'", *m, name));
-        problems.push_back(fmt::format("no engine '{}' in this build{}", fmt::join(unknown, "', '"),
-                                       meant.empty() ? "" : fmt::format(" (did you mean {}?)", fmt::join(meant, ", "))));
+            named.push_back(fmt::format("'{}'{}", name, multibody::engine_name_hint(name)));
+        problems.push_back(fmt::format("no engine {} in this build", fmt::join(named, ", ")));
     }
     if (!repeated.empty()) problems.push_back(fmt::format("'{}' named more than once", fmt::join(repeated, "', '")));
     if (!problems.empty())

@@ -241,7 +241,8 @@ std::string engine_display_name(const std::string& name);
 // For a name that is no backend of this build: the backend it names in other letter cases or by its display name
 // ("ODE", "MuJoCo", "simbody_rigid": ode, mujoco, simbody-rigid), if any.
 std::optional<std::string> engine_meant(const std::string& name);
-// " (did you mean 'ode'?)" for such a name, else "": messages refusing an engine's name end with it.
+// For a name no backend answers to (host/engine_names.hpp canonical_engine, which takes the names above as their
+// backend's): " (did you mean 'mujoco'?)" for the backend nearest to it, else "": messages refusing a name end with it.
 std::string engine_name_hint(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
 // except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold

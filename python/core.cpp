@@ -46,6 +46,7 @@
 #include "multibody/host/analytic_engine.hpp"
 #include "multibody/host/child_process.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/host/engine_names.hpp"
 #include "multibody/host/run_budget.hpp"
 #include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (cli/CMakeLists.txt)
 
@@ -199,6 +200,11 @@ vssw::multibody::EngineSettings settings_of(const vssw::multibody::Engine& engin
             ? vssw::multibody::analytic_settings(chosen.assumptions)
             : engine.default_settings();
     if (dt) {
+        // dt is an engine's step; the analytic model takes none of a fixed size (its output interval is sample_dt).
+        if (engine.name() == "analytic")
+            throw vssw::InputError(fmt::format(
+                "dt {}: the analytic model takes no fixed step (its integrator chooses its steps to its tolerance, "
+                "settings={{'rtol': ...}}); its output interval is vssw.simulate's sample_dt", *dt));
         require(std::isfinite(*dt) && *dt > 0.0, "dt (engine step, s)", "a positive finite number", *dt);
         s.dt = *dt;
     }
@@ -299,24 +305,56 @@ py::dict geometry_dict(const vssw::Wall& wall) {
     return d;
 }
 
-// A trajectory as NumPy arrays (one per sample field) and what the metrics code reads from it.
-py::dict trajectory_dict(const vssw::multibody::Trajectory& traj, const vssw::GroundMotion& motion) {
+// A sample this close to a time of the grid (relative to its interval) is taken at it: an engine's sample is at its
+// step i * dt, which differs from k * sample_dt by rounding only.
+constexpr double kOnGridTolerance = 1e-9;
+
+// The samples at t = k * sample_dt, their times set to exactly that (one time grid for every backend): an engine's
+// last sample, taken where its run ended (at rest, overturned) between two times of the grid, is left out.
+std::vector<vssw::multibody::TrajectorySample> on_grid(std::vector<vssw::multibody::TrajectorySample> samples,
+                                                       double sample_dt) {
+    std::vector<vssw::multibody::TrajectorySample> kept;
+    for (vssw::multibody::TrajectorySample& p : samples) {
+        const double k = std::round(p.t / sample_dt);
+        if (std::abs(p.t - k * sample_dt) > kOnGridTolerance * sample_dt) continue;
+        if (!kept.empty() && k * sample_dt <= kept.back().t) continue;
+        p.t = k * sample_dt;
+        kept.push_back(p);
+    }
+    return kept;
+}
+
+// sample_dt on an engine of a fixed step: a whole number of its steps, else no sample would fall on the grid.
+void require_whole_steps(const vssw::multibody::Engine& engine, const vssw::multibody::EngineSettings& s) {
+    if (engine.name() == "analytic" || s.sample_dt <= 0.0) return;
+    const double steps = std::round(s.sample_dt / s.dt);
+    if (steps < 1.0 || std::abs(steps * s.dt - s.sample_dt) > kOnGridTolerance * s.sample_dt)
+        throw vssw::InputError(fmt::format("sample_dt {:g} s is not a whole number of {}'s steps (dt {:g} s): give a "
+                                           "multiple of dt, or a dt that divides sample_dt",
+                                           s.sample_dt, engine.name(), s.dt));
+}
+
+// A trajectory as NumPy arrays (one per sample field, from `samples`: the run's, or those on the time grid) and what
+// the metrics code reads from the whole run.
+py::dict trajectory_dict(const vssw::multibody::Trajectory& traj,
+                         const std::vector<vssw::multibody::TrajectorySample>& samples,
+                         const vssw::GroundMotion& motion) {
     using Sample = vssw::multibody::TrajectorySample;
     py::dict d;
-    d["t"] = column(traj.samples, &Sample::t);
-    d["theta1"] = column(traj.samples, &Sample::theta1);
-    d["theta1_dot"] = column(traj.samples, &Sample::theta1_dot);
-    d["theta2"] = column(traj.samples, &Sample::theta2);
-    d["top_dy"] = column(traj.samples, &Sample::top_dy);
-    d["kinetic"] = column(traj.samples, &Sample::kinetic);
-    d["potential"] = column(traj.samples, &Sample::potential);
-    py::array_t<int> contacts(static_cast<py::ssize_t>(traj.samples.size()));
-    py::array_t<double> ground(static_cast<py::ssize_t>(traj.samples.size()));
+    d["t"] = column(samples, &Sample::t);
+    d["theta1"] = column(samples, &Sample::theta1);
+    d["theta1_dot"] = column(samples, &Sample::theta1_dot);
+    d["theta2"] = column(samples, &Sample::theta2);
+    d["top_dy"] = column(samples, &Sample::top_dy);
+    d["kinetic"] = column(samples, &Sample::kinetic);
+    d["potential"] = column(samples, &Sample::potential);
+    py::array_t<int> contacts(static_cast<py::ssize_t>(samples.size()));
+    py::array_t<double> ground(static_cast<py::ssize_t>(samples.size()));
     auto c = contacts.mutable_unchecked<1>();
     auto a = ground.mutable_unchecked<1>();
-    for (std::size_t i = 0; i < traj.samples.size(); ++i) {
-        c(static_cast<py::ssize_t>(i)) = traj.samples[i].contacts;
-        a(static_cast<py::ssize_t>(i)) = motion(traj.samples[i].t);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        c(static_cast<py::ssize_t>(i)) = samples[i].contacts;
+        a(static_cast<py::ssize_t>(i)) = motion(samples[i].t);
     }
     d["contacts"] = contacts;
     d["ground_acceleration"] = ground;
@@ -333,6 +371,12 @@ py::dict trajectory_dict(const vssw::multibody::Trajectory& traj, const vssw::Gr
     d["period"] = quarter ? py::cast(4.0 * *quarter) : py::none();
     d["max_abs_theta1"] = vssw::compare::max_abs_theta(traj);
     return d;
+}
+
+// The whole wall's slenderness atan(b/h) (a study's `alpha`, Fig. 10's; study/grid.cpp computes it alike): alpha1
+// of a VSSW is its lower block's.
+double wall_alpha(const vssw::multibody::WallScene& scene) {
+    return scene.vssw ? std::atan(scene.vssw->b / scene.vssw->h()) : scene.parapet->alpha;
 }
 
 py::dict simulate(const std::string& engine_name, const WallArgs& wall, double theta0, std::optional<double> t_end,
@@ -375,6 +419,7 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     ex.stop_at_rest = stop_at_rest;
     const std::unique_ptr<vssw::multibody::Engine> engine = vssw::multibody::make_engine(engine_name);
     const vssw::multibody::EngineSettings settings = settings_of(*engine, chosen, dt, sample_dt, iterations, knobs);
+    require_whole_steps(*engine, settings);
     const ScopedRunBudget budget(run_budget);
     vssw::multibody::Trajectory traj;
     if (engine->runs_concurrently()) {  // every backend make_engine() gives; one that is not keeps the GIL
@@ -382,11 +427,18 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
     } else {
         traj = engine->simulate(scene, ex, settings);
     }
-    py::dict d = trajectory_dict(traj, ex.horizontal);
+    const bool grid = sample_dt && *sample_dt > 0.0;
+    py::dict d = trajectory_dict(traj, grid ? on_grid(traj.samples, *sample_dt) : traj.samples, ex.horizontal);
     d["engine"] = engine->name();
     d["version"] = engine->version();
-    d["settings"] = settings_dict(settings);
-    d["alpha"] = scene.alpha();
+    py::dict used = settings_dict(settings);
+    if (engine->name() == "analytic") {  // no step of its own: its dt is the output interval, sample_dt's
+        used["sample_dt"] = settings.sample_dt > 0.0 ? settings.sample_dt : settings.dt;
+        used["dt"] = py::none();
+    }
+    d["settings"] = used;
+    d["alpha1"] = scene.alpha();
+    d["alpha"] = wall_alpha(scene);
     d["geometry"] = geometry_dict(scene);
     // The measures a study, `vssw compare --record` and the report give this run (compare/response.hpp).
     const vssw::compare::Response response = vssw::compare::response_of(traj, scene);
@@ -556,11 +608,22 @@ void raise_package_error(const char* name, int code, const char* message) {
 }  // namespace
 
 // The ground motion as the Python functions take it (record= with scale= or pga=, or pulse= with its parameters).
-vssw::cli::GroundMotionOptions motion_options(std::optional<std::string> record, std::optional<double> scale,
-                                              std::optional<double> pga, std::optional<std::string> pulse,
-                                              std::optional<double> amplitude, std::optional<double> pulse_period,
-                                              std::optional<double> duration) {
+// record_samples: (times [s], accelerations [g]) when the record was given as arrays (vssw/_api.py has checked them),
+// `record` then its name; read as a two-column file of the same numbers is (analytic/ground_motion.cpp).
+using RecordSamples = std::optional<std::pair<std::vector<double>, std::vector<double>>>;
+
+vssw::cli::GroundMotionOptions motion_options(std::optional<std::string> record, const RecordSamples& record_samples,
+                                              std::optional<double> scale, std::optional<double> pga,
+                                              std::optional<std::string> pulse, std::optional<double> amplitude,
+                                              std::optional<double> pulse_period, std::optional<double> duration) {
     vssw::cli::GroundMotionOptions motion;
+    if (record_samples) {
+        const double factor = vssw::to_m_per_s2(vssw::AccelUnits::g);
+        std::vector<double> accel;
+        accel.reserve(record_samples->second.size());
+        for (double a : record_samples->second) accel.push_back(a * factor);
+        motion.samples = vssw::GroundMotion::sampled(record_samples->first, std::move(accel), record.value_or("array"));
+    }
     motion.record = std::move(record);
     motion.scale = scale;
     motion.pga_g = pga;
@@ -590,18 +653,19 @@ PYBIND11_MODULE(_core, m) {
         "simulate",
         [](const std::string& engine, const WallArgs& wall, double theta0, std::optional<double> t_end,
            std::optional<double> dt, std::optional<double> sample_dt, std::optional<int> iterations,
-           const std::map<std::string, double>& knobs, std::optional<std::string> record, std::optional<double> scale,
-           std::optional<double> pga, std::optional<std::string> pulse, std::optional<double> amplitude,
-           std::optional<double> pulse_period, std::optional<double> duration, bool stop_at_rest,
-           std::optional<double> friction, std::optional<double> run_budget) {
-            const auto motion = motion_options(std::move(record), scale, pga, std::move(pulse), amplitude, pulse_period,
-                                               duration);
+           const std::map<std::string, double>& knobs, std::optional<std::string> record,
+           const RecordSamples& record_samples, std::optional<double> scale, std::optional<double> pga,
+           std::optional<std::string> pulse, std::optional<double> amplitude, std::optional<double> pulse_period,
+           std::optional<double> duration, bool stop_at_rest, std::optional<double> friction,
+           std::optional<double> run_budget) {
+            const auto motion = motion_options(std::move(record), record_samples, scale, pga, std::move(pulse),
+                                               amplitude, pulse_period, duration);
             return simulate(engine, wall, theta0, t_end, dt, sample_dt, iterations, knobs, motion, stop_at_rest,
                             friction, run_budget);
         },
         py::arg("engine"), py::arg("wall"), py::arg("theta0"), py::arg("t_end"), py::arg("dt"), py::arg("sample_dt"),
-        py::arg("iterations"), py::arg("knobs"), py::arg("record"), py::arg("scale"), py::arg("pga"),
-        py::arg("pulse"), py::arg("amplitude"), py::arg("pulse_period"), py::arg("duration"),
+        py::arg("iterations"), py::arg("knobs"), py::arg("record"), py::arg("record_samples"), py::arg("scale"),
+        py::arg("pga"), py::arg("pulse"), py::arg("amplitude"), py::arg("pulse_period"), py::arg("duration"),
         py::arg("stop_at_rest"), py::arg("friction"), py::arg("run_budget"),
         "One backend's run (vssw.simulate documents the arguments): the trajectory's arrays and what it measured.");
     m.def("compare", &compare, py::arg("engine"), py::arg("wall"), py::arg("theta0"), py::arg("dt"),
@@ -610,23 +674,26 @@ PYBIND11_MODULE(_core, m) {
     m.def(
         "compare_response",
         [](const std::vector<std::string>& engines, const WallArgs& wall, std::optional<std::string> record,
-           std::optional<double> scale, std::optional<double> pga, std::optional<std::string> pulse,
-           std::optional<double> amplitude, std::optional<double> pulse_period, std::optional<double> duration,
-           std::optional<double> dt, std::optional<int> iterations, const std::map<std::string, double>& knobs,
-           std::optional<double> run_budget) {
-            const auto motion = motion_options(std::move(record), scale, pga, std::move(pulse), amplitude, pulse_period,
-                                               duration);
+           const RecordSamples& record_samples, std::optional<double> scale, std::optional<double> pga,
+           std::optional<std::string> pulse, std::optional<double> amplitude, std::optional<double> pulse_period,
+           std::optional<double> duration, std::optional<double> dt, std::optional<int> iterations,
+           const std::map<std::string, double>& knobs, std::optional<double> run_budget) {
+            const auto motion = motion_options(std::move(record), record_samples, scale, pga, std::move(pulse),
+                                               amplitude, pulse_period, duration);
             return compare_response(engines, wall, motion, dt, iterations, knobs, run_budget);
         },
-        py::arg("engines"), py::arg("wall"), py::arg("record"), py::arg("scale"), py::arg("pga"), py::arg("pulse"),
+        py::arg("engines"), py::arg("wall"), py::arg("record"), py::arg("record_samples"), py::arg("scale"),
+        py::arg("pga"), py::arg("pulse"),
         py::arg("amplitude"), py::arg("pulse_period"), py::arg("duration"), py::arg("dt"), py::arg("iterations"),
         py::arg("knobs"), py::arg("run_budget"),
         "Engines and the analytic model from rest under one ground motion (vssw.compare with record= or pulse=).");
     m.def("engine_settings", &engine_settings, py::arg("engine"), "Every setting of one backend.");
     m.def("available_engines", &vssw::multibody::available_engines, "The backends of this build.");
+    m.def("canonical_engine", &vssw::multibody::canonical_engine, py::arg("name"),
+          "The backend of this build a name means (\"ODE\", \"Simbody-Rigid\": ode, simbody-rigid), None when none.");
     m.def("engine_name_hint", &vssw::multibody::engine_name_hint, py::arg("name"),
-          "The end of a message refusing an engine's name: \" (did you mean 'ode'?)\" when it names a backend of this "
-          "build in other letters or by its display name, else empty.");
+          "The end of a message refusing an engine's name: \" (did you mean 'mujoco'?)\" for the backend nearest to it, "
+          "else empty.");
     m.def("default_compared_engines", &vssw::multibody::default_compared_engines,
           "The engines `all` stands for (every engine but the analytic model and simbody-rigid).");
     m.def("data_dir", &vssw::shipped_data_dir, "The shipped data folder (records, Table 1).");

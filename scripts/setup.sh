@@ -56,6 +56,9 @@ case "$mode" in test) packages+=(chromium) ;; esac
 # perf record); profile only. Whole commands are timed with hyperfine, above.
 case "$mode" in profile) packages+=(valgrind linux-perf) ;; esac
 case "$mode" in test) packages+=(universal-ctags) ;; esac
+# The type checker the Python module's tests run over the package and a script typed against it
+# (python/tests/test_types.py: its annotations and py.typed); test only, about 35 MB installed.
+case "$mode" in test) packages+=(python3-mypy) ;; esac
 
 missing=()
 for p in "${packages[@]}"; do

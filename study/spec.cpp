@@ -27,6 +27,7 @@
 #include "compare/experiments.hpp"
 #include "multibody/host/analytic_engine.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/host/engine_names.hpp"
 
 namespace vssw::study {
 
@@ -585,10 +586,15 @@ std::vector<Axis> read_settings(const Reader& r, const json& t, const std::strin
 std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
     std::vector<EngineSpec> engines;
     const std::vector<std::string> available = multibody::available_engines();
-    auto add = [&](const std::string& name, const std::string& key) {
-        if (!contains(available, name))
+    // A name as given ("ODE", "Simbody-Rigid") read as its backend's canonical name, the one the outputs print.
+    auto canonical = [&](const std::string& name, const std::string& key) {
+        const std::optional<std::string> known = multibody::canonical_engine(name);
+        if (!known)
             r.fail(key, fmt::format("no engine '{}' in this build{} (available: {})", name,
                                     multibody::engine_name_hint(name), fmt::join(available, ", ")));
+        return *known;
+    };
+    auto add = [&](const std::string& name, const std::string& key) {
         if (std::any_of(engines.begin(), engines.end(), [&](const EngineSpec& e) { return e.name == name; }))
             r.fail(key, fmt::format("names engine '{}' twice", name));
         engines.push_back({name, {}});
@@ -599,20 +605,22 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
         if (doc["engines"].empty()) r.fail("engines", "an empty list: name at least one engine");
         for (const json& v : doc["engines"]) {
             if (!v.is_string()) r.fail("engines", fmt::format("must list engine names, got {}", io::dump_json(v)));
-            add(v.get<std::string>(), "engines");
+            add(canonical(v.get<std::string>(), "engines"), "engines");
         }
     } else if (doc["engines"].is_object()) {
         if (doc["engines"].empty()) r.fail("engines", "an empty table: name at least one engine");
+        std::map<std::string, const json*> tables;  // canonical name -> its table
+        for (const auto& item : doc["engines"].items()) {
+            const std::string name = canonical(item.key(), "engines");
+            if (!tables.emplace(name, &item.value()).second)
+                r.fail("engines", fmt::format("names engine '{}' twice", name));
+        }
         // A table's keys have no order in TOML: the build's order of engines.
         for (const std::string& name : available)
-            if (doc["engines"].contains(name)) {
+            if (const auto it = tables.find(name); it != tables.end()) {
                 add(name, "engines");
-                engines.back().settings = read_settings(r, doc["engines"][name], "engines." + name, name);
+                engines.back().settings = read_settings(r, *it->second, "engines." + name, name);
             }
-        for (const auto& item : doc["engines"].items())
-            if (!contains(available, item.key()))
-                r.fail("engines", fmt::format("no engine '{}' in this build{} (available: {})", item.key(),
-                                              multibody::engine_name_hint(item.key()), fmt::join(available, ", ")));
     } else {
         r.fail("engines", fmt::format("must be a list of engine names or a table of engines, got {}",
                                       io::dump_json(doc["engines"])));
@@ -621,13 +629,14 @@ std::vector<EngineSpec> read_engines(const Reader& r, const json& doc) {
         const json& s = doc["settings"];
         if (!s.is_object()) r.fail("settings", fmt::format("must be a table of engines, got {}", io::dump_json(s)));
         for (const auto& item : s.items()) {
+            const std::string name = multibody::canonical_engine(item.key()).value_or(item.key());
             const auto it = std::find_if(engines.begin(), engines.end(),
-                                         [&](const EngineSpec& e) { return e.name == item.key(); });
+                                         [&](const EngineSpec& e) { return e.name == name; });
             if (it == engines.end())
                 r.fail("settings." + item.key(), "settings for an engine the study does not run (add it to engines)");
             if (!it->settings.empty())
                 r.fail("settings." + item.key(), "settings given twice (in [engines." + item.key() + "] too)");
-            it->settings = read_settings(r, item.value(), "settings." + item.key(), item.key());
+            it->settings = read_settings(r, item.value(), "settings." + item.key(), name);
         }
     }
     return engines;

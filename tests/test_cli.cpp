@@ -24,6 +24,7 @@
 #include "cli/option_values.hpp"
 #include "compare/targets.hpp"
 #include "multibody/engine.hpp"
+#include "multibody/host/engine_names.hpp"
 #include "tests/table1.hpp"
 
 namespace {
@@ -1182,20 +1183,46 @@ TEST(CliCompare, AllIsEveryEngineButTheReferenceAndSimbodyRigid) {
     EXPECT_EQ(ran, expected);
 }
 
+// An engine's name in any letter case, with '_' for '-', or its display name is the backend's canonical name, the one
+// every output prints; the same name twice in two spellings is one name given twice.
+TEST(CliCompare, EngineNamesAreReadInAnyLetterCase) {
+    EXPECT_EQ(vssw::cli::parse_engine_list("--engine", {"ANALYTIC"}), std::vector<std::string>{"analytic"});
+    EXPECT_EQ(vssw::multibody::canonical_engine("Analytic"), "analytic");
+    EXPECT_EQ(vssw::multibody::canonical_engine("warp"), std::nullopt);
+    const Json j = run_json({"compare", "--engine", "Analytic", "--list-settings", "--json"});
+    EXPECT_EQ(j.at(0).at("engine"), "analytic");
+    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic,ANALYTIC"},
+                     {"'analytic' named more than once"});
+    if (engine_available("ode")) {
+        EXPECT_EQ(vssw::cli::parse_engine_list("--engine", {"ODE", "analytic"}),
+                  (std::vector<std::string>{"ode", "analytic"}));
+        EXPECT_EQ(vssw::multibody::make_engine("ODE")->name(), "ode");
+    }
+    if (engine_available("simbody-rigid")) {
+        EXPECT_EQ(vssw::multibody::canonical_engine("Simbody-Rigid"), "simbody-rigid");
+        EXPECT_EQ(vssw::multibody::canonical_engine("simbody_rigid"), "simbody-rigid");
+    }
+    if (engine_available("mujoco")) {
+        EXPECT_EQ(vssw::multibody::canonical_engine("MuJoCo"), "mujoco");
+    }
+}
+
 TEST(CliCompare, BadEngineListsAreRefusedNamingTheEngines) {
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic,havok,warp"},
                      {"no engine 'havok', 'warp' in this build", "available: analytic"});
-    // A backend's name in other letters, or its display name, gets a suggestion; a name that is none gets none.
-    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "Analytic,warp"},
-                     {"no engine 'Analytic', 'warp' in this build (did you mean 'analytic' for 'Analytic'?)"});
-    EXPECT_EQ(vssw::multibody::engine_name_hint("ANALYTIC"), " (did you mean 'analytic'?)");
+    // A name a letter or two from a backend's gets a suggestion; one far from every backend's gets none.
+    expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytik,warp"},
+                     {"no engine 'analytik' (did you mean 'analytic'?), 'warp' in this build"});
+    EXPECT_EQ(vssw::multibody::engine_name_hint("ANALYTK"), " (did you mean 'analytic'?)");
     EXPECT_EQ(vssw::multibody::engine_name_hint("analytic"), "");  // a backend's own name needs no hint
     EXPECT_EQ(vssw::multibody::engine_name_hint("warp"), "");
-    if (engine_available("mujoco")) {
-        EXPECT_EQ(vssw::multibody::engine_name_hint("MuJoCo"), " (did you mean 'mujoco'?)");
+    EXPECT_EQ(vssw::multibody::engine_name_hint("analy"), "");  // three letters away: no longer a slip
+    EXPECT_EQ(vssw::multibody::engine_name_hint("anlytic"), " (did you mean 'analytic'?)");
+    if (engine_available("dart")) {
+        EXPECT_EQ(vssw::multibody::engine_name_hint("warp"), "");  // two letters of four: a word of its own
     }
-    if (engine_available("simbody")) {
-        EXPECT_EQ(vssw::multibody::engine_name_hint("Simbody_Rigid"), " (did you mean 'simbody-rigid'?)");
+    if (engine_available("mujoco")) {
+        EXPECT_EQ(vssw::multibody::engine_name_hint("mujuco"), " (did you mean 'mujoco'?)");
     }
     expect_bad_input(kCompareFig6 + std::vector<std::string>{"--engine", "analytic,analytic"},
                      {"--engine names 'analytic' more than once"});

@@ -120,6 +120,18 @@ TEST(StudyFile, TheIssuesExampleReadsAsWritten) {
     EXPECT_TRUE(std::search(header.begin(), header.end(), tail.begin(), tail.end()) != header.end());
 }
 
+// A study's engines in any letter case are the backends' canonical names, in a list and as a table's keys, and
+// [settings.X] finds its engine however X is spelt.
+TEST(StudyFile, EngineNamesAreReadInAnyLetterCase) {
+    const TempDir dir;
+    const std::string rest = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n[excitation]\nkind = \"threshold\"\n";
+    EXPECT_EQ(study_of(dir, "engines = [\"ANALYTIC\"]\n" + rest).engines.at(0).name, "analytic");
+    const study::StudySpec table = study_of(dir, "[engines.Analytic]\nrtol = 1e-9\n" + rest);
+    EXPECT_EQ(table.engines.at(0).name, "analytic");
+    const study::StudySpec settings = study_of(dir, "engines = [\"analytic\"]\n[settings.ANALYTIC]\nrtol = 1e-9\n" + rest);
+    EXPECT_FALSE(settings.engines.at(0).settings.empty());
+}
+
 // [assumptions] set: the set's three parts are the study's, the default set when the file names none (every command's
 // default, analytic/assumption_sets.hpp), and a key the file gives replaces its part alone.
 TEST(StudyFile, TheSetGivesEveryAssumptionAndAKeyOverridesItsPart) {
@@ -203,7 +215,8 @@ TEST(StudyFile, EachMalformationIsNamedBeforeAnythingRuns) {
         {wall + "[excitation]\nkind = \"scale-to-collapse\"\nfile = \"x\"\ntolerance = 1e-17\n",
          "excitation.tolerance: must be a relative width in [1e-12, 0.1], got 1e-17"},
         {"engines = [\"havok\"]\n" + wall + threshold, "no engine 'havok' in this build"},
-        {"engines = [\"Analytic\"]\n" + wall + threshold, "no engine 'Analytic' in this build (did you mean 'analytic'?)"},
+        {"engines = [\"Analytik\"]\n" + wall + threshold, "no engine 'Analytik' in this build (did you mean 'analytic'?)"},
+        {"engines = [\"analytic\", \"Analytic\"]\n" + wall + threshold, "names engine 'analytic' twice"},
         {"engines = [\"analytic\", \"analytic\"]\n" + wall + threshold, "names engine 'analytic' twice"},
         {"[settings.ode]\ndt = 1e-4\n" + wall + threshold, "settings.ode: settings for an engine the study does not run"},
         {"[settings.analytic]\nrtol = 0\n" + wall + threshold, "settings of analytic (rtol=0)"},

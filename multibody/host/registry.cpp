@@ -8,6 +8,7 @@
 #include "multibody/engine_plugin.hpp"
 #include "multibody/host/isolated_engine.hpp"
 #include "multibody/host/plugin_loader.hpp"
+#include "multibody/host/engine_names.hpp"
 #include "multibody/host/registry.hpp"
 #include "vssw_engine_facts.hpp"  // kEngineFacts (generated: cmake/engines.cmake)
 
@@ -29,9 +30,22 @@ std::vector<std::string> known_engines(bool built) {
     return names;
 }
 
+// The name folded for a loose comparison: lower case, '_' as '-' (names are ASCII; anything else stays as it is).
+std::string folded(std::string name) {
+    for (char& c : name) {
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+        else if (c == '_') c = '-';
+    }
+    return name;
+}
+
+// The backend of this build a name means (canonical_engine), or null.
 const KnownEngine* built_engine(const std::string& name) {
     for (const KnownEngine& e : kKnownEngines)
         if (e.built && name == e.name) return &e;
+    const std::string loose = folded(name);
+    for (const KnownEngine& e : kKnownEngines)
+        if (e.built && (loose == folded(e.name) || loose == folded(e.display_name))) return &e;
     return nullptr;
 }
 
@@ -91,29 +105,55 @@ std::string engine_display_name(const std::string& name) {
     return e ? e->display_name : name;
 }
 
+std::optional<std::string> canonical_engine(const std::string& name) {
+    const KnownEngine* e = built_engine(name);
+    return e ? std::optional<std::string>(e->name) : std::nullopt;
+}
+
+std::optional<std::string> engine_meant(const std::string& name) {
+    const std::optional<std::string> canonical = canonical_engine(name);
+    return canonical == name ? std::nullopt : canonical;
+}
+
 namespace {
 
-// The name folded for a loose comparison: lower case, '_' as '-' (names are ASCII; anything else stays as it is).
-std::string folded(std::string name) {
-    for (char& c : name) {
-        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-        else if (c == '_') c = '-';
+// A name this far from a backend's (letters inserted, removed or changed, after folding) is taken as a slip of the
+// keyboard ("mujuco", "bulet"), one slip per kLettersPerSlip letters of the name at most ("warp" is no slip of "dart");
+// farther, no backend is suggested.
+constexpr std::size_t kSuggestedDistance = 2;
+constexpr std::size_t kLettersPerSlip = 3;
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
     }
-    return name;
+    return row[b.size()];
 }
 
 }  // namespace
 
-std::optional<std::string> engine_meant(const std::string& name) {
-    if (built_engine(name)) return std::nullopt;
-    for (const KnownEngine& e : kKnownEngines)
-        if (e.built && (folded(name) == folded(e.name) || folded(name) == folded(e.display_name))) return e.name;
-    return std::nullopt;
-}
-
 std::string engine_name_hint(const std::string& name) {
-    const std::optional<std::string> meant = engine_meant(name);
-    return meant ? fmt::format(" (did you mean '{}'?)", *meant) : "";
+    if (built_engine(name)) return "";
+    const std::string loose = folded(name);
+    const KnownEngine* closest = nullptr;
+    std::size_t best = std::min(kSuggestedDistance, loose.size() / kLettersPerSlip) + 1;
+    for (const KnownEngine& e : kKnownEngines) {
+        if (!e.built) continue;
+        const std::size_t d = std::min(edit_distance(loose, folded(e.name)), edit_distance(loose, folded(e.display_name)));
+        if (d < best) {
+            best = d;
+            closest = &e;
+        }
+    }
+    return closest ? fmt::format(" (did you mean '{}'?)", closest->name) : "";
 }
 
 std::string engine_plugin_file(const std::string& name) {
@@ -131,7 +171,7 @@ std::string engine_plugin_path(const std::string& name) {
 
 std::unique_ptr<Engine> make_engine(const std::string& name) {
     std::unique_ptr<Engine> engine = make_engine_in_process(name);
-    if (name == "analytic") return engine;  // this project's own code, a fraction of a millisecond a run
+    if (engine->name() == "analytic") return engine;  // this project's own code, a fraction of a millisecond a run
     return isolated(std::move(engine));
 }
 
@@ -140,7 +180,7 @@ std::unique_ptr<Engine> make_engine_in_process(const std::string& name) {
     if (!known.plugin) return std::make_unique<AnalyticEngine>();
     const EnginePlugin& plugin = engine_plugin(known);
     for (std::size_t i = 0; i < plugin.engine_count; ++i)
-        if (name == plugin.engines[i].name) return plugin.engines[i].make();
+        if (std::string(known.name) == plugin.engines[i].name) return plugin.engines[i].make();
     throw InputError(fmt::format("engine '{}': its plugin {} does not provide it", name, plugin_file_of(known)));
 }
 

@@ -32,6 +32,7 @@ def test_an_installed_package_imports_in_a_fresh_venv(tmp_path):
                           check=True)
     site = next(prefix.glob("lib/python3*/site-packages"))
     assert (site / "vssw" / "_install.py").is_file()
+    assert (site / "vssw" / "py.typed").is_file() and (site / "vssw" / "_core.pyi").is_file()  # typed (PEP 561)
     assert f"vssw Python package: {site / 'vssw'}" in done.stdout
     venv = tmp_path / "venv"
     subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", "--without-pip", venv], check=True)

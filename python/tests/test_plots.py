@@ -47,8 +47,8 @@ def test_the_plot_draws_the_runs_arrays_with_named_units(release):
     rotations, rise, energy = fig.axes
     theta1, theta2 = rotations.get_lines()
     np.testing.assert_array_equal(theta1.get_xdata(), release.t)
-    np.testing.assert_array_equal(theta1.get_ydata(), release.theta1 / release.alpha)
-    np.testing.assert_array_equal(theta2.get_ydata(), release.theta2 / release.alpha)
+    np.testing.assert_array_equal(theta1.get_ydata(), release.theta1 / release.alpha1)
+    np.testing.assert_array_equal(theta2.get_ydata(), release.theta2 / release.alpha1)
     np.testing.assert_array_equal(rise.get_lines()[0].get_ydata(), 1e3 * release.top_dy)
     np.testing.assert_array_equal(energy.get_lines()[0].get_ydata(), release.kinetic + release.potential)
     assert [ax.get_ylabel() for ax in fig.axes] == ["rotation / α1  [-]", "top's rise  [mm]", "energy  [J]"]
@@ -114,7 +114,7 @@ def kinematics_errors(lower, upper, sim, i):
 
 def test_the_drawn_blocks_stand_where_the_kinematics_put_them(release):
     anim = release.animate(fps=10)
-    swung = [k for k, i in enumerate(anim.sample_indices) if abs(release.theta1[i]) > 0.3 * release.alpha]
+    swung = [k for k, i in enumerate(anim.sample_indices) if abs(release.theta1[i]) > 0.3 * release.alpha1]
     assert any(release.theta1[anim.sample_indices[k]] < 0 for k in swung)  # both sides are checked
     assert any(release.theta1[anim.sample_indices[k]] > 0 for k in swung)
     for k in swung:
@@ -200,7 +200,7 @@ def test_a_rounded_wall_is_drawn_rolling_as_the_engine_moved_it():
         pytest.skip("ODE is not in this build")
     rounded = vssw.simulate("ode", **FIG6, theta0=0.8, t_end=2.0, corner_radius=0.1)
     anim = rounded.animate(fps=10)
-    swung = [k for k, i in enumerate(anim.sample_indices) if abs(rounded.theta1[i]) > 0.3 * rounded.alpha]
+    swung = [k for k, i in enumerate(anim.sample_indices) if abs(rounded.theta1[i]) > 0.3 * rounded.alpha1]
     assert len(anim.wall.blocks[0].get_xy()) > 4  # the corners drawn as arcs
     for k in swung:
         p = anim.draw_frame(k)

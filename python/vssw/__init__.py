@@ -27,7 +27,7 @@ def _locate_installed_files():
     install time), unless the environment already names them. In the build tree there is no _install.py: the library
     finds the build's own plugins and the source tree's data."""
     try:
-        from . import _install
+        from . import _install  # type: ignore[attr-defined]
     except ImportError:
         return
     here = _os.path.dirname(_os.path.abspath(__file__))
@@ -76,7 +76,7 @@ from . import _core, cli  # noqa: E402 (after the environment is set)
 from ._api import compare, data_dir, engine_settings, engines, report, simulate, study  # noqa: E402
 from ._errors import BoundsError, Error, InputError, SimulationError  # noqa: E402
 from ._results import (ClosedForms, Comparison, Impact, Metric, ReportResult, ResponseComparison,  # noqa: E402
-                       ResponseRun, Simulation, StudyResult)
+                       ResponseRun, Simulation, Slip, SlipAt, StudyResult)
 from .cli import export_scene, free, help, history, run, wall  # noqa: E402,A004 (help: the program's, as before)
 
 # The project's version (`project()` in CMakeLists.txt, the one place it is set); the commit the module was built
@@ -88,5 +88,5 @@ __commit__ = _core.COMMIT
 __all__ = ["simulate", "compare", "study", "report", "engines", "engine_settings", "data_dir", "wall", "free",
            "export_scene",
            "history", "run", "cli", "Simulation", "Impact", "Comparison", "Metric", "ClosedForms", "ResponseComparison",
-           "ResponseRun", "StudyResult",
+           "ResponseRun", "Slip", "SlipAt", "StudyResult",
            "ReportResult", "Error", "InputError", "SimulationError", "BoundsError", "__version__"]

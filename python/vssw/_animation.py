@@ -118,7 +118,7 @@ def animate_simulation(sim, path=None, fps=25, speed=1.0, t_start=None, t_stop=N
     def draw_frame(k):
         i = indices[k]
         drawn, _ = wall.update(sim.theta1[i], sim.theta2[i])
-        clock.set_text(f"{sim.engine}  t = {sim.t[i]:.3f} s  θ1/α1 = {sim.theta1[i] / sim.alpha:+.3f}")
+        clock.set_text(f"{sim.engine}  t = {sim.t[i]:.3f} s  θ1/α1 = {sim.theta1[i] / sim.alpha1:+.3f}")
         return drawn
 
     # init_func keeps what is drawn: without one, the figure's first rendering (a notebook showing it) draws frame 0

@@ -1,7 +1,10 @@
 """The typed API over the library (docs/guide/python.md): simulate, compare, study, report, engines, engine_settings."""
 
+from __future__ import annotations
+
 import contextlib
 import decimal
+import fractions
 import json
 import math
 import numbers
@@ -11,11 +14,29 @@ import re
 import shutil
 import sys
 import tempfile
+from typing import (Any, Callable, Dict, Iterator, List, Literal, Mapping, Optional, Sequence, Tuple,
+                    TypeVar, Union, overload)
+
+import numpy as np
+import numpy.typing as npt
 
 from . import _core, cli
 from ._errors import Error, InputError, SimulationError
-from ._results import (ReportResult, StudyResult, comparison_from, failed_comparison, response_comparisons_from,
-                       simulation_from)
+from ._results import (Comparison, DataFrame, ReportResult, ResponseComparison, Simulation, StudyResult,
+                       comparison_from, failed_comparison, response_comparisons_from, simulation_from)
+
+# What the functions take. A number: a Python, NumPy, Fraction or Decimal one. A path: a str or os.PathLike.
+Number = Union[float, int, np.floating, np.integer, fractions.Fraction, decimal.Decimal]
+Path = Union[str, "os.PathLike[str]"]
+# A ground motion given as samples: (dt [s], accelerations [g]) at a uniform step from t = 0, or (times [s],
+# accelerations [g]) with strictly increasing times; each a NumPy array or a sequence of numbers.
+Samples = Union[npt.ArrayLike, Sequence[float]]
+Record = Union[Path, Tuple[float, Samples], Tuple[Samples, Samples]]
+# An engine's knobs: {name: value}, or a list of "name=value" strings as vssw.cli takes them.
+Knobs = Union[Mapping[str, Union[Number, str]], Sequence[str]]
+# progress=: True (a bar), False or None (nothing), or a callable (done, total, what).
+Progress = Union[bool, None, Callable[[int, int, str], Any]]
+_T = TypeVar("_T")
 
 _DENSITY = 1800.0  # kg/m^3, brick masonry (analytic/wall.hpp kDefaultDensity)
 _GRAVITY = 9.81  # m/s^2 (analytic/wall.hpp kDefaultGravity)
@@ -93,12 +114,13 @@ def _knobs(settings):
                          _core.EXIT_BAD_INPUT)
     out = {}
     for name, value in settings.items():
+        number: Any = value
         if isinstance(value, str):
             try:
-                value = float(value)
+                number = float(value)
             except ValueError:
                 raise InputError(f"settings[{name!r}]: {value!r} is not a number", _core.EXIT_BAD_INPUT) from None
-        out[str(name)] = _number(f"settings[{name!r}]", value)
+        out[str(name)] = _number(f"settings[{name!r}]", number)
     return out
 
 
@@ -123,11 +145,70 @@ def _wall(model, height, thickness, hinge, xi, density, g, assumptions=None, kin
         else _number("diaphragm_damping", diaphragm_damping))
 
 
-def _record_path(record):
+def _samples(what: str, values: Any) -> List[float]:
+    """A one-dimensional sequence of finite numbers as floats; InputError naming `what` otherwise."""
+    try:
+        array = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{what}: numbers are expected, got {type(values).__name__}", _core.EXIT_BAD_INPUT) from None
+    if array.ndim != 1:
+        raise InputError(f"{what}: a one-dimensional sequence of numbers is expected, got shape {array.shape}",
+                         _core.EXIT_BAD_INPUT)
+    bad = np.flatnonzero(~np.isfinite(array))
+    if bad.size:
+        raise InputError(f"{what}: sample {bad[0]} is {array[bad[0]]}, not a finite number", _core.EXIT_BAD_INPUT)
+    return [float(x) for x in array]
+
+
+# A record given as samples, as a study or the program names it in its outputs.
+_ARRAY_RECORD_NAME = "array"
+
+
+def _record_samples(record: Tuple[Any, ...]) -> Tuple[List[float], List[float]]:
+    """record=(dt, values) or (t, values): the times [s] and the accelerations [g], checked (InputError naming record
+    and what is wrong). The times of (dt, values) are i * dt, as the program computes those of a record at a step."""
+    if len(record) != 2:
+        raise InputError(f"record: (dt, values) or (t, values) is expected, a tuple of {len(record)} items given",
+                         _core.EXIT_BAD_INPUT)
+    first, values = record
+    accelerations = _samples("record's values [g]", values)
+    if len(accelerations) < 2:
+        raise InputError(f"record's values: {len(accelerations)} sample(s), a record needs at least 2",
+                         _core.EXIT_BAD_INPUT)
+    if _is_number(first):
+        dt = _number("record's dt [s]", first)
+        if not (math.isfinite(dt) and dt > 0.0):
+            raise InputError(f"record's dt: must be a positive finite step in s, got {dt!r}", _core.EXIT_BAD_INPUT)
+        times = (np.arange(len(accelerations), dtype=np.float64) * dt).tolist()
+        return times, accelerations
+    times = _samples("record's t [s]", first)
+    if len(times) != len(accelerations):
+        raise InputError(f"record: {len(times)} times but {len(accelerations)} values", _core.EXIT_BAD_INPUT)
+    if times[0] < 0.0:
+        raise InputError(f"record's t: must start at 0 or later, got {times[0]!r}", _core.EXIT_BAD_INPUT)
+    for i in range(1, len(times)):
+        if not times[i] > times[i - 1]:
+            raise InputError(f"record's t: must increase strictly, but t[{i}] = {times[i]!r} follows "
+                             f"t[{i - 1}] = {times[i - 1]!r}", _core.EXIT_BAD_INPUT)
+    return times, accelerations
+
+
+def _record(record: Optional[Record]) -> Tuple[Optional[str], Optional[Tuple[List[float], List[float]]]]:
+    """The record as the library takes it: (a file's path, None), or ("array", (times, accelerations [g])) for one
+    given as samples; (None, None) without a record."""
+    if record is None:
+        return None, None
+    if isinstance(record, (tuple, list)):
+        return _ARRAY_RECORD_NAME, _record_samples(tuple(record))
+    if not isinstance(record, (str, os.PathLike)):
+        raise InputError(f"record: a file's path, (dt, values) or (t, values) is expected, got "
+                         f"{type(record).__name__}", _core.EXIT_BAD_INPUT)
+    return _record_path(record), None
+
+
+def _record_path(record: Path) -> str:
     """A record path as given when it exists from the current directory; else the shipped data's file of that name
     ("data/records/x.at2" or "records/x.at2" from the data folder of this build or installation)."""
-    if record is None:
-        return None
     path = pathlib.Path(os.fspath(record))
     if path.exists() or path.is_absolute():
         return str(path)
@@ -138,17 +219,23 @@ def _record_path(record):
     return str(path)  # the library names it in its message
 
 
-def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY,
-             g=_GRAVITY, theta0=0.0, t_end=None, record=None, scale=None, pga=None, pulse=None, amplitude=None,
-             pulse_period=None, duration=None, dt=None, sample_dt=None, iterations=None, settings=None,
-             assumptions=None, kinematics=None, impact=None, roller=None, friction=None, stop_at_rest=True,
-             run_budget=None, overburden_eccentricity=0.0, corner_radius=0.0, diaphragm_period=0.0,
-             diaphragm_damping=None):
+def simulate(engine: str = "analytic", *, height: Number, thickness: Number, hinge: Optional[Number] = None,
+             model: str = "vssw", xi: Number = 0.0, density: Number = _DENSITY, g: Number = _GRAVITY,
+             theta0: Number = 0.0, t_end: Optional[Number] = None, record: Optional[Record] = None,
+             scale: Optional[Number] = None, pga: Optional[Number] = None, pulse: Optional[str] = None,
+             amplitude: Optional[Number] = None, pulse_period: Optional[Number] = None,
+             duration: Optional[Number] = None, dt: Optional[Number] = None, sample_dt: Optional[Number] = None,
+             iterations: Optional[int] = None, settings: Optional[Knobs] = None, assumptions: Optional[str] = None,
+             kinematics: Optional[str] = None, impact: Union[str, Number, None] = None, roller: Optional[str] = None,
+             friction: Optional[Number] = None, stop_at_rest: bool = True, run_budget: Optional[Number] = None,
+             overburden_eccentricity: Number = 0.0, corner_radius: Number = 0.0, diaphragm_period: Number = 0.0,
+             diaphragm_damping: Optional[Number] = None) -> Simulation:
     """One backend's run of one wall: its trajectory as NumPy arrays (a vssw.Simulation).
 
     engine: "analytic" (the two-block model, this project's own DOP853 integration) or an engine of this build
-        (vssw.engines(): "bullet", "ode", "simbody", "siconos", "box2d", "dart", "mujoco", ...). An engine run is a
-        child process with a CPU budget (a library that crashes fails the run, never Python).
+        (vssw.engines(): "bullet", "ode", "simbody", "siconos", "box2d", "dart", "mujoco", ...), in any letter case
+        ("ODE", "Simbody-Rigid"); the result names it as vssw.engines() does. An engine run is a child process with a
+        CPU budget (a library that crashes fails the run, never Python).
     The wall:
         height, thickness: full height 2h and full thickness 2b [m].
         hinge: the hinge's height ratio h1/h in (0, 1) (required for model="vssw"; ignored for a parapet).
@@ -166,17 +253,24 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
             the sign is the side: positive tips the wall towards +x).
         record: a ground-motion file (PEER AT2, two columns time/acceleration, or a CSV with those first) in g
             unless its header says otherwise; a relative path is read from the current directory, else from the
-            shipped data ("data/records/northridge1994-rinaldi-228.at2"). scale: a factor on it, or pga: its peak
-            ground acceleration [g] (not both).
+            shipped data ("data/records/northridge1994-rinaldi-228.at2"). Or the samples themselves: (dt, values),
+            accelerations [g] at a uniform step dt [s] from t = 0, or (t, values), times [s] strictly increasing from
+            0 or later and accelerations [g]; NumPy arrays or sequences, every number finite. Between samples the
+            acceleration is linear, as a file's. scale: a factor on it, or pga: its peak ground acceleration [g] (not
+            both).
         pulse: "sine", "cosine", "ricker" or "harmonic", with amplitude [g] and pulse_period [s] (duration [s]:
             harmonic only); pga replaces the amplitude.
         t_end: end of the run [s]. Default: a release alone runs long enough for 8 impacts of the analytic model
             (as `vssw compare` runs it); a ground motion runs its duration + 10 s.
         stop_at_rest: end the run once the wall is at rest and the shaking can no longer lift it (default True).
     The backend's settings:
-        dt: the engine's step [s] (the analytic model: its output interval); default each backend's own
-            (vssw.engine_settings(engine) lists it: 1e-4 s for the analytic model, 1 ms for ODE, ...).
-        sample_dt: sampling of the returned arrays [s] (0 or None: every step).
+        dt: an engine's step [s], default each engine's own (vssw.engine_settings(engine) lists it: 1 ms for ODE,
+            ...); Simbody's integrator chooses its own steps, and its dt is the interval it reports at. Not for the
+            analytic model (an InputError), whose integrator chooses its steps to its tolerance (settings={"rtol"}).
+        sample_dt: one time grid for every backend [s]: the arrays hold the samples at t = k * sample_dt, t exactly
+            that (the analytic model's output interval; an engine's every sample_dt / dt-th step, which must be a
+            whole number). A run that ends at rest or overturned between two times of the grid ends at the last one
+            before. None: the analytic model every 1e-4 s, an engine every step.
         iterations: solver iterations (Bullet, ODE; default the engine's own).
         settings: the engine's knobs, {name: value} (vssw.engine_settings(engine) lists each with its default,
             unit, range and meaning), e.g. {"erp": 0.2} for ODE. A knob the engine does not know is an InputError.
@@ -191,18 +285,19 @@ def simulate(engine="analytic", *, height, thickness, hinge=None, model="vssw", 
             and the analytic model warns where it would slide (it needs more friction than given).
         run_budget: CPU seconds one engine run may take (default 30 s + 1 ms per step).
     Raises InputError (a ValueError) naming a bad value, SimulationError (a RuntimeError) when the run fails."""
+    record_file, record_samples = _record(record)
     result = _with_python_names(lambda: _core.simulate(
-        engine=_word("engine", engine, "analytic"),
+        engine=_engine(engine),
         wall=_wall(model, height, thickness, hinge, xi, density, g, assumptions, kinematics, impact, roller,
                    overburden_eccentricity, corner_radius, diaphragm_period, diaphragm_damping),
         theta0=_number("theta0", theta0), t_end=_number("t_end", t_end, True), dt=_number("dt", dt, True),
         sample_dt=_number("sample_dt", sample_dt, True), iterations=_integer("iterations", iterations),
-        knobs=_knobs(settings), record=_record_path(record), scale=_number("scale", scale, True),
+        knobs=_knobs(settings), record=record_file, record_samples=record_samples, scale=_number("scale", scale, True),
         pga=_number("pga", pga, True), pulse=None if pulse is None else _word("pulse", pulse, None),
         amplitude=_number("amplitude", amplitude, True), pulse_period=_number("pulse_period", pulse_period, True),
         duration=_number("duration", duration, True), stop_at_rest=bool(stop_at_rest),
         friction=_number("friction", friction, True), run_budget=_number("run_budget", run_budget, True)))
-    return simulation_from(result)
+    return simulation_from(result, height=float(height), thickness=float(thickness), vssw=model == "vssw")
 
 
 def _progress(progress):
@@ -225,7 +320,7 @@ class _Bar:
         self.description = description
         if self.line:
             try:
-                from tqdm.auto import tqdm
+                from tqdm.auto import tqdm  # type: ignore[import]
 
                 self.bar = tqdm(total=0, desc=description, leave=False)
                 self.line = False
@@ -258,25 +353,33 @@ class _Bar:
         self.close()
 
 
-def _engine_list(engine):
-    """The engines named and whether several were asked for (a list or a comma-separated str: a list comes back)."""
+def _engine_list(engine: Union[str, Sequence[str]]) -> Tuple[List[str], bool]:
+    """The engines named, in their canonical names (_engine), and whether several were asked for (a list or a
+    comma-separated str: a list comes back); a name given twice, in any spelling, refused."""
     if isinstance(engine, str):
         if engine == "all":
             return list(_core.default_compared_engines()), True
-        if "," in engine:
-            return _names("engine", ",".join(e.strip() for e in engine.split(","))), True
-        return [_word("engine", engine, None)], False
-    if not isinstance(engine, (list, tuple)):
+        if "," not in engine:
+            return [_engine(engine)], False
+        names = _names("engine", ",".join(e.strip() for e in engine.split(",")))
+    elif isinstance(engine, (list, tuple)):
+        names = _names("engine", engine)
+    else:
         raise InputError(f"engine: a name or a list of names is expected, got {type(engine).__name__}",
                          _core.EXIT_BAD_INPUT)
-    return _names("engine", engine), True
+    return _names("engine", [_engine(name) for name in names]), True
 
 
-def _check_engines(names):
-    for name in names:
-        if name not in _core.available_engines():
-            raise InputError(f"engine '{name}' is not one of this build's{_core.engine_name_hint(name)}: "
-                             f"{', '.join(_core.available_engines())}", _core.EXIT_BAD_INPUT)
+def _engine(name: Any) -> str:
+    """An engine's canonical name (vssw.engines()'s) from its name in any letter case, with '_' for '-' or its display
+    name ("ODE", "Simbody-Rigid", "MuJoCo"), as the library reads every list of engines; InputError otherwise,
+    suggesting the nearest backend's name."""
+    word = _word("engine", name, None)
+    canonical = _core.canonical_engine(word)
+    if canonical is None:
+        raise InputError(f"engine '{word}' is not one of this build's{_core.engine_name_hint(word)}: "
+                         f"{', '.join(_core.available_engines())}", _core.EXIT_BAD_INPUT)
+    return canonical
 
 
 # The library's messages about a wall or a ground motion name the command line's options (--pga, --roller): the
@@ -301,30 +404,81 @@ def _with_python_names(call):
         raise InputError(renamed, _core.EXIT_BAD_INPUT) from None
 
 
-def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, density=_DENSITY, g=_GRAVITY,
-            theta0=None, record=None, scale=None, pga=None, pulse=None, amplitude=None, pulse_period=None,
-            duration=None, assumptions=None, kinematics=None, impact=None, roller=None, dt=None, iterations=None,
-            settings=None, run_budget=None, progress=False, overburden_eccentricity=0.0):
+# What compare returns, for a type checker. In free vibration: "all" or a list of names a list, one name one
+# Comparison (a comma-separated str gives a list too: pass a list for a checker to know it). Under a ground motion
+# (record= or pulse=): any of the four, as the implementation's type says.
+@overload
+def compare(engine: Literal["all"], *, record: None = ..., pulse: None = ...,  # type: ignore[misc]
+            height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
+            xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
+            scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
+            pulse_period: Optional[Number] = ..., duration: Optional[Number] = ..., assumptions: Optional[str] = ...,
+            kinematics: Optional[str] = ..., impact: Union[str, Number, None] = ..., roller: Optional[str] = ...,
+            dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
+            run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
+            ) -> List[Comparison]: ...
+@overload
+def compare(engine: str, *, record: None = ..., pulse: None = ...,
+            height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
+            xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
+            scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
+            pulse_period: Optional[Number] = ..., duration: Optional[Number] = ..., assumptions: Optional[str] = ...,
+            kinematics: Optional[str] = ..., impact: Union[str, Number, None] = ..., roller: Optional[str] = ...,
+            dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
+            run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
+            ) -> Comparison: ...
+@overload
+def compare(engine: Union[List[str], Tuple[str, ...]], *, record: None = ..., pulse: None = ...,
+            height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
+            xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
+            scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
+            pulse_period: Optional[Number] = ..., duration: Optional[Number] = ..., assumptions: Optional[str] = ...,
+            kinematics: Optional[str] = ..., impact: Union[str, Number, None] = ..., roller: Optional[str] = ...,
+            dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
+            run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
+            ) -> List[Comparison]: ...
+@overload
+def compare(engine: Union[str, Sequence[str]], *, record: Optional[Record] = ..., pulse: Optional[str] = ...,
+            height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
+            xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
+            scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
+            pulse_period: Optional[Number] = ..., duration: Optional[Number] = ..., assumptions: Optional[str] = ...,
+            kinematics: Optional[str] = ..., impact: Union[str, Number, None] = ..., roller: Optional[str] = ...,
+            dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
+            run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
+            ) -> Union[Comparison, List[Comparison], ResponseComparison, List[ResponseComparison]]: ...
+def compare(engine: Union[str, Sequence[str]], *, height: Number, thickness: Number, hinge: Optional[Number] = None,
+            model: str = "vssw", xi: Number = 0.0, density: Number = _DENSITY, g: Number = _GRAVITY,
+            theta0: Optional[Number] = None, record: Optional[Record] = None, scale: Optional[Number] = None,
+            pga: Optional[Number] = None, pulse: Optional[str] = None, amplitude: Optional[Number] = None,
+            pulse_period: Optional[Number] = None, duration: Optional[Number] = None,
+            assumptions: Optional[str] = None, kinematics: Optional[str] = None,
+            impact: Union[str, Number, None] = None, roller: Optional[str] = None, dt: Optional[Number] = None,
+            iterations: Optional[int] = None, settings: Optional[Knobs] = None, run_budget: Optional[Number] = None,
+            progress: Progress = False, overburden_eccentricity: Number = 0.0
+            ) -> Union[Comparison, List[Comparison], ResponseComparison, List[ResponseComparison]]:
     """Engines against the analytic model on the metrics the project holds them to (`vssw compare`, over the
     library): the threshold acceleration [g] (the smallest constant ground acceleration that lifts the wall off
     rest, by bisection on simulations to 1e-4), the period [s] (4 x the time from the release at theta0 to the first
     impact) and the restitution (theta1' after / before the first impact). Each is measured from both trajectories by
     the same code; targets 0.5 %, 0.5 %, 2 %.
 
-    engine: a backend name (returns one vssw.Comparison), a list of names or "all" (every engine of this build but
-        the analytic model and simbody-rigid; returns a list of Comparison, one whose engine failed carrying its
-        `error` and NaN metrics).
+    engine: a backend name in any letter case (returns one vssw.Comparison), a list of names or "all" (every engine
+        of this build but the analytic model and simbody-rigid; returns a list of Comparison, one whose engine failed
+        carrying its `error` and NaN metrics).
     height, thickness [m], hinge (h1/h), model ("vssw" | "parapet"), xi (N/W), density [kg/m^3], g [m/s^2],
         overburden_eccentricity (e/b): the wall, as vssw.simulate.
     theta0: release for the period and restitution, a fraction of alpha from 0.01 to below 1 (default 0.5).
-    record (with scale or pga) or pulse (with amplitude, pulse_period, duration), as vssw.simulate takes them:
+    record (a file or (dt, values) or (t, values), with scale or pga) or pulse (with amplitude, pulse_period,
+        duration), as vssw.simulate takes them:
         instead, the engines and the analytic model from rest under that ground motion (`vssw compare --record`):
         returns a vssw.ResponseComparison (a list of them for several engines): each run's peak |theta1| / alpha, its
         time and overturning, and peak_ratio. Not with theta0. A single run's peak is no verdict: judge engines
         under records on an ensemble (vssw.study, vssw.report).
     assumptions: the analytic reference's assumptions, "mechanism" (the default) or "paper", as vssw.simulate takes
         them; kinematics, impact, roller override one part. The engines' settings do not reach it.
-    dt [s], iterations, settings ({knob: value}): every engine's step, solver iterations and knobs.
+    dt [s], iterations, settings ({knob: value}): every engine's step, solver iterations and knobs (dt not with
+        the analytic model, which takes no fixed step).
     run_budget: CPU seconds one engine run may take.
     progress: True shows a bar over the engines (tqdm when installed, else a line on stderr); a callable is called
         as progress(done, total, engine).
@@ -347,11 +501,12 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
         if "analytic" in names:
             raise InputError("engine 'analytic': the analytic model is the reference every engine is compared with; "
                              "name engines only", _core.EXIT_BAD_INPUT)
-        _check_engines(names)
+        record_file, record_samples = _record(record)
         with _Bar(progress, "compare") as bar:
             bar(0, 1, ", ".join(names))
             result = _with_python_names(lambda: _core.compare_response(
-                engines=names, wall=wall, record=_record_path(record), scale=_number("scale", scale, True),
+                engines=names, wall=wall, record=record_file, record_samples=record_samples,
+                scale=_number("scale", scale, True),
                 pga=_number("pga", pga, True), pulse=None if pulse is None else _word("pulse", pulse, None),
                 amplitude=_number("amplitude", amplitude, True),
                 pulse_period=_number("pulse_period", pulse_period, True),
@@ -369,7 +524,6 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     arguments = dict(wall=wall, theta0=_number("theta0", theta0), dt=_number("dt", dt, True),
                      iterations=_integer("iterations", iterations), knobs=_knobs(settings),
                      run_budget=_number("run_budget", run_budget, True))
-    _check_engines(names)  # every engine and its settings checked before the first one runs
     results = []
     with _Bar(progress, "compare") as bar:
         for i, name in enumerate(names):
@@ -384,8 +538,9 @@ def compare(engine, *, height, thickness, hinge=None, model="vssw", xi=0.0, dens
     return results if several else results[0]
 
 
-def engines():
-    """The backends of this build: "analytic" first, then each engine found at configure time."""
+def engines() -> List[str]:
+    """The backends of this build, in their canonical names: "analytic" first, then each engine found at configure
+    time."""
     return list(_core.available_engines())
 
 
@@ -397,24 +552,28 @@ def _default_number(text):
         return None
 
 
-def engine_settings(engine):
-    """Every setting of one backend: a list of {name, default, unit, meaning, min, max}. default is a float, or None
-    where the setting has no default (it is off unless given); min and max are the range a value may take, both
-    included (-inf/inf when unbounded). dt and iterations are given as simulate's dt and iterations, every other one
-    in settings={name: value}."""
-    settings = _core.engine_settings(_word("engine", engine, None))
+def engine_settings(engine: str) -> List[Dict[str, Any]]:
+    """Every setting of one backend (its name in any letter case): a list of {name, default, unit, meaning, min,
+    max}. default is a float, or None where the setting has no default (it is off unless given); min and max are the
+    range a value may take, both included (-inf/inf when unbounded). dt (an engine's step) and iterations are given
+    as simulate's dt and iterations, the analytic model's sample_dt (its output interval) as simulate's sample_dt,
+    every other one in settings={name: value}."""
+    name = _engine(engine)
+    settings: List[Dict[str, Any]] = _core.engine_settings(name)
     for s in settings:
         s["default"] = _default_number(s["default"])
+        if name == "analytic" and s["name"] == "dt":  # no step of its own: its dt is its output interval
+            s["name"] = "sample_dt"
     return settings
 
 
-def data_dir():
+def data_dir() -> pathlib.Path:
     """The shipped data folder (records in records/, Table 1) this build or installation reads."""
     return pathlib.Path(_core.data_dir())
 
 
 def _read_csv(path):
-    import pandas as pd
+    import pandas as pd  # type: ignore[import]
 
     # round_trip: the 17 digits the files hold read back to the same doubles (pandas' default may be 1 ulp off).
     return pd.read_csv(path, float_precision="round_trip")
@@ -442,8 +601,10 @@ def _run_command(args, progress, description):
     return out
 
 
-def study(file, out=None, *, threads=None, shard=None, resume=False, force=False, strict=False, plots=None,
-          gnuplot=None, run_budget=None, progress=False):
+def study(file: Union[Path, Dict[str, Any]], out: Optional[Path] = None, *, threads: Optional[int] = None,
+          shard: Optional[str] = None, resume: bool = False, force: bool = False, strict: bool = False,
+          plots: Optional[bool] = None, gnuplot: Optional[Path] = None, run_budget: Optional[Number] = None,
+          progress: Progress = False) -> StudyResult:
     """Runs a study (`vssw study`, docs/studies in the README): walls x assumptions x excitations x engines.
 
     file: a study file (.toml or .json) or a dict of its keys (a relative record `file` in it is read from the
@@ -460,13 +621,12 @@ def study(file, out=None, *, threads=None, shard=None, resume=False, force=False
     _progress(progress)
     with _folder(out, "vssw-study-") as folder, tempfile.TemporaryDirectory(prefix="vssw-study-file-") as scratch:
         from_dict = isinstance(file, dict)
-        if from_dict:
-            file = cli._study_file_of(file, scratch)
+        path = cli._study_file_of(file, scratch) if isinstance(file, dict) else os.fspath(file)
         options = dict(threads=threads, shard=shard, resume=resume, force=force, strict=strict,
                        no_plots=not (plots if plots is not None else out is not None), gnuplot=gnuplot,
                        run_budget=run_budget)
-        args = ["study", cli._text("file", os.fspath(file)), f"--out={folder}", *cli._arguments(options), "--json"]
-        with cli._errors_name_the_dict(file) if from_dict else contextlib.nullcontext():
+        args = ["study", cli._text("file", path), f"--out={folder}", *cli._arguments(options), "--json"]
+        with cli._errors_name_the_dict(path) if from_dict else contextlib.nullcontext():
             summary = json.loads(_run_command(args, progress, "study"))
         return StudyResult(results=_read_csv(folder / "results.csv"), folder=folder if out is not None else None,
                            summary=summary)
@@ -477,15 +637,19 @@ def _joined(name, names):
     return None if names is None else ",".join(_names(name, names))
 
 
-def report(out=None, *, suite="default", engines=None, cases=None, threads=None, plots=None, earthquake=None,
-           bench=None, gnuplot=None, data=None, run_budget=None, progress=False):
+def report(out: Optional[Path] = None, *, suite: Path = "default", engines: Union[str, Sequence[str], None] = None,
+           cases: Union[str, Sequence[str], None] = None, threads: Optional[int] = None, plots: Optional[bool] = None,
+           earthquake: Optional[Path] = None, bench: Optional[Path] = None, gnuplot: Optional[Path] = None,
+           data: Optional[Path] = None, run_budget: Optional[Number] = None, progress: Progress = False
+           ) -> ReportResult:
     """Runs the validation suite and writes its report (`vssw report`): every case for the analytic model and each
     engine, the metrics against the references and targets, the plots.
 
     out: the report folder (created if missing). None: a temporary folder, removed once its tables are read
         (ReportResult.folder, markdown and html are then None), without plots unless plots=True.
-    suite: "default", "full" or a suite file. engines: a list of engines (default every engine of this build but
-        simbody-rigid). cases: only these case ids (a list). threads: worker threads (default the available cores).
+    suite: "default", "full" or a suite file. engines: a list of engines, in any letter case (default every engine
+        of this build but simbody-rigid). cases: only these case ids (a list). threads: worker threads (default the
+        available cores).
     earthquake: "default", "none" or a study file of kind "ensemble" (default: "default", "none" with cases).
     bench: a finished `vssw bench --out DIR` folder whose section ends the report. gnuplot: the gnuplot program.
     data: the records' folder. run_budget: CPU seconds one engine run may take.
@@ -493,7 +657,7 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
     Returns a vssw.ReportResult: metrics (metrics.csv), failures (failures.csv), rows (results.json's rows with
     targets), matrix (the verdicts at a glance), earthquake (the verdicts under records, None without that part),
     each a pandas DataFrame, and the folder, report.md and report.html paths."""
-    import pandas as pd
+    import pandas as pd  # type: ignore[import]
 
     _progress(progress)
     options = dict(suite=suite, engines=_joined("engines", engines), cases=_joined("cases", cases),
@@ -513,7 +677,7 @@ def report(out=None, *, suite="default", engines=None, cases=None, threads=None,
 
 def _earthquake_table(part):
     """results.json's earthquake verdicts as a DataFrame, one row per engine (None when no earthquake part ran)."""
-    import pandas as pd
+    import pandas as pd  # type: ignore[import]
 
     if part is None:
         return None

@@ -10,8 +10,8 @@ _EXIT_BAD_INPUT = 2  # the program's exit code for bad input (as _core.EXIT_BAD_
 # What plot() can draw: name -> (axis label with its unit, the values from a Simulation). Rotations in units of the
 # reference angle alpha (1 is the corner over the pivot at rest), the rise in mm, energies in J.
 QUANTITIES = {
-    "theta1": ("θ1 / α1  [-]", lambda s: s.theta1 / s.alpha),
-    "theta2": ("θ2 / α1  [-]", lambda s: s.theta2 / s.alpha),
+    "theta1": ("θ1 / α1  [-]", lambda s: s.theta1 / s.alpha1),
+    "theta2": ("θ2 / α1  [-]", lambda s: s.theta2 / s.alpha1),
     "top_dy": ("top's rise  [mm]", lambda s: 1e3 * s.top_dy),
     "energy": ("energy  [J]", lambda s: s.kinetic + s.potential),
 }
@@ -92,7 +92,7 @@ def plot_simulation(sim, ax=None, quantities=None):
         panel_ax.grid(True, linewidth=0.3)
     axes[-1].set_xlabel("t  [s]")
     # The run's start in the title; its engine too on a figure of its own (on given axes the legend names the runs).
-    start = sim.ground_motion if sim.ground_motion else f"released at θ0 = {sim.theta0 / sim.alpha:.3g} α1"
+    start = sim.ground_motion if sim.ground_motion else f"released at θ0 = {sim.theta0 / sim.alpha1:.3g} α1"
     title = start if ax is not None else f"{sim.engine}, {start}" + (", overturned" if sim.overturned else "")
     axes[0].set_title(title, fontsize="medium")
     return fig

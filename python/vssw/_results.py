@@ -1,12 +1,21 @@
 """The typed API's results: small dataclasses with attributes, NumPy arrays for trajectories, pandas DataFrames for
 tables (docs/guide/python.md)."""
 
+from __future__ import annotations
+
 import dataclasses
 import math
 import pathlib
-from typing import List, Optional, Tuple
+import warnings
+from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
+import numpy.typing as npt
+
+Array = npt.NDArray[np.float64]
+# A pandas DataFrame: Any to a type checker, as Debian's pandas ships no type information (and pandas is optional at
+# run time: the package imports it only where a table is made).
+DataFrame = Any
 
 
 @dataclasses.dataclass(frozen=True)
@@ -35,34 +44,40 @@ class Simulation:
     engines); contacts (contact points in use; 0 for the analytic model); ground_acceleration [m/s^2] (a_h at each
     sample, along +x).
 
-    Also: engine, version (of its library), settings (as used: dt, iterations, sample_dt, knobs), alpha [rad] (alpha1
-    of a VSSW, alpha of a parapet), theta0 [rad] (the release), t_end [s] (asked; the run may stop earlier at rest),
+    Also: engine, version (of its library), settings (as used: dt (the engine's step; None for the analytic model,
+    which takes none), iterations, sample_dt (the output interval: the analytic model's always, an engine's when
+    asked), knobs), alpha1 [rad] (the angle rotations are measured in: alpha1 of a VSSW's lower block, alpha of a
+    parapet), alpha [rad] (the whole wall's slenderness atan(b/h), a study's `alpha`; alpha1 for a parapet), height,
+    thickness [m] (2h, 2b), theta0 [rad] (the release), t_end [s] (asked; the run may stop earlier at rest),
     overturned, at_rest_at_end, steps (engine or integrator steps), warnings (the analytic model's own assumptions
     failing along the run), impacts (list of Impact), peaks (list of (t [s], theta1 [rad]) turning points), period
     [s] (4 x release to first impact; None without a release or an impact), max_abs_theta1 [rad] (the largest
-    sample), peak_rotation [alpha] and peak_time [s] (the run's peak as a study and the report measure it: the
-    located turning point of the analytic model, the collapse angle and the overturning when it overturned), assumptions
+    sample of the whole run; impacts, peaks, period and max_abs_theta1 are read off the run's samples: an engine's
+    every step, the analytic model's at its output interval, which sample_dt sets), peak_rotation [alpha1] and
+    peak_time [s] (the run's peak as a study and the report measure it: the located turning point of the analytic
+    model, the collapse angle and the overturning when it overturned), assumptions
     (analytic: "mechanism", "paper" or "custom"; None for an engine), kinematics (analytic: "exact" or "paper"; None
     for an engine or a parapet), ground_motion (its name, None in free
-    vibration), slip (an engine run's sliding when friction was given, else None: {base_largest, base_residual,
-    hinge_largest, hinge_residual [m], b [m], t_first_slip, t_first_lift [s or None], slid_before_rocking,
-    slid_off (the reason the run ended off its support, or None)}), geometry (the wall as the model built it:
+    vibration), slip (an engine run's sliding when friction was given, a Slip; else None), geometry (the wall as the model built it:
     {model ("vssw" or "parapet"), b, h1, h2 [m] (half dimensions; h2 None for a parapet, h1 its h), alpha1, alpha2
     [rad], xi, N [N/m], overburden_eccentricity (e/b), corner_radius (r/b)}: what plot() and animate() draw)."""
 
     engine: str
     version: str
-    t: np.ndarray
-    theta1: np.ndarray
-    theta1_dot: np.ndarray
-    theta2: np.ndarray
-    top_dy: np.ndarray
-    kinetic: np.ndarray
-    potential: np.ndarray
-    contacts: np.ndarray
-    ground_acceleration: np.ndarray
-    settings: dict
+    t: Array
+    theta1: Array
+    theta1_dot: Array
+    theta2: Array
+    top_dy: Array
+    kinetic: Array
+    potential: Array
+    contacts: npt.NDArray[np.int32]
+    ground_acceleration: Array
+    settings: Dict[str, Any]
+    alpha1: float
     alpha: float
+    height: float
+    thickness: float
     theta0: float
     t_end: float
     overturned: bool
@@ -78,61 +93,128 @@ class Simulation:
     assumptions: Optional[str]
     kinematics: Optional[str]
     ground_motion: Optional[str]
-    slip: Optional[dict] = None
-    geometry: Optional[dict] = None
+    slip: Optional[Slip] = None
+    geometry: Optional[Dict[str, Any]] = None
 
     @property
-    def theta1_over_alpha(self):
-        """theta1 / alpha: the rotation in units of the reference angle (1 is the corner over the pivot at rest)."""
-        return self.theta1 / self.alpha
+    def theta1_over_alpha1(self) -> Array:
+        """theta1 / alpha1: the rotation in units of the reference angle (1 is the corner over the pivot at rest)."""
+        return self.theta1 / self.alpha1
 
     @property
-    def energy(self):
+    def theta1_over_alpha(self) -> Array:
+        """Deprecated: theta1_over_alpha1 (alpha now means the whole wall's slenderness, as in a study's results)."""
+        warnings.warn("Simulation.theta1_over_alpha is theta1 / alpha1: use Simulation.theta1_over_alpha1 (alpha is "
+                      "now the whole wall's slenderness atan(b/h), as in a study's results)", FutureWarning,
+                      stacklevel=2)
+        return self.theta1_over_alpha1
+
+    @property
+    def energy(self) -> Array:
         """kinetic + potential [J]."""
         return self.kinetic + self.potential
 
     @property
-    def restitution(self):
+    def restitution(self) -> Optional[float]:
         """theta1' after / before the first impact when it is resolved, else None (what `vssw compare` measures)."""
         if self.impacts and self.impacts[0].resolved:
             return self.impacts[0].ratio
         return None
 
-    def plot(self, ax=None, quantities=None):
+    def plot(self, ax: Any = None, quantities: Optional[Any] = None) -> Any:
         """theta1 and theta2 against time (and the top's rise and the energy where the run has them) on matplotlib
         axes: vssw._plot.plot_simulation. Returns the Figure."""
         from ._plot import plot_simulation
 
         return plot_simulation(self, ax=ax, quantities=quantities)
 
-    def animate(self, path=None, fps=25, speed=1.0, t_start=None, t_stop=None):
+    def animate(self, path: Optional[Any] = None, fps: float = 25, speed: float = 1.0,
+                t_start: Optional[float] = None, t_stop: Optional[float] = None) -> Any:
         """The two blocks and the roller moving as the run did, as a matplotlib Animation; written to path (.gif,
         or .mp4 where ffmpeg is installed) when one is given: vssw._animation.animate_simulation."""
         from ._animation import animate_simulation
 
         return animate_simulation(self, path=path, fps=fps, speed=speed, t_start=t_start, t_stop=t_stop)
 
-    def to_dataframe(self):
+    def to_dataframe(self) -> DataFrame:
         """The arrays as a pandas DataFrame, one column each."""
-        import pandas as pd
+        import pandas as pd  # type: ignore[import]
 
         return pd.DataFrame({name: getattr(self, name) for name in _ARRAYS})
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"Simulation(engine={self.engine!r}, samples={len(self.t)}, t_end={self.t_end:g} s, "
-                f"max |theta1|/alpha={self.max_abs_theta1 / self.alpha:.4g}, overturned={self.overturned}, "
+                f"max |theta1|/alpha1={self.max_abs_theta1 / self.alpha1:.4g}, overturned={self.overturned}, "
                 f"period={self.period!r})")
 
 
 _ARRAYS = ["t", "theta1", "theta1_dot", "theta2", "top_dy", "kinetic", "potential", "contacts", "ground_acceleration"]
 
 
-def simulation_from(d):
+@dataclasses.dataclass(frozen=True)
+class SlipAt:
+    """An engine's sliding at one contact (the base or the hinge), as `vssw compare --friction --json` writes it:
+    largest_b, residual_b (the largest and the last slide, in half-thicknesses b), largest_m, residual_m (in m)."""
+
+    largest_b: float
+    largest_m: float
+    residual_b: float
+    residual_m: float
+
+
+# The keys Simulation.slip had as a flat dict: each read through Slip[key], with a warning, as before.
+_FLAT_SLIP_KEYS = {"base_largest": ("base", "largest_m"), "base_residual": ("base", "residual_m"),
+                   "hinge_largest": ("hinge", "largest_m"), "hinge_residual": ("hinge", "residual_m")}
+
+
+@dataclasses.dataclass(frozen=True)
+class Slip:
+    """An engine run's sliding when friction was given (Simulation.slip), in the structure of `vssw compare
+    --friction --json`'s slip: base, hinge (each a SlipAt; hinge None for a parapet), slid_before_rocking,
+    slid_off (the reason the run ended off its support, or None); besides, b [m], t_first_slip and t_first_lift [s, or
+    None]."""
+
+    base: SlipAt
+    hinge: Optional[SlipAt]
+    slid_before_rocking: bool
+    slid_off: Optional[str]
+    b: float
+    t_first_slip: Optional[float]
+    t_first_lift: Optional[float]
+
+    def __getitem__(self, key: str) -> Any:
+        """Deprecated: the flat dict's keys (slip["base_largest"] [m], ...), read from the fields."""
+        warnings.warn(f"Simulation.slip[{key!r}] is deprecated: Simulation.slip is a Slip, as `vssw compare --json` "
+                      "writes it (slip.base.largest_m, slip.hinge.residual_m, slip.b, ...)", FutureWarning,
+                      stacklevel=2)
+        if key in _FLAT_SLIP_KEYS:
+            where, name = _FLAT_SLIP_KEYS[key]
+            at = getattr(self, where)
+            return 0.0 if at is None else getattr(at, name)
+        return getattr(self, key)
+
+
+def _slip_at(largest: float, residual: float, b: float) -> SlipAt:
+    return SlipAt(largest_b=largest / b, largest_m=largest, residual_b=residual / b, residual_m=residual)
+
+
+def slip_from(d: Optional[Dict[str, Any]], vssw: bool) -> Optional[Slip]:
+    if d is None:
+        return None
+    b = d["b"]
+    return Slip(base=_slip_at(d["base_largest"], d["base_residual"], b),
+                hinge=_slip_at(d["hinge_largest"], d["hinge_residual"], b) if vssw else None,
+                slid_before_rocking=d["slid_before_rocking"], slid_off=d["slid_off"], b=b,
+                t_first_slip=d["t_first_slip"], t_first_lift=d["t_first_lift"])
+
+
+def simulation_from(d: Dict[str, Any], height: float, thickness: float, vssw: bool) -> Simulation:
     fields = {f.name for f in dataclasses.fields(Simulation)}
     values = {k: v for k, v in d.items() if k in fields}
     values["impacts"] = [Impact(**i) for i in d["impacts"]]
     values["peaks"] = [tuple(p) for p in d["peaks"]]
-    return Simulation(**values)
+    values["slip"] = slip_from(d["slip"], vssw)
+    return Simulation(height=height, thickness=thickness, **values)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -149,7 +231,7 @@ class Metric:
     target: float
 
     @property
-    def within_target(self):
+    def within_target(self) -> bool:
         return not math.isnan(self.rel_error) and abs(self.rel_error) <= self.target
 
 
@@ -182,7 +264,7 @@ class Comparison:
     restitution_amplitude: Metric
     closed_forms: ClosedForms
     theta0: float
-    settings: dict
+    settings: Dict[str, Any]
     threshold_trials: Tuple[int, int]
     impacts: Tuple[int, int]
     failures: List[str]
@@ -190,34 +272,39 @@ class Comparison:
     error: Optional[str] = None
 
     @property
-    def metrics(self):
+    def metrics(self) -> Dict[str, Metric]:
         """{"threshold": Metric, "period": ..., "restitution": ..., "restitution_amplitude": ...}."""
         return {name: getattr(self, name) for name in ["threshold", "period", "restitution", "restitution_amplitude"]}
 
     @property
-    def within_targets(self):
+    def within_targets(self) -> bool:
         """Threshold, period and restitution all within their targets."""
         return all(getattr(self, m).within_target for m in ["threshold", "period", "restitution"])
 
-    def to_dataframe(self):
+    def to_dataframe(self) -> DataFrame:
         """One row per metric: engine, metric, value, reference, rel_error, target, within_target."""
-        import pandas as pd
+        import pandas as pd  # type: ignore[import]
 
         return pd.DataFrame([dict(engine=self.engine, metric=name, value=m.value, reference=m.reference,
                                   rel_error=m.rel_error, target=m.target, within_target=m.within_target)
                              for name, m in self.metrics.items()])
 
 
-def comparison_from(d):
+def _pair(counts: Any) -> Tuple[int, int]:
+    analytic, engine = counts
+    return int(analytic), int(engine)
+
+
+def comparison_from(d: Dict[str, Any]) -> Comparison:
     return Comparison(
         engine=d["engine"], version=d["version"],
         threshold=Metric(**d["threshold"]), period=Metric(**d["period"]), restitution=Metric(**d["restitution"]),
         restitution_amplitude=Metric(**d["restitution_amplitude"]), closed_forms=ClosedForms(**d["closed_forms"]),
-        theta0=d["theta0"], settings=d["settings"], threshold_trials=tuple(d["threshold_trials"]),
-        impacts=tuple(d["impacts"]), failures=list(d["failures"]), analytic_warnings=list(d["analytic_warnings"]))
+        theta0=d["theta0"], settings=d["settings"], threshold_trials=_pair(d["threshold_trials"]),
+        impacts=_pair(d["impacts"]), failures=list(d["failures"]), analytic_warnings=list(d["analytic_warnings"]))
 
 
-def failed_comparison(engine, message):
+def failed_comparison(engine: str, message: str) -> Comparison:
     nan = float("nan")
     missing = Metric(nan, nan, nan, nan)
     return Comparison(engine=engine, version="", threshold=missing, period=missing, restitution=missing,
@@ -229,7 +316,7 @@ def failed_comparison(engine, message):
 @dataclasses.dataclass(frozen=True)
 class ResponseRun:
     """One backend's run from rest under the ground motion (vssw.compare with record= or pulse=): engine, version,
-    settings (as a study writes them: "" at the engine's defaults), peak (max |theta1| / alpha), peak_time [s],
+    settings (as a study writes them: "" at the engine's defaults), peak (max |theta1| / alpha1), peak_time [s],
     overturned (None when the run failed), t_overturn [s] (NaN when standing), status ("ok" or "failed: reason"),
     warnings (the analytic model's own assumptions failing along the run, "; "-joined)."""
 
@@ -256,19 +343,19 @@ class ResponseComparison:
     ground_motion: str
 
     @property
-    def peak_ratio(self):
+    def peak_ratio(self) -> float:
         """engine peak / reference peak (NaN when either run failed)."""
         return self.engine.peak / self.reference.peak if self.reference.peak else float("nan")
 
     @property
-    def overturning_agrees(self):
+    def overturning_agrees(self) -> Optional[bool]:
         """Both overturned or both stood (None when a run failed)."""
         if self.engine.overturned is None or self.reference.overturned is None:
             return None
         return self.engine.overturned == self.reference.overturned
 
 
-def response_comparisons_from(d):
+def response_comparisons_from(d: Dict[str, Any]) -> List[ResponseComparison]:
     reference = ResponseRun(**d["reference"])
     return [ResponseComparison(engine=ResponseRun(**r), reference=reference, ground_motion=d["ground_motion"])
             for r in d["runs"]]
@@ -280,11 +367,11 @@ class StudyResult:
     folder: results.csv, results.json, manifest.json, study.md, plots/; None when no `out` was given, the temporary
     folder removed), summary (the command's JSON summary)."""
 
-    results: "object"
-    folder: "pathlib.Path | None"
-    summary: dict
+    results: DataFrame
+    folder: Optional[pathlib.Path]
+    summary: Dict[str, Any]
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"StudyResult(folder={str(self.folder)!r}, rows={len(self.results)})"
 
 
@@ -299,15 +386,15 @@ class ReportResult:
     overturning_agreement with its lo, hi, runs and pass; fragility_median_ratio with its lo, hi, pass and note;
     peak_ratio_median; inside_band of band_runs; None when the report ran no earthquake part)."""
 
-    metrics: "object"
-    failures: "object"
-    rows: "object"
-    folder: "pathlib.Path | None"
-    markdown: "pathlib.Path | None"
-    html: "pathlib.Path | None"
+    metrics: DataFrame
+    failures: DataFrame
+    rows: DataFrame
+    folder: Optional[pathlib.Path]
+    markdown: Optional[pathlib.Path]
+    html: Optional[pathlib.Path]
     summary: str
-    matrix: "object" = None
-    earthquake: "object" = None
+    matrix: Optional[DataFrame] = None
+    earthquake: Optional[DataFrame] = None
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"ReportResult(folder={str(self.folder)!r}, metrics={len(self.metrics)} rows)"

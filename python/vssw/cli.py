@@ -26,6 +26,8 @@ a failed simulation (3) SimulationError, a RuntimeError; a bound out in `check` 
 from vssw.Error and keep the exit code, the program's stderr and, where the command printed one, its JSON (result).
 """
 
+from __future__ import annotations
+
 import contextlib as _contextlib
 import decimal as _decimal
 import json as _json
@@ -33,6 +35,11 @@ import math as _math
 import numbers as _numbers
 import os as _os
 import tempfile as _tempfile
+from typing import Any as _Any
+from typing import Dict as _Dict
+from typing import Iterator as _Iterator
+from typing import Optional as _Optional
+from typing import Union as _Union
 
 from . import _core
 from ._errors import BoundsError, Error, InputError, SimulationError
@@ -142,7 +149,8 @@ def _reserved(options, names):
                              "")
 
 
-def run(command, *positional, **options):
+def run(command: _Union[str, "_os.PathLike[str]"], *positional: _Union[str, "_os.PathLike[str]"],
+        **options: _Any) -> _Any:
     """Any vssw command with --json, e.g. run("check", bounds="bounds/ci.toml") or
     run("study", "merge", "s1", "s2", out="s"). Positional arguments are passed as they are, before the options.
     Returns the parsed JSON; run("--help") and help=True return the help text."""
@@ -159,7 +167,7 @@ def _commands():
     return [line.split()[0] for line in listed if line.startswith("  ") and line.split()]
 
 
-def help(command=None):  # noqa: A001 (the module's own help, as `vssw COMMAND --help`)
+def help(command: _Optional[str] = None) -> str:  # noqa: A001 (the module's own help, as `vssw COMMAND --help`)
     """The --help text of a command (every option with its unit and default), or of the program."""
     commands = _commands() if command is not None else []
     if command is not None and command not in commands:
@@ -172,14 +180,14 @@ def help(command=None):  # noqa: A001 (the module's own help, as `vssw COMMAND -
     return out
 
 
-def wall(**options):
+def wall(**options: _Any) -> _Dict[str, _Any]:
     """`vssw wall`: the closed forms (Eqs. 12, 15, 19, 21, 22, 26; Housner's parapet). Options: height, thickness,
     hinge (required), xi, density, g. Returns the JSON: alpha1, alpha2, R1, R2, threshold_g, restitution, A, P,
     theta_lim, period_half_A, collapse_angle, ..., parapet {alpha, R, threshold_g, restitution, p}."""
     return run("wall", **options)
 
 
-def free(trace=False, **options):
+def free(trace: bool = False, **options: _Any) -> _Dict[str, _Any]:
     """`vssw free`: free vibration released from rest at theta0 (a fraction of alpha). Options: height, thickness,
     hinge, theta0 (required), model, assumptions ("mechanism", the default, or "paper"),
     kinematics, impact, roller (each overriding one part of the set), xi, density, g, rtol, output_dt, csv, strict (True:
@@ -205,17 +213,19 @@ def _read_trace(path):
     return {name: data[:, i].copy() for i, name in enumerate(header)}
 
 
-def history(trace=False, **options):
+def history(trace: bool = False, **options: _Any) -> _Dict[str, _Any]:
     """`vssw history`: the response from rest to a record (record=FILE, with scale= or pga=) or a pulse (pulse=
     "sine"|"cosine"|"ricker"|"harmonic", amplitude=, pulse_period=). Other options as `free` (no theta0), and
-    output_dt, t_end, csv (a file to write the time history to). Returns the JSON; with trace=True also "trace":
+    output_dt, t_end, csv (a file to write the time history to). record may also be the samples, (dt, values) or
+    (t, values) in s and g as vssw.simulate takes them (written to a temporary two-column file, removed afterwards).
+    Returns the JSON; with trace=True also "trace":
     the time history as NumPy arrays keyed by the CSV's columns (t, theta_over_alpha, theta_dot_over_ref,
     E_over_Vr, ED_over_Vr, ag_g), read from csv= when given, else from a temporary file. engine= runs an engine
     instead, as for free() (its trace's columns are free()'s with an engine)."""
     return _with_trace("history", trace, options)
 
 
-def export_scene(engine, path, **options):
+def export_scene(engine: str, path: _Union[str, "_os.PathLike[str]"], **options: _Any) -> _Dict[str, _Any]:
     """`vssw scene`: write the scene `engine` runs for a wall to `path` in the engine's own file format (MJCF for
     "mujoco"; an engine without one raises InputError), without running it. Options: height, thickness, hinge
     (required), model, xi, density, g, friction, theta0 (the release as a fraction of alpha, default 0), dt,
@@ -225,8 +235,31 @@ def export_scene(engine, path, **options):
     return run("scene", engine=engine, out=_os.fspath(path), **options)
 
 
+@_contextlib.contextmanager
+def _record_file(options: _Dict[str, _Any]) -> _Iterator[_Dict[str, _Any]]:
+    """The options with record=(dt, values) or (t, values) written to a temporary two-column file (times [s] and
+    accelerations [g], 17 digits: read back to the same doubles) named in record=; removed when the call ends."""
+    record = options.get("record")
+    if not isinstance(record, (tuple, list)):
+        yield options
+        return
+    from ._api import _record_samples
+
+    times, values = _record_samples(tuple(record))
+    with _tempfile.TemporaryDirectory(prefix="vssw-record-") as folder:
+        path = _os.path.join(folder, "record.txt")
+        with open(path, "w", encoding="utf-8") as f:
+            f.writelines(f"{t!r} {a!r}\n" for t, a in zip(times, values))
+        yield {**options, "record": path}
+
+
 def _with_trace(command, trace, options):
     """The command's JSON; with trace, its --csv time history too (from csv= when given, else a temporary file)."""
+    with _record_file(options) as given:
+        return _with_trace_of(command, trace, given)
+
+
+def _with_trace_of(command, trace, options):
     if not trace:
         return run(command, **options)
     if options.get("csv"):
@@ -240,21 +273,23 @@ def _with_trace(command, trace, options):
     return result
 
 
-def compare(**options):
+def compare(**options: _Any) -> _Dict[str, _Any]:
     """`vssw compare`: engine (a name, a list of names or "all"; required) against the analytic model, on the wall
     of height, thickness, hinge (and xi, density, g, model, assumptions, kinematics, impact, roller): threshold, period (theta0),
     restitution; or, with record= or pulse=, the response from rest. Engine options: dt, iterations, set (a dict
     {knob: value} or a list of "knob=value"), run_budget (CPU seconds one engine run may take; each runs in a child
     process, so an engine library that crashes or passes its budget raises SimulationError, never ends Python). Returns the JSON (one engine: {engine, threshold {analytic, engine,
     rel_error, ...}, period, restitution, ...}; several: {comparisons, engine_failures, wall_time_s}). A metric that
-    could not be measured raises SimulationError with the JSON as its `result`."""
-    return run("compare", **options)
+    could not be measured raises SimulationError with the JSON as its `result`. record may be (dt, values) or (t,
+    values), as for history()."""
+    with _record_file(options) as given:
+        return run("compare", **given)
 
 
 def _pandas():
     """pandas when it imports, else None (pandas is optional: study() then returns a list of dicts)."""
     try:
-        import pandas
+        import pandas  # type: ignore[import]
     except ImportError:
         return None
     return pandas
@@ -331,7 +366,8 @@ def _errors_name_the_dict(path):
         raise InputError(renamed, e.code, e.stderr, e.result) from None
 
 
-def study(file, out=None, **options):
+def study(file: _Union[str, "_os.PathLike[str]", _Dict[str, _Any]], out: _Union[str, "_os.PathLike[str]", None] = None,
+          **options: _Any) -> _Any:
     """`vssw study`: `file` is a study file (.toml or .json, README "Studies") or a dict of its keys (a relative
     record `file` in it is read from the current directory). Writes the study folder into `out` (plots and prose
     included); without `out`, into a temporary folder removed afterwards, with no plots. Other options: threads,
@@ -341,13 +377,12 @@ def study(file, out=None, **options):
     _reserved(options, ["json"])
     with _tempfile.TemporaryDirectory(prefix="vssw-study-") as scratch:
         from_dict = isinstance(file, dict)
-        if from_dict:
-            file = _study_file_of(file, scratch)
+        path = _study_file_of(file, scratch) if isinstance(file, dict) else _os.fspath(file)
         folder = _os.fspath(out) if out is not None else _os.path.join(scratch, "out")
         if out is None:
             options.setdefault("no_plots", True)
-        with _errors_name_the_dict(file) if from_dict else _contextlib.nullcontext():
-            summary = run("study", file, out=folder, **options)
+        with _errors_name_the_dict(path) if from_dict else _contextlib.nullcontext():
+            summary = run("study", path, out=folder, **options)
         pandas = _pandas()
         if pandas is not None:
             # round_trip: pandas' default parser can be 1 ulp off the 17 digits written (measured on periods).

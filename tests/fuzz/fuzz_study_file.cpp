@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <set>
 #include <string>
 #include <typeinfo>
@@ -26,6 +27,7 @@
 
 #include "analytic/error.hpp"
 #include "io/config_file.hpp"
+#include "multibody/host/engine_names.hpp"
 #include "study/metric_catalog.hpp"
 #include "study/spec.hpp"
 
@@ -36,6 +38,12 @@
 namespace vssw::multibody {
 std::vector<std::string> available_engines() {
     return {"analytic", "bullet", "ode", "simbody", "simbody-rigid", "siconos"};
+}
+// A name is known as written (the registry's other spellings are tested with it, tests/test_cli.cpp).
+std::optional<std::string> canonical_engine(const std::string& name) {
+    for (const std::string& known : available_engines())
+        if (name == known) return name;
+    return std::nullopt;
 }
 // No suggestion for a name that is none of them (the registry's own is tested with it, tests/test_cli.cpp).
 std::string engine_name_hint(const std::string&) { return ""; }
