@@ -19,7 +19,7 @@ _MARGIN = 0.15  # of the wall's height around the drawing, so the roller and N's
 
 
 def _positive(name, value, largest=math.inf):
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0 < value <= largest:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0 < float(value) <= largest:
         raise InputError(f"{name} {value!r}: a number above 0" + (f" and at most {largest:g}" if largest < math.inf
                                                                   else "") + " is expected", _EXIT_BAD_INPUT)
     return float(value)
@@ -57,7 +57,7 @@ def _limits(sim, indices):
 def _writer(path, fps):
     """The matplotlib writer for path's suffix; InputError for another suffix, a missing encoder or a folder that does
     not exist."""
-    from matplotlib import animation
+    from matplotlib import animation  # type: ignore[import]  # no types in matplotlib 3.6
 
     suffix = path.suffix.lower()
     if not path.parent.is_dir():
@@ -95,7 +95,7 @@ def animate_simulation(sim, path=None, fps=25, speed=1.0, t_start=None, t_stop=N
     The returned Animation has sample_indices (the sample each frame shows) and draw_frame(k) (draws frame k and
     returns its WallPose). InputError for a bad value, a rounded wall, a missing matplotlib or encoder."""
     plt = require_matplotlib()
-    from matplotlib import animation
+    from matplotlib import animation  # type: ignore[import]
 
     require_drawable(sim.geometry)
     fps = _positive("fps", fps, _MAX_FPS)

@@ -22,7 +22,7 @@ _DEFAULT = ("theta1", "theta2", "top_dy", "energy")
 def require_matplotlib():
     """matplotlib.pyplot, or an InputError saying how to get it (Debian: python3-matplotlib)."""
     try:
-        import matplotlib.pyplot as plt
+        import matplotlib.pyplot as plt  # type: ignore[import]  # Debian's matplotlib 3.6 ships no types
     except ImportError as e:
         raise InputError(f"plotting needs matplotlib, which this Python cannot import ({e}); install it "
                          "(Debian: apt install python3-matplotlib)", _EXIT_BAD_INPUT) from None

@@ -132,7 +132,7 @@ class WallArtists:
         filled = style == "solid"
         line = dict(closed=True, linewidth=1.2, edgecolor="black" if filled else "grey",
                     linestyle="-" if filled else "--", fill=filled)
-        from matplotlib.patches import Circle, Polygon  # the caller has matplotlib: its axes were given
+        from matplotlib.patches import Circle, Polygon  # type: ignore[import]  # the caller has matplotlib
 
         self.blocks = [Polygon(np.zeros((4, 2)), facecolor="#d9c3a5", **line)]
         if geometry["model"] == "vssw":
