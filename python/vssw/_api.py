@@ -36,6 +36,8 @@ Record = Union[Path, Tuple[float, Samples], Tuple[Samples, Samples]]
 Knobs = Union[Mapping[str, Union[Number, str]], Sequence[str]]
 # progress=: True (a bar), False or None (nothing), or a callable (done, total, what).
 Progress = Union[bool, None, Callable[[int, int, str], Any]]
+# What compare returns when the call does not say which (the overloads below narrow it for a type checker).
+AnyComparison = Union[Comparison, List[Comparison], ResponseComparison, List[ResponseComparison]]
 _T = TypeVar("_T")
 
 _DENSITY = 1800.0  # kg/m^3, brick masonry (analytic/wall.hpp kDefaultDensity)
@@ -446,7 +448,7 @@ def compare(engine: Union[str, Sequence[str]], *, record: Optional[Record] = ...
             kinematics: Optional[str] = ..., impact: Union[str, Number, None] = ..., roller: Optional[str] = ...,
             dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
             run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
-            ) -> Union[Comparison, List[Comparison], ResponseComparison, List[ResponseComparison]]: ...
+            ) -> AnyComparison: ...
 def compare(engine: Union[str, Sequence[str]], *, height: Number, thickness: Number, hinge: Optional[Number] = None,
             model: str = "vssw", xi: Number = 0.0, density: Number = _DENSITY, g: Number = _GRAVITY,
             theta0: Optional[Number] = None, record: Optional[Record] = None, scale: Optional[Number] = None,
@@ -456,7 +458,7 @@ def compare(engine: Union[str, Sequence[str]], *, height: Number, thickness: Num
             impact: Union[str, Number, None] = None, roller: Optional[str] = None, dt: Optional[Number] = None,
             iterations: Optional[int] = None, settings: Optional[Knobs] = None, run_budget: Optional[Number] = None,
             progress: Progress = False, overburden_eccentricity: Number = 0.0
-            ) -> Union[Comparison, List[Comparison], ResponseComparison, List[ResponseComparison]]:
+            ) -> AnyComparison:
     """Engines against the analytic model on the metrics the project holds them to (`vssw compare`, over the
     library): the threshold acceleration [g] (the smallest constant ground acceleration that lifts the wall off
     rest, by bisection on simulations to 1e-4), the period [s] (4 x the time from the release at theta0 to the first
