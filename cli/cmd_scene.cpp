@@ -1,4 +1,5 @@
-// `vssw scene`: the scene an engine runs, in the engine library's own file format (MJCF for MuJoCo): the text its
+// `vssw scene`: the scene an engine runs, in the engine library's own file format (MJCF for MuJoCo, URDF for DART's
+// blocks): the text its
 // adapter builds its world from for this wall, release and settings (multibody::Engine::scene_file), so that it can
 // be opened in the library's own viewer or loaded with its own parser.
 #include <cmath>
@@ -87,10 +88,12 @@ void run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
 Command add_scene_command(CLI::App& root) {
     auto o = std::make_shared<SceneOptions>();
     CLI::App* cmd = root.add_subcommand(
-        "scene", "Write the scene an engine runs in the engine's own file format (MJCF for MuJoCo), without running it");
+        "scene",
+        "Write the scene an engine runs in the engine's own file format (MJCF for MuJoCo, URDF for DART's blocks), "
+        "without running it");
     cmd->add_option("--engine", o->engine,
-                    fmt::format("the engine whose scene to write (one with a scene format: mujoco) (available: {}) "
-                                "(required)",
+                    fmt::format("the engine whose scene to write (one with a scene format: mujoco, dart) "
+                                "(available: {}) (required)",
                                 fmt::join(multibody::available_engines(), ", ")))
         ->required();
     add_model_options(*cmd, o->model);
@@ -98,7 +101,7 @@ Command add_scene_command(CLI::App& root) {
     add_friction_option(*cmd, o->friction);
     cmd->add_option("--theta0", o->theta0,
                     "the release the scene starts from, as a fraction r of alpha (alpha1 for a VSSW), |r| < 1 "
-                    "(default 0: upright at rest); MJCF: the keyframe 'release'");
+                    "(default 0: upright at rest); MJCF: the keyframe 'release'; URDF: in its comment");
     add_engine_setting_options(*cmd, o->settings);
     cmd->add_option("--out", o->out, "the file to write, or - for standard output (the summary then goes to the "
                                      "error stream) (required)")
@@ -107,7 +110,8 @@ Command add_scene_command(CLI::App& root) {
     cmd->footer(
         "The file is the text the engine's adapter builds its world from (the same code path as its runs), for the\n"
         "wall, release and settings given. What it cannot hold is said in a comment at its top: a ground motion and\n"
-        "the overburden N are applied by vssw at every step. Depth 1 m: masses per unit depth.\n"
+        "the overburden N are applied by vssw at every step (DART's URDF holds the blocks only: the ground, the\n"
+        "roller, friction and the release are added by vssw too). Depth 1 m: masses per unit depth.\n"
         "JSON keys: engine, version, format, path, model, theta0, dt.");
     return {cmd, nullptr, [o](std::ostream& out, std::ostream& err) { run_scene(*o, out, err); }};
 }

@@ -6,7 +6,8 @@
 //    on a prismatic joint along x driven at the ground's velocity (a VELOCITY actuator: DART treats it as kinematic);
 //  - lower and upper blocks: one skeleton each, a BoxShape (b, h1) and (b, h2) (one box (b, h) for a parapet) on a
 //    PlanarJoint in the XY plane, q = (x, y, theta_z counter-clockwise); the constructor checks that convention
-//    against the body's transform;
+//    against the body's transform. The blocks are loaded from the URDF text scene_file() gives (dart_urdf.hpp); the
+//    rest of the scene below is added in code;
 //  - contacts: the ODE collision detector of libdart-collision-ode (detector = 1, the default; 0 is DART's own) on the
 //    shape pairs a collision filter allows, and only those: ground-lower box, lower-upper box and the roller's pairs
 //    below. The two detectors give the same free vibrations, but under the record of `vssw bench` at 1 ms DART's own
@@ -32,6 +33,7 @@
 // are static members, shared by every world in the process: simulate() sets all four at the start of each run (each run
 // of make_engine() is a forked child anyway).
 #include "multibody/dart/dart_engine.hpp"
+#include "multibody/dart/dart_urdf.hpp"
 
 #include <algorithm>
 
@@ -55,6 +57,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -75,7 +78,7 @@ namespace {
 namespace dd = dart::dynamics;
 using Eigen::Vector3d;
 
-constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
+constexpr double kDepth = kDartDepth;  // [m] out-of-plane depth of the blocks (masses and energies per unit depth)
 
 // The detectors a run may use (setting "detector"; ODE's by default, above). DART's Bullet detector is not offered: it
 // links Debian's single-precision Bullet, which aborted ("malloc(): invalid size") beside vssw's double-precision
@@ -173,7 +176,7 @@ dd::ShapeNode* add_shape(dd::BodyNode* body, const dd::ShapePtr& shape, const Ve
 class DartScene {
 public:
     DartScene(const WallScene& scene, const Knobs& knobs, double theta0, double dt)
-        : sizes_(block_sizes(scene)), corner_radius_(scene.corner_radius()), g_(scene.gravity()) {
+        : sizes_(block_sizes(scene)), g_(scene.gravity()) {
         world_ = dart::simulation::World::create("vssw");
         world_->setTimeStep(dt);
         world_->setGravity(Vector3d(0.0, -g_, 0.0));
@@ -185,6 +188,7 @@ public:
         auto filter = std::make_shared<PairFilter>();
         solver->getCollisionOption().collisionFilter = filter;
 
+        const UrdfBlocks blocks = load_wall_urdf(wall_urdf(scene, theta0));
         const double b = sizes_.b, h = sizes_.h_lower + sizes_.h_upper;
         // Ground. A moving ground travels with the record's displacement: wide enough that the wall never reaches
         // its edge.
@@ -202,8 +206,7 @@ public:
         dd::ShapeNode* lower_box = nullptr;
         // DART 6 takes the smaller of two shapes' coefficients: the lower block carries the larger of the base's and
         // the hinge's, so that the ground's sets the base's and the upper block's the hinge's.
-        lower_ = add_block("lower", sizes_.h_lower, sizes_.m_lower, std::max(scene.base_mu(), scene.hinge_mu()),
-                           lower_box);
+        lower_ = add_block(blocks.lower, std::max(scene.base_mu(), scene.hinge_mu()), lower_box);
         filter->allow(ground_box, lower_box);
         const double rc = scene.corner_radius();
         if (rc > 0.0)  // the base arcs (see add_rounding)
@@ -211,7 +214,7 @@ public:
                 filter->allow(ground_box, arc);
         if (scene.vssw) {
             dd::ShapeNode* upper_box = nullptr;
-            upper_ = add_block("upper", sizes_.h_upper, sizes_.m_upper, scene.hinge_mu(), upper_box);
+            upper_ = add_block(blocks.upper, scene.hinge_mu(), upper_box);
             filter->allow(lower_box, upper_box);
             if (rc > 0.0) {  // the hinge's arcs, each rolling on the one of its side
                 const auto lower_top =
@@ -275,16 +278,13 @@ private:
         return {pair.first, pair.second};
     }
 
-    dd::BodyNode* add_block(const std::string& name, double half_h, double mass_per_depth, double friction,
-                            dd::ShapeNode*& box_node) {
-        dd::SkeletonPtr skeleton = dd::Skeleton::create(name);
-        dd::BodyNode* body = skeleton->createJointAndBodyNodePair<dd::PlanarJoint>().second;  // XY plane by default
-        auto box = std::make_shared<dd::BoxShape>(Vector3d(2.0 * sizes_.b, 2.0 * half_h, kDepth));
-        const double m = mass_per_depth * kDepth;
-        body->setInertia(dd::Inertia(m, Vector3d::Zero(), box->computeInertia(m)));
-        if (corner_radius_ > 0.0)  // rounded: the box is the flat part, b - r wide; the inertia stays the rectangle's
-            box = std::make_shared<dd::BoxShape>(Vector3d(2.0 * (sizes_.b - corner_radius_), 2.0 * half_h, kDepth));
-        box_node = add_shape(body, box, Vector3d::Zero(), friction);
+    // A block loaded from the URDF (its mass, inertia, box and planar joint), given what URDF cannot hold: its box's
+    // friction and restitution 0.
+    dd::BodyNode* add_block(const dd::SkeletonPtr& skeleton, double friction, dd::ShapeNode*& box_node) {
+        dd::BodyNode* body = skeleton->getRootBodyNode();
+        box_node = body->getShapeNode(0);
+        box_node->getDynamicsAspect()->setFrictionCoeff(friction);
+        box_node->getDynamicsAspect()->setRestitutionCoeff(0.0);
         world_->addSkeleton(skeleton);
         return body;
     }
@@ -315,7 +315,6 @@ private:
     }
 
     BlockSizes sizes_;
-    double corner_radius_;  // r [m] of every block corner (0: sharp boxes)
     double g_;
     dart::simulation::WorldPtr world_;
     dd::BodyNode* ground_body_ = nullptr;
@@ -324,6 +323,8 @@ private:
     dd::BodyNode* lower_ = nullptr;
     dd::BodyNode* upper_ = nullptr;
 };
+
+Knobs checked_knobs(const WallScene& scene, const EngineSettings& settings);
 
 class DartEngine final : public Engine {
 public:
@@ -343,6 +344,12 @@ public:
     std::vector<SettingDescription> setting_descriptions() const override { return setting_table(); }
     Trajectory simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const override;
     void check_settings(const EngineSettings& settings) const override { (void)read_knobs(settings); }
+    // The blocks' URDF a run loads (dart_urdf.hpp), after the checks a run makes.
+    std::optional<SceneFile> scene_file(const WallScene& scene, const Excitation& ex,
+                                        const EngineSettings& settings) const override {
+        (void)checked_knobs(scene, settings);
+        return SceneFile{"URDF", ".urdf", wall_urdf(scene, ex.theta0)};
+    }
     // The ContactConstraint statics are process-wide: one run at a time in a process (make_engine() forks each run).
     bool runs_concurrently() const override { return false; }
 };
@@ -400,11 +407,16 @@ private:
     double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
 };
 
-Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
+// The checks a run and a scene file share, then the knobs: InputError on a bad scene, step or setting.
+Knobs checked_knobs(const WallScene& scene, const EngineSettings& settings) {
     require(std::isfinite(settings.dt) && settings.dt > 0.0, "DART time step dt (s)", "a positive finite number",
             settings.dt);
     require_one_description(scene);
-    const Knobs knobs = read_knobs(settings);
+    return read_knobs(settings);
+}
+
+Trajectory DartEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
+    const Knobs knobs = checked_knobs(scene, settings);
     const double dt = settings.dt;
     RunMonitor monitor("DART", scene, ex, dt, knobs.limits);
     // The statics, set for this run (see the top of the file).

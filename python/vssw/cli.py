@@ -13,7 +13,7 @@ PATH) with its keyword arguments as the command's options, and returns the comma
     study(file, **kw)    `vssw study`: a study file (or a dict of its keys); its results.csv as a pandas DataFrame
     run(command, ...)    any command with --json, e.g. run("check", bounds="bounds/ci.toml")
     help(command)        the command's --help text: every option, unit and default
-    export_scene(engine, path, **wall)   `vssw scene`: the scene an engine runs, in its own format (MJCF for MuJoCo)
+    export_scene(engine, path, **wall)   `vssw scene`: the scene an engine runs, in its own format (MJCF, URDF)
 
 Options: `name=value` is `--name value` with underscores as dashes (pulse_period=0.5 is --pulse-period 0.5); True
 is a bare flag and False or None leaves the option out; a list or tuple repeats the option (engine=["ode",
@@ -227,7 +227,7 @@ def history(trace: bool = False, **options: _Any) -> _Dict[str, _Any]:
 
 def export_scene(engine: str, path: _Union[str, "_os.PathLike[str]"], **options: _Any) -> _Dict[str, _Any]:
     """`vssw scene`: write the scene `engine` runs for a wall to `path` in the engine's own file format (MJCF for
-    "mujoco"; an engine without one raises InputError), without running it. Options: height, thickness, hinge
+    "mujoco", URDF of the blocks for "dart"; an engine without one raises InputError), without running it. Options: height, thickness, hinge
     (required), model, xi, density, g, friction, theta0 (the release as a fraction of alpha, default 0), dt,
     iterations, set. The file is written under a temporary name and renamed onto `path`. Returns the JSON: engine,
     version, format, path, model, theta0, dt."""
