@@ -18,6 +18,7 @@
 #include "io/csv.hpp"
 #include "io/gnuplot.hpp"
 #include "io/palette.hpp"
+#include "study/overturned_runs.hpp"
 #include "study/plot_panels.hpp"
 
 namespace vssw::study {
@@ -34,9 +35,9 @@ const std::vector<std::string> kHeader = {"case_id", "engine",    "assumptions",
 // beyond which a wall is overturning rather than rocking.
 constexpr double kPeakStep = 0.025;
 constexpr int kPeakLevels = 40;
-// The plot's peak axis: an overturned run's peak is its collapse angle, drawn at this height (flatlines, as V&C draw
-// collapse), so that rocking peaks stay readable.
-constexpr double kOverturnedDrawnAt = 1.1;
+// The plot's peak axis ends this far above the height an overturned run is drawn at (study/overturned_runs.hpp), so
+// that the rings there are not cut by the frame.
+constexpr double kPeakAxisHeadroom = 1.1;
 // The records' curves: this transparency (gnuplot's alpha byte, 00 opaque to FF invisible), so the fractiles read above.
 constexpr const char* kRecordAlpha = "A0";
 // The fractiles drawn: 16, 50 and 84 %, the median and one lognormal standard deviation either side.
@@ -190,13 +191,15 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
     s.dat = "# " + io::gp_comment(s.plot.title) + "\n";
     std::string gp = io::gp_preamble("vssw study", s.plot.name, layout.width, layout.height) +
                      io::gp_xlabel(e.label, !layout.multiplot()) +
-                     fmt::format("set ylabel {}\n", io::gp_string("peak |theta1| / alpha1 (overturned at the top)")) +
+                     fmt::format("set ylabel {}\n", io::gp_string("peak |theta1| / alpha1")) +
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
     std::vector<bool> listed(d.series.size(), false);
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
         std::string cmd;
+        bool ringed = false;  // the panel's first ring carries the title "overturned"
+
         const auto add = [&](const std::string& style, const std::string& title) {
             cmd += fmt::format("{}'{}.dat' index {} using 1:2 with {} {}", cmd.empty() ? "plot " : ", \\\n     ",
                                s.plot.name, block++, style, title.empty() ? "notitle" : "title " + io::gp_string(title));
@@ -218,6 +221,11 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
                                          c->overturned[k] ? 1 : 0);
                 s.dat += "\n\n";
                 add("linespoints " + faint + " lw 0.5 pt 7 ps 0.25", "");
+                // Its overturned runs ringed at kOverturnedDrawnAt, as every plot of the peak draws them.
+                cmd += fmt::format(", \\\n     '{}.dat' index {} using 1:($3 > 0.5 ? $2 : NaN) with points {} {}",
+                                   s.plot.name, block - 1, kOverturnedRing,
+                                   ringed ? "notitle" : "title " + io::gp_string("overturned"));
+                ringed = true;
             }
             for (const double q : kFractiles) {
                 s.dat += fmt::format("# {}: {:g} % fractile of the intensity given the peak\n",
@@ -236,10 +244,14 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
                 if (first) listed[sr] = true;
             }
         }
-        gp += panel_begin(layout, e.walls[w]) + fmt::format("set yrange [0:{}]\n", io::gp_number(kOverturnedDrawnAt * 1.05)) +
+        gp += panel_begin(layout, e.walls[w]) + fmt::format("set yrange [0:{}]\n", io::gp_number(kOverturnedDrawnAt * kPeakAxisHeadroom)) +
               (cmd.empty() ? "plot [0:1][0:1] NaN notitle\n" : cmd + "\n");
     }
-    s.gp = gp + layout_end(layout, entries);
+    bool any_overturned = false;
+    for (const IdaCurve& c : curves)
+        any_overturned = any_overturned || std::find(c.overturned.begin(), c.overturned.end(), true) != c.overturned.end();
+    s.gp = gp + layout_end(layout, entries,
+                           any_overturned ? fmt::format("NaN with points {} title 'overturned'", kOverturnedRing) : "");
     out.scripts.push_back(std::move(s));
 }
 

@@ -31,7 +31,7 @@ bool Overturning::overturned(const StudyRow& r) const {
 
 std::pair<double, bool> peak_point(const std::vector<double>& peaks) {
     const double m = median(peaks);
-    return {std::isinf(m) ? 1.0 : m, std::isinf(m)};
+    return {std::isinf(m) ? kOverturnedDrawnAt : m, std::isinf(m)};
 }
 
 }  // namespace vssw::study

@@ -26,12 +26,15 @@ private:
     std::map<std::pair<int, std::vector<std::uint32_t>>, bool> runs_;
 };
 
+// The height an overturned run's peak is drawn at in every plot of the peak rotation (theta1 = alpha1, the rest
+// threshold's angle), ringed: its value, the collapse angle over alpha1, would squash every rocking peak.
+inline constexpr double kOverturnedDrawnAt = 1.0;
 // The peak an overturned run counts as in a point's median: larger than any.
 inline constexpr double kOverturnedPeak = std::numeric_limits<double>::infinity();
 // The ring around a point drawn as overturned (gnuplot), in every plot.
 inline constexpr const char* kOverturnedRing = "pt 6 ps 2 lc rgb 'black'";
 // The point's value and whether it is drawn as overturned: the median of the peaks (kOverturnedPeak for an
-// overturned run), at 1 when that median is an overturned run; NaN for none.
+// overturned run), at kOverturnedDrawnAt when that median is an overturned run; NaN for none.
 std::pair<double, bool> peak_point(const std::vector<double>& peaks);
 
 }  // namespace vssw::study

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <iterator>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +26,7 @@
 #include "io/csv.hpp"
 #include "study/ida_curves.hpp"
 #include "study/merge.hpp"
+#include "study/overturned_runs.hpp"
 #include "study/outputs.hpp"
 #include "study/results_files.hpp"
 #include "analytic/model.hpp"
@@ -453,6 +456,30 @@ TEST(StudyEnsemble, StripesInPgvSaAndAriasScaleEachRecordToItsLevel) {
     }
 }
 
+// The IDA plot draws an overturned run as every plot of the peak rotation does: at theta1 = alpha1 (1), ringed and
+// titled "overturned" (its value, the collapse angle over alpha1, would squash the rocking peaks).
+void expect_overturned_runs_ringed_at_one(const std::filesystem::path& plots) {
+    std::ifstream dat(plots / "ida.dat");
+    std::string line;
+    int overturned = 0;
+    while (std::getline(dat, line)) {
+        double intensity = 0.0, drawn = 0.0;
+        int flag = 0;
+        if (line.empty() || line[0] == '#' || std::sscanf(line.c_str(), "%lf %lf %d", &intensity, &drawn, &flag) != 3)
+            continue;
+        if (flag != 1) continue;
+        ++overturned;
+        EXPECT_EQ(drawn, 1.0) << line;
+    }
+    EXPECT_GT(overturned, 0) << "each search ends on overturning runs";
+    std::ifstream gp_in(plots / "ida.gp");
+    const std::string gp((std::istreambuf_iterator<char>(gp_in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(gp.find("using 1:($3 > 0.5 ? $2 : NaN) with points " + std::string(study::kOverturnedRing)),
+              std::string::npos) << gp;
+    EXPECT_NE(gp.find("title 'overturned'"), std::string::npos) << gp;
+    EXPECT_EQ(gp.find("overturned at the top"), std::string::npos) << gp;
+}
+
 // An IDA in PGV: collapse_pgv is collapse_scale times the record's PGV (collapse_pga stays); ida.csv holds every run
 // of each search, the smallest overturning intensity among them the collapse intensity; fragility.csv's fit is the
 // log-moments of results.csv's collapse_pgv rows, in m/s.
@@ -490,8 +517,9 @@ TEST(StudyEnsemble, IdaInPgvReportsItsCollapseIntensitiesAndCurves) {
         EXPECT_GT(curve.intensity.size(), 3u);  // the steps and the bisection
     }
     study::OutputOptions o;
-    o.plots = false;
+    o.gnuplot = (dir / "no-gnuplot").string();  // the plots' scripts and data without drawing them
     study::write_study_outputs(dir / "ida", o);
+    expect_overturned_runs_ringed_at_one(dir / "ida" / study::kPlotsDir);
     std::ifstream in(dir / "ida" / "fragility.csv");
     std::vector<std::string> header, row, more;
     ASSERT_TRUE(io::read_csv_record(in, header) && io::read_csv_record(in, row));

@@ -610,7 +610,8 @@ def study(file: Union[Path, Dict[str, Any]], out: Optional[Path] = None, *, thre
     """Runs a study (`vssw study`, docs/studies in the README): walls x assumptions x excitations x engines.
 
     file: a study file (.toml or .json) or a dict of its keys (a relative record `file` in it is read from the
-        current directory).
+        current directory; a record there may be its samples, (dt, values) or (t, values) as a tuple, or
+        {"name": NAME, "samples": (dt, values)}).
     out: the study folder to write (created if missing). None: a temporary folder, removed once its results are read
         (StudyResult.folder is then None), without plots unless plots=True.
     threads: worker threads (default: the available cores). shard: "K/N", run every N-th case from the K-th.

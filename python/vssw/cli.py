@@ -41,7 +41,7 @@ from typing import Iterator as _Iterator
 from typing import Optional as _Optional
 from typing import Union as _Union
 
-from . import _core
+from . import _core, _study_records
 from ._errors import BoundsError, Error, InputError, SimulationError
 
 # help() is left out of __all__: `from vssw import *` must not hide the built-in help.
@@ -248,8 +248,7 @@ def _record_file(options: _Dict[str, _Any]) -> _Iterator[_Dict[str, _Any]]:
     times, values = _record_samples(tuple(record))
     with _tempfile.TemporaryDirectory(prefix="vssw-record-") as folder:
         path = _os.path.join(folder, "record.txt")
-        with open(path, "w", encoding="utf-8") as f:
-            f.writelines(f"{t!r} {a!r}\n" for t, a in zip(times, values))
+        _study_records.write_two_columns(path, times, values)
         yield {**options, "record": path}
 
 
@@ -295,26 +294,6 @@ def _pandas():
     return pandas
 
 
-def _absolute_record_paths(spec):
-    """A study given as a dict has no folder of its own: its excitation's `file` (one path or a list), relative to
-    the study file's folder in a file, is made relative to the current directory instead."""
-
-    def fix(excitation):
-        if not isinstance(excitation, dict) or "file" not in excitation:
-            return excitation
-        files = excitation["file"]
-        absolute = [_os.path.abspath(f) for f in files] if isinstance(files, list) else _os.path.abspath(files)
-        return {**excitation, "file": absolute}
-
-    spec = dict(spec)
-    if "excitation" in spec:
-        spec["excitation"] = fix(spec["excitation"])
-    if isinstance(spec.get("part"), list):
-        spec["part"] = [{**p, "excitation": fix(p["excitation"])} if isinstance(p, dict) and "excitation" in p else p
-                        for p in spec["part"]]
-    return spec
-
-
 def _study_value(where, value):
     """A study dict's value as JSON holds it, checked where the file written from it could not say which key was
     wrong: NaN, infinities, a NUL or a lone surrogate in a string, a type JSON has no value for. Fraction and Decimal
@@ -344,9 +323,10 @@ def _study_value(where, value):
 
 
 def _study_file_of(spec, folder):
-    """A study given as a dict, checked (_study_value) and written as study.json into `folder`; its path."""
-    spec = _study_value("study", {**_absolute_record_paths(spec), "name": spec.get("name", "study")})
-    path = _os.path.join(folder, "study.json")
+    """A study given as a dict, checked (_study_value) and written as study.json into `folder` (its records given as
+    samples written beside it: _study_records); its path."""
+    spec = _study_value("study", {**_study_records.with_record_files(spec, folder), "name": spec.get("name", "study")})
+    path = _os.path.join(folder, _study_records.STUDY_FILE)
     with open(path, "w", encoding="utf-8") as f:
         _json.dump(spec, f, allow_nan=False)
     return path
@@ -369,16 +349,19 @@ def _errors_name_the_dict(path):
 def study(file: _Union[str, "_os.PathLike[str]", _Dict[str, _Any]], out: _Union[str, "_os.PathLike[str]", None] = None,
           **options: _Any) -> _Any:
     """`vssw study`: `file` is a study file (.toml or .json, README "Studies") or a dict of its keys (a relative
-    record `file` in it is read from the current directory). Writes the study folder into `out` (plots and prose
+    record `file` in it is read from the current directory; a record there may be its samples, as vssw.study takes
+    them). Writes the study folder into `out` (plots and prose
     included); without `out`, into a temporary folder removed afterwards, with no plots. Other options: threads,
     shard ("K/N"), resume, force, strict, no_plots, gnuplot, run_budget. Returns results.csv as a pandas DataFrame (its
     `attrs["summary"]` the command's JSON summary) when pandas imports, else the rows of results.json as a list of
     dicts (the same columns; empty values None)."""
     _reserved(options, ["json"])
-    with _tempfile.TemporaryDirectory(prefix="vssw-study-") as scratch:
+    # Two folders: the study file's (with the records given as samples, any name) and the results' when out is None.
+    with _tempfile.TemporaryDirectory(prefix="vssw-study-") as scratch, \
+            _tempfile.TemporaryDirectory(prefix="vssw-study-out-") as temporary_out:
         from_dict = isinstance(file, dict)
         path = _study_file_of(file, scratch) if isinstance(file, dict) else _os.fspath(file)
-        folder = _os.fspath(out) if out is not None else _os.path.join(scratch, "out")
+        folder = _os.fspath(out) if out is not None else _os.path.join(temporary_out, "out")
         if out is None:
             options.setdefault("no_plots", True)
         with _errors_name_the_dict(path) if from_dict else _contextlib.nullcontext():
