@@ -71,7 +71,7 @@ EngineRun prepare_engine_free(const std::string& engine, const EngineSettingOpti
     using compare::kMinRelease;
     EngineRun run = engine_run("free", engine, settings, choose_model(wall, model));
     require(std::isfinite(r) && r >= kMinRelease && r < 1.0, fmt::format("--theta0 with --engine {}", engine),
-            fmt::format("from {:g} to below 1 (a fraction of alpha, as vssw compare measures an engine's free "
+            fmt::format("from {:g} to below 1 (a fraction of alpha1, as vssw compare measures an engine's free "
                         "vibration)",
                         kMinRelease),
             r);
