@@ -77,7 +77,7 @@ void run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
         j["dt"] = settings.dt;
         summary << io::dump_json(j, 2) << '\n';
     } else {
-        summary << fmt::format("{} scene ({}) of the {} at theta0 = {:g} alpha written to {}\n",
+        summary << fmt::format("{} scene ({}) of the {} at theta0 = {:g} alpha1 written to {}\n",
                                engine->display_name(), file.format, describe_wall(o.wall, chosen.kind), o.theta0,
                                o.out == "-" ? std::string("standard output") : o.out);
     }
