@@ -60,10 +60,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The free vibration's release: a fraction of alpha, from kMinRelease to below 1.
+// The free vibration's release: a fraction of alpha1, from kMinRelease to below 1.
 void require_release(const CompareOptions& o) {
     require(std::isfinite(o.theta0) && o.theta0 >= kMinRelease && o.theta0 < 1.0, "--theta0",
-            fmt::format("from {:g} to below 1 (a fraction of alpha)", kMinRelease), o.theta0);
+            fmt::format("from {:g} to below 1 (a fraction of alpha1)", kMinRelease), o.theta0);
 }
 
 // What every engine is measured against; the release checked first.

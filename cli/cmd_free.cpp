@@ -1,4 +1,4 @@
-// `vssw free`: free vibration from rest at theta0 = r * alpha.
+// `vssw free`: free vibration from rest at theta0 = r * alpha1 (a parapet's alpha).
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -43,23 +43,24 @@ Command add_free_command(CLI::App& root) {
     add_assumption_options(*cmd, o->model);
     add_wall_options(*cmd, o->wall, true);
     cmd->add_option("--theta0", o->request.theta0_over_alpha,
-                    "initial rotation as a fraction r of alpha (alpha1 for a VSSW, alpha for a parapet): finite, "
-                    "nonzero, r * alpha below the collapse angle (required)")
+                    "initial rotation as a fraction r of alpha1 (a parapet's alpha): finite, "
+                    "nonzero, r * alpha1 below the collapse angle (required)")
         ->required();
     cmd->add_option("--rtol", o->request.rtol,
                     fmt::format("relative tolerance of the integrator (default {})", o->request.rtol));
     cmd->add_option("--csv", o->csv,
                     "write the trajectory to this file, or with '-' to standard output (the summary then goes to the "
-                    "error stream): t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
+                    "error stream): t [s], theta1_over_alpha1, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
     cmd->add_option("--output-dt", o->request.output_dt,
                     fmt::format("spacing of the CSV samples [s] (default {})", o->request.output_dt));
     cmd->add_flag("--json", o->json, "print JSON instead of tables");
     add_strict_flag(*cmd, o->strict);
     add_engine_setting_options(*cmd, o->engine_settings);
     cmd->footer(std::string(kEngineRunHelp) +
-        "Times in s, angular velocities in rad/s, rotations as |theta|/alpha.\n"
-        "JSON keys: model, kinematics (null for a parapet), theta0 (r), alpha [rad],\n"
-        "impacts [{t, theta_dot_before, theta_dot_after}], peaks (|theta|/alpha at each turning point, the release\n"
+        "Times in s, angular velocities in rad/s, rotations as |theta|/alpha1 (alpha1: the lower block's\n"
+        "angle atan(b/h1); a parapet's alpha1 is its alpha, atan(b/h)).\n"
+        "JSON keys: model, kinematics (null for a parapet), theta0 (r), alpha1 [rad],\n"
+        "impacts [{t, theta_dot_before, theta_dot_after}], peaks (|theta|/alpha1 at each turning point, the release\n"
         "first), peak_times, stop_time (null if it overturned), falls, t_overturn (null unless it fell),\n"
         "impact {law, restitution}, warnings (the model's assumptions failing along the run),\n"
         "roller {model, min_reaction [N/m, > 0 pushing], t_min_reaction, tension_at (null if it never pulls),\n"

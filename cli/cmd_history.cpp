@@ -51,14 +51,14 @@ Command add_history_command(CLI::App& root) {
                     kDefaultExtraTime));
     cmd->add_option("--csv", o->csv,
                     "write the trajectory to this file, or with '-' to standard output (the summary then goes to the "
-                    "error stream): t [s], theta_over_alpha, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
+                    "error stream): t [s], theta1_over_alpha1, theta_dot_over_ref, E_over_Vr, ED_over_Vr, ag_g");
     cmd->add_flag("--json", o->json, "print JSON instead of a table");
     add_strict_flag(*cmd, o->strict);
     add_engine_setting_options(*cmd, o->engine_settings);
     cmd->footer(std::string(kEngineRunHelp) +
         "Exactly one of --record and --pulse is required. Accelerations given in g use g0 = 9.80665 m/s^2.\n"
         "JSON keys: record (path, null for a pulse), input, scale_factor, pga_g (after scaling), duration [s], model,\n"
-        "vertical_record (path or null), vertical_pga_g, kinematics, alpha, max_theta_over_alpha, max_theta [rad],\n"
+        "vertical_record (path or null), vertical_pga_g, kinematics, alpha1, max_theta_over_alpha1, max_theta [rad],\n"
         "t_max_theta [s] (when: the turning point, or the overturning), peak_is_collapse (true: the max is the collapse angle), overturned, t_overturn (null if not), impacts, energy_balance_error\n"
         "(relative to the largest energy in play), lift_offs, end_time, at_rest_at_end, t_end, output_dt,\n"
         "impact {law, restitution}, warnings, roller {model, min_reaction, t_min_reaction, tension_at, departures,\n"
@@ -66,7 +66,7 @@ Command add_history_command(CLI::App& root) {
         "friction_needed {base, hinge}, contacts_pull {base_at, hinge_at} (as `vssw free --help` says),\n"
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.\n"
         "CSV: theta_dot_over_ref = theta_dot / reference velocity; E = kinetic + weights' potential - work of N,\n"
-        "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha); ag_g = a_h / g0.");
+        "ED = energy dissipated by impacts, both over V_r (the potential energy at alpha1); ag_g = a_h / g0.");
     return {cmd, nullptr, [o, cmd](std::ostream& out, std::ostream& err) {
                 std::vector<std::string> inputs;  // the CSV must not replace them
                 for (const auto& file : {o->motion.record, o->motion.vertical_record})

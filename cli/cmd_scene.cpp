@@ -29,7 +29,7 @@ struct SceneOptions {
     ModelOptions model;
     EngineSettingOptions settings;
     std::optional<std::string> friction;
-    double theta0 = 0.0;  // r: the release as a fraction of alpha
+    double theta0 = 0.0;  // r: the release as a fraction of alpha1
     std::string out;
     bool json = false;
 };
@@ -37,7 +37,7 @@ struct SceneOptions {
 multibody::SceneFile scene_file_of(const SceneOptions& o, const multibody::Engine& engine,
                                    const multibody::EngineSettings& settings, const multibody::WallScene& scene) {
     require(std::isfinite(o.theta0) && std::abs(o.theta0) < 1.0, "--theta0", "from -1 to 1, both excluded (a fraction "
-            "of alpha)", o.theta0);
+            "of alpha1)", o.theta0);
     multibody::Excitation ex;
     ex.theta0 = o.theta0 * scene.alpha();
     const std::optional<multibody::SceneFile> file = engine.scene_file(scene, ex, settings);
@@ -77,7 +77,7 @@ void run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
         j["dt"] = settings.dt;
         summary << io::dump_json(j, 2) << '\n';
     } else {
-        summary << fmt::format("{} scene ({}) of the {} at theta0 = {:g} alpha written to {}\n",
+        summary << fmt::format("{} scene ({}) of the {} at theta0 = {:g} alpha1 written to {}\n",
                                engine->display_name(), file.format, describe_wall(o.wall, chosen.kind), o.theta0,
                                o.out == "-" ? std::string("standard output") : o.out);
     }
@@ -100,7 +100,7 @@ Command add_scene_command(CLI::App& root) {
     add_wall_options(*cmd, o->wall, true);
     add_friction_option(*cmd, o->friction);
     cmd->add_option("--theta0", o->theta0,
-                    "the release the scene starts from, as a fraction r of alpha (alpha1 for a VSSW), |r| < 1 "
+                    "the release the scene starts from, as a fraction r of alpha1 (a parapet's alpha), |r| < 1 "
                     "(default 0: upright at rest); MJCF: the keyframe 'release'; URDF: in its comment");
     add_engine_setting_options(*cmd, o->settings);
     cmd->add_option("--out", o->out, "the file to write, or - for standard output (the summary then goes to the "

@@ -71,7 +71,7 @@ EngineRun prepare_engine_free(const std::string& engine, const EngineSettingOpti
     using compare::kMinRelease;
     EngineRun run = engine_run("free", engine, settings, choose_model(wall, model));
     require(std::isfinite(r) && r >= kMinRelease && r < 1.0, fmt::format("--theta0 with --engine {}", engine),
-            fmt::format("from {:g} to below 1 (a fraction of alpha, as vssw compare measures an engine's free "
+            fmt::format("from {:g} to below 1 (a fraction of alpha1, as vssw compare measures an engine's free "
                         "vibration)",
                         kMinRelease),
             r);
@@ -133,7 +133,7 @@ io::Json to_json(const EngineRun& run) {
     j["settings"] = {{"dt", run.settings.dt}, {"iterations", run.settings.iterations}, {"knobs", knobs},
                      {"sample_dt", run.settings.sample_dt}};
     j["model"] = to_string(run.chosen.kind);
-    j["alpha"] = alpha;
+    j["alpha1"] = alpha;
     if (run.command == "free") {
         j["theta0"] = run.r;
         const std::vector<compare::ImpactMetric> impacts = compare::impacts(t);
@@ -147,7 +147,7 @@ io::Json to_json(const EngineRun& run) {
         j["record"] = run.record ? io::Json(*run.record) : io::Json(nullptr);
         j["input"] = run.excitation.horizontal.name();
     }
-    j["max_theta_over_alpha"] = response.peak / alpha;
+    j["max_theta_over_alpha1"] = response.peak / alpha;
     j["t_max_theta"] = response.peak_time;
     j["overturned"] = response.overturned;
     j["t_overturn"] = response.t_overturn ? io::Json(*response.t_overturn) : io::Json(nullptr);
@@ -166,11 +166,11 @@ void print_engine_run(std::ostream& out, const EngineRun& run, const std::string
     Table table(fmt::format("{} by {} ({}, step {:g} s)", title, run.engine->display_name(), run.engine->version(),
                             run.settings.dt));
     if (run.command == "free") {
-        table.add("release theta0/alpha", fmt::format("{:g}", run.r));
+        table.add("release theta0/alpha1", fmt::format("{:g}", run.r));
         table.add("first impact", num_or(compare::quarter_period(t), "none"), "s", "a quarter period");
         table.add("impacts", fmt::format("{}", compare::impacts(t).size()));
     }
-    table.add("max |theta1|/alpha", num_or(response.peak / alpha, "none"));
+    table.add("max |theta1|/alpha1", num_or(response.peak / alpha, "none"));
     table.add("at", num_or(response.peak_time, "none"), "s");
     table.add("overturned", t.overturned ? "yes" : "no");
     table.add("at rest at the end", t.at_rest_at_end ? "yes" : "no");

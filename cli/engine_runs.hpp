@@ -25,7 +25,7 @@ namespace vssw::cli {
 // The columns of an engine's trajectory CSV: the analytic CSV's first three (same names, same units), then what only
 // an engine's run has, and the ground motion (docs/guide/program.md, "An engine's trajectory").
 inline constexpr const char* kEngineCsvHeader =
-    "t,theta_over_alpha,theta_dot_over_ref,theta2_over_alpha,top_dy,E_over_Vr,ag_g,contacts";
+    "t,theta1_over_alpha1,theta_dot_over_ref,theta2_over_alpha1,top_dy,E_over_Vr,ag_g,contacts";
 
 // What free's and history's --help say of an engine's run (their footers' first part).
 inline constexpr const char* kEngineRunHelp =
@@ -33,11 +33,11 @@ inline constexpr const char* kEngineRunHelp =
     "in a child process, with its settings (--dt, --iterations, --set; vssw compare --list-settings); the analytic\n"
     "model's options (--assumptions, --kinematics, --impact, --roller, --rtol, --strict, --vertical-record) are\n"
     "refused. free's release is from 0.01 to below 1 and its run lasts 1.25 times the analytic model's time to rest.\n"
-    "Its CSV: t [s], theta_over_alpha and theta_dot_over_ref (theta1, as the analytic CSV), theta2_over_alpha,\n"
+    "Its CSV: t [s], theta1_over_alpha1 and theta_dot_over_ref (as the analytic CSV), theta2_over_alpha1,\n"
     "top_dy [m] (the top's rise), E_over_Vr (kinetic + weights' potential + N times the top's rise, over V_r),\n"
     "ag_g, contacts (contact points in use). JSON keys: engine, version, settings {dt, iterations, knobs,\n"
-    "sample_dt}, model, alpha, theta0, first_impact_time, impact_count, impact_times (free), record, input\n"
-    "(history), max_theta_over_alpha, t_max_theta, overturned, t_overturn, at_rest_at_end, end_time, t_end,\n"
+    "sample_dt}, model, alpha1, theta0, first_impact_time, impact_count, impact_times (free), record, input\n"
+    "(history), max_theta_over_alpha1, t_max_theta, overturned, t_overturn, at_rest_at_end, end_time, t_end,\n"
     "samples, steps.\n\n";
 
 // --engine NAME, default analytic (free, history).

@@ -27,7 +27,7 @@ std::optional<double> FreeRun::first_impact() const {
 
 FreeRun run_free(const WallOptions& wall, const ModelOptions& model, const FreeRequest& request) {
     const double r = request.theta0_over_alpha;
-    require(std::isfinite(r) && r != 0.0, "theta0/alpha (--theta0)", "a finite nonzero number", r);
+    require(std::isfinite(r) && r != 0.0, "theta0/alpha1 (--theta0)", "a finite nonzero number", r);
     ChosenModel chosen = choose_model(wall, model);
     const double alpha = chosen.model->reference_angle();
 
@@ -84,7 +84,7 @@ io::Json to_json(const FreeRun& run) {
     j["assumptions"] = run.set_name;
     j["kinematics"] = run.kinematics ? io::Json(to_string(*run.kinematics)) : io::Json(nullptr);
     j["theta0"] = run.theta0_over_alpha;
-    j["alpha"] = run.alpha;
+    j["alpha1"] = run.alpha;  // the angle rotations are measured in (a parapet's alpha)
     j["impact"] = {{"law", to_string(run.impact)}, {"restitution", run.restitution}};
     j["warnings"] = run.warnings;
     j["impacts"] = std::move(impacts);

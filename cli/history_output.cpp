@@ -60,11 +60,11 @@ io::Json to_json(const HistoryRun& run) {
     j["kinematics"] = run.chosen.kinematics() ? io::Json(to_string(*run.chosen.kinematics())) : io::Json(nullptr);
     j["vertical_record"] = run.vertical_record ? io::Json(*run.vertical_record) : io::Json(nullptr);
     j["vertical_pga_g"] = run.vertical_record ? io::Json(run.input.vertical.pga() / vssw::kStandardGravity) : io::Json(nullptr);
-    j["alpha"] = run.chosen.model->reference_angle();
+    j["alpha1"] = run.chosen.model->reference_angle();
     // The peak a study and `vssw compare --record` give the same run: an overturned run's is the model's collapse
     // angle, not a rocking peak (analytic/response.hpp).
     const AnalyticResponse response = response_of(res, *run.chosen.model);
-    j["max_theta_over_alpha"] = response.peak / run.chosen.model->reference_angle();
+    j["max_theta_over_alpha1"] = response.peak / run.chosen.model->reference_angle();
     j["max_theta"] = response.peak;
     j["t_max_theta"] = response.peak_time;
     j["peak_is_collapse"] = res.overturned;

@@ -14,7 +14,7 @@
 
 namespace vssw::cli {
 
-// Header "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g", then the samples (10 significant digits).
+// Header "t,theta1_over_alpha1,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g", then the samples (10 significant digits).
 void write_trajectory_csv(std::ostream& out, const RockingModel& model, const SimulationResult& result);
 
 // Where --csv sends the trajectory: nowhere (not given), standard output ("-": the summary then goes to the error

@@ -114,13 +114,13 @@ void expect_wall_contract(const Json& j) {
 }
 
 void expect_free_contract(const Json& j) {
-    for (const char* key : {"model", "kinematics", "theta0", "alpha", "impacts", "peaks", "peak_times", "stop_time",
+    for (const char* key : {"model", "kinematics", "theta0", "alpha1", "impacts", "peaks", "peak_times", "stop_time",
                             "falls", "t_overturn", "energy_balance_error", "impact_count"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j["model"].is_string());
     EXPECT_TRUE(j["kinematics"].is_string() || j["kinematics"].is_null());
     expect_number(j, "theta0");
-    expect_number(j, "alpha");
+    expect_number(j, "alpha1");
     ASSERT_TRUE(j["impacts"].is_array());
     for (const Json& impact : j["impacts"])
         for (const char* key : {"t", "theta_dot_before", "theta_dot_after"}) expect_number(impact, key);
@@ -137,11 +137,11 @@ void expect_free_contract(const Json& j) {
 }
 
 void expect_history_contract(const Json& j) {
-    for (const char* key : {"record", "pga_g", "duration", "max_theta_over_alpha", "overturned", "t_overturn",
+    for (const char* key : {"record", "pga_g", "duration", "max_theta_over_alpha1", "overturned", "t_overturn",
                             "impacts", "energy_balance_error", "lift_offs", "end_time"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j["record"].is_string() || j["record"].is_null());
-    for (const char* key : {"pga_g", "duration", "max_theta_over_alpha", "energy_balance_error", "end_time"})
+    for (const char* key : {"pga_g", "duration", "max_theta_over_alpha1", "energy_balance_error", "end_time"})
         expect_number(j, key);
     EXPECT_TRUE(j["overturned"].is_boolean());
     expect_number_or_null(j, "t_overturn");
@@ -324,7 +324,7 @@ TEST(CliFree, ParapetUsesHousnerRestitutionAndIgnoresTheHinge) {
     EXPECT_EQ(j["model"], "parapet");
     EXPECT_TRUE(j["kinematics"].is_null());
     const double alpha = std::atan(0.2 / 2.0);
-    EXPECT_NEAR(j["alpha"].get<double>(), alpha, kRoundoff);
+    EXPECT_NEAR(j["alpha1"].get<double>(), alpha, kRoundoff);  // one block: alpha1 is its alpha
     ASSERT_FALSE(j["impacts"].empty());
     const Json& first = j["impacts"][0];
     EXPECT_NEAR(first["theta_dot_after"].get<double>() / first["theta_dot_before"].get<double>(),
@@ -399,7 +399,7 @@ TEST(CliHistory, CsvHasTheHeaderAndSixNumericColumns) {
     std::ifstream in(csv);
     std::string line;
     ASSERT_TRUE(std::getline(in, line));
-    EXPECT_EQ(line, "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g");
+    EXPECT_EQ(line, "t,theta1_over_alpha1,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g");
     std::vector<std::vector<double>> rows;
     while (std::getline(in, line)) {
         std::vector<double> row;
@@ -761,7 +761,7 @@ TEST(CliHardening, HistoryCsvIsLeftAsItWasWhenTheRunFails) {
 
     const CliResult ok = run_cli(kRickerFig6 + std::vector<std::string>{"--csv", csv.string()});
     EXPECT_EQ(ok.code, 0) << ok.err;
-    EXPECT_EQ(file_text(csv).rfind("t,theta_over_alpha,", 0), 0u);  // replaced on success
+    EXPECT_EQ(file_text(csv).rfind("t,theta1_over_alpha1,", 0), 0u);  // replaced on success
     EXPECT_EQ(files_in(dir), 1);
     expect_bad_input(kRickerFig6 + std::vector<std::string>{"--csv", (dir / "no_such_folder" / "x.csv").string()},
                      {"no_such_folder"});

@@ -67,7 +67,7 @@ Csv read_csv(const fs::path& path) {
 // The first time theta1 crosses zero after the release (linear between two samples): a quarter period.
 std::optional<double> first_crossing(const Csv& csv) {
     const std::vector<double>& t = csv.columns.at("t");
-    const std::vector<double>& theta = csv.columns.at("theta_over_alpha");
+    const std::vector<double>& theta = csv.columns.at("theta1_over_alpha1");
     for (std::size_t i = 1; i < t.size(); ++i)
         if (theta[i - 1] > 0.0 && theta[i] <= 0.0)
             return t[i - 1] + (t[i] - t[i - 1]) * theta[i - 1] / (theta[i - 1] - theta[i]);
@@ -82,8 +82,8 @@ bool same_period(const Csv& engine, const Csv& analytic) {
 // The largest departure of the CSV's theta2 from Eq. 2 of the wall `hinge` (4 m x 0.4 m), over the largest |theta2|.
 double eq2_departure(const Csv& csv, double hinge) {
     const vssw::VsswGeometry w = vssw::make_vssw(4.0, 0.4, hinge);
-    const std::vector<double>& theta1 = csv.columns.at("theta_over_alpha");
-    const std::vector<double>& theta2 = csv.columns.at("theta2_over_alpha");
+    const std::vector<double>& theta1 = csv.columns.at("theta1_over_alpha1");
+    const std::vector<double>& theta2 = csv.columns.at("theta2_over_alpha1");
     double worst = 0.0, largest = 0.0;
     for (std::size_t i = 0; i < theta1.size(); ++i) {
         const std::optional<double> expected = vssw::eq2_theta2_exact(w, theta1[i] * w.alpha1);
@@ -111,8 +111,8 @@ TEST(EngineOutputs, AnEnginesFreeVibrationIsReadableAndHoldsTheWallsKinematicsAn
     const CliResult analytic = run_cli(kFreeFig6 + std::vector<std::string>{"--csv", (dir / "analytic.csv").string()});
     ASSERT_EQ(analytic.code, 0) << analytic.err;
     const Csv mujoco = read_csv(dir / "mujoco.csv"), model = read_csv(dir / "analytic.csv");
-    EXPECT_EQ(mujoco.names, (std::vector<std::string>{"t", "theta_over_alpha", "theta_dot_over_ref",
-                                                      "theta2_over_alpha", "top_dy", "E_over_Vr", "ag_g",
+    EXPECT_EQ(mujoco.names, (std::vector<std::string>{"t", "theta1_over_alpha1", "theta_dot_over_ref",
+                                                      "theta2_over_alpha1", "top_dy", "E_over_Vr", "ag_g",
                                                       "contacts"}));
     ASSERT_GT(mujoco.columns.at("t").size(), 100u);
     EXPECT_LE(eq2_departure(mujoco, 0.7), kKinematics);

@@ -240,7 +240,7 @@ TEST(CompareResponse, IsAOneCaseStudyAndItsAnalyticRunIsHistorys) {
     h.insert(h.end(), wall.begin(), wall.end());
     const auto history = run_cli(h);
     ASSERT_EQ(history.code, 0) << history.err;
-    EXPECT_EQ(nlohmann::json::parse(history.out)["max_theta_over_alpha"].get<double>(), peak);
+    EXPECT_EQ(nlohmann::json::parse(history.out)["max_theta_over_alpha1"].get<double>(), peak);
 }
 
 // One reference everywhere: a study's analytic run is `vssw history`'s under the same assumptions, the default set's
@@ -275,7 +275,7 @@ double history_peak(const std::vector<std::string>& assumption_options) {
     h.insert(h.end(), assumption_options.begin(), assumption_options.end());
     const auto r = run_cli(h);
     EXPECT_EQ(r.code, 0) << r.err;
-    return r.code == 0 ? nlohmann::json::parse(r.out)["max_theta_over_alpha"].get<double>() : std::nan("");
+    return r.code == 0 ? nlohmann::json::parse(r.out)["max_theta_over_alpha1"].get<double>() : std::nan("");
 }
 
 TEST(StudyAssumptions, AStudyWithoutAssumptionsRunsHistorysDefaultModel) {

@@ -158,7 +158,7 @@ def test_an_overturned_runs_peak_is_one_measure_in_python_history_and_compare(cl
     history = cli.json(["history", *FIG6_FLAGS, "--record", RECORD, "--scale", "0.6"])
     program = cli.json(["compare", "--engine", "ode", *FIG6_FLAGS, "--record", RECORD, "--scale", "0.6"])
     analytic = next(x for x in program["runs"] if x["engine"] == "analytic")
-    assert r.peak_rotation == history["max_theta_over_alpha"] == analytic["peak_rotation"]
+    assert r.peak_rotation == history["max_theta_over_alpha1"] == analytic["peak_rotation"]
     assert r.peak_time == history["t_max_theta"] == analytic["peak_time"]
     # Must fail: the largest sample (the old measure of an engine's overturned run) is well short of it here.
     assert r.max_abs_theta1 / r.alpha1 < r.peak_rotation * (1 - CLEARLY_SHORT)

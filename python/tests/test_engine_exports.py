@@ -41,10 +41,10 @@ def test_free_with_an_engine_gives_its_trace():
     result = vssw.free(trace=True, engine="mujoco", theta0=0.5, **FIG6)
     assert result["engine"] == "mujoco"
     trace = result["trace"]
-    assert list(trace) == ["t", "theta_over_alpha", "theta_dot_over_ref", "theta2_over_alpha", "top_dy", "E_over_Vr",
+    assert list(trace) == ["t", "theta1_over_alpha1", "theta_dot_over_ref", "theta2_over_alpha1", "top_dy", "E_over_Vr",
                            "ag_g", "contacts"]
     assert trace["t"].size == result["samples"]
-    assert trace["theta_over_alpha"][0] == pytest.approx(0.5)
+    assert trace["theta1_over_alpha1"][0] == pytest.approx(0.5)
 
 
 def test_free_with_a_bad_engine_raises_naming_it():

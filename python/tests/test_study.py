@@ -65,7 +65,7 @@ def test_a_dict_reads_a_relative_record_from_the_current_directory(cli, monkeypa
     # The study measures the same run as `vssw history` (README "Tests", studies): the same peak to the digit
     # results.csv prints (17 significant digits: exact). At 0.45 the default model rocks and stands; at 0.6 it
     # overturns, where a study's peak is the mechanism's collapse angle and history's the angle its run stopped at.
-    assert peak == direct["max_theta_over_alpha"]
+    assert peak == direct["max_theta_over_alpha1"]
 
 
 def test_without_pandas_the_rows_are_a_list_of_dicts(monkeypatch, tmp_path):

@@ -7,7 +7,7 @@ Every function runs the `vssw` program's command of the same name in this proces
 PATH) with its keyword arguments as the command's options, and returns the command's JSON as plain Python objects:
 
     wall(**options)      `vssw wall`: the closed forms of a VSSW and of the parapet of the same size
-    free(**options)      `vssw free`: free vibration from rest at theta0 * alpha
+    free(**options)      `vssw free`: free vibration from rest at theta0 * alpha1
     history(**options)   `vssw history`: response to a record or a pulse; trace=True adds the time history
     compare(**options)   `vssw compare`: engines against the analytic model
     study(file, **kw)    `vssw study`: a study file (or a dict of its keys); its results.csv as a pandas DataFrame
@@ -188,14 +188,14 @@ def wall(**options: _Any) -> _Dict[str, _Any]:
 
 
 def free(trace: bool = False, **options: _Any) -> _Dict[str, _Any]:
-    """`vssw free`: free vibration released from rest at theta0 (a fraction of alpha). Options: height, thickness,
-    hinge, theta0 (required), model, assumptions ("mechanism", the default, or "paper"),
+    """`vssw free`: free vibration released from rest at theta0 (a fraction of alpha1, a parapet's alpha). Options:
+    height, thickness, hinge, theta0 (required), model, assumptions ("mechanism", the default, or "paper"),
     kinematics, impact, roller (each overriding one part of the set), xi, density, g, rtol, output_dt, csv, strict (True:
     SimulationError when the model's own assumptions fail along the run, i.e. any warning). Returns the
     JSON: impacts [{t, theta_dot_before, theta_dot_after}], peaks, peak_times, stop_time, falls, warnings, roller,
     ...; with trace=True also "trace", as for history(). engine="mujoco" (any engine of vssw.engines()) runs the
     wall in that engine instead of the analytic model, with its settings dt, iterations, set (a dict {knob: value});
-    its trace has the columns t, theta_over_alpha, theta_dot_over_ref, theta2_over_alpha, top_dy, E_over_Vr, ag_g,
+    its trace has the columns t, theta1_over_alpha1, theta_dot_over_ref, theta2_over_alpha1, top_dy, E_over_Vr, ag_g,
     contacts, and the analytic model's options (assumptions, kinematics, impact, roller, rtol, strict) raise
     InputError with it."""
     return _with_trace("free", trace, options)
@@ -219,7 +219,7 @@ def history(trace: bool = False, **options: _Any) -> _Dict[str, _Any]:
     output_dt, t_end, csv (a file to write the time history to). record may also be the samples, (dt, values) or
     (t, values) in s and g as vssw.simulate takes them (written to a temporary two-column file, removed afterwards).
     Returns the JSON; with trace=True also "trace":
-    the time history as NumPy arrays keyed by the CSV's columns (t, theta_over_alpha, theta_dot_over_ref,
+    the time history as NumPy arrays keyed by the CSV's columns (t, theta1_over_alpha1, theta_dot_over_ref,
     E_over_Vr, ED_over_Vr, ag_g), read from csv= when given, else from a temporary file. engine= runs an engine
     instead, as for free() (its trace's columns are free()'s with an engine)."""
     return _with_trace("history", trace, options)

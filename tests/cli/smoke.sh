@@ -39,7 +39,7 @@ for command in "wall $wall" "free $wall --theta0 0.5" "history $wall --record $d
 done
 
 expect 0 0 history $wall --record "$data/NGA_no_1063_RRS228.AT2" --csv "$tmp/out.csv"
-[ "$(head -n 1 "$tmp/out.csv")" = "t,theta_over_alpha,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g" ] ||
+[ "$(head -n 1 "$tmp/out.csv")" = "t,theta1_over_alpha1,theta_dot_over_ref,E_over_Vr,ED_over_Vr,ag_g" ] ||
     fail "CSV header: $(head -n 1 "$tmp/out.csv")"
 
 # The report on one quick case (the analytic model only, no plots): files written, JSON valid; a file as --out is
