@@ -91,7 +91,7 @@ void print_compare(std::ostream& out, const EngineCompareRun& run, const Compare
         return;
     }
     const compare::EngineComparison& c = run.comparison;
-    t.text("settings", fmt::format("dt {} s, iterations {}, release at theta0 = {} alpha", run.settings.dt,
+    t.text("settings", fmt::format("dt {} s, iterations {}, release at theta0 = {} alpha1", run.settings.dt,
                                    run.settings.iterations, r.theta0));
     auto row = [&](const char* name, const compare::MetricComparison& m, const char* unit, double target) {
         t.add(name, fmt::format("{} / {}", io::num(m.analytic), io::num(m.engine)), unit,
