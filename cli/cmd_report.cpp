@@ -211,8 +211,8 @@ std::string report_footer() {
         "(null when none ran), plots {made, note}, wall_time_s, threads; NaN is null. earthquake/ is the ensemble's\n"
         "study folder (results.csv, agreement.csv, fragility.csv, plots).\n"
         "CSV columns: metrics.csv case_id,engine,metric,unit,reference,analytic,engine_value,error;\n"
-        "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha,assumption (t to 6,\n"
-        "theta1/alpha to 4 significant digits; assumption: the analytic model's set, mechanism or paper).\n"
+        "failures.csv case_id,engine,message; traces.csv case_id,engine,t,theta1_over_alpha1,assumption (t to 6,\n"
+        "theta1/alpha1 to 4 significant digits; assumption: the analytic model's set, mechanism or paper).\n"
         "An engine failing on a case is reported (exit 0). Exit 2 on bad input (unknown suite, engine or case, an\n"
         "--out that is not a writable folder). Without gnuplot the report is written without plots (a warning).";
 }

@@ -131,7 +131,7 @@ void write_stress_md(std::ostream& out, const StressReport& r) {
         out << fmt::format("- {} / {}: {} ({:.2f} s){}\n", c.name, c.engine, cell(c), c.time_s,
                            c.reason.empty() ? "" : " - " + c.reason);
     if (!r.stable_steps.empty()) {
-        out << "\n## Largest stable step (Fig. 6 walls, free vibration from 0.5 alpha)\n\n"
+        out << "\n## Largest stable step (Fig. 6 walls, free vibration from 0.5 alpha1)\n\n"
                "| engine | wall | default | largest stable | first unstable | why unstable |\n|---|---|---|---|---|---|\n";
         for (const auto& s : r.stable_steps)
             out << fmt::format("| {} | {} | {} | {} | {} | {} |\n", s.engine, s.wall, step_text(s.default_dt),

@@ -28,7 +28,7 @@ const std::vector<MetricInfo>& metric_catalog() {
          "for the VSSW the whole mechanism's plastic impact, the roller acting (set mechanism, the default), or "
          "Eq. (19) (set paper); Housner's e for the parapet under either.",
          kRestitutionTarget},
-        {"peak_rotation", "alpha", true, S::response, false,
+        {"peak_rotation", "alpha1", true, S::response, false,
          "largest |theta1| / alpha1 (|theta| / alpha of a parapet) of the run; the collapse angle if it overturned",
          U::history, false, "peak rotation", "peak rotation",
          "The largest |theta1| / alpha under a ground-motion record, from rest; for an overturned run the collapse "
@@ -110,7 +110,7 @@ const std::vector<MetricInfo>& metric_catalog() {
          "ratio of two peaks half a cycle apart from theta0, Eq. (20) with the run's impact law (Fig. 8; N = 0)",
          U::none, false, nullptr, nullptr, nullptr, 0.0},
         // The suite's own: both need the analytic run beside the engine's.
-        {"rms_difference", "alpha", false, S::response, false, "", U::history, false,
+        {"rms_difference", "alpha1", false, S::response, false, "", U::history, false,
          "rms difference of the time histories", "rms difference",
          "The root mean square over the record of the difference between the engine's and the analytic "
          "model's theta1 / alpha. The reference column is the analytic peak rotation (in alpha), the engine "

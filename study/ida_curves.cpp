@@ -29,7 +29,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const std::vector<std::string> kHeader = {"case_id", "engine",    "assumptions",    "settings",        "record",
-                                          "scale",   "measure",   "intensity",      "intensity_unit", "peak_over_alpha",
+                                          "scale",   "measure",   "intensity",      "intensity_unit", "peak_over_alpha1",
                                           "overturned"};
 // The peaks at which the fractiles are read: steps of 2.5 % of alpha1 up to alpha1 (the rest threshold's angle),
 // beyond which a wall is overturning rather than rocking.

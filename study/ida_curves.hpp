@@ -5,7 +5,7 @@
 //   ida.csv        one row per run of a search, tasks in case then run order, each task's runs in the order run:
 //                  case_id, engine, assumptions, settings, record, scale, measure (pga, pgv, sa, arias: the part's
 //                  ensemble intensity, else pga), intensity (the record's measure at that scale, in intensity_unit),
-//                  intensity_unit, peak_over_alpha (the collapse angle's when it overturned), overturned (0 or 1).
+//                  intensity_unit, peak_over_alpha1 (the collapse angle's when it overturned), overturned (0 or 1).
 //                  Written by the runner from the journal (study/journal.hpp), since results.csv keeps only each
 //                  search's answer; `vssw study merge` joins the shards' files.
 //   plots/ida.svg  a panel per wall: each record's curve (its points sorted by intensity, a resurrection, a larger

@@ -96,7 +96,7 @@ io::PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturn
     f.xlabel = parameter_label("alpha");
     f.ylabel = "peak rotation [alpha]";
     f.xname = "alpha";
-    f.yunit = "alpha";
+    f.yunit = "alpha1";
     for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back("R " + rc.texts[rc.order[p]] + " m");
     std::vector<std::string> engines;
     for (const Series& s : d.series) engines.push_back(s.engine);
@@ -163,7 +163,7 @@ std::optional<io::PlotScript> relaxation_curves(const StudyData& d, std::size_t 
     f.xlabel = parameter_label("alpha");
     f.ylabel = "peak rotation [alpha]";
     f.xname = "alpha";
-    f.yunit = "alpha";
+    f.yunit = "alpha1";
     for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back(d.series[p].label);
     for (std::size_t l = 0; l < kc.order.size(); ++l)
         f.lines.push_back({fmt::format("{} {}{}", kc.key, kc.texts[kc.order[l]], l == 0 ? " (the paper's)" : ""),

@@ -29,7 +29,7 @@ const std::set<std::string> kIdColumns = {"engine", "settings", "specimen"};
 // The units of the parameter columns, for axis labels.
 const std::map<std::string, std::string> kParameterUnits = {
     {"height", "m"},   {"thickness", "m"},   {"density", "kg/m^3"}, {"g", "m/s^2"},    {"alpha", "rad"},
-    {"R", "m"},        {"alpha1", "rad"},    {"alpha2", "rad"},     {"R1", "m"},       {"theta0", "alpha"},
+    {"R", "m"},        {"alpha1", "rad"},    {"alpha2", "rad"},     {"R1", "m"},       {"theta0", "alpha1"},
     {"pga", "g"},      {"amplitude", "g"},   {"pulse_period", "s"}, {"duration", "s"}, {"max_pga", "g"}};
 
 // A whole field read as a number; NaN when it is not one.

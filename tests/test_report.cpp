@@ -120,7 +120,7 @@ vssw::validation::SuiteResults hand_results() {
         row("fig6-vssw/r0.5", "ode", "restitution", 0.95, 0.8246, ""),  // -13.2 %: outside 2 %
         row("fig6-vssw/r0.5", "bullet", "restitution", 0.95, kNaN, ""),  // not measured
         row("fig6-pw", "ode", "threshold_g", 0.1, 0.1001, "g"),
-        row("fig6-pw/rinaldi-x0.17", "ode", "peak_rotation", 0.40, 0.42, "alpha"),  // +5 %, no target
+        row("fig6-pw/rinaldi-x0.17", "ode", "peak_rotation", 0.40, 0.42, "alpha1"),  // +5 %, no target
         {"fig6-pw/rinaldi-x0.17", "ode", "overturned", 0.0, 0.0, 0.0, "analytic model", ""},
         row("fig6-vssw/r0.5/dt0.001/ode", "ode", "period", 2.0, 2.0 * (1 - 1.2e-3), "s"),  // first order in dt
         row("fig6-vssw/r0.5/dt0.0005/ode", "ode", "period", 2.0, 2.0 * (1 - 6e-4), "s"),
@@ -135,9 +135,9 @@ vssw::validation::SuiteResults hand_results() {
     for (int i = 0; i <= 50; ++i) {
         const double t = 0.01 * i;
         a.t.push_back(t);
-        a.theta1_over_alpha.push_back(0.5 * std::cos(3.0 * t));
+        a.theta1_over_alpha1.push_back(0.5 * std::cos(3.0 * t));
         o.t.push_back(t);
-        o.theta1_over_alpha.push_back(0.5 * std::cos(3.001 * t));
+        o.theta1_over_alpha1.push_back(0.5 * std::cos(3.001 * t));
     }
     r.traces = {a, o};
     r.wall_time_s = 12.5;
@@ -405,7 +405,7 @@ TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
 
     const auto traces = lines_of(read(w.dir.path / "traces.csv"));
     EXPECT_EQ(traces.size(), 2u * 51u + 1u);
-    EXPECT_EQ(traces[0], "case_id,engine,t,theta1_over_alpha,assumption");
+    EXPECT_EQ(traces[0], "case_id,engine,t,theta1_over_alpha1,assumption");
     EXPECT_EQ(traces[1], "fig6-vssw/r0.5,analytic,0,0.5,mechanism");
     EXPECT_EQ(traces[52], "fig6-vssw/r0.5,ode,0,0.5,");
     EXPECT_EQ(traces[2], "fig6-vssw/r0.5,analytic,0.01,0.4998,mechanism");  // 0.499775... to 4 digits
@@ -419,8 +419,8 @@ TEST(ReportFiles, CsvHasAHeaderAndOneLinePerRow) {
         // Rounding to n significant digits moves a value by at most half a unit in its n-th digit.
         const double time_rounding = 0.5 * std::pow(10.0, 1 - vssw::validation::kTraceTimeDigits);
         EXPECT_LE(std::abs(std::stod(f[2]) - ode.t[i]), time_rounding * std::abs(ode.t[i]));
-        EXPECT_LE(std::abs(std::stod(f[3]) - ode.theta1_over_alpha[i]),
-                  kFourDigitRounding * std::abs(ode.theta1_over_alpha[i]));
+        EXPECT_LE(std::abs(std::stod(f[3]) - ode.theta1_over_alpha1[i]),
+                  kFourDigitRounding * std::abs(ode.theta1_over_alpha1[i]));
     }
 
 }
@@ -759,7 +759,7 @@ vssw::validation::Trace rocking_trace(const std::string& engine, const std::stri
     for (double x = 0.0; x <= t_end + 1e-9; x += 0.02) {
         t.t.push_back(x);
         const double envelope = std::sin(kPi * (x - t0) / (t1 - t0));
-        t.theta1_over_alpha.push_back(x > t0 && x < t1 ? amplitude * std::sin(7.0 * (x - t0)) * envelope : 0.0);
+        t.theta1_over_alpha1.push_back(x > t0 && x < t1 ? amplitude * std::sin(7.0 * (x - t0)) * envelope : 0.0);
     }
     return t;
 }
@@ -871,7 +871,7 @@ TEST(ReportPlots, TracePlotDataShowWhatEverySampleWould) {
         for (std::size_t i = 0; i < trace.t.size(); ++i) {
             if (trace.t[i] < t0 || trace.t[i] > t1) continue;
             const double px = (trace.t[i] - t0) / (t1 - t0) * width;
-            const double py = (trace.theta1_over_alpha[i] - y0) / (y1 - y0) * height;
+            const double py = (trace.theta1_over_alpha1[i] - y0) / (y1 - y0) * height;
             double nearest = std::numeric_limits<double>::infinity();
             for (std::size_t j = 0; j + 1 < line.size(); ++j) {
                 const auto [ax, ay] = line[j];
@@ -1026,7 +1026,7 @@ TEST(ReportPlots, ErrorAxesNameTheirQuantity) {
     vssw::validation::SuiteResults results = hand_results();
     // The RMS difference: analytic = the peak 0.40, engine = an RMS of 0.02, error = 5 % of the peak.
     results.rows.push_back({"fig6-pw/rinaldi-x0.17", "ode", "rms_difference", 0.40, 0.02, 0.05, "analytic model",
-                            "alpha"});
+                            "alpha1"});
     const auto scripts = vssw::validation::report_plot_scripts({hand_suite(), results, {}});
     const vssw::io::PlotScript* rms = script_named(scripts, "error_rms_difference");
     const vssw::io::PlotScript* threshold = script_named(scripts, "error_threshold_g");

@@ -251,8 +251,8 @@ TEST(RunSuite, AnalyticRowsAreTheClosedFormsWithZeroError) {
         EXPECT_EQ(t.engine, "analytic");
         ASSERT_FALSE(t.t.empty());
         EXPECT_LE(t.t.size(), kMaxTracePoints);
-        EXPECT_EQ(t.t.size(), t.theta1_over_alpha.size());
-        EXPECT_NEAR(t.theta1_over_alpha.front(), 0.5, 1e-12);
+        EXPECT_EQ(t.t.size(), t.theta1_over_alpha1.size());
+        EXPECT_NEAR(t.theta1_over_alpha1.front(), 0.5, 1e-12);
     }
     EXPECT_EQ(r.traces[0].case_id, "fig6-vssw/r0.5");
     EXPECT_EQ(r.traces[0].assumption, "mechanism");
@@ -339,7 +339,7 @@ TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
         const validation::MetricRow* over = find_row(r, id, "analytic", "overturned");
         const validation::MetricRow* when = find_row(r, id, "analytic", "peak_time");
         ASSERT_TRUE(peak && rms && over && when) << id;
-        EXPECT_EQ(peak->unit, "alpha");
+        EXPECT_EQ(peak->unit, "alpha1");
         EXPECT_GT(peak->analytic, kClearRocking) << id;
         EXPECT_LT(peak->analytic, kBelowInstability) << id;
         EXPECT_EQ(over->analytic, 0.0) << id;
@@ -354,7 +354,7 @@ TEST(RunSuite, RecordsRockTheAnalyticWallsClearlyWithoutOverturning) {
         EXPECT_EQ(t->assumption, "mechanism") << id;
         EXPECT_LE(t->t.size(), kMaxTracePoints);
         double largest = 0.0;
-        for (double v : t->theta1_over_alpha) largest = std::max(largest, std::abs(v));
+        for (double v : t->theta1_over_alpha1) largest = std::max(largest, std::abs(v));
         EXPECT_LE(largest, peak->analytic) << id;
         EXPECT_GT(largest, 0.5 * peak->analytic) << id;
     }
@@ -396,7 +396,7 @@ TEST(RunSuite, OneAndTwoThreadsGiveIdenticalResults) {
     for (std::size_t i = 0; i < a.traces.size(); ++i) {
         EXPECT_EQ(a.traces[i].case_id, b.traces[i].case_id);
         EXPECT_EQ(a.traces[i].engine, b.traces[i].engine);
-        EXPECT_EQ(a.traces[i].theta1_over_alpha, b.traces[i].theta1_over_alpha);
+        EXPECT_EQ(a.traces[i].theta1_over_alpha1, b.traces[i].theta1_over_alpha1);
     }
     // Rows in case order, then engine order (analytic, fake, other).
     auto case_index = [&](const std::string& id) {

@@ -276,7 +276,7 @@ TEST(WorkerProcess, OdesSuiteRowsAreTheSameOnOneAndTwoThreads) {
     EXPECT_TRUE(has_ode);
     EXPECT_EQ(a.failures.size(), b.failures.size());
     ASSERT_EQ(a.traces.size(), b.traces.size());
-    for (std::size_t i = 0; i < a.traces.size(); ++i) EXPECT_EQ(a.traces[i].theta1_over_alpha, b.traces[i].theta1_over_alpha) << i;
+    for (std::size_t i = 0; i < a.traces.size(); ++i) EXPECT_EQ(a.traces[i].theta1_over_alpha1, b.traces[i].theta1_over_alpha1) << i;
 }
 
 }  // namespace

@@ -210,14 +210,14 @@ void write_failures_csv(std::ostream& out, const SuiteResults& results) {
 }
 
 void write_traces_csv(std::ostream& out, const SuiteResults& results) {
-    out << "case_id,engine,t,theta1_over_alpha,assumption\n";
+    out << "case_id,engine,t,theta1_over_alpha1,assumption\n";
     for (const Trace& tr : results.traces) {
         const std::string prefix = io::csv_field(tr.case_id) + ',' + io::csv_field(tr.engine) + ',';
         const std::string suffix = ',' + io::csv_field(tr.assumption) + '\n';
-        const std::size_t n = std::min(tr.t.size(), tr.theta1_over_alpha.size());
+        const std::size_t n = std::min(tr.t.size(), tr.theta1_over_alpha1.size());
         for (std::size_t i = 0; i < n; ++i)
             out << prefix << trace_number(tr.t[i], kTraceTimeDigits) << ','
-                << trace_number(tr.theta1_over_alpha[i], kTraceValueDigits) << suffix;
+                << trace_number(tr.theta1_over_alpha1[i], kTraceValueDigits) << suffix;
     }
 }
 

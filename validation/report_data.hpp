@@ -16,7 +16,7 @@
 //   not run), plots {made, note}, wall_time_s, threads. Every NaN is null.
 // metrics.csv:  case_id,engine,metric,unit,reference,analytic,engine_value,rel_error   (one line per row)
 // failures.csv: case_id,engine,message
-// traces.csv:   case_id,engine,t,theta1_over_alpha,assumption   (every trace, one line per sample; t to
+// traces.csv:   case_id,engine,t,theta1_over_alpha1,assumption   (every trace, one line per sample; t to
 //               kTraceTimeDigits and theta1/alpha to kTraceValueDigits significant digits; assumption: the analytic
 //               model's, validation::Trace)
 #include <iosfwd>

@@ -419,7 +419,7 @@ void add_files(Blocks& b) {
     b.push_back(io::heading(2, "Files"));
     b.push_back(io::list({"results.json: everything above, machine-readable (NaN as null)",
                       "metrics.csv: one line per (case, engine, metric)", "failures.csv: one line per failure",
-                      "traces.csv: the time histories (case_id, engine, t, theta1_over_alpha, assumption)",
+                      "traces.csv: the time histories (case_id, engine, t, theta1_over_alpha1, assumption)",
                       "plots/: each plot as .svg with the .gp script and .dat data that drew it"}));
 }
 

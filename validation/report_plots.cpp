@@ -74,16 +74,16 @@ TraceWindow trace_window(const std::vector<const Trace*>& traces, double motion_
     TraceWindow w;
     double largest = 0.0, t_min = std::numeric_limits<double>::infinity(), t_max = -t_min;
     for (const Trace* t : traces)
-        for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha.size()); ++i) {
-            if (std::isfinite(t->theta1_over_alpha[i])) largest = std::max(largest, std::abs(t->theta1_over_alpha[i]));
+        for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha1.size()); ++i) {
+            if (std::isfinite(t->theta1_over_alpha1[i])) largest = std::max(largest, std::abs(t->theta1_over_alpha1[i]));
             t_min = std::min(t_min, t->t[i]);
             t_max = std::max(t_max, t->t[i]);
         }
     if (!(t_max >= t_min)) return w;
     double first = t_max, last = t_min;
     for (const Trace* t : traces)
-        for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha.size()); ++i)
-            if (std::abs(t->theta1_over_alpha[i]) > motion_fraction * largest) {
+        for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha1.size()); ++i)
+            if (std::abs(t->theta1_over_alpha1[i]) > motion_fraction * largest) {
                 first = std::min(first, t->t[i]);
                 last = std::max(last, t->t[i]);
             }
@@ -98,10 +98,10 @@ TraceWindow trace_window(const std::vector<const Trace*>& traces, double motion_
     // y: every value inside the window, and zero.
     double lo = 0.0, hi = 0.0;
     for (const Trace* t : traces)
-        for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha.size()); ++i)
-            if (t->t[i] >= w.t0 && t->t[i] <= w.t1 && std::isfinite(t->theta1_over_alpha[i])) {
-                lo = std::min(lo, t->theta1_over_alpha[i]);
-                hi = std::max(hi, t->theta1_over_alpha[i]);
+        for (std::size_t i = 0; i < std::min(t->t.size(), t->theta1_over_alpha1.size()); ++i)
+            if (t->t[i] >= w.t0 && t->t[i] <= w.t1 && std::isfinite(t->theta1_over_alpha1[i])) {
+                lo = std::min(lo, t->theta1_over_alpha1[i]);
+                hi = std::max(hi, t->theta1_over_alpha1[i]);
             }
     const double pad = 0.05 * std::max(hi - lo, 1e-9);
     w.y0 = lo - pad;
@@ -171,10 +171,10 @@ io::PlotScript trace_script(const std::string& id, const std::string& name, cons
     std::string plot_cmd;
     int index = 0;
     for (const Trace* t : traces) {
-        s.dat += fmt::format("# {} {}{}\n# t theta1_over_alpha\n", io::gp_comment(id), io::gp_comment(t->engine),
+        s.dat += fmt::format("# {} {}{}\n# t theta1_over_alpha1\n", io::gp_comment(id), io::gp_comment(t->engine),
                              t->assumption.empty() ? "" : " " + io::gp_comment(t->assumption));
         // The samples inside the window and one either side (the line runs to the edge).
-        const std::size_t n = std::min(t->t.size(), t->theta1_over_alpha.size());
+        const std::size_t n = std::min(t->t.size(), t->theta1_over_alpha1.size());
         std::vector<double> px, py;
         std::vector<std::size_t> at;
         for (std::size_t i = 0; i < n; ++i) {
@@ -183,13 +183,13 @@ io::PlotScript trace_script(const std::string& id, const std::string& name, cons
                               (i > 0 && t->t[i - 1] <= w.t1 && t->t[i] > w.t1);
             if (!inside && !edge) continue;
             px.push_back((t->t[i] - w.t0) / (w.t1 - w.t0) * kPlotWidth);
-            py.push_back((t->theta1_over_alpha[i] - w.y0) / (w.y1 - w.y0) * kPlotHeight);
+            py.push_back((t->theta1_over_alpha1[i] - w.y0) / (w.y1 - w.y0) * kPlotHeight);
             at.push_back(i);
         }
         const std::vector<std::size_t> kept = simplify_polyline(px, py, kTracePixelTolerance);
         for (std::size_t k : kept)
             s.dat += trace_number(t->t[at[k]], kTraceTimeDigits) + ' ' +
-                     trace_number(t->theta1_over_alpha[at[k]], kTraceValueDigits) + '\n';
+                     trace_number(t->theta1_over_alpha1[at[k]], kTraceValueDigits) + '\n';
         s.dat += "\n\n";  // the next gnuplot index
         const bool analytic = t->engine == "analytic";
         // The engine's marker (io/palette.hpp) on a few of the line's points: the line reads without its colour.
@@ -214,7 +214,7 @@ io::PlotScript trace_script(const std::string& id, const std::string& name, cons
 
 double largest_value(const Trace& t) {
     double m = 0.0;
-    for (double v : t.theta1_over_alpha)
+    for (double v : t.theta1_over_alpha1)
         if (std::isfinite(v)) m = std::max(m, std::abs(v));
     return m;
 }

@@ -93,7 +93,7 @@ Trace make_trace(const std::string& case_id, const std::string& engine, const mu
     const std::size_t stride = std::max<std::size_t>(1, (n + kMaxTracePoints - 2) / (kMaxTracePoints - 1));
     auto add = [&](std::size_t i) {
         tr.t.push_back(traj.samples[i].t);
-        tr.theta1_over_alpha.push_back(traj.samples[i].theta1 / alpha);
+        tr.theta1_over_alpha1.push_back(traj.samples[i].theta1 / alpha);
     };
     for (std::size_t i = 0; i < n; i += stride) add(i);
     if ((n - 1) % stride != 0) add(n - 1);

@@ -142,7 +142,7 @@ struct ModelWarning {
 struct Trace {
     std::string case_id;
     std::string engine;  // "analytic" for the reference
-    std::vector<double> t, theta1_over_alpha;
+    std::vector<double> t, theta1_over_alpha1;
     std::string assumption;  // the analytic model's set (to_string(AssumptionSet)); "" for an engine
 };
 

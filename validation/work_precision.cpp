@@ -65,7 +65,7 @@ double relative_error(double value, double reference) {
 
 // The peak_rotation [alpha] of a run from rest under the record, as the report and a study measure it
 // (compare/response.hpp).
-double peak_over_alpha(const multibody::Trajectory& traj, const multibody::WallScene& scene) {
+double peak_over_alpha1(const multibody::Trajectory& traj, const multibody::WallScene& scene) {
     return compare::response_of(traj, scene).peak / scene.alpha();
 }
 
@@ -96,7 +96,7 @@ Problem prepare_problem(const std::string& name, const BenchOptions& options) {
         p.refs["threshold"] = closed;
     } else if (name == "record") {
         p.record = record_excitation(options.record_path);
-        p.refs["peak"] = peak_over_alpha(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol)), p.scene);
+        p.refs["peak"] = peak_over_alpha1(analytic.simulate(p.scene, p.record, analytic_at(kReferenceRtol)), p.scene);
     } else {
         compare::FreeVibrationOptions free;
         free.r = kRelease;
@@ -115,7 +115,7 @@ std::map<std::string, double> run_problem(const Problem& problem, const multibod
     if (problem.name == "threshold") return {{"threshold", compare::find_threshold(engine, settings, problem.scene).value_g}};
     if (problem.name == "record")
         return {{"peak",
-                 peak_over_alpha(engine.simulate(problem.scene, problem.record, settings), problem.scene)}};
+                 peak_over_alpha1(engine.simulate(problem.scene, problem.record, settings), problem.scene)}};
     compare::FreeVibrationOptions free;
     free.r = kRelease;
     const compare::FreeVibrationResult run = compare::run_free_vibration(engine, settings, problem.scene, free);
