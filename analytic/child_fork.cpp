@@ -3,6 +3,7 @@
 #include <pthread.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,6 +24,8 @@ constexpr int kFaultSignals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTR
 // The children not reaped yet, and the lock under which one is reaped or all are killed. Held across every fork (in
 // parent and child, pthread_atfork), so that no child starts with a copy held by a thread it does not have.
 std::mutex g_reaping;
+// reaped_children_cpu_seconds(): per thread, as each thread waits for its own children.
+thread_local double t_reaped_cpu_s = 0.0;
 std::vector<pid_t> g_children;
 
 void hold_across_fork() {
@@ -87,10 +90,17 @@ int wait_child(pid_t pid) {
     const std::lock_guard<std::mutex> lock(g_reaping);
     g_children.erase(std::remove(g_children.begin(), g_children.end(), pid), g_children.end());
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0)
+    rusage usage{};
+    while (::wait4(pid, &status, 0, &usage) < 0)
         if (errno != EINTR) return -1;
+    auto seconds = [](const timeval& t) {
+        return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+    };
+    t_reaped_cpu_s += seconds(usage.ru_utime) + seconds(usage.ru_stime);
     return status;
 }
+
+double reaped_children_cpu_seconds() { return t_reaped_cpu_s; }
 
 void kill_children_before_exit() {
     g_reaping.lock();  // never released: the process ends

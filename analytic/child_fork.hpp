@@ -24,6 +24,11 @@ pid_t fork_child();
 // Waits for a child made by fork_child to end and reaps it: its waitpid status, or -1 when it cannot be waited for.
 int wait_child(pid_t pid);
 
+// The CPU time [s], user and system, of the children the calling thread has reaped with wait_child, summed over the
+// thread's life. A forked engine run spends its CPU in its child, which the thread's own CPU clock does not see; a
+// task that waits for its children on one thread adds this to its thread's CPU to know what it cost.
+double reaped_children_cpu_seconds();
+
 // Sends SIGKILL to every child made by fork_child not reaped yet, and keeps any other from being reaped or forked:
 // for a process about to end (the signal handling of cli/signal_cleanup.cpp). A thread waiting for its child then
 // never returns, so that no killed run is reported as failed by a process already ending.

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -20,6 +21,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "analytic/child_fork.hpp"
 #include "analytic/error.hpp"
 #include "analytic/wall.hpp"
 #include "validation/suite.hpp"
@@ -87,6 +89,29 @@ std::string message_of(How how) {
     } catch (...) {
     }
     return "";
+}
+
+// A forked engine run spends its CPU in its child, which the parent thread's CPU clock does not see: the thread that
+// reaps the child counts its CPU (reaped_children_cpu_seconds, which a suite's task adds to its thread's CPU), and
+// another thread does not.
+TEST(ChildFork, TheThreadThatReapsAChildCountsItsCpu) {
+    constexpr double kChildCpuS = 0.2;          // what the child spends: many of the kernel's accounting ticks
+    constexpr double kAccountingSlackS = 0.02;  // CPU time is counted in scheduler ticks (4 ms at 250 Hz): a few lost
+    const double before = vssw::reaped_children_cpu_seconds();
+    const pid_t pid = vssw::fork_child();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {  // the child's CPU clock starts at 0 (fork)
+        timespec now{};
+        do {
+            clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+        } while (static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec) < kChildCpuS);
+        _exit(0);
+    }
+    ASSERT_EQ(vssw::wait_child(pid), 0);
+    EXPECT_GE(vssw::reaped_children_cpu_seconds() - before, kChildCpuS - kAccountingSlackS);
+    double other_thread = -1.0;
+    std::thread([&] { other_thread = vssw::reaped_children_cpu_seconds(); }).join();
+    EXPECT_EQ(other_thread, 0.0);
 }
 
 TEST(WorkerProcess, ReturnsTheWorksBytesExactly) { EXPECT_EQ(run_in_worker(How::returns), awkward_bytes()); }

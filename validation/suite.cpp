@@ -17,6 +17,7 @@
 
 #include <fmt/format.h>
 
+#include "analytic/child_fork.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
 #include "compare/case_runner.hpp"
@@ -50,11 +51,12 @@ constexpr double kHistoryReferenceSampleDt = 1e-3;
 
 // Running ----------------------------------------------------------------------------------------------------------
 
-// CPU time of the calling thread [s] (POSIX): a task runs on one thread from start to end.
-double thread_cpu_seconds() {
+// CPU time of the calling thread and of the children it has reaped [s] (POSIX): a task runs on one thread from start
+// to end, and its engine runs in children that thread forks and waits for (analytic/child_fork.hpp).
+double task_cpu_seconds() {
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec) + reaped_children_cpu_seconds();
 }
 
 struct TaskOutput {
@@ -570,7 +572,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
         const compare::CaseTask& task = tasks[ti];
         const SuiteCase& c = suite.cases[task.case_index];
         const multibody::Engine& engine = *engines[task.engine];
-        const double cpu_start = thread_cpu_seconds();
+        const double cpu_start = task_cpu_seconds();
         try {
             const TaskContext x{c,
                                 *in.case_walls[task.case_index],
@@ -586,7 +588,7 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
             outputs[ti] = TaskOutput{};
             outputs[ti].failure = e.what();
         }
-        outputs[ti].cpu_s = thread_cpu_seconds() - cpu_start;
+        outputs[ti].cpu_s = task_cpu_seconds() - cpu_start;
         return fmt::format("{} {}{}", c.id, engine.name(), outputs[ti].failure ? " (failed)" : "");
     });
 

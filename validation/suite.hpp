@@ -146,8 +146,9 @@ struct Trace {
     std::string assumption;  // the analytic model's set (to_string(AssumptionSet)); "" for an engine
 };
 
-// CPU time of one (case, engine) task on its thread [s]: where a suite's time goes (bench/suite_profile.cpp). The
-// analytic model's side of a case, shared by the case's tasks, is charged to the task that ran it first.
+// CPU time of one (case, engine) task [s], its thread's and its engine runs' children's: where a suite's time goes
+// (bench/suite_profile.cpp). The analytic model's side of a case, shared by the case's tasks, is charged to the task
+// that ran it first.
 struct TaskTime {
     std::string case_id;
     CaseKind kind;
