@@ -559,8 +559,10 @@ std::vector<Axis> read_settings(const Reader& r, const json& t, const std::strin
     std::vector<std::string> keys;
     for (const char* first : {"dt", "iterations"})
         if (t.contains(first)) keys.push_back(first);
-    for (const auto& item : t.items())
+    for (const auto& item : t.items()) {
+        if (item.key().empty()) r.fail(where, "a setting without a name (\"\"): give the knob's name");
         if (multibody::is_knob(item.key())) keys.push_back(item.key());
+    }
     for (const std::string& k : keys) {
         const std::string key = where + "." + k;
         if (engine == "analytic" && !multibody::is_knob(k))

@@ -132,6 +132,22 @@ TEST(StudyFile, EngineNamesAreReadInAnyLetterCase) {
     EXPECT_FALSE(settings.engines.at(0).settings.empty());
 }
 
+// An engine's setting must have a name: a table key "" is refused naming where it is (the fuzzer found it accepted,
+// an axis without a key; tests/fuzz/corpus/study_file/setting-without-a-name.json replays it).
+TEST(StudyFile, ASettingWithoutANameIsRefused) {
+    const TempDir dir;
+    const std::string rest = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n[excitation]\nkind = \"threshold\"\n";
+    for (const char* table : {"[engines.ode]\n\"\" = 0.2\n", "engines = [\"ode\"]\n[settings.ode]\n\"\" = 0.2\n"}) {
+        try {
+            (void)study_of(dir, std::string(table) + rest);
+            ADD_FAILURE() << "accepted a setting without a name: " << table;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("a setting without a name"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(".ode"), std::string::npos) << e.what();
+        }
+    }
+}
+
 // [assumptions] set: the set's three parts are the study's, the default set when the file names none (every command's
 // default, analytic/assumption_sets.hpp), and a key the file gives replaces its part alone.
 TEST(StudyFile, TheSetGivesEveryAssumptionAndAKeyOverridesItsPart) {
