@@ -18,6 +18,7 @@ chmod 755 "$root"  # a system's root folder: apt's unprivileged user reads its l
 cleanup() {
   umount "$root/proc" 2>/dev/null || true
   rm -rf --one-file-system "$root"
+  rm -f "$root.debootstrap.log"
 }
 trap cleanup EXIT
 echo "deb_fresh_machine.sh: a minimal Debian 12 in $root" >&2
