@@ -8,7 +8,7 @@ from ._errors import InputError
 _EXIT_BAD_INPUT = 2  # the program's exit code for bad input (as _core.EXIT_BAD_INPUT)
 
 # What plot() can draw: name -> (axis label with its unit, the values from a Simulation). Rotations in units of the
-# reference angle alpha (1 is the corner over the pivot at rest), the rise in mm, energies in J.
+# reference angle alpha1 (a parapet's alpha; 1 is the corner over the pivot at rest), the rise in mm, energies in J.
 QUANTITIES = {
     "theta1": ("θ1 / α1  [-]", lambda s: s.theta1 / s.alpha1),
     "theta2": ("θ2 / α1  [-]", lambda s: s.theta2 / s.alpha1),

@@ -251,7 +251,7 @@ class ClosedForms:
 class Comparison:
     """One engine against the analytic model (vssw.compare): threshold [g], period [s], restitution and
     restitution_amplitude (from the peaks either side of the first impact), each a Metric; closed_forms; theta0 (the
-    release, a fraction of alpha); settings (the engine's, as used); threshold_trials and impacts ((analytic, engine)
+    release, a fraction of alpha1); settings (the engine's, as used); threshold_trials and impacts ((analytic, engine)
     simulations of the threshold search, impacts in the free vibrations); failures (why a metric is NaN, one line
     each); analytic_warnings (the analytic model's own assumptions failing along its free vibration); error (several
     engines asked: the engine's failure, its metrics then NaN; None otherwise)."""
