@@ -93,7 +93,8 @@ def animate_simulation(sim, path=None, fps=25, speed=1.0, t_start=None, t_stop=N
         notebook). fps: frames per second of the file (0 < fps <= 100). speed: run seconds per second of film (0.25:
         four times slower). t_start, t_stop [s]: the part of the run shown (default all of it).
     The returned Animation has sample_indices (the sample each frame shows) and draw_frame(k) (draws frame k and
-    returns its WallPose). InputError for a bad value, a rounded wall, a missing matplotlib or encoder."""
+    returns its WallPose). InputError for a bad value, a Simulation without geometry, a missing matplotlib or
+    encoder."""
     plt = require_matplotlib()
     from matplotlib import animation  # type: ignore[import]
 
