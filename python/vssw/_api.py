@@ -410,7 +410,8 @@ def _with_python_names(call):
 # Comparison (a comma-separated str gives a list too: pass a list for a checker to know it). Under a ground motion
 # (record= or pulse=): any of the four, as the implementation's type says.
 @overload
-def compare(engine: Literal["all"], *, record: None = ..., pulse: None = ...,  # type: ignore[misc]
+def compare(engine: Union[Literal["all"], List[str], Tuple[str, ...]], *,  # type: ignore[misc]
+            record: None = ..., pulse: None = ...,
             height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
             xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
             scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
@@ -429,16 +430,6 @@ def compare(engine: str, *, record: None = ..., pulse: None = ...,
             dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
             run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
             ) -> Comparison: ...
-@overload
-def compare(engine: Union[List[str], Tuple[str, ...]], *, record: None = ..., pulse: None = ...,
-            height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
-            xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
-            scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
-            pulse_period: Optional[Number] = ..., duration: Optional[Number] = ..., assumptions: Optional[str] = ...,
-            kinematics: Optional[str] = ..., impact: Union[str, Number, None] = ..., roller: Optional[str] = ...,
-            dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
-            run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
-            ) -> List[Comparison]: ...
 @overload
 def compare(engine: Union[str, Sequence[str]], *, record: Optional[Record] = ..., pulse: Optional[str] = ...,
             height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
