@@ -299,7 +299,7 @@ def simulate(engine: str = "analytic", *, height: Number, thickness: Number, hin
         amplitude=_number("amplitude", amplitude, True), pulse_period=_number("pulse_period", pulse_period, True),
         duration=_number("duration", duration, True), stop_at_rest=bool(stop_at_rest),
         friction=_number("friction", friction, True), run_budget=_number("run_budget", run_budget, True)))
-    return simulation_from(result, height=float(height), thickness=float(thickness), vssw=model == "vssw")
+    return simulation_from(result, height=float(height), thickness=float(thickness))
 
 
 def _progress(progress):
