@@ -35,6 +35,7 @@
 #include "analytic/closed_forms.hpp"
 #include "cli/cli.hpp"
 #include "cli/compare_response.hpp"
+#include "cli/friction_option.hpp"
 #include "cli/ground_motion_options.hpp"
 #include "cli/message_line.hpp"
 #include "cli/progress.hpp"
@@ -452,18 +453,10 @@ py::dict simulate(const std::string& engine_name, const WallArgs& wall, double t
                           : py::none();
     d["ground_motion"] = shaken ? py::cast(ex.horizontal.name()) : py::none();
     d["slip"] = py::none();
-    if (traj.slip) {  // the engines' measured sliding, friction given (vssw compare --friction's slip, in m)
-        const vssw::multibody::SlipMeasures& s = *traj.slip;
-        py::dict slip;
-        slip["base_largest"] = s.base_largest;
-        slip["base_residual"] = s.base_residual;
-        slip["hinge_largest"] = s.hinge_largest;
-        slip["hinge_residual"] = s.hinge_residual;
-        slip["b"] = s.b;
-        slip["t_first_slip"] = s.t_first_slip ? py::cast(*s.t_first_slip) : py::none();
-        slip["t_first_lift"] = s.t_first_lift ? py::cast(*s.t_first_lift) : py::none();
-        slip["slid_before_rocking"] = s.slid_before_rocking();
-        slip["slid_off"] = s.slid_off ? py::cast(*s.slid_off) : py::none();
+    if (traj.slip) {  // the engines' measured sliding, friction given: `vssw compare --friction --json`'s slip
+        py::dict slip = py::module_::import("json").attr("loads")(
+            vssw::io::dump_json(vssw::cli::slip_json(*traj.slip, scene.vssw.has_value())));
+        slip["b"] = traj.slip->b;  // [m]: the unit of the *_b values
         d["slip"] = slip;
     }
     return d;

@@ -3,12 +3,13 @@
 their printed output as ```text blocks, and their figures (PNG) as files beside the page, linked from it.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/notebook_page.py [--execute] [--check]
-        [--notebook docs/notebooks/first-steps.ipynb] [--page docs/tutorials/first-steps.md]
+        [--notebook docs/notebooks/first-steps.ipynb] [--page docs/tutorials/first-steps.md] [--label NAME]
 
 --execute runs the notebook first (nbclient, Debian python3-nbclient and python3-ipykernel) and writes it back with
 its outputs, from the repository's top folder.
 
-The page is a function of the notebook alone (no date, no kernel's name), so --check, which compares the committed
+The page is a function of the notebook alone (no date, no kernel's name, no folder it is read from: its header names
+the notebook by --label, by default its path in the repository), so --check, which compares the committed
 page and figures with what the notebook gives and names each that differs, holds them to the notebook
 (python/tests/test_notebook.py). Apart from --execute only the standard library: the notebook is JSON (nbformat 4)."""
 
@@ -18,6 +19,7 @@ import json
 import pathlib
 import sys
 
+REPO = pathlib.Path(__file__).resolve().parents[1]
 EXECUTE_TIMEOUT_S = 120  # per cell; the whole notebook runs in seconds
 HEADER = ("<!-- Written by scripts/notebook_page.py from {notebook}: edit and re-run the notebook, then the script. "
           "-->\n\n")
@@ -58,11 +60,18 @@ def _outputs(cell, figures, stem):
     return blocks
 
 
-def render(notebook_path, page_path):
-    """The page's Markdown and its figures {file name: bytes} from the executed notebook."""
+def label_of(notebook_path):
+    """The notebook's name in the page's header: its path in the repository, so the page does not depend on the
+    folder the script runs from; a notebook outside the repository by its path as given."""
+    path = pathlib.Path(notebook_path).resolve()
+    return path.relative_to(REPO).as_posix() if path.is_relative_to(REPO) else pathlib.Path(notebook_path).as_posix()
+
+
+def render(notebook_path, page_path, label):
+    """The page's Markdown and its figures {file name: bytes} from the executed notebook, named label in the header."""
     notebook = json.loads(pathlib.Path(notebook_path).read_text(encoding="utf-8"))
     stem = pathlib.Path(page_path).stem
-    figures, blocks = {}, [HEADER.format(notebook=pathlib.Path(notebook_path).as_posix())]
+    figures, blocks = {}, [HEADER.format(notebook=label)]
     for cell in notebook["cells"]:
         source = _text(cell["source"]).rstrip("\n")
         if cell["cell_type"] == "markdown":
@@ -88,6 +97,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--notebook", default="docs/notebooks/first-steps.ipynb")
     parser.add_argument("--page", default="docs/tutorials/first-steps.md")
+    parser.add_argument("--label", help="the notebook's name in the page's header (default: its path in the "
+                        "repository)")
     parser.add_argument("--check", action="store_true", help="compare with the committed page; write nothing")
     parser.add_argument("--execute", action="store_true", help="run the notebook and store its outputs first")
     args = parser.parse_args()
@@ -95,7 +106,7 @@ def main():
         execute(args.notebook)
     page = pathlib.Path(args.page)
     folder = page.parent / page.stem
-    text, figures = render(args.notebook, page)
+    text, figures = render(args.notebook, page, args.label or label_of(args.notebook))
     wanted = {page: text.encode("utf-8"), **{folder / name: data for name, data in figures.items()}}
     if args.check:
         stale = [str(p) for p, data in wanted.items() if not p.is_file() or p.read_bytes() != data]

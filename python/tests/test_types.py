@@ -1,6 +1,7 @@
 """The package's type annotations (py.typed): every public function, method and result field annotated, and mypy
 (Debian's python3-mypy) content with the package and with a user's script typed against it, and refusing a script
 whose types are wrong. Skipped where mypy is not installed."""
+import ast
 import dataclasses
 import inspect
 import os
@@ -80,6 +81,63 @@ def test_an_unannotated_function_is_found():
     finally:
         vssw.__all__.remove("helper_for_the_test")
         del vssw.helper_for_the_test
+
+
+def signature_parameters(doc):
+    """The parameter names in pybind11's generated signature, the first line of a function's __doc__:
+    name(a: T, b: Dict[str, float] = 0.0) -> R; a type's or a default's own commas are inside brackets."""
+    inside = doc.splitlines()[0].split("(", 1)[1].rsplit(") ->", 1)[0]
+    names, depth, start = [], 0, 0
+    for i, char in enumerate(inside + ","):
+        depth += (char in "[({") - (char in "])}")
+        if char == "," and depth == 0:
+            names.append(inside[start:i].split(":")[0].strip())
+            start = i + 1
+    return [n for n in names if n and n != "self"]
+
+
+def stub_mismatches(stub):
+    """Each function of the stub (and each class's __init__) whose parameter names differ from the compiled
+    function's, as "name: stub [...] != module [...]"; a function the module lacks as "name: not in the module"."""
+    from vssw import _core
+
+    wrong = []
+    for node in ast.parse(stub).body:
+        function, owner = node, None
+        if isinstance(node, ast.ClassDef):
+            function = next((f for f in node.body if isinstance(f, ast.FunctionDef) and f.name == "__init__"), None)
+            owner = node.name
+        if not isinstance(function, ast.FunctionDef):
+            continue
+        name = owner or function.name
+        compiled = getattr(_core, name, None)
+        if compiled is None:
+            wrong.append(f"{name}: not in the module")
+            continue
+        stubbed = [a.arg for a in function.args.args + function.args.kwonlyargs if a.arg != "self"]
+        generated = signature_parameters((compiled.__init__ if owner else compiled).__doc__)
+        if stubbed != generated:
+            wrong.append(f"{name}: stub {stubbed} != module {generated}")
+    return wrong
+
+
+def test_the_stub_names_the_compiled_functions_parameters():
+    # _core.pyi is written by hand: held to the signatures pybind11 generates from python/core.cpp.
+    from vssw import _core
+
+    stub = (PACKAGE / "_core.pyi").read_text(encoding="utf-8")
+    assert stub_mismatches(stub) == []
+    stubbed = {node.name for node in ast.parse(stub).body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
+    assert stubbed == {name for name in dir(_core) if not name.startswith("_") and callable(getattr(_core, name))}
+
+
+def test_a_stub_with_a_wrong_parameter_name_is_found():
+    stub = (PACKAGE / "_core.pyi").read_text(encoding="utf-8")
+    assert "theta0: float, t_end" in stub
+    wrong = stub.replace("theta0: float, t_end", "theta: float, t_end", 1)
+    assert [m.split(":")[0] for m in stub_mismatches(wrong)] == ["simulate"]
+    renamed = stub.replace("overburden_eccentricity: float = ...", "eccentricity: float = ...", 1)
+    assert [m.split(":")[0] for m in stub_mismatches(renamed)] == ["WallArgs"]
 
 
 @pytest.mark.skipif(mypy_missing, reason="mypy is not installed (Debian: python3-mypy)")

@@ -9,11 +9,11 @@ import tempfile
 
 import numpy as np
 
+from . import _core
 from ._errors import InputError
 from ._plot import require_matplotlib
 from ._wall_drawing import WallArtists, pose, require_drawable
 
-_EXIT_BAD_INPUT = 2  # the program's exit code for bad input (as _core.EXIT_BAD_INPUT)
 _MAX_FPS = 100.0  # frames per second: a GIF's frame delay is counted in 10 ms, so 100 is the most a viewer shows
 _MARGIN = 0.15  # of the wall's height around the drawing, so the roller and N's arrow stay inside the frame
 
@@ -21,7 +21,7 @@ _MARGIN = 0.15  # of the wall's height around the drawing, so the roller and N's
 def _positive(name, value, largest=math.inf):
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0 < float(value) <= largest:
         raise InputError(f"{name} {value!r}: a number above 0" + (f" and at most {largest:g}" if largest < math.inf
-                                                                  else "") + " is expected", _EXIT_BAD_INPUT)
+                                                                  else "") + " is expected", _core.EXIT_BAD_INPUT)
     return float(value)
 
 
@@ -33,10 +33,10 @@ def frame_samples(sim, fps, speed, t_start, t_stop):
     stop = t[-1] if t_stop is None else t_stop
     for name, value in (("t_start", start), ("t_stop", stop)):
         if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
-            raise InputError(f"{name} {value!r}: a time in seconds is expected", _EXIT_BAD_INPUT)
+            raise InputError(f"{name} {value!r}: a time in seconds is expected", _core.EXIT_BAD_INPUT)
     if not t[0] <= start < stop <= t[-1]:
         raise InputError(f"t_start {start:g} s, t_stop {stop:g} s: the run's samples span {t[0]:g} to {t[-1]:g} s "
-                         "(t_start < t_stop, both within it)", _EXIT_BAD_INPUT)
+                         "(t_start < t_stop, both within it)", _core.EXIT_BAD_INPUT)
     times = start + np.arange(int(math.floor((stop - start) * fps / speed)) + 1) * speed / fps
     return np.searchsorted(t, times, side="right") - 1
 
@@ -61,16 +61,16 @@ def _writer(path, fps):
 
     suffix = path.suffix.lower()
     if not path.parent.is_dir():
-        raise InputError(f"path {str(path)!r}: its folder {str(path.parent)!r} does not exist", _EXIT_BAD_INPUT)
+        raise InputError(f"path {str(path)!r}: its folder {str(path.parent)!r} does not exist", _core.EXIT_BAD_INPUT)
     if suffix == ".gif":
         return animation.PillowWriter(fps=fps)
     if suffix == ".mp4":
         if not animation.writers.is_available("ffmpeg"):
             raise InputError(f"path {str(path)!r}: an MP4 needs ffmpeg, which is not installed here (Debian: apt "
-                             "install ffmpeg); write a .gif instead", _EXIT_BAD_INPUT)
+                             "install ffmpeg); write a .gif instead", _core.EXIT_BAD_INPUT)
         return animation.FFMpegWriter(fps=fps)
     raise InputError(f"path {str(path)!r}: the animation is written as .gif or .mp4, not {suffix or 'no suffix'!r}",
-                     _EXIT_BAD_INPUT)
+                     _core.EXIT_BAD_INPUT)
 
 
 def _save(anim, path, writer):
@@ -93,7 +93,8 @@ def animate_simulation(sim, path=None, fps=25, speed=1.0, t_start=None, t_stop=N
         notebook). fps: frames per second of the file (0 < fps <= 100). speed: run seconds per second of film (0.25:
         four times slower). t_start, t_stop [s]: the part of the run shown (default all of it).
     The returned Animation has sample_indices (the sample each frame shows) and draw_frame(k) (draws frame k and
-    returns its WallPose). InputError for a bad value, a rounded wall, a missing matplotlib or encoder."""
+    returns its WallPose). InputError for a bad value, a Simulation without geometry, a missing matplotlib or
+    encoder."""
     plt = require_matplotlib()
     from matplotlib import animation  # type: ignore[import]
 
@@ -105,7 +106,7 @@ def animate_simulation(sim, path=None, fps=25, speed=1.0, t_start=None, t_stop=N
     indices = frame_samples(sim, fps, speed, t_start, t_stop)
     if sim.geometry["model"] == "vssw" and np.isnan(sim.theta2[indices]).any():
         raise InputError("theta2 is NaN in this run's samples (a run that sampled theta1 alone): the upper block "
-                         "cannot be drawn", _EXIT_BAD_INPUT)
+                         "cannot be drawn", _core.EXIT_BAD_INPUT)
     fig, ax = plt.subplots(figsize=(4.0, 6.0), layout="constrained")
     xlim, ylim = _limits(sim, indices)
     ax.set_xlim(*xlim)

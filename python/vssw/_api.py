@@ -251,7 +251,7 @@ def simulate(engine: str = "analytic", *, height: Number, thickness: Number, hin
             ratio (default 0.05) under the ground motion (0: rigid, the paper's Eq. 9). Engines that move their roller
             only (ODE, Box2D, DART, Bullet); the analytic model fails such a run under a ground motion (Eq. 9e).
     How it starts and what shakes it (one of a release and a ground motion, or both):
-        theta0: release from rest at theta0 * alpha (a fraction of alpha1, or alpha for a parapet; -1 < theta0 < 1;
+        theta0: release from rest at theta0 * alpha1 (a fraction of alpha1, a parapet's alpha; -1 < theta0 < 1;
             the sign is the side: positive tips the wall towards +x).
         record: a ground-motion file (PEER AT2, two columns time/acceleration, or a CSV with those first) in g
             unless its header says otherwise; a relative path is read from the current directory, else from the
@@ -299,7 +299,7 @@ def simulate(engine: str = "analytic", *, height: Number, thickness: Number, hin
         amplitude=_number("amplitude", amplitude, True), pulse_period=_number("pulse_period", pulse_period, True),
         duration=_number("duration", duration, True), stop_at_rest=bool(stop_at_rest),
         friction=_number("friction", friction, True), run_budget=_number("run_budget", run_budget, True)))
-    return simulation_from(result, height=float(height), thickness=float(thickness), vssw=model == "vssw")
+    return simulation_from(result, height=float(height), thickness=float(thickness))
 
 
 def _progress(progress):
@@ -410,7 +410,8 @@ def _with_python_names(call):
 # Comparison (a comma-separated str gives a list too: pass a list for a checker to know it). Under a ground motion
 # (record= or pulse=): any of the four, as the implementation's type says.
 @overload
-def compare(engine: Literal["all"], *, record: None = ..., pulse: None = ...,  # type: ignore[misc]
+def compare(engine: Union[Literal["all"], List[str], Tuple[str, ...]], *,  # type: ignore[misc]
+            record: None = ..., pulse: None = ...,
             height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
             xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
             scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
@@ -429,16 +430,6 @@ def compare(engine: str, *, record: None = ..., pulse: None = ...,
             dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
             run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
             ) -> Comparison: ...
-@overload
-def compare(engine: Union[List[str], Tuple[str, ...]], *, record: None = ..., pulse: None = ...,
-            height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
-            xi: Number = ..., density: Number = ..., g: Number = ..., theta0: Optional[Number] = ...,
-            scale: Optional[Number] = ..., pga: Optional[Number] = ..., amplitude: Optional[Number] = ...,
-            pulse_period: Optional[Number] = ..., duration: Optional[Number] = ..., assumptions: Optional[str] = ...,
-            kinematics: Optional[str] = ..., impact: Union[str, Number, None] = ..., roller: Optional[str] = ...,
-            dt: Optional[Number] = ..., iterations: Optional[int] = ..., settings: Optional[Knobs] = ...,
-            run_budget: Optional[Number] = ..., progress: Progress = ..., overburden_eccentricity: Number = ...
-            ) -> List[Comparison]: ...
 @overload
 def compare(engine: Union[str, Sequence[str]], *, record: Optional[Record] = ..., pulse: Optional[str] = ...,
             height: Number, thickness: Number, hinge: Optional[Number] = ..., model: str = ...,
@@ -470,11 +461,12 @@ def compare(engine: Union[str, Sequence[str]], *, height: Number, thickness: Num
         carrying its `error` and NaN metrics).
     height, thickness [m], hinge (h1/h), model ("vssw" | "parapet"), xi (N/W), density [kg/m^3], g [m/s^2],
         overburden_eccentricity (e/b): the wall, as vssw.simulate.
-    theta0: release for the period and restitution, a fraction of alpha from 0.01 to below 1 (default 0.5).
+    theta0: release for the period and restitution, a fraction of alpha1 (a parapet's alpha) from 0.01 to below 1
+        (default 0.5).
     record (a file or (dt, values) or (t, values), with scale or pga) or pulse (with amplitude, pulse_period,
         duration), as vssw.simulate takes them:
         instead, the engines and the analytic model from rest under that ground motion (`vssw compare --record`):
-        returns a vssw.ResponseComparison (a list of them for several engines): each run's peak |theta1| / alpha, its
+        returns a vssw.ResponseComparison (a list of them for several engines): each run's peak |theta1| / alpha1, its
         time and overturning, and peak_ratio. Not with theta0. A single run's peak is no verdict: judge engines
         under records on an ensemble (vssw.study, vssw.report).
     assumptions: the analytic reference's assumptions, "mechanism" (the default) or "paper", as vssw.simulate takes

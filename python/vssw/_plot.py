@@ -3,12 +3,12 @@ matplotlib axes. matplotlib is imported only when a plot is asked for: `import v
 
 import numpy as np
 
+from . import _core
 from ._errors import InputError
 
-_EXIT_BAD_INPUT = 2  # the program's exit code for bad input (as _core.EXIT_BAD_INPUT)
 
 # What plot() can draw: name -> (axis label with its unit, the values from a Simulation). Rotations in units of the
-# reference angle alpha (1 is the corner over the pivot at rest), the rise in mm, energies in J.
+# reference angle alpha1 (a parapet's alpha; 1 is the corner over the pivot at rest), the rise in mm, energies in J.
 QUANTITIES = {
     "theta1": ("θ1 / α1  [-]", lambda s: s.theta1 / s.alpha1),
     "theta2": ("θ2 / α1  [-]", lambda s: s.theta2 / s.alpha1),
@@ -25,7 +25,7 @@ def require_matplotlib():
         import matplotlib.pyplot as plt  # type: ignore[import]  # Debian's matplotlib 3.6 ships no types
     except ImportError as e:
         raise InputError(f"plotting needs matplotlib, which this Python cannot import ({e}); install it "
-                         "(Debian: apt install python3-matplotlib)", _EXIT_BAD_INPUT) from None
+                         "(Debian: apt install python3-matplotlib)", _core.EXIT_BAD_INPUT) from None
     return plt
 
 
@@ -49,11 +49,12 @@ def _chosen(sim, quantities):
         return [q for q in _DEFAULT if _present(sim, q)]
     names = [quantities] if isinstance(quantities, str) else list(quantities)
     if not names:
-        raise InputError("quantities: an empty list; name at least one of " + ", ".join(QUANTITIES), _EXIT_BAD_INPUT)
+        raise InputError("quantities: an empty list; name at least one of " + ", ".join(QUANTITIES),
+                         _core.EXIT_BAD_INPUT)
     for name in names:
         if name not in QUANTITIES:
             raise InputError(f"quantities: {name!r} is not one plot() draws; it draws " + ", ".join(QUANTITIES),
-                             _EXIT_BAD_INPUT)
+                             _core.EXIT_BAD_INPUT)
     return names
 
 
@@ -79,7 +80,7 @@ def plot_simulation(sim, ax=None, quantities=None):
     else:
         axes = list(ax)
         if len(axes) != len(panels):
-            raise InputError(f"ax: {len(axes)} Axes given for {len(panels)} panels ({panels})", _EXIT_BAD_INPUT)
+            raise InputError(f"ax: {len(axes)} Axes given for {len(panels)} panels ({panels})", _core.EXIT_BAD_INPUT)
         fig = axes[0].figure
     for panel_ax, panel in zip(axes, panels):
         for name in panel:

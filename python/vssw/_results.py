@@ -194,26 +194,21 @@ class Slip:
         return getattr(self, key)
 
 
-def _slip_at(largest: float, residual: float, b: float) -> SlipAt:
-    return SlipAt(largest_b=largest / b, largest_m=largest, residual_b=residual / b, residual_m=residual)
-
-
-def slip_from(d: Optional[Dict[str, Any]], vssw: bool) -> Optional[Slip]:
+def slip_from(d: Optional[Dict[str, Any]]) -> Optional[Slip]:
+    """The Slip of `vssw compare --friction --json`'s slip as _core gives it (with b); its tolerance_b left out."""
     if d is None:
         return None
-    b = d["b"]
-    return Slip(base=_slip_at(d["base_largest"], d["base_residual"], b),
-                hinge=_slip_at(d["hinge_largest"], d["hinge_residual"], b) if vssw else None,
-                slid_before_rocking=d["slid_before_rocking"], slid_off=d["slid_off"], b=b,
+    return Slip(base=SlipAt(**d["base"]), hinge=None if d["hinge"] is None else SlipAt(**d["hinge"]),
+                slid_before_rocking=d["slid_before_rocking"], slid_off=d["slid_off"], b=d["b"],
                 t_first_slip=d["t_first_slip"], t_first_lift=d["t_first_lift"])
 
 
-def simulation_from(d: Dict[str, Any], height: float, thickness: float, vssw: bool) -> Simulation:
+def simulation_from(d: Dict[str, Any], height: float, thickness: float) -> Simulation:
     fields = {f.name for f in dataclasses.fields(Simulation)}
     values = {k: v for k, v in d.items() if k in fields}
     values["impacts"] = [Impact(**i) for i in d["impacts"]]
     values["peaks"] = [tuple(p) for p in d["peaks"]]
-    values["slip"] = slip_from(d["slip"], vssw)
+    values["slip"] = slip_from(d["slip"])
     return Simulation(height=height, thickness=thickness, **values)
 
 
@@ -251,7 +246,7 @@ class ClosedForms:
 class Comparison:
     """One engine against the analytic model (vssw.compare): threshold [g], period [s], restitution and
     restitution_amplitude (from the peaks either side of the first impact), each a Metric; closed_forms; theta0 (the
-    release, a fraction of alpha); settings (the engine's, as used); threshold_trials and impacts ((analytic, engine)
+    release, a fraction of alpha1); settings (the engine's, as used); threshold_trials and impacts ((analytic, engine)
     simulations of the threshold search, impacts in the free vibrations); failures (why a metric is NaN, one line
     each); analytic_warnings (the analytic model's own assumptions failing along its free vibration); error (several
     engines asked: the engine's failure, its metrics then NaN; None otherwise)."""

@@ -17,9 +17,8 @@ from typing import Optional
 
 import numpy as np
 
+from . import _core
 from ._errors import InputError
-
-_EXIT_BAD_INPUT = 2  # the program's exit code for bad input (the InputError's code, as _core.EXIT_BAD_INPUT)
 
 
 def _rot(t, v):
@@ -55,7 +54,7 @@ _ARC_POINTS = 8  # points per rounded corner's quarter circle in a drawn outline
 def require_drawable(geometry):
     """InputError unless the Simulation carries the wall's geometry."""
     if geometry is None:
-        raise InputError("this Simulation has no geometry to draw (made by an older vssw)", _EXIT_BAD_INPUT)
+        raise InputError("this Simulation has no geometry to draw (made by an older vssw)", _core.EXIT_BAD_INPUT)
 
 
 def _rectangle(b, y0, y1):

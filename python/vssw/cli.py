@@ -228,7 +228,7 @@ def history(trace: bool = False, **options: _Any) -> _Dict[str, _Any]:
 def export_scene(engine: str, path: _Union[str, "_os.PathLike[str]"], **options: _Any) -> _Dict[str, _Any]:
     """`vssw scene`: write the scene `engine` runs for a wall to `path` in the engine's own file format (MJCF for
     "mujoco", URDF of the blocks for "dart"; an engine without one raises InputError), without running it. Options: height, thickness, hinge
-    (required), model, xi, density, g, friction, theta0 (the release as a fraction of alpha, default 0), dt,
+    (required), model, xi, density, g, friction, theta0 (the release as a fraction of alpha1, default 0), dt,
     iterations, set. The file is written under a temporary name and renamed onto `path`. Returns the JSON: engine,
     version, format, path, model, theta0, dt."""
     _reserved(options, ["out"])

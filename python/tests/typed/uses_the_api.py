@@ -20,6 +20,7 @@ if slip is not None and slip.hinge is not None:
 one: vssw.Comparison = vssw.compare("ode", height=4.0, thickness=0.4, hinge=0.7)
 error: float = one.threshold.rel_error
 several: List[vssw.Comparison] = vssw.compare(["ode", "bullet"], height=4.0, thickness=0.4, hinge=0.7)
+pair: List[vssw.Comparison] = vssw.compare(("ode", "bullet"), height=4.0, thickness=0.4, hinge=0.7)
 every: List[vssw.Comparison] = vssw.compare("all", height=4.0, thickness=0.4, hinge=0.7)
 names: List[str] = vssw.engines()
 result: vssw.StudyResult = vssw.study({"name": "s"}, threads=2)
