@@ -37,7 +37,7 @@ namespace vssw::validation {
 constexpr int kReportFormat = 2;
 
 // traces.csv's significant digits (and the trace plots' data). t: 6 keep 0.1 ms up to 100 s, finer than any trace's
-// sampling (1 ms and up). theta1 / alpha: 4 round a value by at most 5e-4 of itself, which is at most 5e-4 of the
+// sampling (1 ms and up). theta1 / alpha1: 4 round a value by at most 5e-4 of itself, which is at most 5e-4 of the
 // plot's y range (the range spans every value and zero): 0.2 px of a 420 px plot, below what a plot shows.
 constexpr int kTraceTimeDigits = 6;
 constexpr int kTraceValueDigits = 4;
