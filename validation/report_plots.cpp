@@ -62,10 +62,20 @@ std::string trace_title(const Trace& t) {
     return t.assumption.empty() ? "analytic (reference)" : fmt::format("analytic, {} (reference)", t.assumption);
 }
 
-// The error plot's y axis, naming what its points are: the RMS difference's is no relative error.
+// What the error plot's points are, and how the relative error is taken: the RMS difference's is no relative error.
+struct ErrorQuantity {
+    const char* name;
+    const char* definition;  // "" for the RMS difference
+};
+ErrorQuantity error_quantity(const std::string& metric) {
+    if (metric == "rms_difference") return {"RMS difference / analytic peak", ""};
+    return {"relative error", " (engine / reference - 1)"};
+}
+
+// The error plot's y axis, naming what its points are.
 std::string error_axis_label(const std::string& metric) {
-    return metric == "rms_difference" ? "RMS difference / analytic peak [%]"
-                                      : "relative error [%] (engine / reference - 1)";
+    const ErrorQuantity q = error_quantity(metric);
+    return fmt::format("{} [%]{}", q.name, q.definition);
 }
 
 }  // namespace
@@ -270,8 +280,7 @@ std::vector<io::PlotScript> error_scripts(const ReportInput& in) {
         const std::size_t engines = table.engines.size();
         s.dat = "# index case_id";
         for (const std::string& e : table.engines) s.dat += ' ' + io::gp_comment(e);
-        s.dat += fmt::format("   ({} in %), then the hover text of each\n",
-                             table.metric == "rms_difference" ? "RMS difference / analytic peak" : "relative error");
+        s.dat += fmt::format("   ({} in %), then the hover text of each\n", error_quantity(table.metric).name);
         for (std::size_t i = 0; i < table.rows.size(); ++i) {
             const MetricTableRow& row = table.rows[i];
             s.dat += fmt::format("{} {}", i, io::gp_data_string(row.case_id));
