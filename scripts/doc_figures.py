@@ -14,8 +14,8 @@ that measured it), an SVG drawn from it, and the page whose table shows the same
   docs/measurements/speed.md.
 
 Without --check it re-draws every SVG into docs/img/ (or --out). With --check it writes nothing there: it draws each
-figure into a temporary folder and exits 1 naming every SVG that differs from the committed one and every number of
-the CSV missing from its row of the page's table, so the figure cannot drift from the table it illustrates (the CTest
+figure into a temporary folder and exits 1 naming every SVG that differs from the committed one and every number
+(and verdict) of the CSV missing from its row of the page's table, so the figure cannot drift from the table it illustrates (the CTest
 vssw_doc_figures). --from-report prints the engine comparison's measured columns from a `vssw report --out DIR`
 folder's results.json (how the CSV's errors and verdicts were taken). --csv and --page replace the committed files
 (--only names the figure), for the test that feeds the check a CSV the page does not show. Needs gnuplot (Debian gnuplot-nox, installed by
@@ -25,6 +25,7 @@ import argparse
 import csv
 import io
 import json
+import os
 import pathlib
 import re
 import subprocess
@@ -35,6 +36,19 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 
 # The plots' font, the one the program's own plots use (io/gnuplot.cpp, kPlotFont).
 FONT = "sans,11"
+
+
+def gp_string(text):
+    """text as a gnuplot single-quoted string, as io::gp_string writes it (io/gnuplot.cpp): a quote doubled, a
+    control character a space (gnuplot would end the string or the command there)."""
+    return "'" + "".join(" " if ord(c) < 0x20 or c == "\x7f" else "''" if c == "'" else c for c in text) + "'"
+
+
+def gp_data_string(text):
+    """text as a double-quoted string of an inline data block, as io::gp_data_string writes it: gnuplot's data reader
+    knows no escapes, so a double quote becomes a single one and a backslash a slash; a control character a space."""
+    return '"' + "".join(" " if ord(c) < 0x20 or c == "\x7f" else "'" if c == '"' else "/" if c == "\\" else c
+                         for c in text) + '"'
 
 
 def read_csv(path):
@@ -105,9 +119,9 @@ def cost_error_program(rows, svg_name):
         lines.append(f"{data} << EOD\n{cost} {restitution} {period}\nEOD")
         plots.append(f"{data} using 1:3:(0):($2-$3) with vectors nohead dt 3 lc rgb '{colour}' notitle")
         plots.append(f"{data} using 1:2 with points pt {filled} ps 1.6 lc rgb '{colour}' "
-                     f"title '{r['display']}: restitution'")
+                     f"title {gp_string(r['display'] + ': restitution')}")
         plots.append(f"{data} using 1:3 with points pt {hollow} ps 1.6 lc rgb '{colour}' title 'period'")
-        plots.append(f"{data} using 1:2:('{r['display']}') with labels offset char 0.8, char 0.7 left "
+        plots.append(f"{data} using 1:2:({gp_string(r['display'])}) with labels offset char 0.8, char 0.7 left "
                      "textcolor rgb '#333333' notitle")
     lines.append("plot " + ", \\\n     ".join(plots))
     return "\n".join(lines) + "\n"
@@ -127,9 +141,10 @@ def work_precision_program(rows, svg_name):
         points = sorted((float(r["cpu_s"]), r["period_pct"], r["restitution_pct"], r["setting"])
                         for r in rows if r["engine"] == engine)
         block = "$" + engine.replace("-", "_")
-        lines.append(f"{block} << EOD\n" + "\n".join(f'{c} {p} {e} "{label}"' for c, p, e, label in points) + "\nEOD")
+        data = "\n".join(f"{c} {p} {e} {gp_data_string(label)}" for c, p, e, label in points)
+        lines.append(f"{block} << EOD\n{data}\nEOD")
         plots.append(f"{block} using 1:2 with linespoints pt {filled} ps 1.4 lw 1.5 lc rgb '{colour}' "
-                     f"title '{engine}: period'")
+                     f"title {gp_string(engine + ': period')}")
         plots.append(f"{block} using 1:3 with linespoints pt {hollow} ps 1.4 dt 2 lc rgb '{colour}' "
                      "title 'restitution'")
         above = 0.9 if index % 2 else -0.8  # alternate engines' setting labels above and below their points
@@ -160,9 +175,9 @@ def suite_time_program(rows, svg_name):
         "$suite << EOD",
     ]
     # The bar's label is the kind's name without the page's count ("threshold (11 walls)": threshold).
-    lines += [f'"{r["kind"].split(" (")[0]}" ' + " ".join(r[f"{e}_s"] for e, _ in engines) for r in rows]
+    lines += [gp_data_string(r["kind"].split(" (")[0]) + " " + " ".join(r[f"{e}_s"] for e, _ in engines) for r in rows]
     lines.append("EOD")
-    plots = [f"$suite using {i + 2}{':xtic(1)' if i == 0 else ''} lc rgb '{styles[e][0]}' title '{title}'"
+    plots = [f"$suite using {i + 2}{':xtic(1)' if i == 0 else ''} lc rgb '{styles[e][0]}' title {gp_string(title)}"
              for i, (e, title) in enumerate(engines)]
     lines.append("plot " + ", \\\n     ".join(plots))
     return "\n".join(lines) + "\n"
@@ -183,7 +198,7 @@ def shown_as_in_table(value):
 
 
 def rows_mismatch(rows, page, key, label, numbers):
-    """Every number of the CSV that its row of the page's table does not show, named. A CSV row's table row is the
+    """Every number (or verdict) of the CSV that its row of the page's table does not show, named. A CSV row's table row is the
     one whose first cell is key(row)[0] and whose next cells start with the rest (bold marks ignored); numbers are
     the CSV columns that row must show."""
     problems = []
@@ -207,7 +222,8 @@ def rows_mismatch(rows, page, key, label, numbers):
 
 def cost_error_mismatches(rows, page):
     return rows_mismatch(rows, page, lambda r: [r["display"]], lambda r: r["display"],
-                         ("threshold_pct", "period_pct", "restitution_pct", "cost_vssw_ms", "step_us", "peak_ratio"))
+                         ("threshold_pct", "period_pct", "restitution_pct", "cost_vssw_ms", "step_us", "peak_ratio",
+                          "records"))
 
 
 def work_precision_mismatches(rows, page):
@@ -233,7 +249,7 @@ def report_columns(folder):
         cells = []
         for metric in ("threshold_g", "period", "restitution"):
             m = worst.get((engine, metric))
-            cells.append("" if m is None or m["worst_rel_error"] is None else f"{100 * m['worst_rel_error']:#.3g}")
+            cells.append("" if m is None or m["worst_error"] is None else f"{100 * m['worst_error']:#.3g}")
         e = quake.get(engine, {})
         ratio = (e.get("peak_log_ratio") or {}).get("median_ratio")
         cells += ["" if ratio is None else f"{ratio:.3f}", {True: "pass", False: "FAIL"}.get(e.get("pass"), "")]
@@ -254,10 +270,13 @@ FIGURES = {
 
 
 def draw(figure, rows, out_dir):
-    """Runs gnuplot on the figure's program in out_dir; returns the SVG's path."""
-    svg = pathlib.Path(figure["svg"]).name
-    subprocess.run(["gnuplot"], input=figure["program"](rows, svg), text=True, cwd=out_dir, check=True)
-    return pathlib.Path(out_dir) / svg
+    """Runs gnuplot on the figure's program in a temporary folder inside out_dir and renames the SVG into out_dir, so
+    a gnuplot that fails half-way leaves the SVG there was; returns the SVG's path."""
+    svg = pathlib.Path(out_dir) / pathlib.Path(figure["svg"]).name
+    with tempfile.TemporaryDirectory(dir=out_dir) as tmp:  # in out_dir: one file system, so the rename is whole
+        subprocess.run(["gnuplot"], input=figure["program"](rows, svg.name), text=True, cwd=tmp, check=True)
+        os.replace(pathlib.Path(tmp) / svg.name, svg)
+    return svg
 
 
 def main():

@@ -217,7 +217,7 @@ io::PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const
                 io::series_style(d.series[c.series].engine, styles.variants[c.series] * sizes.size() + r);
             const std::string label = d.series[c.series].label + (sizes.size() > 1 ? fmt::format(" R={:g}", c.R) : "");
             // An overturned quartile at 1, the median's point then ringed (study/overturned_runs.hpp).
-            const auto drawn = [](double q) { return io::gp_number(std::isinf(q) ? 1.0 : q); };
+            const auto drawn = [](double q) { return io::gp_number(std::isinf(q) ? kOverturnedDrawnAt : q); };
             s.dat += fmt::format("# {}: alpha median q1 q3 records overturned median_overturned\n",
                                  io::gp_comment(label));
             for (const RockingPoint& p : c.points)

@@ -119,7 +119,8 @@ std::vector<IdaCurve> read_ida_csv(const std::filesystem::path& path) {
     std::ifstream in = open_input_file(path, "the study's IDA curves", kMaxResultsBytes);
     std::vector<std::string> f;
     if (!io::read_csv_record(in, f) || f != kHeader)
-        throw InputError(fmt::format("'{}' is not an ida.csv (its header differs)", path.string()));
+        throw InputError(fmt::format("'{}' is not an ida.csv of this vssw: its header is not '{}'", path.string(),
+                                     fmt::join(kHeader, ",")));
     std::vector<IdaCurve> curves;
     std::map<std::tuple<int, std::string, std::string, std::string>, std::size_t> index;
     while (io::read_csv_record(in, f)) {

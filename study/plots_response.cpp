@@ -94,7 +94,7 @@ io::PlotScript rocking_plot(const StudyData& d, std::size_t peak, const Overturn
                           : over.measured()        ? ""
                                                    : " (overturning not measured)");
     f.xlabel = parameter_label("alpha");
-    f.ylabel = "peak rotation [alpha]";
+    f.ylabel = "peak rotation [alpha1]";
     f.xname = "alpha";
     f.yunit = "alpha1";
     for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back("R " + rc.texts[rc.order[p]] + " m");
@@ -161,7 +161,7 @@ std::optional<io::PlotScript> relaxation_curves(const StudyData& d, std::size_t 
                           "paper's first), a panel per backend",
                           kc.key, record.empty() ? "" : ", ", record);
     f.xlabel = parameter_label("alpha");
-    f.ylabel = "peak rotation [alpha]";
+    f.ylabel = "peak rotation [alpha1]";
     f.xname = "alpha";
     f.yunit = "alpha1";
     for (std::size_t p = 0; p < panels; ++p) f.panel_titles.push_back(d.series[p].label);
@@ -254,7 +254,7 @@ io::PlotScript map_plot(const StudyData& d, std::optional<std::size_t> peak, con
            io::gp_xlabel(parameter_label("pulse_period"), !layout.multiplot()) +
            fmt::format("set ylabel {}\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
                        "set palette defined (0 '#2c7bb6', 0.5 '#ffffbf', 1 '#d7191c')\nset cbrange [0:1]\n"
-                       "set cblabel 'peak rotation / alpha (capped at 1)'\n",
+                       "set cblabel 'peak rotation / alpha1 (capped at 1)'\n",
                        io::gp_string(parameter_label("amplitude"))) +
            layout_begin(layout, s.plot.title);
     const std::string standing =

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analytic/simulate.hpp"  // SimulationOptions::energy_ceiling
+#include "compare/metric_catalog.hpp"
 #include "compare/targets.hpp"
 #include "study/overturned_runs.hpp"
 #include "study/plot_lines.hpp"
@@ -24,10 +25,8 @@ namespace {
 // With it the '%.4g' tic labels stay apart (tics a fifth of the span: 2e-3 of it at the smallest).
 double min_value_span(const std::string& metric) {
     const double smallest = std::min({compare::kThresholdTarget, compare::kPeriodTarget, compare::kRestitutionTarget});
-    if (metric == "threshold_g") return 2.0 * compare::kThresholdTarget;
-    if (metric == "period") return 2.0 * compare::kPeriodTarget;
-    if (metric == "restitution") return 2.0 * compare::kRestitutionTarget;
-    return 2.0 * smallest;
+    const compare::MetricInfo* m = compare::find_metric(metric);
+    return 2.0 * (m && m->target > 0.0 ? m->target : smallest);
 }
 
 // A line of a value plot: a series, with the x parameter left out of the analytic ones when it is an assumption (the

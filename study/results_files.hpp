@@ -23,8 +23,9 @@
 
 namespace vssw::study {
 
-// Bumped when a key or a column changes meaning (never for an added one).
-constexpr int kStudyFormat = 1;
+// Bumped when a key or a column is renamed or changes meaning (never for an added one). 2: ida.csv's peak_over_alpha
+// became peak_over_alpha1, and the unit "alpha" of peak_rotation, rms_difference and theta0 "alpha1".
+constexpr int kStudyFormat = 2;
 
 struct EngineVersion {
     std::string name, version;

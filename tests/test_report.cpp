@@ -512,7 +512,7 @@ TEST(ReportFiles, HostileSuiteNamesAreShownAndNeverRun) {
     EXPECT_TRUE(files.warnings.empty()) << files.warnings.front();
     const fs::path plots = dir.path / "plots";
     const std::string trace = "trace_" + vssw::io::file_stem(wall + "/r0.5") + ".svg";
-    for (const auto& [svg, text] : {std::pair<std::string, std::string>{trace, wall + "/r0.5: theta1 / alpha"},
+    for (const auto& [svg, text] : {std::pair<std::string, std::string>{trace, wall + "/r0.5: theta1 / alpha1"},
                                     {"error_threshold_g.svg", wall},  // a case's tic
                                     {"step_period.svg", "ODE " + wall + "/r0.5"}}) {  // a line's key
         ASSERT_TRUE(fs::exists(plots / svg)) << svg;

@@ -534,6 +534,23 @@ TEST(StudyEnsemble, IdaInPgvReportsItsCollapseIntensitiesAndCurves) {
     EXPECT_NEAR(std::stod(field("beta")), std::abs(logs[0] - logs[1]) / std::sqrt(2.0), kRecomputed);
 }
 
+// An ida.csv of an older vssw (its peak column was peak_over_alpha) is refused naming the header expected, written
+// out here, so the reader can see which column differs.
+TEST(StudyEnsemble, IdaCsvWithAnOldHeaderIsRefusedNamingTheHeaderExpected) {
+    const TempDir dir;
+    std::ofstream(dir / "ida.csv") << "case_id,engine,assumptions,settings,record,scale,measure,intensity,"
+                                      "intensity_unit,peak_over_alpha,overturned\n";
+    try {
+        study::read_ida_csv(dir / "ida.csv");
+        FAIL() << "an ida.csv with the old header was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("its header is not 'case_id,engine,assumptions,settings,record,scale,"
+                                             "measure,intensity,intensity_unit,peak_over_alpha1,overturned'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 // The fractiles of the IDA curves: the lowest intensity reaching a peak on a curve linear between its runs, and
 // quantiles that stay infinite where a record never reaches the peak.
 TEST(StudyEnsemble, IdaFractilesReadTheCurvesLowestCrossing) {

@@ -27,9 +27,9 @@ std::string settings_text(const multibody::EngineSettings& s) {
 std::string case_detail(const ReportInput& in, const SuiteCase& c) {
     switch (c.kind) {
         case CaseKind::threshold: return "constant ground acceleration, bisection";
-        case CaseKind::free: return fmt::format("free vibration from theta1 = {:g} alpha", c.r);
+        case CaseKind::free: return fmt::format("free vibration from theta1 = {:g} alpha1", c.r);
         case CaseKind::step:
-            return fmt::format("free vibration from theta1 = {:g} alpha at engine step {:g} ms{}", c.r,
+            return fmt::format("free vibration from theta1 = {:g} alpha1 at engine step {:g} ms{}", c.r,
                                c.dt ? *c.dt * 1e3 : NAN, c.engine.empty() ? "" : ", " + c.engine + " only");
         case CaseKind::history:
             for (const SuiteRecord& r : in.suite.records)

@@ -123,7 +123,7 @@ std::vector<std::string> record_peak_findings(const ReportInput& in, const std::
         if (n == 0 || sum / n > -kReportRestitutionTarget) continue;
         std::vector<std::string> listed;
         for (const MetricRow* r : peaks)
-            listed.push_back(fmt::format("{:.3g} alpha against {:.3g} on {}", r->engine_value, r->analytic,
+            listed.push_back(fmt::format("{:.3g} alpha1 against {:.3g} on {}", r->engine_value, r->analytic,
                                          r->case_id));
         out.push_back(fmt::format(
             "{} {} rocks much less than the analytic model under the records ({}): on the same wall its impacts keep "

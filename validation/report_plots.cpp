@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The report's plot sections, in the order it shows them.
-const char* const kTraceSection = "Time histories: theta1 / alpha, the analytic model and each engine";
+const char* const kTraceSection = "Time histories: theta1 / alpha1, the analytic model and each engine";
 const char* const kErrorSection = "Relative error per metric, case and engine";
 const char* const kStepSection = "Error against step size";
 
@@ -29,7 +29,7 @@ constexpr int kPlotWidth = 1100, kPlotHeight = 420, kPixelsPerCase = 34;
 constexpr std::size_t kTraceMarkers = 12;
 
 // The trace plots' x axis runs over the motion: from the first to the last time any trace is beyond this share of the
-// largest |theta1| / alpha of the case (1 %: 4 px of a 420 px plot, a line that is flat to the eye), with this share
+// largest |theta1| / alpha1 of the case (1 %: 4 px of a 420 px plot, a line that is flat to the eye), with this share
 // of that span either side.
 constexpr double kMotionFraction = 0.01;
 constexpr double kMotionMargin = 0.04;
@@ -48,11 +48,11 @@ constexpr double kSmallestTarget = std::min({compare::kThresholdTarget, compare:
 
 // A case whose other traces (the engines') all peak below this share of the reference's gets a
 // second trace plot zoomed on them: below a third of the reference they span less than a third of its plot's height,
-// and El Centro's VSSW, 0.03 alpha against 0.47, is a flat line there.
+// and El Centro's VSSW, 0.03 alpha1 against 0.47, is a flat line there.
 constexpr double kZoomRatio = 1.0 / 3.0;
 
 // A zoomed plot's time axis runs where its traces are beyond this share of their largest value: it frames the rocking,
-// not a creep (Bullet's under El Centro x 1.15 on the VSSW: up to 2e-3 alpha for 30 s after a 0.03 alpha peak), which
+// not a creep (Bullet's under El Centro x 1.15 on the VSSW: up to 2e-3 alpha1 for 30 s after a 0.03 alpha1 peak), which
 // the first plot's time axis still covers.
 constexpr double kZoomMotionFraction = 0.1;
 
@@ -62,10 +62,20 @@ std::string trace_title(const Trace& t) {
     return t.assumption.empty() ? "analytic (reference)" : fmt::format("analytic, {} (reference)", t.assumption);
 }
 
-// The error plot's y axis, naming what its points are: the RMS difference's is no relative error.
+// What the error plot's points are, and how the relative error is taken: the RMS difference's is no relative error.
+struct ErrorQuantity {
+    const char* name;
+    const char* definition;  // "" for the RMS difference
+};
+ErrorQuantity error_quantity(const std::string& metric) {
+    if (metric == "rms_difference") return {"RMS difference / analytic peak", ""};
+    return {"relative error", " (engine / reference - 1)"};
+}
+
+// The error plot's y axis, naming what its points are.
 std::string error_axis_label(const std::string& metric) {
-    return metric == "rms_difference" ? "RMS difference / analytic peak [%]"
-                                      : "relative error [%] (engine / reference - 1)";
+    const ErrorQuantity q = error_quantity(metric);
+    return fmt::format("{} [%]{}", q.name, q.definition);
 }
 
 }  // namespace
@@ -204,7 +214,7 @@ io::PlotScript trace_script(const std::string& id, const std::string& name, cons
     }
     s.gp = io::gp_preamble("vssw report", s.plot.name, kPlotWidth, kPlotHeight) +
            // clip two: a line between two points outside the frame is drawn across it (a zoomed plot's reference).
-           fmt::format("set title {}\n{}set ylabel 'theta1 / alpha'\nset clip two\n"
+           fmt::format("set title {}\n{}set ylabel 'theta1 / alpha1'\nset clip two\n"
                        "set xrange [{}:{}]\nset yrange [{}:{}]\n",
                        io::gp_string(s.plot.title), io::gp_xlabel("t [s]"), io::gp_number(w.t0), io::gp_number(w.t1),
                        io::gp_number(w.y0), io::gp_number(w.y1)) +
@@ -233,7 +243,7 @@ std::vector<io::PlotScript> trace_scripts(const ReportInput& in) {
             if (t.case_id == id && t.engine != "analytic") traces.push_back(&t);
         if (traces.empty()) continue;
         scripts.push_back(trace_script(id, "trace_" + io::file_stem(id),
-                                       fmt::format("{}: theta1 / alpha, the analytic model and engines", id), traces,
+                                       fmt::format("{}: theta1 / alpha1, the analytic model and engines", id), traces,
                                        trace_window(traces, kMotionFraction)));
         // When every engine rocks far less than the reference, a second plot zooms on them (the reference then
         // leaves the frame): an engine's small response seen at its own scale.
@@ -248,7 +258,7 @@ std::vector<io::PlotScript> trace_scripts(const ReportInput& in) {
                                                        traces.end());
         scripts.push_back(trace_script(
             id, "trace_" + io::file_stem(id) + "_zoom",
-            fmt::format("{}: zoomed on the engines (the reference, up to {:.3g} alpha, is in the plot above)", id,
+            fmt::format("{}: zoomed on the engines (the reference, up to {:.3g} alpha1, is in the plot above)", id,
                         reference),
             small, trace_window(small, kZoomMotionFraction)));
     }
@@ -263,15 +273,14 @@ std::vector<io::PlotScript> error_scripts(const ReportInput& in) {
         io::PlotScript s;
         s.plot = {kErrorSection, "error_" + io::file_stem(table.metric),
                   table.metric == "rms_difference"
-                      ? std::string("RMS difference of theta1 / alpha over the analytic peak, per case and engine")
+                      ? std::string("RMS difference of theta1 / alpha1 over the analytic peak, per case and engine")
                       : fmt::format("Relative error of the {} per case and engine", metric_title(table.metric)),
                   false};
         // Per case: the engines' errors, then each one's hover text (gnuplot.hpp, gp_hover_layer) in that order.
         const std::size_t engines = table.engines.size();
         s.dat = "# index case_id";
         for (const std::string& e : table.engines) s.dat += ' ' + io::gp_comment(e);
-        s.dat += fmt::format("   ({} in %), then the hover text of each\n",
-                             table.metric == "rms_difference" ? "RMS difference / analytic peak" : "relative error");
+        s.dat += fmt::format("   ({} in %), then the hover text of each\n", error_quantity(table.metric).name);
         for (std::size_t i = 0; i < table.rows.size(); ++i) {
             const MetricTableRow& row = table.rows[i];
             s.dat += fmt::format("{} {}", i, io::gp_data_string(row.case_id));
