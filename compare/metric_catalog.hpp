@@ -29,7 +29,7 @@ enum class SuiteMeasure {
 
 struct MetricInfo {
     const char* name;
-    const char* unit;  // "g", "s", "alpha" (theta1 / alpha1, or theta / alpha of a parapet), "" (a ratio)
+    const char* unit;  // "g", "s", "alpha1" (theta1 / alpha1, or theta / alpha of a parapet), "" (a ratio)
     // A study's view; in_study false: a suite-only metric (its study fields unused).
     bool in_study;
     MetricSource source;
