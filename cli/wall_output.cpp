@@ -22,12 +22,10 @@ struct SameSizeParapet {
 };
 
 SameSizeParapet same_size_parapet(const WallOptions& o) {
-    const ParapetGeometry sharp =
-        with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity);
     try {
-        return {with_corner_radius(sharp, o.corner_radius), true};
+        return {parapet_geometry(o), true};
     } catch (const InputError&) {
-        return {sharp, false};
+        return {with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity), false};
     }
 }
 
