@@ -102,7 +102,7 @@ ClosedForm closed_form(const std::string& metric, const CaseSpec& c, const RunSp
         if (c.xi == 0.0) return std::nullopt;
         return ClosedForm{kNaN, fmt::format("Eq. (20)-(22) are for N = 0 (xi {} here)", c.xi)};
     };
-    if (metric == "threshold_closed_form_g") return {w ? eq12_threshold(*w) / w->g : eq17_parapet_threshold(*p) / p->g, ""};
+    if (metric == "threshold_closed_form_g") return {closed_form_threshold(s) / s.gravity(), ""};
     if (metric == "restitution_closed_form") return {w ? eq19_restitution(*w) : housner_restitution(p->alpha), ""};
     if (metric == "restitution_whole_mechanism")
         return {w ? restitution_whole_mechanism(*w) : housner_restitution(p->alpha), ""};
