@@ -70,16 +70,14 @@ Command add_free_command(CLI::App& root) {
         "energy_balance_error (relative to the largest energy in play), impact_count, first_impact_time (a quarter period), end_time,\n"
         "wall {height, thickness, hinge_ratio (null for a parapet), xi, density, g}.");
     return {cmd, nullptr, [o, cmd](std::ostream& out, std::ostream& err) {
-                if (o->engine != "analytic") {
+                if (!names_analytic_model(o->engine)) {
                     refuse_analytic_options(*cmd, {"--rtol", "--assumptions", "--kinematics", "--impact", "--roller",
                                                    "--strict"},
                                             o->engine);
                     EngineRun run = prepare_engine_free(o->engine, o->engine_settings, o->wall, o->model,
                                                         o->request.theta0_over_alpha, o->request.output_dt);
                     TrajectoryCsv csv(o->csv, o->json);
-                    simulate_engine_run(run);
-                    print_engine_outputs(out, err, csv, run, o->json,
-                                         "Free vibration of the " + describe_wall(o->wall, run.chosen.kind));
+                    run_and_print_engine(out, err, csv, run, o->json, "Free vibration", o->wall);
                     return;
                 }
                 refuse_engine_settings(*cmd);

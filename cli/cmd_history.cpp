@@ -71,16 +71,14 @@ Command add_history_command(CLI::App& root) {
                 std::vector<std::string> inputs;  // the CSV must not replace them
                 for (const auto& file : {o->motion.record, o->motion.vertical_record})
                     if (file) inputs.push_back(*file);
-                if (o->engine != "analytic") {
+                if (!names_analytic_model(o->engine)) {
                     refuse_analytic_options(*cmd, {"--assumptions", "--kinematics", "--impact", "--roller", "--strict",
                                                    "--vertical-record"},
                                             o->engine);
                     EngineRun run = prepare_engine_history(o->engine, o->engine_settings, o->wall, o->model, o->motion,
                                                            o->request.output_dt, o->request.t_end);
                     TrajectoryCsv csv(o->csv, o->json, inputs);
-                    simulate_engine_run(run);
-                    print_engine_outputs(out, err, csv, run, o->json,
-                                         "Time history of the " + describe_wall(o->wall, run.chosen.kind));
+                    run_and_print_engine(out, err, csv, run, o->json, "Time history", o->wall);
                     return;
                 }
                 refuse_engine_settings(*cmd);

@@ -13,6 +13,7 @@
 
 #include "analytic/error.hpp"
 #include "cli/commands.hpp"
+#include "cli/engine_runs.hpp"
 #include "cli/engine_setting_options.hpp"
 #include "cli/friction_option.hpp"
 #include "cli/wall_options.hpp"
@@ -52,8 +53,9 @@ void run_scene(const SceneOptions& o, std::ostream& out, std::ostream& err) {
     if (o.out.empty()) throw InputError("--out: the path is empty (give a file name, or - for standard output)");
     if (o.out == "-" && o.json)
         throw InputError("--out - and --json both write to standard output: give the scene a file name");
-    if (o.engine == "analytic")
-        throw InputError("--engine analytic: the analytic model is no engine library and has no scene file");
+    if (names_analytic_model(o.engine))
+        throw InputError(fmt::format("--engine {}: the analytic model is no engine library and has no scene file",
+                                     o.engine));
     const ChosenModel chosen = choose_model(o.wall, o.model);
     const std::unique_ptr<multibody::Engine> engine = multibody::make_engine(o.engine);
     const multibody::EngineSettings settings = engine_settings_of(*engine, o.settings);

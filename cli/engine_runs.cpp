@@ -16,12 +16,13 @@
 #include "compare/experiments.hpp"
 #include "compare/metrics.hpp"
 #include "compare/response.hpp"
+#include "multibody/host/engine_names.hpp"
 #include "multibody/kit/settings_reader.hpp"
 
 namespace vssw::cli {
 namespace {
 
-// The free vibration lasts as the analytic model's does (until rest, past every impact it has): impacts enough that
+// The free vibration lasts as the paper's model's does (until rest, past every impact it has): impacts enough that
 // free_vibration_duration gives 1.25 times its time to rest (or to overturning).
 constexpr int kEveryImpact = std::numeric_limits<int>::max();
 
@@ -48,6 +49,10 @@ void add_engine_choice(CLI::App& cmd, std::string& engine) {
                    fmt::format("the backend that runs the wall: analytic (the model) or an engine, whose trajectory "
                                "the CSV holds (available: {}) (default analytic)",
                                fmt::join(multibody::available_engines(), ", ")));
+}
+
+bool names_analytic_model(const std::string& engine) {
+    return multibody::canonical_engine(engine).value_or(engine) == "analytic";
 }
 
 void refuse_engine_settings(const CLI::App& cmd) {
@@ -179,8 +184,10 @@ void print_engine_run(std::ostream& out, const EngineRun& run, const std::string
     table.print(out);
 }
 
-void print_engine_outputs(std::ostream& out, std::ostream& err, TrajectoryCsv& csv, const EngineRun& run,
-                          bool json, const std::string& title) {
+void run_and_print_engine(std::ostream& out, std::ostream& err, TrajectoryCsv& csv, EngineRun& run, bool json,
+                          const std::string& what, const WallOptions& wall) {
+    simulate_engine_run(run);
+    const std::string title = what + " of the " + describe_wall(wall, run.chosen.kind);
     csv.write_with(out, [&](std::ostream& to) { write_engine_trajectory_csv(to, run); });
     std::ostream& summary = csv.summary(out, err);
     if (json)

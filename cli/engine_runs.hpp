@@ -32,7 +32,8 @@ inline constexpr const char* kEngineRunHelp =
     "With --engine E (a rigid-body engine instead of the analytic model, the default): the engine's run of the wall,\n"
     "in a child process, with its settings (--dt, --iterations, --set; vssw compare --list-settings); the analytic\n"
     "model's options (--assumptions, --kinematics, --impact, --roller, --rtol, --strict, --vertical-record) are\n"
-    "refused. free's release is from 0.01 to below 1 and its run lasts 1.25 times the analytic model's time to rest.\n"
+    "refused. free's release is from 0.01 to below 1 and its run lasts 1.25 times the paper's model's time to rest\n"
+    "(Eq. 19 impacts, exact kinematics, sharp corners), as vssw compare's free vibration.\n"
     "Its CSV: t [s], theta1_over_alpha1 and theta_dot_over_ref (as the analytic CSV), theta2_over_alpha1,\n"
     "top_dy [m] (the top's rise), E_over_Vr (kinetic + weights' potential + N times the top's rise, over V_r),\n"
     "ag_g, contacts (contact points in use). JSON keys: engine, version, settings {dt, iterations, knobs,\n"
@@ -42,6 +43,9 @@ inline constexpr const char* kEngineRunHelp =
 
 // --engine NAME, default analytic (free, history).
 void add_engine_choice(CLI::App& cmd, std::string& engine);
+// Whether --engine names the analytic model, in any letter case ("Analytic"): make_engine reads an engine's name so,
+// and a raw comparison would run the analytic model as an engine.
+bool names_analytic_model(const std::string& engine);
 // --dt, --iterations or --set given without an engine: InputError naming it.
 void refuse_engine_settings(const CLI::App& cmd);
 
@@ -52,7 +56,7 @@ struct EngineRun {
     ChosenModel chosen;  // the wall, its kind and the reference units (the default model's)
     multibody::WallScene scene;
     multibody::Excitation excitation;
-    double r = 0.0;  // free: the release as a fraction of alpha
+    double r = 0.0;  // free: the release as a fraction of alpha1 (a parapet's alpha)
     std::optional<std::string> record;  // history: the record's path, when the input is one
     multibody::Trajectory trajectory;   // after simulate_engine_run
 };
@@ -76,8 +80,9 @@ void simulate_engine_run(EngineRun& run);
 void write_engine_trajectory_csv(std::ostream& out, const EngineRun& run);
 io::Json to_json(const EngineRun& run);
 void print_engine_run(std::ostream& out, const EngineRun& run, const std::string& title);
-// After the run: the CSV where --csv sends it, then the JSON or the table where the summary goes.
-void print_engine_outputs(std::ostream& out, std::ostream& err, TrajectoryCsv& csv, const EngineRun& run,
-                          bool json, const std::string& title);
+// The run (simulate_engine_run), then the CSV where --csv sends it and the JSON or the table where the summary goes,
+// the table titled "<what> of the <wall>". csv is opened before: after the options are checked, before the run.
+void run_and_print_engine(std::ostream& out, std::ostream& err, TrajectoryCsv& csv, EngineRun& run, bool json,
+                          const std::string& what, const WallOptions& wall);
 
 }  // namespace vssw::cli

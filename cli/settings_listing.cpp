@@ -70,7 +70,7 @@ std::string settings_listing(const std::vector<std::string>& engines, bool json)
     return text +
            "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its range (both\n"
            "ends included; a value outside it is refused), its meaning.\n"
-           "Each default and why it was chosen: docs/engines.md.\n";
+           "Each default and why it was chosen: docs/contributing/engines.md.\n";
 }
 
 }  // namespace vssw::cli

@@ -1,12 +1,13 @@
 #include "cli/wall_output.hpp"
 
+#include <optional>
 #include <ostream>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "analytic/closed_forms.hpp"
-#include "analytic/error.hpp"
+#include "analytic/same_size_parapet.hpp"
 #include "cli/table.hpp"
 
 namespace vssw::cli {
@@ -22,13 +23,10 @@ struct SameSizeParapet {
 };
 
 SameSizeParapet same_size_parapet(const WallOptions& o) {
-    const ParapetGeometry sharp =
-        with_eccentricity(make_parapet(o.height, o.thickness, o.xi, o.density, o.g), o.eccentricity);
-    try {
-        return {with_corner_radius(sharp, o.corner_radius), true};
-    } catch (const InputError&) {
-        return {sharp, false};
-    }
+    const ParapetGeometry sharp = make_parapet(o.height, o.thickness, o.xi, o.density, o.g);
+    if (const std::optional<ParapetGeometry> p = parapet_with_n_and_corners(sharp, o.eccentricity, o.corner_radius))
+        return {*p, true};
+    return {with_eccentricity(sharp, o.eccentricity), false};
 }
 
 }  // namespace

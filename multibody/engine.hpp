@@ -177,8 +177,8 @@ struct EngineFailure : std::runtime_error {
 // The scene an engine runs, in the engine library's own file format (Engine::scene_file): the text the adapter builds
 // its world from, so that a user can open it in the library's own viewer or load it with its own parser.
 struct SceneFile {
-    std::string format;     // "MJCF" (MuJoCo's XML)
-    std::string extension;  // the format's usual file name ending, with its dot (".xml")
+    std::string format;     // "MJCF" (MuJoCo's XML), "URDF" (DART's)
+    std::string extension;  // the format's usual file name ending, with its dot (".xml", ".urdf")
     std::string text;
 };
 
@@ -238,11 +238,8 @@ std::vector<std::string> missing_engines();
 // Engine::display_name() of a backend of this build, from the build-time list (no plugin opened); the name itself
 // otherwise (a report read back without the engine).
 std::string engine_display_name(const std::string& name);
-// For a name that is no backend of this build: the backend it names in other letter cases or by its display name
-// ("ODE", "MuJoCo", "simbody_rigid": ode, mujoco, simbody-rigid), if any.
-std::optional<std::string> engine_meant(const std::string& name);
-// For a name no backend answers to (host/engine_names.hpp canonical_engine, which takes the names above as their
-// backend's): " (did you mean 'mujoco'?)" for the backend nearest to it, else "": messages refusing a name end with it.
+// For a name no backend answers to (host/engine_names.hpp canonical_engine, which takes a backend's name in other
+// letter cases, with '_' for '-', and its display name): " (did you mean 'mujoco'?)" for the backend nearest to it, else "": messages refusing a name end with it.
 std::string engine_name_hint(const std::string& name);
 // The engines compared when none is named (vssw report) or with `vssw compare --engine all`: every backend compiled in
 // except the analytic model, which is the reference, and simbody-rigid, Simbody's second route, whose threshold

@@ -13,6 +13,7 @@
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/intensity_measures.hpp"
+#include "analytic/same_size_parapet.hpp"
 #include "analytic/wall_scene.hpp"
 #include "compare/experiments.hpp"
 #include "compare/case_runner.hpp"
@@ -72,12 +73,7 @@ ParapetGeometry same_size_parapet(const VsswGeometry& w) {
 // (cli/wall_output.cpp): whose threshold (Eq. 17r / 17e) the VSSW's is compared with. nullopt when that parapet cannot
 // stand (N outside its rounded pivot's flat: with_corner_radius refuses it, the r/b itself accepted for the VSSW).
 std::optional<ParapetGeometry> same_parapet_with_n_and_corners(const VsswGeometry& w) {
-    const ParapetGeometry centred = with_eccentricity(same_size_parapet(w), w.eccentricity);
-    try {
-        return with_corner_radius(centred, w.corner_radius);
-    } catch (const InputError&) {
-        return std::nullopt;
-    }
+    return parapet_with_n_and_corners(same_size_parapet(w), w.eccentricity, w.corner_radius);
 }
 
 // A closed form's value, or a reason it has none here.
@@ -102,7 +98,7 @@ ClosedForm closed_form(const std::string& metric, const CaseSpec& c, const RunSp
         if (c.xi == 0.0) return std::nullopt;
         return ClosedForm{kNaN, fmt::format("Eq. (20)-(22) are for N = 0 (xi {} here)", c.xi)};
     };
-    if (metric == "threshold_closed_form_g") return {w ? eq12_threshold(*w) / w->g : eq17_parapet_threshold(*p) / p->g, ""};
+    if (metric == "threshold_closed_form_g") return {closed_form_threshold(s) / s.gravity(), ""};
     if (metric == "restitution_closed_form") return {w ? eq19_restitution(*w) : housner_restitution(p->alpha), ""};
     if (metric == "restitution_whole_mechanism")
         return {w ? restitution_whole_mechanism(*w) : housner_restitution(p->alpha), ""};

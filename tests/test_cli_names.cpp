@@ -88,4 +88,17 @@ TEST(CliNames, AnEnginesRunWritesTheLowerBlocksAngleAsAlpha1) {
     EXPECT_TRUE(j.contains("max_theta_over_alpha1"));
 }
 
+// An engine's name is read in any letter case (make_engine, canonical_engine), so "Analytic" is the analytic model:
+// run as such, not handed to the engine path (which ran it as a rigid-body engine, with other numbers and exit 0).
+TEST(CliNames, TheAnalyticModelIsNamedInAnyLetterCase) {
+    const std::vector<std::string> free = std::vector<std::string>{"free", "--theta0", "0.5"} + kFig6;
+    EXPECT_EQ(run_json(free + std::vector<std::string>{"--engine", "Analytic"}), run_json(free));
+    const std::vector<std::string> history =
+        std::vector<std::string>{"history", "--pulse", "sine", "--amplitude", "0.5", "--pulse-period", "0.5"} + kFig6;
+    EXPECT_EQ(run_json(history + std::vector<std::string>{"--engine", "ANALYTIC"}), run_json(history));
+    const CliResult scene = run_cli(std::vector<std::string>{"scene", "--engine", "Analytic", "--out", "-"} + kFig6);
+    EXPECT_EQ(scene.code, 2);
+    EXPECT_NE(scene.err.find("the analytic model is no engine library"), std::string::npos) << scene.err;
+}
+
 }  // namespace

@@ -172,6 +172,12 @@ TEST(EngineOutputs, SceneWritesTheEnginesFileAndAFailedWriteLeavesWhatWasThere) 
                                                                   "--out", file.string()}),
                     "solref_steps");
     EXPECT_EQ(vssw::testing::read_file(file), "precious\n");
+    // A write that fails after every option is checked and the scene is built: a path under the regular file (root
+    // ignores permissions, not a file where a folder must be).
+    expect_one_line(run_cli(kSceneFig6 + std::vector<std::string>{"--engine", "mujoco", "--out",
+                                                                  (file / "x.xml").string()}),
+                    "cannot write the output file");
+    EXPECT_EQ(vssw::testing::read_file(file), "precious\n");
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 1);  // no temporary left
 }
 

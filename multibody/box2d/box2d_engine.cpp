@@ -92,7 +92,7 @@ std::vector<SettingDescription> setting_table() {
     return FailureLimits::described_after({
         {"dt", "0.001", "s",
          "the step (docs/engines.md \"Box2D\": every target met at 1 ms; Box2D's usual 1/60 s gives the parapet's "
-         "restitution -17 %)"},
+         "restitution -16 %)"},
         {"iterations", std::to_string(kDefaultVelocityIterations), "", "velocity (sequential-impulse) iterations per step"},
         {"position_iterations", std::to_string(kDefaultPositionIterations), "",
          "position-correction iterations per step (they act only on a penetration past b2_linearSlop, 5 mm)", 0.0,

@@ -9,7 +9,7 @@ namespace vssw::multibody {
 
 // The backend of this build a name means, in its canonical name (the one every output prints): the name itself, or it
 // in other letter cases, with '_' for '-', or the backend's display name ("ODE", "Simbody-Rigid", "MuJoCo": ode,
-// simbody-rigid, mujoco; engine_meant() in engine.hpp); nullopt when it names none. make_engine() reads names so too.
+// simbody-rigid, mujoco); nullopt when it names none. make_engine() reads names so too.
 // engine_name_hint() then suggests the backend nearest to the name: " (did you mean 'mujoco'?)" for one at most two
 // letters from it, one per three letters of the name, letter case aside ("mujuco", "bulet"; not "warp" for dart),
 // else "".

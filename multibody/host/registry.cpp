@@ -110,11 +110,6 @@ std::optional<std::string> canonical_engine(const std::string& name) {
     return e ? std::optional<std::string>(e->name) : std::nullopt;
 }
 
-std::optional<std::string> engine_meant(const std::string& name) {
-    const std::optional<std::string> canonical = canonical_engine(name);
-    return canonical == name ? std::nullopt : canonical;
-}
-
 namespace {
 
 // A name this far from a backend's (letters inserted, removed or changed, after folding) is taken as a slip of the

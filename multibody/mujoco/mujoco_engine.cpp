@@ -299,7 +299,7 @@ std::string scene_comment(const WallScene& scene, const Excitation& ex) {
 }
 
 // The whole text the run compiles and scene_file() gives: the comment, the model, and the release as the keyframe
-// 'release' (the run sets the same joints' positions itself; the keyframe is for a reader of the file).
+// 'release', which the run starts from as a reader of the file would.
 std::string scene_xml(const WallScene& scene, const Excitation& ex, const Knobs& k, double dt) {
     std::string qpos;
     for (double v : release_qpos(scene, ex.theta0)) qpos += (qpos.empty() ? "" : " ") + num(v);
@@ -485,12 +485,8 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
     const Block lower = block("lower", s.h_lower, s.h_lower, s.m_lower);
     const bool vssw = scene.vssw.has_value();
     const Block upper = vssw ? block("upper", 2.0 * s.h_lower + s.h_upper, s.h_upper, s.m_upper) : Block{};
-    // The joints are the only degrees of freedom (no free joints): qpos and qvel share their indices, the model's
-    // order the keyframe's (release_qpos).
-    if (lower.q != 0 || (vssw && upper.q != 3))
-        throw EngineFailure("MuJoCo: the blocks' joints are not in the model's order the release assumes");
-    const std::vector<double> release = release_qpos(scene, ex.theta0);
-    for (std::size_t i = 0; i < release.size(); ++i) d->qpos[i] = release[i];
+    // The release is the file's keyframe 'release' (17 digits: the positions release_qpos computed, to the bit).
+    mj_resetDataKeyframe(m, d, 0);
 
     MujocoStepping stepping(m, d, scene, lower, upper);
     RunMonitor monitor("MuJoCo", scene, ex, dt, knobs.limits);
