@@ -1,7 +1,10 @@
 #include "compare/case_runner.hpp"
 
+#include <time.h>
+
 #include <mutex>
 
+#include "analytic/child_fork.hpp"
 #include "analytic/error.hpp"
 #include "compare/experiments.hpp"
 #include "compare/task_pool.hpp"
@@ -15,6 +18,12 @@ constexpr double kThresholdTrials = 10.0;
 constexpr double kTypicalTrialSeconds = 2.5;
 
 }  // namespace
+
+double task_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec) + reaped_children_cpu_seconds();
+}
 
 double response_seconds(const GroundMotion& motion, double response_tail) { return motion.duration() + response_tail; }
 
@@ -49,7 +58,9 @@ int run_cases(const std::vector<CaseTask>& tasks, const std::vector<const multib
     long done = 0;
     const long total = static_cast<long>(tasks.size());
     return run_pool(pool, exclusive, options.threads, [&](std::size_t i) {
+        const double cpu_start = options.task_cpu ? task_cpu_seconds() : 0.0;
         const std::string what = run(i);
+        if (options.task_cpu) options.task_cpu(i, task_cpu_seconds() - cpu_start);
         if (!options.progress) return;
         const std::lock_guard<std::mutex> lock(progress_mutex);
         options.progress(++done, total, what);

@@ -41,7 +41,14 @@ struct CaseRunOptions {
     int threads = 0;  // 0: the available cores
     // Called after each task (serialised, from the worker threads): tasks done, tasks in all, what the task said.
     std::function<void(long done, long total, const std::string& what)> progress;
+    // Called after each task (from its worker thread, not serialised) with the task's CPU time, task_cpu_seconds
+    // around it: where a run's time went, by the caller's parts and engines (bench/suite_profile.cpp).
+    std::function<void(std::size_t task, double cpu_s)> task_cpu;
 };
+
+// CPU time of the calling thread and of the children it has reaped [s] (POSIX): a task runs on one thread from start
+// to end, and its engine runs in children that thread forks and waits for (analytic/child_fork.hpp).
+double task_cpu_seconds();
 
 // Runs run(i) once for every task i on the task pool, longest first; an engine whose runs_concurrently() is false
 // has one task running at a time (other engines' tasks run beside it). run returns the task's progress text. The

@@ -257,6 +257,10 @@ void run_tasks(const Grid& grid, const StudyEngines& engines, const StudyTasks& 
     compare::CaseRunOptions run_options;
     run_options.threads = options.threads;
     run_options.progress = options.progress;
+    if (options.task_cpu)
+        run_options.task_cpu = [&](std::size_t i, double cpu_s) {
+            options.task_cpu(grid.runs()[planned.tasks[i].run].engine, cpu_s);
+        };
     meta.threads = compare::run_cases(planned.plan, engines.list, run_options, [&](std::size_t i) {
         journal->append_text(run_task(i));
         const Task& t = planned.tasks[i];

@@ -24,6 +24,9 @@ struct StudyRunOptions {
     const class MpiSession* mpi = nullptr;
     // Called after each task (serialised): tasks done (this run), tasks to do (this run), what.
     std::function<void(long done, long total, const std::string& what)> progress;
+    // Called after each task run on this process's threads (from its worker thread, not serialised; not under MPI)
+    // with the task's engine and CPU time, its own and its engine runs' children's (compare::task_cpu_seconds).
+    std::function<void(const std::string& engine, double cpu_s)> task_cpu;
     // Where results.csv and manifest.json are written: empty for DIR itself (the journal then removed at the end);
     // the program gives the staging folder that then replaces DIR whole (io/folder_swap.hpp), and DIR's journal
     // goes with the old folder.

@@ -34,6 +34,7 @@ study::StudyRunOptions study_run_options(const PartRunOptions& options) {
     run.threads = options.threads;
     run.commit = options.commit;
     run.progress = options.progress;
+    run.task_cpu = options.task_cpu;
     return run;
 }
 

@@ -31,6 +31,7 @@ struct PartRunOptions {
     std::string gnuplot = "gnuplot";
     std::string commit;  // vssw's, for the study's manifest
     std::function<void(long, long, const std::string&)> progress;  // as StudyRunOptions::progress
+    std::function<void(const std::string&, double)> task_cpu;       // as StudyRunOptions::task_cpu
 };
 // The study runner's options of a part's (threads, commit, progress).
 study::StudyRunOptions study_run_options(const PartRunOptions& options);

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <ctime>
 #include <malloc.h>
 #include <limits>
 #include <memory>
@@ -17,7 +16,6 @@
 
 #include <fmt/format.h>
 
-#include "analytic/child_fork.hpp"
 #include "analytic/error.hpp"
 #include "analytic/simulate.hpp"
 #include "compare/case_runner.hpp"
@@ -50,14 +48,6 @@ constexpr double kFreeTraceSeconds = 10.0;
 constexpr double kHistoryReferenceSampleDt = 1e-3;
 
 // Running ----------------------------------------------------------------------------------------------------------
-
-// CPU time of the calling thread and of the children it has reaped [s] (POSIX): a task runs on one thread from start
-// to end, and its engine runs in children that thread forks and waits for (analytic/child_fork.hpp).
-double task_cpu_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec) + reaped_children_cpu_seconds();
-}
 
 struct TaskOutput {
     double cpu_s = 0.0;
@@ -568,11 +558,11 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
         run_options.progress = [&](long done, long total, const std::string& what) {
             options.progress(static_cast<int>(done), static_cast<int>(total), what);
         };
+    run_options.task_cpu = [&](std::size_t ti, double cpu_s) { outputs[ti].cpu_s = cpu_s; };
     results.threads = compare::run_cases(tasks, engines, run_options, [&](std::size_t ti) {
         const compare::CaseTask& task = tasks[ti];
         const SuiteCase& c = suite.cases[task.case_index];
         const multibody::Engine& engine = *engines[task.engine];
-        const double cpu_start = task_cpu_seconds();
         try {
             const TaskContext x{c,
                                 *in.case_walls[task.case_index],
@@ -588,7 +578,6 @@ SuiteResults run_suite_with_engines(const Suite& suite, const std::vector<const 
             outputs[ti] = TaskOutput{};
             outputs[ti].failure = e.what();
         }
-        outputs[ti].cpu_s = task_cpu_seconds() - cpu_start;
         return fmt::format("{} {}{}", c.id, engine.name(), outputs[ti].failure ? " (failed)" : "");
     });
 
