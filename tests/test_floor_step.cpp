@@ -8,6 +8,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/simulate.hpp"

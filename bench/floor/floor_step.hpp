@@ -28,7 +28,7 @@ struct FloorSettings {
     double dt = 1e-3;        // [s] the step (the impulse engines' default on this wall)
     int iterations = 8;      // sequential-impulse sweeps per step (Box2D's default velocity iterations)
     double mu = 2.0;         // base and hinge friction: high enough that nothing slides (the scene's no-sliding model)
-    double margin = 1e-3;    // [m] gap under which a contact is given to the solver (ODE's and Bullet's default)
+    double margin = 1e-3;    // [m] gap under which a contact is given to the solver (ODE's adapter's default)
     double baumgarte = 0.2;  // share of a penetration removed per step (ODE's erp, Box2D's baumgarte)
 };
 
