@@ -6,7 +6,8 @@ stay inside that engine's adapter folder (the starts of their names: the HEADERS
     analytic, io  <-  motions  <-  cli
     analytic  <-  multibody  <-  compare  <-  study (+ io), stress  <-  validation (+ io)  <-  cli  <-  python
     (python also binds analytic, multibody and compare directly)
-    (bench and tests may include any folder of the program; so may an engine folder's own multibody/<engine>/tests/)
+    (bench and tests may include any folder of the program; so may an engine folder's own multibody/<engine>/tests/;
+    tests may also include bench/, whose floor step, a yardstick, is tested there)
 
 Inside multibody/, three rooms around the interface both sides share (engine.hpp, engine_plugin.hpp at its top):
     multibody/host  (registry, loader, isolation, budget: what the program uses to find and run backends)
@@ -41,7 +42,7 @@ LAYERS = {
     # The typed API binds the library (simulate, compare: multibody/, compare/), the commands through cli.
     "python": {"analytic", "multibody", "compare", "cli"},
     "bench": PROGRAM,
-    "tests": PROGRAM | {"tests"},
+    "tests": PROGRAM | {"tests", "bench"},
 }
 
 

@@ -108,10 +108,24 @@ private:
     double x_ = 0.0;
 };
 
+// Bullet's collision pools sized for this scene: a few bodies, a few pairs. Its defaults (4096 manifolds, 4096
+// collision algorithms) are pools of megabytes that its constructor links element by element, so every run, in a
+// fresh child, faulted in and wrote them: measured with perf, 12 % of a free-vibration run of `vssw free --engine
+// bullet` in the constructor and most of the run's 21 % in the kernel's page faults. A pool that runs out falls back
+// to the heap (Bullet's dispatcher allows it by default), so the size changes where the memory comes from, never the
+// physics: the outputs are byte-identical.
+btDefaultCollisionConstructionInfo small_pools() {
+    constexpr int kPoolSize = 64;  // elements; the wall has at most a handful of pairs at once
+    btDefaultCollisionConstructionInfo info;
+    info.m_defaultMaxPersistentManifoldPoolSize = kPoolSize;
+    info.m_defaultMaxCollisionAlgorithmPoolSize = kPoolSize;
+    return info;
+}
+
 class BulletWorld {
 public:
     BulletWorld(const WallScene& scene, const Knobs& knobs, double theta0)
-        : dispatcher_(&config_), world_(&dispatcher_, &broadphase_, &solver_, &config_), sizes_(block_sizes(scene)) {
+        : config_(small_pools()), dispatcher_(&config_), world_(&dispatcher_, &broadphase_, &solver_, &config_), sizes_(block_sizes(scene)) {
         const double g = scene.gravity();
         world_.setGravity(btVector3(0, -g, 0));
         btContactSolverInfo& info = world_.getSolverInfo();
