@@ -360,7 +360,14 @@ const Grid::PartGrid& Grid::part_of(int id, std::size_t& index) const {
 // A case's levels by key, and how messages name them ("height 4, hinge 0.7").
 struct Grid::CaseLevels {
     std::map<std::string, Level> level;
-    std::string described;
+    std::vector<std::pair<std::string, Level>> in_order;  // the part's axes in order, for described()
+
+    // Made only for a message: formatting it for every case cost more than building the case's wall.
+    std::string described() const {
+        std::string text;
+        for (const auto& [key, value] : in_order) text += fmt::format("{}{} {}", text.empty() ? "" : ", ", key, to_text(value));
+        return text;
+    }
 
     bool has(const char* k) const { return level.count(k) > 0; }
     double num(const char* k, double fallback) const {
@@ -380,7 +387,7 @@ CaseSpec Grid::make_case(int id) const {
     const PartSpec& part = spec_.parts[c.part];
     const auto refused = [&](const std::string& why) {
         return InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path,
-                                      part.where.empty() ? "" : part.where + ", ", id, l.described, why));
+                                      part.where.empty() ? "" : part.where + ", ", id, l.described(), why));
     };
     try {
         build_wall(c, l);
@@ -462,7 +469,7 @@ Grid::CaseLevels Grid::case_levels(CaseSpec& c) const {
     for (std::size_t i = 0; i < axes.size(); ++i) {
         c.levels.push_back(axes[i]->levels[d[i]]);
         l.level[axes[i]->key] = c.levels.back();
-        l.described += fmt::format("{}{} {}", l.described.empty() ? "" : ", ", axes[i]->key, to_text(c.levels.back()));
+        l.in_order.emplace_back(axes[i]->key, c.levels.back());
     }
     std::size_t wall_index = 0;
     const std::vector<const Axis*> walls(axes.begin(), axes.begin() + static_cast<std::ptrdiff_t>(part.wall.size()));

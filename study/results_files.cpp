@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <ostream>
 #include <set>
 #include <string>
@@ -46,20 +47,29 @@ void write_results_csv(std::ostream& out, const Grid& grid, const std::vector<Re
     out << '\n';
     const StudySpec& spec = grid.spec();
     int cached_id = 0;
+    std::size_t cached_run = 0;
     CaseSpec c;
+    std::string case_fields;  // the row's start, the same for every metric of one case and run (rows come so sorted)
+    std::string line;
     for (const ResultRow& r : rows) {
-        if (r.case_id != cached_id) {
-            c = grid.make_case(r.case_id);
-            cached_id = r.case_id;
-        }
+        if (r.case_id != cached_id) c = grid.make_case(r.case_id);
         const RunSpec& run = grid.runs().at(r.run);
+        if (r.case_id != cached_id || r.run != cached_run || case_fields.empty()) {
+            case_fields = fmt::format("{},{}", r.case_id, io::csv_field(run.engine));
+            for (const std::string& v : grid.column_values(c, run)) (case_fields += ',') += io::csv_field(v);
+            cached_id = r.case_id;
+            cached_run = r.run;
+        }
         const std::string& metric = spec.metrics.at(r.metric);
-        out << r.case_id << ',' << io::csv_field(run.engine);
-        for (const std::string& v : grid.column_values(c, run)) out << ',' << io::csv_field(v);
+        line = case_fields;
         // Shortest exact form: a value reads back to the same double, and a tidy file stays short.
-        const std::string value = std::isfinite(r.value) ? fmt::format("{}", r.value) : "";
-        out << ',' << metric << ',' << value << ',' << io::csv_field(metric_info(metric).unit) << ','
-            << io::csv_field(r.status) << ',' << io::csv_field(r.warnings) << '\n';
+        ((line += ',') += metric) += ',';
+        if (std::isfinite(r.value)) fmt::format_to(std::back_inserter(line), "{}", r.value);
+        (line += ',') += io::csv_field(metric_info(metric).unit);
+        (line += ',') += io::csv_field(r.status);
+        (line += ',') += io::csv_field(r.warnings);
+        line += '\n';
+        out << line;
     }
 }
 
