@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <limits>
@@ -359,7 +360,7 @@ const Grid::PartGrid& Grid::part_of(int id, std::size_t& index) const {
 
 // A case's levels by key, and how messages name them ("height 4, hinge 0.7").
 struct Grid::CaseLevels {
-    std::map<std::string, Level> level;
+    std::map<std::string, Level, std::less<>> level;  // std::less<>: looked up by a key's literal, with no string made
     std::vector<std::pair<std::string, Level>> in_order;  // the part's axes in order, for described()
 
     // Made only for a message: formatting it for every case cost more than building the case's wall.
