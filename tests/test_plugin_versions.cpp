@@ -17,22 +17,17 @@
 #include "multibody/host/registry.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/engine_available.hpp"
+#include "tests/mapped_files.hpp"
 #include "tests/temp_files.hpp"
 
 namespace {
 
 using namespace vssw;
+using vssw::testing::mapped_files;
 using vssw::testing::run_cli;
 namespace fs = std::filesystem;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::string mapped_files() {
-    std::ifstream maps("/proc/self/maps");
-    std::stringstream text;
-    text << maps.rdbuf();
-    return text.str();
-}
 
 std::string read_whole(const fs::path& path) {
     std::ifstream file(path);
