@@ -16,15 +16,21 @@ std::string version_text() {
     const std::string commit = VSSW_GIT_COMMIT;
     std::string text = fmt::format("vssw {} ({})\n", VSSW_VERSION,
                                    commit.empty() ? "built outside a git checkout" : "commit " + commit);
-    // Each engine's version comes from its adapter, which opens its plugin: a plugin that cannot be opened is said
-    // in its place (the version stays printable whatever is missing).
+    // Each engine's version as recorded beside its plugin when the plugin was built, read without opening it; where
+    // that record is missing or not the plugin's, from its adapter, which opens the plugin: a plugin that cannot be
+    // opened is said in its place (the version stays printable whatever is missing).
     text += "backends in this build:\n";
     std::vector<std::string> plugin_lines;
     for (const std::string& name : multibody::available_engines()) {
         std::string version, where;
         try {
-            version = multibody::make_engine_in_process(name)->version();
-            where = multibody::engine_plugin_path(name);
+            if (const auto recorded = multibody::recorded_engine_version(name)) {
+                version = recorded->version;
+                where = recorded->plugin_path;
+            } else {
+                version = multibody::make_engine_in_process(name)->version();
+                where = multibody::engine_plugin_path(name);
+            }
         } catch (const std::exception& e) {
             version = fmt::format("not available: {}", e.what());
         }

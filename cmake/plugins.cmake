@@ -42,7 +42,9 @@ function(vssw_add_plugin target)
   # --exclude-libs: the static libraries' symbols (vssw_engine_kit, vssw_analytic) hidden as well. --no-undefined: a
   # symbol the plugin needs and no library it links provides fails the link, not a user's run at dlopen. Not with the
   # sanitizers: clang leaves their runtime in the program, whose symbols the plugin finds at dlopen.
-  target_link_options(${target} PRIVATE -Wl,--exclude-libs,ALL)
+  # --build-id: the note that names the linked file (multibody/host/plugin_versions.hpp: the record of its engines'
+  # versions is tied to it; most toolchains write it by default, this makes it sure).
+  target_link_options(${target} PRIVATE -Wl,--exclude-libs,ALL -Wl,--build-id)
   if(NOT VSSW_SANITIZE)
     target_link_options(${target} PRIVATE -Wl,--no-undefined)
   endif()

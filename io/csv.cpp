@@ -1,6 +1,8 @@
 #include "io/csv.hpp"
 
 #include <cmath>
+#include <istream>
+#include <streambuf>
 
 #include <fmt/format.h>
 
@@ -23,15 +25,19 @@ std::string csv_number(double value) { return std::isfinite(value) ? fmt::format
 bool read_csv_record(std::istream& in, std::vector<std::string>& fields) {
     fields.clear();
     if (in.peek() == std::char_traits<char>::eof()) return false;
+    // Byte by byte from the stream's buffer: the stream's own get() builds a sentry for every byte, which made reading
+    // a study's results back cost more than writing them. The stream's state ends as get() would leave it.
+    std::streambuf& buffer = *in.rdbuf();
+    constexpr int kEnd = std::char_traits<char>::eof();
     std::string field;
-    bool quoted = false, in_quotes = false;
-    for (int c = in.get(); c != std::char_traits<char>::eof(); c = in.get()) {
+    bool quoted = false, in_quotes = false, ended = true;
+    for (int c = buffer.sbumpc(); c != kEnd; c = buffer.sbumpc()) {
         const char ch = static_cast<char>(c);
         if (in_quotes) {
             if (ch == '"') {
-                if (in.peek() == '"') {
+                if (buffer.sgetc() == '"') {
                     field += '"';
-                    in.get();
+                    buffer.sbumpc();
                 } else {
                     in_quotes = false;
                 }
@@ -47,11 +53,13 @@ bool read_csv_record(std::istream& in, std::vector<std::string>& fields) {
             field.clear();
             quoted = false;
         } else if (ch == '\n') {
+            ended = false;
             break;
         } else if (ch != '\r') {
             field += ch;
         }
     }
+    if (ended) in.setstate(std::ios::eofbit | std::ios::failbit);  // as get() leaves a stream it found at its end
     if (in_quotes) throw InputError("CSV: a quoted field is not closed before the end of the file");
     fields.push_back(field);
     return true;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <limits>
@@ -44,6 +45,31 @@ const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "speci
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
+
+// What column_values writes in a column, by the column's name (column_code); other: the level the file gives, if any.
+enum class ColumnCode {
+    model, height, thickness, hinge, xi, density, g, kinematics, impact, roller, kind, theta0, file, scale, pga,
+    level_key, intensity, intensity_unit, shape, amplitude, pulse_period, alpha, R, alpha1, alpha2, R1, settings,
+    wall_name, record_name, other
+};
+
+ColumnCode column_code(const std::string& col) {
+    static const std::map<std::string, ColumnCode> codes = {
+        {"model", ColumnCode::model}, {"height", ColumnCode::height}, {"thickness", ColumnCode::thickness},
+        {"hinge", ColumnCode::hinge}, {"xi", ColumnCode::xi}, {"density", ColumnCode::density},
+        {"g", ColumnCode::g}, {"kinematics", ColumnCode::kinematics}, {"impact", ColumnCode::impact},
+        {"roller", ColumnCode::roller}, {"kind", ColumnCode::kind}, {"theta0", ColumnCode::theta0},
+        {"file", ColumnCode::file}, {"scale", ColumnCode::scale}, {"pga", ColumnCode::pga},
+        {"intensity", ColumnCode::intensity}, {"intensity_unit", ColumnCode::intensity_unit},
+        {"shape", ColumnCode::shape}, {"amplitude", ColumnCode::amplitude},
+        {"pulse_period", ColumnCode::pulse_period}, {"alpha", ColumnCode::alpha}, {"R", ColumnCode::R},
+        {"alpha1", ColumnCode::alpha1}, {"alpha2", ColumnCode::alpha2}, {"R1", ColumnCode::R1},
+        {"settings", ColumnCode::settings}, {"wall_name", ColumnCode::wall_name},
+        {"record_name", ColumnCode::record_name}};
+    if (const auto it = codes.find(col); it != codes.end()) return it->second;
+    const bool level_key = std::find(kLevelKeys.begin(), kLevelKeys.end(), col) != kLevelKeys.end();
+    return level_key ? ColumnCode::level_key : ColumnCode::other;
+}
 // Then wall_name and record_name when a part names its walls or records, then settings.
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : std::string(); }
@@ -349,6 +375,15 @@ void Grid::list_columns() {
     if (named(&NameTemplates::wall_name)) columns_.push_back("wall_name");
     if (named(&NameTemplates::record_name)) columns_.push_back("record_name");
     columns_.push_back("settings");
+    // What each column holds and which axis of each part gives it, once: column_values writes every row's.
+    for (const std::string& col : columns_) column_codes_.push_back(static_cast<int>(column_code(col)));
+    for (PartGrid& g : parts_)
+        for (const std::string& col : columns_) {
+            int axis = -1;
+            for (std::size_t i = 0; i < g.axes.size() && axis < 0; ++i)
+                if (g.axes[i]->key == col) axis = static_cast<int>(i);
+            g.column_axis.push_back(axis);
+        }
 }
 
 const Grid::PartGrid& Grid::part_of(int id, std::size_t& index) const {
@@ -359,8 +394,15 @@ const Grid::PartGrid& Grid::part_of(int id, std::size_t& index) const {
 
 // A case's levels by key, and how messages name them ("height 4, hinge 0.7").
 struct Grid::CaseLevels {
-    std::map<std::string, Level> level;
-    std::string described;
+    std::map<std::string, Level, std::less<>> level;  // std::less<>: looked up by a key's literal, with no string made
+    std::vector<std::pair<std::string, Level>> in_order;  // the part's axes in order, for described()
+
+    // Made only for a message: formatting it for every case cost more than building the case's wall.
+    std::string described() const {
+        std::string text;
+        for (const auto& [key, value] : in_order) text += fmt::format("{}{} {}", text.empty() ? "" : ", ", key, to_text(value));
+        return text;
+    }
 
     bool has(const char* k) const { return level.count(k) > 0; }
     double num(const char* k, double fallback) const {
@@ -380,7 +422,7 @@ CaseSpec Grid::make_case(int id) const {
     const PartSpec& part = spec_.parts[c.part];
     const auto refused = [&](const std::string& why) {
         return InputError(fmt::format("{} {}: {}case {} ({}): {}", kWhat, spec_.path,
-                                      part.where.empty() ? "" : part.where + ", ", id, l.described, why));
+                                      part.where.empty() ? "" : part.where + ", ", id, l.described(), why));
     };
     try {
         build_wall(c, l);
@@ -462,7 +504,7 @@ Grid::CaseLevels Grid::case_levels(CaseSpec& c) const {
     for (std::size_t i = 0; i < axes.size(); ++i) {
         c.levels.push_back(axes[i]->levels[d[i]]);
         l.level[axes[i]->key] = c.levels.back();
-        l.described += fmt::format("{}{} {}", l.described.empty() ? "" : ", ", axes[i]->key, to_text(c.levels.back()));
+        l.in_order.emplace_back(axes[i]->key, c.levels.back());
     }
     std::size_t wall_index = 0;
     const std::vector<const Axis*> walls(axes.begin(), axes.begin() + static_cast<std::ptrdiff_t>(part.wall.size()));
@@ -688,55 +730,58 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
     const bool pulse = kind == ExcitationKind::pulse;
     std::vector<std::string> v;
     v.reserve(columns_.size());
-    // A number the file gives is written as the file gives it (a derived one may differ in its last digit).
-    const std::vector<const Axis*>& axes = parts_[c.part].axes;
-    const auto given = [&](const std::string& col) -> const Level* {
-        for (std::size_t i = 0; i < axes.size(); ++i)
-            if (axes[i]->key == col) return &c.levels[i];
-        return nullptr;
-    };
-    for (const std::string& col : columns_) {
-        // (hinge "eq15" too: the resolved ratio follows from xi by Eq. 15, and the level groups the rows as the file
-        // does.)
-        const bool level_key = std::find(kLevelKeys.begin(), kLevelKeys.end(), col) != kLevelKeys.end();
-        if (const Level* l = given(col); l && (std::holds_alternative<double>(*l) || col == "hinge") && !level_key &&
-                                         col != "scale") {
-            v.push_back(col == "hinge" && !vssw ? "" : to_text(*l));
+    const std::vector<int>& column_axis = parts_[c.part].column_axis;
+    using C = ColumnCode;
+    for (std::size_t k = 0; k < columns_.size(); ++k) {
+        const std::string& col = columns_[k];
+        const auto code = static_cast<C>(column_codes_[k]);
+        const Level* given = column_axis[k] < 0 ? nullptr : &c.levels[static_cast<std::size_t>(column_axis[k])];
+        // A number the file gives is written as the file gives it (a derived one may differ in its last digit);
+        // hinge "eq15" too: the resolved ratio follows from xi by Eq. 15, and the level groups the rows as the file
+        // does.
+        const bool level_key = code == C::pga || code == C::level_key;
+        if (given && (std::holds_alternative<double>(*given) || code == C::hinge) && !level_key && code != C::scale) {
+            v.push_back(code == C::hinge && !vssw ? "" : to_text(*given));
             continue;
         }
-        if (col == "model") v.push_back(c.model);
-        else if (col == "height") v.push_back(number(c.height));
-        else if (col == "thickness") v.push_back(number(c.thickness));
-        else if (col == "hinge") v.push_back(vssw ? number(c.hinge) : "");
-        else if (col == "xi") v.push_back(number(c.xi));
-        else if (col == "density") v.push_back(number(c.density));
-        else if (col == "g") v.push_back(number(c.g));
-        else if (col == "kinematics") v.push_back(analytic && vssw ? to_text(run.assumptions[0]) : "");
-        else if (col == "impact") v.push_back(analytic ? to_text(run.assumptions[1]) : "");
-        else if (col == "roller") v.push_back(analytic && vssw ? to_text(run.assumptions[2]) : "");
-        else if (col == "kind") v.push_back(part.kind_text());
-        else if (col == "theta0") v.push_back(c.theta0 > 0.0 ? number(c.theta0) : "");
-        else if (col == "file") v.push_back(c.file);
-        else if (col == "scale") v.push_back(record_kind ? number(c.scale) : "");
-        else if (col == "pga") v.push_back(record_kind ? number(c.pga_g) : "");
-        else if (level_key) v.push_back(record_kind && col == to_string(c.intensity.measure) ? number(c.intensity_value) : "");
-        else if (col == "intensity") v.push_back(part.ensemble ? part.ensemble->intensity : intensity_of(part));
-        else if (col == "intensity_unit") {
+        switch (code) {
+        case C::model: v.push_back(c.model); break;
+        case C::height: v.push_back(number(c.height)); break;
+        case C::thickness: v.push_back(number(c.thickness)); break;
+        case C::hinge: v.push_back(vssw ? number(c.hinge) : ""); break;
+        case C::xi: v.push_back(number(c.xi)); break;
+        case C::density: v.push_back(number(c.density)); break;
+        case C::g: v.push_back(number(c.g)); break;
+        case C::kinematics: v.push_back(analytic && vssw ? to_text(run.assumptions[0]) : ""); break;
+        case C::impact: v.push_back(analytic ? to_text(run.assumptions[1]) : ""); break;
+        case C::roller: v.push_back(analytic && vssw ? to_text(run.assumptions[2]) : ""); break;
+        case C::kind: v.push_back(part.kind_text()); break;
+        case C::theta0: v.push_back(c.theta0 > 0.0 ? number(c.theta0) : ""); break;
+        case C::file: v.push_back(c.file); break;
+        case C::scale: v.push_back(record_kind ? number(c.scale) : ""); break;
+        case C::pga: v.push_back(record_kind ? number(c.pga_g) : ""); break;
+        case C::level_key:
+            v.push_back(record_kind && col == to_string(c.intensity.measure) ? number(c.intensity_value) : "");
+            break;
+        case C::intensity: v.push_back(part.ensemble ? part.ensemble->intensity : intensity_of(part)); break;
+        case C::intensity_unit: {
             const std::string word = part.ensemble ? part.ensemble->intensity : intensity_of(part);
             v.push_back(word.empty() ? "" : intensity_unit(parse_intensity_measure(word)));
+            break;
         }
-        else if (col == "shape") v.push_back(c.shape);
-        else if (col == "amplitude") v.push_back(pulse ? number(c.amplitude_g) : "");
-        else if (col == "pulse_period") v.push_back(pulse ? number(c.pulse_period) : "");
-        else if (col == "alpha") v.push_back(number(c.alpha));
-        else if (col == "R") v.push_back(number(c.R));
-        else if (col == "alpha1") v.push_back(vssw ? number(c.scene.vssw->alpha1) : "");
-        else if (col == "alpha2") v.push_back(vssw ? number(c.scene.vssw->alpha2) : "");
-        else if (col == "R1") v.push_back(vssw ? number(c.scene.vssw->R1) : "");
-        else if (col == "settings") v.push_back(run.settings_text);
-        else if (col == "wall_name") v.push_back(wall_name(c));
-        else if (col == "record_name") v.push_back(record_name(c));
-        else v.push_back(given(col) ? to_text(*given(col)) : "");  // units, duration, tolerance, max_pga, response_tail
+        case C::shape: v.push_back(c.shape); break;
+        case C::amplitude: v.push_back(pulse ? number(c.amplitude_g) : ""); break;
+        case C::pulse_period: v.push_back(pulse ? number(c.pulse_period) : ""); break;
+        case C::alpha: v.push_back(number(c.alpha)); break;
+        case C::R: v.push_back(number(c.R)); break;
+        case C::alpha1: v.push_back(vssw ? number(c.scene.vssw->alpha1) : ""); break;
+        case C::alpha2: v.push_back(vssw ? number(c.scene.vssw->alpha2) : ""); break;
+        case C::R1: v.push_back(vssw ? number(c.scene.vssw->R1) : ""); break;
+        case C::settings: v.push_back(run.settings_text); break;
+        case C::wall_name: v.push_back(wall_name(c)); break;
+        case C::record_name: v.push_back(record_name(c)); break;
+        case C::other: v.push_back(given ? to_text(*given) : ""); break;  // units, duration, tolerance, max_pga, ...
+        }
     }
     return v;
 }

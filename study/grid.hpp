@@ -150,6 +150,7 @@ private:
         std::vector<bool> alone;                 // per axis: whether it is one of them
         std::size_t size = 1, first = 1;  // its ids: how many (its product's size, or its cases') and the first
         bool numbered = false;            // its ids are its cases one after the other, not positions in the product
+        std::vector<int> column_axis;     // per column of columns(): the axis that gives it, -1 when none does
     };
     // The levels (an index into each axis's) of a part's case `index` (its id - first).
     std::vector<std::size_t> levels_at(const PartGrid& g, std::size_t index) const;
@@ -181,6 +182,7 @@ private:
     std::map<std::size_t, std::pair<Level, Level>> parapet_run_;  // per part: the kinematics and roller levels a
                                                                   // parapet's analytic runs use
     std::vector<std::string> columns_;
+    std::vector<int> column_codes_;  // per column: what column_values writes in it (grid.cpp, ColumnCode)
     std::string identity_;
     std::optional<CaseSpec> one_case_;  // a grid of one case built by the caller
 };

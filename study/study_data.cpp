@@ -60,6 +60,15 @@ public:
         index_[""] = kEmptyLevel;
     }
     std::uint32_t id(const std::string& field) {
+        // A column repeats a few texts over many rows: each distinct one is made canonical once.
+        if (const auto seen = raw_index_.find(field); seen != raw_index_.end()) return seen->second;
+        const std::uint32_t level = canonical_id(field);
+        raw_index_.emplace(field, level);
+        return level;
+    }
+
+private:
+    std::uint32_t canonical_id(const std::string& field) {
         const std::string text = canonical_level(field);
         const auto [it, inserted] = index_.try_emplace(text, static_cast<std::uint32_t>(column_.texts.size()));
         if (inserted) {
@@ -70,9 +79,9 @@ public:
         return it->second;
     }
 
-private:
     ColumnLevels& column_;
-    std::unordered_map<std::string, std::uint32_t> index_;
+    std::unordered_map<std::string, std::uint32_t> index_;      // by canonical text
+    std::unordered_map<std::string, std::uint32_t> raw_index_;  // by the text as the file gives it
 };
 
 std::size_t header_index(const std::vector<std::string>& header, const std::string& name, const fs::path& path) {

@@ -24,6 +24,7 @@
 #include "multibody/host/registry.hpp"
 #include "tests/cli_runner.hpp"
 #include "tests/engine_available.hpp"
+#include "tests/mapped_files.hpp"
 #include "tests/temp_files.hpp"
 #include "vssw_engine_facts.hpp"  // each engine's LIBRARY (generated: cmake/engines.cmake)
 
@@ -31,16 +32,10 @@ namespace {
 
 using namespace vssw;
 using multibody::EngineFailure;
+using vssw::testing::mapped_files;
 using vssw::testing::run_cli;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::string mapped_files() {
-    std::ifstream maps("/proc/self/maps");
-    std::stringstream text;
-    text << maps.rdbuf();
-    return text.str();
-}
 
 // The engine libraries (each engine folder's LIBRARY fact) but `except`'s, by the starts of their shared objects' names.
 std::vector<std::string> engine_libraries(const std::string& except = "") {

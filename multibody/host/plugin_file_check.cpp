@@ -72,6 +72,27 @@ std::string cut_short(int fd, std::uint64_t size) {
                        size, need);
 }
 
+// The descriptor of the GNU build-id note among the `size` bytes of notes read into `notes`, as hex ("" when none).
+// Each note: its header, then its name and its descriptor, each padded to `align` bytes (4, or 8 for a segment
+// aligned so).
+std::string build_id_in(const std::vector<unsigned char>& notes, std::uint64_t align) {
+    const auto padded = [align](std::uint64_t n) { return (n + align - 1) / align * align; };
+    for (std::uint64_t at = 0; at + sizeof(ElfW(Nhdr)) <= notes.size();) {
+        ElfW(Nhdr) note{};
+        std::memcpy(&note, notes.data() + at, sizeof note);
+        const std::uint64_t name = at + sizeof note, desc = name + padded(note.n_namesz);
+        if (desc + note.n_descsz > notes.size()) return "";
+        if (note.n_type == NT_GNU_BUILD_ID && note.n_namesz == 4 &&
+            std::memcmp(notes.data() + name, "GNU", 4) == 0) {
+            std::string hex;
+            for (std::uint64_t i = 0; i < note.n_descsz; ++i) hex += fmt::format("{:02x}", notes[desc + i]);
+            return hex;
+        }
+        at = desc + padded(note.n_descsz);
+    }
+    return "";
+}
+
 }  // namespace
 
 std::string plugin_file_problem(const std::string& path) {
@@ -82,6 +103,27 @@ std::string plugin_file_problem(const std::string& path) {
     const std::string why = ::fstat(fd, &file) == 0 ? cut_short(fd, static_cast<std::uint64_t>(file.st_size)) : "";
     ::close(fd);
     return why;
+}
+
+std::string plugin_build_note(const std::string& path) {
+    constexpr std::uint64_t kLargestNotes = 1 << 16;  // a library's notes are a few hundred bytes
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return "";
+    std::string id;
+    ElfW(Ehdr) header{};
+    if (read_at(fd, &header, sizeof header, 0) && std::memcmp(header.e_ident, ELFMAG, SELFMAG) == 0 &&
+        header.e_ident[EI_CLASS] == kNativeClass && header.e_phentsize == sizeof(ElfW(Phdr))) {
+        for (std::size_t i = 0; id.empty() && i < header.e_phnum; ++i) {
+            ElfW(Phdr) segment{};
+            if (!read_at(fd, &segment, sizeof segment, header.e_phoff + i * sizeof segment)) break;
+            if (segment.p_type != PT_NOTE || segment.p_filesz > kLargestNotes) continue;
+            std::vector<unsigned char> notes(segment.p_filesz);
+            if (read_at(fd, notes.data(), notes.size(), segment.p_offset))
+                id = build_id_in(notes, segment.p_align == 8 ? 8 : 4);
+        }
+    }
+    ::close(fd);
+    return id;
 }
 
 }  // namespace vssw::multibody

@@ -14,4 +14,9 @@ namespace vssw::multibody {
 // from the file without mapping it.
 std::string plugin_file_problem(const std::string& path);
 
+// The GNU build-id the linker wrote into the library at `path` (its NT_GNU_BUILD_ID note, a hash of the linked file
+// that stripping keeps), as lower-case hex, read from the file without opening it as a library; "" when the file is
+// not an ELF library of this machine's class or has no such note.
+std::string plugin_build_note(const std::string& path);
+
 }  // namespace vssw::multibody

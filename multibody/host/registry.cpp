@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -7,7 +8,9 @@
 #include "multibody/engine.hpp"
 #include "multibody/engine_plugin.hpp"
 #include "multibody/host/isolated_engine.hpp"
+#include "multibody/host/plugin_file_check.hpp"
 #include "multibody/host/plugin_loader.hpp"
+#include "multibody/host/plugin_versions.hpp"
 #include "multibody/host/engine_names.hpp"
 #include "multibody/host/registry.hpp"
 #include "vssw_engine_facts.hpp"  // kEngineFacts (generated: cmake/engines.cmake)
@@ -162,6 +165,17 @@ std::string engine_plugin_path(const std::string& name) {
     std::string path;
     (void)engine_plugin(known, &path);
     return path;
+}
+
+std::optional<RecordedVersion> recorded_engine_version(const std::string& name) {
+    const KnownEngine& known = require_built(name);
+    if (!known.plugin) return std::nullopt;
+    const std::string path = find_plugin(plugin_file_of(known));
+    if (path.empty() || !plugin_file_problem(path).empty()) return std::nullopt;
+    const std::map<std::string, std::string> versions = recorded_versions(path);
+    const auto it = versions.find(known.name);
+    if (it == versions.end()) return std::nullopt;
+    return RecordedVersion{it->second, path};
 }
 
 std::unique_ptr<Engine> make_engine(const std::string& name) {

@@ -72,17 +72,53 @@ def _check_interpreter():
 _locate_installed_files()
 _check_interpreter()
 
-from . import _core, cli  # noqa: E402 (after the environment is set)
-from ._api import compare, data_dir, engine_settings, engines, report, simulate, study  # noqa: E402
-from ._errors import BoundsError, Error, InputError, SimulationError  # noqa: E402
-from ._results import (ClosedForms, Comparison, Impact, Metric, ReportResult, ResponseComparison,  # noqa: E402
-                       ResponseRun, Simulation, Slip, SlipAt, StudyResult)
-from .cli import export_scene, free, help, history, run, wall  # noqa: E402,A004 (help: the program's, as before)
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (type checkers take the name as True)
 
-# The project's version (`project()` in CMakeLists.txt, the one place it is set); the commit the module was built
-# from is __commit__ ("" outside a git checkout; "+changes" when the work tree differed from it).
-__version__ = _core.VERSION
-__commit__ = _core.COMMIT
+from ._errors import BoundsError, Error, InputError, SimulationError  # noqa: E402
+
+# The rest is imported when first named (vssw.simulate, from vssw import Comparison, ...), not by `import vssw`: the
+# typed API's modules (their dataclasses, typing, tempfile, decimal) and the compiled part cost three times what the
+# package's own first line does, and a script that only checks vssw.__version__ or catches vssw.InputError needs
+# none of it. Each name below: the module that holds it; "" for the module itself (vssw.cli).
+_LAZY = {
+    **dict.fromkeys(["compare", "data_dir", "engine_settings", "engines", "report", "simulate", "study"], "._api"),
+    **dict.fromkeys(["ClosedForms", "Comparison", "Impact", "Metric", "ReportResult", "ResponseComparison",
+                     "ResponseRun", "Simulation", "Slip", "SlipAt", "StudyResult"], "._results"),
+    **dict.fromkeys(["export_scene", "free", "help", "history", "run", "wall"], ".cli"),
+    "cli": "",
+    # The project's version (`project()` in CMakeLists.txt, the one place it is set); the commit the module was built
+    # from is __commit__ ("" outside a git checkout; "+changes" when the work tree differed from it).
+    "__version__": "._core",
+    "__commit__": "._core",
+}
+_CORE_NAMES = {"__version__": "VERSION", "__commit__": "COMMIT"}
+
+
+def __getattr__(name):
+    """A name of _LAZY, imported on first use and kept (PEP 562: called only for names the module does not hold)."""
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import importlib
+
+    module = importlib.import_module(_LAZY[name] or "." + name, __name__)
+    value = module if not _LAZY[name] else getattr(module, _CORE_NAMES.get(name, name))
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_LAZY))
+
+
+if TYPE_CHECKING:  # what the names are, to a type checker (which does not run __getattr__)
+    from . import _core, cli
+    from ._api import compare, data_dir, engine_settings, engines, report, simulate, study
+    from ._results import (ClosedForms, Comparison, Impact, Metric, ReportResult, ResponseComparison, ResponseRun,
+                           Simulation, Slip, SlipAt, StudyResult)
+    from .cli import export_scene, free, help, history, run, wall  # noqa: A004 (help: the program's, as before)
+
+    __version__: str = _core.VERSION
+    __commit__: str = _core.COMMIT
 
 # help() is left out of __all__: `from vssw import *` must not hide the built-in help.
 __all__ = ["simulate", "compare", "study", "report", "engines", "engine_settings", "data_dir", "wall", "free",

@@ -1,0 +1,91 @@
+// The study's results files as text: a CSV record read field by field as written by hand here (quotes, doubled
+// quotes, a line break in a field, CRLF, a last line without its break), and results.json's rows written as text,
+// each the line nlohmann's own dump gives the same row built as a JSON object (the way they were written before).
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "analytic/error.hpp"
+#include "io/csv.hpp"
+#include "io/json.hpp"
+#include "study/results_files.hpp"
+#include "tests/temp_files.hpp"
+
+namespace {
+
+using vssw::io::read_csv_record;
+using Fields = std::vector<std::string>;
+
+TEST(CsvRecord, ReadsQuotesLineBreaksAndCrlfAsWritten) {
+    std::istringstream in("a,\"b,c\",\"say \"\"hi\"\"\"\r\n,\"two\nlines\",\r\nlast,,end");
+    Fields f;
+    ASSERT_TRUE(read_csv_record(in, f));
+    EXPECT_EQ(f, (Fields{"a", "b,c", "say \"hi\""}));
+    EXPECT_TRUE(in.good());
+    ASSERT_TRUE(read_csv_record(in, f));
+    EXPECT_EQ(f, (Fields{"", "two\nlines", ""}));
+    ASSERT_TRUE(read_csv_record(in, f));
+    EXPECT_EQ(f, (Fields{"last", "", "end"}));
+    // The last record ended at the end of the input: the stream says so, as its get() would have.
+    EXPECT_TRUE(in.eof());
+    EXPECT_TRUE(in.fail());
+    EXPECT_FALSE(read_csv_record(in, f));
+    EXPECT_TRUE(f.empty());
+}
+
+TEST(CsvRecord, AQuotedFieldLeftOpenIsRefused) {
+    std::istringstream in("a,\"open field\nstill open");
+    Fields f;
+    EXPECT_THROW(read_csv_record(in, f), vssw::InputError);
+}
+
+// The row as the writer did it before: a JSON object built key by key and dumped.
+std::string dumped_row(const Fields& header, const Fields& fields) {
+    vssw::io::Json row;
+    for (std::size_t i = 0; i < header.size(); ++i) {
+        const std::string& v = fields[i];
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        const bool number = !v.empty() && *end == '\0';
+        const bool numeric = header[i] != "engine" && header[i] != "status";
+        if (v.empty()) row[header[i]] = nullptr;
+        else if (!number || !numeric) row[header[i]] = v;
+        else if (header[i] == "case_id") row[header[i]] = static_cast<long>(x);
+        else row[header[i]] = x;
+    }
+    return vssw::io::dump_json(row);
+}
+
+TEST(ResultsJson, EachRowIsTheTextNlohmannDumpsForIt) {
+    const Fields header = {"case_id", "engine", "height", "hinge", "value", "status"};
+    const std::vector<Fields> rows = {
+        {"1", "analytic", "4", "eq15", "0.1", "ok"},
+        {"2", "ODE \"double\"", "3.0", "0.7", "1e-05", "failed: a \\ b\ttab"},
+        {"3", "bad \xff byte", "2.5", "", "123456789.125", "ok"},
+        {"12", "analytic", "0.30000000000000004", "0.5", "-2.5e+300", "ok"}};
+    const vssw::testing::TempDir dir;
+    {
+        std::ofstream csv(dir / "results.csv");
+        csv << "case_id,engine,height,hinge,value,status\n";
+        for (const Fields& r : rows)
+            csv << r[0] << ',' << vssw::io::csv_field(r[1]) << ',' << r[2] << ',' << r[3] << ',' << r[4] << ','
+                << vssw::io::csv_field(r[5]) << '\n';
+    }
+    std::ostringstream out;
+    vssw::study::write_results_json(out, vssw::io::Json{{"study", "t"}}, dir / "results.csv");
+    std::string expected = "{\n  \"study\": \"t\",\n  \"rows\": [";
+    for (std::size_t i = 0; i < rows.size(); ++i) expected += (i ? ",\n    " : "\n    ") + dumped_row(header, rows[i]);
+    expected += "\n  ]\n}\n";
+    EXPECT_EQ(out.str(), expected);
+    // The check must see a difference in one byte: a number written in another form is caught.
+    EXPECT_NE(out.str(), [&] {
+        std::string other = expected;
+        other.replace(other.find("1e-05"), 5, "1e-5");
+        return other;
+    }());
+}
+
+}  // namespace
