@@ -238,16 +238,30 @@ ThresholdResult find_threshold(const multibody::Engine& engine, const multibody:
     return result;
 }
 
-double free_vibration_duration(const multibody::WallScene& scene, double theta0, int impacts) {
-    require(impacts >= 1, "impacts to show", ">= 1", impacts);
-    // Rounded corners: the sharp wall's duration (the analytic model does not run a rounded wall; a length is all
-    // that is read here).
+namespace {
+
+// The analytic model's free vibration from theta0, impacts and end only. Rounded corners: the sharp wall's (the
+// analytic model does not run a rounded wall; a length is all that is read from it).
+SimulationResult timing_run(const multibody::WallScene& scene, double theta0) {
     const auto model = analytic_model(with_sharp_corners(scene), Kinematics::exact);
     SimulationOptions opt;
     opt.keep_samples = false;
-    const SimulationResult r = free_vibration(*model, theta0, opt);
+    return free_vibration(*model, theta0, opt);
+}
+
+}  // namespace
+
+double free_vibration_duration(const multibody::WallScene& scene, double theta0, int impacts) {
+    require(impacts >= 1, "impacts to show", ">= 1", impacts);
+    const SimulationResult r = timing_run(scene, theta0);
     const std::size_t n = static_cast<std::size_t>(impacts);
     if (r.impacts.size() >= n) return 1.25 * r.impacts[n - 1].t;
+    return 1.25 * r.t_final;
+}
+
+double first_impact_duration(const multibody::WallScene& scene, double theta0) {
+    const SimulationResult r = timing_run(scene, theta0);
+    if (!r.impacts.empty()) return kFirstImpactMargin * r.impacts.front().t;
     return 1.25 * r.t_final;
 }
 

@@ -8,6 +8,8 @@
 
 #include "analytic/closed_forms.hpp"
 #include "analytic/error.hpp"
+#include "analytic/model.hpp"
+#include "analytic/simulate.hpp"
 #include "analytic/wall.hpp"
 #include "compare/experiments.hpp"
 #include "multibody/host/analytic_engine.hpp"
@@ -139,6 +141,28 @@ TEST(ThresholdSearch, RejectsABracketThatIsNoBracket) {
     o.bracket = 1.0;
     EXPECT_THROW(find_threshold(engine, engine.default_settings(), multibody::WallScene::of(make_parapet(4.0, 0.4)), o),
                  InputError);
+}
+
+// The suite's free runs end at kFirstImpactMargin times the analytic model's first impact (first_impact_duration):
+// the period and the first impact's restitution are what a run to the 8th impact gives, bit for bit (the run is the
+// same up to its end). Ended before the impact, a run has neither: the end is what makes them measured.
+TEST(FirstImpactDuration, ARunToItMeasuresWhatTheLongRunDoes) {
+    const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
+    const double theta0 = 0.5 * scene.alpha();
+    const double t1 = free_vibration(*make_vssw_model(*scene.vssw, Kinematics::exact), theta0).impacts.at(0).t;
+    EXPECT_EQ(first_impact_duration(scene, theta0), kFirstImpactMargin * t1);
+    const AnalyticEngine engine;
+    FreeVibrationOptions options;
+    options.r = 0.5;
+    const FreeVibrationResult whole = run_free_vibration(engine, engine.default_settings(), scene, options);
+    ASSERT_GE(whole.impacts.size(), 8u);
+    options.t_end = first_impact_duration(scene, theta0);
+    const FreeVibrationResult first = run_free_vibration(engine, engine.default_settings(), scene, options);
+    ASSERT_TRUE(first.period && first.restitution);
+    EXPECT_EQ(*first.period, *whole.period);
+    EXPECT_EQ(*first.restitution, *whole.restitution);
+    options.t_end = 0.9 * t1;
+    EXPECT_FALSE(run_free_vibration(engine, engine.default_settings(), scene, options).period);
 }
 
 }  // namespace

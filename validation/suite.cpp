@@ -128,7 +128,7 @@ double rms_difference(const multibody::Trajectory& reference, const multibody::T
 // last task that reads it.
 struct CaseReference {
     std::once_flag once;
-    double free_t_end = 0.0;  // free, step: the run's end (free_vibration_duration), set before the tasks run
+    double free_t_end = 0.0;  // free, step: the run's end (first_impact_duration), set before the tasks run
     double threshold_g = kNaN;                  // threshold
     compare::FreeVibrationResult free;                   // free, step: the analytic run, its trajectory dropped
     std::optional<Trace> free_trace;            // free: the analytic trace when traces are kept
@@ -478,7 +478,7 @@ std::vector<compare::CaseTask> plan_tasks(const Suite& suite, const SuiteInputs&
         const SuiteWall& w = *in.case_walls[ci];
         if (c.kind == CaseKind::free || c.kind == CaseKind::step)
             references[ci].free_t_end =
-                compare::free_vibration_duration(w.scene, c.r * w.scene.alpha(), compare::FreeVibrationOptions{}.impacts);
+                compare::first_impact_duration(w.scene, c.r * w.scene.alpha());  // its rows read the first impact
         const double seconds = simulated_seconds(c, w, in.record_of(c), references[ci].free_t_end);
         for (std::size_t ei = 0; ei < engines.size(); ++ei) {
             if (!c.engine.empty() && c.engine != engines[ei]->name()) continue;

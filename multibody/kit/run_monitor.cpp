@@ -63,6 +63,7 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       limits_(limits),
       parts_(engine_, scene, figures_, ex, limits.penetration * b_, limits.energy_gain, contact_gap),
       slip_(scene.slip_measured ? std::optional<SlipMeter>(std::in_place, scene, block_sizes(scene)) : std::nullopt),
+      fold_(scene, ex.horizontal),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
       quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))),
@@ -96,6 +97,7 @@ RunMonitor::Verdict RunMonitor::check(double t, const WallState& s) {
     parts_.check(t, s);
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
     if (std::abs(theta) >= collapse_) return Verdict::overturned;
+    if (std::abs(theta) > unstable_ && fold_.cannot_come_back(t, theta, rate)) return Verdict::overturned;
     if (t > motion_end_ && motion_end_ > 0.0) {  // folded: past the unstable equilibrium, the shaking over
         folded_steps_ = std::abs(theta) > unstable_ || upper_gone ? folded_steps_ + 1 : 0;
         if (folded_steps_ >= folded_needed_) return Verdict::overturned;

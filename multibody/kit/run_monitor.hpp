@@ -8,6 +8,9 @@
 // Fig. 6 wall under Rinaldi at 0.55 g: MuJoCo, Siconos and Simbody alike, never still). No standing wall can stay past
 // the unstable equilibrium (RockingModel::unstable_equilibrium) once the ground is still: there gravity turns it
 // outward, and only an inward speed brings it back, at once. Past it for kFoldedFor after the shaking: overturned.
+// During the shaking a wall is judged overturned as soon as it cannot come back (FoldJudge: past the equilibrium that
+// the largest acceleration left in the record could hold, its rate not inward), which ends a folded wall's run
+// seconds to tens of seconds before the record's end.
 // With N off-centre the two sides' equilibria differ; the larger is taken, so a wall standing on the side of the
 // larger one is never called overturned.
 // The same holds for the upper block (theta2, where the adapter gives it): a wall whose upper block fell off the roller
@@ -22,6 +25,7 @@
 #include <vector>
 
 #include "multibody/engine.hpp"
+#include "multibody/kit/fold_judge.hpp"
 #include "multibody/kit/settings_reader.hpp"
 #include "multibody/kit/slip_meter.hpp"
 #include "multibody/kit/step_resolution.hpp"  // kMaxStepsPerRun, require_step_resolves
@@ -94,6 +98,7 @@ private:
     FailureLimits limits_;
     WallParts parts_;
     std::optional<SlipMeter> slip_;  // a scene whose friction was given: sliding measured, not a failure
+    FoldJudge fold_;
     int quiet_steps_ = 0, folded_steps_ = 0, quiet_needed_, folded_needed_;
 };
 
