@@ -5,6 +5,10 @@ and the adapters").
 Runs one `vssw` command N times under `perf record --call-graph dwarf` (perf: `bash scripts/setup.sh profile`) and
 sorts the samples of the forked child that runs the engine (multibody/host/isolated_engine.hpp) by their call stacks:
   engine   a frame in one of the engine library's shared objects (its step, its collision, its set-up);
+  contacts no such frame, a frame of the contact generation an adapter does for its engine each step (ODE's
+           OdeScene::add_pair and add_roller: dCollide's points merged into contact joints, the roller's row;
+           Bullet's CornerContacts::update: the corners' and the roller's manifolds): the engine's contact scheme,
+           like the floor's own contact finding (bench/floor/), done outside the library;
   plugin   no such frame, a frame in the adapter's plugin: the adapter and the kit it links (scene set-up, the hooks,
            sampling, the run monitor, the energy sum);
   kernel   the leaf in the kernel: the fresh child's page faults, its exit;
@@ -29,6 +33,8 @@ import tempfile
 ENGINE = re.compile(r"libode|libccd|libBullet|libLinearMath|libbox2d|libmujoco|libdart|libfcl|liboctom|libassimp|"
                     r"liburdf|libtinyxml|libSimTK|libsiconos|libopenblas|libblas|liblapack|libgfortran|libmumps|"
                     r"libdmumps|libcxsparse|libqhull|liblodepng|libboost|libconsole_bridge")
+# The adapters' contact generation for their engines (kept out of line so that a profile sees it).
+CONTACTS = re.compile(r"OdeScene::add_pair|OdeScene::add_roller|CornerContacts::update")
 FORK = re.compile(r"\s*vssw\s+\d+/\d+\s+PERF_RECORD_FORK\((\d+):\d+\):\((\d+):\d+\)")
 FRAME = re.compile(r"\s*[0-9a-f]+ (.*) \((.*)\)$")
 
@@ -66,6 +72,8 @@ def bucket(frames):
     dsos = [d for _, d in frames]
     if any(ENGINE.search(d) for d in dsos):
         return "engine"
+    if any("vssw_engine_" in d and CONTACTS.search(s) for s, d in frames):
+        return "contacts"
     if any("vssw_engine_" in d for d in dsos):
         return "plugin"
     if dsos and "kernel" in dsos[0]:

@@ -703,6 +703,29 @@ TEST(RunMonitorParts, AnUpperBlockSinkingThroughTheHingeFails) {
     EXPECT_NE(why.find("through the hinge"), std::string::npos) << why;
 }
 
+// The hinge is screened along the lower block's height axis before its four axes are projected: the failure must
+// come at the very step the sink passes the limit, 0.05 b = 0.01 m on the Fig. 6 wall. At 0.0995 m/s it passes it at
+// t = 0.1005 s, mid-step (a rate whose crossing falls on a step's end would be decided by rounding): the step ending
+// at 0.101 s.
+TEST(RunMonitorParts, TheHingeFailsAtTheStepTheSinkPassesTheLimit) {
+    constexpr double kSlowSink = 0.0995;  // [m/s]
+    const std::string why = monitor_failure([](multibody::WallState& s, double t) { s.upper.y -= kSlowSink * t; });
+    EXPECT_NE(why.find("through the hinge) at t = 0.101 s"), std::string::npos) << why;
+}
+
+// The screen is only a screen: an upper block shifted off the lower one's top to overlap it by 5 mm sideways while
+// sunk 0.1 m overlaps it by 0.1 m along the hinge's axis but only 5 mm as a body, inside the 0.01 m limit. Not a
+// failure through the hinge: its top is what passed through the roller.
+TEST(RunMonitorParts, AnUpperBlockBesideTheLowerOneIsNotThroughTheHinge) {
+    constexpr double kSideOverlap = 0.005, kSunk = 0.1;  // [m]
+    const double b = multibody::block_sizes(fig6_vssw()).b;
+    const std::string why = monitor_failure([&](multibody::WallState& s, double) {
+        s.upper.x += 2.0 * b - kSideOverlap;
+        s.upper.y -= kSunk;
+    });
+    EXPECT_NE(why.find("through the roller"), std::string::npos) << why;
+}
+
 TEST(RunMonitorParts, ABlockSinkingIntoTheGroundFails) {
     // The whole wall sinking: its lower block reaches into the ground first.
     const std::string why = monitor_failure([](multibody::WallState& s, double t) {

@@ -39,6 +39,7 @@
 #include "multibody/kit/energy.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_angles.hpp"
 #include "multibody/kit/step_loop.hpp"
 #include "multibody/kit/scene_geometry.hpp"
 
@@ -308,18 +309,20 @@ public:
     void push_overburden() {
         top_body_.applyImpulse(btVector3(0, -N_ * dt_, 0), load_point() - top_body_.getCenterOfMassPosition());
     }
-    void step(const StepTimes& st, const GroundStep&) { w_.step(st.dt); }
-    WallState state(const GroundStep& g) const {
-        auto block = [&](const btRigidBody& body) {  // relative to the (moving) ground
-            const btVector3 c = body.getCenterOfMassPosition(), v = body.getLinearVelocity();
-            return BlockState{c.x() - g.x, c.y(), clockwise_angle(body), v.x() - g.v, v.y(),
-                              -body.getAngularVelocity().z()};
-        };
-        return {block(lower_), upper_ ? block(*upper_) : kNoBlock};
+    void step(const StepTimes& st, const GroundStep&) {
+        angles_.forget();
+        w_.step(st.dt);
     }
-    Rocking rocking() const { return {clockwise_angle(lower_), -lower_.getAngularVelocity().z()}; }
+    WallState state(const GroundStep& g) const {
+        auto block = [&](const btRigidBody& body, double angle) {  // relative to the (moving) ground
+            const btVector3 c = body.getCenterOfMassPosition(), v = body.getLinearVelocity();
+            return BlockState{c.x() - g.x, c.y(), angle, v.x() - g.v, v.y(), -body.getAngularVelocity().z()};
+        };
+        return {block(lower_, lower_angle()), upper_ ? block(*upper_, upper_angle()) : kNoBlock};
+    }
+    Rocking rocking() const { return {lower_angle(), -lower_.getAngularVelocity().z()}; }
     void fill(TrajectorySample& p) const {
-        p.theta2 = upper_ ? clockwise_angle(*upper_) : 0.0;
+        p.theta2 = upper_ ? upper_angle() : 0.0;
         const double v_ground = w_.ground_velocity();
         auto kinetic = [&](const btRigidBody& body) {
             const btVector3 v = body.getLinearVelocity() - btVector3(v_ground, 0, 0), wv = body.getAngularVelocity();
@@ -332,6 +335,8 @@ public:
         p.contacts = w_.contact_points();
     }
 private:
+    double lower_angle() const { return angles_.lower([&] { return clockwise_angle(lower_); }); }
+    double upper_angle() const { return angles_.upper([&] { return clockwise_angle(*upper_); }); }
     // N's point: the top face's centre, or e from it toward theta1 > 0 (analytic/geometry.hpp).
     btVector3 load_point() const { return top_body_.getWorldTransform() * btVector3(load_x_, top_half_, 0); }
 
@@ -346,6 +351,7 @@ private:
     double top_half_;
     double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
     double dt_;
+    mutable StepAngles angles_;  // read by state(), rocking() and fill() of one step
 };
 
 Trajectory BulletEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {

@@ -40,8 +40,9 @@ public:
     }
 
     // Rewrites every manifold for the bodies' present poses (the guides' lines move with the ground, or with the
-    // flexible top support's carrier).
-    void update() {
+    // flexible top support's carrier). Out of line: a profile tells this contact generation, the engine's scheme done
+    // by the adapter, from the rest of the adapter's work (bench/adapter_share.py).
+    [[gnu::noinline]] void update() {
         if (r_ > 0.0) {
             update_rounded();
             return;

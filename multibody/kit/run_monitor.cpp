@@ -71,8 +71,8 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
     require_step_resolves(engine_, scene, ex, dt, dt_steps_the_motion);
 }
 
-double RunMonitor::default_drift(const WallState& s) const {
-    const double right_dx = point_of(s.lower, b_, -h_lower_).x - b_, left_dx = point_of(s.lower, -b_, -h_lower_).x + b_;
+double RunMonitor::default_drift(const TurnedBlock& lower) const {
+    const double right_dx = lower.at(b_, -h_lower_).x - b_, left_dx = lower.at(-b_, -h_lower_).x + b_;
     return std::abs(right_dx) < std::abs(left_dx) ? right_dx : left_dx;
 }
 
@@ -87,14 +87,15 @@ RunMonitor::Verdict RunMonitor::check(double t, const WallState& s) {
     // corners from their places (+b and -b) covers both cases.
     // The upper block past the mechanism's range (NaN compares false: not given).
     const bool upper_gone = std::abs(theta2) > unstable2_;
+    const TurnedBlock lower(s.lower);  // once a step, for the base's drift and every part's check
     if (slip_) {  // the user's friction: sliding is measured (SlipMeter), and ends the run only off the support
         // Only while the wall stands in its mechanism: past the unstable equilibrium the blocks fold, and the drift of
         // their corners is the collapse, not a slide (measured: a hinge "slip" of 4.9 b as an upper block fell).
         if (std::abs(theta) <= unstable_ && !upper_gone && slip_->record(t, s)) return Verdict::slid_off;
-    } else if (const double drift = default_drift(s); std::abs(drift) > limits_.slide * b_)
+    } else if (const double drift = default_drift(lower); std::abs(drift) > limits_.slide * b_)
         throw EngineFailure(fmt::format("{}: the wall slid {:.3g} m at its base at t = {:.6g} s (friction {})",
                                         engine_, drift, t, friction_));
-    parts_.check(t, s);
+    parts_.check(t, s, lower);
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
     if (std::abs(theta) >= collapse_) return Verdict::overturned;
     if (std::abs(theta) > unstable_ && fold_.cannot_come_back(t, theta, rate)) return Verdict::overturned;

@@ -88,7 +88,7 @@ public:
 
 private:
     // The default friction's slide: the smaller drift of the two base corners from their places.
-    double default_drift(const WallState& s) const;
+    double default_drift(const TurnedBlock& lower) const;
 
     MechanismFigures figures_;  // first: the members after it read it
     std::string engine_;

@@ -4,7 +4,9 @@
 // run monitor's check of the blocks relative to the ground, the samples (every `every` steps, the last and the one
 // that ends the run; the motion alone with Excitation::motion_only) and the end of the run. An adapter keeps its world
 // building and supplies the hooks of SteppedWorld. Engine-free: no engine header is included here.
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <type_traits>
 #include <utility>
 
@@ -73,6 +75,9 @@ inline void advance_supports(GroundStep& g, double dt) {
     g.v = v_next;
 }
 
+// At most this many samples are reserved before a run (4 MiB: a run sampled every 1 ms for 65 s); a longer one grows.
+inline constexpr long kReservedSamples = 1L << 16;
+
 // Runs the wall from t = 0 to ex.t_end in steps of loop.dt (rounded to a whole number of steps); the monitor built by
 // the adapter for this run. Returns the samples, the steps taken and how the run ended.
 template <class W>
@@ -86,6 +91,9 @@ Trajectory run_fixed_steps(W& world, const Excitation& ex, const StepLoop& loop,
     };
     const double dt = loop.dt;
     const long n_steps = std::lround(ex.t_end / dt);
+    // The samples of a whole run (the first, every `every` steps, the last) reserved at once: growing the vector copied
+    // it and faulted in fresh pages, 3 % of a free vibration's CPU (perf, ODE). Pages not written are never touched.
+    out.samples.reserve(static_cast<std::size_t>(std::min(n_steps / loop.every + 2, kReservedSamples)));
     GroundStep ground;
     const TopSupportMotion top(ex.horizontal, loop.diaphragm);  // once per run: u_d(t) of Eq. (9d)
     double top_u_before = 0.0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <cmath>
 #include <utility>
 
@@ -14,17 +15,25 @@ namespace {
 
 using Corners = std::array<PlanePoint, 4>;
 
-// A block with the cosine and sine of its rotation computed once: a step's checks place ten points on the blocks and
-// project on four axes, and calling the C library's cos and sin for each was a third of the monitor's time (perf, ODE
-// under a record). The points are point_of's to the bit (the same products of the same values).
-struct Turned {
-    explicit Turned(const BlockState& block) : k(block), c(std::cos(block.angle)), s(std::sin(block.angle)) {}
-    PlanePoint at(double lx, double ly) const { return {k.x + lx * c + ly * s, k.y - lx * s + ly * c}; }
-    const BlockState& k;
-    double c, s;  // clockwise (scene_geometry.cpp's turn)
-};
+using Turned = TurnedBlock;
 
 Corners corners_of(const Turned& k, double b, double h) { return {k.at(b, -h), k.at(-b, -h), k.at(-b, h), k.at(b, h)}; }
+
+// How far two blocks' projections on the direction (ux, uy) overlap, negative when they are apart along it.
+double axis_overlap(const Corners& a, const Corners& c, double ux, double uy) {
+    auto span = [&](const Corners& k) {
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (const PlanePoint& p : k) {
+            const double d = p.x * ux + p.y * uy;
+            lo = std::min(lo, d);
+            hi = std::max(hi, d);
+        }
+        return std::pair{lo, hi};
+    };
+    const auto [alo, ahi] = span(a);
+    const auto [clo, chi] = span(c);
+    return std::min(ahi, chi) - std::max(alo, clo);
+}
 
 // How deep two blocks overlap: the least overlap of their projections on the four edge directions (separating axes),
 // negative when they are apart. Corners alone would miss a block falling through another of its own width, edge on
@@ -33,20 +42,8 @@ double overlap(const Corners& a, const Turned& ka, const Corners& c, const Turne
     double least = HUGE_VAL;
     for (const Turned* block : {&ka, &kc}) {
         const double cs = block->c, sn = block->s;
-        for (const auto& [ux, uy] : {std::pair{cs, -sn}, std::pair{sn, cs}}) {  // the block's width and height axes
-            auto span = [&](const Corners& k) {
-                double lo = HUGE_VAL, hi = -HUGE_VAL;
-                for (const PlanePoint& p : k) {
-                    const double d = p.x * ux + p.y * uy;
-                    lo = std::min(lo, d);
-                    hi = std::max(hi, d);
-                }
-                return std::pair{lo, hi};
-            };
-            const auto [alo, ahi] = span(a);
-            const auto [clo, chi] = span(c);
-            least = std::min(least, std::min(ahi, chi) - std::max(alo, clo));
-        }
+        for (const auto& [ux, uy] : {std::pair{cs, -sn}, std::pair{sn, cs}})  // the block's width and height axes
+            least = std::min(least, axis_overlap(a, c, ux, uy));
     }
     return least;
 }
@@ -58,7 +55,7 @@ bool finite(const BlockState& k) {
 
 }  // namespace
 
-PlanePoint point_of(const BlockState& k, double lx, double ly) { return Turned(k).at(lx, ly); }
+PlanePoint point_of(const BlockState& k, double lx, double ly) { return TurnedBlock(k).at(lx, ly); }
 
 WallState still_state_at(const WallScene& scene, double theta1, double theta1_dot, double contact_gap) {
     const WallPose p = pose_at(scene, theta1);
@@ -91,9 +88,10 @@ WallParts::WallParts(std::string engine, const WallScene& scene, const Mechanism
       motion_(&ex.horizontal),
       rest_(still_state_at(scene, 0.0, 0.0, contact_gap)),
       last_(still_state_at(scene, ex.theta0, 0.0, contact_gap)),
-      e0_(energy(last_)) {}
+      top_rest_y_(point_of(vssw_ ? rest_.upper : rest_.lower, load_x_, vssw_ ? sizes_.h_upper : sizes_.h_lower).y),
+      e0_(energy(last_, TurnedBlock(vssw_ ? last_.upper : last_.lower))) {}
 
-double WallParts::energy(const WallState& s) const {
+double WallParts::energy(const WallState& s, const TurnedBlock& top) const {
     auto block = [&](const BlockState& k, const BlockState& rest, double m, double h) {
         const double inertia = m * (sizes_.b * sizes_.b + h * h) / 3.0;  // a 2b x 2h rectangle about its centre
         return 0.5 * m * (k.vx * k.vx + k.vy * k.vy) + 0.5 * inertia * k.omega * k.omega + m * g_ * (k.y - rest.y);
@@ -101,10 +99,8 @@ double WallParts::energy(const WallState& s) const {
     double e = block(s.lower, rest_.lower, sizes_.m_lower, sizes_.h_lower);
     if (vssw_) e += block(s.upper, rest_.upper, sizes_.m_upper, sizes_.h_upper);
     // N's potential: it presses on the top face at load_x_ from its centre (analytic/geometry.hpp).
-    const BlockState& top = vssw_ ? s.upper : s.lower;
-    const BlockState& top_rest = vssw_ ? rest_.upper : rest_.lower;
     const double h_top = vssw_ ? sizes_.h_upper : sizes_.h_lower;
-    return e + N_ * (point_of(top, load_x_, h_top).y - point_of(top_rest, load_x_, h_top).y);
+    return e + N_ * (top.at(load_x_, h_top).y - top_rest_y_);
 }
 
 // The most work the ground motion can have done on the blocks since the last check: its pseudo-force -m a_h (at most
@@ -120,12 +116,12 @@ double WallParts::input_bound(double t, const WallState& s) {
     return a_max * moved;
 }
 
-void WallParts::check_contacts(double t, const WallState& s) const {
+void WallParts::check_contacts(double t, const WallState& s, const TurnedBlock& lower_block,
+                               const TurnedBlock* upper_turned) const {
     const BlockSizes& z = sizes_;
     // Rounded corners (rounded_corners.hpp): each corner's arc centre, r inside both faces; a block's lowest point is
     // an arc centre less r, and two blocks overlap by their cores' overlap plus 2 r. r = 0: the corners themselves.
     const double r = radius_;
-    const Turned lower_block(s.lower);
     const Corners lower = corners_of(lower_block, z.b - r, z.h_lower - r);
     double lowest = HUGE_VAL;
     for (const PlanePoint& p : lower) lowest = std::min(lowest, p.y - r - gap_);
@@ -138,16 +134,21 @@ void WallParts::check_contacts(double t, const WallState& s) const {
     // Bullet and MuJoCo on the Fig. 6 wall under Rinaldi at 0.7 g, theta2 -2.7 rad, the block hanging from the hinge
     // against the lower one's face). The sweep's block falling through the hinge stays inside (theta2 -0.16 to -0.53).
     if (!vssw_ || std::abs(s.upper.angle) >= upright_range_) return;
-    const Turned upper_block(s.upper);
+    const Turned& upper_block = *upper_turned;
     const Corners upper = corners_of(upper_block, z.b - r, z.h_upper - r);
     for (const PlanePoint& p : upper) lowest = std::min(lowest, p.y - r - gap_);
     if (-lowest > penetration_)
         throw EngineFailure(fmt::format("{}: the upper block reached {:.3g} m into the ground at t = {:.6g} s",
                                         engine_, -lowest, t));
-    if (const double depth = overlap(lower, lower_block, upper, upper_block) + 2.0 * r; depth > penetration_)
-        throw EngineFailure(fmt::format("{}: the upper block sank {:.3g} m into the lower block (through the hinge) "
-                                        "at t = {:.6g} s",
-                                        engine_, depth, t));
+    // The overlap along the lower block's height axis first: the least overlap is at most this one (the same sums, so
+    // to the bit), and it is the hinge's own, about 0 while the upper block stands on the lower one. Only when it
+    // exceeds the limit can the least one: then all four axes are projected.
+    if (axis_overlap(lower, upper, lower_block.s, lower_block.c) + 2.0 * r > penetration_) {
+        if (const double depth = overlap(lower, lower_block, upper, upper_block) + 2.0 * r; depth > penetration_)
+            throw EngineFailure(fmt::format("{}: the upper block sank {:.3g} m into the lower block (through the "
+                                            "hinge) at t = {:.6g} s",
+                                            engine_, depth, t));
+    }
     // The nominal top corners (the roller holds them, not the outline), between the guides at x = u_d - b and u_d + b
     // (u_d = 0: a rigid top support).
     for (const PlanePoint& p : {upper_block.at(-z.b, z.h_upper), upper_block.at(z.b, z.h_upper)})
@@ -156,10 +157,14 @@ void WallParts::check_contacts(double t, const WallState& s) const {
                                             out, t));
 }
 
-void WallParts::check(double t, const WallState& s) {
+void WallParts::check(double t, const WallState& s) { check(t, s, TurnedBlock(s.lower)); }
+
+void WallParts::check(double t, const WallState& s, const TurnedBlock& lower) {
     if (!finite(s.lower) || (vssw_ && !finite(s.upper)))
         throw EngineFailure(fmt::format("{}: the state became NaN at t = {:.6g} s", engine_, t));
-    check_contacts(t, s);
+    // The upper block turned once, for the contacts and N's potential alike (a parapet: none).
+    const std::optional<TurnedBlock> upper = vssw_ ? std::optional<TurnedBlock>(std::in_place, s.upper) : std::nullopt;
+    check_contacts(t, s, lower, upper ? &*upper : nullptr);
     if (energy_gain_ == HUGE_VAL) {  // no energy check (a moving roller): its input bound and energy are not needed
         t_last_ = t;
         last_ = s;
@@ -168,7 +173,7 @@ void WallParts::check(double t, const WallState& s) {
     input_ += input_bound(t, s);
     t_last_ = t;
     last_ = s;
-    if (const double gained = energy(s) - e0_ - input_; gained > energy_gain_)
+    if (const double gained = energy(s, upper ? *upper : lower) - e0_ - input_; gained > energy_gain_)
         throw EngineFailure(fmt::format("{}: the wall gained {:.3g} J/m of energy that the ground motion did not give "
                                         "it (at t = {:.6g} s)",
                                         engine_, gained, t));

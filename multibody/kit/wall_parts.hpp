@@ -41,6 +41,17 @@ struct PlanePoint {
 };
 PlanePoint point_of(const BlockState& block, double lx, double ly);
 
+// A block with the cosine and sine of its rotation computed once: a step's checks place up to ten points on the
+// blocks and project on four axes, and the C library's cos and sin were most of the monitor's time when called per
+// point (perf and callgrind, ODE under a record). RunMonitor turns each block once per step and hands the turned blocks
+// to every check. Its points are point_of's to the bit (the same products of the same values).
+struct TurnedBlock {
+    explicit TurnedBlock(const BlockState& block) : k(block), c(std::cos(block.angle)), s(std::sin(block.angle)) {}
+    PlanePoint at(double lx, double ly) const { return {k.x + lx * c + ly * s, k.y - lx * s + ly * c}; }
+    const BlockState& k;
+    double c, s;  // clockwise (scene_geometry.cpp's turn)
+};
+
 // The wall placed at rotation theta1 (pose_at), still but for the lower block's rate, its blocks lifted by
 // `contact_gap` (the lower by one, the upper by two, as Simbody's corner spheres lift them): the release state of a
 // run, and the state a synthetic run feeds RunMonitor (tests).
@@ -67,10 +78,13 @@ public:
     // Throws EngineFailure naming the part and the time when a corner is inside a body, the state is not finite, or
     // the energy is above E(0) plus the most the ground motion can have given. Call once per step, in time order.
     void check(double t, const WallState& s);
+    // The same with the lower block already turned (RunMonitor's, shared with its base check): lower.k is s.lower.
+    void check(double t, const WallState& s, const TurnedBlock& lower);
 
 private:
-    void check_contacts(double t, const WallState& s) const;
-    double energy(const WallState& s) const;
+    void check_contacts(double t, const WallState& s, const TurnedBlock& lower, const TurnedBlock* upper) const;
+    // The wall's mechanical energy; top: the block N presses on, turned (the upper one of a VSSW, else the lower).
+    double energy(const WallState& s, const TurnedBlock& top) const;
     double input_bound(double t, const WallState& s);
 
     std::string engine_;
@@ -83,6 +97,7 @@ private:
     double penetration_, energy_gain_, upright_range_;
     const GroundMotion* motion_;
     WallState rest_, last_;
+    double top_rest_y_;  // N's point at rest, the zero of its potential: computed once, not each step
     double e0_, input_ = 0.0, t_last_ = 0.0;
     double a_last_ = NAN;  // |a_h(t_last_)|, the last check's end: evaluated once per step, not twice
 };

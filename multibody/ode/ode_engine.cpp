@@ -52,6 +52,7 @@
 #include "multibody/kit/energy.hpp"
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_angles.hpp"
 #include "multibody/kit/step_loop.hpp"
 #include "multibody/kit/scene_geometry.hpp"
 
@@ -360,7 +361,10 @@ private:
     // along the in-plane tangent only (dContactFDir1 and mu2 = 0: the plane joint holds z). mu = dInfinity, the
     // other choice, makes a speculative contact's friction row bilateral even while its normal row is idle: measured,
     // the lifting corner of the 0.9 m x 0.11 m parapet was held sideways and its period came out 9 % long.
-    void add_pair(dGeomID g1, dGeomID g2, Vec2 skin, Vec2 surface, double mu) {
+    //
+    // Out of line, as add_roller: a profile tells this contact generation, the engine's scheme done by the adapter, from
+    // the rest of the adapter's work (bench/adapter_share.py).
+    [[gnu::noinline]] void add_pair(dGeomID g1, dGeomID g2, Vec2 skin, Vec2 surface, double mu) {
         // Left uninitialised: dCollide writes the first n, the merge the first `count`, and only those are read.
         // Zeroing both (1.5 kB a pair, three pairs a step) was a fifth of the adapter's own time in a run (perf).
         std::array<dContactGeom, 8> found;
@@ -370,7 +374,10 @@ private:
         for (int i = 0; i < n; ++i) {
             dContactGeom c = found[static_cast<std::size_t>(i)];
             c.pos[2] = 0.0;
-            const double len = std::hypot(c.normal[0], c.normal[1]);
+            // hypot(x, 0) is |x| exactly (C's Annex F): an axis-aligned normal, the ground's face, needs no call.
+            const double len = c.normal[0] == 0.0   ? std::abs(c.normal[1])
+                               : c.normal[1] == 0.0 ? std::abs(c.normal[0])
+                                                    : std::hypot(c.normal[0], c.normal[1]);
             if (!(len > 0.5)) continue;  // an out-of-plane normal: not a planar contact (none measured)
             c.normal[0] /= len;
             c.normal[1] /= len;
@@ -416,7 +423,7 @@ private:
     // roller engages in the very step the guides switch sides at an impact (measured on the Fig. 6 VSSW at 0.05 ms: in
     // the impact step the new guide's corner starts within 1e-10 m of its line and the guide takes its share of the
     // impulse).
-    void add_roller() {
+    [[gnu::noinline]] void add_roller() {
         const double b = sizes_.b, x0 = top_body_ ? dBodyGetPosition(top_body_)[0] : ground_x();
         const Vec2 right = world_point(upper_, b, sizes_.h_upper), left = world_point(upper_, -b, sizes_.h_upper);
         const double right_out = right.x - x0 - b, left_out = -b - (left.x - x0);  // also the guides' gaps
@@ -532,7 +539,10 @@ public:
         const Vec2 top = world_point(top_body_, load_x_, top_half_);
         dBodyAddForceAtPos(top_body_, 0.0, -N_, 0.0, top.x, top.y, 0.0);
     }
-    void step(const StepTimes&, const GroundStep& g) { w_.step(g.v, g.top_v); }
+    void step(const StepTimes&, const GroundStep& g) {
+        angles_.forget();
+        w_.step(g.v, g.top_v);
+    }
     // ODE's messages (its error and debug handlers) and a block leaving the plane fail the run.
     void check_step(double t) const {
         if (g_ode_messages != messages_before_)
@@ -546,15 +556,15 @@ public:
     }
     WallState state(const GroundStep& g) const {
         const double x_g = w_.ground_x();
-        auto block = [&](dBodyID body) {  // relative to the (moving) ground
+        auto block = [&](dBodyID body, double angle) {  // relative to the (moving) ground
             const dReal *c = dBodyGetPosition(body), *v = dBodyGetLinearVel(body);
-            return BlockState{c[0] - x_g, c[1], clockwise_angle(body), v[0] - g.v, v[1], -dBodyGetAngularVel(body)[2]};
+            return BlockState{c[0] - x_g, c[1], angle, v[0] - g.v, v[1], -dBodyGetAngularVel(body)[2]};
         };
-        return {block(lower_), upper_ ? block(upper_) : kNoBlock};
+        return {block(lower_, lower_angle()), upper_ ? block(upper_, upper_angle()) : kNoBlock};
     }
-    Rocking rocking() const { return {clockwise_angle(lower_), -dBodyGetAngularVel(lower_)[2]}; }
+    Rocking rocking() const { return {lower_angle(), -dBodyGetAngularVel(lower_)[2]}; }
     void fill(TrajectorySample& p) const {
-        p.theta2 = upper_ ? clockwise_angle(upper_) : 0.0;
+        p.theta2 = upper_ ? upper_angle() : 0.0;
         const double v_ground = w_.ground_velocity();
         auto kinetic = [&](dBodyID body) {  // ODE's full 3-D sum: the out-of-plane terms are 0 (see check_step)
             const dReal* v = dBodyGetLinearVel(body);
@@ -571,6 +581,9 @@ public:
     }
 
 private:
+    double lower_angle() const { return angles_.lower([&] { return clockwise_angle(lower_); }); }
+    double upper_angle() const { return angles_.upper([&] { return clockwise_angle(upper_); }); }
+
     OdeScene& w_;
     const Knobs& knobs_;
     WallEnergy energy_;
@@ -580,6 +593,7 @@ private:
     double top_half_;
     double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
     const int messages_before_ = g_ode_messages;
+    mutable StepAngles angles_;  // read by state(), rocking() and fill() of one step
 };
 
 Trajectory OdeEngine::simulate(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
