@@ -123,7 +123,8 @@ void print(const Profile& profile, int threads, double process_cpu_s) {
         if (!suite_kind) wall = fmt::format("wall {:.2f} s", p.wall_s);
         else if (p.wall_s != shown_wall) wall = fmt::format("wall {:.2f} s (the whole suite)", p.wall_s);
         shown_wall = p.wall_s;
-        fmt::print("part   {:<20} {:>10.2f} s {:>6.1f}%  {}\n", p.part, cpu, 100.0 * cpu / total, wall);
+        fmt::print("part   {:<20} {:>10.2f} s {:>6.1f}%{}\n", p.part, cpu, 100.0 * cpu / total,
+                   wall.empty() ? "" : "  " + wall);
     }
 }
 
