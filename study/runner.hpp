@@ -6,12 +6,14 @@
 // their order depend on the study file and the shard only.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "io/folder_lock.hpp"
 #include "study/grid.hpp"
 #include "study/journal.hpp"
 #include "study/results_files.hpp"
+#include "study/study_data.hpp"
 
 namespace vssw::study {
 
@@ -37,6 +39,10 @@ struct StudyRunResult {
     StudyMeta meta;
     long rows = 0, failed_rows = 0;
     bool writer = true;  // this process wrote the outputs (false on MPI ranks other than 0)
+    // The study's data (study/study_data.hpp) built from the rows this run wrote into results.csv, so that its other
+    // files are written without reading that file back; none when this run wrote none (a resumed study whose results
+    // were complete, MPI ranks other than 0): read_study_data reads them.
+    std::optional<StudyData> data;
 };
 
 // Checks DIR before anything runs (InputError): it must be a folder this process can write (it is created if
