@@ -1069,6 +1069,45 @@ std::string number_list(std::size_t n, double first, double step) {
     return text + "]";
 }
 
+// A run's data is built from the rows as it writes results.csv, not read back from it: it is the data read back, to the
+// byte of results.json, on a study with a word level (Eq. 15's hinge), derived columns (walls given by alpha and R)
+// and a part whose columns do not apply to the other's.
+TEST(StudyData, TheRowsAsWrittenAreTheRowsReadBack) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_closed_form_g\", \"restitution_closed_form\"]\n"
+                                  "[[part]]\n[part.wall]\nalpha = [0.15, 0.2]\nR = [1.0, 3.0]\nxi = [0.3, 0.5]\n"
+                                  "hinge = [\"eq15\", 0.7]\n[part.excitation]\nkind = \"closed-form\"\n"
+                                  "[[part]]\n[part.wall]\nmodel = \"parapet\"\nheight = [1.2, 1.5]\nthickness = 0.2\n"
+                                  "[part.excitation]\nkind = \"closed-form\"\n"));
+    study::StudyRunOptions o;
+    o.threads = 2;
+    study::prepare_study_dir(grid, dir / "out", o);
+    const study::StudyRunResult run = study::run_study(grid, dir / "out", o);
+    ASSERT_TRUE(run.data.has_value());
+    const study::StudyData read = study::read_study_data(dir / "out");
+    const auto json = [](const study::StudyData& d) {
+        std::ostringstream out;
+        study::write_results_json(out, d);
+        return out.str();
+    };
+    const auto levels = [](const study::StudyData& d) {
+        std::vector<std::vector<std::string>> texts;
+        for (const study::StudyRow& r : d.rows) {
+            texts.emplace_back();
+            for (std::size_t c = 0; c < d.columns.size(); ++c) texts.back().push_back(d.text(r, c));
+        }
+        return texts;
+    };
+    EXPECT_EQ(read.rows.size(), 36u);
+    EXPECT_EQ(json(*run.data), json(read));
+    EXPECT_EQ(levels(*run.data), levels(read));
+    EXPECT_EQ(run.data->manifest, read.manifest);
+    // The comparison sees one row's value moved by one unit in the last place.
+    study::StudyData moved = read;
+    moved.rows[5].value = std::nextafter(moved.rows[5].value, 2.0);
+    EXPECT_NE(json(moved), json(read));
+}
+
 }  // namespace
 
 // Six lists whose product is 2^64 + 418: the unchecked product wrapped to a grid of 418 cases, which ran under --force.
