@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <set>
 #include <utility>
 
 namespace vssw::study {
@@ -96,7 +95,15 @@ std::vector<Effect> effects_of(const StudyData& d, std::size_t column) {
     for (std::size_t i = 0; i < d.rows.size(); ++i) {
         const std::uint32_t level = d.rows[i].levels[column];
         if (level == kEmptyLevel) continue;
-        for (const Key& k : pairing_keys(d, d.rows[i], others)) {
+        const StudyRow& row = d.rows[i];
+        const auto applies = [&](std::size_t c) { return row.levels[c] != kEmptyLevel; };
+        if (std::all_of(others.begin(), others.end(), applies)) {  // one key: written in place
+            keys.insert(keys.end(), {row.metric, row.levels.front(), row.levels.back()});
+            for (std::size_t c : others) keys.push_back(row.levels[c]);
+            entries.push_back({level, i});
+            continue;
+        }
+        for (const Key& k : pairing_keys(d, row, others)) {
             keys.insert(keys.end(), k.begin(), k.end());
             entries.push_back({level, i});
         }
@@ -110,8 +117,7 @@ std::vector<Effect> effects_of(const StudyData& d, std::size_t column) {
         return entries[a] < entries[b];
     });
     const std::uint32_t first = col.order.front();
-    std::map<std::pair<std::uint32_t, std::size_t>, Tally> tallies;  // (level, metric) -> pairs
-    std::set<std::pair<std::size_t, std::size_t>> seen;
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (base row, other row), each once below
     for (std::size_t begin = 0, end = 0; begin < order.size(); begin = end) {
         end = begin + 1;
         while (end < order.size() && same_key(order[begin], order[end])) ++end;
@@ -122,12 +128,16 @@ std::vector<Effect> effects_of(const StudyData& d, std::size_t column) {
         for (std::size_t g = begin; g < end; ++g) {
             const auto [level, o] = entries[order[g]];
             if (level == first) continue;
-            for (std::size_t b : base) {
-                if (!seen.insert({b, o}).second) continue;
-                const std::size_t metric = d.rows[b].metric;
-                add_pair(tallies[{level, metric}], d.metrics[metric].binary, d.rows[b].value, d.rows[o].value);
-            }
+            for (std::size_t b : base) pairs.push_back({b, o});
         }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    std::map<std::pair<std::uint32_t, std::size_t>, Tally> tallies;  // (level, metric) -> pairs
+    for (const auto& [b, o] : pairs) {
+        const std::size_t metric = d.rows[b].metric;
+        add_pair(tallies[{d.rows[o].levels[column], metric}], d.metrics[metric].binary, d.rows[b].value,
+                 d.rows[o].value);
     }
     std::vector<Effect> out;
     for (std::size_t k = 1; k < col.order.size(); ++k)

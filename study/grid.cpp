@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <limits>
 #include <memory>
 
@@ -408,22 +409,23 @@ struct Grid::CaseLevels {
     }
 
     // The level of key `k`, nullptr when no axis gives it (the last axis that gives it, as a map assigned in order).
-    const Level* find(const char* k) const {
+    // A view: the literal's length is known where it is written, and unequal lengths compare at once.
+    const Level* find(std::string_view k) const {
         for (auto it = in_order.rbegin(); it != in_order.rend(); ++it)
             if (*it->first == k) return it->second;
         return nullptr;
     }
-    const Level& at(const char* k) const {
+    const Level& at(std::string_view k) const {
         const Level* l = find(k);
-        if (l == nullptr) throw std::out_of_range(std::string("no level of ") + k);
+        if (l == nullptr) throw std::out_of_range("no level of " + std::string(k));
         return *l;
     }
-    bool has(const char* k) const { return find(k) != nullptr; }
-    double num(const char* k, double fallback) const {
+    bool has(std::string_view k) const { return find(k) != nullptr; }
+    double num(std::string_view k, double fallback) const {
         const Level* l = find(k);
         return l == nullptr ? fallback : as_number(*l);
     }
-    const std::string& word(const char* k) const { return as_word(at(k)); }
+    const std::string& word(std::string_view k) const { return as_word(at(k)); }
 };
 
 CaseSpec Grid::make_case(int id) const {
