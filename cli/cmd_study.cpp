@@ -216,10 +216,8 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
     options.plots = !o.no_plots;
     options.gnuplot = o.gnuplot;
     // From the rows this run has just written, when it wrote them; read back from the folder otherwise.
-    const study::OutputFiles files =
-        as_committed(result.data ? study::write_study_outputs(staged->path(), options, *result.data)
-                                 : study::write_study_outputs(staged->path(), options),
-                     *staged);
+    const study::OutputFiles files = as_committed(
+        study::write_study_outputs(staged->path(), options, study::take_study_data(result, staged->path())), *staged);
     staged->commit();
     for (const std::string& w : files.warnings) print_message_line(err, "warning", w);
 

@@ -364,4 +364,11 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     return result;
 }
 
+StudyData take_study_data(StudyRunResult& result, const fs::path& dir) {
+    if (!result.data) return read_study_data(dir);
+    StudyData d = std::move(*result.data);
+    result.data.reset();
+    return d;
+}
+
 }  // namespace vssw::study

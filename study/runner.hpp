@@ -56,6 +56,10 @@ io::FolderLock prepare_study_dir(const Grid& grid, const std::filesystem::path& 
 // with their reasons.
 StudyRunResult run_study(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
 
+// The study's data: the rows this run wrote (moved out of `result`), or DIR's results read back when it wrote none
+// (InputError naming the file when they cannot be read).
+StudyData take_study_data(StudyRunResult& result, const std::filesystem::path& dir);
+
 // The file names in DIR.
 constexpr const char* kJournalFile = "journal.csv";
 constexpr const char* kResultsCsv = "results.csv";
