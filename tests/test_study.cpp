@@ -816,6 +816,16 @@ TEST(StudyRun, AnInterruptedStudyResumesWhereItStopped) {
     std::set<study::TaskKey> done;
     EXPECT_THROW(study::Journal(dir / "cut" / "journal.csv", other.identity(), {}, done), InputError)
         << "a journal of another study is not continued";
+    // A journal whose own first line was cut short is refused by name, not continued past its end; whole, it is.
+    std::ofstream(dir / "cut" / "journal.csv") << "#vssw-study-journal," << grid.identity() << ",1/1";
+    try {
+        study::Journal(dir / "cut" / "journal.csv", grid.identity(), {}, done);
+        ADD_FAILURE() << "a journal without its first line's end was continued";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("its first line is cut short"), std::string::npos) << e.what();
+    }
+    std::ofstream(dir / "cut" / "journal.csv") << "#vssw-study-journal," << grid.identity() << ",1/1\n";
+    EXPECT_NO_THROW(study::Journal(dir / "cut" / "journal.csv", grid.identity(), {}, done));
 }
 
 }  // namespace
@@ -1079,10 +1089,7 @@ TEST(StudyData, TheRowsAsWrittenAreTheRowsReadBack) {
                                   "hinge = [\"eq15\", 0.7]\n[part.excitation]\nkind = \"closed-form\"\n"
                                   "[[part]]\n[part.wall]\nmodel = \"parapet\"\nheight = [1.2, 1.5]\nthickness = 0.2\n"
                                   "[part.excitation]\nkind = \"closed-form\"\n"));
-    study::StudyRunOptions o;
-    o.threads = 2;
-    study::prepare_study_dir(grid, dir / "out", o);
-    const study::StudyRunResult run = study::run_study(grid, dir / "out", o);
+    const study::StudyRunResult run = vssw::testing::run_study_into(grid, dir / "out", 2);
     ASSERT_TRUE(run.data.has_value());
     const study::StudyData read = study::read_study_data(dir / "out");
     const auto json = [](const study::StudyData& d) {
