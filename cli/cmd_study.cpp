@@ -215,7 +215,9 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
     study::OutputOptions options;
     options.plots = !o.no_plots;
     options.gnuplot = o.gnuplot;
-    const study::OutputFiles files = as_committed(study::write_study_outputs(staged->path(), options), *staged);
+    // From the rows this run has just written, when it wrote them; read back from the folder otherwise.
+    const study::OutputFiles files = as_committed(
+        study::write_study_outputs(staged->path(), options, study::take_study_data(result, staged->path())), *staged);
     staged->commit();
     for (const std::string& w : files.warnings) print_message_line(err, "warning", w);
 

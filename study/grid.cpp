@@ -7,6 +7,8 @@
 #include <functional>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <string_view>
 #include <limits>
 #include <memory>
 
@@ -394,22 +396,36 @@ const Grid::PartGrid& Grid::part_of(int id, std::size_t& index) const {
 
 // A case's levels by key, and how messages name them ("height 4, hinge 0.7").
 struct Grid::CaseLevels {
-    std::map<std::string, Level, std::less<>> level;  // std::less<>: looked up by a key's literal, with no string made
-    std::vector<std::pair<std::string, Level>> in_order;  // the part's axes in order, for described()
+    // The part's axes in order, each with the case's level: pointers into the study's axes, looked up by a key's
+    // literal with no string, node or level copied (a part has a few axes: a scan costs less than a map's nodes).
+    std::vector<std::pair<const std::string*, const Level*>> in_order;
 
     // Made only for a message: formatting it for every case cost more than building the case's wall.
     std::string described() const {
         std::string text;
-        for (const auto& [key, value] : in_order) text += fmt::format("{}{} {}", text.empty() ? "" : ", ", key, to_text(value));
+        for (const auto& [key, value] : in_order)
+            text += fmt::format("{}{} {}", text.empty() ? "" : ", ", *key, to_text(*value));
         return text;
     }
 
-    bool has(const char* k) const { return level.count(k) > 0; }
-    double num(const char* k, double fallback) const {
-        const auto it = level.find(k);
-        return it == level.end() ? fallback : as_number(it->second);
+    // The level of key `k`, nullptr when no axis gives it (the last axis that gives it, as a map assigned in order).
+    // A view: the literal's length is known where it is written, and unequal lengths compare at once.
+    const Level* find(std::string_view k) const {
+        for (auto it = in_order.rbegin(); it != in_order.rend(); ++it)
+            if (*it->first == k) return it->second;
+        return nullptr;
     }
-    const std::string& word(const char* k) const { return as_word(level.at(k)); }
+    const Level& at(std::string_view k) const {
+        const Level* l = find(k);
+        if (l == nullptr) throw std::out_of_range("no level of " + std::string(k));
+        return *l;
+    }
+    bool has(std::string_view k) const { return find(k) != nullptr; }
+    double num(std::string_view k, double fallback) const {
+        const Level* l = find(k);
+        return l == nullptr ? fallback : as_number(*l);
+    }
+    const std::string& word(std::string_view k) const { return as_word(at(k)); }
 };
 
 CaseSpec Grid::make_case(int id) const {
@@ -503,8 +519,7 @@ Grid::CaseLevels Grid::case_levels(CaseSpec& c) const {
     CaseLevels l;
     for (std::size_t i = 0; i < axes.size(); ++i) {
         c.levels.push_back(axes[i]->levels[d[i]]);
-        l.level[axes[i]->key] = c.levels.back();
-        l.in_order.emplace_back(axes[i]->key, c.levels.back());
+        l.in_order.emplace_back(&axes[i]->key, &axes[i]->levels[d[i]]);
     }
     std::size_t wall_index = 0;
     const std::vector<const Axis*> walls(axes.begin(), axes.begin() + static_cast<std::ptrdiff_t>(part.wall.size()));
@@ -534,7 +549,7 @@ void Grid::build_wall(CaseSpec& c, const CaseLevels& l) const {
     double height = 0.0, thickness = 0.0;
     std::optional<double> hinge;
     if (l.has("hinge")) {
-        const Level& h = l.level.at("hinge");
+        const Level& h = l.at("hinge");
         // Eq. (15), (15e) with N off-centre, (15r) with rounded corners as well (analytic/closed_forms.hpp).
         const double eccentricity = l.num("overburden_eccentricity", 0.0), corners = l.num("corner_radius", 0.0);
         hinge = std::holds_alternative<double>(h) ? as_number(h)

@@ -28,6 +28,24 @@ long parse_long(const std::string& text, const std::filesystem::path& path) {
     return v;
 }
 
+// A journal line's fields: split at its commas when it holds no quote or carriage return (every line of numbers and
+// plain statuses), else read as a CSV record.
+void split_record(const std::string& line, std::vector<std::string>& f) {
+    if (line.find_first_of("\"\r") != std::string::npos) {
+        std::istringstream record(line);
+        io::read_csv_record(record, f);
+        return;
+    }
+    f.clear();
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = line.find(',', start);
+        f.emplace_back(line, start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (comma == std::string::npos) return;
+        start = comma + 1;
+    }
+}
+
 // Reads the journal's whole tasks (their rows in file order) and the byte offset just past the last whole task.
 std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const std::string* identity,
                                         const Shard* shard, std::set<TaskKey>* done, std::streamoff* end_of_whole,
@@ -42,14 +60,16 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
     std::vector<ResultRow> rows, pending;
     std::vector<IdaRow> pending_ida;
     std::set<TaskKey> seen;
-    std::streamoff whole = in.tellg();
+    if (in.eof()) throw InputError(fmt::format("journal {}: its first line is cut short", path.string()));
+    // Offsets counted from the lines read (each and its newline), not asked of the stream per task (a seek each).
+    std::streamoff read = static_cast<std::streamoff>(first.size()) + 1, whole = read;
     std::vector<std::string> f;
+    std::string line;
     for (;;) {
-        std::string line;
         if (!std::getline(in, line)) break;
         if (in.eof()) break;  // a last line without its newline was being written: not whole
-        std::istringstream record(line);
-        io::read_csv_record(record, f);
+        read += static_cast<std::streamoff>(line.size()) + 1;
+        split_record(line, f);
         if (!f.empty() && f[0] == kDone) {
             if (f.size() != 3) throw InputError(fmt::format("journal {}: a malformed closing line '{}'", path.string(), line));
             const TaskKey key{static_cast<int>(parse_long(f[1], path)), static_cast<std::size_t>(parse_long(f[2], path))};
@@ -63,7 +83,7 @@ std::vector<ResultRow> read_whole_tasks(const std::filesystem::path& path, const
             pending.clear();
             pending_ida.clear();
             if (done) done->insert(key);
-            whole = in.tellg();
+            whole = read;
             continue;
         }
         if (!f.empty() && f[0] == kIda) {

@@ -1,5 +1,8 @@
 #include "study/metric_catalog.hpp"
 
+#include <string_view>
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "analytic/error.hpp"
@@ -17,8 +20,14 @@ const std::vector<compare::MetricInfo>& metric_catalog() {
 }
 
 const compare::MetricInfo& metric_info(const std::string& name) {
-    for (const compare::MetricInfo& m : metric_catalog())
-        if (name == m.name) return m;
+    // The names measured once: a study looks each of its metrics up for every task.
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> out;
+        for (const compare::MetricInfo& m : metric_catalog()) out.emplace_back(m.name);
+        return out;
+    }();
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return metric_catalog()[i];
     std::vector<std::string> known;
     for (const compare::MetricInfo& m : metric_catalog()) known.push_back(m.name);
     throw InputError(fmt::format("unknown metric '{}' (known: {})", name, fmt::join(known, ", ")));

@@ -36,7 +36,10 @@ nlohmann::ordered_json read_manifest(const std::filesystem::path& dir) {
 }
 
 OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options) {
-    const StudyData data = read_study_data(dir);
+    return write_study_outputs(dir, options, read_study_data(dir));
+}
+
+OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options, const StudyData& data) {
     return write_study_outputs(dir, options, data, ensemble_measures(data));
 }
 
@@ -44,7 +47,7 @@ OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOp
                                 const EnsembleMeasures& ensemble) {
     OutputFiles files;
     io::write_file(dir / kResultsJson,
-               [&](std::ostream& out) { write_results_json(out, data.manifest, dir / kResultsCsv); });
+               [&](std::ostream& out) { write_results_json(out, data); });
     files.written.push_back(dir / kResultsJson);
 
     const std::vector<Effect> effects = parameter_effects(data);

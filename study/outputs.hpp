@@ -1,6 +1,7 @@
 #pragma once
-// What a study folder holds besides results.csv and manifest.json, written from those two alone (so that one run, a
-// resumed run and a merge of shards are written by the same code):
+// What a study folder holds besides results.csv and manifest.json, written from those two alone, as read back or as
+// just written (study/study_data.hpp; so that one run, a resumed run and a merge of shards are written by the same
+// code):
 //   results.json           the manifest's keys and every row (results_files.hpp)
 //   plots/                 gnuplot SVGs with their .gp scripts and .dat data (study/study_plots.hpp); without gnuplot
 //                          the scripts and data only, and a warning
@@ -39,6 +40,8 @@ nlohmann::ordered_json read_manifest(const std::filesystem::path& dir);
 
 // InputError naming the file when DIR's results cannot be read or a file cannot be written.
 OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options);
+// The same from DIR's results already in memory (StudyRunResult::data: the run that has just written them).
+OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options, const StudyData& data);
 // The same from DIR's results already read and measured (read_study_data, ensemble_measures): a caller that needs
 // them too (the report's earthquake part) computes the measures, bootstraps included, once.
 OutputFiles write_study_outputs(const std::filesystem::path& dir, const OutputOptions& options, const StudyData& data,

@@ -10,6 +10,7 @@
 #include <ostream>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -41,39 +42,81 @@ std::vector<std::string> results_header(const Grid& grid) {
     return h;
 }
 
-void write_results_csv(std::ostream& out, const Grid& grid, const std::vector<ResultRow>& rows) {
+namespace {
+
+// FNV-1a 64 (offset basis and prime as grid.cpp's identity), fed piece by piece.
+class Fnv1a {
+public:
+    void add(std::string_view bytes) {
+        for (const char c : bytes) {
+            h_ ^= static_cast<unsigned char>(c);
+            h_ *= 1099511628211ull;
+        }
+    }
+    std::string hex() const { return fmt::format("{:016x}", h_); }
+
+private:
+    std::uint64_t h_ = 14695981039346656037ull;
+};
+
+}  // namespace
+
+std::string write_results_csv(std::ostream& out, const Grid& grid, const std::vector<ResultRow>& rows,
+                              StudyDataBuilder* data) {
     const std::vector<std::string> header = results_header(grid);
-    for (std::size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i];
-    out << '\n';
+    Fnv1a hash;
+    std::string line;
+    for (std::size_t i = 0; i < header.size(); ++i) (line += (i ? "," : "")) += header[i];
+    line += '\n';
+    out << line;
+    hash.add(line);
     const StudySpec& spec = grid.spec();
-    std::vector<std::string> units;  // each metric's unit as a CSV field, looked up once
-    for (const std::string& m : spec.metrics) units.push_back(io::csv_field(metric_info(m).unit));
+    std::vector<std::string> units, unit_fields;  // each metric's unit, and as a CSV field, looked up once
+    for (const std::string& m : spec.metrics) {
+        units.push_back(metric_info(m).unit);
+        unit_fields.push_back(io::csv_field(units.back()));
+    }
+    // The row's fields: the case's and run's (case_id to settings) are the same for every metric of one case and run
+    // (rows come so sorted), and so is their start of the line.
+    std::vector<std::string> fields(header.size());
+    const std::size_t metric_field = header.size() - 5;
     int cached_id = 0;
     std::size_t cached_run = 0;
     CaseSpec c;
-    std::string case_fields;  // the row's start, the same for every metric of one case and run (rows come so sorted)
-    std::string line;
+    std::string case_fields;
     for (const ResultRow& r : rows) {
         if (r.case_id != cached_id) c = grid.make_case(r.case_id);
         const RunSpec& run = grid.runs().at(r.run);
-        if (r.case_id != cached_id || r.run != cached_run || case_fields.empty()) {
-            case_fields = fmt::format("{},{}", r.case_id, io::csv_field(run.engine));
-            for (const std::string& v : grid.column_values(c, run)) (case_fields += ',') += io::csv_field(v);
+        const bool same_case = r.case_id == cached_id && r.run == cached_run && !case_fields.empty();
+        if (!same_case) {
+            fields[0] = std::to_string(r.case_id);
+            fields[1] = run.engine;
+            std::vector<std::string> values = grid.column_values(c, run);
+            std::move(values.begin(), values.end(), fields.begin() + 2);
+            case_fields = fields[0];
+            for (std::size_t i = 1; i < metric_field; ++i) (case_fields += ',') += io::csv_field(fields[i]);
             cached_id = r.case_id;
             cached_run = r.run;
         }
-        const std::string& metric = spec.metrics.at(r.metric);
-        const std::string& unit = units.at(r.metric);
-        line = case_fields;
+        fields[metric_field] = spec.metrics.at(r.metric);
+        fields[metric_field + 1].clear();
         // Shortest exact form: a value reads back to the same double, and a tidy file stays short.
-        ((line += ',') += metric) += ',';
-        if (std::isfinite(r.value)) fmt::format_to(std::back_inserter(line), "{}", r.value);
-        (line += ',') += unit;
+        if (std::isfinite(r.value)) fmt::format_to(std::back_inserter(fields[metric_field + 1]), "{}", r.value);
+        fields[metric_field + 2] = units.at(r.metric);
+        fields[metric_field + 3] = r.status;
+        fields[metric_field + 4] = r.warnings;
+        line = case_fields;
+        ((line += ',') += fields[metric_field]) += ',';
+        line += fields[metric_field + 1];
+        (line += ',') += unit_fields.at(r.metric);
         (line += ',') += io::csv_field(r.status);
         (line += ',') += io::csv_field(r.warnings);
         line += '\n';
         out << line;
+        hash.add(line);
+        if (data) data->add(fields, same_case);
     }
+    return hash.hex();
 }
 
 Json manifest_json(const Grid& grid, const StudyMeta& meta) {
@@ -151,16 +194,13 @@ ResultsTable read_results_csv(const std::filesystem::path& path) {
 
 std::string file_fnv1a(const std::filesystem::path& path) {
     std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
-    std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64's offset basis and prime, as grid.cpp's identity
+    Fnv1a hash;
     char buf[1 << 16];
     while (in) {
         in.read(buf, sizeof buf);
-        for (std::streamsize i = 0; i < in.gcount(); ++i) {
-            h ^= static_cast<unsigned char>(buf[i]);
-            h *= 1099511628211ull;
-        }
+        hash.add(std::string_view(buf, static_cast<std::size_t>(in.gcount())));
     }
-    return fmt::format("{:016x}", h);
+    return hash.hex();
 }
 
 namespace {
@@ -193,63 +233,94 @@ void append_json_number(std::string& out, double x) {
     out.append(digits.data(), static_cast<std::size_t>(end - digits.data()));
 }
 
-// One row of results.csv as the line dump_json gives the object {header[i]: field} (keys in the header's order, no
-// spaces): an empty field null, a number in a numeric column a number (case_id and specimen whole), anything else a
-// string. Written as text, not built as a Json object and dumped, which cost a quarter of a closed-form study's time.
-void append_json_row(std::string& out, const std::vector<std::string>& keys, const std::vector<char>& numeric,
-                     const std::vector<char>& whole, const std::vector<std::string>& fields) {
-    out += '{';
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-        if (i > 0) out += ',';
-        out += keys[i];
-        out += ':';
-        const std::string& v = fields[i];
-        char* end = nullptr;
-        const double x = std::strtod(v.c_str(), &end);
-        const bool number = !v.empty() && *end == '\0';  // a word in a numeric column (hinge "eq15") stays a word
-        if (v.empty()) out += "null";
-        else if (!number || !numeric[i]) append_json_string(out, v);
-        else if (whole[i]) out += std::to_string(static_cast<long>(x));
-        else append_json_number(out, x);
-    }
-    out += '}';
+// A field of results.csv as dump_json gives it in its row's object: an empty field null, a number in a numeric column a
+// number (case_id and specimen whole), anything else a string.
+void append_json_field(std::string& out, const std::string& v, bool numeric, bool whole) {
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    const bool number = !v.empty() && *end == '\0';  // a word in a numeric column (hinge "eq15") stays a word
+    if (v.empty()) out += "null";
+    else if (!number || !numeric) append_json_string(out, v);
+    else if (whole) out += std::to_string(static_cast<long>(x));
+    else append_json_number(out, x);
 }
+
+// Where a row's field comes from in StudyData: its own members, or a raw column's texts.
+enum class FieldSource { case_id, metric, value, status, warnings, raw };
 
 }  // namespace
 
-void write_results_json(std::ostream& out, const Json& manifest, const std::filesystem::path& csv) {
+void write_results_json(std::ostream& out, const StudyData& data) {
     // Streamed: the manifest's keys, then "rows" one object at a time, so that a large study needs no large JSON
     // value in memory.
-    std::string head = io::dump_json(manifest, 2);
+    std::string head = io::dump_json(data.manifest, 2);
     head.pop_back();  // the closing brace
     while (!head.empty() && (head.back() == '\n' || head.back() == ' ')) head.pop_back();
     out << head << ",\n  \"rows\": [";
-    std::ifstream in(csv, std::ios::binary);
-    if (!in) throw InputError(fmt::format("cannot read '{}'", csv.string()));
-    std::vector<std::string> header, fields;
-    io::read_csv_record(in, header);
-    // Each column's key as JSON text and its kind, once. A key twice in the header would be one key of the object:
-    // results.csv has none (results_header), and such a file is refused rather than written otherwise.
-    std::vector<std::string> keys(header.size());
-    std::vector<char> numeric(header.size()), whole(header.size());
+    // Each row is the line dump_json gives the object {header[i]: field} (keys in the header's order, no spaces),
+    // written as text rather than built as a Json object and dumped (a quarter of a closed-form study's time once).
+    // Each distinct field ("key":value) is made once: the rows repeat a few texts. A key twice in the header would be
+    // one key of the object: results.csv has none (results_header), and such a file is refused rather than written
+    // otherwise.
+    const std::vector<std::string>& header = data.header;
+    const auto fragment = [&](std::size_t i, const std::string& text) {
+        std::string f;
+        append_json_string(f, header[i]);
+        f += ':';
+        append_json_field(f, text, kNumericColumns.count(header[i]) > 0, header[i] == "case_id" || header[i] == "specimen");
+        return f;
+    };
+    std::vector<FieldSource> source(header.size(), FieldSource::raw);
+    std::vector<std::size_t> raw_of(header.size());
+    std::vector<std::string> keys(header.size());  // "key": for the fields written per row
+    const std::vector<std::pair<const char*, FieldSource>> own = {{"case_id", FieldSource::case_id},
+                                                                  {"metric", FieldSource::metric},
+                                                                  {"value", FieldSource::value},
+                                                                  {"status", FieldSource::status},
+                                                                  {"warnings", FieldSource::warnings}};
     for (std::size_t i = 0; i < header.size(); ++i) {
         if (std::count(header.begin(), header.end(), header[i]) > 1)
-            throw InputError(fmt::format("'{}': the column '{}' is named twice", csv.string(), header[i]));
+            throw InputError(fmt::format("results.csv: the column '{}' is named twice", header[i]));
+        for (const auto& [name, from] : own)
+            if (header[i] == name) source[i] = from;
         append_json_string(keys[i], header[i]);
-        numeric[i] = kNumericColumns.count(header[i]) > 0;
-        whole[i] = header[i] == "case_id" || header[i] == "specimen";
+        keys[i] += ':';
     }
-    bool first = true;
+    std::vector<std::vector<std::string>> raw(data.raw_columns.size());
+    for (std::size_t k = 0; k < data.raw_columns.size(); ++k) {
+        raw_of[data.raw_columns[k].field] = k;
+        for (const std::string& text : data.raw_columns[k].texts) raw[k].push_back(fragment(data.raw_columns[k].field, text));
+    }
+    const auto texts_of = [&](FieldSource from, const std::vector<std::string>& texts) {
+        std::vector<std::string> made;
+        const auto i = static_cast<std::size_t>(std::find(source.begin(), source.end(), from) - source.begin());
+        for (const std::string& t : texts) made.push_back(fragment(i, t));
+        return made;
+    };
+    std::vector<std::string> metric_names;
+    for (const MetricMeta& m : data.metrics) metric_names.push_back(m.name);
+    const std::vector<std::string> metrics = texts_of(FieldSource::metric, metric_names);
+    const std::vector<std::string> statuses = texts_of(FieldSource::status, data.statuses);
+    const std::vector<std::string> warnings = texts_of(FieldSource::warnings, data.warnings);
     std::string line;
-    while (io::read_csv_record(in, fields)) {
-        if (fields.size() != header.size()) continue;
-        line.assign(first ? "\n    " : ",\n    ");
-        append_json_row(line, keys, numeric, whole, fields);
+    for (std::size_t r = 0; r < data.rows.size(); ++r) {
+        const StudyRow& row = data.rows[r];
+        line.assign(r ? ",\n    {" : "\n    {");
+        for (std::size_t i = 0; i < header.size(); ++i) {
+            if (i > 0) line += ',';
+            switch (source[i]) {
+                case FieldSource::case_id: (line += keys[i]) += std::to_string(row.case_id); break;
+                case FieldSource::metric: line += metrics[row.metric]; break;
+                case FieldSource::value: line += keys[i]; append_json_number(line, row.value); break;
+                case FieldSource::status: line += statuses[row.status]; break;
+                case FieldSource::warnings: line += warnings[row.warning]; break;
+                case FieldSource::raw: line += raw[raw_of[i]][row.raw[raw_of[i]]]; break;
+            }
+        }
+        line += '}';
         out << line;
-        first = false;
     }
-    out << (first ? "]\n}\n" : "\n  ]\n}\n");
+    out << (data.rows.empty() ? "]\n}\n" : "\n  ]\n}\n");
 }
-
 
 }  // namespace vssw::study

@@ -20,6 +20,7 @@
 
 #include "study/grid.hpp"
 #include "study/journal.hpp"
+#include "study/study_data.hpp"
 
 namespace vssw::study {
 
@@ -51,8 +52,10 @@ struct StudyMeta {
 
 // The header line's fields: case_id, engine, the grid's columns, metric, value, unit, status.
 std::vector<std::string> results_header(const Grid& grid);
-// rows sorted by (case_id, run, metric).
-void write_results_csv(std::ostream& out, const Grid& grid, const std::vector<ResultRow>& rows);
+// rows sorted by (case_id, run, metric). Returns the FNV-1a 64 of the bytes written (as file_fnv1a gives it), and
+// gives each row's fields to `data` when one is given: the study's data built from what was written, not read back.
+std::string write_results_csv(std::ostream& out, const Grid& grid, const std::vector<ResultRow>& rows,
+                              StudyDataBuilder* data = nullptr);
 nlohmann::ordered_json manifest_json(const Grid& grid, const StudyMeta& meta);
 
 // A results.csv read back (by the merge and by the writers of plots and prose, so that a merged study and a single
@@ -68,8 +71,9 @@ ResultsTable read_results_csv(const std::filesystem::path& path);
 // FNV-1a 64 of a file's bytes, as 16 hex digits (InputError naming the file when it cannot be read).
 std::string file_fnv1a(const std::filesystem::path& path);
 
-// results.json from the manifest and results.csv (streamed row by row).
-void write_results_json(std::ostream& out, const nlohmann::ordered_json& manifest, const std::filesystem::path& csv);
+// results.json from the study's data: its manifest's keys, then its rows as results.csv gives them (streamed row by
+// row).
+void write_results_json(std::ostream& out, const StudyData& data);
 
 
 }  // namespace vssw::study

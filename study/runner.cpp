@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <system_error>
 #include <tuple>
@@ -271,9 +272,9 @@ void run_tasks(const Grid& grid, const StudyEngines& engines, const StudyTasks& 
 }
 
 // The journal's rows, checked against the study, the thresholds given to every case of their wall, sorted into
-// results.csv in `results_dir`; counts the rows into `result`.
+// results.csv in `results_dir` and given to `data` as they are written; counts the rows into `result`.
 void write_results(const Grid& grid, const fs::path& journal_path, const fs::path& results_dir,
-                   const StudyRunOptions& options, StudyRunResult& result) {
+                   const StudyRunOptions& options, StudyDataBuilder& data, StudyRunResult& result) {
     std::vector<IdaRow> ida;
     std::vector<ResultRow> rows = read_journal(journal_path, &ida);
     for (const ResultRow& row : rows)
@@ -287,7 +288,7 @@ void write_results(const Grid& grid, const fs::path& journal_path, const fs::pat
     for (const ResultRow& r : rows) result.failed_rows += r.status == "ok" ? 0 : 1;
     result.rows = static_cast<long>(rows.size());
     io::AtomicFile csv(results_dir / kResultsCsv);
-    write_results_csv(csv.stream(), grid, rows);
+    result.meta.results_hash = write_results_csv(csv.stream(), grid, rows, &data);
     csv.commit();
     if (!ida.empty()) {
         io::AtomicFile curves(results_dir / kIdaCsv);
@@ -295,7 +296,6 @@ void write_results(const Grid& grid, const fs::path& journal_path, const fs::pat
         curves.commit();
     }
     result.meta.result_rows = result.rows;
-    result.meta.results_hash = file_fnv1a(results_dir / kResultsCsv);
 }
 
 // A resumed study whose results were complete: their rows are counted as they are (a --strict resume judges them
@@ -339,9 +339,11 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     fs::create_directories(results_dir, ec);
     if (ec) throw InputError(fmt::format("cannot create the folder '{}': {}", results_dir.string(), ec.message()));
     const fs::path journal_path = dir / kJournalFile;
+    std::optional<StudyDataBuilder> data;  // the study's data, built from the rows as results.csv is written
     if (journal.journal) {
         journal.journal->close();
-        write_results(grid, journal_path, results_dir, options, result);
+        data.emplace(results_header(grid), grid.spec().metrics);
+        write_results(grid, journal_path, results_dir, options, *data, result);
     }
     if (journal.finished_already) keep_finished_results(dir, results_dir, result);
 
@@ -352,12 +354,21 @@ StudyRunResult run_study(const Grid& grid, const fs::path& dir, const StudyRunOp
     result.meta.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (journal.journal) {
         // The manifest last; the journal goes once the results are in place.
+        io::Json manifest_data = manifest_json(grid, result.meta);
         io::AtomicFile manifest(results_dir / kManifestFile);
-        manifest.stream() << io::dump_json(manifest_json(grid, result.meta), 2) << '\n';
+        manifest.stream() << io::dump_json(manifest_data, 2) << '\n';
         manifest.commit();
+        result.data = data->finish(std::move(manifest_data));
         if (results_dir == dir) fs::remove(journal_path, ec);
     }
     return result;
+}
+
+StudyData take_study_data(StudyRunResult& result, const fs::path& dir) {
+    if (!result.data) return read_study_data(dir);
+    StudyData d = std::move(*result.data);
+    result.data.reset();
+    return d;
 }
 
 }  // namespace vssw::study

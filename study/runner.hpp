@@ -6,12 +6,14 @@
 // their order depend on the study file and the shard only.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "io/folder_lock.hpp"
 #include "study/grid.hpp"
 #include "study/journal.hpp"
 #include "study/results_files.hpp"
+#include "study/study_data.hpp"
 
 namespace vssw::study {
 
@@ -37,6 +39,10 @@ struct StudyRunResult {
     StudyMeta meta;
     long rows = 0, failed_rows = 0;
     bool writer = true;  // this process wrote the outputs (false on MPI ranks other than 0)
+    // The study's data (study/study_data.hpp) built from the rows this run wrote into results.csv, so that its other
+    // files are written without reading that file back; none when this run wrote none (a resumed study whose results
+    // were complete, MPI ranks other than 0): read_study_data reads them.
+    std::optional<StudyData> data;
 };
 
 // Checks DIR before anything runs (InputError): it must be a folder this process can write (it is created if
@@ -49,6 +55,10 @@ io::FolderLock prepare_study_dir(const Grid& grid, const std::filesystem::path& 
 // Runs the study into DIR (results.csv, manifest.json). InputError on bad input (nothing runs); a failing task is rows
 // with their reasons.
 StudyRunResult run_study(const Grid& grid, const std::filesystem::path& dir, const StudyRunOptions& options);
+
+// The study's data: the rows this run wrote (moved out of `result`), or DIR's results read back when it wrote none
+// (InputError naming the file when they cannot be read).
+StudyData take_study_data(StudyRunResult& result, const std::filesystem::path& dir);
 
 // The file names in DIR.
 constexpr const char* kJournalFile = "journal.csv";

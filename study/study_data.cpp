@@ -51,42 +51,46 @@ std::string canonical_level(const std::string& text) {
     return std::isfinite(v) ? fmt::format("{:.{}g}", v, kLevelDigits) : text;
 }
 
-// Interns the texts of one column.
+// Interns the texts of one raw column and, for a parameter column, their canonical levels.
 class Interner {
 public:
-    explicit Interner(ColumnLevels& column) : column_(column) {
-        column_.texts = {""};
-        column_.values = {std::nan("")};
+    Interner(RawColumn& raw, ColumnLevels* column) : raw_(raw), column_(column) {
+        if (!column_) return;
+        column_->texts = {""};
+        column_->values = {std::nan("")};
         index_[""] = kEmptyLevel;
     }
     std::uint32_t id(const std::string& field) {
-        // A column repeats a few texts over many rows: each distinct one is made canonical once.
+        // A column repeats a few texts over many rows: each distinct one is kept, and made canonical, once.
         if (const auto seen = raw_index_.find(field); seen != raw_index_.end()) return seen->second;
-        const std::uint32_t level = canonical_id(field);
-        raw_index_.emplace(field, level);
-        return level;
+        const auto id = static_cast<std::uint32_t>(raw_.texts.size());
+        raw_.texts.push_back(field);
+        if (column_) raw_.level.push_back(canonical_id(field));
+        raw_index_.emplace(field, id);
+        return id;
     }
 
 private:
     std::uint32_t canonical_id(const std::string& field) {
         const std::string text = canonical_level(field);
-        const auto [it, inserted] = index_.try_emplace(text, static_cast<std::uint32_t>(column_.texts.size()));
+        const auto [it, inserted] = index_.try_emplace(text, static_cast<std::uint32_t>(column_->texts.size()));
         if (inserted) {
-            column_.texts.push_back(text);
-            column_.values.push_back(number_of(text));
-            column_.order.push_back(it->second);
+            column_->texts.push_back(text);
+            column_->values.push_back(number_of(text));
+            column_->order.push_back(it->second);
         }
         return it->second;
     }
 
-    ColumnLevels& column_;
+    RawColumn& raw_;
+    ColumnLevels* column_;
     std::unordered_map<std::string, std::uint32_t> index_;      // by canonical text
     std::unordered_map<std::string, std::uint32_t> raw_index_;  // by the text as the file gives it
 };
 
-std::size_t header_index(const std::vector<std::string>& header, const std::string& name, const fs::path& path) {
+std::size_t header_index(const std::vector<std::string>& header, const std::string& name) {
     const auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end()) throw InputError(fmt::format("{}: no column '{}'", path.string(), name));
+    if (it == header.end()) throw InputError(fmt::format("no column '{}'", name));
     return static_cast<std::size_t>(it - header.begin());
 }
 
@@ -94,6 +98,12 @@ void read_metrics(StudyData& d) {
     for (const io::Json& m : d.manifest.at("metrics"))
         d.metrics.push_back({m.at("name").get<std::string>(), m.at("unit").get<std::string>(),
                              m.value("description", std::string()), false, false});
+}
+
+std::vector<std::string> metric_names(const io::Json& manifest) {
+    std::vector<std::string> names;
+    for (const io::Json& m : manifest.at("metrics")) names.push_back(m.at("name").get<std::string>());
+    return names;
 }
 
 // The assumption levels in the order of the manifest's runs (the file's order), ahead of any the runs do not name.
@@ -143,67 +153,22 @@ void read_series(StudyData& d) {
     }
 }
 
-void read_rows(StudyData& d, const fs::path& path) {
+// results.csv's header and records into the builder (InputError naming the file).
+StudyDataBuilder read_rows(const fs::path& path, std::vector<std::string> metrics) {
     std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
-    std::vector<std::string> header, fields;
     try {
+        std::vector<std::string> header, fields;
         if (!io::read_csv_record(in, header) || header.empty() || header.front() != "case_id")
             throw InputError("no header line starting with case_id");
-    } catch (const InputError& e) {
-        throw InputError(fmt::format("{}: {}", path.string(), e.what()));
-    }
-    const std::size_t first = header_index(header, "engine", path), last = header_index(header, "settings", path);
-    const std::size_t metric = header_index(header, "metric", path), value = header_index(header, "value", path);
-    const std::size_t status = header_index(header, "status", path), warnings = header_index(header, "warnings", path);
-    d.columns.resize(last - first + 1);
-    std::vector<Interner> interners;
-    interners.reserve(d.columns.size());
-    for (std::size_t c = 0; c < d.columns.size(); ++c) {
-        d.columns[c].key = header[first + c];
-        interners.emplace_back(d.columns[c]);
-    }
-    std::unordered_map<std::string, std::uint32_t> metric_index;
-    for (std::size_t m = 0; m < d.metrics.size(); ++m) metric_index[d.metrics[m].name] = static_cast<std::uint32_t>(m);
-    std::set<std::tuple<int, std::vector<std::uint32_t>>> warned_tasks;
-    std::unordered_map<std::string, std::uint32_t> status_index, warning_index;
-    try {
+        StudyDataBuilder rows(std::move(header), std::move(metrics));
         while (io::read_csv_record(in, fields)) {
             if (fields.size() == 1 && fields[0].empty()) continue;  // a blank line
-            if (fields.size() != header.size())
-                throw InputError(fmt::format("a row of {} fields, the header has {}", fields.size(), header.size()));
-            StudyRow row;
-            char* end = nullptr;
-            row.case_id = static_cast<int>(std::strtol(fields[0].c_str(), &end, 10));
-            if (fields[0].empty() || *end != '\0')
-                throw InputError(fmt::format("case_id '{}' is not a number", fields[0]));
-            const auto m = metric_index.find(fields[metric]);
-            if (m == metric_index.end())
-                throw InputError(fmt::format("metric '{}' is not one of the manifest's", fields[metric]));
-            row.metric = m->second;
-            row.value = fields[value].empty() ? std::nan("") : number_of(fields[value]);
-            for (std::size_t c = 0; c < d.columns.size(); ++c) row.levels.push_back(interners[c].id(fields[first + c]));
-            const auto [st, added] =
-                status_index.try_emplace(fields[status], static_cast<std::uint32_t>(d.statuses.size()));
-            if (added) d.statuses.push_back(fields[status]);
-            row.status = st->second;
-            if (is_failed(fields[status])) {
-                ++d.failed_rows;
-                ++d.failure_reasons[failure_reason(fields[status])];
-            }
-            if (!fields[warnings].empty()) {
-                ++d.warned_rows;
-                warned_tasks.insert({row.case_id, row.levels});
-                const auto [w, new_warning] =
-                    warning_index.try_emplace(fields[warnings], static_cast<std::uint32_t>(d.warnings.size()));
-                if (new_warning) d.warnings.push_back(fields[warnings]);
-                row.warning = w->second;
-            }
-            d.rows.push_back(std::move(row));
+            rows.add(fields);
         }
+        return rows;
     } catch (const InputError& e) {
         throw InputError(fmt::format("{}: {}", path.string(), e.what()));
     }
-    d.warned_tasks = static_cast<long>(warned_tasks.size());
 }
 
 void classify_metrics(StudyData& d) {
@@ -260,28 +225,123 @@ std::string StudyData::series_label(const Series& s, const std::vector<std::size
     return s.settings.empty() ? label : label + " " + s.settings;
 }
 
-StudyData read_study_data(const fs::path& dir) {
-    StudyData d;
-    d.manifest = read_manifest(dir);
+// The columns kept as the file gives them, each with its interner.
+struct StudyDataBuilder::Interners {
+    std::vector<Interner> raw;
+    std::unordered_map<std::string, std::uint32_t> metric, status, warning;
+};
+
+StudyDataBuilder::StudyDataBuilder(std::vector<std::string> header, std::vector<std::string> metrics)
+    : metric_names_(std::move(metrics)), interners_(std::make_shared<Interners>()) {
+    d_.header = std::move(header);
+    const std::vector<std::string>& h = d_.header;
+    case_id_ = header_index(h, "case_id");
+    first_ = header_index(h, "engine");
+    const std::size_t last = header_index(h, "settings");
+    metric_ = header_index(h, "metric");
+    value_ = header_index(h, "value");
+    status_ = header_index(h, "status");
+    warnings_ = header_index(h, "warnings");
+    if (last < first_) throw InputError("the column 'settings' comes before 'engine'");
+    d_.columns.resize(last - first_ + 1);
+    for (std::size_t c = 0; c < d_.columns.size(); ++c) d_.columns[c].key = h[first_ + c];
+    for (std::size_t i = 0; i < h.size(); ++i) {
+        if (i == case_id_ || i == metric_ || i == value_ || i == status_ || i == warnings_) continue;
+        RawColumn raw;
+        raw.field = i;
+        if (i >= first_ && i <= last) raw.level_column = i - first_;
+        d_.raw_columns.push_back(std::move(raw));
+    }
+    for (RawColumn& raw : d_.raw_columns)
+        interners_->raw.emplace_back(raw, raw.level_column == std::string::npos ? nullptr
+                                                                                 : &d_.columns[raw.level_column]);
+    for (std::size_t m = 0; m < metric_names_.size(); ++m)
+        interners_->metric[metric_names_[m]] = static_cast<std::uint32_t>(m);
+}
+
+void StudyDataBuilder::add(const std::vector<std::string>& fields, bool same_columns) {
+    if (fields.size() != d_.header.size())
+        throw InputError(fmt::format("a row of {} fields, the header has {}", fields.size(), d_.header.size()));
+    StudyRow row;
+    char* end = nullptr;
+    row.case_id = static_cast<int>(std::strtol(fields[case_id_].c_str(), &end, 10));
+    if (fields[case_id_].empty() || *end != '\0')
+        throw InputError(fmt::format("case_id '{}' is not a number", fields[case_id_]));
+    const auto m = interners_->metric.find(fields[metric_]);
+    if (m == interners_->metric.end())
+        throw InputError(fmt::format("metric '{}' is not one of the manifest's", fields[metric_]));
+    row.metric = m->second;
+    row.value = std::nan("");  // an empty value: none
+    if (const std::string& value = fields[value_]; !value.empty()) {
+        row.value = std::strtod(value.c_str(), &end);
+        if (*end != '\0') throw InputError(fmt::format("value '{}' is not a number", value));
+    }
+    row.levels.resize(d_.columns.size());
+    row.raw.resize(d_.raw_columns.size());
+    for (std::size_t k = 0; k < d_.raw_columns.size(); ++k) {
+        const RawColumn& raw = d_.raw_columns[k];
+        const bool parameter = raw.level_column != std::string::npos;
+        row.raw[k] = same_columns && parameter ? last_.raw[k] : interners_->raw[k].id(fields[raw.field]);
+        if (parameter) row.levels[raw.level_column] = raw.level[row.raw[k]];
+    }
+    const std::string& status = fields[status_];
+    const auto [st, added] = interners_->status.try_emplace(status, static_cast<std::uint32_t>(d_.statuses.size()));
+    if (added) d_.statuses.push_back(status);
+    row.status = st->second;
+    if (is_failed(status)) {
+        ++d_.failed_rows;
+        ++d_.failure_reasons[failure_reason(status)];
+    }
+    if (const std::string& warning = fields[warnings_]; !warning.empty()) {
+        ++d_.warned_rows;
+        warned_tasks_.insert({row.case_id, row.levels});
+        const auto [w, new_warning] =
+            interners_->warning.try_emplace(warning, static_cast<std::uint32_t>(d_.warnings.size()));
+        if (new_warning) d_.warnings.push_back(warning);
+        row.warning = w->second;
+    }
+    last_.raw = row.raw;
+    d_.rows.push_back(std::move(row));
+}
+
+StudyData StudyDataBuilder::finish(io::Json manifest) {
+    StudyData d = std::move(d_);
+    d.manifest = std::move(manifest);
+    d.warned_tasks = static_cast<long>(warned_tasks_.size());
     try {
         const io::Json& study = d.manifest.at("study");
         d.name = study.at("name").get<std::string>();
         d.description = study.value("description", std::string());
         d.kind = study.at("kind").get<std::string>();
         read_metrics(d);
-    } catch (const io::Json::exception& e) {
-        throw InputError(fmt::format("'{}' is not a study manifest: {}", (dir / kManifestFile).string(), e.what()));
-    }
-    read_rows(d, dir / kResultsCsv);
-    try {
+        if (metric_names(d.manifest) != metric_names_) throw InputError("its metrics are not those of the rows");
         classify_columns(d);
         order_assumptions(d);
         read_series(d);
     } catch (const io::Json::exception& e) {
-        throw InputError(fmt::format("'{}' is not a study manifest: {}", (dir / kManifestFile).string(), e.what()));
+        throw InputError(e.what());
     }
     classify_metrics(d);
     return d;
+}
+
+StudyData read_study_data(const fs::path& dir) {
+    io::Json manifest = read_manifest(dir);
+    const auto not_a_manifest = [&](const std::exception& e) {
+        return InputError(fmt::format("'{}' is not a study manifest: {}", (dir / kManifestFile).string(), e.what()));
+    };
+    std::vector<std::string> metrics;
+    try {
+        metrics = metric_names(manifest);
+    } catch (const io::Json::exception& e) {
+        throw not_a_manifest(e);
+    }
+    StudyDataBuilder rows = read_rows(dir / kResultsCsv, std::move(metrics));
+    try {
+        return rows.finish(std::move(manifest));
+    } catch (const InputError& e) {
+        throw not_a_manifest(e);
+    }
 }
 
 std::string parameter_label(const std::string& key) {

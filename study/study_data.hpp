@@ -1,6 +1,8 @@
 #pragma once
-// A study's results as its plots and prose read them: DIR/manifest.json and DIR/results.csv, never the Grid, so that
-// one run, a resumed run and a merge of shards are written by the same code from the same two files.
+// A study's results as its plots, prose and results.json read them: the manifest and the rows of results.csv, never
+// the Grid, so that one run, a resumed run and a merge of shards are written by the same code from the same data. The
+// rows come from DIR/results.csv (read_study_data: a merge, a resumed study whose results were complete) or from the
+// run that has just written that file (StudyDataBuilder fed by write_results_csv): one builder, two sources of rows.
 //
 // Rows keep their parameter columns as level ids (the columns repeat a few texts over many rows). An empty column is
 // a parameter that does not apply to the row: a parapet has no hinge, kinematics or roller; an engine has none of the
@@ -10,7 +12,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/json.hpp"
@@ -50,6 +55,15 @@ struct Series {
     bool analytic() const { return engine == "analytic"; }
 };
 
+// A field of results.csv kept as the file gives it (every column but case_id, metric, value, status and warnings):
+// results.json writes it as it is, where the parameter columns' levels are made canonical.
+struct RawColumn {
+    std::size_t field = 0;                    // its place in the header
+    std::vector<std::string> texts;           // by raw id, each distinct text once
+    std::size_t level_column = std::string::npos;  // its column of StudyData::columns, npos for none (unit)
+    std::vector<std::uint32_t> level;         // by raw id: the level id in that column
+};
+
 struct StudyRow {
     int case_id = 0;
     std::uint32_t metric = 0;         // index into StudyData::metrics
@@ -57,12 +71,15 @@ struct StudyRow {
     std::uint32_t status = 0;         // index into StudyData::statuses ("ok", "failed: <reason>")
     std::uint32_t warning = 0;        // index into StudyData::warnings (0: none)
     std::vector<std::uint32_t> levels;  // one per StudyData::columns
+    std::vector<std::uint32_t> raw;     // one per StudyData::raw_columns: the field's text as results.csv gives it
 };
 
 struct StudyData {
     io::Json manifest;
     std::string name, description, kind;
     std::vector<ColumnLevels> columns;  // engine, then the grid's parameter columns up to settings
+    std::vector<std::string> header;    // results.csv's header line
+    std::vector<RawColumn> raw_columns;  // in header order
     std::vector<std::size_t> assumption_columns;  // the column of each of kAssumptionKeys (npos when absent)
     std::vector<MetricMeta> metrics;
     std::vector<Series> series;
@@ -92,6 +109,29 @@ std::string failure_reason(const std::string& status);
 
 // DIR/manifest.json and DIR/results.csv (InputError naming the file when either is missing or malformed).
 StudyData read_study_data(const std::filesystem::path& dir);
+
+// A study's data built row by row from results.csv's fields: those read from the file, or those its writer has
+// just written (so that a run does not read back what it wrote).
+class StudyDataBuilder {
+public:
+    // results.csv's header and the manifest's metric names, in its order (InputError for a header without one of
+    // the columns the data needs).
+    StudyDataBuilder(std::vector<std::string> header, std::vector<std::string> metrics);
+    // One row's fields, one per header column (InputError for a malformed one). same_columns: the row's case and run
+    // are the last row's, so its parameter fields are too (the writer knows; a file's reader passes false).
+    void add(const std::vector<std::string>& fields, bool same_columns = false);
+    // The data, with the manifest whose metrics were given (InputError when it is not a study manifest).
+    StudyData finish(io::Json manifest);
+
+private:
+    StudyData d_;
+    std::vector<std::string> metric_names_;
+    std::size_t case_id_ = 0, first_ = 0, metric_ = 0, value_ = 0, status_ = 0, warnings_ = 0;
+    struct Interners;
+    std::shared_ptr<Interners> interners_;  // the raw columns' and the texts' indexes
+    StudyRow last_;
+    std::set<std::tuple<int, std::vector<std::uint32_t>>> warned_tasks_;
+};
 
 // Parameter and its unit for axis labels ("height [m]", "amplitude [g]"; a word parameter as it is).
 std::string parameter_label(const std::string& key);

@@ -26,14 +26,20 @@ inline study::StudySpec study_of(const TempDir& dir, const std::string& toml, co
     return study::read_study_file(write_file(dir / name, toml).string());
 }
 
-// Runs the study into dir/out (threads, shard) and returns results.csv read back.
-inline study::ResultsTable run_into(const study::Grid& grid, const std::filesystem::path& out, int threads = 1,
-                                    study::Shard shard = {}) {
+// Runs the study into `out` (threads, shard) and returns what run_study says.
+inline study::StudyRunResult run_study_into(const study::Grid& grid, const std::filesystem::path& out, int threads = 1,
+                                           study::Shard shard = {}) {
     study::StudyRunOptions o;
     o.threads = threads;
     o.shard = shard;
     study::prepare_study_dir(grid, out, o);
-    study::run_study(grid, out, o);
+    return study::run_study(grid, out, o);
+}
+
+// Runs the study into `out` (threads, shard) and returns results.csv read back.
+inline study::ResultsTable run_into(const study::Grid& grid, const std::filesystem::path& out, int threads = 1,
+                                    study::Shard shard = {}) {
+    (void)run_study_into(grid, out, threads, shard);
     return study::read_results_csv(out / study::kResultsCsv);
 }
 

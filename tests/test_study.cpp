@@ -816,6 +816,16 @@ TEST(StudyRun, AnInterruptedStudyResumesWhereItStopped) {
     std::set<study::TaskKey> done;
     EXPECT_THROW(study::Journal(dir / "cut" / "journal.csv", other.identity(), {}, done), InputError)
         << "a journal of another study is not continued";
+    // A journal whose own first line was cut short is refused by name, not continued past its end; whole, it is.
+    std::ofstream(dir / "cut" / "journal.csv") << "#vssw-study-journal," << grid.identity() << ",1/1";
+    try {
+        study::Journal(dir / "cut" / "journal.csv", grid.identity(), {}, done);
+        ADD_FAILURE() << "a journal without its first line's end was continued";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("its first line is cut short"), std::string::npos) << e.what();
+    }
+    std::ofstream(dir / "cut" / "journal.csv") << "#vssw-study-journal," << grid.identity() << ",1/1\n";
+    EXPECT_NO_THROW(study::Journal(dir / "cut" / "journal.csv", grid.identity(), {}, done));
 }
 
 }  // namespace
@@ -1067,6 +1077,42 @@ std::string number_list(std::size_t n, double first, double step) {
     std::string text = "[";
     for (std::size_t i = 0; i < n; ++i) text += fmt::format("{}{}", i ? ", " : "", first + static_cast<double>(i) * step);
     return text + "]";
+}
+
+// A run's data is built from the rows as it writes results.csv, not read back from it: it is the data read back, to the
+// byte of results.json, on a study with a word level (Eq. 15's hinge), derived columns (walls given by alpha and R)
+// and a part whose columns do not apply to the other's.
+TEST(StudyData, TheRowsAsWrittenAreTheRowsReadBack) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, "metrics = [\"threshold_closed_form_g\", \"restitution_closed_form\"]\n"
+                                  "[[part]]\n[part.wall]\nalpha = [0.15, 0.2]\nR = [1.0, 3.0]\nxi = [0.3, 0.5]\n"
+                                  "hinge = [\"eq15\", 0.7]\n[part.excitation]\nkind = \"closed-form\"\n"
+                                  "[[part]]\n[part.wall]\nmodel = \"parapet\"\nheight = [1.2, 1.5]\nthickness = 0.2\n"
+                                  "[part.excitation]\nkind = \"closed-form\"\n"));
+    const study::StudyRunResult run = vssw::testing::run_study_into(grid, dir / "out", 2);
+    ASSERT_TRUE(run.data.has_value());
+    const study::StudyData read = study::read_study_data(dir / "out");
+    const auto json = [](const study::StudyData& d) {
+        std::ostringstream out;
+        study::write_results_json(out, d);
+        return out.str();
+    };
+    const auto levels = [](const study::StudyData& d) {
+        std::vector<std::vector<std::string>> texts;
+        for (const study::StudyRow& r : d.rows) {
+            texts.emplace_back();
+            for (std::size_t c = 0; c < d.columns.size(); ++c) texts.back().push_back(d.text(r, c));
+        }
+        return texts;
+    };
+    EXPECT_EQ(read.rows.size(), 36u);
+    EXPECT_EQ(json(*run.data), json(read));
+    EXPECT_EQ(levels(*run.data), levels(read));
+    EXPECT_EQ(run.data->manifest, read.manifest);
+    // The comparison sees one row's value moved by one unit in the last place.
+    study::StudyData moved = read;
+    moved.rows[5].value = std::nextafter(moved.rows[5].value, 2.0);
+    EXPECT_NE(json(moved), json(read));
 }
 
 }  // namespace

@@ -199,7 +199,7 @@ AssumptionsPart run_assumptions_part(const std::string& study_file, const std::v
     study::OutputOptions output;
     output.plots = options.plots;
     output.gnuplot = options.gnuplot;
-    const study::StudyData d = study::read_study_data(dir);  // once: the study's outputs and the section read it
+    const study::StudyData d = study::take_study_data(result, dir);  // once: the study's outputs and the section read it
     study::write_study_outputs(dir, output, d, study::ensemble_measures(d));
 
     AssumptionsPart part;

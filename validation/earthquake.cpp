@@ -185,16 +185,17 @@ EarthquakeVerdict judge_series(const std::string& engine, const study::SeriesMea
 
 namespace {
 
-// Runs the study of `spec` into dir (its rows only, no outputs) and reads them back: the stand-ins' and the paper's
+// Runs the study of `spec` into dir (its rows only, no outputs) and keeps its rows: the stand-ins' and the paper's
 // model's ensembles beside the report's.
 study::StudyData run_rows(const study::StudySpec& spec, const std::filesystem::path& dir, const EarthquakeRunOptions& options) {
     const study::Grid grid(spec);
     const study::StudyRunOptions run = study_run_options(options);
+    study::StudyRunResult result;
     {
         const io::FolderLock lock = study::prepare_study_dir(grid, dir, run);
-        study::run_study(grid, dir, run);
+        result = study::run_study(grid, dir, run);
     }
-    return study::read_study_data(dir);
+    return study::take_study_data(result, dir);
 }
 
 }  // namespace
@@ -249,11 +250,11 @@ EarthquakePart run_earthquake_part(const std::string& study_file, const std::vec
     const study::Grid grid(spec);
     const study::StudyRunOptions run = study_run_options(options);
     const io::FolderLock lock = study::prepare_study_dir(grid, dir, run);
-    const study::StudyRunResult result = study::run_study(grid, dir, run);
+    study::StudyRunResult result = study::run_study(grid, dir, run);
     study::OutputOptions output;
     output.plots = options.plots;
     output.gnuplot = options.gnuplot;
-    const study::StudyData d = study::read_study_data(dir);
+    const study::StudyData d = study::take_study_data(result, dir);
     const study::EnsembleMeasures e = study::ensemble_measures(d);  // once: the study's outputs and the verdicts read the same
     study::write_study_outputs(dir, output, d, e);
 
