@@ -249,7 +249,7 @@ Command add_report_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "report", "Run the validation suite for the analytic model and the engines; write a report into a folder");
     cmd->add_option("--suite", o->suite,
-                    "default (about 1 min on 2 cores with the default engines, the earthquake part included), "
+                    "default (about 40 s on 2 cores with the default engines, the earthquake part included), "
                     "full (233 cases), or a suite file (a study file whose parts name their walls: "
                     "studies/validation-default.toml is one)");
     add_list_option(*cmd, "--engines", o->engines,
