@@ -48,10 +48,13 @@ std::vector<double> analytic_nodes(const GroundMotion& ground, double period) {
 }  // namespace
 
 void require_diaphragm(const Diaphragm& d, const char* period_name, const char* damping_name) {
-    require(std::isfinite(d.period) && d.period >= 0.0 && d.period <= kMaxDiaphragmPeriod, period_name,
-            fmt::format("in [0, {:g}] s (0: a rigid diaphragm)", kMaxDiaphragmPeriod), d.period);
-    require(std::isfinite(d.damping) && d.damping >= 0.0 && d.damping <= kMaxDiaphragmDamping, damping_name,
-            fmt::format("in [0, {:g}]", kMaxDiaphragmDamping), d.damping);
+    // The ranges are formatted only for a message: every analytic model of a scene checks its diaphragm, several
+    // times in each engine run's set-up (the run monitor's figures), where formatting them was 0.7 % of an ODE run.
+    if (!(std::isfinite(d.period) && d.period >= 0.0 && d.period <= kMaxDiaphragmPeriod))
+        require(false, period_name, fmt::format("in [0, {:g}] s (0: a rigid diaphragm)", kMaxDiaphragmPeriod),
+                d.period);
+    if (!(std::isfinite(d.damping) && d.damping >= 0.0 && d.damping <= kMaxDiaphragmDamping))
+        require(false, damping_name, fmt::format("in [0, {:g}]", kMaxDiaphragmDamping), d.damping);
 }
 
 TopSupportMotion::TopSupportMotion(const GroundMotion& ground, const Diaphragm& d) {
