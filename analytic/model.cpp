@@ -314,9 +314,14 @@ double RockingModel::unstable_equilibrium() const {
 }
 
 double RockingModel::rest_threshold(double a_v, int side) const {
-    const ModelTerms t = terms(0.0);
-    if (const double flat = flat_share(); flat < 1.0)  // Eq. (12r) / (17r): Y and L at rest are b times a lever
-        return ((gravity() + a_v) * t.Y * flat + overburden() * (t.L * flat + side * eccentricity() * t.Le)) / t.X;
+    const double flat = flat_share();
+    if (flat >= 1.0) return holding_acceleration(side, 0.0, a_v);
+    const ModelTerms t = terms(0.0);  // Eq. (12r) / (17r): Y and L at rest are b times a lever
+    return ((gravity() + a_v) * t.Y * flat + overburden() * (t.L * flat + side * eccentricity() * t.Le)) / t.X;
+}
+
+double RockingModel::holding_acceleration(int side, double q, double a_v) const {
+    const ModelTerms t = terms(q);
     return ((gravity() + a_v) * t.Y + overburden() * (t.L + side * eccentricity() * t.Le)) / t.X;
 }
 

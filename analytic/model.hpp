@@ -104,6 +104,10 @@ public:
     // equation of motion at q = 0; without a side, the lower of the two (they differ only when N is eccentric).
     double rest_threshold(double a_v, int side) const;
     double rest_threshold(double a_v) const;
+    // The |a_h| toward `side` that holds the sharp-cornered wall still at q = side theta1 >= 0 under a_v: Eq. (10) with
+    // theta1' = theta1'' = 0, ((g + a_v) Y + N (L + side e L_e)) / X. At q = 0 it is the rest threshold of sharp
+    // corners; it is 0 at the unstable equilibrium and negative past it (capacity.hpp).
+    double holding_acceleration(int side, double q, double a_v = 0.0) const;
     // The side whose rest threshold is the lower: -1 (tipped by a_h > 0) on a tie, as on every centred wall.
     int easier_side() const;
     // The unstable equilibrium on side `side` (+1: theta1 > 0): the |theta1| in (0, collapse angle) where the
