@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -27,14 +26,8 @@ using vssw::testing::mapped_files;
 using vssw::testing::run_cli;
 namespace fs = std::filesystem;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::string read_whole(const fs::path& path) {
-    std::ifstream file(path);
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
+using vssw::testing::contains;
+using vssw::testing::read_file;
 
 // `text` with its first `from` replaced by `to` (which the test must find: a test that edits nothing proves nothing).
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -119,7 +112,7 @@ TEST_F(PluginVersionsTest, TheProgramPrintsTheRecordOnlyWhileItIsThePlugins) {
     const vssw::testing::TempDir dir;
     const std::string plugin = (dir / "vssw_engine_ode.so").string();
     fs::copy_file(built, plugin);
-    const std::string text = read_whole(multibody::plugin_versions_file(built));
+    const std::string text = read_file(multibody::plugin_versions_file(built));
     std::ofstream(multibody::plugin_versions_file(plugin)) << replaced(text, real, "ODE as recorded");
     ::setenv("VSSW_PLUGIN_PATH", dir.path.c_str(), 1);
     const auto recorded = run_cli({"--version"});

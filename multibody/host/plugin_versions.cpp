@@ -19,7 +19,7 @@ bool holds_separator(const std::string& text) { return text.find_first_of("\t\n\
 
 std::string plugin_versions_file(const std::string& plugin_path) {
     const std::string so = ".so";
-    const bool named_so = plugin_path.size() >= so.size() && plugin_path.compare(plugin_path.size() - 3, 3, so) == 0;
+    const bool named_so = plugin_path.size() >= so.size() && plugin_path.compare(plugin_path.size() - so.size(), so.size(), so) == 0;
     return (named_so ? plugin_path.substr(0, plugin_path.size() - so.size()) : plugin_path) + ".versions";
 }
 

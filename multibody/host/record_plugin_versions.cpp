@@ -31,9 +31,11 @@ void record(const std::string& folder, const std::string& file) {
         if (engine_plugin_file(name) == file) versions.emplace_back(name, make_engine_in_process(name)->version());
     if (versions.empty()) throw std::runtime_error(file + " holds none of this build's engines");
     // Written aside and renamed over the record, so that a failed write leaves no half record.
+    // The text first: a version it refuses (a tab or a line break in it) leaves no file at all.
+    const std::string text = plugin_versions_text(path, versions);
     const std::string target = plugin_versions_file(path), aside = target + ".part";
     std::ofstream out(aside);
-    out << plugin_versions_text(path, versions);
+    out << text;
     out.close();
     if (!out) throw std::runtime_error("could not write " + aside);
     fs::rename(aside, target);
