@@ -1,10 +1,12 @@
 // Speed of each engine at its default settings: CPU time per simulated second of free vibration (the VSSW and the
-// parapet of Fig. 6, released at 0.5 alpha), reported as the counter `per_simulated_s` (seconds of this process's CPU
-// time per simulated second: Google Benchmark's rate counters divide by CPU time unless a benchmark asks for real
-// time, and the runs here are in-process, so the CPU time is the run's). Compare with the floor's cost per step
-// (bench/floor/bench_floor.cpp): `per_step` is the CPU time per engine step. RecordVssw runs the Fig. 6 VSSW under the
-// Lucerne record at 1.0 g (bench/floor/lucerne.hpp), its first 20 s, as the floor's FloorRecord. Run: build/bench/vssw_bench_engines --benchmark_repetitions=5
-//   --benchmark_report_aggregates_only=true and quote the medians.
+// parapet of Fig. 6, released at 0.5 alpha1, a parapet's alpha), reported as the counter `per_simulated_s` (seconds
+// of this process's CPU time per simulated second: Google Benchmark's rate counters divide by CPU time unless a
+// benchmark asks for real time, and the runs here are in-process, so the CPU time is the run's). Compare with the
+// floor's cost per step (bench/floor/bench_floor.cpp): `per_step` is the CPU time per engine step. RecordVssw runs the
+// Fig. 6 VSSW under the Lucerne record at 1.0 g (bench/floor/lucerne.hpp), its first 20 s, as the floor's FloorRecord.
+// Run:
+//   build/bench/vssw_bench_engines --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// and quote the medians.
 #include <benchmark/benchmark.h>
 
 #include <string>

@@ -49,6 +49,15 @@ struct Profile {
     }
 };
 
+// A folder removed when the object goes, errors ignored.
+struct RemovedAtEnd {
+    fs::path dir;
+    ~RemovedAtEnd() {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+};
+
 // User and system CPU of this process and of the children it has waited for [s] (getrusage), as `time` prints it.
 double process_cpu_seconds() {
     double s = 0.0;
@@ -145,6 +154,7 @@ int main(int argc, char** argv) {
         const int threads_used = profile_suite(suite, engines, threads, profile);
         if (!suite_only) {
             const fs::path dir = fs::temp_directory_path() / fmt::format("vssw_suite_profile.{}", ::getpid());
+            const RemovedAtEnd remove_dir{dir};  // the parts' outputs, whether they finish or throw
             const std::string earthquake = validation::earthquake_study_file(
                 validation::default_earthquake_for_suite(suite_name), engines);
             validation::EarthquakeRunOptions eq;
@@ -158,8 +168,6 @@ int main(int argc, char** argv) {
                          [&](const validation::PartRunOptions& o) {
                              return validation::run_assumptions_part(relaxations, engines, dir / "relaxations", o);
                          });
-            std::error_code ec;
-            fs::remove_all(dir, ec);
         }
         fmt::print("suite {}{}\n", suite.name, suite_only ? " (the suite only)" : ", its earthquake and relaxations parts");
         print(profile, threads_used, process_cpu_seconds());

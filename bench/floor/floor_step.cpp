@@ -123,16 +123,19 @@ void FloorWall::solve_sweep() {
         const Body& b = body_[c.b];
         const Body* a = c.a < 0 ? nullptr : &body_[c.a];
         // Velocity of the contact point on b relative to a.
-        double vx = b.vx - b.w * c.rb_y, vy = b.vy + b.w * c.rb_x;
-        if (a) vx -= a->vx - a->w * c.ra_y, vy -= a->vy + a->w * c.ra_x;
+        double vx = 0.0, vy = 0.0;
+        const auto relative_velocity = [&] {
+            vx = b.vx - b.w * c.rb_y, vy = b.vy + b.w * c.rb_x;
+            if (a) vx -= a->vx - a->w * c.ra_y, vy -= a->vy + a->w * c.ra_x;
+        };
+        relative_velocity();
         if (c.mu > 0.0) {  // friction first, clamped by the normal impulse so far
             const double vt = vx * c.ny - vy * c.nx;
             const double limit = c.mu * c.p_n;
             const double p_t = std::clamp(c.p_t - c.k_t * vt, -limit, limit);
             apply(c, 0.0, p_t - c.p_t);
             c.p_t = p_t;
-            vx = b.vx - b.w * c.rb_y, vy = b.vy + b.w * c.rb_x;
-            if (a) vx -= a->vx - a->w * c.ra_y, vy -= a->vy + a->w * c.ra_x;
+            relative_velocity();
         }
         const double vn = vx * c.nx + vy * c.ny;
         const double p_n = std::max(c.p_n + c.k_n * (c.target_vn - vn), 0.0);

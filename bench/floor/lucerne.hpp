@@ -8,14 +8,14 @@
 #include <string>
 
 #include "analytic/ground_motion.hpp"
+#include "analytic/wall.hpp"  // kDefaultGravity, the scenes' g
 
 namespace vssw::yardstick {
 
 constexpr double kRecordWindow = 20.0;  // [s]
 
 inline GroundMotion lucerne(const std::string& data_dir, double pga_g) {
-    constexpr double kG = 9.81;  // [m/s^2] the scenes' g
-    return read_record(data_dir + "/records/landers1992-lucerne-ns.at2").scaled_to_pga(pga_g * kG);
+    return read_record(data_dir + "/records/landers1992-lucerne-ns.at2").scaled_to_pga(pga_g * kDefaultGravity);
 }
 
 }  // namespace vssw::yardstick

@@ -19,7 +19,8 @@ constexpr int kGrid = 512;
 }  // namespace
 
 FoldJudge::FoldJudge(const WallScene& scene, const GroundMotion& motion) {
-    active_ = motion.duration() > 0.0 && scene.diaphragm.is_rigid() && scene.corner_radius() == 0.0;
+    duration_ = motion.duration();
+    active_ = duration_ > 0.0 && scene.diaphragm.is_rigid() && scene.corner_radius() == 0.0;
     if (!active_) return;
     const std::unique_ptr<RockingModel> model = analytic_model(scene, Kinematics::exact);
     collapse_ = model->collapse_angle();
@@ -35,7 +36,6 @@ FoldJudge::FoldJudge(const WallScene& scene, const GroundMotion& motion) {
         }
         for (int i = kGrid - 2; i >= 0; --i) h[i] = std::min(h[i], h[i + 1]);  // the smallest from each point on
     }
-    duration_ = motion.duration();
     sampled_ = !motion.sample_times().empty();
     if (sampled_) {
         times_ = motion.sample_times();
