@@ -117,6 +117,11 @@ public:
     // results.csv's header and the manifest's metric names, in its order (InputError for a header without one of
     // the columns the data needs).
     StudyDataBuilder(std::vector<std::string> header, std::vector<std::string> metrics);
+    // Not copied: the interners point into this builder's data, which a copy would share and write into.
+    StudyDataBuilder(const StudyDataBuilder&) = delete;
+    StudyDataBuilder& operator=(const StudyDataBuilder&) = delete;
+    StudyDataBuilder(StudyDataBuilder&&) = default;
+    StudyDataBuilder& operator=(StudyDataBuilder&&) = default;
     // One row's fields, one per header column (InputError for a malformed one). same_columns: the row's case and run
     // are the last row's, so its parameter fields are too (the writer knows; a file's reader passes false).
     void add(const std::vector<std::string>& fields, bool same_columns = false);
@@ -135,7 +140,7 @@ private:
 
 // Parameter and its unit for axis labels ("height [m]", "amplitude [g]"; a word parameter as it is).
 std::string parameter_label(const std::string& key);
-// A metric for axis labels and sentences ("peak_rotation [alpha]", "restitution").
+// A metric for axis labels and sentences ("peak_rotation [alpha1]", "restitution").
 std::string metric_label(const MetricMeta& metric);
 
 }  // namespace vssw::study

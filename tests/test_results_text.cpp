@@ -93,12 +93,6 @@ TEST(ResultsJson, EachRowIsTheTextNlohmannDumpsForIt) {
     for (std::size_t i = 0; i < rows.size(); ++i) expected += (i ? ",\n    " : "\n    ") + dumped_row(header, rows[i]);
     expected += "\n  ]\n}\n";
     EXPECT_EQ(out.str(), expected);
-    // The check must see a difference in one byte: a number written in another form is caught.
-    EXPECT_NE(out.str(), [&] {
-        std::string other = expected;
-        other.replace(other.find("1e-05"), 5, "1e-5");
-        return other;
-    }());
 }
 
 // A value that is not a number is refused by name, not read as none.

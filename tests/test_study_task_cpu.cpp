@@ -46,7 +46,7 @@ TEST(StudyTaskCpu, EachTaskIsCountedOnceUnderItsEngineWithItsChildrensCpu) {
         ++tasks[engine];
         cpu[engine] += cpu_s;
     };
-    study::prepare_study_dir(grid, dir / "out", o);
+    const auto lock = study::prepare_study_dir(grid, dir / "out", o);  // held for the run, as the program does
     const double children_before = children_cpu_seconds();
     study::run_study(grid, dir / "out", o);
     const double children = children_cpu_seconds() - children_before;

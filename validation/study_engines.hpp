@@ -33,7 +33,7 @@ struct PartRunOptions {
     std::function<void(long, long, const std::string&)> progress;  // as StudyRunOptions::progress
     std::function<void(const std::string&, double)> task_cpu;       // as StudyRunOptions::task_cpu
 };
-// The study runner's options of a part's (threads, commit, progress).
+// The study runner's options of a part's (threads, commit, progress, task_cpu).
 study::StudyRunOptions study_run_options(const PartRunOptions& options);
 
 StudyPartRun study_part_run(const std::string& file, const study::StudySpec& spec, const std::filesystem::path& dir,

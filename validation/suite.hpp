@@ -105,11 +105,11 @@ Suite select_cases(const Suite& suite, const std::vector<std::string>& case_ids)
 //   free, step      period [s]: 4 x release to first impact; restitution []: theta1_dot ratio at the first impact
 //                   (the reference's impact law: under `mechanism` the whole mechanism's plastic impact for a VSSW,
 //                   under `paper` Eq. 19; Housner's e for a PW under either);
-//   history         peak_rotation [alpha]: max |theta1| / alpha, the collapse angle's when it overturned (one
+//   history         peak_rotation [alpha1]: max |theta1| / alpha1, the collapse angle's when it overturned (one
 //                   measure with a study's: compare/response.hpp); peak_time [s]: when it is reached (overturned);
 //                   overturned [0/1]: rel_error = engine - analytic (0 when they agree, +-1 when not);
-//                   rms_difference [alpha]: analytic = the analytic peak_rotation, engine = RMS over the analytic
-//                   run of (theta1_engine - theta1_analytic) / alpha, rel_error = that RMS / the analytic peak
+//                   rms_difference [alpha1]: analytic = the analytic peak_rotation, engine = RMS over the analytic
+//                   run of (theta1_engine - theta1_analytic) / alpha1, rel_error = that RMS / the analytic peak
 // A metric a run does not show (no impact, an unresolved impact) is NaN, never a missing row.
 struct MetricRow {
     std::string case_id;
@@ -119,7 +119,7 @@ struct MetricRow {
     double engine_value;
     double rel_error;       // engine_value / analytic - 1 (NaN when either is missing)
     std::string reference;  // what `analytic` is: "analytic model"
-    std::string unit;       // "g", "s", "", "alpha"
+    std::string unit;       // "g", "s", "", "alpha1"
 };
 
 // An engine that failed on a case (EngineFailure): reported, the rest of the report still written.
@@ -136,7 +136,7 @@ struct ModelWarning {
     std::string message;
 };
 
-// A time history for the overlay plots: theta1 / alpha against t, decimated for plotting.
+// A time history for the overlay plots: theta1 / alpha1 against t, decimated for plotting.
 // The analytic model's traces name the assumption set they are run under, the reference's ("mechanism" or "paper");
 // an engine's: empty.
 struct Trace {
