@@ -32,13 +32,13 @@ mount -t proc proc "$root/proc"
 
 echo "deb_fresh_machine.sh: apt-get install ./vssw.deb" >&2
 chroot "$root" /usr/bin/env DEBIAN_FRONTEND=noninteractive /bin/bash -c '
-  set -e
+  set -eo pipefail
   apt-get update -qq
   apt-get install -y -qq /tmp/vssw.deb >/tmp/apt.log 2>&1 || { tail -20 /tmp/apt.log; exit 1; }
   echo "installed: $(grep -c "^Setting up" /tmp/apt.log) packages"
   cd /root
-  vssw --version | head -1
-  vssw report --suite default --out /root/report | head -1
+  vssw --version >/tmp/version.out && head -1 /tmp/version.out
+  vssw report --suite default --out /root/report >/tmp/report.out && head -1 /tmp/report.out
   test -s /root/report/report.html
   python3 -c "
 import vssw
