@@ -208,6 +208,10 @@ io::PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const
                      layout_begin(layout, s.plot.title);
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
+    // The key names the ring "overturned" only when some median overturned (the first curve's ring carries it).
+    bool any_overturned = false;
+    for (const RockingCurve& c : curves)
+        for (const RockingPoint& p : c.points) any_overturned = any_overturned || std::isinf(p.peak.median);
     for (double pga : stripes) {
         std::string cmd;
         for (const RockingCurve& c : curves) {
@@ -230,13 +234,15 @@ io::PlotScript rocking_plot(const StudyData& d, const EnsembleMeasures& e, const
                                "'{}.dat' index {} using 1:($7 > 0.5 ? $2 : NaN) with points {} {}",
                                cmd.empty() ? "plot " : ", \\\n     ", s.plot.name, block, style,
                                layout.multiplot() ? "notitle" : "title " + io::gp_string(label), s.plot.name, block,
-                               kOverturnedRing, layout.multiplot() || block > 0 ? "notitle" : "title 'overturned'");
+                               kOverturnedRing,
+                               layout.multiplot() || block > 0 || !any_overturned ? "notitle" : "title 'overturned'");
             ++block;
             if (pga == stripes.front()) entries.push_back({label, style});
         }
         gp += panel_begin(layout, std::isnan(pga) ? "" : fmt::format("{} {:g} {}", e.name, pga, e.unit)) + cmd + "\n";
     }
-    s.gp = gp + layout_end(layout, entries, fmt::format("NaN with points {} title 'overturned'", kOverturnedRing));
+    s.gp = gp + layout_end(layout, entries,
+                           any_overturned ? fmt::format("NaN with points {} title 'overturned'", kOverturnedRing) : "");
     return s;
 }
 

@@ -197,9 +197,13 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
     std::size_t block = 0;
     std::vector<std::pair<std::string, std::string>> entries;
     std::vector<bool> listed(d.series.size(), false);
+    // The key names the rings "overturned" only when some run overturned (a panel's first ring carries the title).
+    bool any_overturned = false;
+    for (const IdaCurve& c : curves)
+        any_overturned = any_overturned || std::find(c.overturned.begin(), c.overturned.end(), true) != c.overturned.end();
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
         std::string cmd;
-        bool ringed = false;  // the panel's first ring carries the title "overturned"
+        bool ringed = !any_overturned;
 
         const auto add = [&](const std::string& style, const std::string& title) {
             cmd += fmt::format("{}'{}.dat' index {} using 1:2 with {} {}", cmd.empty() ? "plot " : ", \\\n     ",
@@ -248,9 +252,6 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
         gp += panel_begin(layout, e.walls[w]) + fmt::format("set yrange [0:{}]\n", io::gp_number(kOverturnedDrawnAt * kPeakAxisHeadroom)) +
               (cmd.empty() ? "plot [0:1][0:1] NaN notitle\n" : cmd + "\n");
     }
-    bool any_overturned = false;
-    for (const IdaCurve& c : curves)
-        any_overturned = any_overturned || std::find(c.overturned.begin(), c.overturned.end(), true) != c.overturned.end();
     s.gp = gp + layout_end(layout, entries,
                            any_overturned ? fmt::format("NaN with points {} title 'overturned'", kOverturnedRing) : "");
     out.scripts.push_back(std::move(s));

@@ -534,6 +534,48 @@ TEST(StudyEnsemble, IdaInPgvReportsItsCollapseIntensitiesAndCurves) {
     EXPECT_NEAR(std::stod(field("beta")), std::abs(logs[0] - logs[1]) / std::sqrt(2.0), kRecomputed);
 }
 
+// The IDA plot names its rings "overturned" only when some run overturned: the same search read back with every run
+// marked standing (its peaks below 1) draws no ring title, where the search as run has one.
+TEST(StudyEnsemble, IdaPlotNamesOverturnedOnlyWhenARunOverturned) {
+    const TempDir dir;
+    const Grid grid(study_of(dir, kWall + "[excitation]\nkind = \"ensemble\"\nfiles = " + file_list() +
+                                      "\nintensity = \"pga\"\ncollapse = true\nstep = 0.2\ntolerance = 0.05\n"));
+    run_into(grid, dir / "ida", 2);
+    study::OutputOptions o;
+    o.gnuplot = (dir / "no-gnuplot").string();  // the plots' scripts and data without drawing them
+    const auto ida_gp = [&] {
+        study::write_study_outputs(dir / "ida", o);
+        std::ifstream in(dir / "ida" / study::kPlotsDir / "ida.gp");
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string rings = "using 1:($3 > 0.5 ? $2 : NaN) with points " + std::string(study::kOverturnedRing);
+    const std::string as_run = ida_gp();
+    ASSERT_NE(as_run.find(rings + " title 'overturned'"), std::string::npos) << "the search ends on overturning runs";
+    // ida.csv rewritten: every run standing, at half its peak (an overturned one's is the collapse angle, above 1).
+    const std::filesystem::path csv = dir / "ida" / study::kIdaCsv;
+    std::ifstream in(csv);
+    std::vector<std::string> header, fields;
+    ASSERT_TRUE(io::read_csv_record(in, header));
+    const auto at = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    std::string standing;
+    for (const std::string& h : header) standing += (standing.empty() ? "" : ",") + io::csv_field(h);
+    while (io::read_csv_record(in, fields)) {
+        if (fields.size() != header.size()) continue;
+        fields.at(at("overturned")) = "0";
+        fields.at(at("peak_over_alpha1")) = io::csv_number(0.5 * std::min(1.0, std::stod(fields.at(at("peak_over_alpha1")))));
+        std::string line;
+        for (const std::string& f : fields) line += (line.empty() ? "" : ",") + io::csv_field(f);
+        standing += "\n" + line;
+    }
+    in.close();
+    std::ofstream(csv) << standing << "\n";
+    const std::string none_over = ida_gp();
+    EXPECT_NE(none_over.find(rings + " notitle"), std::string::npos) << none_over;
+    EXPECT_EQ(none_over.find("overturned'"), std::string::npos) << none_over;
+}
+
 // An ida.csv of an older vssw (its peak column was peak_over_alpha) is refused naming the header expected, written
 // out here, so the reader can see which column differs.
 TEST(StudyEnsemble, IdaCsvWithAnOldHeaderIsRefusedNamingTheHeaderExpected) {

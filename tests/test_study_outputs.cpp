@@ -528,6 +528,31 @@ TEST(StudyOutputs, RockingCurvesMarkOverturnedRunsAtOne) {
     EXPECT_TRUE(contains(read(plots / "value_peak_rotation_vs_alpha.gp"), "title 'overturned'"));
 }
 
+// An ensemble's rocking curves ring an overturned median at 1 and name the ring "overturned" in the key; where no
+// median overturned, the key has no such entry (a wall standing under every record is not labelled as falling).
+TEST(StudyOutputs, EnsembleRockingCurvesNameOverturnedOnlyWhenAMedianOverturned) {
+    for (const bool slenderest_falls : {false, true}) {
+        TempDir dir("study_ensemble_rocking");
+        const st::Grid grid(spec_of(
+            dir.path, "name = \"rocking\"\nmetrics = [\"peak_rotation\", \"overturned\"]\nengines = [\"analytic\"]\n"
+                      "[wall]\nalpha = [0.05, 0.1]\nR = 2\nhinge = 0.6\nxi = 0.1\n[excitation]\nkind = \"ensemble\"\n"
+                      "files = [\"" VSSW_DATA_DIR "/records/northridge1994-rinaldi-228.at2\", \"" VSSW_DATA_DIR
+                      "/records/northridge1994-pacoimadam-ew.at2\"]\nintensity = \"pga\"\nlevels = [0.4]\n"));
+        // Under both records the slenderest wall falls (its peak the collapse angle, 4.2 alpha) or peaks at 0.5.
+        write_study(dir.path / "out", grid, [&](const st::CaseSpec& c, const st::RunSpec&, const std::string& metric) {
+            const bool over = slenderest_falls && c.alpha < 0.06;
+            if (metric == "overturned") return over ? 1.0 : 0.0;
+            return over ? 4.2 : 0.05 / c.alpha;
+        });
+        st::OutputOptions o;
+        o.gnuplot = (dir.path / "no-gnuplot").string();  // the plots' scripts and data without drawing them
+        st::write_study_outputs(dir.path / "out", o);
+        const std::string gp = read(dir.path / "out" / st::kPlotsDir / "ensemble_rocking.gp");
+        ASSERT_TRUE(contains(gp, "($7 > 0.5 ? $2 : NaN)")) << gp;
+        EXPECT_EQ(contains(gp, "title 'overturned'"), slenderest_falls) << gp;
+    }
+}
+
 // Pulse studies: the overturning map's points, peak capped at 1, overturned runs flagged, a block per series.
 TEST(StudyOutputs, OverturningMapHoldsEveryPulseWithItsVerdict) {
     TempDir dir("study_map");
