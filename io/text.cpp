@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "io/fnv1a.hpp"
+
 namespace vssw::io {
 
 std::string num(double value) { return fmt::format("{:.6g}", value); }
@@ -37,9 +39,7 @@ std::string file_stem(const std::string& case_id) {
     if (s.size() <= kMaxFileStem) return s;
     // Too long for a file name once a prefix and an extension are added: cut, and told apart from every other cut
     // name by a hash of the whole name (FNV-1a, 64 bits), so that two long names never share a file.
-    std::uint64_t hash = 14695981039346656037ull;
-    for (const char c : case_id) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
-    const std::string tag = fmt::format("-{:016x}", hash);
+    const std::string tag = "-" + fnv1a_hex(case_id);
     return s.substr(0, kMaxFileStem - tag.size()) + tag;
 }
 

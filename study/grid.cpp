@@ -20,6 +20,7 @@
 #include "analytic/input_file.hpp"
 #include "analytic/specimens.hpp"
 #include "analytic/wall.hpp"
+#include "io/fnv1a.hpp"
 #include "io/json.hpp"
 #include "study/name_bounds.hpp"
 #include "multibody/host/analytic_engine.hpp"
@@ -108,15 +109,6 @@ bool next_combination(std::vector<std::size_t>& d, const std::vector<const Axis*
     return false;
 }
 
-std::string fnv1a(const std::string& text) {
-    std::uint64_t h = 14695981039346656037ull;
-    for (const char c : text) {
-        h ^= static_cast<unsigned char>(c);
-        h *= 1099511628211ull;
-    }
-    return fmt::format("{:016x}", h);
-}
-
 // The product of the axes' levels, each combination once (the last axis fastest).
 std::vector<std::vector<Level>> combinations(const std::vector<Axis>& axes) {
     std::vector<std::vector<Level>> out = {{}};
@@ -178,7 +170,7 @@ Grid::Grid(const StudySpec& spec) : spec_(spec) {
     size_parts();
     read_records(identity_text);
     build_runs();
-    identity_ = fnv1a(identity_text);
+    identity_ = io::fnv1a_hex(identity_text);
     list_cases();
     list_columns();
 }

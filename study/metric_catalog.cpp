@@ -28,9 +28,7 @@ const compare::MetricInfo& metric_info(const std::string& name) {
     }();
     for (std::size_t i = 0; i < names.size(); ++i)
         if (names[i] == name) return metric_catalog()[i];
-    std::vector<std::string> known;
-    for (const compare::MetricInfo& m : metric_catalog()) known.push_back(m.name);
-    throw InputError(fmt::format("unknown metric '{}' (known: {})", name, fmt::join(known, ", ")));
+    throw InputError(fmt::format("unknown metric '{}' (known: {})", name, fmt::join(names, ", ")));
 }
 
 bool kind_measures(ExcitationKind kind, const compare::MetricInfo& metric) {

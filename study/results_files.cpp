@@ -18,6 +18,7 @@
 #include "analytic/error.hpp"
 #include "analytic/input_file.hpp"
 #include "io/csv.hpp"
+#include "io/fnv1a.hpp"
 #include "io/json.hpp"
 #include "study/metric_catalog.hpp"
 
@@ -42,29 +43,10 @@ std::vector<std::string> results_header(const Grid& grid) {
     return h;
 }
 
-namespace {
-
-// FNV-1a 64 (offset basis and prime as grid.cpp's identity), fed piece by piece.
-class Fnv1a {
-public:
-    void add(std::string_view bytes) {
-        for (const char c : bytes) {
-            h_ ^= static_cast<unsigned char>(c);
-            h_ *= 1099511628211ull;
-        }
-    }
-    std::string hex() const { return fmt::format("{:016x}", h_); }
-
-private:
-    std::uint64_t h_ = 14695981039346656037ull;
-};
-
-}  // namespace
-
 std::string write_results_csv(std::ostream& out, const Grid& grid, const std::vector<ResultRow>& rows,
                               StudyDataBuilder* data) {
     const std::vector<std::string> header = results_header(grid);
-    Fnv1a hash;
+    io::Fnv1a hash;
     std::string line;
     for (std::size_t i = 0; i < header.size(); ++i) (line += (i ? "," : "")) += header[i];
     line += '\n';
@@ -194,7 +176,7 @@ ResultsTable read_results_csv(const std::filesystem::path& path) {
 
 std::string file_fnv1a(const std::filesystem::path& path) {
     std::ifstream in = open_input_file(path, "the study's results", kMaxResultsBytes);
-    Fnv1a hash;
+    io::Fnv1a hash;
     char buf[1 << 16];
     while (in) {
         in.read(buf, sizeof buf);
