@@ -294,15 +294,21 @@ double RockingModel::unstable_equilibrium(int side) const {
     constexpr int kScan = 256;
     constexpr int kGoldenSteps = 80;  // 0.618^80 of a scan cell: below double's resolution of the angle
     const double top = collapse_angle();
+    // Each potential evaluated once where it is compared (the same values as evaluating it again: every run's
+    // monitor computes this, 0.4 M instructions of a free vibration's run before).
     auto v = [&](double q) { return potential(side * q); };
     int best = 1;
+    double v_best = v(top * best / kScan);
     for (int i = 2; i < kScan; ++i)
-        if (v(top * i / kScan) > v(top * best / kScan)) best = i;
+        if (const double v_i = v(top * i / kScan); v_i > v_best) best = i, v_best = v_i;
     double lo = top * (best - 1) / kScan, hi = top * (best + 1) / kScan;
     const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
     for (int k = 0; k < kGoldenSteps; ++k) {
         const double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-        (v(a) < v(b) ? lo : hi) = v(a) < v(b) ? a : b;
+        if (v(a) < v(b))
+            lo = a;
+        else
+            hi = b;
     }
     return 0.5 * (lo + hi);
 }

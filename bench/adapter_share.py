@@ -16,7 +16,8 @@ sorts the samples of the forked child that runs the engine (multibody/host/isola
   other    the rest: the harness's code in the child (the trajectory's bytes to the pipe) and stacks perf could not
            unwind.
 It prints the shares of the children's samples, and of the whole command's, then the engine's entry points and the
-plugin's functions by share.
+plugin's functions by share; `--leaves N` adds the N commonest functions the plugin's samples were taken in (the C
+library's atan2 or a page fault below an adapter's hook, where the plugin's functions name only the hook).
 
     bench/adapter_share.py --runs 20 -- build/vssw free --engine ode --height 4 --thickness 0.4 --hinge 0.7 --theta0 0.5
 """
@@ -93,6 +94,11 @@ def plugin_function(frames):
     return next((clean(s) for s, d in frames if "vssw_engine_" in d), "")
 
 
+def leaf(frames):
+    """The function the sample was taken in, and its shared object."""
+    return f"{clean(frames[0][0])} [{os.path.basename(frames[0][1])}]" if frames else ""
+
+
 def record(command, runs, frequency):
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -124,11 +130,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=10, help="how many times to run the command (default 10)")
     parser.add_argument("--frequency", type=int, default=2999, help="perf's sampling rate [Hz] (default 2999)")
+    parser.add_argument("--leaves", type=int, default=0,
+                        help="also list this many functions the plugin's samples were taken in (default 0)")
     parser.add_argument("command", nargs=argparse.REMAINDER, help="-- then the vssw command")
     args = parser.parse_args()
     command = args.command[1:] if args.command[:1] == ["--"] else args.command
-    if not command or args.runs < 1 or args.frequency < 1:
-        parser.error("give --runs >= 1, --frequency >= 1 and a command after --")
+    if not command or args.runs < 1 or args.frequency < 1 or args.leaves < 0:
+        parser.error("give --runs >= 1, --frequency >= 1, --leaves >= 0 and a command after --")
     rows = record(command, args.runs, args.frequency)
     children = [f for in_child, f in rows if in_child]
     print("the runs (forked children): " + shares(children))
@@ -136,6 +144,9 @@ def main():
     n = max(len(children), 1)
     top([f for f in children if bucket(f) == "engine"], engine_entry, "engine entry points (share of the runs):", n)
     top([f for f in children if bucket(f) == "plugin"], plugin_function, "in the plugin (share of the runs):", n)
+    if args.leaves:
+        top([f for f in children if bucket(f) == "plugin"], leaf, "the plugin's samples taken in (share of the runs):",
+            n, args.leaves)
     return 0
 
 

@@ -88,8 +88,9 @@ constexpr double kMaxSkin = 0.05;
 
 // Ranges (SettingDescription::lo/hi): switches 0/1; the skin as kMaxSkin says; position iterations from 0 (no position
 // pass) to kMaxPositionIterations.
-std::vector<SettingDescription> setting_table() {
-    return FailureLimits::described_after({
+const std::vector<SettingDescription>& setting_table() {
+    // Built once per process: each run reads it at its start, and a forked run inherits the parent's.
+    static const std::vector<SettingDescription> table = FailureLimits::described_after({
         {"dt", "0.001", "s",
          "the step (docs/engines.md \"Box2D\": every target met at 1 ms; Box2D's usual 1/60 s gives the parapet's "
          "restitution -16 %)"},
@@ -109,6 +110,7 @@ std::vector<SettingDescription> setting_table() {
          "period +0.37 %)",
          0.0, kMaxSkin, /*parapet_only=*/true},
     });
+    return table;
 }
 
 Knobs read_knobs(const EngineSettings& s) {

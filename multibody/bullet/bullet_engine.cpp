@@ -58,14 +58,16 @@ struct Knobs {
 };
 
 // Ranges (SettingDescription::lo/hi): erp is a fraction of the penetration corrected per step, [0, 1].
-std::vector<SettingDescription> setting_table() {
-    return FailureLimits::described_after({
+const std::vector<SettingDescription>& setting_table() {
+    // Built once per process: each run reads it at its start, and a forked run inherits the parent's.
+    static const std::vector<SettingDescription> table = FailureLimits::described_after({
         {"dt", "0.001", "s", "the step (docs/engines.md \"Bullet\": every target met at 1, 0.5 and 0.2 ms)"},
         {"iterations", std::to_string(kDefaultIterations), "",
          "sequential-impulse solver iterations per step (20 to 200 move the restitution by 0.13 % at most)"},
         {"erp", "0.2", "", "error reduction of penetration, used only by split impulse's position pass", 0.0, 1.0},
         {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces", 0.0, 1.0},
     });
+    return table;
 }
 
 Knobs read_knobs(const EngineSettings& s) {
@@ -316,7 +318,10 @@ public:
     WallState state(const GroundStep& g) const {
         auto block = [&](const btRigidBody& body, double angle) {  // relative to the (moving) ground
             const btVector3 c = body.getCenterOfMassPosition(), v = body.getLinearVelocity();
-            return BlockState{c.x() - g.x, c.y(), angle, v.x() - g.v, v.y(), -body.getAngularVelocity().z()};
+            const btMatrix3x3& r = body.getWorldTransform().getBasis();
+            // The clockwise angle's cosine and sine as the basis holds them (clockwise_angle's two entries).
+            return BlockState{c.x() - g.x, c.y(), angle, v.x() - g.v, v.y(), -body.getAngularVelocity().z(),
+                              r[0][0], -r[1][0]};
         };
         return {block(lower_, lower_angle()), upper_ ? block(*upper_, upper_angle()) : kNoBlock};
     }

@@ -109,8 +109,9 @@ constexpr double kMinCfm = 1e-9;
 constexpr double kMaxErv = 1.0;        // [m/s]
 constexpr double kMaxAllowance = 1e-2;  // [m]
 
-std::vector<SettingDescription> setting_table() {
-    return FailureLimits::described_after({
+const std::vector<SettingDescription>& setting_table() {
+    // Built once per process: each run reads it at its start, and a forked run inherits the parent's.
+    static const std::vector<SettingDescription> table = FailureLimits::described_after({
         {"dt", "0.001", "s", "the step (docs/engines.md \"DART\": every target met at 1 ms)"},
         {"iterations", "none", "", "not used: the boxed LCP solver is Dantzig's pivoting (PGS only as its fallback)"},
         {"detector", "1", "choice", "collision detector: 1 ODE's (libdart-collision-ode), 0 DART's own", 0.0, 1.0},
@@ -120,6 +121,7 @@ std::vector<SettingDescription> setting_table() {
         {"allowance", "0", "m", "penetration allowed before the error reduction acts", 0.0, kMaxAllowance},
         {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of applying pseudo-forces", 0.0, 1.0},
     });
+    return table;
 }
 
 Knobs read_knobs(const EngineSettings& s) {

@@ -86,6 +86,7 @@ WallParts::WallParts(std::string engine, const WallScene& scene, const Mechanism
                                                                           : HUGE_VAL),
       upright_range_(mechanism_theta2(scene, figures.unstable_equilibrium)),
       motion_(&ex.horizontal),
+      no_motion_(ex.horizontal.is_zero()),
       rest_(still_state_at(scene, 0.0, 0.0, contact_gap)),
       last_(still_state_at(scene, ex.theta0, 0.0, contact_gap)),
       top_rest_y_(point_of(vssw_ ? rest_.upper : rest_.lower, load_x_, vssw_ ? sizes_.h_upper : sizes_.h_lower).y),
@@ -107,6 +108,7 @@ double WallParts::energy(const WallState& s, const TurnedBlock& top) const {
 // the largest |a_h| at the interval's ends and middle) times how far each centre moved along it.
 double WallParts::input_bound(double t, const WallState& s) {
     const GroundMotion& a = *motion_;
+    if (no_motion_) return 0.0;  // a free vibration: no work given (three evaluations of none a step saved)
     if (std::isnan(a_last_)) a_last_ = std::abs(a(t_last_));
     const double a_now = std::abs(a(t));
     const double a_max = std::max({a_last_, std::abs(a(0.5 * (t_last_ + t))), a_now});

@@ -21,9 +21,13 @@
 namespace vssw::multibody {
 
 // One block after a step, relative to the ground (which may move): its centre [m], clockwise rotation [rad], the
-// centre's velocity [m/s] and the rotation rate [rad/s].
+// centre's velocity [m/s] and the rotation rate [rad/s]. An adapter whose engine keeps a rotation matrix (ODE, Bullet)
+// may also give the rotation's cosine and sine as the matrix holds them, which TurnedBlock then uses instead of
+// computing them from the angle (NaN: not given). They are the angle's own to rounding (the angle is atan2 of the
+// same two entries), and the C library's sin and cos, two a step, were about 0.5 % of an ODE run (perf).
 struct BlockState {
     double x, y, angle, vx, vy, omega;
+    double cos_angle = std::numeric_limits<double>::quiet_NaN(), sin_angle = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What every adapter gives RunMonitor after each step: both blocks (upper ignored for a parapet).
@@ -46,7 +50,10 @@ PlanePoint point_of(const BlockState& block, double lx, double ly);
 // point (perf and callgrind, ODE under a record). RunMonitor turns each block once per step and hands the turned blocks
 // to every check. Its points are point_of's to the bit (the same products of the same values).
 struct TurnedBlock {
-    explicit TurnedBlock(const BlockState& block) : k(block), c(std::cos(block.angle)), s(std::sin(block.angle)) {}
+    explicit TurnedBlock(const BlockState& block)
+        : k(block),
+          c(std::isnan(block.cos_angle) ? std::cos(block.angle) : block.cos_angle),
+          s(std::isnan(block.sin_angle) ? std::sin(block.angle) : block.sin_angle) {}
     PlanePoint at(double lx, double ly) const { return {k.x + lx * c + ly * s, k.y - lx * s + ly * c}; }
     const BlockState& k;
     double c, s;  // clockwise (scene_geometry.cpp's turn)
@@ -96,6 +103,7 @@ private:
     double radius_;  // the blocks' corner radius r [m] (rounded_corners.hpp)
     double penetration_, energy_gain_, upright_range_;
     const GroundMotion* motion_;
+    bool no_motion_;  // the motion is zero throughout (GroundMotion::is_zero): it gives no work
     WallState rest_, last_;
     double top_rest_y_;  // N's point at rest, the zero of its potential: computed once, not each step
     double e0_, input_ = 0.0, t_last_ = 0.0;

@@ -108,8 +108,9 @@ constexpr int kMaxNoslipIterations = 1000;  // noslip_iterations' range: a pass 
 // Ranges (SettingDescription::lo/hi): solref's time constant from MuJoCo's floor (2 steps) to 1000 steps (a contact
 // of a second's time constant at 1 ms: the wall sinks); the impedances within MuJoCo's own clamp [1e-4, 0.9999]
 // (mjMINIMP, mjMAXIMP); the tolerance from 1e-15 (rounding) to 1e-2.
-std::vector<SettingDescription> setting_table() {
-    return FailureLimits::described_after({
+const std::vector<SettingDescription>& setting_table() {
+    // Built once per process: each run reads it at its start, and a forked run inherits the parent's.
+    static const std::vector<SettingDescription> table = FailureLimits::described_after({
         {"dt", "0.001", "s", "the step (docs/engines.md \"MuJoCo\": every target met at 1 ms)"},
         {"iterations", std::to_string(kDefaultIterations), "", "Newton solver iterations per step (at most)"},
         {"tolerance", "1e-08", "", "Newton solver tolerance (relative improvement of the cost)", 1e-15, 1e-2},
@@ -123,6 +124,7 @@ std::vector<SettingDescription> setting_table() {
         {"solimp_dmax", "0.999", "", "contacts' impedance past solimp_width (solimp's second number)", 1e-4, 0.9999},
         {"solimp_width", "0.001", "m", "penetration over which the impedance goes from dmin to dmax", 0.0, 1.0},
     });
+    return table;
 }
 
 Knobs read_knobs(const EngineSettings& s) {

@@ -214,8 +214,9 @@ constexpr int kDefaultSweeps = 1000;
 // Ranges (SettingDescription::lo/hi): the coefficients and weights are Moreau-Jean's own intervals; the solver's
 // tolerance from 1e-16 (double precision's rounding: no residual goes lower; a test asks for 1e-14 to make a contact
 // problem unsolvable) to 0.1 (a residual of a tenth leaves the contact forces unknown).
-std::vector<SettingDescription> setting_table() {
-    return FailureLimits::described_after({
+const std::vector<SettingDescription>& setting_table() {
+    // Built once per process: each run reads it at its start, and a forked run inherits the parent's.
+    static const std::vector<SettingDescription> table = FailureLimits::described_after({
         {"dt", "0.001", "s", "the time step (docs/engines.md \"Siconos\": thresholds exact, restitution within 2 % at 1 ms)"},
         {"iterations", std::to_string(kDefaultSweeps), "",
          "at most this many Gauss-Seidel sweeps per step; a step whose contact problem is not solved fails the run"},
@@ -227,6 +228,7 @@ std::vector<SettingDescription> setting_table() {
         {"tolerance", "1e-06", "", "the contact solver's relative residual", 1e-16, 0.1},
         {"nonlinear", "0", "0/1", "1: iterate each step's Newton loop on the contact geometry; 0: linearise once", 0.0, 1.0},
     });
+    return table;
 }
 
 Knobs read_knobs(const EngineSettings& s) {

@@ -83,8 +83,9 @@ struct Knobs {
 // the threshold is already off by 0.64 %); dissipation up to 1e5 s/m (a hundred times the plastic default);
 // transition velocity 1e-6 to 0.1 m/s (at 1e-300 the friction law's slope mu N / vt was infinite and CPodes stepped
 // forever; 0.1 m/s is the wall's own speed: no stick); accuracy 1e-10 to 0.1.
-std::vector<SettingDescription> compliant_setting_descriptions() {
-    return FailureLimits::described_after({
+const std::vector<SettingDescription>& compliant_setting_descriptions() {
+    // Built once per process: each run reads it at its start, and a forked run inherits the parent's.
+    static const std::vector<SettingDescription> table = FailureLimits::described_after({
         {"dt", "0.002", "s", "the reporting interval (the integrator picks its own steps)"},
         {"iterations", "none", "", "not used"},
         {"stiffness", "1e+15", "Pa", "Hunt-Crossley contact stiffness of the corner spheres", 1e6, 1e18},
@@ -98,6 +99,7 @@ std::vector<SettingDescription> compliant_setting_descriptions() {
         {"interpolate", "1", "0/1", "1: samples interpolated between the integrator's steps; 0: each sample a step end", 0.0, 1.0},
         {"moving_supports", "0", "0/1", "refused when 1: this route drives the wall by pseudo-forces only", 0.0, 1.0},
     });
+    return table;
 }
 
 namespace {

@@ -9,6 +9,6 @@ Trajectory simulate_compliant(const WallScene& scene, const Excitation& excitati
 // Throws InputError on a knob the compliant route does not know or refuses (Engine::check_settings).
 void check_compliant_settings(const EngineSettings& settings);
 // The compliant route's settings (Engine::setting_descriptions()).
-std::vector<SettingDescription> compliant_setting_descriptions();
+const std::vector<SettingDescription>& compliant_setting_descriptions();
 
 }  // namespace vssw::multibody

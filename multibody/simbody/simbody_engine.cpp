@@ -99,8 +99,9 @@ struct Knobs {
 // Ranges (SettingDescription::lo/hi): constraint tolerance 1 nm to 1 mm (a thousand times the default either way);
 // transition velocity 1e-6 to 0.1 m/s and capture velocity 1e-7 to 0.1 m/s (below them the stepper's friction and
 // impact tests meet rounding; at 0.1 m/s every closing of the wall's corners would be a capture, none an impact).
-std::vector<SettingDescription> rigid_setting_table() {
-    return FailureLimits::described_after({
+const std::vector<SettingDescription>& rigid_setting_table() {
+    // Built once per process: each run reads it at its start, and a forked run inherits the parent's.
+    static const std::vector<SettingDescription> table = FailureLimits::described_after({
         {"dt", "0.0005", "s", "the step (the restitution is converged from 0.5 ms down)"},
         {"iterations", "none", "", "not used"},
         {"constraint_tol", "1e-06", "m", "a contact within this gap is proximal: given to the impulse solver for the step", 1e-9, 1e-3},
@@ -112,6 +113,7 @@ std::vector<SettingDescription> rigid_setting_table() {
         {"both_guides", "0", "0/1", "1: offer both roller guides to the stepper at every step", 0.0, 1.0},
         {"moving_supports", "0", "0/1", "refused when 1: the stepper ignores prescribed motion", 0.0, 1.0},
     });
+    return table;
 }
 
 Knobs read_knobs(const EngineSettings& s) {
