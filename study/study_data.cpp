@@ -281,7 +281,7 @@ void StudyDataBuilder::add(const std::vector<std::string>& fields, bool same_col
     for (std::size_t k = 0; k < d_.raw_columns.size(); ++k) {
         const RawColumn& raw = d_.raw_columns[k];
         const bool parameter = raw.level_column != std::string::npos;
-        row.raw[k] = same_columns && parameter ? last_.raw[k] : interners_->raw[k].id(fields[raw.field]);
+        row.raw[k] = same_columns && parameter ? last_raw_[k] : interners_->raw[k].id(fields[raw.field]);
         if (parameter) row.levels[raw.level_column] = raw.level[row.raw[k]];
     }
     const std::string& status = fields[status_];
@@ -300,7 +300,7 @@ void StudyDataBuilder::add(const std::vector<std::string>& fields, bool same_col
         if (new_warning) d_.warnings.push_back(warning);
         row.warning = w->second;
     }
-    last_.raw = row.raw;
+    last_raw_ = row.raw;
     d_.rows.push_back(std::move(row));
 }
 

@@ -134,7 +134,7 @@ private:
     std::size_t case_id_ = 0, first_ = 0, metric_ = 0, value_ = 0, status_ = 0, warnings_ = 0;
     struct Interners;
     std::shared_ptr<Interners> interners_;  // the raw columns' and the texts' indexes
-    StudyRow last_;
+    std::vector<std::uint32_t> last_raw_;  // the last row's raw fields (its parameters repeat in the next row)
     std::set<std::tuple<int, std::vector<std::uint32_t>>> warned_tasks_;
 };
 
