@@ -4,7 +4,7 @@
 #
 # An engine.cmake opens with one call, then finds its library and builds its plugin when VSSW_WITH_<ENGINE> is on:
 #
-#   vssw_engine(NAME box2d DISPLAY "Box2D" ORDER 60
+#   vssw_engine(NAME box2d DISPLAY "Box2D" ORDER 50 LIBRARY libbox2d
 #     CONTACT_SCHEME "impulse stepping" COLOUR "#882255" MARKER 1 1
 #     DEBIAN libbox2d-dev
 #     HEADERS box2d/ b2_)

@@ -57,9 +57,11 @@ struct Excitation {
 };
 
 // Solver iterations a caller may ask of an engine (`vssw compare --iterations`, a study's settings): Bullet's
-// sequential-impulse iterations per step (default 20; 100 changes nothing measured, docs/contributing/engines.md
-// "Bullet"), ODE's quickstep iterations (default 20), unused by Simbody and the analytic model. The cost grows linearly
-// with them; 1000, 50 times the default, still ends a compare in minutes rather than days.
+// sequential-impulse iterations per step (default 10; 100 changes nothing measured, docs/contributing/engines.md
+// "Bullet"), Box2D's velocity iterations (default 8), MuJoCo's Newton iterations and Siconos's Gauss-Seidel sweeps (at
+// most; defaults 100 and 1000), ODE's quickstep iterations (default 20); unused by DART, Simbody and the analytic
+// model (each engine's `--list-settings` says). The cost grows linearly with them; 1000, 50 times a default of 20, still ends a compare in
+// minutes rather than days.
 constexpr int kMaxIterations = 1000;
 
 // Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (docs/contributing/engines.md).
@@ -99,6 +101,9 @@ struct SettingDescription {
     // A setting for the single block only: any value but its default is refused for a VSSW, with the other settings
     // before anything runs (require_settings_fit_wall in settings_reader.hpp).
     bool parapet_only = false;
+    // A setting for the two-block wall only (its roller, its hinge): any value but its default is refused for a
+    // parapet, the same way.
+    bool vssw_only = false;
 };
 
 // "[0, 1]", "[1e-06, 1]", "any" for an unbounded one: a range's ends (--list-settings prints the unit beside them).
@@ -111,7 +116,7 @@ inline bool is_knob(const std::string& setting_name) { return setting_name != "d
 
 struct TrajectorySample {
     double t, theta1, theta1_dot, theta2, top_dy;
-    double kinetic, potential;  // [J] for the scene's depth (per unit depth for the analytic model)
+    double kinetic, potential;  // [J/m] per unit depth (WallEnergy::fill divides an engine's by its depth)
     int contacts;               // contact points in use (0 for the analytic model)
 };
 

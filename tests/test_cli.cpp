@@ -1399,6 +1399,15 @@ TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
         {"mujoco", {"--dt", "1e-310"}, {"dt = 1e-310", "more than the 1e+08 allowed"}},
         {"box2d", {"--set", "skin=0.05"}, {"Box2D setting skin = 0.05", "parapet wall only"}},
     };
+    // And a setting for a VSSW only on a parapet: Box2D's bilateral roller (its wheel joint held the upper block, and
+    // a parapet's run crashed).
+    for (const bool pulse : {false, true}) {
+        if (!vssw::testing::engine_available("box2d")) break;
+        std::vector<std::string> args = {"compare", "--model", "parapet", "--height", "2", "--thickness", "0.3",
+                                         "--engine", "box2d", "--set", "roller=1"};
+        if (pulse) args = args + kSinePulse;
+        expect_bad_input(args, {"Box2D setting roller = 1", "VSSW (two blocks and a roller) only", "for a parapet"});
+    }
     for (const Case& c : cases) {
         if (!vssw::testing::engine_available(c.engine)) continue;
         for (const bool pulse : {false, true}) {

@@ -25,7 +25,7 @@
 //    outwards; docs/contributing/engines.md "Bullet"). With roller = 1, the paper's bilateral roller instead: a
 //    b2WheelJoint (stiffness 0, damping 0: a point of the block held on a vertical line, rotation free) at the top
 //    corner whose guide binds (left_guide_binds), moved to the other corner when the other guide binds;
-//  - N: a force at the centre of the top face each step, only when xi > 0 (Box2D adds a force's linear and angular
+//  - N: a force on the top face each step (at its centre, or e from it), only when xi > 0 (Box2D adds a force's linear and angular
 //    impulse to the velocities before the solve, so every row sees it: Bullet's trap, docs/contributing/engines.md
 //    "Bullet", does not arise);
 //  - ground motion: by default the pseudo-forces -m a_h(t) as a tilt of gravity, (-a_h, -g), set before each step
@@ -61,7 +61,7 @@ constexpr double kDepth = 1.0;  // [m] out-of-plane depth of the blocks (masses 
 
 constexpr int kDefaultVelocityIterations = 8;  // Box2D's recommended value (b2World::Step's comment)
 constexpr int kDefaultPositionIterations = 3;  // likewise
-constexpr int kMaxPositionIterations = 1000;   // as kMaxIterations (engine.hpp): the cost grows linearly with them
+constexpr int kMaxPositionIterations = kMaxIterations;  // engine.hpp's: the cost grows linearly with them
 
 // The roller's circles: radius as a share of b. The guide sits r further out, so the value does not move the corner's
 // line (exact); it only has to exceed what a corner can pass its line by in one step (v dt: 1e-4 m for 0.1 m/s at
@@ -103,7 +103,7 @@ const std::vector<SettingDescription>& setting_table() {
         {"roller", "0", "choice",
          "0: a unilateral roller (corner circles on frictionless guides, as the other engines); 1: the paper's "
          "bilateral roller (a wheel joint)",
-         0.0, 1.0},
+         0.0, 1.0, /*parapet_only=*/false, /*vssw_only=*/true},
         {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of tilting gravity", 0.0, 1.0},
         {"skin", "0", "m",
          "Box2D's polygon radius on the block and the ground, parapet only (Box2D's default 0.01 rounds the corners: "
@@ -117,7 +117,7 @@ Knobs read_knobs(const EngineSettings& s) {
     const SettingsReader r("Box2D", s, setting_table());
     Knobs k{};
     k.velocity_iterations = s.iterations > 0 ? s.iterations : kDefaultVelocityIterations;
-    k.position_iterations = r.choice("position_iterations", kDefaultPositionIterations, kMaxPositionIterations + 1);
+    k.position_iterations = r.whole_number("position_iterations", kDefaultPositionIterations, kMaxPositionIterations);
     k.warm_starting = r.choice("warm_starting", 1, 2) == 1;
     k.continuous = r.flag("continuous");
     k.roller = r.choice("roller", 0, 2);
@@ -388,7 +388,9 @@ Trajectory Box2dEngine::simulate(const WallScene& scene, const Excitation& ex, c
     // the period.
     require_settings_fit_wall("Box2D", settings, setting_table(), scene);
     if (knobs.skin > 0.0 && scene.corner_radius() > 0.0)
-        throw InputError("Box2D: the setting skin and a corner radius both set the blocks' polygon radius: give one");
+        throw InputError(fmt::format("Box2D: the setting skin = {:g} m and the corner radius {:g} m both set the "
+                                     "blocks' polygon radius: give one",
+                                     knobs.skin, scene.corner_radius()));
     Box2dScene w(scene, knobs, ex.theta0);
     Box2dStepping stepping(w, scene, knobs);
     RunMonitor monitor("Box2D", scene, ex, settings.dt, knobs.limits);

@@ -20,8 +20,8 @@
 //  - rounded corners (corner radius r > 0): each block's box is its flat part, b - r wide, with capsules of radius r
 //    along the depth at the arcs' centres (add_rounding): the base capsules meet the ground, each top capsule of the
 //    lower block the bottom capsule of the upper block on its side; masses and inertias stay the rectangles';
-//  - N: an external force at the centre of the top face each step (DART clears external forces after each step),
-//    only when xi > 0; ground motion: the world's gravity (-a_h(t), -g) each step, a_h at the step's midpoint (a
+//  - N: an external force on the top face each step (at its centre, or e from it; DART clears external forces after
+//    each step), only when xi > 0; ground motion: the world's gravity (-a_h(t), -g) each step, a_h at the step's midpoint (a
 //    uniform pseudo-force -m a_h on every block), or (moving_supports = 1) the ground and the guides moving;
 //  - a flexible top support (WallScene::diaphragm, T_d > 0): the guides on a velocity-driven skeleton of their own,
 //    slid at the ground's velocity plus u_d's, so that they sit u_d(t) of Eq. (9d) from the ground at each step's end;
@@ -190,7 +190,7 @@ public:
         auto filter = std::make_shared<PairFilter>();
         solver->getCollisionOption().collisionFilter = filter;
 
-        const UrdfBlocks blocks = load_wall_urdf(wall_urdf(scene, theta0));
+        const UrdfBlocks blocks = load_wall_urdf(wall_urdf(scene, theta0), scene.is_vssw());
         const double b = sizes_.b, h = sizes_.h_lower + sizes_.h_upper;
         // Ground. A moving ground travels with the record's displacement: wide enough that the wall never reaches
         // its edge.
@@ -208,19 +208,19 @@ public:
         dd::ShapeNode* lower_box = nullptr;
         // DART 6 takes the smaller of two shapes' coefficients: the lower block carries the larger of the base's and
         // the hinge's, so that the ground's sets the base's and the upper block's the hinge's.
-        lower_ = add_block(blocks.lower, std::max(scene.base_mu(), scene.hinge_mu()), lower_box);
+        const double lower_mu = std::max(scene.base_mu(), scene.hinge_mu());
+        lower_ = add_block(blocks.lower, lower_mu, lower_box);
         filter->allow(ground_box, lower_box);
         const double rc = scene.corner_radius();
         if (rc > 0.0)  // the base arcs (see add_rounding)
-            for (dd::ShapeNode* arc : add_rounding(lower_, sizes_.h_lower, rc, std::max(scene.base_mu(), scene.hinge_mu()), -1.0))
+            for (dd::ShapeNode* arc : add_rounding(lower_, sizes_.h_lower, rc, lower_mu, -1.0))
                 filter->allow(ground_box, arc);
         if (scene.vssw) {
             dd::ShapeNode* upper_box = nullptr;
             upper_ = add_block(blocks.upper, scene.hinge_mu(), upper_box);
             filter->allow(lower_box, upper_box);
             if (rc > 0.0) {  // the hinge's arcs, each rolling on the one of its side
-                const auto lower_top =
-                    add_rounding(lower_, sizes_.h_lower, rc, std::max(scene.base_mu(), scene.hinge_mu()), 1.0);
+                const auto lower_top = add_rounding(lower_, sizes_.h_lower, rc, lower_mu, 1.0);
                 const auto upper_bottom = add_rounding(upper_, sizes_.h_upper, rc, scene.hinge_mu(), -1.0);
                 for (std::size_t i = 0; i < lower_top.size(); ++i) filter->allow(lower_top[i], upper_bottom[i]);
             }

@@ -93,7 +93,7 @@ std::string wall_urdf(const WallScene& scene, double theta0) {
     return text + "</robot>\n";
 }
 
-UrdfBlocks load_wall_urdf(const std::string& text) {
+UrdfBlocks load_wall_urdf(const std::string& text, bool vssw) {
     HeldOutput held;
     dart::utils::DartLoader loader;
     const dart::dynamics::SkeletonPtr wall = loader.parseSkeletonString(text, dart::common::Uri());
@@ -104,6 +104,8 @@ UrdfBlocks load_wall_urdf(const std::string& text) {
     UrdfBlocks blocks{block("lower"), block("upper")};
     if (!blocks.lower)
         throw EngineFailure(fmt::format("DART: its URDF loader did not give the wall's lower block: {}", held.text()));
+    if (vssw && !blocks.upper)
+        throw EngineFailure(fmt::format("DART: its URDF loader did not give the wall's upper block: {}", held.text()));
     return blocks;
 }
 

@@ -20,10 +20,10 @@ std::string wall_urdf(const WallScene& scene, double theta0);
 
 // The blocks of wall_urdf()'s text as DART loads them, a skeleton each (as the contacts between them need): the
 // loader makes one skeleton of the two trees under "world", which each block leaves by BodyNode::split.
-// EngineFailure, with the loader's messages, when the text does not load.
+// EngineFailure, with the loader's messages, when the text does not load or lacks a block the wall has (vssw: two).
 struct UrdfBlocks {
     dart::dynamics::SkeletonPtr lower, upper;  // upper null for a parapet
 };
-UrdfBlocks load_wall_urdf(const std::string& text);
+UrdfBlocks load_wall_urdf(const std::string& text, bool vssw);
 
 }  // namespace vssw::multibody

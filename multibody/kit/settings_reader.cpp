@@ -34,13 +34,14 @@ SettingsReader::SettingsReader(std::string engine, const EngineSettings& setting
 
 void require_settings_fit_wall(const std::string& engine, const EngineSettings& settings,
                                const std::vector<SettingDescription>& described, const WallScene& scene) {
-    if (!scene.vssw) return;
+    const bool vssw = scene.vssw.has_value();
     for (const SettingDescription& d : described) {
         const auto given = settings.knobs.find(d.name);
-        if (!d.parapet_only || given == settings.knobs.end()) continue;
+        if (!(vssw ? d.parapet_only : d.vssw_only) || given == settings.knobs.end()) continue;
         if (given->second == std::strtod(d.default_value.c_str(), nullptr)) continue;
-        throw InputError(fmt::format("{} setting {} = {:g} is for a parapet wall only: give {} (its default) for a VSSW",
-                                     engine, d.name, given->second, d.default_value));
+        throw InputError(fmt::format("{} setting {} = {:g} is for a {} only: give {} (its default) for a {}", engine,
+                                     d.name, given->second, vssw ? "parapet wall" : "VSSW (two blocks and a roller)",
+                                     d.default_value, vssw ? "VSSW" : "parapet"));
     }
 }
 

@@ -48,8 +48,8 @@ struct Rocking {
 //   void check_step(double t)               optional: the engine's own failures, thrown as EngineFailure;
 //   WallState state(const GroundStep&)      the blocks relative to the (moving) ground, for the run monitor;
 // and, when a sample is taken, Rocking rocking() (every sample) and void fill(TrajectorySample&) (a full sample's
-// theta2, top_dy, kinetic, potential and contacts). Written without a C++20 concept: some adapters compile as C++17
-// (Simbody's headers do not compile as C++20).
+// theta2, top_dy, kinetic, potential and contacts). Written without a C++20 concept: the project is C++17 (Simbody's
+// headers do not compile as C++20).
 template <class W, class = void>
 struct HasCheckStep : std::false_type {};
 template <class W>

@@ -15,8 +15,8 @@
 //    corner of the upper block, set in by its radius so that its outer point is the corner's line, against a frictionless
 //    (condim 1) plane at x = +b (normal -x) and one at x = -b (normal +x). Both guides are in every step; a sphere inside
 //    its line is a contact that is not active. Sphere-plane distances are exact to rounding at any depth;
-//  - N: a force and its moment about the centre of mass (xfrc_applied), the force acting at the centre of the top
-//    face, set every step;
+//  - N: a force and its moment about the centre of mass (xfrc_applied), the force acting on the top face at its point
+//    (the centre, or e from it), set every step;
 //  - ground motion: pseudo-forces, the x component of gravity set to -a_h at each step's midpoint (a uniform field:
 //    -m a_h at every centre of mass). No moving supports: MuJoCo's planes must be static, and a mocap ground moves
 //    without a velocity the contacts would see (docs/contributing/engines.md "MuJoCo").
@@ -31,6 +31,7 @@
 
 #include <stdexcept>
 #include <array>
+#include <iterator>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -77,7 +78,7 @@ void ensure_handlers() {
 
 // The integrators of MuJoCo 2.2.2 (mjtIntegrator): semi-implicit Euler, RK4, implicit in the velocity.
 constexpr const char* kIntegrators[] = {"Euler", "RK4", "implicit"};
-constexpr int kIntegratorCount = 3;
+constexpr int kIntegratorCount = static_cast<int>(std::size(kIntegrators));
 
 // The sphere that stands for a top corner of the upper block at the roller [m]: a point, set in from the corner by
 // its radius (sphere-plane distances are exact whatever the radius).
@@ -122,7 +123,8 @@ const std::vector<SettingDescription>& setting_table() {
         {"dampratio", "1", "", "contacts' damping ratio (solref's second number)", 0.1, 10.0},
         {"solimp_dmin", "0.99", "", "contacts' impedance at zero penetration (solimp's first number)", 1e-4, 0.9999},
         {"solimp_dmax", "0.999", "", "contacts' impedance past solimp_width (solimp's second number)", 1e-4, 0.9999},
-        {"solimp_width", "0.001", "m", "penetration over which the impedance goes from dmin to dmax", 0.0, 1.0},
+        // Above 0: MuJoCo takes a width of 0 (below mjMINVAL) as a flat impedance at (dmin + dmax) / 2, not a step.
+        {"solimp_width", "0.001", "m", "penetration over which the impedance goes from dmin to dmax", 1e-9, 1.0},
     });
     return table;
 }
@@ -138,7 +140,7 @@ Knobs read_knobs(const EngineSettings& s) {
     k.dampratio = r.positive("dampratio", 1.0);
     k.solimp_dmin = r.positive("solimp_dmin", 0.99);
     k.solimp_dmax = r.positive("solimp_dmax", 0.999);
-    k.solimp_width = r.non_negative("solimp_width", 1e-3);
+    k.solimp_width = r.positive("solimp_width", 1e-3);
     k.limits = FailureLimits::read(r);
     return k;
 }
@@ -294,10 +296,11 @@ std::string scene_comment(const WallScene& scene, const Excitation& ex) {
         "upper_r), positive tipping towards +x. Half-thickness b = {} m; the blocks' half-heights {} m (lower) and "
         "{} m (upper). The keyframe 'release' is the start: theta1 = {} rad. Not in the file, applied by vssw at every "
         "step: the ground motion a_h(t) as gravity's x component, -a_h at the step's midpoint (none in free "
-        "vibration), and the overburden N = {} N on the top face's centre (xfrc_applied). -->\n",
+        "vibration), and the overburden N = {} N on the top face, {} m from its centre towards +x (xfrc_applied). "
+        "-->\n",
         scene.vssw ? "a VSSW: two blocks, the roller at the top" : "a parapet: one block", short_num(kDepth),
         short_num(s.b), short_num(s.h_lower), scene.vssw ? short_num(s.h_upper) : std::string("(none)"),
-        short_num(ex.theta0), short_num(scene.overburden() * kDepth));
+        short_num(ex.theta0), short_num(scene.overburden() * kDepth), short_num(scene.overburden_offset()));
 }
 
 // The whole text the run compiles and scene_file() gives: the comment, the model, and the release as the keyframe
@@ -339,9 +342,12 @@ std::unique_ptr<mjModel, ModelDeleter> compile(const std::string& xml) {
     std::unique_ptr<mjVFS, VfsDeleter> vfs(new mjVFS);
     mj_defaultVFS(vfs.get());
     const char* file = "vssw_wall.xml";
-    if (mj_makeEmptyFileVFS(vfs.get(), file, static_cast<int>(xml.size())) != 0)
-        throw EngineFailure("MuJoCo: could not make the model's file in its virtual file system");
+    if (const int made = mj_makeEmptyFileVFS(vfs.get(), file, static_cast<int>(xml.size())); made != 0)
+        throw EngineFailure(fmt::format("MuJoCo: could not make the model's file in its virtual file system "
+                                        "(mj_makeEmptyFileVFS returned {}: 1 full, 2 a name repeated)",
+                                        made));
     const int index = mj_findFileVFS(vfs.get(), file);
+    if (index < 0) throw EngineFailure("MuJoCo: the model's file is not in its virtual file system");
     std::memcpy(vfs->filedata[index], xml.data(), xml.size());
     std::array<char, 1024> error{};
     mjModel* m = mj_loadXML(file, vfs.get(), error.data(), static_cast<int>(error.size()));
@@ -465,7 +471,6 @@ private:
 Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const EngineSettings& settings) const {
     const Knobs knobs = checked_knobs(scene, settings);
     const double dt = settings.dt;
-    ensure_handlers();
     const BlockSizes s = block_sizes(scene);
     const auto model = compile(scene_xml(scene, ex, knobs, dt));
     mjModel* m = model.get();
