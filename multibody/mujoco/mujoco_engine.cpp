@@ -482,7 +482,10 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
         Block k;
         k.body = mj_name2id(m, mjOBJ_BODY, name);
         const std::string joint = std::string(name) + "_x";
-        k.q = m->jnt_qposadr[mj_name2id(m, mjOBJ_JOINT, joint.c_str())];
+        const int joint_id = mj_name2id(m, mjOBJ_JOINT, joint.c_str());
+        if (k.body < 0 || joint_id < 0)  // the scene's text and this reader disagree: a bug, not a run's failure
+            throw EngineFailure(fmt::format("MuJoCo: the compiled model has no body '{}' or joint '{}'", name, joint));
+        k.q = m->jnt_qposadr[joint_id];
         k.z_rest = z_rest;
         k.half_h = half_h;
         k.mass = mass_per_depth * kDepth;
