@@ -70,6 +70,7 @@
 #include "multibody/kit/run_monitor.hpp"
 #include "multibody/kit/scene_geometry.hpp"
 #include "multibody/kit/settings_reader.hpp"
+#include "multibody/kit/step_angles.hpp"
 #include "multibody/kit/step_loop.hpp"
 
 namespace vssw::multibody {
@@ -373,18 +374,23 @@ public:
     void push_overburden() {
         top_body_->addExtForce(Vector3d(0.0, -N_, 0.0), Vector3d(load_x_, top_half_, 0.0), false, true);
     }
-    void step(const StepTimes&, const GroundStep& g) { w_.step(g.a_h, g.v, g.top_v); }
+    void step(const StepTimes&, const GroundStep& g) {
+        angles_.forget();
+        w_.step(g.a_h, g.v, g.top_v);
+    }
     WallState state(const GroundStep& g) const {
         const double x_g = w_.ground_x();
-        auto block = [&](const dd::BodyNode& body) {  // relative to the (moving) ground
+        auto block = [&](const dd::BodyNode& body, double angle) {  // relative to the (moving) ground
             const Vector3d c = body.getCOM(), v = body.getCOMLinearVelocity();
-            return BlockState{c.x() - x_g, c.y(), clockwise_angle(body), v.x() - g.v, v.y(), rate_of(body)};
+            const Eigen::Matrix3d r = body.getWorldTransform().linear();
+            // The clockwise angle's cosine and sine as the transform holds them (clockwise_angle's two entries).
+            return BlockState{c.x() - x_g, c.y(), angle, v.x() - g.v, v.y(), rate_of(body), r(0, 0), -r(1, 0)};
         };
-        return {block(*lower_), upper_ ? block(*upper_) : kNoBlock};
+        return {block(*lower_, lower_angle()), upper_ ? block(*upper_, upper_angle()) : kNoBlock};
     }
-    Rocking rocking() const { return {clockwise_angle(*lower_), rate_of(*lower_)}; }
+    Rocking rocking() const { return {lower_angle(), rate_of(*lower_)}; }
     void fill(TrajectorySample& p) const {
-        p.theta2 = upper_ ? clockwise_angle(*upper_) : 0.0;
+        p.theta2 = upper_ ? upper_angle() : 0.0;
         const double v_ground = w_.ground_velocity();
         auto kinetic = [&](const dd::BodyNode& body) {  // DART's own 3-D sum with its inertia tensor
             const Vector3d v = body.getCOMLinearVelocity() - Vector3d(v_ground, 0.0, 0.0);
@@ -398,6 +404,8 @@ public:
 
 private:
     static double rate_of(const dd::BodyNode& body) { return -body.getAngularVelocity()[2]; }
+    double lower_angle() const { return angles_.lower([&] { return clockwise_angle(*lower_); }); }
+    double upper_angle() const { return angles_.upper([&] { return clockwise_angle(*upper_); }); }
 
     DartScene& w_;
     WallEnergy energy_;
@@ -407,6 +415,7 @@ private:
     dd::BodyNode* top_body_;
     double top_half_;
     double load_x_;  // N's point on the top face from its centre, toward theta1 > 0 [m]
+    mutable StepAngles angles_;  // read by state(), rocking() and fill() of one step
 };
 
 // The checks a run and a scene file share, then the knobs: InputError on a bad scene, step or setting.

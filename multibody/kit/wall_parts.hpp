@@ -21,8 +21,8 @@
 namespace vssw::multibody {
 
 // One block after a step, relative to the ground (which may move): its centre [m], clockwise rotation [rad], the
-// centre's velocity [m/s] and the rotation rate [rad/s]. An adapter whose engine keeps a rotation matrix (ODE, Bullet)
-// may also give the rotation's cosine and sine as the matrix holds them, which TurnedBlock then uses instead of
+// centre's velocity [m/s] and the rotation rate [rad/s]. An adapter whose engine keeps a rotation matrix (ODE, Bullet,
+// DART) may also give the rotation's cosine and sine as the matrix holds them, which TurnedBlock then uses instead of
 // computing them from the angle (NaN: not given). They are the angle's own to rounding (the angle is atan2 of the
 // same two entries), and the C library's sin and cos, two a step, were about 0.5 % of an ODE run (perf).
 struct BlockState {
