@@ -14,6 +14,7 @@
 
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
+#include "cli/build_commit.hpp"
 #include "cli/message_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/option_values.hpp"
@@ -25,7 +26,6 @@
 #include "validation/bench_files.hpp"
 #include "io/clock.hpp"
 #include "io/folder_swap.hpp"
-#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT
 
 namespace vssw::cli {
 namespace {
@@ -114,7 +114,7 @@ Command add_bench_command(CLI::App& root) {
                 const io::FolderLock lock = io::check_out_folder(o->out, io::OutKind::bench);
                 io::check_inputs_not_outputs(o->out, io::OutKind::bench, {{"the record", options.record_path}});
 
-                validation::BenchMeta meta{io::utc_now(), VSSW_GIT_COMMIT, load_average(), options.repeats, o->quick,
+                validation::BenchMeta meta{io::utc_now(), build_commit(), load_average(), options.repeats, o->quick,
                                       options.engines, options.problems};
                 std::vector<validation::BenchPoint> points;
                 try {

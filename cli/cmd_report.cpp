@@ -20,6 +20,7 @@
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "analytic/ground_motion.hpp"
+#include "cli/build_commit.hpp"
 #include "cli/message_line.hpp"
 #include "cli/commands.hpp"
 #include "cli/option_values.hpp"
@@ -37,7 +38,6 @@
 #include "validation/report_write.hpp"
 #include "validation/suite_file.hpp"
 
-#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (cli/CMakeLists.txt)
 
 namespace vssw::cli {
 namespace {
@@ -139,7 +139,7 @@ auto run_part(const ReportCommandOptions& o, const std::string& file, const std:
     options.threads = o.threads;
     options.plots = !o.no_plots;
     options.gnuplot = o.gnuplot;
-    options.commit = VSSW_GIT_COMMIT;
+    options.commit = build_commit();
     if (progress.on())
         options.progress = [&progress, label](long done, long total, const std::string& what) {
             progress.show(done, total, label + ": " + what);
@@ -311,7 +311,7 @@ Command add_report_command(CLI::App& root) {
 
                 validation::ReportMeta meta;
                 meta.date = io::utc_now();
-                meta.commit = VSSW_GIT_COMMIT;
+                meta.commit = build_commit();
                 validation::ReportOptions options;
                 options.plots = !o->no_plots;
                 options.plot.gnuplot = o->gnuplot;

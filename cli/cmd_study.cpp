@@ -20,6 +20,7 @@
 
 #include "analytic/assumption_sets.hpp"
 #include "analytic/error.hpp"
+#include "cli/build_commit.hpp"
 #include "cli/message_line.hpp"
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
@@ -40,7 +41,6 @@
 #include "study/runner.hpp"
 #include "study/spec.hpp"
 
-#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (cli/CMakeLists.txt)
 
 namespace vssw::cli {
 namespace {
@@ -164,7 +164,7 @@ void run_study_command(const StudyOptions& o, std::ostream& out, std::ostream& e
         run.threads = parse_threads(o.threads_text);
         run.shard = parse_shard(o.shard_text);
         run.resume = o.resume;
-        run.commit = VSSW_GIT_COMMIT;
+        run.commit = build_commit();
         study::StudySpec spec = study::read_study_file(o.file);
         const double tasks = tasks_at_most(spec) / run.shard.n;
         if (tasks > kMaxTasksWithoutForce && !o.force)

@@ -5,15 +5,15 @@
 
 #include <fmt/format.h>
 
+#include "cli/build_commit.hpp"
 #include "multibody/engine.hpp"
 #include "multibody/host/registry.hpp"
 #include "study/mpi.hpp"
-#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT, written at build time (cli/CMakeLists.txt)
 
 namespace vssw::cli {
 
 std::string version_text() {
-    const std::string commit = VSSW_GIT_COMMIT;
+    const std::string commit = build_commit();
     std::string text = fmt::format("vssw {} ({})\n", VSSW_VERSION,
                                    commit.empty() ? "built outside a git checkout" : "commit " + commit);
     // Each engine's version as recorded beside its plugin when the plugin was built, read without opening it; where

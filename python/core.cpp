@@ -33,6 +33,7 @@
 #include "analytic/data_dir.hpp"
 #include "analytic/error.hpp"
 #include "analytic/closed_forms.hpp"
+#include "cli/build_commit.hpp"
 #include "cli/cli.hpp"
 #include "cli/compare_response.hpp"
 #include "cli/friction_option.hpp"
@@ -49,7 +50,6 @@
 #include "multibody/engine.hpp"
 #include "multibody/host/engine_names.hpp"
 #include "multibody/host/run_budget.hpp"
-#include "vssw_commit.hpp"  // VSSW_GIT_COMMIT (cli/CMakeLists.txt)
 
 namespace py = pybind11;
 
@@ -691,7 +691,7 @@ PYBIND11_MODULE(_core, m) {
           "The engines `all` stands for (every engine but the analytic model and simbody-rigid).");
     m.def("data_dir", &vssw::shipped_data_dir, "The shipped data folder (records, Table 1).");
     m.attr("VERSION") = VSSW_VERSION;
-    m.attr("COMMIT") = VSSW_GIT_COMMIT;
+    m.attr("COMMIT") = vssw::cli::build_commit();
     m.attr("EXIT_OK") = vssw::cli::kExitOk;
     m.attr("EXIT_OUT_OF_BOUNDS") = vssw::cli::kExitOutOfBounds;
     m.attr("EXIT_BAD_INPUT") = vssw::cli::kExitBadInput;
