@@ -60,8 +60,8 @@ struct Excitation {
 // sequential-impulse iterations per step (default 10; 100 changes nothing measured, docs/contributing/engines.md
 // "Bullet"), Box2D's velocity iterations (default 8), MuJoCo's Newton iterations and Siconos's Gauss-Seidel sweeps (at
 // most; defaults 100 and 1000), ODE's quickstep iterations (default 20); unused by DART, Simbody and the analytic
-// model (each engine's `--list-settings` says). The cost grows linearly with them; 1000, 50 times a default of 20, still ends a compare in
-// minutes rather than days.
+// model (each engine's `--list-settings` says). The cost grows linearly with them; 1000, 50 times a default of 20,
+// still ends a compare in minutes rather than days.
 constexpr int kMaxIterations = 1000;
 
 // Engine settings: the step and the solver's knobs. Every adapter documents its defaults and why (docs/contributing/engines.md).

@@ -200,7 +200,8 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
     // The key names the rings "overturned" only when some run overturned (a panel's first ring carries the title).
     bool any_overturned = false;
     for (const IdaCurve& c : curves)
-        any_overturned = any_overturned || std::find(c.overturned.begin(), c.overturned.end(), true) != c.overturned.end();
+        any_overturned =
+            any_overturned || std::find(c.overturned.begin(), c.overturned.end(), true) != c.overturned.end();
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
         std::string cmd;
         bool ringed = !any_overturned;

@@ -564,7 +564,8 @@ TEST(StudyEnsemble, IdaPlotNamesOverturnedOnlyWhenARunOverturned) {
     while (io::read_csv_record(in, fields)) {
         if (fields.size() != header.size()) continue;
         fields.at(at("overturned")) = "0";
-        fields.at(at("peak_over_alpha1")) = io::csv_number(0.5 * std::min(1.0, std::stod(fields.at(at("peak_over_alpha1")))));
+        const double peak = std::stod(fields.at(at("peak_over_alpha1")));
+        fields.at(at("peak_over_alpha1")) = io::csv_number(0.5 * std::min(1.0, peak));
         std::string line;
         for (const std::string& f : fields) line += (line.empty() ? "" : ",") + io::csv_field(f);
         standing += "\n" + line;

@@ -25,9 +25,9 @@
 //    outwards; docs/contributing/engines.md "Bullet"). With roller = 1, the paper's bilateral roller instead: a
 //    b2WheelJoint (stiffness 0, damping 0: a point of the block held on a vertical line, rotation free) at the top
 //    corner whose guide binds (left_guide_binds), moved to the other corner when the other guide binds;
-//  - N: a force on the top face each step (at its centre, or e from it), only when xi > 0 (Box2D adds a force's linear and angular
-//    impulse to the velocities before the solve, so every row sees it: Bullet's trap, docs/contributing/engines.md
-//    "Bullet", does not arise);
+//  - N: a force on the top face each step (at its centre, or e from it), only when xi > 0 (Box2D adds a force's
+//    linear and angular impulse to the velocities before the solve, so every row sees it: Bullet's trap,
+//    docs/contributing/engines.md "Bullet", does not arise);
 //  - ground motion: by default the pseudo-forces -m a_h(t) as a tilt of gravity, (-a_h, -g), set before each step
 //    at its midpoint; with moving_supports = 1 the ground body (edge and guides) is kinematic, its velocity for the
 //    step V_k = V_{k-1} + dt a_h(t_{k-1/2}) (ODE's rule: the same impulse per step as the pseudo-forces);

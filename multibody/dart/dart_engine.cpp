@@ -21,8 +21,9 @@
 //    along the depth at the arcs' centres (add_rounding): the base capsules meet the ground, each top capsule of the
 //    lower block the bottom capsule of the upper block on its side; masses and inertias stay the rectangles';
 //  - N: an external force on the top face each step (at its centre, or e from it; DART clears external forces after
-//    each step), only when xi > 0; ground motion: the world's gravity (-a_h(t), -g) each step, a_h at the step's midpoint (a
-//    uniform pseudo-force -m a_h on every block), or (moving_supports = 1) the ground and the guides moving;
+//    each step), only when xi > 0; ground motion: the world's gravity (-a_h(t), -g) each step, a_h at the step's
+//    midpoint (a uniform pseudo-force -m a_h on every block), or (moving_supports = 1) the ground and the guides
+//    moving;
 //  - a flexible top support (WallScene::diaphragm, T_d > 0): the guides on a velocity-driven skeleton of their own,
 //    slid at the ground's velocity plus u_d's, so that they sit u_d(t) of Eq. (9d) from the ground at each step's end;
 //

@@ -10,8 +10,9 @@
 namespace vssw::multibody {
 
 // InputError naming the engine, the setting, its value and the wall when a setting `described` marks parapet_only
-// (vssw_only) is given a value other than its default for a VSSW (a parapet). Every entry point checks it with the other settings, once it knows
-// the wall, before anything runs (compare, study, report suites; IsolatedEngine again for any other caller).
+// (vssw_only) is given a value other than its default for a VSSW (a parapet). Every entry point checks it with the
+// other settings, once it knows the wall, before anything runs (compare, study, report suites; IsolatedEngine again
+// for any other caller).
 void require_settings_fit_wall(const std::string& engine, const EngineSettings& settings,
                                const std::vector<SettingDescription>& described, const WallScene& scene);
 
