@@ -37,8 +37,10 @@ chroot "$root" /usr/bin/env DEBIAN_FRONTEND=noninteractive /bin/bash -c '
   apt-get install -y -qq /tmp/vssw.deb >/tmp/apt.log 2>&1 || { tail -20 /tmp/apt.log; exit 1; }
   echo "installed: $(grep -c "^Setting up" /tmp/apt.log) packages"
   cd /root
-  vssw --version >/tmp/version.out && head -1 /tmp/version.out
-  vssw report --suite default --out /root/report >/tmp/report.out && head -1 /tmp/report.out
+  vssw --version >/tmp/version.out
+  head -1 /tmp/version.out
+  vssw report --suite default --out /root/report >/tmp/report.out
+  head -1 /tmp/report.out
   test -s /root/report/report.html
   python3 -c "
 import vssw

@@ -204,7 +204,7 @@ void add_ida_plot(const StudyData& d, const EnsembleMeasures& e, const std::vect
             any_overturned || std::find(c.overturned.begin(), c.overturned.end(), true) != c.overturned.end();
     for (std::size_t w = 0; w < e.walls.size(); ++w) {
         std::string cmd;
-        bool ringed = !any_overturned;
+        bool ringed = !any_overturned;  // the title given (or none to give): the panel's later rings go untitled
 
         const auto add = [&](const std::string& style, const std::string& title) {
             cmd += fmt::format("{}'{}.dat' index {} using 1:2 with {} {}", cmd.empty() ? "plot " : ", \\\n     ",

@@ -315,13 +315,8 @@ StudyData StudyDataBuilder::finish(io::Json manifest) {
         d.kind = study.at("kind").get<std::string>();
         read_metrics(d);
         if (const std::vector<std::string> named = metric_names(d.manifest); named != metric_names_) {
-            const auto listed = [](const std::vector<std::string>& v) {
-                std::string s;
-                for (const std::string& m : v) s += (s.empty() ? "" : ", ") + m;
-                return "[" + s + "]";
-            };
-            throw InputError(fmt::format("its metrics {} are not those of the rows {}", listed(named),
-                                         listed(metric_names_)));
+            throw InputError(fmt::format("its metrics [{}] are not those of the rows [{}]", fmt::join(named, ", "),
+                                         fmt::join(metric_names_, ", ")));
         }
         classify_columns(d);
         order_assumptions(d);

@@ -383,7 +383,7 @@ public:
         const double x_g = w_.ground_x();
         auto block = [&](const dd::BodyNode& body, double angle) {  // relative to the (moving) ground
             const Vector3d c = body.getCOM(), v = body.getCOMLinearVelocity();
-            const Eigen::Matrix3d r = body.getWorldTransform().linear();
+            const Eigen::Isometry3d& r = body.getWorldTransform();
             // The clockwise angle's cosine and sine as the transform holds them (clockwise_angle's two entries).
             return BlockState{c.x() - x_g, c.y(), angle, v.x() - g.v, v.y(), rate_of(body), r(0, 0), -r(1, 0)};
         };

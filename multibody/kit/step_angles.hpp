@@ -1,6 +1,6 @@
 #pragma once
 // The blocks' angles read once a step. An adapter's state() (for the run monitor), rocking() and fill() (for a sample)
-// all read the same bodies after a step, and in ODE and Bullet an angle is atan2 of the body's rotation matrix, the
+// all read the same bodies after a step, and in ODE, Bullet and DART an angle is atan2 of the body's rotation, the
 // hooks' costliest call (callgrind: four a step on a free vibration sampled every step). The second read returns the
 // first's value, bit for bit what reading it again would give; the step forgets them. Engine-free.
 #include <cmath>

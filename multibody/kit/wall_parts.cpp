@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include <fmt/format.h>
@@ -15,9 +15,9 @@ namespace {
 
 using Corners = std::array<PlanePoint, 4>;
 
-using Turned = TurnedBlock;
-
-Corners corners_of(const Turned& k, double b, double h) { return {k.at(b, -h), k.at(-b, -h), k.at(-b, h), k.at(b, h)}; }
+Corners corners_of(const TurnedBlock& k, double b, double h) {
+    return {k.at(b, -h), k.at(-b, -h), k.at(-b, h), k.at(b, h)};
+}
 
 // How far two blocks' projections on the direction (ux, uy) overlap, negative when they are apart along it.
 double axis_overlap(const Corners& a, const Corners& c, double ux, double uy) {
@@ -38,9 +38,9 @@ double axis_overlap(const Corners& a, const Corners& c, double ux, double uy) {
 // How deep two blocks overlap: the least overlap of their projections on the four edge directions (separating axes),
 // negative when they are apart. Corners alone would miss a block falling through another of its own width, edge on
 // edge (the VSSW's two blocks are equally thick).
-double overlap(const Corners& a, const Turned& ka, const Corners& c, const Turned& kc) {
+double overlap(const Corners& a, const TurnedBlock& ka, const Corners& c, const TurnedBlock& kc) {
     double least = HUGE_VAL;
-    for (const Turned* block : {&ka, &kc}) {
+    for (const TurnedBlock* block : {&ka, &kc}) {
         const double cs = block->c, sn = block->s;
         for (const auto& [ux, uy] : {std::pair{cs, -sn}, std::pair{sn, cs}})  // the block's width and height axes
             least = std::min(least, axis_overlap(a, c, ux, uy));
@@ -136,7 +136,7 @@ void WallParts::check_contacts(double t, const WallState& s, const TurnedBlock& 
     // Bullet and MuJoCo on the Fig. 6 wall under Rinaldi at 0.7 g, theta2 -2.7 rad, the block hanging from the hinge
     // against the lower one's face). The sweep's block falling through the hinge stays inside (theta2 -0.16 to -0.53).
     if (!vssw_ || std::abs(s.upper.angle) >= upright_range_) return;
-    const Turned& upper_block = *upper_turned;
+    const TurnedBlock& upper_block = *upper_turned;
     const Corners upper = corners_of(upper_block, z.b - r, z.h_upper - r);
     for (const PlanePoint& p : upper) lowest = std::min(lowest, p.y - r - gap_);
     if (-lowest > penetration_)
@@ -158,8 +158,6 @@ void WallParts::check_contacts(double t, const WallState& s, const TurnedBlock& 
             throw EngineFailure(fmt::format("{}: the top passed {:.3g} m through the roller at t = {:.6g} s", engine_,
                                             out, t));
 }
-
-void WallParts::check(double t, const WallState& s) { check(t, s, TurnedBlock(s.lower)); }
 
 void WallParts::check(double t, const WallState& s, const TurnedBlock& lower) {
     if (!finite(s.lower) || (vssw_ && !finite(s.upper)))

@@ -83,9 +83,8 @@ public:
               double penetration, double energy_gain, double contact_gap = 0.0);
 
     // Throws EngineFailure naming the part and the time when a corner is inside a body, the state is not finite, or
-    // the energy is above E(0) plus the most the ground motion can have given. Call once per step, in time order.
-    void check(double t, const WallState& s);
-    // The same with the lower block already turned (RunMonitor's, shared with its base check): lower.k is s.lower.
+    // the energy is above E(0) plus the most the ground motion can have given. Call once per step, in time order,
+    // with the lower block already turned (RunMonitor's, shared with its base check): lower.k is s.lower.
     void check(double t, const WallState& s, const TurnedBlock& lower);
 
 private:

@@ -571,8 +571,9 @@ public:
     void fill(TrajectorySample& p) const {
         p.theta2 = upper_ ? upper_angle() : 0.0;
         const double v_ground = w_.ground_velocity();
-        auto kinetic = [&](dBodyID body, const dMass& m) {  // ODE's full 3-D sum: the out-of-plane terms are 0
-            const dReal* v = dBodyGetLinearVel(body);            // (see check_step)
+        // ODE's full 3-D sum: the out-of-plane terms are 0 (see check_step).
+        auto kinetic = [&](dBodyID body, const dMass& m) {
+            const dReal* v = dBodyGetLinearVel(body);
             const dReal* wv = dBodyGetAngularVel(body);
             const double vx = v[0] - v_ground;
             return 0.5 * m.mass * (vx * vx + v[1] * v[1] + v[2] * v[2]) +
