@@ -26,6 +26,14 @@ std::string range_of(const multibody::SettingDescription& s) {
     return multibody::is_knob(s.name) ? multibody::range_bounds_text(s) : "-";
 }
 
+// The meaning as the text listing prints it: a setting for one kind of wall says so (any other value than its
+// default is refused for the other kind).
+std::string meaning_of(const multibody::SettingDescription& s) {
+    if (s.vssw_only) return s.meaning + " (VSSW only)";
+    if (s.parapet_only) return s.meaning + " (parapet only)";
+    return s.meaning;
+}
+
 // A range's end in JSON: null when unbounded.
 io::Json end_of(double v) { return std::isinf(v) ? io::Json(nullptr) : io::Json(v); }
 
@@ -41,7 +49,7 @@ std::string text_of(const multibody::Engine& engine) {
     std::string text = fmt::format("{} ({}): {}\n", engine.display_name(), engine.name(), engine.version());
     for (const auto& s : settings)
         text += fmt::format("  {:<{}}  {:<{}}  {:<{}}  {:<{}}  {}\n", flag_of(s.name), flag_width, s.default_value,
-                            default_width, s.unit, unit_width, range_of(s), range_width, s.meaning);
+                            default_width, s.unit, unit_width, range_of(s), range_width, meaning_of(s));
     return text;
 }
 
@@ -50,7 +58,8 @@ io::Json json_of(const multibody::Engine& engine) {
     for (const auto& s : engine.setting_descriptions())
         settings.push_back(
             {{"name", s.name}, {"flag", flag_of(s.name)}, {"default", s.default_value}, {"unit", s.unit},
-             {"min", end_of(s.lo)}, {"max", end_of(s.hi)}, {"meaning", s.meaning}});
+             {"min", end_of(s.lo)}, {"max", end_of(s.hi)}, {"meaning", s.meaning},
+             {"walls", multibody::walls_of(s)}});
     return {{"engine", engine.name()}, {"version", engine.version()}, {"settings", settings}};
 }
 
@@ -69,7 +78,8 @@ std::string settings_listing(const std::vector<std::string>& engines, bool json)
     if (json) return io::dump_json(all, 2) + "\n";
     return text +
            "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its range (both\n"
-           "ends included; a value outside it is refused), its meaning.\n"
+           "ends included; a value outside it is refused), its meaning. \"(VSSW only)\", \"(parapet only)\": for the other\n"
+           "kind of wall any value but the default is refused.\n"
            "Each default and why it was chosen: docs/contributing/engines.md.\n";
 }
 

@@ -110,6 +110,10 @@ struct SettingDescription {
 std::string range_bounds_text(const SettingDescription& d);
 // The same with the unit: "[1e-06, 1] m" (for messages).
 std::string range_text(const SettingDescription& d);
+// The walls a setting may be given for: "vssw" (vssw_only), "parapet" (parapet_only) or "any".
+inline const char* walls_of(const SettingDescription& d) {
+    return d.vssw_only ? "vssw" : d.parapet_only ? "parapet" : "any";
+}
 
 // dt and iterations are EngineSettings' own fields; every other setting an engine describes is one of its knobs.
 inline bool is_knob(const std::string& setting_name) { return setting_name != "dt" && setting_name != "iterations"; }

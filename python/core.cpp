@@ -583,6 +583,7 @@ py::list engine_settings(const std::string& engine_name) {
         d["meaning"] = s.meaning;
         d["min"] = s.lo;
         d["max"] = s.hi;
+        d["walls"] = vssw::multibody::walls_of(s);  // "vssw", "parapet" or "any"
         l.append(d);
     }
     return l;

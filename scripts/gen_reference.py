@@ -89,6 +89,10 @@ def cell(value):
     return str(value).replace("|", "\\|").replace("\n", " ")
 
 
+# A setting for one kind of wall says so, as the text listing does (any other value is refused for the other kind).
+WALLS_NOTE = {"any": "", "vssw": " (VSSW only)", "parapet": " (parapet only)"}
+
+
 def engines_page(vssw):
     listing = json.loads(vssw.run("compare", "--list-settings", "--json")[0])
     out = [GENERATED, "# Engine settings\n\n",
@@ -105,7 +109,7 @@ def engines_page(vssw):
         for s in engine["settings"]:
             out.append("| `%s` | `%s` | %s | %s | %s | %s | %s |\n" % (
                 s["name"], s["flag"], cell(s["default"]), cell(s["unit"]), cell(s["min"]), cell(s["max"]),
-                cell(s["meaning"])))
+                cell(s["meaning"] + WALLS_NOTE[s["walls"]])))
         out.append("\n")
     return "".join(out)
 

@@ -1400,13 +1400,24 @@ TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
         {"box2d", {"--set", "skin=0.05"}, {"Box2D setting skin = 0.05", "parapet wall only"}},
     };
     // And a setting for a VSSW only on a parapet: Box2D's bilateral roller (its wheel joint held the upper block, and
-    // a parapet's run crashed).
-    for (const bool pulse : {false, true}) {
-        if (!vssw::testing::engine_available("box2d")) break;
-        std::vector<std::string> args = {"compare", "--model", "parapet", "--height", "2", "--thickness", "0.3",
-                                         "--engine", "box2d", "--set", "roller=1"};
-        if (pulse) args = args + kSinePulse;
-        expect_bad_input(args, {"Box2D setting roller = 1", "VSSW (two blocks and a roller) only", "for a parapet"});
+    // a parapet's run crashed), Siconos's coefficients at the hinge and the roller and simbody-rigid's second guide
+    // (a parapet has neither: they were accepted and ignored).
+    const std::vector<Case> vssw_settings = {
+        {"box2d", {"--set", "roller=1"}, {"Box2D setting roller = 1"}},
+        {"siconos", {"--set", "e_hinge=0.5"}, {"Siconos setting e_hinge = 0.5"}},
+        {"siconos", {"--set", "e_roller=1"}, {"Siconos setting e_roller = 1"}},
+        {"simbody-rigid", {"--set", "both_guides=1"}, {"setting both_guides = 1"}},
+    };
+    for (const Case& c : vssw_settings) {
+        if (!vssw::testing::engine_available(c.engine)) continue;
+        for (const bool pulse : {false, true}) {
+            std::vector<std::string> args = {"compare", "--model", "parapet", "--height", "2", "--thickness", "0.3",
+                                             "--engine", c.engine};
+            args = args + c.options;
+            if (pulse) args = args + kSinePulse;
+            expect_bad_input(args, c.named + std::vector<std::string>{"VSSW (two blocks and a roller) only",
+                                                                      "for a parapet"});
+        }
     }
     for (const Case& c : cases) {
         if (!vssw::testing::engine_available(c.engine)) continue;

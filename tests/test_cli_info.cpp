@@ -8,6 +8,7 @@
 
 #include "multibody/engine.hpp"
 #include "tests/cli_runner.hpp"
+#include "tests/engine_available.hpp"
 
 namespace {
 
@@ -52,6 +53,29 @@ TEST(CliListSettings, JsonCarriesEachSettingsDefaultUnitAndMeaning) {
         EXPECT_EQ(s["default"], described[i].default_value);
         EXPECT_EQ(s["unit"], described[i].unit);
         EXPECT_EQ(s["meaning"], described[i].meaning);
+    }
+}
+
+// A setting for one kind of wall (refused for the other: require_settings_fit_wall) is marked so in both listings.
+TEST(CliListSettings, ASettingForOneKindOfWallSaysWhich) {
+    const Json listing = Json::parse(run_cli({"compare", "--list-settings", "--json"}).out);
+    const std::string text = run_cli({"compare", "--list-settings"}).out;
+    int marked = 0;
+    for (const Json& engine : listing) {
+        const auto described = vssw::multibody::make_engine(engine["engine"])->setting_descriptions();
+        ASSERT_EQ(engine["settings"].size(), described.size());
+        for (std::size_t i = 0; i < described.size(); ++i) {
+            const auto& d = described[i];
+            const std::string walls = d.vssw_only ? "vssw" : d.parapet_only ? "parapet" : "any";
+            EXPECT_EQ(engine["settings"][i]["walls"], walls) << d.name;
+            if (walls == "any") continue;
+            ++marked;
+            const std::string line = d.meaning + (d.vssw_only ? " (VSSW only)" : " (parapet only)");
+            EXPECT_TRUE(contains(text, line)) << line;
+        }
+    }
+    if (vssw::testing::engine_available("box2d")) {
+        EXPECT_GE(marked, 2);  // its roller and its skin at least
     }
 }
 

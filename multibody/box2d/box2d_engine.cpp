@@ -106,8 +106,8 @@ const std::vector<SettingDescription>& setting_table() {
          0.0, 1.0, /*parapet_only=*/false, /*vssw_only=*/true},
         {"moving_supports", "0", "0/1", "1: move the ground as a kinematic body instead of tilting gravity", 0.0, 1.0},
         {"skin", "0", "m",
-         "Box2D's polygon radius on the block and the ground, parapet only (Box2D's default 0.01 rounds the corners: "
-         "period +0.37 %)",
+         "Box2D's polygon radius on the block and the ground (Box2D's default 0.01 rounds the corners: period "
+         "+0.37 %)",
          0.0, kMaxSkin, /*parapet_only=*/true},
     });
     return table;

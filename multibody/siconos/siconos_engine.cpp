@@ -221,8 +221,11 @@ const std::vector<SettingDescription>& setting_table() {
         {"iterations", std::to_string(kDefaultSweeps), "",
          "at most this many Gauss-Seidel sweeps per step; a step whose contact problem is not solved fails the run"},
         {"e_ground", "0", "", "Newton's coefficient of restitution at the base corners, in [0, 1]", 0.0, 1.0},
-        {"e_hinge", "0", "", "Newton's coefficient at the hinge (upper block's bottom corners), in [0, 1]", 0.0, 1.0},
-        {"e_roller", "0", "", "Newton's coefficient at the roller's guides, in [0, 1]", 0.0, 1.0},
+        // A parapet has neither a hinge nor a roller: a value there would be ignored, so it is refused (vssw_only).
+        {"e_hinge", "0", "", "Newton's coefficient at the hinge (upper block's bottom corners), in [0, 1]", 0.0, 1.0,
+         /*parapet_only=*/false, /*vssw_only=*/true},
+        {"e_roller", "0", "", "Newton's coefficient at the roller's guides, in [0, 1]", 0.0, 1.0,
+         /*parapet_only=*/false, /*vssw_only=*/true},
         {"theta", "0.5", "", "Moreau-Jean's theta-method weight on the smooth forces, in [0.5, 1]", 0.5, 1.0},
         {"gamma", "0.5", "", "a contact joins a step when its gap predicted gamma steps ahead is closed, in [0, 1]", 0.0, 1.0},
         {"tolerance", "1e-06", "", "the contact solver's relative residual", 1e-16, 0.1},

@@ -110,7 +110,9 @@ const std::vector<SettingDescription>& rigid_setting_table() {
         {"projection", "1", "choice", "position correction after each step: 0 bilateral, 1 unilateral, 2 none", 0.0, 2.0},
         {"restitution", "2", "choice", "the stepper's restitution model: 0 Poisson, 1 Newton, 2 none", 0.0, 2.0},
         {"solver", "0", "choice", "the impulse solver: 0 PLUS, 1 PGS", 0.0, 1.0},
-        {"both_guides", "0", "0/1", "1: offer both roller guides to the stepper at every step", 0.0, 1.0},
+        // A parapet has no roller: a value there would be ignored, so it is refused (vssw_only).
+        {"both_guides", "0", "0/1", "1: offer both roller guides to the stepper at every step", 0.0, 1.0,
+         /*parapet_only=*/false, /*vssw_only=*/true},
         {"moving_supports", "0", "0/1", "refused when 1: the stepper ignores prescribed motion", 0.0, 1.0},
     });
     return table;

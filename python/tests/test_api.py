@@ -194,6 +194,25 @@ def test_engine_settings_defaults_are_numbers_within_their_ranges():
     assert ode["iterations"]["default"] is None  # ODE's direct solver takes none
 
 
+def test_a_setting_for_one_kind_of_wall_is_refused_for_the_other():
+    """A setting marked for the VSSW only (its hinge, its roller) is refused for a parapet, one marked for the parapet
+    only is refused for a VSSW, each naming the setting, before anything runs."""
+    parapet = dict(model="parapet", height=2.0, thickness=0.3)
+    marked = 0
+    for engine in vssw.engines():
+        for s in vssw.engine_settings(engine):
+            assert s["walls"] in ("any", "vssw", "parapet"), (engine, s)
+            if s["walls"] == "any":
+                continue
+            marked += 1
+            other = s["max"] if s["default"] != s["max"] else s["min"]  # a value other than the default
+            wall = parapet if s["walls"] == "vssw" else FIG6
+            with pytest.raises(vssw.InputError, match=f"setting {s['name']} = "):
+                vssw.simulate(engine, **wall, theta0=0.5, t_end=0.3, settings={s["name"]: other})
+    if "box2d" in vssw.engines():
+        assert marked >= 2  # Box2D's roller and skin at least
+
+
 def test_engine_settings_reach_the_engine():
     default = vssw.simulate("ode", **FIG6, theta0=0.5, t_end=0.3)
     loose = vssw.simulate("ode", **FIG6, theta0=0.5, t_end=0.3, settings={"erp": 0.5})

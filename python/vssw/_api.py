@@ -548,8 +548,9 @@ def _default_number(text):
 
 def engine_settings(engine: str) -> List[Dict[str, Any]]:
     """Every setting of one backend (its name in any letter case): a list of {name, default, unit, meaning, min,
-    max}. default is a float, or None where the setting has no default (it is off unless given); min and max are the
-    range a value may take, both included (-inf/inf when unbounded). dt (an engine's step) and iterations are given
+    max, walls}. default is a float, or None where the setting has no default (it is off unless given); min and max
+    are the range a value may take, both included (-inf/inf when unbounded); walls is "any", or "vssw" ("parapet")
+    for a setting of that wall only, any other value than its default being refused for the other kind. dt (an engine's step) and iterations are given
     as simulate's dt and iterations, the analytic model's sample_dt (its output interval) as simulate's sample_dt,
     every other one in settings={name: value}."""
     name = _engine(engine)
