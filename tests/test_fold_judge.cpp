@@ -1,7 +1,7 @@
 // A wall past the unstable equilibrium is judged overturned during the shaking once it cannot come back
-// (multibody/kit/fold_judge.hpp): the capacity curve it rests on (analytic/capacity.hpp) against values computed
-// independently, a wall that passes the equilibrium under a pulse and comes back never called overturned, and a folded
-// wall called overturned before the record's end.
+// (multibody/kit/fold_judge.hpp): the capacity curve it rests on (RockingModel::holding_acceleration) against values
+// computed independently, a wall that passes the equilibrium under a pulse and comes back never called overturned, and
+// a folded wall called overturned before the record's end.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +9,6 @@
 #include <memory>
 #include <vector>
 
-#include "analytic/capacity.hpp"
 #include "analytic/closed_forms.hpp"
 #include "analytic/ground_motion.hpp"
 #include "analytic/model.hpp"
@@ -40,8 +39,8 @@ TEST(CapacityCurve, ABlockOnItsCornerIsHeldByGTanOfAlphaLessTheRotation) {
     constexpr double kRounding = 1e-12;  // two evaluations of the same trigonometry, m/s^2 of order 1
     for (const double r : kAngles) {
         if (r * alpha >= model->collapse_angle()) continue;
-        EXPECT_NEAR(capacity_acceleration(*model, 1, r * alpha), g * std::tan(alpha - r * alpha), kRounding) << r;
-        EXPECT_NEAR(capacity_acceleration(*model, -1, r * alpha), g * std::tan(alpha - r * alpha), kRounding) << r;
+        EXPECT_NEAR(model->holding_acceleration(1, r * alpha), g * std::tan(alpha - r * alpha), kRounding) << r;
+        EXPECT_NEAR(model->holding_acceleration(-1, r * alpha), g * std::tan(alpha - r * alpha), kRounding) << r;
     }
 }
 
@@ -71,18 +70,18 @@ TEST(CapacityCurve, TheVsswMatchesFiniteDifferencesOfItsBlocksPositions) {
     const double scale = model->rest_threshold(0.0);
     for (const double r : kAngles) {
         const double q = r * alpha1, by_hand = capacity_by_differences(scene, q);
-        EXPECT_NEAR(capacity_acceleration(*model, 1, q), by_hand, kDifferences * scale) << r;
+        EXPECT_NEAR(model->holding_acceleration(1, q), by_hand, kDifferences * scale) << r;
         // The comparison tells kinematics apart: the paper's Eq. (3) misses these values past rest.
         if (r >= 2.0) {
-            EXPECT_GT(std::abs(capacity_acceleration(*paper, 1, q) - by_hand), 10 * kDifferences * scale) << r;
+            EXPECT_GT(std::abs(paper->holding_acceleration(1, q) - by_hand), 10 * kDifferences * scale) << r;
         }
     }
     // At rest Eq. (12); at the unstable equilibrium (the potential's maximum) zero; negative past it.
     constexpr double kClosedForm = 1e-9;  // Eq. (12)'s arithmetic against the model's terms
-    EXPECT_NEAR(capacity_acceleration(*model, 1, 0.0), eq12_threshold(*scene.vssw), kClosedForm * scale);
+    EXPECT_NEAR(model->holding_acceleration(1, 0.0), eq12_threshold(*scene.vssw), kClosedForm * scale);
     constexpr double kAtTheMaximum = 1e-6;  // the argmax's error (~1e-8 rad) times c's slope (~scale / alpha1)
-    EXPECT_NEAR(capacity_acceleration(*model, 1, model->unstable_equilibrium(1)), 0.0, kAtTheMaximum * scale);
-    EXPECT_LT(capacity_acceleration(*model, 1, 1.5 * alpha1), 0.0);
+    EXPECT_NEAR(model->holding_acceleration(1, model->unstable_equilibrium(1)), 0.0, kAtTheMaximum * scale);
+    EXPECT_LT(model->holding_acceleration(1, 1.5 * alpha1), 0.0);
 }
 
 // The analytic model of the Fig. 6 VSSW under a one-sine pulse of 6.375 g and 0.2 s, sampled every ms (a record, so
@@ -137,7 +136,7 @@ TEST(FoldJudge, AFoldedWallIsOverturnedBeforeTheRecordsEnd) {
     // The smallest hold-back over the swing, from the capacity curve (what an inward acceleration must exceed).
     double weakest = HUGE_VAL;
     for (double q = 3.7 * alpha1; q < model->collapse_angle(); q += 1e-3 * alpha1)
-        weakest = std::min(weakest, -capacity_acceleration(*model, 1, q));
+        weakest = std::min(weakest, -model->holding_acceleration(1, q));
     ASSERT_GT(weakest, 0.0);
     const double strong = 3.0 * weakest, weak = 0.5 * weakest;
     multibody::Excitation ex;

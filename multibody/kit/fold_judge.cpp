@@ -4,7 +4,6 @@
 #include <cmath>
 #include <memory>
 
-#include "analytic/capacity.hpp"
 #include "analytic/model.hpp"
 #include "analytic/wall_scene.hpp"
 
@@ -31,7 +30,7 @@ FoldJudge::FoldJudge(const WallScene& scene, const GroundMotion& motion) {
         h.resize(kGrid);
         for (int i = 0; i < kGrid; ++i) {
             const double q = unstable_[k] + (collapse_ - unstable_[k]) * i / (kGrid - 1);
-            const double c = capacity_acceleration(*model, side, q);
+            const double c = model->holding_acceleration(side, q);
             h[i] = std::isfinite(c) && c < 0.0 ? -c : 0.0;
         }
         for (int i = kGrid - 2; i >= 0; --i) h[i] = std::min(h[i], h[i + 1]);  // the smallest from each point on

@@ -3,13 +3,13 @@
 //
 // The argument (docs/earthquakes.md, "Overturning, the same for every backend"): on side s at q = |theta1| the
 // mechanism's equation (Eq. 10) is M theta1'' + C theta1'^2 = -a_h X(q) - s V'(q), and the capacity curve
-// c(q) = V'(q) / X(q) (analytic/capacity.hpp) is the |a_h| that holds the wall still at q. Past the unstable
-// equilibrium c < 0: only an inward acceleration of at least h(q) = -c(q) can hold the wall there. Let A be the
-// largest |a_h| left in the record from now on, and H(q) the smallest h over [q, collapse angle]. A wall at q with
+// c(q) = V'(q) / X(q) (RockingModel::holding_acceleration) is the |a_h| that holds the wall still at q. Past the
+// unstable equilibrium c < 0: only an inward acceleration of at least h(q) = -c(q) can hold the wall there. Let A be
+// the largest |a_h| left in the record from now on, and H(q) the smallest h over [q, collapse angle]. A wall at q with
 // A < H(q) feels an outward generalised force at every later moment for as long as it stays beyond q. If its rate is
-// not inward now, it cannot turn inward: whenever theta1' = 0 there, M theta1'' is that outward force, > 0 outward,
-// so the rate leaves 0 outward again and q never falls below its value now. The wall goes on to the collapse angle
-// (or folds against the far guide, as the engines' walls do): it has overturned, and the run can end now instead of
+// not inward now, it cannot turn inward: whenever theta1' = 0 there, M theta1'' is that outward force, > 0 outward, so
+// the rate leaves 0 outward again and q never falls below its value now. The wall goes on to the collapse angle (or
+// folds against the far guide, as the engines' walls do): it has overturned, and the run can end now instead of
 // kFoldedFor after the record's end.
 //
 // Held for the rigid mechanism only: a flexible top support (its ring after the shaking can turn the upper block) and
