@@ -478,7 +478,7 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
     mjData* d = data.get();
     if (!d) throw EngineFailure("MuJoCo: mj_makeData failed");
 
-    auto block = [&](const char* name, double z_rest, double half_h, double mass_per_depth) {
+    auto block = [&](const char* name, double z_rest, double half_h) {
         Block k;
         k.body = mj_name2id(m, mjOBJ_BODY, name);
         const std::string joint = std::string(name) + "_x";
@@ -488,13 +488,15 @@ Trajectory MujocoEngine::run(const WallScene& scene, const Excitation& ex, const
         k.q = m->jnt_qposadr[joint_id];
         k.z_rest = z_rest;
         k.half_h = half_h;
-        k.mass = mass_per_depth * kDepth;
-        k.inertia = k.mass * (4.0 * s.b * s.b + 4.0 * half_h * half_h) / 12.0;
+        // As the compiled model holds them (block_xml's inertial: the rectangle's mass and its inertia about y), so
+        // that the sample's kinetic energy is of the bodies MuJoCo steps.
+        k.mass = m->body_mass[k.body];
+        k.inertia = m->body_inertia[3 * k.body + 1];
         return k;
     };
-    const Block lower = block("lower", s.h_lower, s.h_lower, s.m_lower);
+    const Block lower = block("lower", s.h_lower, s.h_lower);
     const bool vssw = scene.vssw.has_value();
-    const Block upper = vssw ? block("upper", 2.0 * s.h_lower + s.h_upper, s.h_upper, s.m_upper) : Block{};
+    const Block upper = vssw ? block("upper", 2.0 * s.h_lower + s.h_upper, s.h_upper) : Block{};
     // The release is the file's keyframe 'release' (17 digits: the positions release_qpos computed, to the bit).
     mj_resetDataKeyframe(m, d, 0);
 
