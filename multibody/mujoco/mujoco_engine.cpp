@@ -419,7 +419,7 @@ public:
     // N on the top face (its centre, or load_x_ from it): the force at the centre of mass and its moment about it (about +y: r_z F_x -
     // r_x F_z with r the arm from the centre, F = (0, 0, -N)).
     void push_overburden() {
-        const double arm_x = world(top_, load_x_, top_.half_h)[0] - centre_x(top_);
+        const double arm_x = point_of(block_state(top_), load_x_, top_.half_h).x - centre_x(top_);
         double* f = d_->xfrc_applied + 6 * top_.body;
         f[2] = -N_;
         f[4] = arm_x * N_;
@@ -440,7 +440,7 @@ public:
             return block_kinetic_energy(k.mass, k.inertia, d_->qvel[k.q], d_->qvel[k.q + 1], d_->qvel[k.q + 2]);
         };
         energy_.fill(p, {kinetic(lower_), vssw_ ? kinetic(upper_) : 0.0, centre_y(lower_),
-                         vssw_ ? centre_y(upper_) : 0.0, world(top_, load_x_, top_.half_h)[1]});
+                         vssw_ ? centre_y(upper_) : 0.0, point_of(block_state(top_), load_x_, top_.half_h).y});
         p.contacts = d_->ncon;
     }
 
@@ -448,11 +448,6 @@ private:
     double centre_x(const Block& k) const { return d_->qpos[k.q]; }
     double centre_y(const Block& k) const { return k.z_rest + d_->qpos[k.q + 1]; }
     double angle(const Block& k) const { return d_->qpos[k.q + 2]; }
-    // A point of a block given in its frame (engine axes: lx along its width, ly along its height), in world (x, y).
-    std::array<double, 2> world(const Block& k, double lx, double ly) const {
-        const double a = angle(k), c = std::cos(a), sn = std::sin(a);
-        return {centre_x(k) + c * lx + sn * ly, centre_y(k) - sn * lx + c * ly};
-    }
     BlockState block_state(const Block& k) const {
         return BlockState{centre_x(k), centre_y(k), angle(k), d_->qvel[k.q], d_->qvel[k.q + 1], d_->qvel[k.q + 2]};
     }
