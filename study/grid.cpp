@@ -28,6 +28,14 @@
 #include "multibody/kit/scene_geometry.hpp"
 
 namespace vssw::study {
+
+// What column_values writes in a column, by the column's name (column_code); other: the level the file gives, if any.
+enum class ColumnCode : int {
+    model, height, thickness, hinge, xi, density, g, kinematics, impact, roller, kind, theta0, file, scale, pga,
+    level_key, intensity, intensity_unit, shape, amplitude, pulse_period, alpha, R, alpha1, alpha2, R1, settings,
+    wall_name, record_name, other
+};
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -48,13 +56,6 @@ const std::vector<std::string> kExtraColumns = {"alpha1", "alpha2", "R1", "speci
 // After them, when a part scales its records to another measure than the PGA or reports its collapse in one: the
 // measure's word ("pgv") and its unit ("m/s"), per case (intensity_of).
 const std::vector<std::string> kIntensityColumns = {"intensity", "intensity_unit"};
-
-// What column_values writes in a column, by the column's name (column_code); other: the level the file gives, if any.
-enum class ColumnCode {
-    model, height, thickness, hinge, xi, density, g, kinematics, impact, roller, kind, theta0, file, scale, pga,
-    level_key, intensity, intensity_unit, shape, amplitude, pulse_period, alpha, R, alpha1, alpha2, R1, settings,
-    wall_name, record_name, other
-};
 
 ColumnCode column_code(const std::string& col) {
     static const std::map<std::string, ColumnCode> codes = {
@@ -370,7 +371,7 @@ void Grid::list_columns() {
     if (named(&NameTemplates::record_name)) columns_.push_back("record_name");
     columns_.push_back("settings");
     // What each column holds and which axis of each part gives it, once: column_values writes every row's.
-    for (const std::string& col : columns_) column_codes_.push_back(static_cast<int>(column_code(col)));
+    for (const std::string& col : columns_) column_codes_.push_back(column_code(col));
     for (PartGrid& g : parts_)
         for (const std::string& col : columns_) {
             int axis = -1;
@@ -741,7 +742,7 @@ std::vector<std::string> Grid::column_values(const CaseSpec& c, const RunSpec& r
     using C = ColumnCode;
     for (std::size_t k = 0; k < columns_.size(); ++k) {
         const std::string& col = columns_[k];
-        const auto code = static_cast<C>(column_codes_[k]);
+        const ColumnCode code = column_codes_[k];
         const Level* given = column_axis[k] < 0 ? nullptr : &c.levels[static_cast<std::size_t>(column_axis[k])];
         // A number the file gives is written as the file gives it (a derived one may differ in its last digit);
         // hinge "eq15" too: the resolved ratio follows from xi by Eq. 15, and the level groups the rows as the file

@@ -98,6 +98,9 @@ bool apply_assumptions(RunSpec& run, const multibody::AnalyticAssumptions& assum
 multibody::AnalyticAssumptions assumptions_of(const std::vector<Level>& levels);
 std::vector<Level> assumption_levels(const multibody::AnalyticAssumptions& assumptions);
 
+// What the grid writes in a results column (defined in grid.cpp, where the columns are written).
+enum class ColumnCode : int;
+
 class Grid {
 public:
     // Builds every case's wall and every run's settings, checking them (InputError naming the file, the case's
@@ -182,7 +185,7 @@ private:
     std::map<std::size_t, std::pair<Level, Level>> parapet_run_;  // per part: the kinematics and roller levels a
                                                                   // parapet's analytic runs use
     std::vector<std::string> columns_;
-    std::vector<int> column_codes_;  // per column: what column_values writes in it (grid.cpp, ColumnCode)
+    std::vector<ColumnCode> column_codes_;  // per column: what column_values writes in it
     std::string identity_;
     std::optional<CaseSpec> one_case_;  // a grid of one case built by the caller
 };
