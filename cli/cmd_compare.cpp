@@ -244,7 +244,8 @@ Command add_compare_command(CLI::App& root) {
         "--list-settings", [o] { throw EarlyOutput(settings_listing(o->engines, o->json)); },
         "print every setting of the --engine backends (all compiled in when none is named) with its default, unit "
         "and meaning, then exit (JSON with --json: [{engine, version, settings [{name, flag, default, unit, "
-        "min, max, meaning}]}]; min and max null when unbounded)");
+        "min, max, meaning, walls}]}]; min and max null when unbounded; walls \"any\", or \"vssw\" or \"parapet\" "
+        "for a setting of that wall only)");
     // A function, so that the backends are built for the listing only when the help is printed.
     cmd->footer([]() -> std::string {
         return std::string(

@@ -77,9 +77,9 @@ std::string settings_listing(const std::vector<std::string>& engines, bool json)
     }
     if (json) return io::dump_json(all, 2) + "\n";
     return text +
-           "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its range (both\n"
-           "ends included; a value outside it is refused), its meaning. \"(VSSW only)\", \"(parapet only)\": for the other\n"
-           "kind of wall any value but the default is refused.\n"
+           "\nColumns: how the setting is given, its default, its unit (0/1: a switch; choice: 0, 1, ...), its range "
+           "(both\nends included; a value outside it is refused), its meaning. \"(VSSW only)\", \"(parapet only)\": for "
+           "the other\nkind of wall any value but the default is refused.\n"
            "Each default and why it was chosen: docs/contributing/engines.md.\n";
 }
 

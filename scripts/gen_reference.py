@@ -98,7 +98,9 @@ def engines_page(vssw):
     out = [GENERATED, "# Engine settings\n\n",
            "Every setting of every engine compiled into this build, from `vssw compare --list-settings --json`: ",
            "`--dt`, `--iterations` and each `--set NAME=VALUE` knob, with its default, unit, documented range ",
-           "(empty: unbounded) and meaning. The same table decides which knobs an engine accepts, in `vssw compare`, ",
+           "(empty: unbounded) and meaning; \"(VSSW only)\" or \"(parapet only)\" marks a setting for one kind of wall, ",
+           "any value but its default being refused for the other. The same table decides which knobs an engine ",
+           "accepts, in `vssw compare`, ",
            "in a study's `[settings.ENGINE]` and in the suites. Each engine's defaults and what they give: ",
            "[Engines](../engines.md); how each default was chosen: ",
            "[the adapters' notes](../contributing/engines.md).\n\n"]

@@ -1387,7 +1387,8 @@ const std::vector<std::string> kSinePulse = {"--pulse", "sine", "--amplitude", "
 
 // An engine setting no run can honour is refused by `vssw compare` before any engine runs, the same in free
 // vibration and under a ground motion: a step of more than 1e8 steps (MuJoCo at 1e-310 by its step count, never "a
-// budget of inf s"), a setting for a parapet only on a VSSW. And --run-budget '' is an empty value, not 0.
+// budget of inf s"), a setting for a parapet only on a VSSW and one for a VSSW only on a parapet. And --run-budget ''
+// is an empty value, not 0.
 TEST(CliHardening, EngineSettingsARunCannotHonourAreRefusedUpFrontEverywhere) {
     struct Case {
         const char* engine;

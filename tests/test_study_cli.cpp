@@ -554,11 +554,13 @@ dt = [0.001, 1000.0]
 }
 
 // Every class of value a study's runs cannot honour is refused while the file is read, exit 2 naming the key (or
-// engine and setting) and value, before the folder exists: a step of more than 1e8 steps in a free
-// vibration, a threshold and under a pulse; a setting for a parapet only on a VSSW; a PGA, scale or ensemble level
-// whose scale factor overflows; a collapse search's max_pga below the wall's threshold; a fractional iteration count.
+// engine and setting) and value, before the folder exists: a step of more than 1e8 steps in a free vibration, a
+// threshold and under a pulse; a setting for a parapet only on a VSSW and one for a VSSW only on a parapet; a PGA,
+// scale or ensemble level whose scale factor overflows; a collapse search's max_pga below the wall's threshold; a
+// fractional iteration count.
 TEST(StudyCli, EveryValueARunCannotHonourIsRefusedBeforeTheFolder) {
     const std::string wall = "[wall]\nheight = 4\nthickness = 0.4\nhinge = 0.7\n";
+    const std::string parapet = "[wall]\nmodel = \"parapet\"\nheight = 2\nthickness = 0.3\n";
     const std::string record = std::string(VSSW_DATA_DIR) + "/records/northridge1994-rinaldi-228.at2";
     const std::string free = "[excitation]\nkind = \"free\"\ntheta0 = 0.5\n";
     const std::string pulse = "[excitation]\nkind = \"pulse\"\nshape = \"sine\"\namplitude = 0.5\npulse_period = 0.5\n";
@@ -577,6 +579,8 @@ TEST(StudyCli, EveryValueARunCannotHonourIsRefusedBeforeTheFolder) {
         {"mujoco", wall + free + "[settings.mujoco]\ndt = 1e-310\n", {"steps", "more than the 1e+08 allowed"}},
         {"mujoco", wall + free + "[settings.mujoco]\nnoslip_iterations = 2.5\n", {"noslip_iterations", "whole number"}},
         {"box2d", wall + pulse + "[settings.box2d]\nskin = 0.05\n", {"Box2D setting skin = 0.05", "parapet wall only"}},
+        {"siconos", parapet + free + "[settings.siconos]\ne_hinge = 0.5\n",
+         {"Siconos setting e_hinge = 0.5", "VSSW (two blocks and a roller) only"}},
         {"", wall + on_record + "pga = [1e308]\n", {"pga 1e+308", "overflows"}},
         {"", wall + on_record + "scale = [1e308]\n", {"scale 1e+308", "overflows"}},
         {"", wall + ensemble + "levels = [1e308]\n", {"pga 1e+308", "overflows"}},

@@ -300,7 +300,7 @@ void run_task(const TaskContext& x, TaskOutput& out) {
     }
 }
 
-// The task's engine settings, checked for every task before any runs: a parapet-only setting on a VSSW
+// The task's engine settings, checked for every task before any runs: a setting for the other kind of wall
 // (multibody::require_settings_fit_wall), a step that takes too many steps or is too coarse
 // (compare::require_threshold_steps and require_free_vibration_steps, multibody::require_step_resolves). InputError
 // naming the case; the settings are the ones the task runs at.

@@ -275,7 +275,7 @@ def simulate(engine: str = "analytic", *, height: Number, thickness: Number, hin
             before. None: the analytic model every 1e-4 s, an engine every step.
         iterations: solver iterations (Bullet, ODE; default the engine's own).
         settings: the engine's knobs, {name: value} (vssw.engine_settings(engine) lists each with its default,
-            unit, range and meaning), e.g. {"erp": 0.2} for ODE. A knob the engine does not know is an InputError.
+            unit, range, meaning and the walls it is for), e.g. {"erp": 0.2} for ODE. A knob the engine does not know is an InputError.
         assumptions (analytic only): the model's assumptions as a named set, the same default as every command's:
             "mechanism" (the default: the exact kinematics of Eq. 2, the whole mechanism's plastic impact, a roller
             that can only push; what the engines realise and are compared against) or "paper" (the paper as
@@ -550,9 +550,9 @@ def engine_settings(engine: str) -> List[Dict[str, Any]]:
     """Every setting of one backend (its name in any letter case): a list of {name, default, unit, meaning, min,
     max, walls}. default is a float, or None where the setting has no default (it is off unless given); min and max
     are the range a value may take, both included (-inf/inf when unbounded); walls is "any", or "vssw" ("parapet")
-    for a setting of that wall only, any other value than its default being refused for the other kind. dt (an engine's step) and iterations are given
-    as simulate's dt and iterations, the analytic model's sample_dt (its output interval) as simulate's sample_dt,
-    every other one in settings={name: value}."""
+    for a setting of that wall only, any other value than its default being refused for the other kind. dt (an
+    engine's step) and iterations are given as simulate's dt and iterations, the analytic model's sample_dt (its
+    output interval) as simulate's sample_dt, every other one in settings={name: value}."""
     name = _engine(engine)
     settings: List[Dict[str, Any]] = _core.engine_settings(name)
     for s in settings:
