@@ -137,6 +137,14 @@ std::unique_ptr<Engine> isolated(std::unique_ptr<Engine> inner) {
 }
 
 void append_trajectory(const Trajectory& t, std::string& out) {
+    // Room for the whole trajectory at once: appended to a string grown by doubling, the samples (64 bytes each, 190
+    // kB for a free vibration sampled every step) were copied again into twice the room by the small fields after
+    // them, in a child whose every page is fresh. The fields after the samples are a few hundred bytes and the
+    // warnings' texts; a longer tail only grows the string once more.
+    constexpr std::size_t kTailBytes = 1024;
+    std::size_t texts = 0;
+    for (const std::string& w : t.warnings) texts += sizeof(std::uint64_t) + w.size();
+    out.reserve(out.size() + sizeof(std::uint64_t) + t.samples.size() * sizeof(TrajectorySample) + texts + kTailBytes);
     put(out, static_cast<std::uint64_t>(t.samples.size()));
     out.append(reinterpret_cast<const char*>(t.samples.data()), t.samples.size() * sizeof(TrajectorySample));
     put(out, t.overturned);
