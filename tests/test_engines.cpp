@@ -352,6 +352,28 @@ TEST_P(CrossEngine, RestEndsTheRunOnceTheShakingCannotLiftTheWall) {
     EXPECT_GT(compare::max_abs_theta(full), 0.1 * scene.alpha());  // the pulse did rock the wall
 }
 
+// A free vibration can overturn when N sits off the centre: a 2 m x 0.3 m parapet with N = W / 2 at its corner on the
+// side of theta1 < 0 (e/b = -1), released at 0.5 alpha on the other side, lands on its corner under N, whose lever
+// there is nil, and falls (the model's run). Every backend calls the run overturned, on the side of the fall and past
+// that side's unstable equilibrium: on a still ground a wall past it, not moving inward, cannot come back (FoldJudge).
+// Before, the engines ran on toward the collapse angle and failed the run as a slide (near the horizontal a falling
+// block's pivot slides: ODE, Bullet and MuJoCo "slid 0.0075 m" on a wall of this kind).
+TEST_P(CrossEngine, AFreeVibrationThatAnOffCentreLoadOverturnsIsOverturned) {
+    const WallScene wall = WallScene::of(with_eccentricity(make_parapet(2.0, 0.3, 0.5), -1.0));
+    const auto model = analytic_reference(wall);
+    multibody::Excitation ex;
+    ex.theta0 = 0.5 * wall.alpha();
+    const SimulationResult reference = free_vibration(*model, ex.theta0);
+    ASSERT_TRUE(reference.overturned);
+    ASSERT_EQ(reference.impacts.size(), 1u);  // it fell after landing once, on the side of N's corner
+    ex.t_end = 2.0 * reference.t_overturn;
+    const multibody::Trajectory run = engine_->simulate(wall, ex, settings_);
+    EXPECT_TRUE(run.overturned);
+    ASSERT_FALSE(run.samples.empty());
+    EXPECT_LT(run.samples.back().theta1, -model->unstable_equilibrium(-1));
+    EXPECT_LT(run.samples.back().t, ex.t_end);  // ended by the verdict, not by the time given
+}
+
 // GoogleTest names may hold only letters, digits and '_': "simbody-rigid" becomes simbody_rigid.
 std::string engine_name(const ::testing::TestParamInfo<std::string>& info) {
     std::string name = info.param;
@@ -610,6 +632,27 @@ TEST(RunMonitorFold, PastTheUnstableEquilibriumAfterTheShakingIsOverturned) {
     // Past it but coming back inward at speed, inside it within 0.3 s: a rocking wall, not folded.
     EXPECT_EQ(run(2.5, [&](double t) { return (1.5 - 3.0 * (t - 2.5)) * alpha1; }), Verdict::go_on);
     EXPECT_EQ(run(2.5, [&](double) { return 0.5 * alpha1; }), Verdict::go_on);  // inside the unstable equilibrium
+}
+
+// On a still ground (a free vibration) a wall past the unstable equilibrium and not moving inward has overturned at
+// once (FoldJudge with no acceleration left); moving inward, or inside the equilibrium, it goes on.
+TEST(RunMonitorFold, OnAStillGroundPastTheUnstableEquilibriumMovingOutIsOverturned) {
+    const multibody::WallScene scene = multibody::WallScene::of(make_vssw(4.0, 0.4, 0.7));
+    const double unstable = multibody::unstable_equilibrium(scene), dt = 1e-3;
+    multibody::Excitation ex;  // no ground motion
+    ex.theta0 = 0.5 * scene.alpha();
+    ex.t_end = 5.0;
+    using Verdict = multibody::RunMonitor::Verdict;
+    const auto verdict = [&](double theta, double rate) {
+        multibody::RunMonitor monitor("test", scene, ex, dt, kRotationsOnly);
+        return monitor.check(1.0, multibody::still_state_at(scene, theta, rate));
+    };
+    const double rate = 1.0;  // [rad/s] outward on side +1
+    EXPECT_EQ(verdict(1.05 * unstable, rate), Verdict::overturned);
+    EXPECT_EQ(verdict(-1.05 * unstable, -rate), Verdict::overturned);
+    EXPECT_EQ(verdict(1.05 * unstable, 0.0), Verdict::overturned);  // at a turning point: gravity turns it out
+    EXPECT_EQ(verdict(1.05 * unstable, -rate), Verdict::go_on);     // coming back
+    EXPECT_EQ(verdict(0.95 * unstable, rate), Verdict::go_on);      // inside: gravity brings it back
 }
 
 // The monitor's verdict on a wall held still in `state` after a 2 s pulse: every 1 ms step from t = 2.5 s for

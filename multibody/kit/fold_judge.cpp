@@ -17,11 +17,16 @@ constexpr int kGrid = 512;
 
 }  // namespace
 
-FoldJudge::FoldJudge(const WallScene& scene, const GroundMotion& motion) {
-    duration_ = motion.duration();
-    active_ = duration_ > 0.0 && scene.diaphragm.is_rigid() && scene.corner_radius() == 0.0;
-    if (!active_) return;
-    const std::unique_ptr<RockingModel> model = analytic_model(scene, Kinematics::exact);
+FoldJudge::FoldJudge(const WallScene& scene, const GroundMotion& motion)
+    : scene_(&scene),
+      motion_(&motion),
+      active_(scene.diaphragm.is_rigid() && scene.corner_radius() == 0.0),
+      duration_(motion.duration()) {}
+
+void FoldJudge::build() {
+    built_ = true;
+    const GroundMotion& motion = *motion_;
+    const std::unique_ptr<RockingModel> model = analytic_model(*scene_, Kinematics::exact);
     collapse_ = model->collapse_angle();
     for (int k = 0; k < 2; ++k) {
         const int side = k == 0 ? 1 : -1;
@@ -49,8 +54,9 @@ FoldJudge::FoldJudge(const WallScene& scene, const GroundMotion& motion) {
     }
 }
 
-double FoldJudge::hold_back(int side, double q) const {
+double FoldJudge::hold_back(int side, double q) {
     if (!active_) return 0.0;
+    if (!built_) build();
     const int k = side > 0 ? 0 : 1;
     if (!(q > unstable_[k])) return 0.0;
     const double at = (q - unstable_[k]) / (collapse_ - unstable_[k]) * (kGrid - 1);
@@ -59,7 +65,8 @@ double FoldJudge::hold_back(int side, double q) const {
 }
 
 double FoldJudge::largest_left(double t) {
-    if (t >= duration_) return 0.0;  // the motion is zero after its end
+    if (t >= duration_) return 0.0;  // the motion is zero after its end (and a still ground's throughout)
+    if (!built_) build();
     if (!sampled_) return analytic_peak_;
     while (cursor_ + 1 < times_.size() && times_[cursor_ + 1] <= t) ++cursor_;
     return largest_after_[cursor_];  // from the sample before t (a(t) lies between it and the next)

@@ -1,5 +1,6 @@
 #pragma once
-// Whether a wall past the unstable equilibrium can still come back, judged during the shaking (RunMonitor).
+// Whether a wall past the unstable equilibrium can still come back, judged during the shaking or on a still ground
+// (RunMonitor).
 //
 // The argument (docs/earthquakes.md, "Overturning, the same for every backend"): on side s at q = |theta1| the
 // mechanism's equation (Eq. 10) is M theta1'' + C theta1'^2 = -a_h X(q) - s V'(q), and the capacity curve
@@ -10,7 +11,11 @@
 // not inward now, it cannot turn inward: whenever theta1' = 0 there, M theta1'' is that outward force, > 0 outward, so
 // the rate leaves 0 outward again and q never falls below its value now. The wall goes on to the collapse angle (or
 // folds against the far guide, as the engines' walls do): it has overturned, and the run can end now instead of
-// kFoldedFor after the record's end.
+// kFoldedFor after the record's end. On a still ground (a free vibration: A = 0 throughout; RunMonitor asks only
+// when no friction was given, since sliding blocks are not the rigid mechanism) the same argument says a wall past its
+// side's unstable equilibrium, not moving inward, has overturned: with N off-centre a wall released on
+// one side can fall on the other, whose equilibrium is lower, and its run ends there rather than at the collapse
+// angle (near which a falling block's pivot slides: the engines measured it as a slide, not an overturning).
 //
 // Held for the rigid mechanism only: a flexible top support (its ring after the shaking can turn the upper block) and
 // rounded corners (the blocks roll, the pivot moves) are left to the rule after the shaking.
@@ -25,17 +30,23 @@ namespace vssw::multibody {
 
 class FoldJudge {
 public:
+    // The scene and the motion are read when the judge is first asked (most runs never pass an unstable equilibrium,
+    // and the grid of H costs 1.1 M instructions, 1-3 % of a short run: callgrind): both must outlive the judge.
     FoldJudge(const WallScene& scene, const GroundMotion& motion);
     // True when the wall at theta1 with rate theta1_dot at time t cannot come back (above). Call in time order.
     bool cannot_come_back(double t, double theta1, double theta1_dot);
     // H(q) above [m/s^2] on side `side`: 0 short of the unstable equilibrium, and where the mechanism does not hold.
-    double hold_back(int side, double q) const;
+    double hold_back(int side, double q);
     // A above: the largest |a_h| of the motion at t or later [m/s^2] (a record's samples from the one before t; an
-    // analytic signal's peak until its end).
+    // analytic signal's peak until its end; 0 for a still ground).
     double largest_left(double t);
 
 private:
-    bool active_ = false;
+    void build();  // H's grid on both sides and the motion's largest |a_h| from each sample on, once
+
+    const WallScene* scene_;
+    const GroundMotion* motion_;
+    bool active_ = false, built_ = false;
     double collapse_ = 0.0;
     std::array<double, 2> unstable_{};                // per side (index 0: side +1, 1: side -1)
     std::array<std::vector<double>, 2> hold_back_;    // H on a grid from the unstable equilibrium to the collapse

@@ -44,10 +44,11 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       h_lower_(block_sizes(scene).h_lower),
       friction_(scene.friction),
       collapse_(figures_.collapse_angle),
-      // Only a run under a ground motion can end folded (judged once the shaking is over): a free vibration or a
-      // threshold trial does not compute it.
-      unstable_(ex.horizontal.duration() > 0.0 ? figures_.unstable_equilibrium : HUGE_VAL),
-      unstable2_(ex.horizontal.duration() > 0.0 ? mechanism_theta2(scene, unstable_) : HUGE_VAL),
+      // A free vibration too can pass it: with N off-centre a wall released on one side can fall on the other. Not
+      // when its friction was given: its blocks may slide, the rigid mechanism's argument (FoldJudge) does not hold,
+      // and its slide is measured to the end (StudyMeasure.AWallThatSlidOffFailsItsCollapseSearchAndRockingMetrics).
+      unstable_(ex.horizontal.duration() > 0.0 || !scene.slip_measured ? figures_.unstable_equilibrium : HUGE_VAL),
+      unstable2_(std::isfinite(unstable_) ? mechanism_theta2(scene, unstable_) : HUGE_VAL),
       v_ref_(figures_.reference_velocity),
       alpha_(scene.alpha()),
       motion_end_(ex.horizontal.duration()),
@@ -63,9 +64,9 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       limits_(limits),
       parts_(engine_, scene, figures_, ex, limits.penetration * b_, limits.energy_gain, contact_gap),
       slip_(scene.slip_measured ? std::optional<SlipMeter>(std::in_place, scene, block_sizes(scene)) : std::nullopt),
-      // A threshold trial ends at its stop angle, short of the unstable equilibrium, where the judge is never asked:
-      // its capacity grid (1.1 M instructions, 1-3 % of a trial's run, callgrind) is not built for it.
-      fold_(scene, stop_angle_ > 0.0 && stop_angle_ <= unstable_ ? GroundMotion::none() : ex.horizontal),
+      // Asked only past the unstable equilibrium, which most runs never reach (a threshold trial stops short of it):
+      // the judge builds its grid then.
+      fold_(scene, ex.horizontal),
       // At rest: rotation and rate below 1e-3 of alpha and of theta1'_r for a tenth of a second after the shaking
       // ended (an engine's contacts jitter: measured |theta1| ~ 3e-5 rad on the Fig. 6 wall long after it stopped).
       quiet_needed_(std::max(1, static_cast<int>(std::lround(0.1 / dt)))),

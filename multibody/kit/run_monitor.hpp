@@ -10,7 +10,8 @@
 // outward, and only an inward speed brings it back, at once. Past it for kFoldedFor after the shaking: overturned.
 // During the shaking a wall is judged overturned as soon as it cannot come back (FoldJudge: past the equilibrium that
 // the largest acceleration left in the record could hold, its rate not inward), which ends a folded wall's run
-// seconds to tens of seconds before the record's end.
+// seconds to tens of seconds before the record's end; on a still ground (a free vibration, which an off-centre N can
+// overturn; its friction not given) as soon as it is past the unstable equilibrium and not moving inward.
 // With N off-centre the two sides' equilibria differ; the larger is taken, so a wall standing on the side of the
 // larger one is never called overturned.
 // The same holds for the upper block (theta2, where the adapter gives it): a wall whose upper block fell off the roller
