@@ -56,6 +56,9 @@ namespace {
 
 using namespace simbody_wall;  // kDepth, WallLoads, sample_of, ...
 
+// The rigid route's name in its messages and failures (the compliant one's is "Simbody (compliant)").
+constexpr const char* kRigidName = "Simbody (rigid)";
+
 // Settings (EngineSettings::knobs), each with its default and the measurement that chose it.
 struct Knobs {
     // constraint_tol (default 1e-6) [m]: the stepper's constraint tolerance. A contact whose gap is below it is
@@ -119,7 +122,7 @@ const std::vector<SettingDescription>& rigid_setting_table() {
 }
 
 Knobs read_knobs(const EngineSettings& s) {
-    const SettingsReader r("Simbody (rigid)", s, rigid_setting_table());
+    const SettingsReader r(kRigidName, s, rigid_setting_table());
     Knobs k{};
     k.constraint_tol = r.positive("constraint_tol", 1e-6);
     k.transition_velocity = r.positive("transition_velocity", 1e-3);
@@ -332,7 +335,7 @@ public:
         try {
             ts_.stepTo(times.t);
         } catch (const std::exception& e) {
-            throw EngineFailure(fmt::format("Simbody: {} at t = {:.6g} s", e.what(), times.t));
+            throw EngineFailure(fmt::format("{}: {} at t = {:.6g} s", kRigidName, e.what(), times.t));
         }
     }
     WallState state(const GroundStep&) const {
@@ -400,7 +403,7 @@ Trajectory SimbodyEngine::simulate(const WallScene& scene, const Excitation& ex,
     ts.initialize(w.initial_state());
 
     SimbodyStepping stepping(w, ts, bodies, knobs);
-    RunMonitor monitor("Simbody", scene, ex, dt, knobs.limits);
+    RunMonitor monitor(kRigidName, scene, ex, dt, knobs.limits);
     return run_fixed_steps(stepping, ex, StepLoop{dt, sample_every(settings, dt), false, false}, monitor);
 }
 
