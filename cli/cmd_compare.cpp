@@ -118,7 +118,9 @@ void run_compare_rounded(const CompareOptions& o, const ChosenModel& chosen, std
     std::vector<std::string> why;
     for (const compare::RoundedEngineResult& e : result.engines)
         if (!e.failure.empty()) why.push_back(e.engine + ": " + e.failure);
-        else if (!std::isfinite(e.period)) why.push_back(e.engine + ": no first impact resolved");
+        else if (!std::isfinite(e.period))
+            why.push_back(e.engine +
+                          (e.overturned ? ": no first impact: the wall overturned" : ": no first impact resolved"));
     if (!why.empty()) throw SimulationFailure(fmt::format("{}", fmt::join(why, "; ")));
 }
 
@@ -275,7 +277,7 @@ Command add_compare_command(CLI::App& root) {
                "With --corner-radius (rounded blocks, engines only: the analytic model gives Eq. 12r / 17r, not the\n"
                "motion): each engine's threshold and period and their spread. JSON: {wall, corner_radius, closed_forms\n"
                "{threshold_g, threshold_sharp_g}, theta0, engines [{engine, threshold_g, threshold_rel_error, period,\n"
-               "failure}], threshold_spread, period_spread}; exit 3 when an engine failed.\n\n"
+               "overturned, failure}], threshold_spread, period_spread}; exit 3 when an engine failed or has no period.\n\n"
                "With --friction as well: friction {base, hinge}; each engine's run slip {base, hinge {largest_b, largest_m,\n"
                "residual_b, residual_m}, slid_before_rocking, slid_off}, the analytic run's friction_needed {base, hinge}\n"
                "and would_slide {base, hinge} (docs/guide/program.md, \"Finite friction\"); without a ground motion each\n"

@@ -24,6 +24,7 @@ io::Json to_json(const compare::RoundedCornerComparison& c, const WallOptions& w
                            {"threshold_g", io::finite_or_null(e.threshold_g)},
                            {"threshold_rel_error", io::finite_or_null(e.threshold_rel_error)},
                            {"period", io::finite_or_null(e.period)},
+                           {"overturned", e.overturned},
                            {"failure", e.failure}});
     return {{"wall", wall_inputs_json(wall, kind)},
             {"corner_radius", c.corner_radius_ratio},
@@ -50,7 +51,7 @@ void print_rounded_corners(std::ostream& out, const compare::RoundedCornerCompar
         t.add(e.engine + " threshold", io::num(e.threshold_g), "g",
               fmt::format("{} {:+.3f} %", eq, 100.0 * e.threshold_rel_error))
             .add(e.engine + " period", text_or_none(e.period, "{:.6g}"), std::isfinite(e.period) ? "s" : "",
-                 "4 x release to first impact");
+                 e.overturned ? "the free vibration overturned" : "4 x release to first impact");
     }
     t.add("threshold spread", text_or_none(100.0 * c.threshold_spread, "{:.3f}"),
           std::isfinite(c.threshold_spread) ? "%" : "", "(largest - smallest) / smallest over the engines")

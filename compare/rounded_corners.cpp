@@ -40,11 +40,13 @@ RoundedCornerComparison compare_rounded_corners(const std::vector<RoundedEngine>
     if (free.t_end <= 0.0) free.t_end = free_vibration_duration(with_sharp_corners(scene), out.theta0, free.impacts);
     std::vector<double> thresholds, periods;
     for (const RoundedEngine& e : engines) {
-        RoundedEngineResult res{e.engine->name(), kNaN, kNaN, kNaN, ""};
+        RoundedEngineResult res{e.engine->name(), kNaN, kNaN, kNaN, false, ""};
         try {
             res.threshold_g = find_threshold(*e.engine, e.settings, scene, options.threshold).value_g;
             res.threshold_rel_error = res.threshold_g / out.closed_form_g - 1.0;
-            res.period = run_free_vibration(*e.engine, e.settings, scene, free).period.value_or(kNaN);
+            const FreeVibrationResult run = run_free_vibration(*e.engine, e.settings, scene, free);
+            res.period = run.period.value_or(kNaN);
+            res.overturned = run.trajectory.overturned;
         } catch (const multibody::EngineFailure& failure) {
             res.failure = failure.what();
         }

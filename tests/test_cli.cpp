@@ -1453,6 +1453,25 @@ TEST(CliCompare, AWallThatOverturnsHasNotSlid) {
     EXPECT_LT(ode["slip"]["base"]["largest_b"].get<double>(), kCountedSlip);
 }
 
+// A rounded wall whose free vibration an off-centre N overturns (Table 1 #7's size, xi 0.5 at e/b -1, released at
+// 0.8 alpha1 on the side past its unstable equilibrium: the sharp model falls without an impact) has no period, and
+// compare says it overturned, not that it slid (before, ODE ran on toward the collapse angle and failed as a slide
+// there: a rounded wall is left to the folded rule, now applied on a still ground too).
+TEST(CliCompare, ARoundedWallThatOverturnsInFreeVibrationSaysSo) {
+    if (!vssw::testing::engine_available("ode")) GTEST_SKIP() << "no ODE in this build";
+    const std::vector<std::string> args = {"compare", "--engine", "ode", "--height", "4.88", "--thickness", "0.2",
+                                           "--hinge", "0.5", "--xi", "0.5", "--overburden-eccentricity", "-1",
+                                           "--theta0", "0.8", "--corner-radius", "0.1"};
+    const CliResult r = run_cli(args + std::vector<std::string>{"--json"});
+    EXPECT_EQ(r.code, 3) << r.err;
+    const Json j = Json::parse(r.out);
+    ASSERT_EQ(j["engines"].size(), 1u);
+    EXPECT_EQ(j["engines"][0]["failure"], "");
+    EXPECT_TRUE(j["engines"][0]["overturned"].get<bool>());
+    EXPECT_TRUE(j["engines"][0]["period"].is_null());
+    EXPECT_NE(r.err.find("ode: no first impact: the wall overturned"), std::string::npos) << r.err;
+}
+
 // A wall that slides off its support has neither stood nor overturned: its run ended there, so its rocking metrics
 // fail with that reason and the program exits 3, while its slips stay in the JSON and the table. (Before, ODE's
 // parapet here was "ok, stands" beside the model's overturning.) A 1.2 x 0.2 m parapet at mu 0.05 under a 0.5 g sine

@@ -102,7 +102,7 @@ RunMonitor::Verdict RunMonitor::check(double t, const WallState& s) {
     if (stop_angle_ > 0.0 && std::abs(theta) >= stop_angle_) return Verdict::stop;
     if (std::abs(theta) >= collapse_) return Verdict::overturned;
     if (std::abs(theta) > unstable_ && fold_.cannot_come_back(t, theta, rate)) return Verdict::overturned;
-    if (t > motion_end_ && motion_end_ > 0.0) {  // folded: past the unstable equilibrium, the shaking over
+    if (t > motion_end_) {  // folded: past the unstable equilibrium, the shaking over (or none: a free vibration)
         folded_steps_ = std::abs(theta) > unstable_ || upper_gone ? folded_steps_ + 1 : 0;
         if (folded_steps_ >= folded_needed_) return Verdict::overturned;
     }

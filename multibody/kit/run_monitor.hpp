@@ -7,7 +7,8 @@
 // and stay there, the upper block against the far guide, swinging between about 3.7 and 4.0 alpha1 (measured on the
 // Fig. 6 wall under Rinaldi at 0.55 g: MuJoCo, Siconos and Simbody alike, never still). No standing wall can stay past
 // the unstable equilibrium (RockingModel::unstable_equilibrium) once the ground is still: there gravity turns it
-// outward, and only an inward speed brings it back, at once. Past it for kFoldedFor after the shaking: overturned.
+// outward, and only an inward speed brings it back, at once. Past it for kFoldedFor after the shaking (in a free
+// vibration, from the start): overturned.
 // During the shaking a wall is judged overturned as soon as it cannot come back (FoldJudge: past the equilibrium that
 // the largest acceleration left in the record could hold, its rate not inward), which ends a folded wall's run
 // seconds to tens of seconds before the record's end; on a still ground (a free vibration, which an off-centre N can
