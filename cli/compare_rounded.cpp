@@ -51,7 +51,9 @@ void print_rounded_corners(std::ostream& out, const compare::RoundedCornerCompar
         t.add(e.engine + " threshold", io::num(e.threshold_g), "g",
               fmt::format("{} {:+.3f} %", eq, 100.0 * e.threshold_rel_error))
             .add(e.engine + " period", text_or_none(e.period, "{:.6g}"), std::isfinite(e.period) ? "s" : "",
-                 e.overturned ? "the free vibration overturned" : "4 x release to first impact");
+                 !e.overturned                ? "4 x release to first impact"
+                 : std::isfinite(e.period)    ? "4 x release to first impact; then the wall overturned"
+                                              : "the free vibration overturned");
     }
     t.add("threshold spread", text_or_none(100.0 * c.threshold_spread, "{:.3f}"),
           std::isfinite(c.threshold_spread) ? "%" : "", "(largest - smallest) / smallest over the engines")

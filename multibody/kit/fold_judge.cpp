@@ -24,7 +24,6 @@ FoldJudge::FoldJudge(const WallScene& scene, const GroundMotion& motion)
       duration_(motion.duration()) {}
 
 void FoldJudge::build() {
-    built_ = true;
     const GroundMotion& motion = *motion_;
     const std::unique_ptr<RockingModel> model = analytic_model(*scene_, Kinematics::exact);
     collapse_ = model->collapse_angle();
@@ -52,6 +51,7 @@ void FoldJudge::build() {
     } else {
         analytic_peak_ = motion.pga();
     }
+    built_ = true;  // last: a build that threw is tried again, never read half made
 }
 
 double FoldJudge::hold_back(int side, double q) {
@@ -65,7 +65,7 @@ double FoldJudge::hold_back(int side, double q) {
 }
 
 double FoldJudge::largest_left(double t) {
-    if (t >= duration_) return 0.0;  // the motion is zero after its end (and a still ground's throughout)
+    if (!active_ || t >= duration_) return 0.0;  // zero after the motion's end (and a still ground's throughout)
     if (!built_) build();
     if (!sampled_) return analytic_peak_;
     while (cursor_ + 1 < times_.size() && times_[cursor_ + 1] <= t) ++cursor_;

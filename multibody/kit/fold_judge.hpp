@@ -12,13 +12,15 @@
 // the rate leaves 0 outward again and q never falls below its value now. The wall goes on to the collapse angle (or
 // folds against the far guide, as the engines' walls do): it has overturned, and the run can end now instead of
 // kFoldedFor after the record's end. On a still ground (a free vibration: A = 0 throughout; RunMonitor asks only
-// when no friction was given, since sliding blocks are not the rigid mechanism) the same argument says a wall past its
-// side's unstable equilibrium, not moving inward, has overturned: with N off-centre a wall released on
-// one side can fall on the other, whose equilibrium is lower, and its run ends there rather than at the collapse
-// angle (near which a falling block's pivot slides: the engines measured it as a slide, not an overturning).
+// when no friction was given, since sliding blocks are not the rigid mechanism, and only past the larger of the two
+// sides' equilibria) the same argument says a wall past its side's unstable equilibrium, not moving inward, has
+// overturned. A free vibration gets there released past it (a heavy N lowers it below alpha1) or, with N off-centre,
+// landing on the side whose equilibrium is lower; its run ends there rather than at the collapse angle (near which a
+// falling block's pivot slides: the engines measured it as a slide, not an overturning).
 //
 // Held for the rigid mechanism only: a flexible top support (its ring after the shaking can turn the upper block) and
-// rounded corners (the blocks roll, the pivot moves) are left to the rule after the shaking.
+// rounded corners (the blocks roll, the pivot moves) are left to the folded rule (RunMonitor: after the shaking, or in
+// a free vibration from the release).
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -33,6 +35,8 @@ public:
     // The scene and the motion are read when the judge is first asked (most runs never pass an unstable equilibrium,
     // and the grid of H costs 1.1 M instructions, 1-3 % of a short run: callgrind): both must outlive the judge.
     FoldJudge(const WallScene& scene, const GroundMotion& motion);
+    FoldJudge(const WallScene&&, const GroundMotion&) = delete;  // a temporary would be gone when the judge reads it
+    FoldJudge(const WallScene&, const GroundMotion&&) = delete;
     // True when the wall at theta1 with rate theta1_dot at time t cannot come back (above). Call in time order.
     bool cannot_come_back(double t, double theta1, double theta1_dot);
     // H(q) above [m/s^2] on side `side`: 0 short of the unstable equilibrium, and where the mechanism does not hold.

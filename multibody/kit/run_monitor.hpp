@@ -59,8 +59,9 @@ long sample_every(const EngineSettings& settings, double dt);
 // engine's target is 0.5 %) is held to the same: shaking below it cannot lift that engine's wall either.
 constexpr double kRestCannotLiftShare = 0.5;
 
-// How long a wall must stay past the unstable equilibrium after the shaking to count as folded [s]: five times the
-// stillness asked for rest, longer than a wall coming back inward takes to cross it (it would be crossing at speed).
+// How long a wall must stay past the unstable equilibrium after the shaking (in a free vibration, from the release)
+// to count as folded [s]: five times the stillness asked for rest, longer than a wall coming back inward takes to
+// cross it (it would be crossing at speed).
 constexpr double kFoldedFor = 0.5;
 
 class RunMonitor {

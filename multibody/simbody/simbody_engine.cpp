@@ -134,7 +134,8 @@ Knobs read_knobs(const EngineSettings& s) {
     k.limits = FailureLimits::read(r);
     if (r.flag("moving_supports"))
         throw InputError(
-            "Simbody setting moving_supports = 1 is not supported: the SemiExplicitEuler stepper ignores prescribed "
+            std::string(kRigidName) +
+            " setting moving_supports = 1 is not supported: the SemiExplicitEuler stepper ignores prescribed "
             "motion, and a ground carried by a heavy Slider whose speed is reset each step was tried and failed "
             "(the parapet sank 0.01 m into the ground during a threshold trial; the VSSW's peak response to a pulse "
             "came out 0.41 of the pseudo-forces' at 1 ms). Use the default pseudo-forces (moving_supports = 0)");
