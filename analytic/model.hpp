@@ -107,10 +107,11 @@ public:
     // The mechanism's capacity curve c(q): the |a_h| toward `side` that holds the sharp-cornered wall still at
     // q = side theta1 >= 0 under a_v. Eq. (10) with theta1' = theta1'' = 0 reads 0 = -a_h X(q) - (g + a_v) Y(q)
     // - N (L(q) + side e L_e(q)), so c(q) = ((g + a_v) Y + N (L + side e L_e)) / X, which at a_v = 0 is V'(q) / X(q),
-    // V the potential of the weights and N. `side` is +1 or -1 (not checked here: a step's hot path). At q = 0 it is the rest threshold of sharp corners (Eq. 12 / 17); it falls with q and is 0 at
-    // the unstable equilibrium (the potential's maximum); past it c is negative: gravity turns the wall outward, and
-    // only an inward acceleration of at least -c can hold it or turn it back (docs/earthquakes.md, "Overturning, the
-    // same for every backend"). X > 0 over the mechanism's range; c is +-infinity where X vanishes.
+    // V the potential of the weights and N. `side` is +1 or -1 (not checked: every caller passes one of the two). At
+    // q = 0 it is the rest threshold of sharp corners (Eq. 12 / 17); it falls with q and is 0 at the unstable
+    // equilibrium (the potential's maximum); past it c is negative: gravity turns the wall outward, and only an inward
+    // acceleration of at least -c can hold it or turn it back (docs/earthquakes.md, "Overturning, the same for every
+    // backend"). X > 0 over the mechanism's range; c is +-infinity where X vanishes.
     double holding_acceleration(int side, double q, double a_v = 0.0) const;
     // The side whose rest threshold is the lower: -1 (tipped by a_h > 0) on a tie, as on every centred wall.
     int easier_side() const;

@@ -38,7 +38,6 @@
 #include "validation/report_write.hpp"
 #include "validation/suite_file.hpp"
 
-
 namespace vssw::cli {
 namespace {
 

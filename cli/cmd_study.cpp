@@ -41,7 +41,6 @@
 #include "study/runner.hpp"
 #include "study/spec.hpp"
 
-
 namespace vssw::cli {
 namespace {
 

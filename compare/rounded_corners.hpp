@@ -21,7 +21,7 @@ struct RoundedEngineResult {
     double threshold_g = 0.0;  // find_threshold on the rounded wall [g] (NaN when the engine failed)
     double threshold_rel_error = 0.0;  // against Eq. (12r) / (17r)
     double period = 0.0;       // 4 x release to the first impact [s] (NaN when none was resolved)
-    bool overturned = false;   // the free vibration overturned (an off-centre N can make it fall)
+    bool overturned = false;   // the free vibration overturned (released past the equilibrium, or N off-centre)
     std::string failure;       // the engine's failure, "" when both were measured
 };
 

@@ -59,8 +59,8 @@ Measurement measure_threshold(const Grid& grid, const CaseSpec& c, std::size_t r
 bool measures_threshold(const Grid& grid, const CaseSpec& c);
 
 // Throws InputError when an engine run cannot be made as set for the case, before anything runs: a setting for the
-// other kind of wall (parapet-only on a VSSW, VSSW-only on a parapet: multibody::require_settings_fit_wall), or a step that would take more than 1e8 steps or
-// cannot resolve the case's wall or its ground motion (multibody::require_step_resolves; for a free vibration and
+// other kind of wall (parapet-only on a VSSW, VSSW-only on a parapet: multibody::require_settings_fit_wall), or a
+// step that would take more than 1e8 steps or cannot resolve the case's wall or its ground motion (multibody::require_step_resolves; for a free vibration and
 // threshold trials compare::require_free_vibration_steps and require_threshold_steps). `vssw compare` under a record
 // or pulse refuses such a run before it runs anything, and so does `vssw study` (require_runs_resolve).
 void require_run_resolves(const Grid& grid, const CaseSpec& c, const RunSpec& run, const multibody::Engine& engine);

@@ -354,8 +354,9 @@ TEST_P(CrossEngine, RestEndsTheRunOnceTheShakingCannotLiftTheWall) {
 
 // A free vibration can overturn when N sits off the centre: a 2 m x 0.3 m parapet with N = W / 2 at its corner on the
 // side of theta1 < 0 (e/b = -1), released at 0.5 alpha on the other side, lands on its corner under N, whose lever
-// there is nil, and falls (the model's run). Every backend calls the run overturned, on the side of the fall and past
-// that side's unstable equilibrium: on a still ground a wall past it, not moving inward, cannot come back (FoldJudge).
+// there is nil, and falls (the model's run). Every backend calls the run overturned; an engine's run on the side of the
+// fall, past both sides' unstable equilibria (the run monitor's gate) and short of the collapse angle: on a still
+// ground a wall past its side's, not moving inward, cannot come back (FoldJudge).
 // Before, the engines ran on toward the collapse angle and failed the run as a slide (near the horizontal a falling
 // block's pivot slides: ODE, Bullet and MuJoCo slid about 0.0075 m on a wall of this kind).
 TEST_P(CrossEngine, AFreeVibrationThatAnOffCentreLoadOverturnsIsOverturned) {
@@ -370,6 +371,7 @@ TEST_P(CrossEngine, AFreeVibrationThatAnOffCentreLoadOverturnsIsOverturned) {
     const multibody::Trajectory run = engine_->simulate(wall, ex, settings_);
     EXPECT_TRUE(run.overturned);
     ASSERT_FALSE(run.samples.empty());
+    if (GetParam() == "analytic") return;  // the model's run ends at the collapse angle (its own event), no monitor
     const double end = run.samples.back().theta1;
     EXPECT_LT(end, -model->unstable_equilibrium());        // past both sides' equilibria (the monitor's gate), on -1's
     EXPECT_LT(std::abs(end), model->collapse_angle());     // judged there, not at the collapse angle

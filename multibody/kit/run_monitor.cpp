@@ -44,9 +44,10 @@ RunMonitor::RunMonitor(std::string engine, const WallScene& scene, const Excitat
       h_lower_(block_sizes(scene).h_lower),
       friction_(scene.friction),
       collapse_(figures_.collapse_angle),
-      // A free vibration too can pass it: with N off-centre a wall released on one side can fall on the other. Not
-      // when its friction was given: its blocks may slide, the rigid mechanism's argument (FoldJudge) does not hold,
-      // and its slide is measured to the end (StudyMeasure.AWallThatSlidOffFailsItsCollapseSearchAndRockingMetrics).
+      // A free vibration too can pass it: released past it (a heavy N lowers it) or, with N off-centre, landing on the
+      // side whose equilibrium is lower. Not when its friction was given: its blocks may slide, the rigid mechanism's
+      // argument (FoldJudge) does not hold, and its slide is measured to the end
+      // (StudyMeasure.AWallThatSlidOffFailsItsCollapseSearchAndRockingMetrics).
       unstable_(ex.horizontal.duration() > 0.0 || !scene.slip_measured ? figures_.unstable_equilibrium : HUGE_VAL),
       unstable2_(std::isfinite(unstable_) ? mechanism_theta2(scene, unstable_) : HUGE_VAL),
       v_ref_(figures_.reference_velocity),
